@@ -1,0 +1,171 @@
+"""The HDF5 artifact contract (see ``docs/file-format.md``).
+
+Every artifact is one ``.h5`` file stamped with its kind, schema, producing version,
+the resolved configuration that made it and the provenance (path, kind, sha256) of the
+artifacts it was made from. Readers check kind and schema; writes are atomic.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import hashlib
+import json
+import os
+from pathlib import Path
+from typing import Iterator, Sequence
+
+import h5py
+import numpy as np
+
+from . import __version__
+from .errors import ArtifactError, InputError, OutputExistsError
+
+#: Current schema of each artifact kind; bumped on an incompatible change.
+SCHEMAS: dict[str, int] = {
+    "corpus": 1,
+    "normalized": 1,
+    "pca": 1,
+    "motiondb": 1,
+    "isomap": 1,
+    "motion": 1,
+    "meshanim": 1,
+}
+
+#: Which stage makes each kind (used in messages that say what to do).
+PRODUCERS: dict[str, str] = {
+    "corpus": "facesynth ingest",
+    "normalized": "facesynth normalize",
+    "pca": "facesynth pca",
+    "motiondb": "facesynth build-db",
+    "isomap": "facesynth isomap",
+    "motion": "facesynth synthesize",
+    "meshanim": "facesynth deform",
+}
+
+STR = h5py.string_dtype("utf-8")
+
+
+def sha256_of(path: Path) -> str:
+    """Hex sha256 of a file's bytes."""
+    digest = hashlib.sha256()
+    with open(path, "rb") as fh:
+        for block in iter(lambda: fh.read(1 << 22), b""):
+            digest.update(block)
+    return digest.hexdigest()
+
+
+def check_output(path: Path, overwrite: bool) -> None:
+    """Refuse to replace an existing output unless ``overwrite`` is set."""
+    if Path(path).exists() and not overwrite:
+        raise OutputExistsError(f"{path}: output exists; pass --overwrite to replace it or choose another path.")
+
+
+@contextlib.contextmanager
+def atomic_path(path: Path, overwrite: bool = False) -> Iterator[Path]:
+    """Yield a temporary path beside ``path``; on success fsync it and rename it into place.
+
+    On any exception (or a kill) the temporary file is removed (or left under its
+    ``.tmp-<pid>`` name), never at ``path``.
+    """
+    path = Path(path)
+    check_output(path, overwrite)
+    if not path.parent.exists():
+        raise InputError(f"{path}: the output folder {path.parent} does not exist; create it first.")
+    tmp = path.with_name(f"{path.name}.tmp-{os.getpid()}")
+    try:
+        yield tmp
+        with open(tmp, "rb+") as fh:
+            os.fsync(fh.fileno())
+        os.replace(tmp, path)
+    finally:
+        if tmp.exists():
+            tmp.unlink()
+
+
+def input_record(path: Path) -> dict:
+    """Provenance entry of one input file: path, kind (if an artifact) and sha256."""
+    path = Path(path)
+    kind = None
+    if h5py.is_hdf5(path):
+        with h5py.File(path, "r") as f:
+            kind = f.attrs.get("facesynth_kind")
+    return {"path": str(path), "kind": kind, "sha256": sha256_of(path)}
+
+
+@contextlib.contextmanager
+def write_artifact(
+    path: Path,
+    kind: str,
+    *,
+    config: str | dict = "{}",
+    inputs: Sequence[Path] = (),
+    overwrite: bool = False,
+) -> Iterator[h5py.File]:
+    """Open a new artifact of ``kind`` for writing; it appears at ``path`` only when complete.
+
+    ``config`` is the JSON (or dict) of the resolved settings used; ``inputs`` the files it
+    was made from, recorded with their sha256.
+    """
+    if kind not in SCHEMAS:
+        raise ValueError(f"unknown artifact kind {kind!r}")
+    records = [input_record(p) for p in inputs]
+    with atomic_path(path, overwrite) as tmp:
+        with h5py.File(tmp, "w", track_order=True) as f:
+            f.attrs["facesynth_kind"] = kind
+            f.attrs["facesynth_schema"] = SCHEMAS[kind]
+            f.attrs["facesynth_version"] = __version__
+            f.attrs["config"] = config if isinstance(config, str) else json.dumps(config, sort_keys=True)
+            f.attrs["inputs"] = json.dumps(records)
+            yield f
+
+
+def open_artifact(path: Path, kind: str) -> h5py.File:
+    """Open an artifact for reading after checking that it is of ``kind`` and a known schema."""
+    path = Path(path)
+    if not path.exists():
+        raise InputError(f"{path}: file not found; make it with `{PRODUCERS.get(kind, 'facesynth')}` first.")
+    if not h5py.is_hdf5(path):
+        raise ArtifactError(f"{path}: not an HDF5 file; expected a facesynth '{kind}' artifact.")
+    f = h5py.File(path, "r")
+    found = f.attrs.get("facesynth_kind")
+    if found != kind:
+        f.close()
+        found_text = f"a '{found}' artifact" if found else "no facesynth artifact"
+        raise ArtifactError(
+            f"{path}: found {found_text} but expected '{kind}'; pass the output of `{PRODUCERS[kind]}`."
+        )
+    schema = int(f.attrs.get("facesynth_schema", -1))
+    if schema != SCHEMAS[kind]:
+        f.close()
+        raise ArtifactError(
+            f"{path}: '{kind}' schema {schema} is not the supported schema {SCHEMAS[kind]}; "
+            f"rebuild it with this version's `{PRODUCERS[kind]}`."
+        )
+    return f
+
+
+def read(f: h5py.File, key: str) -> np.ndarray:
+    """Read dataset ``key`` fully, naming the file and key if it is missing."""
+    try:
+        return f[key][()]
+    except KeyError:
+        raise ArtifactError(f"{f.filename}: missing dataset '{key}'; the file is damaged or from another tool.") from None
+
+
+def read_strings(f: h5py.File, key: str) -> list[str]:
+    """Read a UTF-8 string dataset as a list of ``str``."""
+    return [s.decode("utf-8") if isinstance(s, bytes) else str(s) for s in read(f, key)]
+
+
+def attr(f: h5py.File | h5py.Dataset | h5py.Group, key: str):
+    """Read attribute ``key``, naming the object if it is missing."""
+    try:
+        value = f.attrs[key]
+    except KeyError:
+        raise ArtifactError(f"{f.file.filename}: '{f.name}' lacks attribute '{key}'; the file is damaged.") from None
+    return value.decode("utf-8") if isinstance(value, bytes) else value
+
+
+def write_strings(group: h5py.Group, key: str, values: Sequence[str]) -> h5py.Dataset:
+    """Write a list of strings as a UTF-8 string dataset."""
+    return group.create_dataset(key, data=np.array(list(values), dtype=object), dtype=STR)

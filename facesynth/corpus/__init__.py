@@ -1,0 +1,1 @@
+"""The built-in sample corpus: a virtual actress reading a phoneme-balanced corpus in four emotions."""

@@ -1,0 +1,168 @@
+"""Time-aligned labels: Praat TextGrid (long and short text formats) and .lab files.
+
+``.lab`` covers HTK (``start end label`` in 100 ns units) and Festival/xwaves
+(a header ending in ``#``, then ``end_time colour label`` in seconds).
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Sequence
+
+from ..errors import InputError
+
+_TOKEN = re.compile(r'"((?:[^"]|"")*)"|(<exists>)|([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)')
+_EPS = 1e-6
+
+
+@dataclass(frozen=True)
+class Segment:
+    """One labelled interval, times in seconds."""
+
+    start: float
+    end: float
+    label: str
+
+
+def _decode(raw: bytes) -> str:
+    if raw.startswith(b"\xff\xfe") or raw.startswith(b"\xfe\xff"):
+        return raw.decode("utf-16")
+    return raw.decode("utf-8-sig", errors="replace")
+
+
+def read_textgrid(path: Path) -> dict[str, list[Segment]]:
+    """All interval tiers of a TextGrid: tier name -> segments (point tiers are skipped)."""
+    path = Path(path)
+    if not path.exists():
+        raise InputError(f"{path}: alignment file not found; check the path.")
+    text = _decode(path.read_bytes())
+    if "TextGrid" not in text[:200]:
+        raise InputError(f"{path}: not a Praat TextGrid (no 'TextGrid' header).")
+    text = re.sub(r"\[\s*\d*\s*\]", "", text)  # long format's "item [1]:" and "intervals [3]:"
+    tokens = []
+    for m in _TOKEN.finditer(text):
+        if m.group(1) is not None:
+            tokens.append(m.group(1).replace('""', '"'))
+        elif m.group(2):
+            tokens.append("<exists>")
+        else:
+            tokens.append(float(m.group(3)))
+    try:
+        pos = tokens.index("TextGrid") + 1
+        pos += 2  # xmin, xmax
+        if tokens[pos] != "<exists>":
+            return {}
+        n_tiers = int(tokens[pos + 1])
+        pos += 2
+        tiers: dict[str, list[Segment]] = {}
+        for _ in range(n_tiers):
+            kind, name = tokens[pos], tokens[pos + 1]
+            n_items = int(tokens[pos + 4])
+            pos += 5
+            if kind == "IntervalTier":
+                segs = []
+                for _ in range(n_items):
+                    segs.append(Segment(float(tokens[pos]), float(tokens[pos + 1]), str(tokens[pos + 2]).strip()))
+                    pos += 3
+                tiers[str(name)] = segs
+            else:
+                pos += 2 * n_items
+    except (IndexError, ValueError, TypeError):
+        raise InputError(f"{path}: malformed TextGrid (it ends early or has a non-number where a time belongs).") from None
+    return tiers
+
+
+def write_textgrid(path: Path, tiers: dict[str, Sequence[Segment]], xmax: float | None = None) -> None:
+    """Write interval tiers as a long-format TextGrid (UTF-8)."""
+    xmax = xmax if xmax is not None else max((s[-1].end for s in tiers.values() if s), default=0.0)
+    lines = [
+        'File type = "ooTextFile"', 'Object class = "TextGrid"', "",
+        "xmin = 0", f"xmax = {xmax:.6f}", "tiers? <exists>", f"size = {len(tiers)}", "item []:",
+    ]
+    for k, (name, segs) in enumerate(tiers.items(), 1):
+        lines += [
+            f"    item [{k}]:", '        class = "IntervalTier"', f'        name = "{name}"',
+            "        xmin = 0", f"        xmax = {xmax:.6f}", f"        intervals: size = {len(segs)}",
+        ]
+        for i, s in enumerate(segs, 1):
+            label = s.label.replace('"', '""')
+            lines += [
+                f"        intervals [{i}]:", f"            xmin = {s.start:.6f}",
+                f"            xmax = {s.end:.6f}", f'            text = "{label}"',
+            ]
+    Path(path).write_text("\n".join(lines) + "\n", encoding="utf-8")
+
+
+def read_lab(path: Path) -> list[Segment]:
+    """Read an HTK or Festival ``.lab`` file."""
+    path = Path(path)
+    if not path.exists():
+        raise InputError(f"{path}: alignment file not found; check the path.")
+    lines = [line.strip() for line in _decode(path.read_bytes()).splitlines()]
+    segs: list[Segment] = []
+    try:
+        if "#" in lines:  # Festival/xwaves: header, '#', then "end colour label"
+            prev = 0.0
+            for line in lines[lines.index("#") + 1 :]:
+                if not line:
+                    continue
+                parts = line.split()
+                end = float(parts[0])
+                segs.append(Segment(prev, end, parts[-1] if len(parts) >= 3 else ""))
+                prev = end
+        else:  # HTK: "start end label" in units of 100 ns
+            for line in lines:
+                if not line or line == ".":
+                    continue
+                parts = line.split()
+                segs.append(Segment(int(parts[0]) * 1e-7, int(parts[1]) * 1e-7, parts[2] if len(parts) > 2 else ""))
+    except (ValueError, IndexError):
+        raise InputError(f"{path}: malformed .lab line; expected HTK 'start end label' or Festival 'end colour label'.") from None
+    return segs
+
+
+def write_lab(path: Path, segs: Sequence[Segment]) -> None:
+    """Write HTK ``.lab`` (100 ns units)."""
+    Path(path).write_text(
+        "".join(f"{round(s.start * 1e7)} {round(s.end * 1e7)} {s.label}\n" for s in segs), encoding="utf-8"
+    )
+
+
+def read_phone_segments(path: Path, tier_names: Sequence[str] = ("phones",)) -> list[Segment]:
+    """Phone segments from a TextGrid (first tier named in ``tier_names``) or a .lab file."""
+    path = Path(path)
+    if path.suffix.lower() == ".lab":
+        segs = read_lab(path)
+    else:
+        tiers = read_textgrid(path)
+        if not tiers:
+            raise InputError(f"{path}: the TextGrid has no interval tier; add a phone tier.")
+        lowered = {name.lower(): name for name in tiers}
+        chosen = next((lowered[n] for n in tier_names if n in lowered), None)
+        if chosen is None:
+            if len(tiers) == 1:
+                chosen = next(iter(tiers))
+            else:
+                raise InputError(
+                    f"{path}: no phone tier among {sorted(tiers)}; name it one of {list(tier_names)}."
+                )
+        segs = tiers[chosen]
+    check_segments(segs, str(path))
+    return segs
+
+
+def check_segments(segs: Sequence[Segment], where: str) -> None:
+    """Refuse empty, unsorted, overlapping or zero-length segment lists, naming the place."""
+    if not segs:
+        raise InputError(f"{where}: no phone segments; the alignment is empty.")
+    prev_end = segs[0].start
+    for s in segs:
+        if s.end <= s.start + _EPS:
+            raise InputError(f"{where}, {s.start:.3f} s: segment {s.label!r} ends at or before it starts.")
+        if s.start < prev_end - _EPS:
+            raise InputError(
+                f"{where}, {s.start:.3f} s: segment {s.label!r} overlaps or is out of order with the one before; sort and fix the boundaries."
+            )
+        prev_end = s.end
