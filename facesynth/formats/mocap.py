@@ -9,6 +9,7 @@ from __future__ import annotations
 import csv
 import struct
 from dataclasses import dataclass
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -52,8 +53,6 @@ def read_mocap(path: Path) -> MarkerTake:
 
 
 def read_c3d(path: Path) -> MarkerTake:
-    import warnings
-
     import c3d
 
     try:
@@ -99,7 +98,8 @@ def write_c3d(path: Path, take: MarkerTake) -> None:
         points[:, 3] = np.where(missing, -1.0, 0.0)
         frames.append((points, empty_analog))
     writer.add_frames(frames)
-    with open(path, "wb") as fh:
+    with open(path, "wb") as fh, warnings.catch_warnings():
+        warnings.simplefilter("ignore")
         writer.write(fh)
 
 

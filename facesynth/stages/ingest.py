@@ -1,0 +1,168 @@
+"""``facesynth ingest``: a manifest of takes -> the ``corpus`` artifact (paper III).
+
+The manifest is a CSV with the columns ``take, mocap, audio, alignment, transcript,
+emotion, sentence, split`` (paths relative to the manifest). A take with an empty
+``alignment`` and a ``transcript`` is aligned with :mod:`facesynth.stages.align`.
+Phones are mapped to the Festival set; marker gaps stay NaN here.
+"""
+
+from __future__ import annotations
+
+import csv
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from ..artifacts import write_artifact, write_strings
+from ..config import IngestSettings, settings_json
+from ..errors import InputError
+from ..formats.audio import read_audio, resample
+from ..formats.labels import Segment, check_segments, read_phone_segments
+from ..formats.mocap import read_mocap
+from ..phonemes import map_phones
+from ..progress import progress
+from ..tables import Phones, Takes
+
+REQUIRED_COLUMNS = ("take", "mocap", "audio", "alignment", "emotion")
+SPLITS = ("train", "val", "test")
+
+
+@dataclass
+class ManifestRow:
+    line: int
+    take: str
+    mocap: Path
+    audio: Path
+    alignment: Path | None
+    transcript: str
+    emotion: str
+    sentence: str
+    split: str
+
+
+def read_manifest(path: Path, settings: IngestSettings) -> list[ManifestRow]:
+    """Parse and check the manifest; every problem names the manifest line."""
+    path = Path(path)
+    if not path.exists():
+        raise InputError(f"{path}: manifest not found; check the path.")
+    base = path.parent
+    with open(path, encoding="utf-8-sig", newline="") as fh:
+        reader = csv.DictReader(fh)
+        columns = set(reader.fieldnames or [])
+        missing = [c for c in REQUIRED_COLUMNS if c not in columns]
+        if missing:
+            raise InputError(f"{path}: the manifest lacks the column(s) {', '.join(missing)}; see the README for its columns.")
+        rows, seen = [], set()
+        aliases = {k.lower(): v for k, v in settings.emotion_aliases.items()}
+        for line, raw in enumerate(reader, 2):
+            where = f"{path}, line {line}"
+            take = (raw.get("take") or "").strip()
+            if not take:
+                raise InputError(f"{where}: empty 'take' name; give every take a unique name.")
+            if take in seen:
+                raise InputError(f"{where}: take {take!r} appears twice; take names must be unique.")
+            seen.add(take)
+            emotion = (raw.get("emotion") or "").strip().lower()
+            emotion = aliases.get(emotion, emotion)
+            if emotion not in settings.emotions:
+                raise InputError(f"{where}: unknown emotion {raw.get('emotion')!r}; use one of {', '.join(settings.emotions)}.")
+            split = (raw.get("split") or "train").strip().lower() or "train"
+            if split not in SPLITS:
+                raise InputError(f"{where}: unknown split {split!r}; use train, val or test.")
+            alignment = (raw.get("alignment") or "").strip()
+            transcript = (raw.get("transcript") or "").strip()
+            if not alignment and not transcript:
+                raise InputError(f"{where}: take {take!r} has neither an alignment nor a transcript to align.")
+            rows.append(ManifestRow(
+                line, take, base / raw["mocap"].strip(), base / raw["audio"].strip(),
+                base / alignment if alignment else None, transcript, emotion,
+                (raw.get("sentence") or take).strip(), split,
+            ))
+    if not rows:
+        raise InputError(f"{path}: the manifest lists no takes.")
+    return rows
+
+
+def _segments_for(row: ManifestRow, settings: IngestSettings, samples: np.ndarray, rate: int, where: str) -> list[Segment]:
+    if row.alignment is not None:
+        if not row.alignment.exists():
+            raise InputError(f"{where}: alignment file {row.alignment} not found; fix the manifest's alignment column.")
+        return read_phone_segments(row.alignment, settings.phone_tiers)
+    from .align import align_samples
+
+    return align_samples(samples, rate, row.transcript, where=where)
+
+
+def ingest(rows: list[ManifestRow], settings: IngestSettings):
+    """Read and check every take. Returns (markers (F,M,3) float32 mm, names, fps, takes,
+    phones, audio list of (samples, rate))."""
+    markers, audio, starts, counts = [], [], [], []
+    phone_take, phone_start, phone_end, phone_label = [], [], [], []
+    names = fps = None
+    for i, row in enumerate(progress(rows, "ingest")):
+        where = f"take {row.take!r} (manifest line {row.line})"
+        for label, p in (("mocap", row.mocap), ("audio", row.audio)):
+            if not p.exists():
+                raise InputError(f"{where}: {label} file {p} not found; fix the manifest's {label} column.")
+        take = read_mocap(row.mocap)
+        if names is None:
+            names, fps = take.names, take.fps
+        elif take.names != names:
+            extra = sorted(set(take.names) - set(names))
+            lacking = sorted(set(names) - set(take.names))
+            detail = f"extra {extra[:5]}, missing {lacking[:5]}" if extra or lacking else "same names in another order"
+            raise InputError(f"{row.mocap}: marker names differ from the first take's ({detail}); every take needs the same markers.")
+        elif abs(take.fps - fps) > 1e-6:
+            raise InputError(f"{row.mocap}: frame rate {take.fps:g} Hz differs from the first take's {fps:g} Hz; resample the takes to one rate.")
+        if np.isnan(take.positions).all():
+            raise InputError(f"{row.mocap}: every marker sample is missing; the take is empty.")
+        samples, rate = read_audio(row.audio)
+        motion_s = take.positions.shape[0] / take.fps
+        audio_s = len(samples) / rate
+        if abs(audio_s - motion_s) > settings.max_audio_mismatch_s:
+            raise InputError(
+                f"{row.audio}: audio lasts {audio_s:.2f} s but the motion {motion_s:.2f} s; "
+                f"trim or pad them to the same length (tolerance {settings.max_audio_mismatch_s:g} s)."
+            )
+        segs = _segments_for(row, settings, samples, rate, where)
+        source = str(row.alignment or row.audio)
+        check_segments(segs, source)
+        if segs[-1].end > motion_s + settings.max_audio_mismatch_s:
+            raise InputError(f"{source}: the alignment ends at {segs[-1].end:.2f} s, after the motion ({motion_s:.2f} s); use the take's own alignment.")
+        labels = map_phones([s.label for s in segs], source, [s.start for s in segs])
+        starts.append(sum(counts))
+        counts.append(take.positions.shape[0])
+        markers.append(take.positions)
+        audio.append((samples, rate))
+        phone_take += [i] * len(segs)
+        phone_start += [s.start for s in segs]
+        phone_end += [s.end for s in segs]
+        phone_label += labels
+    takes = Takes([r.take for r in rows], [r.emotion for r in rows], [r.sentence for r in rows],
+                  [r.split for r in rows], [r.transcript for r in rows], np.array(starts), np.array(counts))
+    phones = Phones(np.array(phone_take), np.array(phone_start), np.array(phone_end), phone_label)
+    return np.concatenate(markers).astype(np.float32), names, fps, takes, phones, audio
+
+
+def run(manifest: Path, out: Path, settings: IngestSettings, overwrite: bool = False) -> dict:
+    rows = read_manifest(manifest, settings)
+    markers, names, fps, takes, phones, audio = ingest(rows, settings)
+    rate = audio[0][1]
+    samples = [resample(s, r, rate) for s, r in audio]
+    audio_start = np.cumsum([0] + [len(s) for s in samples[:-1]])
+    with write_artifact(out, "corpus", config=settings_json(settings), inputs=[manifest], overwrite=overwrite) as f:
+        d = f.create_dataset("markers", data=markers, chunks=(min(len(markers), 1024), markers.shape[1], 3))
+        d.attrs["units"] = "mm"
+        d.attrs["fps"] = fps
+        write_strings(f, "marker_names", names)
+        takes.write(f)
+        phones.write(f)
+        a = f.create_group("audio")
+        a.create_dataset("samples", data=np.concatenate(samples).astype(np.float32))
+        a.create_dataset("start", data=audio_start.astype(np.int64))
+        a.create_dataset("count", data=np.array([len(s) for s in samples], np.int64))
+        a.attrs["sample_rate"] = rate
+    missing = float(np.isnan(markers).any(axis=2).mean())
+    return {"takes": len(takes), "frames": int(markers.shape[0]), "markers": len(names), "phones": len(phones),
+            "fps": fps, "missing_fraction": missing}

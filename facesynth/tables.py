@@ -1,0 +1,82 @@
+"""Tables shared by the corpus-side artifacts: the takes and their phone segments.
+
+Stored as column datasets under ``/takes`` and ``/phones`` and copied forward by each
+stage, so every artifact downstream of ``ingest`` knows which frames belong to which take.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import h5py
+import numpy as np
+
+from .artifacts import read, read_strings, write_strings
+
+
+@dataclass
+class Takes:
+    """One row per take. Frames of take i are ``frame_start[i] : frame_start[i] + frame_count[i]``."""
+
+    name: list[str]
+    emotion: list[str]
+    sentence: list[str]
+    split: list[str]
+    transcript: list[str]
+    frame_start: np.ndarray  # (n,) int64
+    frame_count: np.ndarray  # (n,) int64
+
+    def __len__(self) -> int:
+        return len(self.name)
+
+    def frames(self, i: int) -> slice:
+        return slice(int(self.frame_start[i]), int(self.frame_start[i] + self.frame_count[i]))
+
+    def index(self, name: str) -> int:
+        return self.name.index(name)
+
+    def write(self, f: h5py.File) -> None:
+        g = f.create_group("takes")
+        for key in ("name", "emotion", "sentence", "split", "transcript"):
+            write_strings(g, key, getattr(self, key))
+        g.create_dataset("frame_start", data=self.frame_start.astype(np.int64))
+        g.create_dataset("frame_count", data=self.frame_count.astype(np.int64))
+
+    @classmethod
+    def read(cls, f: h5py.File) -> "Takes":
+        return cls(
+            *(read_strings(f, f"takes/{k}") for k in ("name", "emotion", "sentence", "split", "transcript")),
+            read(f, "takes/frame_start"), read(f, "takes/frame_count"),
+        )
+
+
+@dataclass
+class Phones:
+    """One row per phone segment: its take (row index into :class:`Takes`), times (s), phone."""
+
+    take: np.ndarray   # (n,) int64
+    start: np.ndarray  # (n,) float64, seconds from the take's start
+    end: np.ndarray    # (n,) float64
+    phone: list[str]
+
+    def __len__(self) -> int:
+        return len(self.phone)
+
+    def write(self, f: h5py.File) -> None:
+        g = f.create_group("phones")
+        g.create_dataset("take", data=self.take.astype(np.int64))
+        g.create_dataset("start", data=self.start.astype(np.float64))
+        g.create_dataset("end", data=self.end.astype(np.float64))
+        write_strings(g, "phone", self.phone)
+        g["start"].attrs["units"] = "s"
+        g["end"].attrs["units"] = "s"
+
+    @classmethod
+    def read(cls, f: h5py.File) -> "Phones":
+        return cls(read(f, "phones/take"), read(f, "phones/start"), read(f, "phones/end"), read_strings(f, "phones/phone"))
+
+
+def copy_tables(src: h5py.File, dst: h5py.File) -> None:
+    """Copy ``/takes``, ``/phones`` and ``/marker_names`` forward to a new artifact."""
+    for key in ("takes", "phones", "marker_names"):
+        src.copy(src[key], dst, name=key)
