@@ -201,25 +201,36 @@ class Rig:
         def field(dx, dy, dz):
             return np.stack([dx + zeros, dy + zeros, dz + zeros], 1)
 
+        # Each field has a general part and a lip-separating part (moving the upper and lower
+        # lip differently); the latter is scaled by (1 - closure) so a seal stays sealed.
         self.linear = {
-            "round": field(-0.32 * x * mouth, -1.2 * lip_up + 1.2 * lip_lo, 7.0 * mouth),
-            "spread": field(0.16 * x * mouth, 0.8 * corner, -2.0 * mouth),
-            "tuck": field(zeros, 2.5 * lip_lo, -5.0 * lip_lo),
-            "raise": field(zeros, 3.0 * lip_up, 0.5 * lip_up),
-            "smile": field(
-                5.0 * sgn * corner,
-                5.0 * corner + 4.0 * (g(-42, -15, 15, 14) + g(42, -15, 15, 14)) + 1.5 * (g(-32, 22, 10, 4) + g(32, 22, 10, 4)) + 1.0 * lip_up,
-                -2.0 * corner + 2.0 * (g(-42, -15, 15, 14) + g(42, -15, 15, 14)),
+            "round": (field(-0.32 * x * mouth, zeros, 7.0 * mouth), field(zeros, -1.2 * lip_up + 1.2 * lip_lo, zeros)),
+            "spread": (field(0.16 * x * mouth, 0.8 * corner, -2.0 * mouth), None),
+            "tuck": (None, field(zeros, 2.5 * lip_lo, -5.0 * lip_lo)),
+            "raise": (None, field(zeros, 3.0 * lip_up, 0.5 * lip_up)),
+            "smile": (
+                field(
+                    5.0 * sgn * corner,
+                    5.0 * corner + 4.0 * (g(-42, -15, 15, 14) + g(42, -15, 15, 14)) + 1.5 * (g(-32, 22, 10, 4) + g(32, 22, 10, 4)),
+                    -2.0 * corner + 2.0 * (g(-42, -15, 15, 14) + g(42, -15, 15, 14)),
+                ),
+                field(zeros, 1.0 * lip_up, zeros),
             ),
-            "sad": field(
-                zeros,
-                -4.0 * corner + 5.0 * (g(-12, 50, 9, 8) + g(12, 50, 9, 8)) - 1.0 * (g(-38, 47, 10, 8) + g(38, 47, 10, 8)) + 2.0 * g(0, -78, 18, 12),
-                2.0 * lip_lo,
+            "sad": (
+                field(
+                    zeros,
+                    -4.0 * corner + 5.0 * (g(-12, 50, 9, 8) + g(12, 50, 9, 8)) - 1.0 * (g(-38, 47, 10, 8) + g(38, 47, 10, 8)) + 2.0 * g(0, -78, 18, 12),
+                    zeros,
+                ),
+                field(zeros, zeros, 2.0 * lip_lo),
             ),
-            "angry": field(
-                -2.0 * sgn * (g(-18, 47, 14, 8) + g(18, 47, 14, 8)) + 2.0 * sgn * (g(-12, -2, 5, 5) + g(12, -2, 5, 5)),
-                -5.0 * (g(-18, 47, 14, 8) + g(18, 47, 14, 8)) + 1.0 * (g(-32, 22, 10, 4) + g(32, 22, 10, 4)),
-                -1.5 * (lip_up + lip_lo),
+            "angry": (
+                field(
+                    -2.0 * sgn * (g(-18, 47, 14, 8) + g(18, 47, 14, 8)) + 2.0 * sgn * (g(-12, -2, 5, 5) + g(12, -2, 5, 5)),
+                    -5.0 * (g(-18, 47, 14, 8) + g(18, 47, 14, 8)) + 1.0 * (g(-32, 22, 10, 4) + g(32, 22, 10, 4)),
+                    -1.5 * (lip_up + lip_lo),
+                ),
+                None,
             ),
         }
 
@@ -239,10 +250,11 @@ class Rig:
         # Lip closure holds the lower-lip margin at rest (closed) against the jaw's pull.
         hold = 1.0 - np.clip(close * 1.04, 0.0, 1.0) * np.clip(self.lip_lo * 1.6, 0.0, 1.0)
         out = self.points + jaw * (self.w_jaw * hold)[:, :, None]
-        open_lips = 1.0 - np.clip(close, 0.0, 1.0)
-        for name, basis in self.linear.items():
+        open_lips = 1.0 - np.clip(close[:, 0], 0.0, 1.0)
+        for name, (general, lips) in self.linear.items():
             weight = params[:, P[name]]
-            if name == "raise":
-                weight = weight * open_lips[:, 0]
-            out += weight[:, None, None] * basis[None]
+            if general is not None:
+                out += weight[:, None, None] * general[None]
+            if lips is not None:
+                out += (weight * open_lips)[:, None, None] * lips[None]
         return out

@@ -61,10 +61,13 @@ _T = {
     "k": dict(jaw=0.35), "g": dict(jaw=0.35), "ng": dict(jaw=0.35), "y": dict(jaw=0.2, spread=0.55),
     "hh": dict(jaw=0.45), "pau": dict(jaw=0.0, close=0.5),
 }
-_STRONG = {"p": {"close": 80.0}, "b": {"close": 80.0}, "m": {"close": 80.0}, "em": {"close": 80.0},
-           "f": {"tuck": 40.0}, "v": {"tuck": 40.0}, "w": {"round": 8.0}, "uw": {"round": 3.0},
+_STRONG = {"p": {"close": 20.0}, "b": {"close": 20.0}, "m": {"close": 20.0}, "em": {"close": 20.0},
+           "f": {"tuck": 20.0}, "v": {"tuck": 20.0}, "w": {"round": 8.0}, "uw": {"round": 3.0},
            "sh": {"round": 3.0}, "ch": {"round": 3.0}, "jh": {"round": 3.0}, "zh": {"round": 3.0}}
 _WEAK = {"k", "g", "ng", "hh", "t", "d", "n", "l", "y", "th", "dh"}
+# Dominance decay rate per parameter (1/s): lip closure and the labiodental tuck are brief
+# gestures; lip rounding is anticipated over long spans (classic anticipatory coarticulation).
+_RATE = {"jaw": 18.0, "round": 12.0, "spread": 18.0, "close": 70.0, "tuck": 60.0, "raise": 20.0}
 
 # Formants (Hz) for the source-filter audio; consonants borrow a neutral tract.
 _FORMANTS = {
@@ -210,7 +213,6 @@ def articulation(utt: Utterance, style: EmotionStyle, fps: float, rng: np.random
     half = 0.35 * (utt.ends - utt.starts)
     speech_params = ("jaw", "round", "spread", "close", "tuck", "raise")
     out = np.zeros((n_frames, len(PARAMS)))
-    rate = 22.0 * style.sharpness  # 1/s
     tau = np.clip(np.abs(t[:, None] - centers[None, :]) - half[None, :], 0.0, None)  # (T, n)
     for name in speech_params:
         key = "raise_" if name == "raise" else name
@@ -220,7 +222,7 @@ def articulation(utt: Utterance, style: EmotionStyle, fps: float, rng: np.random
         ])
         if name == "close":  # only bilabials and silence care about closure
             alpha = np.where(targets > 0, alpha, 0.6)
-        dominance = alpha[None, :] * np.exp(-rate * tau)
+        dominance = alpha[None, :] * np.exp(-_RATE[name] * style.sharpness * tau)
         out[:, P[name]] = (dominance * targets[None, :]).sum(1) / dominance.sum(1)
     out[:, P["jaw"]] *= style.jaw_gain * (1.0 + 0.15 * np.interp(t, centers, utt.stress.astype(float)))
     out[:, P["spread"]] += style.spread_bias

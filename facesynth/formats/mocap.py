@@ -181,7 +181,7 @@ def read_csv(path: Path) -> MarkerTake:
             raise InputError(f"{path}, line {i + 2}: malformed row; every row needs a number or an empty cell per column.") from None
     if len(times) < 2 or not np.all(np.diff(times) > 0):
         raise InputError(f"{path}: the 'time' column must increase and have at least two rows.")
-    fps = float(np.round(1.0 / np.median(np.diff(times)), 6))
+    fps = float(np.round((len(times) - 1) / (times[-1] - times[0]), 3))
     positions *= _unit_scale(unit, path)
     return MarkerTake(positions, names, fps)
 

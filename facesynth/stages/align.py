@@ -61,6 +61,12 @@ def align_samples(samples: np.ndarray, rate: int, text: str, *, extra: dict | No
                   settings: AlignSettings | None = None, where: str = "audio") -> list[Segment]:
     """Align mono ``samples`` at ``rate`` Hz to ``text``. Returns Festival phone segments
     tiling [0, duration] (silences as ``pau``)."""
+    return align_words(samples, rate, text, extra=extra, settings=settings, where=where)[0]
+
+
+def align_words(samples: np.ndarray, rate: int, text: str, *, extra: dict | None = None,
+                settings: AlignSettings | None = None, where: str = "audio") -> tuple[list[Segment], list[Segment]]:
+    """Like :func:`align_samples`, also returning the word segments."""
     import pocketsphinx
 
     settings = settings or AlignSettings(frame_rate=100, sample_rate=16000)
@@ -95,18 +101,26 @@ def align_samples(samples: np.ndarray, rate: int, text: str, *, extra: dict | No
         raise InputError(f"{where}: forced alignment found no path; check that the text matches the speech.")
     frame = 1.0 / settings.frame_rate
     segments: list[Segment] = []
+    word_segments: list[Segment] = []
     for word in alignment:
         name = re.sub(r"\(\d+\)$", "", word.name)
         phones = [p for p in word]
-        if name in ("<sil>", "<s>", "</s>") or not phones:
-            start, end = word.start * frame, (word.start + word.duration) * frame
+        start, end = word.start * frame, (word.start + word.duration) * frame
+        if name.startswith("<") or name.startswith("[") or not phones:
             segments.append(Segment(start, end, PAU))
             continue
+        word_segments.append(Segment(start, end, name))
         pron = _stressed(name, tuple(p.name for p in phones), extra)
         for p, label in zip(phones, pron):
             segments.append(Segment(p.start * frame, (p.start + p.duration) * frame, to_festival(label) or PAU))
+    if [w.label for w in word_segments] != words:
+        lost = [w for w in words if w not in {s.label for s in word_segments}]
+        raise InputError(
+            f"{where}: forced alignment could not place {', '.join(repr(w) for w in lost) or 'every word'}; "
+            "check that the text matches the speech."
+        )
     duration = len(audio) / settings.sample_rate
-    return _tile(segments, duration)
+    return _tile(segments, duration), word_segments
 
 
 def _tile(segments: list[Segment], duration: float) -> list[Segment]:
@@ -137,7 +151,7 @@ def run(audio_path: Path, text: str, out: Path, settings: AlignSettings, dict_pa
 
     samples, rate = read_audio(audio_path)
     extra = read_pronunciations(dict_path) if dict_path else {}
-    segments = align_samples(samples, rate, text, extra=extra, settings=settings, where=str(audio_path))
+    segments, words = align_words(samples, rate, text, extra=extra, settings=settings, where=str(audio_path))
     with atomic_path(out, overwrite) as tmp:
-        write_textgrid(tmp, {"phones": segments}, segments[-1].end)
+        write_textgrid(tmp, {"phones": segments, "words": words}, segments[-1].end)
     return {"phones": sum(s.label != PAU for s in segments), "seconds": segments[-1].end}

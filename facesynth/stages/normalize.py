@@ -11,7 +11,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
-from scipy.interpolate import PchipInterpolator
+from scipy.interpolate import CubicSpline
 
 from ..artifacts import open_artifact, read, read_strings, write_artifact
 from ..config import NormalizeSettings, settings_json
@@ -22,8 +22,9 @@ from ..tables import Phones, Takes, copy_tables
 def fill_gaps(track: np.ndarray, max_gap: int) -> tuple[np.ndarray, list[tuple[int, int]]]:
     """Fill NaN runs of at most ``max_gap`` frames in one marker's (T, 3) track.
 
-    Interior runs are filled by shape-preserving cubic (PCHIP) interpolation, runs at the
-    ends by holding the nearest sample. Returns the filled track and the (start, length)
+    Interior runs are filled by a cubic spline through the valid samples within
+    ``max_gap`` frames on either side (what capture software calls a spline fill), runs at
+    the ends by holding the nearest sample. Returns the filled track and the (start, length)
     of runs left unfilled.
     """
     missing = np.isnan(track).any(axis=1)
@@ -36,15 +37,19 @@ def fill_gaps(track: np.ndarray, max_gap: int) -> tuple[np.ndarray, list[tuple[i
     long_runs = []
     edges = np.diff(np.concatenate([[0], missing.astype(np.int8), [0]]))
     starts, ends = np.nonzero(edges == 1)[0], np.nonzero(edges == -1)[0]
-    interp = PchipInterpolator(valid, track[valid], axis=0) if len(valid) >= 2 else None
     for s, e in zip(starts, ends):
         if e - s > max_gap:
             long_runs.append((int(s), int(e - s)))
             continue
-        if s == 0 or e == len(track) or interp is None:
+        if s == 0 or e == len(track):
             out[s:e] = track[valid[0]] if s == 0 else track[valid[-1]]
+            continue
+        near = valid[(valid >= s - max_gap) & (valid < e + max_gap)]
+        frames = np.arange(s, e)
+        if len(near) >= 4:
+            out[s:e] = CubicSpline(near, track[near], axis=0)(frames)
         else:
-            out[s:e] = interp(np.arange(s, e))
+            out[s:e] = np.stack([np.interp(frames, near, track[near, a]) for a in range(3)], 1)
     return out, long_runs
 
 

@@ -1,0 +1,38 @@
+"""Shared fixtures: the tiny sample corpus and the artifacts built from it, made once per session."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from facesynth.config import Config
+
+SHARED_ASSETS = Path(__file__).resolve().parents[2] / "shared" / "assets"
+
+
+@pytest.fixture(scope="session")
+def config() -> Config:
+    return Config.load()
+
+
+@pytest.fixture(scope="session")
+def tiny_corpus(tmp_path_factory) -> Path:
+    from facesynth.corpus.generate import generate
+
+    out = tmp_path_factory.mktemp("tiny") / "corpus"
+    generate(out, "tiny", seed=0)
+    return out
+
+
+@pytest.fixture(scope="session")
+def tiny_artifacts(tiny_corpus, config, tmp_path_factory) -> dict[str, Path]:
+    """corpus.h5, normalized.h5, pca.h5 built from the tiny corpus."""
+    from facesynth.stages import ingest, normalize, pca
+
+    d = tmp_path_factory.mktemp("artifacts")
+    paths = {k: d / f"{k}.h5" for k in ("corpus", "normalized", "pca")}
+    ingest.run(tiny_corpus / "manifest.csv", paths["corpus"], config.settings("ingest"))
+    normalize.run(paths["corpus"], paths["normalized"], config.settings("normalize"))
+    pca.run(paths["normalized"], paths["pca"], config.settings("pca"))
+    return paths

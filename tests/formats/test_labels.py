@@ -1,0 +1,67 @@
+import pytest
+
+from facesynth.errors import InputError
+from facesynth.formats.labels import Segment, read_lab, read_phone_segments, read_textgrid, write_lab, write_textgrid
+
+SHORT = '''File type = "ooTextFile"
+Object class = "TextGrid"
+
+0
+1.5
+<exists>
+1
+"IntervalTier"
+"phones"
+0
+1.5
+3
+0
+0.5
+"sil"
+0.5
+1.0
+"AH0"
+1.0
+1.5
+"say ""hi"""
+'''
+
+
+def test_textgrid_round_trip(tmp_path):
+    segs = [Segment(0.0, 0.25, "pau"), Segment(0.25, 0.4, "hh"), Segment(0.4, 0.8, "ax")]
+    p = tmp_path / "a.TextGrid"
+    write_textgrid(p, {"phones": segs, "words": [Segment(0.25, 0.8, "a")]})
+    tiers = read_textgrid(p)
+    assert tiers["phones"] == segs
+    assert tiers["words"] == [Segment(0.25, 0.8, "a")]
+
+
+def test_short_format_and_utf16(tmp_path):
+    p = tmp_path / "short.TextGrid"
+    p.write_text(SHORT, encoding="utf-16")
+    segs = read_textgrid(p)["phones"]
+    assert [s.label for s in segs] == ["sil", "AH0", 'say "hi"']
+    assert segs[1] == Segment(0.5, 1.0, "AH0")
+
+
+def test_htk_and_festival_lab(tmp_path):
+    p = tmp_path / "a.lab"
+    write_lab(p, [Segment(0.0, 0.5, "pau"), Segment(0.5, 0.75, "b")])
+    assert read_lab(p) == [Segment(0.0, 0.5, "pau"), Segment(0.5, 0.75, "b")]
+    f = tmp_path / "f.lab"
+    f.write_text("separator ;\nnfields 1\n#\n0.5 125 pau\n0.75 125 b\n")
+    assert read_lab(f) == [Segment(0.0, 0.5, "pau"), Segment(0.5, 0.75, "b")]
+
+
+def test_overlapping_segments_are_refused_with_time(tmp_path):
+    p = tmp_path / "bad.TextGrid"
+    write_textgrid(p, {"phones": [Segment(0.0, 0.5, "pau"), Segment(0.4, 0.8, "b")]})
+    with pytest.raises(InputError, match=r"bad\.TextGrid, 0\.400 s: segment 'b' overlaps"):
+        read_phone_segments(p)
+
+
+def test_missing_phone_tier_is_named(tmp_path):
+    p = tmp_path / "t.TextGrid"
+    write_textgrid(p, {"words": [Segment(0, 1, "a")], "other": [Segment(0, 1, "b")]})
+    with pytest.raises(InputError, match="no phone tier"):
+        read_phone_segments(p)

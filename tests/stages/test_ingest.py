@@ -1,0 +1,122 @@
+"""Each bad input is refused with one sentence naming the place, and no output file."""
+
+import csv
+import shutil
+
+import h5py
+import numpy as np
+import pytest
+
+from facesynth.errors import InputError
+from facesynth.formats.audio import read_audio, write_wav
+from facesynth.formats.labels import Segment, write_textgrid
+from facesynth.formats.mocap import MarkerTake, read_mocap, write_c3d
+from facesynth.stages import ingest
+
+
+@pytest.fixture()
+def corpus(tiny_corpus, tmp_path):
+    """A private copy of the tiny corpus, limited to three takes, that a test may damage."""
+    d = tmp_path / "c"
+    shutil.copytree(tiny_corpus, d)
+    rows = list(csv.DictReader(open(d / "manifest.csv")))[:3]
+    _write_manifest(d, rows)
+    return d
+
+
+def _write_manifest(d, rows):
+    with open(d / "manifest.csv", "w", newline="") as fh:
+        w = csv.DictWriter(fh, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(rows)
+
+
+def _rows(d):
+    return list(csv.DictReader(open(d / "manifest.csv")))
+
+
+def _refused(d, config, match):
+    out = d / "corpus.h5"
+    with pytest.raises(InputError, match=match):
+        ingest.run(d / "manifest.csv", out, config.settings("ingest"))
+    assert not out.exists()
+    assert not list(d.glob("corpus.h5.tmp-*"))
+
+
+def test_good_manifest_is_ingested(corpus, config):
+    out = corpus / "corpus.h5"
+    summary = ingest.run(corpus / "manifest.csv", out, config.settings("ingest"))
+    assert summary["takes"] == 3 and summary["markers"] == 93
+    with h5py.File(out) as f:
+        assert f["markers"].attrs["units"] == "mm" and f["markers"].attrs["fps"] == 120
+        assert f["audio"].attrs["sample_rate"] == 16000
+        assert set(p.decode() for p in f["phones/phone"][()]) <= set(
+            "pau aa ae ah ao aw ax ay b ch d dh eh er ey f g hh ih iy jh k l m n ng ow oy p r s sh t th uh uw v w y z zh".split())
+
+
+def test_missing_file(corpus, config):
+    (corpus / _rows(corpus)[1]["audio"]).unlink()
+    _refused(corpus, config, r"take 'neutral_s001' \(manifest line 3\): audio file .* not found")
+
+
+def test_truncated_c3d(corpus, config):
+    p = corpus / _rows(corpus)[0]["mocap"]
+    p.write_bytes(p.read_bytes()[:-2000])
+    _refused(corpus, config, r"neutral_s000\.c3d: truncated C3D")
+
+
+def test_marker_names_differ(corpus, config):
+    p = corpus / _rows(corpus)[1]["mocap"]
+    take = read_mocap(p)
+    take.names[0] = "RENAMED"
+    write_c3d(p, take)
+    _refused(corpus, config, r"neutral_s001\.c3d: marker names differ .*extra \['RENAMED'\]")
+
+
+def test_frame_rates_differ(corpus, config):
+    p = corpus / _rows(corpus)[2]["mocap"]
+    take = read_mocap(p)
+    write_c3d(p, MarkerTake(take.positions, take.names, 100.0))
+    _refused(corpus, config, r"frame rate 100 Hz differs from the first take's 120 Hz")
+
+
+def test_audio_much_shorter_than_motion(corpus, config):
+    p = corpus / _rows(corpus)[0]["audio"]
+    samples, rate = read_audio(p)
+    write_wav(p, samples[: rate // 2], rate)
+    _refused(corpus, config, r"neutral_s000\.wav: audio lasts 0\.50 s but the motion")
+
+
+def test_overlapping_segments(corpus, config):
+    p = corpus / _rows(corpus)[0]["alignment"]
+    write_textgrid(p, {"phones": [Segment(0, 0.3, "pau"), Segment(0.2, 0.5, "b")]})
+    _refused(corpus, config, r"neutral_s000\.TextGrid, 0\.200 s: segment 'b' overlaps")
+
+
+def test_unknown_phone(corpus, config):
+    p = corpus / _rows(corpus)[0]["alignment"]
+    write_textgrid(p, {"phones": [Segment(0, 0.3, "pau"), Segment(0.3, 0.5, "qq")]})
+    _refused(corpus, config, r"neutral_s000\.TextGrid, 0\.300 s: unknown phone 'qq'")
+
+
+def test_unknown_emotion(corpus, config):
+    rows = _rows(corpus)
+    rows[1]["emotion"] = "bored"
+    _write_manifest(corpus, rows)
+    _refused(corpus, config, r"manifest\.csv, line 3: unknown emotion 'bored'")
+
+
+def test_empty_take(corpus, config):
+    p = corpus / _rows(corpus)[0]["mocap"]
+    take = read_mocap(p)
+    write_c3d(p, MarkerTake(np.full_like(take.positions, np.nan), take.names, 120.0))
+    _refused(corpus, config, r"neutral_s000\.c3d: every marker sample is missing")
+
+
+def test_emotion_aliases_are_accepted(corpus, config):
+    rows = _rows(corpus)
+    rows[0]["emotion"] = "Happiness"
+    _write_manifest(corpus, rows)
+    ingest.run(corpus / "manifest.csv", corpus / "c.h5", config.settings("ingest"))
+    with h5py.File(corpus / "c.h5") as f:
+        assert f["takes/emotion"][0].decode() == "happy"

@@ -1,0 +1,64 @@
+import h5py
+import numpy as np
+import pytest
+
+from facesynth.artifacts import SCHEMAS, open_artifact, read, write_artifact
+from facesynth.errors import ArtifactError, OutputExistsError
+
+
+def test_stamps_and_provenance(tmp_path):
+    src = tmp_path / "in.txt"
+    src.write_text("hello")
+    out = tmp_path / "a.h5"
+    with write_artifact(out, "pca", config={"n": 1}, inputs=[src]) as f:
+        f.create_dataset("x", data=np.arange(3))
+    with open_artifact(out, "pca") as f:
+        assert f.attrs["facesynth_kind"] == "pca"
+        assert f.attrs["facesynth_schema"] == SCHEMAS["pca"]
+        assert '"n": 1' in f.attrs["config"]
+        assert "2cf24dba5fb0a30e26e83b2ac5b9e29e1b161e5c1fa7425e73043362938b9824" in f.attrs["inputs"]
+        assert read(f, "x").tolist() == [0, 1, 2]
+
+
+def test_wrong_kind_names_file_found_and_expected(tmp_path):
+    out = tmp_path / "a.h5"
+    with write_artifact(out, "corpus"):
+        pass
+    with pytest.raises(ArtifactError, match=r"a\.h5: found a 'corpus' artifact but expected 'pca'"):
+        open_artifact(out, "pca")
+
+
+def test_unknown_schema_says_rebuild(tmp_path):
+    out = tmp_path / "a.h5"
+    with write_artifact(out, "pca"):
+        pass
+    with h5py.File(out, "r+") as f:
+        f.attrs["facesynth_schema"] = 99
+    with pytest.raises(ArtifactError, match="schema 99 is not the supported schema"):
+        open_artifact(out, "pca")
+
+
+def test_missing_dataset_names_the_key(tmp_path):
+    out = tmp_path / "a.h5"
+    with write_artifact(out, "pca"):
+        pass
+    with open_artifact(out, "pca") as f, pytest.raises(ArtifactError, match="missing dataset 'pca/mean'"):
+        read(f, "pca/mean")
+
+
+def test_failed_write_leaves_no_file(tmp_path):
+    out = tmp_path / "a.h5"
+    with pytest.raises(RuntimeError):
+        with write_artifact(out, "pca") as f:
+            f.create_dataset("x", data=np.arange(3))
+            raise RuntimeError("killed")
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_existing_output_is_not_replaced_without_overwrite(tmp_path):
+    out = tmp_path / "a.h5"
+    out.write_text("precious")
+    with pytest.raises(OutputExistsError, match="--overwrite"):
+        with write_artifact(out, "pca"):
+            pass
+    assert out.read_text() == "precious"
