@@ -40,7 +40,30 @@ $(OUT)/normalized.h5: $(OUT)/corpus.h5 $(CONFIG)
 $(OUT)/pca.h5: $(OUT)/normalized.h5 $(CONFIG)
 	$(FS) pca $< -o $@ --overwrite
 
-demo: $(OUT)/pca.h5
+$(OUT)/db.h5: $(OUT)/pca.h5 $(CONFIG)
+	$(FS) build-db $< -o $@ --overwrite
+
+# Two held-out (test) sentences of the small corpus, each asked for in another emotion.
+DEMO_TAKES := happy_s016 sad_s017
+
+$(OUT)/%.emotions.txt:
+	mkdir -p $(OUT)
+	echo "0 1000 $(firstword $(subst _, ,$*))" > $@
+
+$(OUT)/%.motion.h5: $(OUT)/db.h5 $(OUT)/%.emotions.txt $(CONFIG)
+	$(FS) synthesize $< --phonemes $(OUT)/corpus/labels/$*.TextGrid --emotions $(OUT)/$*.emotions.txt -o $@ --overwrite
+
+$(OUT)/%.anim.h5: $(OUT)/%.motion.h5 $(CONFIG)
+	$(FS) deform $< --mesh $(OUT)/corpus/face.obj --binding $(OUT)/corpus/markers.csv -o $@ --overwrite
+
+$(OUT)/demo.avi: $(foreach t,$(DEMO_TAKES),$(OUT)/$(t).anim.h5) $(CONFIG)
+	$(FS) render $(foreach t,$(DEMO_TAKES),$(OUT)/$(t).anim.h5) \
+	    $(foreach t,$(DEMO_TAKES),--audio $(OUT)/corpus/audio/$(t).wav) -o $@ --overwrite
+
+demo: $(OUT)/demo.avi
+	@echo "demo video: $(OUT)/demo.avi"
+
+.SECONDARY:
 
 clean:
 	rm -rf $(OUT)

@@ -173,5 +173,106 @@ def pca(ctx: Context, normalized: Path, output: Path):
             f"(reconstruction RMS {s['rms_error_mm']:.3f} mm per marker) -> {output}")
 
 
+@main.command("build-db")
+@click.argument("pca_path", metavar="PCA", type=EXISTING)
+@click.option("-o", "--output", type=PATH, required=True, help="Output db.h5.")
+@stage
+def build_db(ctx: Context, pca_path: Path, output: Path):
+    """Build the motion-node database and its pairwise transition terms (DSC, PGap, VGap).
+
+    \b
+    Example:
+      facesynth build-db pca.h5 -o db.h5
+    """
+    from .stages import build_db as stage
+
+    s = stage.run(pca_path, output, ctx.config.settings("build_db"), ctx.overwrite)
+    ctx.say(f"built {s['nodes']} motion nodes ({s['with_predecessor']} with a captured predecessor); "
+            f"DSC {s['dsc_s']:.2f} s, PGap/VGap {s['gaps_s']:.2f} s -> {output}")
+
+
+@main.command()
+@click.argument("db", type=EXISTING)
+@click.option("--phonemes", type=EXISTING, default=None, help="The utterance's phone timing (TextGrid or .lab).")
+@click.option("--audio", type=EXISTING, default=None, help="Speech to align on the fly (with --text).")
+@click.option("--text", default=None, help="What --audio says.")
+@click.option("--emotions", type=EXISTING, default=None, help="Emotion spans: 'start_s end_s emotion' lines, or a TextGrid tier 'emotions'.")
+@click.option("--constraints", type=EXISTING, default=None, help="Motion-node constraints: 'INDEX NODE' or 'TIMEs NODE' lines.")
+@click.option("--search", type=click.Choice(["dp", "greedy"]), default=None, help="Search (default: synthesize.search).")
+@click.option("-o", "--output", type=PATH, required=True, help="Output motion.h5.")
+@stage
+def synthesize(ctx: Context, db: Path, phonemes, audio, text, emotions, constraints, search, output: Path):
+    """Synthesize expressive marker motion for a new utterance (paper VI, Algorithm 1).
+
+    \b
+    Example:
+      facesynth synthesize db.h5 --phonemes corpus/labels/happy_s014.TextGrid \\
+          --emotions spans.txt -o motion.h5
+    """
+    import dataclasses
+
+    from .stages import synthesize as stage
+
+    settings = ctx.config.settings("synthesize")
+    if search:
+        settings = dataclasses.replace(settings, search=search)
+    s = stage.run(db, output, settings, ctx.config.settings("ingest"), phones_path=phonemes, emotions_path=emotions,
+                  constraints_path=constraints, audio=audio, text=text, overwrite=ctx.overwrite)
+    for phone, how in s["unseen"].items():
+        ctx.say(f"warning: the database has no node of /{phone}/; it will be covered by {how}.")
+    ctx.detail(f"load {s['load_s']:.3f} s, costs {s['costs_s']:.3f} s, search {s['search_s']:.3f} s on {s['device']}")
+    ctx.say(f"synthesized {s['phones']} phones, {s['frames']} frames, cost {s['cost']:.2f}, "
+            f"{s['joins']} non-captured joins -> {output}")
+
+
+@main.command()
+@click.argument("motion", type=EXISTING)
+@click.option("--mesh", type=EXISTING, required=True, help="Face mesh (.obj or .ply).")
+@click.option("--binding", type=EXISTING, required=True, help="CSV 'marker,vertex' binding markers to mesh vertices.")
+@click.option("-o", "--output", type=PATH, required=True, help="Output anim.h5.")
+@stage
+def deform(ctx: Context, motion: Path, mesh: Path, binding: Path, output: Path):
+    """Deform a face mesh by the synthesized markers (mesh-distance Gaussian weights, Eq. 14-15).
+
+    \b
+    Example:
+      facesynth deform motion.h5 --mesh corpus/face.obj --binding corpus/markers.csv -o anim.h5
+    """
+    from .stages import deform as stage
+
+    s = stage.run(motion, mesh, binding, output, ctx.config.settings("deform"), ctx.overwrite)
+    if s["unreached"]:
+        ctx.say(f"note: {s['unreached']} vertices are farther than deform.distance_threshold from every marker and stay at rest.")
+    ctx.say(f"deformed {s['vertices']} vertices over {s['frames']} frames (marker fit RMS {s['fit_rms']:.3g} mesh units) -> {output}")
+
+
+@main.command()
+@click.argument("anims", nargs=-1, required=True, type=EXISTING)
+@click.option("--audio", "audios", multiple=True, required=True, type=EXISTING, help="Audio of each animation, in order.")
+@click.option("--view", type=click.Choice(["shaded", "markers", "side-by-side"]), default=None, help="Default: render.view.")
+@click.option("--compare", type=EXISTING, default=None, help="Second animation for the side-by-side view.")
+@click.option("-o", "--output", type=PATH, required=True, help="Output .avi.")
+@stage
+def render(ctx: Context, anims, audios, view, compare, output: Path):
+    """Render mesh animations to an AVI with their audio (several play one after another).
+
+    \b
+    Example:
+      facesynth render anim.h5 --audio corpus/audio/happy_s014.wav -o happy.avi
+    """
+    import dataclasses
+    import time
+
+    from .stages import render as stage
+
+    settings = ctx.config.settings("render")
+    if view:
+        settings = dataclasses.replace(settings, view=view)
+    started = time.perf_counter()
+    s = stage.run(list(anims), list(audios), output, settings, compare, ctx.overwrite)
+    elapsed = time.perf_counter() - started
+    ctx.say(f"rendered {s['frames']} frames ({s['seconds']:.2f} s of video, {s['frames'] / elapsed:.1f} frames/s) -> {output}")
+
+
 if __name__ == "__main__":  # pragma: no cover
     main()

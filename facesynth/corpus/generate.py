@@ -50,10 +50,10 @@ PRESETS = {
     # seconds, for tests
     "tiny": Preset(train=3, val=1, test=1, min_phones=10, max_phones=16, pause_prob=0.5, contamination_rate=0.7),
     # a few minutes of speech, for the demo
-    "small": Preset(train=14, val=2, test=1, min_phones=22, max_phones=32, pause_prob=0.35, contamination_rate=0.5),
+    "small": Preset(train=14, val=2, test=2, min_phones=22, max_phones=32, pause_prob=0.35, contamination_rate=0.5),
     # about 5,556 motion nodes, the size of the paper's database (6 validation and 3 test
     # sentences per emotion, the paper's 24 + 12)
-    "paper": Preset(train=46, val=6, test=3, min_phones=25, max_phones=35, pause_prob=0.35, contamination_rate=0.3),
+    "paper": Preset(train=43, val=6, test=3, min_phones=25, max_phones=35, pause_prob=0.35, contamination_rate=0.3),
 }
 
 MARKER_NOISE_MM = 0.2

@@ -1,0 +1,135 @@
+"""Concatenation and post-processing of a searched node path (paper VII-B).
+
+Order: time-warp each node to its input phone's duration on the 120 Hz grid and
+concatenate; smooth the joins without a captured predecessor/successor relation with
+Eq. 16; regenerate the frames of input pauses by interpolation; back-project with Eq. 11
+(done by the caller); down-sample to the output rate.
+
+Choices where the paper is vague:
+
+* Eq. 16's smoothness term is written ``int g''(t) dt``; a signed integral is not a
+  smoothness measure, so the squared second derivative is used (as in the trajectory
+  smoothing of Ezzat et al., the paper's [27]), discretized as second differences and
+  weighted by ``smoothing_lambda``. The fit is solved per PCA coefficient.
+* Pauses at the start or end of the utterance have a non-silence boundary on one side
+  only; the other side is the database's neutral closed-mouth rest pose, so the face
+  settles to rest in silence.
+* Down-sampling takes every (capture rate / output rate)-th frame, or interpolates when the
+  ratio is not whole; no low-pass filter, so brief lip closures survive.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..phonemes import PAU
+
+
+@dataclass
+class Concatenated:
+    """coeffs : (F, K) at the capture rate; node/source_frame : (F,) provenance (-1 for
+    regenerated silence); step : (F,) input phone index of each frame."""
+
+    coeffs: np.ndarray
+    node: np.ndarray
+    source_frame: np.ndarray
+    step: np.ndarray
+    smoothed: np.ndarray  # (F,) bool, frame changed by join smoothing
+
+
+def frame_ranges(starts: np.ndarray, ends: np.ndarray, fps: float) -> list[tuple[int, int]]:
+    """Output frames [a, b) of each input phone on the fps grid (frame f at time f / fps)."""
+    edges = np.round(np.concatenate([[starts[0]], ends]) * fps).astype(int)
+    edges = np.maximum.accumulate(edges)
+    return [(int(edges[k]), int(edges[k + 1])) for k in range(len(starts))]
+
+
+def time_warp(coeffs: np.ndarray, source_start: int, count: int, n_out: int) -> tuple[np.ndarray, np.ndarray]:
+    """Resample a node's ``count`` frames to ``n_out`` frames by linear interpolation.
+    Returns (n_out, K) and the nearest source frame of each output frame."""
+    if n_out <= 0:
+        return np.zeros((0, coeffs.shape[1]), coeffs.dtype), np.zeros(0, np.int64)
+    x = np.linspace(0.0, count - 1, n_out) if n_out > 1 else np.array([(count - 1) / 2.0])
+    lo = np.floor(x).astype(int)
+    hi = np.minimum(lo + 1, count - 1)
+    w = (x - lo)[:, None]
+    seq = coeffs[source_start : source_start + count].astype(np.float64)
+    return seq[lo] * (1 - w) + seq[hi] * w, source_start + np.round(x).astype(np.int64)
+
+
+def smooth_join(f: np.ndarray, w_left: float, w_right: float, lam: float) -> np.ndarray:
+    """Eq. 16 on a window of 2s frames (s before the join, s after): minimize
+    sum W (g_i - f_i)^2 + lam * sum (second difference of g)^2. f : (2s, K)."""
+    n = len(f)
+    s = n // 2
+    weights = np.concatenate([np.full(s, w_left), np.full(n - s, w_right)])
+    d2 = np.zeros((max(n - 2, 0), n))
+    for r in range(n - 2):
+        d2[r, r : r + 3] = (1.0, -2.0, 1.0)
+    system = np.diag(weights) + lam * d2.T @ d2
+    return np.linalg.solve(system, weights[:, None] * f)
+
+
+def concatenate(path: np.ndarray, phones: list[str], starts: np.ndarray, ends: np.ndarray,
+                node_start: np.ndarray, node_count: np.ndarray, node_pre: np.ndarray, node_phone: list[str],
+                coeffs: np.ndarray, rest: np.ndarray, fps: float, *, half_window: int, lam: float,
+                weight_of, interpolation: str = "linear") -> Concatenated:
+    """The whole VII-B chain up to (not including) Eq. 11. ``weight_of(phone)`` gives Table IV's factor."""
+    ranges = frame_ranges(starts, ends, fps)
+    total = ranges[-1][1]
+    k = coeffs.shape[1]
+    out = np.zeros((total, k))
+    node = -np.ones(total, np.int64)
+    source = -np.ones(total, np.int64)
+    step = np.zeros(total, np.int64)
+    for t, (a, b) in enumerate(ranges):
+        j = int(path[t])
+        out[a:b], source[a:b] = time_warp(coeffs, int(node_start[j]), int(node_count[j]), b - a)
+        node[a:b] = j
+        step[a:b] = t
+    smoothed = np.zeros(total, bool)
+    for t in range(len(path) - 1):
+        if phones[t] == PAU or phones[t + 1] == PAU or node_pre[path[t + 1]] == path[t]:
+            continue  # captured neighbours need no smoothing; pauses are regenerated below
+        join = ranges[t][1]
+        a, b = max(ranges[t][0], join - half_window), min(ranges[t + 1][1], join + half_window)
+        if b - a < 3:
+            continue
+        w_left = weight_of(node_phone[path[t]])
+        w_right = weight_of(node_phone[path[t + 1]])
+        out[a:b] = smooth_join(out[a:b], w_left, w_right, lam)
+        smoothed[a:b] = True
+    for t, (a, b) in enumerate(ranges):
+        if phones[t] != PAU or b <= a:
+            continue
+        left = out[a - 1] if a > 0 else rest
+        right = out[b] if b < total else rest
+        out[a:b] = interpolate(left, right, b - a, interpolation)
+        node[a:b] = -1
+        source[a:b] = -1
+    return Concatenated(out.astype(np.float32), node, source, step, smoothed)
+
+
+def interpolate(left: np.ndarray, right: np.ndarray, n: int, kind: str) -> np.ndarray:
+    """n frames strictly between two boundary frames."""
+    u = np.arange(1, n + 1) / (n + 1)
+    if kind == "cosine":
+        u = (1 - np.cos(np.pi * u)) / 2
+    elif kind == "cubic":
+        u = u * u * (3 - 2 * u)  # smoothstep: zero velocity at both ends
+    return left[None] * (1 - u[:, None]) + right[None] * u[:, None]
+
+
+def downsample(frames: np.ndarray, fps_in: float, fps_out: float) -> np.ndarray:
+    """Frames at fps_out covering the same duration (frame k at time k / fps_out)."""
+    ratio = fps_in / fps_out
+    n_out = int(np.floor((len(frames) - 1) / ratio)) + 1
+    if abs(ratio - round(ratio)) < 1e-9:
+        return frames[:: int(round(ratio))][:n_out].copy()
+    x = np.arange(n_out) * ratio
+    lo = np.floor(x).astype(int)
+    hi = np.minimum(lo + 1, len(frames) - 1)
+    w = (x - lo).reshape(-1, *([1] * (frames.ndim - 1)))
+    return (frames[lo] * (1 - w) + frames[hi] * w).astype(frames.dtype)

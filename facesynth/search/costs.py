@@ -1,0 +1,85 @@
+"""Cost terms of paper VI-B: transition cost (Table I, Eq. 6-9), observation cost (Table II),
+emotion mismatch penalty (Eq. 5) and blocking penalty (Eq. 10).
+
+Eq. 10 read literally would block every node at every unconstrained step; the intent
+(stated in the text) is that at a constrained step ``t_m`` every node except ``o_{i_m}``
+gets ``HugePenalty``, and unconstrained steps get 0. That is what is implemented.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..config import SynthesizeSettings
+from ..phonemes import PAU, viseme
+
+
+@dataclass
+class StepCosts:
+    """Per input step t and node j, float32 (T, N): observation, emotion and blocking terms."""
+
+    oc: np.ndarray
+    emp: np.ndarray
+    block: np.ndarray
+
+    @property
+    def total(self) -> np.ndarray:
+        return (self.oc + self.emp + self.block).astype(np.float32)
+
+
+def transition_matrix(dsc: np.ndarray, pgap: np.ndarray, vgap: np.ndarray, node_viseme: np.ndarray,
+                      pre: np.ndarray, s: SynthesizeSettings, out: np.ndarray | None = None) -> np.ndarray:
+    """TC[i, j] of Table I, (N, N) float32, row i = the node before, column j = the node after.
+
+    Rule 1: pre(o_j) = o_i -> 0. Rule 2: viseme(o_i) = viseme(pre(o_j)) ->
+    alpha2 DSC + PVC. Rule 3: otherwise alpha2 DSC + PVC + PNT. Rule 4: pre(o_j) = NIL ->
+    alpha1 PNT. PVC = alpha3 PGap + VGap (Eq. 7).
+    """
+    n = len(pre)
+    tc = out if out is not None else np.empty((n, n), np.float32)
+    has_pre = pre >= 0
+    pre_viseme = np.where(has_pre, node_viseme[np.maximum(pre, 0)], -1)
+    block = 1024
+    for a in range(0, n, block):
+        b = min(n, a + block)
+        t = np.float32(s.alpha2) * dsc[a:b] + np.float32(s.alpha3) * pgap[a:b] + vgap[a:b]
+        t += np.float32(s.pnt) * (node_viseme[a:b, None] != pre_viseme[None, :])
+        t[:, ~has_pre] = np.float32(s.alpha1 * s.pnt)
+        tc[a:b] = t
+    rows = np.nonzero(has_pre)[0]
+    tc[pre[rows], rows] = 0.0
+    return tc
+
+
+def step_costs(phones: list[str], emotions: list[str], node_phone: list[str], node_emotion: list[str],
+               constraints: dict[int, int], s: SynthesizeSettings) -> StepCosts:
+    """OC (Table II), EMP (Eq. 5) and B (Eq. 10) for every input step and node."""
+    t_count, n = len(phones), len(node_phone)
+    node_phone_arr = np.array(node_phone)
+    node_vis = np.array([viseme(p) for p in node_phone])
+    node_emo = np.array(node_emotion)
+    oc = np.empty((t_count, n), np.float32)
+    emp = np.empty((t_count, n), np.float32)
+    block = np.zeros((t_count, n), np.float32)
+    for t, (p, e) in enumerate(zip(phones, emotions)):
+        if p == PAU:
+            oc[t] = 0.0
+        else:
+            same_phone = node_phone_arr == p
+            same_viseme = node_vis == viseme(p)
+            oc[t] = np.where(same_phone, 0.0, np.where(same_viseme, s.alpha4 * s.alpha5 * s.pnt, s.alpha5 * s.pnt))
+        emp[t] = np.where(node_emo == e, 0.0, s.alpha6 * s.pnt)
+    for t, node in constraints.items():
+        block[t] = s.huge_penalty
+        block[t, node] = 0.0
+    return StepCosts(oc, emp, block)
+
+
+def path_terms(path: np.ndarray, tc: np.ndarray, steps: StepCosts) -> dict[str, np.ndarray]:
+    """Every cost term along a path: tc[t] is the transition into step t (0 at t = 0)."""
+    t_idx = np.arange(len(path))
+    tcs = np.zeros(len(path), np.float32)
+    tcs[1:] = tc[path[:-1], path[1:]]
+    return {"tc": tcs, "oc": steps.oc[t_idx, path], "emp": steps.emp[t_idx, path], "block": steps.block[t_idx, path]}

@@ -1,0 +1,121 @@
+"""The dynamic program of paper Algorithm 1, as a NumPy reference and on OpenCL.
+
+Both compute ``phi_t(j) = min_i(phi_{t-1}(i) + TC(i, j)) + obs_t(j)`` in float32 with the
+same additions, so they give bit-identical costs; the path is recovered afterwards by
+recomputing each step's argmin along the optimal path only (lowest index on ties), which
+is why the OpenCL kernel keeps no backpointers.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+PANEL = 96
+
+
+@dataclass
+class DpResult:
+    cost: float            # COST* of Algorithm 1 line 10
+    path: np.ndarray       # (T,) node per step
+    phi: np.ndarray        # (T, N) float32 accumulated costs
+
+
+def backtrack(phi: np.ndarray, tc_column) -> np.ndarray:
+    """Algorithm 1 lines 11-14 with chi recomputed: ``tc_column(j)`` returns TC[:, j]."""
+    t_count = len(phi)
+    path = np.empty(t_count, np.int64)
+    path[-1] = int(np.argmin(phi[-1]))
+    for t in range(t_count - 1, 0, -1):
+        path[t - 1] = int(np.argmin(phi[t - 1] + tc_column(path[t])))
+    return path
+
+
+def dp_numpy(tc: np.ndarray, obs: np.ndarray, column_block: int = 512) -> DpResult:
+    """Reference DP. tc : (N, N) float32; obs : (T, N) float32 (OC + EMP + B per step)."""
+    tc = np.asarray(tc, np.float32)
+    obs = np.asarray(obs, np.float32)
+    t_count, n = obs.shape
+    phi = np.empty((t_count, n), np.float32)
+    phi[0] = obs[0]
+    for t in range(1, t_count):
+        prev = phi[t - 1][:, None]
+        for a in range(0, n, column_block):
+            phi[t, a : a + column_block] = (prev + tc[:, a : a + column_block]).min(axis=0)
+        phi[t] += obs[t]
+    path = backtrack(phi, lambda j: tc[:, j])
+    return DpResult(float(phi[-1, path[-1]]), path, phi)
+
+
+def to_panels(tc: np.ndarray, panel: int = PANEL) -> np.ndarray:
+    """Panel-major copy of TC: (n_panels, N, panel), columns padded with +inf."""
+    n = tc.shape[0]
+    n_panels = -(-n // panel)
+    out = np.empty((n_panels, n, panel), np.float32)
+    full = n // panel
+    if full:
+        out[:full] = tc[:, : full * panel].reshape(n, full, panel).transpose(1, 0, 2)
+    if full < n_panels:
+        out[full, :, : n - full * panel] = tc[:, full * panel :]
+        out[full, :, n - full * panel :] = np.inf
+    return out
+
+
+class OpenCLDp:
+    """The DP on the OpenCL device chosen by ``PYOPENCL_CTX``.
+
+    The panel-major cost matrix is uploaded once (split into buffers below the device's
+    ``max_mem_alloc_size``); each step launches one work-item per column panel per buffer.
+    """
+
+    def __init__(self, tc: np.ndarray, panels: np.ndarray | None = None):
+        import pyopencl as cl
+
+        from ..opencl import context, kernel, max_alloc_bytes, queue
+
+        self.ctx, self.queue = context(), queue()
+        self.kernel = kernel("dp_min_plus", "min_plus_panels")
+        self.n = tc.shape[0]
+        self.tc = tc
+        panels = to_panels(tc) if panels is None else panels
+        self.n_panels = panels.shape[0]
+        per_panel = panels[0].nbytes
+        per_buffer = max(1, min(self.n_panels, (min(max_alloc_bytes(), 1 << 30) // per_panel)))
+        mf = cl.mem_flags
+        self.groups = []
+        for first in range(0, self.n_panels, per_buffer):
+            count = min(per_buffer, self.n_panels - first)
+            buf = cl.Buffer(self.ctx, mf.READ_ONLY | mf.COPY_HOST_PTR, hostbuf=panels[first : first + count])
+            self.groups.append((first, count, buf))
+        self.cols = self.n_panels * PANEL
+
+    def run(self, obs: np.ndarray) -> DpResult:
+        import pyopencl as cl
+
+        t_count, n = obs.shape
+        mf = cl.mem_flags
+        obs_padded = np.zeros((t_count, self.cols), np.float32)
+        obs_padded[:, :n] = obs
+        obs_buf = cl.Buffer(self.ctx, mf.READ_ONLY | mf.COPY_HOST_PTR, hostbuf=obs_padded)
+        phi_bufs = [cl.Buffer(self.ctx, mf.READ_WRITE, 4 * self.cols) for _ in range(2)]
+        phi = np.empty((t_count, self.cols), np.float32)
+        phi[0] = obs_padded[0]
+        cl.enqueue_copy(self.queue, phi_bufs[0], phi[0])
+        for t in range(1, t_count):
+            src, dst = phi_bufs[(t - 1) % 2], phi_bufs[t % 2]
+            for first, count, buf in self.groups:
+                self.kernel(self.queue, (count,), None, buf, src, self._obs_row(obs_buf, t), dst,
+                            np.int32(self.n), np.int32(first), np.int32(count))
+            cl.enqueue_copy(self.queue, phi[t], dst, is_blocking=False)
+        self.queue.finish()
+        phi = phi[:, :n]
+        path = backtrack(phi, lambda j: self.tc[:, j])
+        return DpResult(float(phi[-1, path[-1]]), path, phi)
+
+    def _obs_row(self, obs_buf, t):
+        return obs_buf.get_sub_region(4 * t * self.cols, 4 * self.cols)
+
+
+def dp_opencl(tc: np.ndarray, obs: np.ndarray) -> DpResult:
+    return OpenCLDp(tc).run(obs)

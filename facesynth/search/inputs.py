@@ -1,0 +1,137 @@
+"""What a synthesis request is made of: the new utterance's phones, its emotion spans and
+its motion-node constraints (formats documented in ``docs/inputs.md``)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import InputError, SearchError
+from ..formats.labels import read_phone_segments, read_textgrid
+from ..phonemes import PAU, map_phones
+
+
+@dataclass
+class Utterance:
+    """The input phone sequence: Festival phones with times (s) and an emotion per phone."""
+
+    phones: list[str]
+    starts: np.ndarray
+    ends: np.ndarray
+    emotions: list[str]
+
+    def __len__(self) -> int:
+        return len(self.phones)
+
+    def index_at(self, time_s: float) -> int | None:
+        hits = np.nonzero((self.starts <= time_s) & (time_s < self.ends))[0]
+        return int(hits[0]) if len(hits) else None
+
+
+def read_utterance(phones_path: Path, tier_names=("phones",)) -> Utterance:
+    segs = read_phone_segments(phones_path, tier_names)
+    labels = map_phones([s.label for s in segs], str(phones_path), [s.start for s in segs])
+    # Merge adjacent pauses: one silence is one step of the search.
+    phones, starts, ends = [], [], []
+    for s, p in zip(segs, labels):
+        if phones and p == PAU and phones[-1] == PAU:
+            ends[-1] = s.end
+            continue
+        phones.append(p)
+        starts.append(s.start)
+        ends.append(s.end)
+    return Utterance(phones, np.array(starts), np.array(ends), ["neutral"] * len(phones))
+
+
+def _emotion_name(raw: str, emotions, aliases, where: str) -> str:
+    name = raw.strip().lower()
+    name = {k.lower(): v for k, v in aliases.items()}.get(name, name)
+    if name not in emotions:
+        raise InputError(f"{where}: unknown emotion {raw!r}; use one of {', '.join(emotions)}.")
+    return name
+
+
+def apply_emotions(utt: Utterance, path: Path, emotions, aliases) -> None:
+    """Set each phone's emotion from a span file (``start_s end_s emotion`` per line) or a
+    TextGrid tier named ``emotions``. A phone takes the span holding its midpoint; spans
+    may not overlap; phones outside every span stay neutral."""
+    path = Path(path)
+    spans: list[tuple[float, float, str, str]] = []
+    if path.suffix.lower() == ".textgrid":
+        tiers = read_textgrid(path)
+        tier = next((tiers[k] for k in tiers if k.lower() in ("emotions", "emotion")), None)
+        if tier is None:
+            raise InputError(f"{path}: no tier named 'emotions'; add one with intervals labelled by emotion.")
+        for s in tier:
+            if s.label.strip():
+                spans.append((s.start, s.end, s.label, f"{path}, tier 'emotions', {s.start:.3f} s"))
+    else:
+        if not path.exists():
+            raise InputError(f"{path}: emotion file not found; check the --emotions path.")
+        for n, line in enumerate(path.read_text("utf-8").splitlines(), 1):
+            line = line.split("#", 1)[0].strip()
+            if not line:
+                continue
+            parts = line.split()
+            try:
+                start, end, label = float(parts[0]), float(parts[1]), parts[2]
+            except (ValueError, IndexError):
+                raise InputError(f"{path}, line {n}: expected 'start_s end_s emotion', got {line!r}.") from None
+            if end <= start:
+                raise InputError(f"{path}, line {n}: the span ends at or before it starts.")
+            spans.append((start, end, label, f"{path}, line {n}"))
+    spans.sort()
+    for (a0, a1, _, wa), (b0, _, _, wb) in zip(spans, spans[1:]):
+        if b0 < a1 - 1e-9:
+            raise InputError(f"{wb}: emotion span overlaps the one at {wa.split(', ', 1)[1]}; make spans disjoint.")
+    names = [(s, e, _emotion_name(lab, emotions, aliases, where)) for s, e, lab, where in spans]
+    mids = 0.5 * (utt.starts + utt.ends)
+    for k, m in enumerate(mids):
+        for s, e, name in names:
+            if s <= m < e:
+                utt.emotions[k] = name
+
+
+def read_constraints(path: Path, utt: Utterance, node_phone: list[str]) -> dict[int, int]:
+    """Hard motion-node constraints: ``INDEX NODE`` (0-based phone index) or ``TIMEs NODE``
+    (a time in seconds with an ``s`` suffix) per line. Returns {phone index: node id}."""
+    path = Path(path)
+    if not path.exists():
+        raise InputError(f"{path}: constraints file not found; check the --constraints path.")
+    out: dict[int, int] = {}
+    for n, line in enumerate(path.read_text("utf-8").splitlines(), 1):
+        line = line.split("#", 1)[0].strip()
+        if not line:
+            continue
+        where = f"{path}, line {n}"
+        parts = line.split()
+        if len(parts) != 2:
+            raise InputError(f"{where}: expected 'INDEX NODE' or 'TIMEs NODE', got {line!r}.")
+        at, node_text = parts
+        try:
+            node = int(node_text)
+            if at.endswith("s"):
+                time_s = float(at[:-1])
+                index = utt.index_at(time_s)
+                if index is None:
+                    raise SearchError(f"{where}: time {time_s:.3f} s is outside the utterance (0 to {utt.ends[-1]:.3f} s).")
+                place = f"the phone at {time_s:.3f} s (index {index})"
+            else:
+                index = int(at)
+                if not 0 <= index < len(utt):
+                    raise SearchError(f"{where}: phone index {index} is out of range (0 to {len(utt) - 1}).")
+                place = f"phone {index}"
+        except ValueError:
+            raise InputError(f"{where}: expected 'INDEX NODE' or 'TIMEs NODE' with numbers, got {line!r}.") from None
+        if not 0 <= node < len(node_phone):
+            raise SearchError(f"{where}: node {node} does not exist (the database has nodes 0 to {len(node_phone) - 1}).")
+        if utt.phones[index] == PAU:
+            raise SearchError(f"{where}: {place} is a pause, whose frames are interpolated; constrain a spoken phone.")
+        if node_phone[node] != utt.phones[index]:
+            raise SearchError(f"{where}: node {node} is /{node_phone[node]}/ but {place} is /{utt.phones[index]}/; pick a node of that phone (see facesynth suggest).")
+        if index in out:
+            raise SearchError(f"{where}: {place} is already constrained to node {out[index]}; keep one constraint per phone.")
+        out[index] = node
+    return out

@@ -1,0 +1,269 @@
+"""``facesynth build-db``: the motion-node database (paper III, VI-B).
+
+One motion node per phone occurrence in the training takes. ``/pau/`` nodes are dropped
+and a pause splits the sentence: the node after a pause has no captured predecessor.
+Each node keeps phone, viseme (Table VI), emotion, take, frame range, triphone context and
+its captured predecessor/successor. The frames of all nodes, with their relative time in
+the node, form the phoneme clusters.
+
+The transition cost (Table I) needs, for every ordered pair (i, j):
+
+* ``dsc[i, j] = DSC(o_i, pre(o_j))`` (Eq. 6), read here as: time-warp o_i onto
+  pre(o_j)'s duration, blend linearly from warp(o_i) (weight 1 at the start) to pre(o_j)
+  (weight 1 at the end), and integrate the squared second derivative of the blend over
+  time. Both nodes are resampled to ``dsc_samples`` points in PCA space (an orthonormal
+  basis, so distances are marker-space millimetres); time is in capture frames, so DSC is
+  in mm^2 / frame^3. Expanding the square makes all pairs one matrix product.
+  Columns whose node has no predecessor are 0 (Table I rule 4 does not use DSC).
+* ``pgap[i, j]``, ``vgap[i, j]`` (Eq. 8-9): summed per-marker distances between the last
+  frame of o_i and the first frame of o_j, of positions (mm) and velocities (mm/frame).
+
+All three are (N, N) float32, row = predecessor candidate i, column = node j.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+import h5py
+import numpy as np
+
+from ..artifacts import open_artifact, read, read_strings, write_artifact, write_strings
+from ..config import BuildDbSettings, settings_json
+from ..errors import InputError
+from ..phonemes import PAU, viseme
+from ..tables import Phones, Takes, copy_tables
+from .pca import PcaModel, read_pca, write_pca
+
+
+@dataclass
+class Nodes:
+    """The motion-node table; row k is node k. Frames index the artifact's ``coefficients``."""
+
+    phone: list[str]
+    viseme: np.ndarray        # (N,) int
+    emotion: list[str]
+    take: np.ndarray          # (N,) int, row of /takes
+    frame_start: np.ndarray   # (N,) int, global frame index
+    frame_count: np.ndarray   # (N,) int
+    start_s: np.ndarray       # (N,) s from the take's start
+    end_s: np.ndarray
+    prev_phone: list[str]     # triphone context (pau at sentence edges)
+    next_phone: list[str]
+    pre: np.ndarray           # (N,) int, captured predecessor node or -1
+    suc: np.ndarray           # (N,) int, captured successor node or -1
+
+    def __len__(self) -> int:
+        return len(self.phone)
+
+    def frames(self, k: int) -> slice:
+        return slice(int(self.frame_start[k]), int(self.frame_start[k] + self.frame_count[k]))
+
+    def subset(self, keep: np.ndarray) -> "Nodes":
+        """The nodes in ``keep`` (sorted indices), links re-indexed; links to dropped nodes become -1."""
+        remap = -np.ones(len(self), np.int64)
+        remap[keep] = np.arange(len(keep))
+        pick = lambda xs: [xs[k] for k in keep]  # noqa: E731
+        pre = np.where(self.pre[keep] >= 0, remap[np.maximum(self.pre[keep], 0)], -1)
+        suc = np.where(self.suc[keep] >= 0, remap[np.maximum(self.suc[keep], 0)], -1)
+        return Nodes(pick(self.phone), self.viseme[keep], pick(self.emotion), self.take[keep],
+                     self.frame_start[keep], self.frame_count[keep], self.start_s[keep], self.end_s[keep],
+                     pick(self.prev_phone), pick(self.next_phone), pre, suc)
+
+    _STRINGS = ("phone", "emotion", "prev_phone", "next_phone")
+    _ARRAYS = ("viseme", "take", "frame_start", "frame_count", "start_s", "end_s", "pre", "suc")
+
+    def write(self, f: h5py.File) -> None:
+        g = f.create_group("nodes")
+        for key in self._STRINGS:
+            write_strings(g, key, getattr(self, key))
+        for key in self._ARRAYS:
+            g.create_dataset(key, data=getattr(self, key))
+
+    @classmethod
+    def read(cls, f: h5py.File) -> "Nodes":
+        values = {k: read_strings(f, f"nodes/{k}") for k in cls._STRINGS}
+        values.update({k: read(f, f"nodes/{k}") for k in cls._ARRAYS})
+        return cls(**values)
+
+
+def build_nodes(takes: Takes, phones: Phones, fps: float) -> Nodes:
+    """One node per non-pause phone of the training takes, with links and triphone context."""
+    rows: dict[str, list] = {k: [] for k in ("phone", "viseme", "emotion", "take", "frame_start", "frame_count",
+                                             "start_s", "end_s", "prev_phone", "next_phone", "pre", "suc")}
+    for t in range(len(takes)):
+        if takes.split[t] != "train":
+            continue
+        seg = np.nonzero(phones.take == t)[0]
+        n_frames = int(takes.frame_count[t])
+        previous_node = -1
+        for pos, r in enumerate(seg):
+            phone = phones.phone[r]
+            if phone == PAU:
+                previous_node = -1  # a pause splits the sentence
+                continue
+            a = int(round(phones.start[r] * fps))
+            b = max(int(round(phones.end[r] * fps)), a + 2)  # at least two frames, for velocities
+            if b > n_frames:
+                a, b = max(0, n_frames - 2), n_frames
+            k = len(rows["phone"])
+            rows["phone"].append(phone)
+            rows["viseme"].append(viseme(phone))
+            rows["emotion"].append(takes.emotion[t])
+            rows["take"].append(t)
+            rows["frame_start"].append(int(takes.frame_start[t]) + a)
+            rows["frame_count"].append(b - a)
+            rows["start_s"].append(float(phones.start[r]))
+            rows["end_s"].append(float(phones.end[r]))
+            rows["prev_phone"].append(phones.phone[seg[pos - 1]] if pos > 0 else PAU)
+            rows["next_phone"].append(phones.phone[seg[pos + 1]] if pos + 1 < len(seg) else PAU)
+            rows["pre"].append(previous_node)
+            rows["suc"].append(-1)
+            if previous_node >= 0:
+                rows["suc"][previous_node] = k
+            previous_node = k
+    if not rows["phone"]:
+        raise InputError("no training phones: the manifest's split column marks no take 'train', or every phone is a pause.")
+    ints = ("viseme", "take", "frame_start", "frame_count", "pre", "suc")
+    return Nodes(**{k: (np.array(v, np.int64) if k in ints else np.array(v) if k in ("start_s", "end_s") else v)
+                    for k, v in rows.items()})
+
+
+def resample(sequence: np.ndarray, n: int) -> np.ndarray:
+    """Linear time-warp of a (c, K) sequence to n samples spanning the same duration."""
+    c = len(sequence)
+    if c == n:
+        return sequence.astype(np.float64)
+    x = np.linspace(0.0, c - 1, n)
+    lo = np.floor(x).astype(int)
+    hi = np.minimum(lo + 1, c - 1)
+    w = (x - lo)[:, None]
+    return sequence[lo] * (1 - w) + sequence[hi] * w
+
+
+def dsc_matrix(coeffs: np.ndarray, nodes: Nodes, samples: int) -> np.ndarray:
+    """All-pairs DSC (Eq. 6): dsc[i, j] = DSC(o_i, pre(o_j)); 0 where o_j has no predecessor."""
+    n = len(nodes)
+    warped = np.stack([resample(coeffs[nodes.frames(k)], samples) for k in range(n)])  # (N, S, K)
+    s = np.linspace(0.0, 1.0, samples)
+    d2 = np.zeros((samples - 2, samples))
+    for r in range(samples - 2):
+        d2[r, r : r + 3] = (1.0, -2.0, 1.0)
+    x = np.einsum("rs,nsk->nrk", d2 * (1 - s), warped).reshape(n, -1)  # second differences of (1-s) warp(o_i)
+    has_pre = nodes.pre >= 0
+    pre_idx = np.where(has_pre, nodes.pre, 0)
+    y = np.einsum("rs,nsk->nrk", d2 * s, warped[pre_idx]).reshape(n, -1)  # of s * pre(o_j)
+    step = (nodes.frame_count[pre_idx] - 1) / (samples - 1)  # frames between samples of pre(o_j)
+    scale = np.where(has_pre, 1.0 / np.maximum(step, 1e-3) ** 3, 0.0)
+    out = np.empty((n, n), np.float32)
+    xx = np.einsum("ij,ij->i", x, x)
+    yy = np.einsum("ij,ij->i", y, y)
+    block = 2048
+    for a in range(0, n, block):
+        cross = x[a : a + block] @ y.T
+        out[a : a + block] = np.maximum(xx[a : a + block, None] + yy[None, :] + 2.0 * cross, 0.0) * scale[None, :]
+    return out
+
+
+def boundary_states(coeffs: np.ndarray, nodes: Nodes, model: PcaModel) -> tuple[np.ndarray, ...]:
+    """First/last frame positions (mm) and velocities (mm/frame) in marker space, each (N, 3M) float32."""
+    first = coeffs[nodes.frame_start]
+    second = coeffs[nodes.frame_start + 1]
+    last = coeffs[nodes.frame_start + nodes.frame_count - 1]
+    before_last = coeffs[nodes.frame_start + nodes.frame_count - 2]
+    to_markers = lambda c: model.reconstruct(c).reshape(len(c), -1)  # noqa: E731
+    first_pos, last_pos = to_markers(first), to_markers(last)
+    first_vel = (to_markers(second) - first_pos).astype(np.float32)
+    last_vel = (last_pos - to_markers(before_last)).astype(np.float32)
+    return first_pos, last_pos, first_vel, last_vel
+
+
+def pair_gaps_numpy(first_pos, last_pos, first_vel, last_vel) -> tuple[np.ndarray, np.ndarray]:
+    """Reference PGap/VGap (Eq. 8-9), (N, N) float32 each, row i = predecessor."""
+    n, m3 = first_pos.shape
+    pgap = np.empty((n, n), np.float32)
+    vgap = np.empty((n, n), np.float32)
+    fp = first_pos.reshape(n, -1, 3)
+    fv = first_vel.reshape(n, -1, 3)
+    block = max(1, (1 << 24) // max(n * m3, 1))
+    for a in range(0, n, block):
+        lp = last_pos[a : a + block].reshape(-1, 1, m3 // 3, 3)
+        lv = last_vel[a : a + block].reshape(-1, 1, m3 // 3, 3)
+        pgap[a : a + block] = np.sqrt(((fp[None] - lp) ** 2).sum(-1)).sum(-1)
+        vgap[a : a + block] = np.sqrt(((fv[None] - lv) ** 2).sum(-1)).sum(-1)
+    return pgap, vgap
+
+
+def pair_gaps_opencl(first_pos, last_pos, first_vel, last_vel) -> tuple[np.ndarray, np.ndarray]:
+    """PGap/VGap on OpenCL (``kernels/pair_gaps.cl``), in row blocks below the device's allocation limit."""
+    import pyopencl as cl
+
+    from ..opencl import context, kernel, max_alloc_bytes, queue
+
+    ctx, q = context(), queue()
+    n, m3 = first_pos.shape
+    mf = cl.mem_flags
+    fp_t = cl.Buffer(ctx, mf.READ_ONLY | mf.COPY_HOST_PTR, hostbuf=np.ascontiguousarray(first_pos.T, np.float32))
+    fv_t = cl.Buffer(ctx, mf.READ_ONLY | mf.COPY_HOST_PTR, hostbuf=np.ascontiguousarray(first_vel.T, np.float32))
+    pgap = np.empty((n, n), np.float32)
+    vgap = np.empty((n, n), np.float32)
+    rows = int(max(1, min(n, (min(max_alloc_bytes(), 256 << 20) // (4 * n)))))
+    out_p = cl.Buffer(ctx, mf.WRITE_ONLY, 4 * n * rows)
+    out_v = cl.Buffer(ctx, mf.WRITE_ONLY, 4 * n * rows)
+    gaps_kernel = kernel("pair_gaps", "pair_gaps")
+    for a in range(0, n, rows):
+        b = min(n, a + rows)
+        lp = cl.Buffer(ctx, mf.READ_ONLY | mf.COPY_HOST_PTR, hostbuf=np.ascontiguousarray(last_pos[a:b], np.float32))
+        lv = cl.Buffer(ctx, mf.READ_ONLY | mf.COPY_HOST_PTR, hostbuf=np.ascontiguousarray(last_vel[a:b], np.float32))
+        local = (min(64, n), 1)
+        global_size = ((n + local[0] - 1) // local[0] * local[0], b - a)
+        gaps_kernel(q, global_size, local, lp, lv, fp_t, fv_t, np.int32(n), np.int32(b - a), np.int32(m3), out_p, out_v)
+        cl.enqueue_copy(q, pgap[a:b], out_p, is_blocking=False)
+        cl.enqueue_copy(q, vgap[a:b], out_v, is_blocking=True)
+    return pgap, vgap
+
+
+def run(pca_path: Path, out: Path, settings: BuildDbSettings, overwrite: bool = False) -> dict:
+    import time
+
+    if settings.dsc_samples < 3:
+        raise InputError("build_db.dsc_samples must be at least 3 (a second derivative needs three samples).")
+    with open_artifact(pca_path, "pca") as f:
+        coeffs = read(f, "coefficients")
+        fps = float(f["coefficients"].attrs["fps"])
+        model = read_pca(f)
+        takes, phones = Takes.read(f), Phones.read(f)
+        nodes = build_nodes(takes, phones, fps)
+        timings = {}
+        t0 = time.perf_counter()
+        dsc = dsc_matrix(coeffs, nodes, settings.dsc_samples)
+        timings["dsc_s"] = time.perf_counter() - t0
+        t0 = time.perf_counter()
+        states = boundary_states(coeffs, nodes, model)
+        gaps = pair_gaps_opencl if settings.use_opencl else pair_gaps_numpy
+        pgap, vgap = gaps(*states)
+        timings["gaps_s"] = time.perf_counter() - t0
+        with write_artifact(out, "motiondb", config=settings_json(settings), inputs=[pca_path], overwrite=overwrite) as g:
+            copy_tables(f, g)
+            write_pca(g, model)
+            for key in ("reference",):
+                f.copy(f[key], g, name=key)
+            c = g.create_dataset("coefficients", data=coeffs)
+            c.attrs["fps"] = fps
+            nodes.write(g)
+            write_pair_terms(g, dsc, pgap, vgap, states)
+    return {"nodes": len(nodes), "with_predecessor": int((nodes.pre >= 0).sum()), **timings}
+
+
+def write_pair_terms(g: h5py.File, dsc, pgap, vgap, states) -> None:
+    n = len(dsc)
+    chunks = (min(n, 256), n)
+    p = g.create_group("pairs")
+    for key, value, units in (("dsc", dsc, "mm^2/frame^3"), ("pgap", pgap, "mm"), ("vgap", vgap, "mm/frame")):
+        d = p.create_dataset(key, data=value, chunks=chunks)
+        d.attrs["units"] = units
+        d.attrs["layout"] = "row = predecessor candidate i, column = node j"
+    b = g.create_group("boundary")
+    for key, value in zip(("first_pos", "last_pos", "first_vel", "last_vel"), states):
+        b.create_dataset(key, data=value.astype(np.float32))

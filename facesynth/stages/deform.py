@@ -1,0 +1,148 @@
+"""``facesynth deform``: marker motion -> face-mesh animation (paper VII-A, Eq. 14-15).
+
+For each marker's bound vertex, "mesh distances" to every vertex are shortest paths along
+the mesh's edges (Dijkstra), so they go around holes: a lower-lip marker does not reach
+the upper lip across the mouth opening, and markers reach no other component. A vertex
+within ``distance_threshold`` of a marker gets the weight ``exp(-d^2 / (2 sigma^2))``
+(Eq. 14; the constant C cancels in Eq. 15) and moves by the weighted mean of the markers'
+motions (Eq. 15). The weights depend only on the mesh and binding, are computed once and
+stored in the artifact as a sparse matrix.
+
+Marker motion is the displacement from the database's neutral rest pose; a similarity
+transform (rotation, uniform scale, translation) fitted from the rest pose to the bound
+vertices carries it into the mesh's frame and units.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+from scipy import sparse
+from scipy.sparse.csgraph import dijkstra
+
+from ..artifacts import open_artifact, read, read_strings, write_artifact, write_strings
+from ..config import DeformSettings, settings_json
+from ..errors import InputError
+from ..formats.mesh import read_binding, read_mesh
+
+
+def edge_graph(vertices: np.ndarray, faces: np.ndarray) -> sparse.csr_matrix:
+    """Symmetric sparse graph of mesh edges weighted by their length."""
+    e = np.concatenate([faces[:, [0, 1]], faces[:, [1, 2]], faces[:, [2, 0]]])
+    e = np.unique(np.sort(e, axis=1), axis=0)
+    w = np.linalg.norm(vertices[e[:, 0]] - vertices[e[:, 1]], axis=1)
+    n = len(vertices)
+    g = sparse.coo_matrix((np.concatenate([w, w]), (np.concatenate([e[:, 0], e[:, 1]]), np.concatenate([e[:, 1], e[:, 0]]))), shape=(n, n))
+    return g.tocsr()
+
+
+def mesh_distances(vertices: np.ndarray, faces: np.ndarray, sources: np.ndarray, limit: float) -> np.ndarray:
+    """(K, V) shortest-path distances along mesh edges from each source vertex; inf beyond ``limit``."""
+    return dijkstra(edge_graph(vertices, faces), directed=False, indices=sources, limit=limit)
+
+
+def deformation_weights(distances: np.ndarray, sigma: float, threshold: float) -> sparse.csr_matrix:
+    """Eq. 14-15 as a (V, K) row-normalized sparse matrix: vertex motion = W @ marker motion."""
+    d = distances.T  # (V, K)
+    w = np.where(d <= threshold, np.exp(-(d**2) / (2.0 * sigma**2)), 0.0)
+    total = w.sum(axis=1, keepdims=True)
+    w = np.divide(w, total, out=np.zeros_like(w), where=total > 0)
+    return sparse.csr_matrix(w.astype(np.float32))
+
+
+def similarity_fit(source: np.ndarray, target: np.ndarray) -> tuple[float, np.ndarray, np.ndarray, float]:
+    """Umeyama: scale s, rotation R, translation t minimizing ||s R source + t - target||.
+    Returns (s, R, t, RMS residual in target units)."""
+    mu_s, mu_t = source.mean(0), target.mean(0)
+    a, b = source - mu_s, target - mu_t
+    u, sing, vt = np.linalg.svd(b.T @ a)
+    d = np.ones(3)
+    if np.linalg.det(u @ vt) < 0:
+        d[2] = -1.0
+    r = u @ np.diag(d) @ vt
+    s = float((sing * d).sum() / (a**2).sum())
+    t = mu_t - s * r @ mu_s
+    residual = float(np.sqrt(np.mean(np.sum((s * a @ r.T - b) ** 2, axis=1))))
+    return s, r, t, residual
+
+
+@dataclass
+class Rig:
+    """A mesh bound to markers: everything needed to animate it from marker motion."""
+
+    rest: np.ndarray          # (V, 3) mesh units
+    faces: np.ndarray         # (F, 3)
+    markers: list[str]        # bound markers, in weight-column order
+    vertex_of: np.ndarray     # (K,) bound vertex of each marker
+    weights: sparse.csr_matrix  # (V, K)
+    unreached: int            # vertices no marker reaches (they stay at rest)
+
+
+def bind(vertices: np.ndarray, faces: np.ndarray, binding: dict[str, int], motion_markers: list[str],
+         settings: DeformSettings, mesh_name: str, binding_name: str) -> Rig:
+    unknown = [m for m in binding if m not in motion_markers]
+    if unknown:
+        raise InputError(f"{binding_name}: marker(s) {unknown[:5]} are not in the motion; bind only markers it has ({motion_markers[:4]}...).")
+    bad = {m: v for m, v in binding.items() if not 0 <= v < len(vertices)}
+    if bad:
+        m, v = next(iter(bad.items()))
+        raise InputError(f"{binding_name}: marker {m!r} is bound to vertex {v}, but {mesh_name} has vertices 0 to {len(vertices) - 1}; use the binding made for this mesh.")
+    if len(binding) < 3:
+        raise InputError(f"{binding_name}: at least three bound markers are needed to place the motion on the mesh.")
+    if faces.max() >= len(vertices):
+        raise InputError(f"{mesh_name}: a face names vertex {faces.max()} beyond the {len(vertices)} vertices; re-export the mesh.")
+    names = list(binding)
+    sources = np.array([binding[m] for m in names])
+    distances = mesh_distances(vertices, faces, sources, settings.distance_threshold)
+    weights = deformation_weights(distances, settings.sigma, settings.distance_threshold)
+    unreached = int((np.asarray(weights.sum(axis=1)).ravel() == 0).sum())
+    return Rig(vertices, faces, names, sources, weights, unreached)
+
+
+def animate(rig: Rig, markers: np.ndarray, marker_names: list[str], reference: np.ndarray) -> tuple[np.ndarray, dict]:
+    """Vertices (T, V, 3) float32 for marker frames (T, M, 3) mm. Also returns the fit report."""
+    cols = np.array([marker_names.index(m) for m in rig.markers])
+    s, r, _, residual = similarity_fit(reference[cols].astype(np.float64), rig.rest[rig.vertex_of])
+    motion = (markers[:, cols] - reference[cols]) @ (s * r).T  # (T, K, 3) in mesh units
+    out = np.empty((len(markers),) + rig.rest.shape, np.float32)
+    for t in range(len(markers)):
+        out[t] = rig.rest + rig.weights @ motion[t]
+    return out, {"scale": s, "fit_rms": residual}
+
+
+def run(motion: Path, mesh: Path, binding_path: Path, out: Path, settings: DeformSettings, overwrite: bool = False) -> dict:
+    from ..artifacts import check_output
+
+    check_output(out, overwrite)
+    with open_artifact(motion, "motion") as f:
+        markers = read(f, "markers")
+        fps = float(f["markers"].attrs["fps"])
+        names = read_strings(f, "marker_names")
+        reference = read(f, "reference")
+        ground_truth = read(f, "ground_truth") if "ground_truth" in f else None
+    vertices, faces = read_mesh(mesh)
+    binding = read_binding(binding_path)
+    rig = bind(vertices, faces, binding, names, settings, str(mesh), str(binding_path))
+    frames, fit = animate(rig, markers, names, reference)
+    with write_artifact(out, "meshanim", config=settings_json(settings), inputs=[motion, mesh, binding_path], overwrite=overwrite) as g:
+        v = g.create_dataset("vertices", data=frames, chunks=(1,) + frames.shape[1:])
+        v.attrs.update(fps=fps, units="mesh units")
+        g.create_dataset("rest", data=vertices.astype(np.float32))
+        g.create_dataset("faces", data=faces.astype(np.int32))
+        w = g.create_group("weights")
+        w.create_dataset("data", data=rig.weights.data)
+        w.create_dataset("indices", data=rig.weights.indices)
+        w.create_dataset("indptr", data=rig.weights.indptr)
+        w.attrs["shape"] = rig.weights.shape
+        write_strings(w, "markers", rig.markers)
+        w.create_dataset("vertex_of", data=rig.vertex_of)
+        m = g.create_dataset("markers", data=markers)
+        m.attrs.update(fps=fps, units="mm")
+        write_strings(g, "marker_names", names)
+        if ground_truth is not None:
+            gt_frames, _ = animate(rig, ground_truth, names, reference)
+            g.create_dataset("ground_truth_vertices", data=gt_frames, chunks=(1,) + gt_frames.shape[1:])
+        g.attrs["fit_rms"] = fit["fit_rms"]
+    return {"frames": len(frames), "vertices": len(vertices), "unreached": rig.unreached, **fit}

@@ -1,0 +1,194 @@
+"""``facesynth synthesize``: expressive speech motion from the motion-node database
+(paper VI and VII-B).
+
+The constrained DP of Algorithm 1 picks one node per input phone minimizing Eq. 4; the
+path is concatenated, smoothed, time-warped to the input timing at the capture rate,
+back-projected with Eq. 11 and down-sampled to the output rate. Every output frame keeps
+its provenance (node, take, source frame).
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from ..artifacts import open_artifact, read, read_strings, write_artifact, write_strings
+from ..config import IngestSettings, SynthesizeSettings, settings_json
+from ..errors import InputError
+from ..phonemes import PAU, viseme
+from ..search.costs import StepCosts, path_terms, step_costs, transition_matrix
+from ..search.inputs import Utterance, apply_emotions, read_constraints, read_utterance
+from ..motion.postprocess import concatenate, downsample
+from ..tables import Takes
+from .build_db import Nodes
+from .pca import PcaModel, read_pca
+
+
+@dataclass
+class Database:
+    """What synthesis needs from a ``motiondb`` artifact."""
+
+    nodes: Nodes
+    coeffs: np.ndarray      # (F, K) float32, indexed by node frames
+    model: PcaModel
+    reference: np.ndarray   # (M, 3) mm, neutral closed-mouth rest pose
+    marker_names: list[str]
+    takes: Takes
+    fps: float
+    dsc: np.ndarray
+    pgap: np.ndarray
+    vgap: np.ndarray
+
+    def transition(self, settings: SynthesizeSettings) -> np.ndarray:
+        return transition_matrix(self.dsc, self.pgap, self.vgap, self.nodes.viseme, self.nodes.pre, settings)
+
+
+def load_database(path: Path) -> Database:
+    with open_artifact(path, "motiondb") as f:
+        return Database(
+            Nodes.read(f), read(f, "coefficients"), read_pca(f), read(f, "reference"),
+            read_strings(f, "marker_names"), Takes.read(f), float(f["coefficients"].attrs["fps"]),
+            read(f, "pairs/dsc"), read(f, "pairs/pgap"), read(f, "pairs/vgap"),
+        )
+
+
+def unseen_phones(utt: Utterance, db: Database) -> dict[str, str]:
+    """Input phones with no node, and how the search will cover them."""
+    have = set(db.nodes.phone)
+    have_vis = {viseme(p) for p in have}
+    out = {}
+    for p in dict.fromkeys(utt.phones):
+        if p == PAU or p in have:
+            continue
+        out[p] = "nodes of the same viseme (Table II rule 2)" if viseme(p) in have_vis else "any node (Table II rule 3)"
+    return out
+
+
+def search(db: Database, tc: np.ndarray, steps: StepCosts, settings: SynthesizeSettings):
+    """Run the configured search; returns (DpResult, device description)."""
+    from ..search.dp import dp_numpy, dp_opencl
+
+    if settings.search != "dp":
+        raise InputError(f"synthesize.search={settings.search!r} is not available in this version; use 'dp'.")
+    if settings.use_opencl:
+        from ..opencl import device_name
+
+        return dp_opencl(tc, steps.total), f"OpenCL: {device_name()}"
+    return dp_numpy(tc, steps.total), "NumPy"
+
+
+def table_iv_weight(settings: SynthesizeSettings):
+    def weight(phone: str) -> float:
+        if phone in settings.high_phones:
+            return settings.weight_high
+        if phone in settings.low_phones:
+            return settings.weight_low
+        return settings.weight_intermediate
+    return weight
+
+
+def synthesize(db: Database, utt: Utterance, constraints: dict[int, int], settings: SynthesizeSettings, tc=None) -> dict:
+    """Search and post-process. Returns a dict of everything ``motion.h5`` stores."""
+    timings = {}
+    t0 = time.perf_counter()
+    tc = db.transition(settings) if tc is None else tc
+    steps = step_costs(utt.phones, utt.emotions, db.nodes.phone, db.nodes.emotion, constraints, settings)
+    timings["costs_s"] = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    result, device = search(db, tc, steps, settings)
+    timings["search_s"] = time.perf_counter() - t0
+    path = result.path
+    for t, node in constraints.items():  # Eq. 10 guarantees this; a failure is a bug
+        assert path[t] == node, f"constraint at step {t} not met"
+    terms = path_terms(path, tc, steps)
+    rest = db.model.project(db.reference[None])[0]
+    cat = concatenate(
+        path, utt.phones, utt.starts, utt.ends, db.nodes.frame_start, db.nodes.frame_count, db.nodes.pre,
+        db.nodes.phone, db.coeffs, rest, db.fps, half_window=settings.smoothing_half_window,
+        lam=settings.smoothing_lambda, weight_of=table_iv_weight(settings), interpolation=settings.silence_interpolation,
+    )
+    markers = db.model.reconstruct(cat.coeffs)
+    joins = sum(1 for t in range(len(path) - 1)
+                if utt.phones[t] != PAU and utt.phones[t + 1] != PAU and db.nodes.pre[path[t + 1]] != path[t])
+    take = np.where(cat.node >= 0, db.nodes.take[np.maximum(cat.node, 0)], -1)
+    return {
+        "path": path, "cost": result.cost, "terms": terms, "device": device, "concatenated": cat,
+        "markers_capture": markers, "markers": downsample(markers, db.fps, settings.output_fps),
+        "non_captured_joins": joins, "take": take, "timings": timings,
+    }
+
+
+def prepare(db: Database, phones_path: Path | None, emotions_path: Path | None, constraints_path: Path | None,
+            ingest_settings: IngestSettings, audio: Path | None = None, text: str | None = None) -> tuple[Utterance, dict[int, int]]:
+    if phones_path is not None:
+        utt = read_utterance(phones_path, ingest_settings.phone_tiers)
+    elif audio is not None and text is not None:
+        from ..formats.audio import read_audio
+        from ..formats.labels import Segment
+        from .align import align_samples
+
+        samples, rate = read_audio(audio)
+        segs: list[Segment] = align_samples(samples, rate, text, where=str(audio))
+        utt = Utterance([s.label for s in segs], np.array([s.start for s in segs]), np.array([s.end for s in segs]), ["neutral"] * len(segs))
+    else:
+        raise InputError("give the utterance's phones with --phonemes, or --audio and --text to align them.")
+    if emotions_path is not None:
+        apply_emotions(utt, emotions_path, ingest_settings.emotions, ingest_settings.emotion_aliases)
+    constraints = read_constraints(constraints_path, utt, db.nodes.phone) if constraints_path else {}
+    return utt, constraints
+
+
+def write_motion(out: Path, db: Database, utt: Utterance, res: dict, settings: SynthesizeSettings,
+                 inputs: list[Path], overwrite: bool) -> None:
+    cat = res["concatenated"]
+    with write_artifact(out, "motion", config=settings_json(settings), inputs=inputs, overwrite=overwrite) as g:
+        m = g.create_dataset("markers", data=res["markers"])
+        m.attrs.update(units="mm", fps=settings.output_fps)
+        mc = g.create_dataset("markers_capture", data=res["markers_capture"])
+        mc.attrs.update(units="mm", fps=db.fps)
+        c = g.create_dataset("coefficients", data=cat.coeffs)
+        c.attrs["fps"] = db.fps
+        write_strings(g, "marker_names", db.marker_names)
+        r = g.create_dataset("reference", data=db.reference)
+        r.attrs["units"] = "mm"
+        p = g.create_group("path")
+        p.create_dataset("node", data=res["path"])
+        write_strings(p, "phone", utt.phones)
+        write_strings(p, "emotion", utt.emotions)
+        write_strings(p, "node_phone", [db.nodes.phone[j] for j in res["path"]])
+        write_strings(p, "node_emotion", [db.nodes.emotion[j] for j in res["path"]])
+        p.create_dataset("start", data=utt.starts).attrs["units"] = "s"
+        p.create_dataset("end", data=utt.ends).attrs["units"] = "s"
+        for key, value in res["terms"].items():
+            p.create_dataset(f"cost_{key}", data=value)
+        p.attrs.update(total_cost=res["cost"], non_captured_joins=res["non_captured_joins"],
+                       search=settings.search, device=res["device"])
+        v = g.create_group("provenance")
+        v.attrs["fps"] = db.fps
+        v.attrs["meaning"] = "per capture-rate frame: node, take row, source frame in the database (-1: regenerated silence)"
+        v.create_dataset("node", data=cat.node)
+        v.create_dataset("take", data=res["take"])
+        write_strings(v, "take_names", db.takes.name)
+        v.create_dataset("source_frame", data=cat.source_frame)
+        v.create_dataset("step", data=cat.step)
+        v.create_dataset("smoothed", data=cat.smoothed)
+
+
+def run(db_path: Path, out: Path, settings: SynthesizeSettings, ingest_settings: IngestSettings, *,
+        phones_path: Path | None = None, emotions_path: Path | None = None, constraints_path: Path | None = None,
+        audio: Path | None = None, text: str | None = None, overwrite: bool = False) -> dict:
+    from ..artifacts import check_output
+
+    check_output(out, overwrite)
+    t0 = time.perf_counter()
+    db = load_database(db_path)
+    load_s = time.perf_counter() - t0
+    utt, constraints = prepare(db, phones_path, emotions_path, constraints_path, ingest_settings, audio, text)
+    res = synthesize(db, utt, constraints, settings)
+    inputs = [p for p in (db_path, phones_path, emotions_path, constraints_path, audio) if p is not None]
+    write_motion(out, db, utt, res, settings, inputs, overwrite)
+    return {"phones": len(utt), "cost": res["cost"], "joins": res["non_captured_joins"], "device": res["device"],
+            "unseen": unseen_phones(utt, db), "frames": len(res["markers"]), "load_s": load_s, **res["timings"]}
