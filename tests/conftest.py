@@ -12,6 +12,12 @@ SHARED_ASSETS = Path(__file__).resolve().parents[2] / "shared" / "assets"
 
 
 @pytest.fixture(scope="session")
+def shared_assets() -> Path:
+    """Real data for tests (``../shared/assets``); tests that need it skip without it."""
+    return SHARED_ASSETS
+
+
+@pytest.fixture(scope="session")
 def config() -> Config:
     return Config.load()
 
@@ -36,3 +42,19 @@ def tiny_artifacts(tiny_corpus, config, tmp_path_factory) -> dict[str, Path]:
     normalize.run(paths["corpus"], paths["normalized"], config.settings("normalize"))
     pca.run(paths["normalized"], paths["pca"], config.settings("pca"))
     return paths
+
+
+@pytest.fixture(scope="session")
+def tiny_db(tiny_artifacts, config) -> Path:
+    from facesynth.stages import build_db
+
+    out = tiny_artifacts["pca"].parent / "db.h5"
+    build_db.run(tiny_artifacts["pca"], out, config.settings("build_db"))
+    return out
+
+
+@pytest.fixture(scope="session")
+def held_out_take(tiny_corpus) -> str:
+    import csv
+
+    return next(r["take"] for r in csv.DictReader(open(tiny_corpus / "manifest.csv")) if r["split"] == "test")

@@ -1,0 +1,82 @@
+"""The OpenCL DP against the NumPy reference: identical optimal cost, path and accumulated costs."""
+
+import itertools
+
+import h5py
+import numpy as np
+import pytest
+
+from facesynth.search import dp as dp_module
+from facesynth.search.costs import step_costs
+from facesynth.search.dp import OpenCLDp, dp_numpy, dp_opencl
+
+
+def _random(n, t, seed):
+    rng = np.random.default_rng(seed)
+    tc = (rng.random((n, n), dtype=np.float32) * 100).astype(np.float32)
+    tc[rng.random((n, n)) < 0.02] = 0.0
+    obs = (rng.integers(0, 4, (t, n)) * 25).astype(np.float32)  # coarse values: many ties
+    return tc, obs
+
+
+@pytest.mark.parametrize("n, t", [(1, 3), (5, 4), (95, 6), (96, 6), (97, 9), (500, 14), (1300, 24)])
+def test_opencl_equals_reference_on_random_costs(n, t):
+    tc, obs = _random(n, t, seed=n)
+    ref, cl = dp_numpy(tc, obs), dp_opencl(tc, obs)
+    assert cl.cost == ref.cost
+    assert cl.path.tolist() == ref.path.tolist()
+    assert np.array_equal(cl.phi, ref.phi)
+
+
+def test_reference_finds_the_brute_force_optimum():
+    tc, obs = _random(4, 4, seed=7)
+    best = min(
+        (sum(obs[t, p[t]] for t in range(4)) + sum(tc[p[t], p[t + 1]] for t in range(3)), p)
+        for p in itertools.product(range(4), repeat=4)
+    )
+    ref = dp_numpy(tc, obs)
+    assert ref.cost == pytest.approx(best[0])
+    assert tuple(ref.path) == best[1]  # tuples compare lexicographically: lowest index wins ties
+
+
+def test_ties_go_to_the_lowest_index():
+    tc = np.zeros((200, 200), np.float32)
+    obs = np.zeros((5, 200), np.float32)
+    for result in (dp_numpy(tc, obs), dp_opencl(tc, obs)):
+        assert result.path.tolist() == [0] * 5 and result.cost == 0.0
+
+
+def test_buffers_split_below_the_allocation_limit_give_the_same_answer(monkeypatch):
+    tc, obs = _random(700, 8, seed=3)
+    ref = dp_numpy(tc, obs)
+    monkeypatch.setattr("facesynth.opencl.max_alloc_bytes", lambda: 3 * 700 * 96 * 4)  # three panels per buffer
+    runner = OpenCLDp(tc)
+    assert len(runner.groups) == 3
+    res = runner.run(obs)
+    assert res.cost == ref.cost and res.path.tolist() == ref.path.tolist()
+
+
+@pytest.mark.parametrize("with_emotions, with_constraints", [(False, False), (True, False), (False, True), (True, True)])
+def test_real_database_with_emotions_and_constraints(tiny_db, tiny_corpus, held_out_take, config, with_emotions, with_constraints):
+    from facesynth.search.inputs import read_utterance
+    from facesynth.stages.synthesize import load_database
+
+    db = load_database(tiny_db)
+    s = config.settings("synthesize")
+    tc = db.transition(s)
+    utt = read_utterance(tiny_corpus / "labels" / f"{held_out_take}.TextGrid")
+    if with_emotions:
+        utt.emotions = [("angry", "sad", "happy")[k % 3] for k in range(len(utt))]
+    constraints = {}
+    if with_constraints:
+        for t, p in enumerate(utt.phones):
+            nodes = [j for j, q in enumerate(db.nodes.phone) if q == p]
+            if nodes and len(constraints) < 3:
+                constraints[t] = nodes[-1]
+    steps = step_costs(utt.phones, utt.emotions, db.nodes.phone, db.nodes.emotion, constraints, s)
+    ref, cl = dp_numpy(tc, steps.total), dp_opencl(tc, steps.total)
+    assert cl.cost == ref.cost and cl.path.tolist() == ref.path.tolist()
+    for t, node in constraints.items():
+        assert ref.path[t] == node
+    if with_constraints:
+        assert constraints  # the take shares phones with the database

@@ -1,0 +1,110 @@
+import numpy as np
+import pytest
+
+from facesynth.config import Config
+from facesynth.corpus.face import P, PARAMS, Rig as FaceRig, build_face_model
+from facesynth.errors import InputError
+from facesynth.stages.deform import animate, bind, mesh_distances, similarity_fit
+
+
+@pytest.fixture(scope="module")
+def face():
+    return build_face_model()
+
+
+def test_mesh_distance_goes_around_the_mouth(face):
+    up = face.marker_vertices[face.marker_names.index("ULI_C")]
+    lo = face.marker_vertices[face.marker_names.index("LLI_C")]
+    assert np.linalg.norm(face.vertices[up] - face.vertices[lo]) == 0.0  # the same point in space
+    d = mesh_distances(face.vertices, face.faces, np.array([lo]), limit=np.inf)[0, up]
+    assert d > 45.0  # around a mouth corner: at least the slit's half width, twice
+
+
+def test_lower_lip_motion_does_not_drag_the_upper_lip(face, config):
+    settings = config.settings("deform")
+    rig = bind(face.vertices, face.faces, dict(zip(face.marker_names, face.marker_vertices.tolist())),
+               face.marker_names, settings, "face", "binding")
+    reference = face.vertices[face.marker_vertices]
+    markers = reference.copy()[None]
+    markers[0, face.marker_names.index("LLI_C"), 1] -= 10.0  # pull the lower lip down 10 mm
+    verts, _ = animate(rig, markers, face.marker_names, reference)
+    moved = np.linalg.norm(verts[0] - face.vertices, axis=1)
+    up = face.marker_vertices[face.marker_names.index("ULI_C")]
+    lo = face.marker_vertices[face.marker_names.index("LLI_C")]
+    # Eq. 15 averages the neighbouring markers, so the pull is diluted; the upper lip must not move at all.
+    assert moved[lo] > 0.5 and moved[up] == 0.0
+
+
+def test_vertex_error_against_the_rig_ground_truth(face, config):
+    """Markers driven by the corpus rig deform the mesh close to the rig's own vertices."""
+    settings = config.settings("deform")
+    binding = dict(zip(face.marker_names, face.marker_vertices.tolist()))
+    rig = bind(face.vertices, face.faces, binding, face.marker_names, settings, "face", "binding")
+    params = np.zeros((3, len(PARAMS)))
+    params[0, P["jaw"]], params[1, P["round"]], params[2, P["smile"]] = 0.8, 1.0, 1.0
+    truth = FaceRig(face.vertices, face.lower).evaluate(params)
+    markers = truth[:, face.marker_vertices]
+    verts, fit = animate(rig, markers, face.marker_names, face.vertices[face.marker_vertices])
+    displacement = np.linalg.norm(truth - face.vertices, axis=2)
+    error = np.linalg.norm(verts - truth, axis=2)
+    moving = displacement > 1.0
+    assert fit["fit_rms"] < 1e-9 and fit["scale"] == pytest.approx(1.0)
+    assert error[moving].mean() < 0.25 * displacement[moving].mean()
+
+
+def test_production_mesh_with_holes(config, shared_assets):
+    """The ICT face (11,248 vertices, eye and mouth holes, cm): a jaw-open shape sampled at
+    68 landmarks is carried to the whole mesh without moving the upper lip."""
+    path = shared_assets / "ict-face" / "ict_face.npz"
+    if not path.exists():
+        pytest.skip("shared assets not present")
+    d = np.load(path)
+    verts, faces = d["vertices"].astype(np.float64), d["faces"].astype(np.int64)
+    names = list(d["expr_names"])
+    delta = d["expr_deltas"][names.index("jawOpen")].astype(np.float64)
+    mouth = d["loop_mouth"]
+    lower_lip = mouth[np.argsort(verts[mouth, 1])[:8]]
+    upper_lip = mouth[np.argsort(verts[mouth, 1])[-8:]]
+    marker_vertices = np.unique(np.concatenate([d["landmarks68"], lower_lip]))
+    marker_names = [f"m{v}" for v in marker_vertices]
+    settings = Config.load(None, ("deform.sigma=1.5", "deform.distance_threshold=4.5")).settings("deform")  # cm
+    rig = bind(verts, faces, dict(zip(marker_names, marker_vertices.tolist())), marker_names, settings, "ict", "b")
+    reference = verts[marker_vertices] * 10.0  # markers in mm, mesh in cm: the fit finds the scale
+    frames, fit = animate(rig, (reference + 10.0 * 0.8 * delta[marker_vertices])[None], marker_names, reference)
+    assert fit["scale"] == pytest.approx(0.1)
+    moved = np.linalg.norm(frames[0] - verts, axis=1)
+    true = 0.8 * np.linalg.norm(delta, axis=1)
+    assert moved[lower_lip].mean() > 0.5 * true[lower_lip].mean() > 1.0
+    assert moved[upper_lip].mean() < 0.3 * moved[lower_lip].mean()
+
+
+def test_several_components_keep_their_own_markers(config):
+    # two separate triangles strips 1 mm apart: a marker on one never moves the other
+    verts = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1.0], [1, 0, 1], [0, 1, 1]], float)
+    faces = np.array([[0, 1, 2], [3, 4, 5]])
+    rig = bind(verts, faces, {"a": 0, "b": 1, "c": 2}, ["a", "b", "c"], config.settings("deform"), "m", "b")
+    assert rig.unreached == 3
+    reference = verts[[0, 1, 2]]
+    frames, _ = animate(rig, (reference + [0, 0, 0.5])[None], ["a", "b", "c"], reference)
+    assert np.allclose(frames[0, 3:], verts[3:])
+
+
+@pytest.mark.parametrize("binding, message", [
+    ({"a": 0, "b": 1, "zz": 2}, r"marker\(s\) \['zz'\] are not in the motion"),
+    ({"a": 0, "b": 1, "c": 99}, "bound to vertex 99, but m has vertices 0 to 5"),
+])
+def test_bad_bindings(config, binding, message):
+    verts = np.zeros((6, 3))
+    faces = np.array([[0, 1, 2], [3, 4, 5]])
+    with pytest.raises(InputError, match=message):
+        bind(verts, faces, binding, ["a", "b", "c"], config.settings("deform"), "m", "b")
+
+
+def test_similarity_fit_recovers_scale_rotation_translation():
+    from scipy.spatial.transform import Rotation
+
+    rng = np.random.default_rng(0)
+    a = rng.normal(size=(20, 3))
+    r = Rotation.from_euler("xyz", [30, -10, 70], degrees=True).as_matrix()
+    s, rr, t, res = similarity_fit(a, 2.5 * a @ r.T + [1, 2, 3])
+    assert s == pytest.approx(2.5) and np.allclose(rr, r) and np.allclose(t, [1, 2, 3]) and res < 1e-9

@@ -1,0 +1,80 @@
+import subprocess
+
+import imageio_ffmpeg
+import numpy as np
+import pytest
+import soundfile as sf
+
+from facesynth.config import Config
+from facesynth.errors import InputError
+from facesynth.stages import deform, render, synthesize
+
+
+@pytest.fixture(scope="module")
+def anim(tiny_db, tiny_corpus, held_out_take, tmp_path_factory):
+    config = Config.load()
+    d = tmp_path_factory.mktemp("render")
+    synthesize.run(tiny_db, d / "m.h5", config.settings("synthesize"), config.settings("ingest"),
+                   phones_path=tiny_corpus / "labels" / f"{held_out_take}.TextGrid")
+    deform.run(d / "m.h5", tiny_corpus / "face.obj", tiny_corpus / "markers.csv", d / "a.h5", config.settings("deform"))
+    return d / "a.h5", tiny_corpus / "audio" / f"{held_out_take}.wav"
+
+
+def test_opencl_rasterizer_matches_the_numpy_reference(anim):
+    clip = render.read_clip(anim[0])
+    cam = render.Camera.fit(clip.vertices[0], 160, 128, 30.0)
+    screen = cam.project(clip.vertices[5].astype(np.float64))
+    raster = render.OpenCLRasterizer(clip.faces, clip.vertices.shape[1], 160, 128)
+    raster.render(screen, render.vertex_normals(clip.vertices[5], clip.faces, render.face_incidence(clip.vertices.shape[1], clip.faces)))
+    ids = raster.triangle_ids()
+    ids = np.where(ids == np.iinfo(np.int32).max, -1, ids)
+    ref = render.triangle_ids_numpy(screen, clip.faces, 160, 128)
+    assert (ref >= 0).mean() > 0.2  # the face covers much of the frame
+    assert (ids == ref).mean() > 0.995
+
+
+def _audio_of(avi, tmp_path):
+    wav = tmp_path / "back.wav"
+    subprocess.run([imageio_ffmpeg.get_ffmpeg_exe(), "-loglevel", "error", "-y", "-i", str(avi), str(wav)], check=True)
+    return sf.read(wav)
+
+
+def test_avi_has_every_frame_and_audio_of_equal_length(anim, tmp_path):
+    out = tmp_path / "x.avi"
+    s = render.run([anim[0]], [anim[1]], out, Config.load().settings("render"))
+    n_frames, _ = imageio_ffmpeg.count_frames_and_secs(str(out))
+    assert n_frames == s["frames"]
+    audio, rate = _audio_of(out, tmp_path)
+    assert len(audio) / rate == pytest.approx(s["frames"] / 30.0, abs=1e-3)
+    reader = imageio_ffmpeg.read_frames(str(out))
+    meta = next(reader)
+    assert tuple(meta["size"]) == (640, 480)
+    first = np.frombuffer(next(reader), np.uint8)
+    assert first.std() > 10  # a face, not a blank frame
+
+
+def test_rendering_is_deterministic(anim, tmp_path):
+    settings = Config.load(None, ("render.width=320", "render.height=240")).settings("render")
+    render.run([anim[0]], [anim[1]], tmp_path / "a.avi", settings)
+    render.run([anim[0]], [anim[1]], tmp_path / "b.avi", settings)
+    assert (tmp_path / "a.avi").read_bytes() == (tmp_path / "b.avi").read_bytes()
+
+
+def test_marker_and_side_by_side_views(anim, tmp_path):
+    base = Config.load(None, ("render.width=320", "render.height=240"))
+    render.run([anim[0]], [anim[1]], tmp_path / "m.avi", Config.load(None, ("render.view=markers",)).settings("render"))
+    render.run([anim[0]], [anim[1]], tmp_path / "s.avi", Config.load(None, ("render.view=side-by-side",)).settings("render"),
+               compare=anim[0])
+    assert imageio_ffmpeg.count_frames_and_secs(str(tmp_path / "s.avi"))[0] > 0
+    with pytest.raises(InputError, match="side-by-side view needs --compare"):
+        render.run([anim[0]], [anim[1]], tmp_path / "t.avi", Config.load(None, ("render.view=side-by-side",)).settings("render"))
+    del base
+
+
+def test_audio_shorter_than_the_motion_is_refused(anim, tmp_path):
+    x, rate = sf.read(anim[1])
+    short = tmp_path / "short.wav"
+    sf.write(short, x[: rate // 4], rate)
+    with pytest.raises(InputError, match="short.wav: the audio lasts 0.25 s but the motion"):
+        render.run([anim[0]], [short], tmp_path / "x.avi", Config.load().settings("render"))
+    assert not (tmp_path / "x.avi").exists()

@@ -1,0 +1,112 @@
+import h5py
+import numpy as np
+import pytest
+from click.testing import CliRunner
+
+from facesynth.cli import main
+from facesynth.errors import InputError, SearchError
+from facesynth.stages import synthesize
+
+
+def _run(db, tg, out, config, **kw):
+    return synthesize.run(db, out, config.settings("synthesize"), config.settings("ingest"), phones_path=tg, **kw)
+
+
+def test_motion_artifact_holds_both_rates_path_costs_and_provenance(tiny_db, tiny_corpus, held_out_take, config, tmp_path):
+    tg = tiny_corpus / "labels" / f"{held_out_take}.TextGrid"
+    out = tmp_path / "m.h5"
+    s = _run(tiny_db, tg, out, config)
+    with h5py.File(out) as f:
+        m30, m120 = f["markers"], f["markers_capture"]
+        assert m30.attrs["fps"] == 30 and m120.attrs["fps"] == 120 and m30.attrs["units"] == "mm"
+        assert len(m120) == pytest.approx(4 * (len(m30) - 1) + 1, abs=3)
+        path = f["path/node"][()]
+        assert len(path) == s["phones"]
+        total = sum(f[f"path/cost_{k}"][()].astype(np.float64).sum() for k in ("tc", "oc", "emp", "block"))
+        assert total == pytest.approx(f["path"].attrs["total_cost"], rel=1e-5)
+        assert f["path"].attrs["non_captured_joins"] == s["joins"]
+        node, take, src = f["provenance/node"][()], f["provenance/take"][()], f["provenance/source_frame"][()]
+        assert len(node) == len(m120)
+        assert ((node == -1) == (src == -1)).all() and ((node == -1) == (take == -1)).all()
+        spoken = node >= 0
+        assert set(np.unique(node[spoken])) <= set(path.tolist())
+
+
+def test_constraints_are_met_and_emotions_steer_the_search(tiny_db, tiny_corpus, held_out_take, config, tmp_path):
+    tg = tiny_corpus / "labels" / f"{held_out_take}.TextGrid"
+    db = synthesize.load_database(tiny_db)
+    from facesynth.search.inputs import read_utterance
+
+    utt = read_utterance(tg)
+    t = next(k for k, p in enumerate(utt.phones) if p != "pau" and p in db.nodes.phone)
+    node = [j for j, p in enumerate(db.nodes.phone) if p == utt.phones[t]][-1]
+    (tmp_path / "c.txt").write_text(f"# pick a node\n{t} {node}\n")
+    (tmp_path / "e.txt").write_text("0 100 angry\n")
+    _run(tiny_db, tg, tmp_path / "m.h5", config, constraints_path=tmp_path / "c.txt", emotions_path=tmp_path / "e.txt")
+    with h5py.File(tmp_path / "m.h5") as f:
+        assert f["path/node"][t] == node
+        emotions = [e.decode() for e in f["path/node_emotion"][()]]
+    spoken = [e for e, p in zip(emotions, utt.phones) if p != "pau"]
+    assert spoken.count("angry") > 0.7 * len(spoken)
+
+
+@pytest.mark.parametrize("line, message", [
+    ("0 5", "is a pause"),
+    ("999 5", "phone index 999 is out of range"),
+    ("99.0s 5", "outside the utterance"),
+    ("1 100000", "node 100000 does not exist"),
+    ("1 x", "expected 'INDEX NODE' or 'TIMEs NODE' with numbers"),
+])
+def test_bad_constraints_are_named(tiny_db, tiny_corpus, held_out_take, config, tmp_path, line, message):
+    (tmp_path / "c.txt").write_text(line + "\n")
+    with pytest.raises((SearchError, InputError), match=message):
+        _run(tiny_db, tiny_corpus / "labels" / f"{held_out_take}.TextGrid", tmp_path / "m.h5", config,
+             constraints_path=tmp_path / "c.txt")
+    assert not (tmp_path / "m.h5").exists()
+
+
+def test_constraint_with_a_node_of_another_phone(tiny_db, tiny_corpus, held_out_take, config, tmp_path):
+    from facesynth.search.inputs import read_utterance
+
+    db = synthesize.load_database(tiny_db)
+    utt = read_utterance(tiny_corpus / "labels" / f"{held_out_take}.TextGrid")
+    node = next(j for j, p in enumerate(db.nodes.phone) if p != utt.phones[1])
+    (tmp_path / "c.txt").write_text(f"1 {node}\n")
+    with pytest.raises(SearchError, match=rf"node {node} is /{db.nodes.phone[node]}/ but phone 1 is /{utt.phones[1]}/"):
+        _run(tiny_db, tiny_corpus / "labels" / f"{held_out_take}.TextGrid", tmp_path / "m.h5", config, constraints_path=tmp_path / "c.txt")
+
+
+@pytest.mark.parametrize("text, message", [
+    ("0 1 happy\n0.5 2 sad\n", "line 2: emotion span overlaps the one at line 1"),
+    ("0 1 bored\n", "unknown emotion 'bored'"),
+    ("0 x happy\n", "expected 'start_s end_s emotion'"),
+])
+def test_bad_emotion_files(tiny_db, tiny_corpus, held_out_take, config, tmp_path, text, message):
+    (tmp_path / "e.txt").write_text(text)
+    with pytest.raises(InputError, match=message):
+        _run(tiny_db, tiny_corpus / "labels" / f"{held_out_take}.TextGrid", tmp_path / "m.h5", config, emotions_path=tmp_path / "e.txt")
+
+
+def test_cli_warns_about_phones_without_nodes(tiny_db, tiny_corpus, tmp_path):
+    from facesynth.formats.labels import Segment, write_textgrid
+
+    tg = tmp_path / "u.TextGrid"
+    write_textgrid(tg, {"phones": [Segment(0, 0.2, "pau"), Segment(0.2, 0.3, "zh"), Segment(0.3, 0.5, "oy"), Segment(0.5, 0.7, "pau")]})
+    r = CliRunner().invoke(main, ["synthesize", str(tiny_db), "--phonemes", str(tg), "-o", str(tmp_path / "m.h5")])
+    assert r.exit_code == 0, r.output
+    db = synthesize.load_database(tiny_db)
+    for phone in ("zh", "oy"):
+        if phone not in db.nodes.phone:
+            assert f"no node of /{phone}/" in r.output
+
+
+def test_numpy_and_opencl_synthesis_write_the_same_motion(tiny_db, tiny_corpus, held_out_take, config, tmp_path):
+    from facesynth.config import Config
+
+    tg = tiny_corpus / "labels" / f"{held_out_take}.TextGrid"
+    _run(tiny_db, tg, tmp_path / "a.h5", config)
+    numpy_config = Config.load(None, ("synthesize.use_opencl=false",))
+    _run(tiny_db, tg, tmp_path / "b.h5", numpy_config)
+    with h5py.File(tmp_path / "a.h5") as a, h5py.File(tmp_path / "b.h5") as b:
+        assert np.array_equal(a["path/node"][()], b["path/node"][()])
+        assert np.array_equal(a["markers"][()], b["markers"][()])
