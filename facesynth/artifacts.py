@@ -99,16 +99,18 @@ def write_artifact(
     *,
     config: str | dict = "{}",
     inputs: Sequence[Path] = (),
+    records: Sequence[dict] | None = None,
     overwrite: bool = False,
 ) -> Iterator[h5py.File]:
     """Open a new artifact of ``kind`` for writing; it appears at ``path`` only when complete.
 
     ``config`` is the JSON (or dict) of the resolved settings used; ``inputs`` the files it
-    was made from, recorded with their sha256.
+    was made from, recorded with their sha256 (or pass their ``records``, already computed
+    with :func:`input_record`, e.g. while other work ran).
     """
     if kind not in SCHEMAS:
         raise ValueError(f"unknown artifact kind {kind!r}")
-    records = [input_record(p) for p in inputs]
+    records = list(records) if records is not None else [input_record(p) for p in inputs]
     with atomic_path(path, overwrite) as tmp:
         with h5py.File(tmp, "w", track_order=True) as f:
             f.attrs["facesynth_kind"] = kind

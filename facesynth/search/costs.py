@@ -29,27 +29,34 @@ class StepCosts:
         return (self.oc + self.emp + self.block).astype(np.float32)
 
 
-def transition_matrix(dsc: np.ndarray, pgap: np.ndarray, vgap: np.ndarray, node_viseme: np.ndarray,
-                      pre: np.ndarray, s: SynthesizeSettings, out: np.ndarray | None = None) -> np.ndarray:
-    """TC[i, j] of Table I, (N, N) float32, row i = the node before, column j = the node after.
+def transition_rows(rows: slice, dsc: np.ndarray, pgap: np.ndarray, vgap: np.ndarray, node_viseme: np.ndarray,
+                    pre: np.ndarray, s: SynthesizeSettings) -> np.ndarray:
+    """Rows ``rows`` of TC (Table I), float32; ``dsc``/``pgap``/``vgap`` hold just those rows.
 
     Rule 1: pre(o_j) = o_i -> 0. Rule 2: viseme(o_i) = viseme(pre(o_j)) ->
     alpha2 DSC + PVC. Rule 3: otherwise alpha2 DSC + PVC + PNT. Rule 4: pre(o_j) = NIL ->
     alpha1 PNT. PVC = alpha3 PGap + VGap (Eq. 7).
     """
-    n = len(pre)
-    tc = out if out is not None else np.empty((n, n), np.float32)
     has_pre = pre >= 0
     pre_viseme = np.where(has_pre, node_viseme[np.maximum(pre, 0)], -1)
-    block = 1024
-    for a in range(0, n, block):
-        b = min(n, a + block)
-        t = np.float32(s.alpha2) * dsc[a:b] + np.float32(s.alpha3) * pgap[a:b] + vgap[a:b]
-        t += np.float32(s.pnt) * (node_viseme[a:b, None] != pre_viseme[None, :])
-        t[:, ~has_pre] = np.float32(s.alpha1 * s.pnt)
-        tc[a:b] = t
-    rows = np.nonzero(has_pre)[0]
-    tc[pre[rows], rows] = 0.0
+    t = np.float32(s.alpha2) * dsc
+    t += np.float32(s.alpha3) * pgap
+    t += vgap
+    t += np.float32(s.pnt) * (node_viseme[rows, None] != pre_viseme[None, :])
+    t[:, ~has_pre] = np.float32(s.alpha1 * s.pnt)
+    captured = np.nonzero(has_pre & (pre >= rows.start) & (pre < rows.stop))[0]
+    t[pre[captured] - rows.start, captured] = 0.0
+    return t.astype(np.float32, copy=False)
+
+
+def transition_matrix(dsc: np.ndarray, pgap: np.ndarray, vgap: np.ndarray, node_viseme: np.ndarray,
+                      pre: np.ndarray, s: SynthesizeSettings) -> np.ndarray:
+    """TC[i, j] of Table I, (N, N) float32, row i = the node before, column j = the node after."""
+    n = len(pre)
+    tc = np.empty((n, n), np.float32)
+    for a in range(0, n, 1024):
+        rows = slice(a, min(n, a + 1024))
+        tc[rows] = transition_rows(rows, dsc[rows], pgap[rows], vgap[rows], node_viseme, pre, s)
     return tc
 
 
@@ -77,9 +84,10 @@ def step_costs(phones: list[str], emotions: list[str], node_phone: list[str], no
     return StepCosts(oc, emp, block)
 
 
-def path_terms(path: np.ndarray, tc: np.ndarray, steps: StepCosts) -> dict[str, np.ndarray]:
-    """Every cost term along a path: tc[t] is the transition into step t (0 at t = 0)."""
+def path_terms(path: np.ndarray, tc, steps: StepCosts) -> dict[str, np.ndarray]:
+    """Every cost term along a path: tc[t] is the transition into step t (0 at t = 0).
+    ``tc`` is the (N, N) matrix or a :class:`~facesynth.search.dp.PanelMatrix`."""
     t_idx = np.arange(len(path))
     tcs = np.zeros(len(path), np.float32)
-    tcs[1:] = tc[path[:-1], path[1:]]
+    tcs[1:] = [tc[int(i), int(j)] for i, j in zip(path[:-1], path[1:])]
     return {"tc": tcs, "oc": steps.oc[t_idx, path], "emp": steps.emp[t_idx, path], "block": steps.block[t_idx, path]}

@@ -48,18 +48,42 @@ def dp_numpy(tc: np.ndarray, obs: np.ndarray, column_block: int = 512) -> DpResu
     return DpResult(float(phi[-1, path[-1]]), path, phi)
 
 
+class PanelMatrix:
+    """An (N, N) float32 cost matrix stored panel-major: ``panels[p, i, c]`` is
+    ``TC[i, p * PANEL + c]``; columns past N are +inf. Rows can be filled block by block."""
+
+    def __init__(self, n: int, panel: int = PANEL):
+        self.n, self.panel = n, panel
+        self.panels = np.empty((-(-n // panel), n, panel), np.float32)
+        self.panels[-1, :, n - (len(self.panels) - 1) * panel :] = np.inf
+
+    @classmethod
+    def from_matrix(cls, tc: np.ndarray, panel: int = PANEL) -> "PanelMatrix":
+        out = cls(tc.shape[0], panel)
+        for a in range(0, out.n, 2048):
+            out.set_rows(slice(a, min(out.n, a + 2048)), tc[a : a + 2048])
+        return out
+
+    def set_rows(self, rows: slice, values: np.ndarray) -> None:
+        """Write rows ``rows`` (values (r, N))."""
+        n, panel = self.n, self.panel
+        full = n // panel
+        if full:
+            self.panels[:full, rows] = values[:, : full * panel].reshape(len(values), full, panel).transpose(1, 0, 2)
+        if full < len(self.panels):
+            self.panels[full, rows, : n - full * panel] = values[:, full * panel :]
+
+    def column(self, j: int) -> np.ndarray:
+        return self.panels[j // self.panel, :, j % self.panel]
+
+    def __getitem__(self, ij: tuple[int, int]) -> np.float32:
+        i, j = ij
+        return self.panels[j // self.panel, i, j % self.panel]
+
+
 def to_panels(tc: np.ndarray, panel: int = PANEL) -> np.ndarray:
     """Panel-major copy of TC: (n_panels, N, panel), columns padded with +inf."""
-    n = tc.shape[0]
-    n_panels = -(-n // panel)
-    out = np.empty((n_panels, n, panel), np.float32)
-    full = n // panel
-    if full:
-        out[:full] = tc[:, : full * panel].reshape(n, full, panel).transpose(1, 0, 2)
-    if full < n_panels:
-        out[full, :, : n - full * panel] = tc[:, full * panel :]
-        out[full, :, n - full * panel :] = np.inf
-    return out
+    return PanelMatrix.from_matrix(tc, panel).panels
 
 
 class OpenCLDp:
@@ -69,16 +93,16 @@ class OpenCLDp:
     ``max_mem_alloc_size``); each step launches one work-item per column panel per buffer.
     """
 
-    def __init__(self, tc: np.ndarray, panels: np.ndarray | None = None):
+    def __init__(self, tc: "np.ndarray | PanelMatrix"):
         import pyopencl as cl
 
         from ..opencl import context, kernel, max_alloc_bytes, queue
 
         self.ctx, self.queue = context(), queue()
         self.kernel = kernel("dp_min_plus", "min_plus_panels")
-        self.n = tc.shape[0]
-        self.tc = tc
-        panels = to_panels(tc) if panels is None else panels
+        self.tc = tc if isinstance(tc, PanelMatrix) else PanelMatrix.from_matrix(tc)
+        self.n = self.tc.n
+        panels = self.tc.panels
         self.n_panels = panels.shape[0]
         per_panel = panels[0].nbytes
         per_buffer = max(1, min(self.n_panels, (min(max_alloc_bytes(), 1 << 30) // per_panel)))
@@ -86,7 +110,8 @@ class OpenCLDp:
         self.groups = []
         for first in range(0, self.n_panels, per_buffer):
             count = min(per_buffer, self.n_panels - first)
-            buf = cl.Buffer(self.ctx, mf.READ_ONLY | mf.COPY_HOST_PTR, hostbuf=panels[first : first + count])
+            # USE_HOST_PTR: a CPU device reads the host array in place, no second copy.
+            buf = cl.Buffer(self.ctx, mf.READ_ONLY | mf.USE_HOST_PTR, hostbuf=panels[first : first + count])
             self.groups.append((first, count, buf))
         self.cols = self.n_panels * PANEL
 
@@ -110,12 +135,12 @@ class OpenCLDp:
             cl.enqueue_copy(self.queue, phi[t], dst, is_blocking=False)
         self.queue.finish()
         phi = phi[:, :n]
-        path = backtrack(phi, lambda j: self.tc[:, j])
+        path = backtrack(phi, self.tc.column)
         return DpResult(float(phi[-1, path[-1]]), path, phi)
 
     def _obs_row(self, obs_buf, t):
         return obs_buf.get_sub_region(4 * t * self.cols, 4 * self.cols)
 
 
-def dp_opencl(tc: np.ndarray, obs: np.ndarray) -> DpResult:
+def dp_opencl(tc: "np.ndarray | PanelMatrix", obs: np.ndarray) -> DpResult:
     return OpenCLDp(tc).run(obs)

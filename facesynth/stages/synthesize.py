@@ -19,7 +19,8 @@ from ..artifacts import open_artifact, read, read_strings, write_artifact, write
 from ..config import IngestSettings, SynthesizeSettings, settings_json
 from ..errors import InputError
 from ..phonemes import PAU, viseme
-from ..search.costs import StepCosts, path_terms, step_costs, transition_matrix
+from ..search.costs import StepCosts, path_terms, step_costs, transition_matrix, transition_rows
+from ..search.dp import PanelMatrix
 from ..search.inputs import Utterance, apply_emotions, read_constraints, read_utterance
 from ..motion.postprocess import concatenate, downsample
 from ..tables import Takes
@@ -38,20 +39,37 @@ class Database:
     marker_names: list[str]
     takes: Takes
     fps: float
-    dsc: np.ndarray
-    pgap: np.ndarray
-    vgap: np.ndarray
+    path: Path
 
     def transition(self, settings: SynthesizeSettings) -> np.ndarray:
-        return transition_matrix(self.dsc, self.pgap, self.vgap, self.nodes.viseme, self.nodes.pre, settings)
+        """The full (N, N) TC matrix of Table I."""
+        with open_artifact(self.path, "motiondb") as f:
+            return transition_matrix(read(f, "pairs/dsc"), read(f, "pairs/pgap"), read(f, "pairs/vgap"),
+                                     self.nodes.viseme, self.nodes.pre, settings)
+
+    def transition_panels(self, settings: SynthesizeSettings, block: int = 512) -> PanelMatrix:
+        """TC assembled straight into the panel-major layout of the OpenCL DP, streaming the
+        pair terms from the file in row blocks (no full-size intermediate copies)."""
+        n = len(self.nodes)
+        out = PanelMatrix(n)
+        with open_artifact(self.path, "motiondb") as f:
+            dsc, pgap, vgap = f["pairs/dsc"], f["pairs/pgap"], f["pairs/vgap"]
+            for a in range(0, n, block):
+                rows = slice(a, min(n, a + block))
+                out.set_rows(rows, transition_rows(rows, dsc[rows], pgap[rows], vgap[rows], self.nodes.viseme, self.nodes.pre, settings))
+        return out
 
 
 def load_database(path: Path) -> Database:
+    """Everything but the pairwise terms, which are streamed when the search needs them."""
     with open_artifact(path, "motiondb") as f:
+        for key in ("pairs/dsc", "pairs/pgap", "pairs/vgap"):
+            read_shape = f[key].shape if key in f else None
+            if read_shape != (len(f["nodes/phone"]),) * 2:
+                raise InputError(f"{path}: dataset '{key}' is missing or not (nodes x nodes); rebuild it with facesynth build-db.")
         return Database(
             Nodes.read(f), read(f, "coefficients"), read_pca(f), read(f, "reference"),
-            read_strings(f, "marker_names"), Takes.read(f), float(f["coefficients"].attrs["fps"]),
-            read(f, "pairs/dsc"), read(f, "pairs/pgap"), read(f, "pairs/vgap"),
+            read_strings(f, "marker_names"), Takes.read(f), float(f["coefficients"].attrs["fps"]), Path(path),
         )
 
 
@@ -67,7 +85,7 @@ def unseen_phones(utt: Utterance, db: Database) -> dict[str, str]:
     return out
 
 
-def search(db: Database, tc: np.ndarray, steps: StepCosts, settings: SynthesizeSettings):
+def search(tc, steps: StepCosts, settings: SynthesizeSettings):
     """Run the configured search; returns (DpResult, device description)."""
     from ..search.dp import dp_numpy, dp_opencl
 
@@ -94,11 +112,12 @@ def synthesize(db: Database, utt: Utterance, constraints: dict[int, int], settin
     """Search and post-process. Returns a dict of everything ``motion.h5`` stores."""
     timings = {}
     t0 = time.perf_counter()
-    tc = db.transition(settings) if tc is None else tc
+    if tc is None:
+        tc = db.transition_panels(settings) if settings.use_opencl else db.transition(settings)
     steps = step_costs(utt.phones, utt.emotions, db.nodes.phone, db.nodes.emotion, constraints, settings)
     timings["costs_s"] = time.perf_counter() - t0
     t0 = time.perf_counter()
-    result, device = search(db, tc, steps, settings)
+    result, device = search(tc, steps, settings)
     timings["search_s"] = time.perf_counter() - t0
     path = result.path
     for t, node in constraints.items():  # Eq. 10 guarantees this; a failure is a bug
@@ -142,9 +161,9 @@ def prepare(db: Database, phones_path: Path | None, emotions_path: Path | None, 
 
 
 def write_motion(out: Path, db: Database, utt: Utterance, res: dict, settings: SynthesizeSettings,
-                 inputs: list[Path], overwrite: bool) -> None:
+                 records: list[dict], overwrite: bool) -> None:
     cat = res["concatenated"]
-    with write_artifact(out, "motion", config=settings_json(settings), inputs=inputs, overwrite=overwrite) as g:
+    with write_artifact(out, "motion", config=settings_json(settings), records=records, overwrite=overwrite) as g:
         m = g.create_dataset("markers", data=res["markers"])
         m.attrs.update(units="mm", fps=settings.output_fps)
         mc = g.create_dataset("markers_capture", data=res["markers_capture"])
@@ -180,15 +199,19 @@ def write_motion(out: Path, db: Database, utt: Utterance, res: dict, settings: S
 def run(db_path: Path, out: Path, settings: SynthesizeSettings, ingest_settings: IngestSettings, *,
         phones_path: Path | None = None, emotions_path: Path | None = None, constraints_path: Path | None = None,
         audio: Path | None = None, text: str | None = None, overwrite: bool = False) -> dict:
-    from ..artifacts import check_output
+    from concurrent.futures import ThreadPoolExecutor
+
+    from ..artifacts import check_output, input_record
 
     check_output(out, overwrite)
     t0 = time.perf_counter()
     db = load_database(db_path)
     load_s = time.perf_counter() - t0
     utt, constraints = prepare(db, phones_path, emotions_path, constraints_path, ingest_settings, audio, text)
-    res = synthesize(db, utt, constraints, settings)
     inputs = [p for p in (db_path, phones_path, emotions_path, constraints_path, audio) if p is not None]
-    write_motion(out, db, utt, res, settings, inputs, overwrite)
+    with ThreadPoolExecutor(max_workers=1) as pool:  # hash the inputs for provenance while the search runs
+        records = pool.submit(lambda: [input_record(p) for p in inputs])
+        res = synthesize(db, utt, constraints, settings)
+        write_motion(out, db, utt, res, settings, records.result(), overwrite)
     return {"phones": len(utt), "cost": res["cost"], "joins": res["non_captured_joins"], "device": res["device"],
             "unseen": unseen_phones(utt, db), "frames": len(res["markers"]), "load_s": load_s, **res["timings"]}
