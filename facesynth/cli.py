@@ -19,6 +19,18 @@ PATH = click.Path(path_type=Path)
 EXISTING = click.Path(path_type=Path, dir_okay=False)
 
 
+class DefaultGroup(click.Group):
+    """A group that runs its default command when the first argument is no subcommand:
+    ``facesynth isomap db.h5 -o x.h5`` and ``facesynth isomap pick ...`` both work."""
+
+    default_command = "build"
+
+    def resolve_command(self, ctx, args):
+        if args and args[0] not in self.commands and args[0] not in ("-h", "--help"):
+            args = [self.default_command] + list(args)
+        return super().resolve_command(ctx, args)
+
+
 class Context:
     def __init__(self, config: Config, verbose: int, quiet: bool, overwrite: bool):
         self.config, self.verbose, self.quiet, self.overwrite = config, verbose, quiet, overwrite
@@ -272,6 +284,120 @@ def render(ctx: Context, anims, audios, view, compare, output: Path):
     s = stage.run(list(anims), list(audios), output, settings, compare, ctx.overwrite)
     elapsed = time.perf_counter() - started
     ctx.say(f"rendered {s['frames']} frames ({s['seconds']:.2f} s of video, {s['frames'] / elapsed:.1f} frames/s) -> {output}")
+
+
+@main.group(cls=DefaultGroup)
+def isomap():
+    """Phoneme-Isomaps (paper IV): build them, or pick a new frame from one.
+
+    \b
+    Example:
+      facesynth isomap db.h5 -o isomap.h5 --images isomaps/
+      facesynth isomap pick isomap.h5 aa 0.5 -1.2
+    """
+
+
+@isomap.command("build")
+@click.argument("db", type=EXISTING)
+@click.option("-o", "--output", type=PATH, required=True, help="Output isomap.h5.")
+@click.option("--images", type=PATH, default=None, help="Folder for the PNG maps and index.html.")
+@stage
+def isomap_build(ctx: Context, db: Path, output: Path, images: Path | None):
+    """Per phoneme cluster: 2D Isomap, PCA map, Delaunay triangulation, Eq. 3 images.
+
+    \b
+    Example:
+      facesynth isomap db.h5 -o isomap.h5 --images isomaps/
+    """
+    from .stages import isomap as stage
+
+    s = stage.run(db, output, ctx.config.settings("isomap"), images, ctx.overwrite)
+    for phone, note in s["notes"].items():
+        ctx.say(f"note: /{phone}/: {note}")
+    where = f"; images in {images}/index.html" if images else ""
+    ctx.say(f"embedded {s['clusters']} phoneme clusters ({s['frames']} frames, largest {s['largest']}) "
+            f"in {s['embed_s']:.1f} s -> {output}{where}")
+
+
+@isomap.command("pick")
+@click.argument("isomap_path", metavar="ISOMAP", type=EXISTING)
+@click.argument("phoneme")
+@click.argument("x", type=float)
+@click.argument("y", type=float)
+@click.option("--pca-map", is_flag=True, help="Pick on the PCA map instead of the Isomap.")
+@stage
+def isomap_pick(ctx: Context, isomap_path: Path, phoneme: str, x: float, y: float, pca_map: bool):
+    """Print the frame at a point of a phoneme's map as CSV markers (Fig. 7).
+
+    \b
+    Example:
+      facesynth isomap pick isomap.h5 aa 0.5 -1.2 > frame.csv
+    """
+    from .stages import isomap as stage
+
+    markers, names, info = stage.pick(isomap_path, phoneme, x, y, pca_map)
+    ctx.detail(f"triangle of frames {info['corners']} (nodes {info['nodes']}), weights {info['weights']}")
+    click.echo("marker,x_mm,y_mm,z_mm")
+    for name, (px, py, pz) in zip(names, markers):
+        click.echo(f"{name},{px:.4f},{py:.4f},{pz:.4f}")
+
+
+@main.group()
+def db():
+    """Browse the motion-node database (paper V).
+
+    \b
+    Example:
+      facesynth db show db.h5 --phoneme aa
+    """
+
+
+@db.command("show")
+@click.argument("db_path", metavar="DB", type=EXISTING)
+@click.option("--phoneme", default=None, help="Only this phone's nodes.")
+@click.option("--node", type=int, default=None, help="One node in detail.")
+@stage
+def db_show(ctx: Context, db_path: Path, phoneme: str | None, node: int | None):
+    """List motion nodes: phone, triphone context, emotion, take, frames, neighbours.
+
+    \b
+    Example:
+      facesynth db show db.h5 --node 42
+    """
+    from .stages import prune as stage
+
+    for line in stage.show(db_path, phoneme, node):
+        click.echo(line)
+
+
+@main.command()
+@click.argument("db_path", metavar="DB", type=EXISTING)
+@click.option("--remove", default=None, help="Node ids to remove: '3,5,10-12'.")
+@click.option("--auto", is_flag=True, help="Find contaminated nodes (spikes, swapped markers, cluster outliers).")
+@click.option("--reason", default="removed by hand", show_default=True, help="Why, recorded with --remove.")
+@click.option("-o", "--output", type=PATH, required=True, help="Output db.h5 (the input is never changed).")
+@stage
+def prune(ctx: Context, db_path: Path, remove: str | None, auto: bool, reason: str, output: Path):
+    """Remove contaminated motion nodes into a new database (paper V).
+
+    \b
+    Example:
+      facesynth prune db.h5 --auto -o db_clean.h5
+      facesynth prune db.h5 --remove 12,40-42 --reason "lip marker swap" -o db_clean.h5
+    """
+    from .stages import prune as stage
+
+    s = stage.run(db_path, output, ctx.config.settings("prune"), remove, auto, reason, ctx.overwrite)
+    if not s["removed"]:
+        ctx.say("nothing to remove; no output written.")
+        return
+    if auto:
+        kinds = {}
+        for kind in s["found"].values():
+            kinds[kind] = kinds.get(kind, 0) + 1
+        ctx.say("found " + ", ".join(f"{v} {k}" for k, v in sorted(kinds.items())))
+        ctx.detail("removed: " + ",".join(str(i) for i in s["found"]))
+    ctx.say(f"removed {s['removed']} nodes, kept {s['kept']} ({s['links_cut']} captured links cut) -> {output}")
 
 
 if __name__ == "__main__":  # pragma: no cover

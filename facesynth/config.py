@@ -71,8 +71,8 @@ class IsomapSettings:
 
 @dataclass(frozen=True)
 class PruneSettings:
-    spike_z: float
-    swap_z: float
+    jump_z: float
+    max_excursion_s: float
     outlier_z: float
 
 

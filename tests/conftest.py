@@ -58,3 +58,18 @@ def held_out_take(tiny_corpus) -> str:
     import csv
 
     return next(r["take"] for r in csv.DictReader(open(tiny_corpus / "manifest.csv")) if r["split"] == "test")
+
+
+@pytest.fixture(scope="session")
+def small_db_and_truth(tmp_path_factory, config) -> tuple[Path, Path]:
+    """The 'small' preset's database (about 1,700 nodes) and its contamination ground truth."""
+    from facesynth.corpus.generate import generate
+    from facesynth.stages import build_db, ingest, normalize, pca
+
+    d = tmp_path_factory.mktemp("small")
+    generate(d / "corpus", "small", seed=0)
+    ingest.run(d / "corpus" / "manifest.csv", d / "corpus.h5", config.settings("ingest"))
+    normalize.run(d / "corpus.h5", d / "normalized.h5", config.settings("normalize"))
+    pca.run(d / "normalized.h5", d / "pca.h5", config.settings("pca"))
+    build_db.run(d / "pca.h5", d / "db.h5", config.settings("build_db"))
+    return d / "db.h5", d / "corpus" / "contamination.csv"

@@ -99,7 +99,7 @@ def run(normalized: Path, out: Path, settings: PcaSettings, overwrite: bool = Fa
             c = g.create_dataset("coefficients", data=coeffs)
             c.attrs["fps"] = fps
             c.attrs["units"] = "mm"
-            for key in ("reference", "head_rotation", "head_translation"):
+            for key in ("markers", "reference", "head_rotation", "head_translation"):
                 f.copy(f[key], g, name=key)
     recon = model.reconstruct(coeffs[complete])
     rms = float(np.sqrt(np.nanmean(np.sum((recon - markers[complete]) ** 2, axis=2))))

@@ -1,0 +1,82 @@
+import h5py
+import numpy as np
+import pytest
+from click.testing import CliRunner
+
+from facesynth.cli import main
+from facesynth.config import Config
+from facesynth.errors import InputError
+from facesynth.stages import isomap
+
+
+@pytest.fixture(scope="module")
+def iso(tiny_db, tmp_path_factory):
+    d = tmp_path_factory.mktemp("iso")
+    summary = isomap.run(tiny_db, d / "iso.h5", Config.load().settings("isomap"), images=d / "img")
+    return d, summary
+
+
+def test_every_phoneme_cluster_is_embedded_with_images(iso, tiny_db):
+    d, summary = iso
+    with h5py.File(tiny_db) as f:
+        phones = {p.decode() for p in f["nodes/phone"][()]}
+    with h5py.File(d / "iso.h5") as f:
+        assert set(f["clusters"]) == phones
+        for phone in phones:
+            h = f["clusters"][phone]
+            assert h["isomap"].shape == (len(h["frames"]), 2) and h["pca_map"].shape == h["isomap"].shape
+            assert h["relative_time"][()].min() == 0.0 and h["relative_time"][()].max() == 1.0
+    index = (d / "img" / "index.html").read_text()
+    for phone in phones:
+        assert (d / "img" / f"{phone}_isomap.png").exists() and (d / "img" / f"{phone}_pca.png").exists()
+        assert f"{phone}_isomap.png" in index
+    assert "<title>node " in index  # trajectories name their node on hover
+
+
+def test_small_clusters_fall_back_and_say_so():
+    rng = np.random.default_rng(0)
+    emb, k, exact, note = isomap.embed(rng.normal(size=(8, 5)), 12, 2500)
+    assert k == 6 and "6 neighbours instead of 12" in note
+    emb, k, exact, note = isomap.embed(rng.normal(size=(3, 5)), 12, 2500)
+    assert k == 0 and "PCA map" in note and emb.shape == (3, 2)
+
+
+def test_landmark_isomap_places_every_frame():
+    rng = np.random.default_rng(1)
+    t = rng.uniform(0, 3 * np.pi, 900)
+    x = np.stack([t * np.cos(t), rng.uniform(0, 10, 900), t * np.sin(t)], 1)  # a swiss roll
+    emb, k, exact, _ = isomap.embed(x, 12, 300)
+    assert exact == 300 and np.isfinite(emb).all()
+    # Isomap unrolls the roll: one axis follows the roll's arc length (|corr| with t near 1)
+    assert max(abs(np.corrcoef(emb[:, 0], t)[0, 1]), abs(np.corrcoef(emb[:, 1], t)[0, 1])) > 0.9
+
+
+def test_pick_interpolates_the_covering_triangle(iso, tiny_db):
+    d, _ = iso
+    with h5py.File(d / "iso.h5") as f:
+        phone = max(f["clusters"], key=lambda p: len(f["clusters"][p]["frames"]))
+        pts = f["clusters"][phone]["isomap"][()]
+        tri = f["clusters"][phone]["isomap_triangles"][()]
+    corners = pts[tri[0]]
+    centre = corners.mean(0)
+    markers, names, info = isomap.pick(d / "iso.h5", phone, *centre)
+    assert sorted(info["corners"]) == sorted(tri[0].tolist())
+    assert np.allclose(info["weights"], 1 / 3, atol=1e-5)
+    # the picked frame is the mean of the three captured frames (Eq. 11 is affine)
+    with h5py.File(d / "iso.h5") as f:
+        c = f["clusters"][phone]["coefficients"][()][tri[0]].mean(0)
+        from facesynth.stages.pca import read_pca
+
+        expected = read_pca(f).reconstruct(c[None])[0]
+    np.testing.assert_allclose(markers, expected, atol=1e-3)
+    assert len(names) == markers.shape[0]
+
+
+def test_pick_outside_and_unknown_phone_are_clear(iso):
+    d, _ = iso
+    with pytest.raises(InputError, match=r"lies outside the triangulation of its isomap \(x .* to .*\); pick a point inside it"):
+        isomap.pick(d / "iso.h5", "ax", 1e6, 1e6)
+    with pytest.raises(InputError, match="no phoneme cluster /zh/"):
+        isomap.pick(d / "iso.h5", "zh", 0, 0)
+    r = CliRunner().invoke(main, ["isomap", "pick", str(d / "iso.h5"), "ax", "1e6", "0"])
+    assert r.exit_code == 1 and r.output.startswith("error: /ax/")
