@@ -43,6 +43,13 @@ $(OUT)/pca.h5: $(OUT)/normalized.h5 $(CONFIG)
 $(OUT)/db.h5: $(OUT)/pca.h5 $(CONFIG)
 	$(FS) build-db $< -o $@ --overwrite
 
+# Contaminated nodes out (paper V); synthesis searches the cleaned database.
+$(OUT)/db_clean.h5: $(OUT)/db.h5 $(CONFIG)
+	$(FS) prune $< --auto -o $@ --overwrite
+
+$(OUT)/isomap.h5: $(OUT)/db_clean.h5 $(CONFIG)
+	$(FS) isomap $< -o $@ --images $(OUT)/isomaps --overwrite
+
 # Two held-out (test) sentences of the small corpus, each asked for in another emotion.
 DEMO_TAKES := happy_s016 sad_s017
 
@@ -50,7 +57,7 @@ $(OUT)/%.emotions.txt:
 	mkdir -p $(OUT)
 	echo "0 1000 $(firstword $(subst _, ,$*))" > $@
 
-$(OUT)/%.motion.h5: $(OUT)/db.h5 $(OUT)/%.emotions.txt $(CONFIG)
+$(OUT)/%.motion.h5: $(OUT)/db_clean.h5 $(OUT)/%.emotions.txt $(CONFIG)
 	$(FS) synthesize $< --phonemes $(OUT)/corpus/labels/$*.TextGrid --emotions $(OUT)/$*.emotions.txt -o $@ --overwrite
 
 $(OUT)/%.anim.h5: $(OUT)/%.motion.h5 $(CONFIG)
@@ -60,8 +67,8 @@ $(OUT)/demo.avi: $(foreach t,$(DEMO_TAKES),$(OUT)/$(t).anim.h5) $(CONFIG)
 	$(FS) render $(foreach t,$(DEMO_TAKES),$(OUT)/$(t).anim.h5) \
 	    $(foreach t,$(DEMO_TAKES),--audio $(OUT)/corpus/audio/$(t).wav) -o $@ --overwrite
 
-demo: $(OUT)/demo.avi
-	@echo "demo video: $(OUT)/demo.avi"
+demo: $(OUT)/demo.avi $(OUT)/isomap.h5
+	@echo "demo video: $(OUT)/demo.avi; phoneme-Isomaps: $(OUT)/isomaps/index.html"
 
 .SECONDARY:
 
