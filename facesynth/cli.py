@@ -238,6 +238,35 @@ def synthesize(ctx: Context, db: Path, phonemes, audio, text, emotions, constrai
 
 
 @main.command()
+@click.argument("db", type=EXISTING)
+@click.option("--phonemes", type=EXISTING, required=True, help="The utterance's phone timing (TextGrid or .lab).")
+@click.option("--at", "at_s", type=float, required=True, help="Time (s) of the phone to constrain.")
+@click.option("--emotions", type=EXISTING, default=None, help="Emotion spans, as for synthesize.")
+@click.option("--constraints", type=EXISTING, default=None, help="Constraints already chosen, as for synthesize.")
+@click.option("--top", type=int, default=15, show_default=True, help="How many to list.")
+@click.option("--context-only", is_flag=True, help="Only context-correct nodes (same triphone context).")
+@stage
+def suggest(ctx: Context, db: Path, phonemes: Path, at_s: float, emotions, constraints, top: int, context_only: bool):
+    """Suggest motion nodes for a constraint at a time: time- and context-correct, best first (paper VI-A).
+
+    \b
+    Example:
+      facesynth suggest db.h5 --phonemes corpus/labels/sad_s017.TextGrid --at 1.25
+    """
+    from .stages import suggest as stage
+
+    info, rows = stage.suggest(db, phonemes, at_s, ctx.config.settings("synthesize"), ctx.config.settings("ingest"),
+                               emotions, constraints)
+    ctx.say(f"phone {info['index']} /{info['phone']}/ in context {info['context']}, relative time {info['relative_time']:.2f}; "
+            f"unconstrained optimum {info['optimum']:.2f} uses node {info['optimal_node']}")
+    click.echo("rank\tnode\temotion\ttake\tcontext\tcontext_correct\ttime_correct_frame\tcost\textra_cost")
+    shown = [r for r in rows if r.context_correct or not context_only][:top]
+    for rank, r in enumerate(shown, 1):
+        click.echo(f"{rank}\t{r.node}\t{r.emotion}\t{r.take}\t{r.context}\t{'yes' if r.context_correct else 'no'}\t"
+                   f"{r.time_correct_frame:.2f}\t{r.cost:.2f}\t{r.extra:.2f}")
+
+
+@main.command()
 @click.argument("motion", type=EXISTING)
 @click.option("--mesh", type=EXISTING, required=True, help="Face mesh (.obj or .ply).")
 @click.option("--binding", type=EXISTING, required=True, help="CSV 'marker,vertex' binding markers to mesh vertices.")
