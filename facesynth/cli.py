@@ -315,6 +315,53 @@ def render(ctx: Context, anims, audios, view, compare, output: Path):
     ctx.say(f"rendered {s['frames']} frames ({s['seconds']:.2f} s of video, {s['frames'] / elapsed:.1f} frames/s) -> {output}")
 
 
+@main.command()
+@click.argument("db", type=EXISTING)
+@click.option("--heldout", type=EXISTING, required=True, help="The corpus.h5 holding the held-out takes.")
+@click.option("-o", "--output", type=PATH, required=True, help="Report folder (metrics.json, index.html, plots).")
+@stage
+def evaluate(ctx: Context, db: Path, heldout: Path, output: Path):
+    """Synthesize every held-out sentence and compare with its capture (Eq. 12-13, lips, emotion).
+
+    \b
+    Example:
+      facesynth evaluate db.h5 --heldout corpus.h5 -o report/
+    """
+    from .stages import evaluate as stage
+
+    s = stage.run(db, heldout, output, ctx.config.settings("evaluate"), ctx.config.settings("synthesize"),
+                  ctx.config.settings("normalize"), ctx.overwrite)
+    for method, m in s.items():
+        lips = f", bilabials closed {100 * m['lip_closure_rate']:.0f}%" if m.get("lip_closure_rate") is not None else ""
+        ctx.say(f"{method}: RMS {m['rms_mm']:.3f} mm, velocity RMS {m['velocity_rms_mm_s']:.1f} mm/s{lips}")
+    ctx.say(f"report -> {output}/index.html")
+
+
+@main.command()
+@click.argument("db", type=EXISTING)
+@click.option("--validation", type=EXISTING, required=True, help="The corpus.h5 with val (tuning) and test (report) takes.")
+@click.option("-o", "--output", type=PATH, required=True, help="Output TOML with the tuned [synthesize] weights.")
+@stage
+def tune(ctx: Context, db: Path, validation: Path, output: Path):
+    """Tune alpha1..alpha6 by cross-validation on the validation sentences (paper VI-D).
+
+    \b
+    Example:
+      facesynth tune db.h5 --validation corpus.h5 -o tuned.toml
+      facesynth synthesize db.h5 --phonemes X.TextGrid --config tuned.toml -o motion.h5
+    """
+    from .stages import tune as stage
+
+    s = stage.run(db, validation, output, ctx.config.settings("tune"), ctx.config.settings("synthesize"),
+                  ctx.config.settings("evaluate"), ctx.config.settings("normalize"), ctx.overwrite,
+                  progress_fn=lambda n, err: ctx.detail(f"evaluation {n}: validation error {err:.4f} mm^2"))
+    ctx.say(f"{s['evaluations']} evaluations in {s['seconds']:.1f} s on {s['validation_sentences']} validation sentences: "
+            f"error {s['validation_err_before']:.4f} -> {s['validation_err_after']:.4f} mm^2")
+    if "test_err_before" in s:
+        ctx.say(f"on {s['test_sentences']} test sentences not used for tuning: {s['test_err_before']:.4f} -> {s['test_err_after']:.4f} mm^2")
+    ctx.say("weights: " + ", ".join(f"{k}={v:.4g}" for k, v in s["alphas"].items()) + f" -> {output}")
+
+
 @main.group(cls=DefaultGroup)
 def isomap():
     """Phoneme-Isomaps (paper IV): build them, or pick a new frame from one.

@@ -100,6 +100,22 @@ class SynthesizeSettings:
 
 
 @dataclass(frozen=True)
+class EvaluateSettings:
+    split: str
+    lip_markers: tuple[str, ...]
+    closure_mm: float
+    plot_marker: str
+
+
+@dataclass(frozen=True)
+class TuneSettings:
+    starts: int
+    max_evaluations: int
+    seed: int
+    spread: float
+
+
+@dataclass(frozen=True)
 class DeformSettings:
     sigma: float
     distance_threshold: float
@@ -124,6 +140,8 @@ SECTIONS: dict[str, type] = {
     "isomap": IsomapSettings,
     "prune": PruneSettings,
     "synthesize": SynthesizeSettings,
+    "evaluate": EvaluateSettings,
+    "tune": TuneSettings,
     "deform": DeformSettings,
     "render": RenderSettings,
 }
@@ -132,6 +150,7 @@ _CHOICES = {
     ("synthesize", "search"): ("dp", "greedy"),
     ("synthesize", "silence_interpolation"): ("linear", "cubic", "cosine"),
     ("render", "view"): ("shaded", "markers", "side-by-side"),
+    ("evaluate", "split"): ("test", "val"),
 }
 
 S = TypeVar("S")

@@ -1,0 +1,66 @@
+import json
+
+import numpy as np
+import pytest
+from click.testing import CliRunner
+
+from facesynth.cli import main
+from facesynth.config import Config
+from facesynth.errors import InputError
+from facesynth.search.inputs import Utterance
+from facesynth.stages import evaluate, tune
+
+
+def test_report_has_numbers_per_method_and_plots(tiny_db, tiny_artifacts, tmp_path):
+    r = CliRunner().invoke(main, ["evaluate", str(tiny_db), "--heldout", str(tiny_artifacts["corpus"]), "-o", str(tmp_path / "rep")])
+    assert r.exit_code == 0, r.output
+    m = json.loads((tmp_path / "rep" / "metrics.json").read_text())
+    assert set(m) >= {"dp", "baseline", "meta"}
+    for method in ("dp", "baseline"):
+        overall = m[method]["overall"]
+        assert overall["sentences"] == 4 and overall["rms_mm"] > 0
+        assert overall["total_err_mm2"] == pytest.approx(sum(s["err_mm2"] for s in m[method]["per_sentence"]))
+        assert set(m[method]["per_emotion"]) == {"neutral", "happy", "angry", "sad"}
+    index = (tmp_path / "rep" / "index.html").read_text()
+    pngs = list((tmp_path / "rep").glob("*.png"))
+    assert len(pngs) == 4 and all(p.name in index for p in pngs)
+
+
+def test_metrics_worked_by_hand():
+    settings = Config.load().settings("evaluate")
+    names = ["ULI_C", "LLI_C", "X"]
+    truth = np.zeros((10, 3, 3))
+    truth[:, 1, 1] = -5.0  # lips 5 mm apart ...
+    truth[4:6, 1, 1] = 0.0  # ... closed on the /p/
+    syn = truth.copy()
+    syn[:, 2, 0] += 2.0  # one marker 2 mm off everywhere
+    utt = Utterance(["aa", "p", "aa"], np.array([0.0, 0.04, 0.06]), np.array([0.04, 0.06, 0.1]), ["neutral"] * 3)
+    m = evaluate.sentence_metrics(syn, truth, utt, 100.0, names, settings)
+    assert m["err_mm2"] == pytest.approx(4.0 / 3.0)  # Eq. 13: (2 mm)^2 on one of three markers
+    assert m["velocity_rms_mm_s"] == pytest.approx(0.0)
+    assert m["bilabials"] == 1 and m["lip_closure_rate"] == 1.0 and m["min_lip_gap_mm"] == 0.0
+
+
+def test_missing_split_and_markers_are_named(tiny_db, tiny_artifacts):
+    c = Config.load(None, ("evaluate.lip_markers=['NOPE', 'LLI_C']",))
+    with pytest.raises(InputError, match="marker 'NOPE' is not in the database"):
+        evaluate.evaluate(tiny_db, tiny_artifacts["corpus"], c.settings("evaluate"), c.settings("synthesize"), c.settings("normalize"))
+
+
+def test_tune_writes_weights_synthesize_accepts(tiny_db, tiny_artifacts, tmp_path):
+    c = Config.load(None, ("tune.starts=2", "tune.max_evaluations=8"))
+    out = tmp_path / "tuned.toml"
+    s = tune.run(tiny_db, tiny_artifacts["corpus"], out, c.settings("tune"), c.settings("synthesize"),
+                 c.settings("evaluate"), c.settings("normalize"))
+    assert s["validation_err_after"] <= s["validation_err_before"]  # the search starts from the current weights
+    assert "test_err_after" in s and s["test_sentences"] == 4
+    tuned = Config.load(out).settings("synthesize")
+    assert tuned.alpha1 == pytest.approx(s["alphas"]["alpha1"]) and 0 < tuned.alpha4 < 1
+    assert "validation error" in out.read_text()
+
+
+def test_vector_round_trip():
+    s = Config.load().settings("synthesize")
+    back = tune.from_vector(tune.to_vector(s), s)
+    for k in tune.ALPHAS:
+        assert getattr(back, k) == pytest.approx(getattr(s, k))
