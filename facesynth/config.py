@@ -79,6 +79,8 @@ class PruneSettings:
 @dataclass(frozen=True)
 class SynthesizeSettings:
     search: str
+    greedy_clusters: int
+    postprocess: str
     use_opencl: bool
     pnt: float
     alpha1: float
@@ -149,6 +151,7 @@ SECTIONS: dict[str, type] = {
 _CHOICES = {
     ("synthesize", "search"): ("dp", "greedy"),
     ("synthesize", "silence_interpolation"): ("linear", "cubic", "cosine"),
+    ("synthesize", "postprocess"): ("deng", "cao"),
     ("render", "view"): ("shaded", "markers", "side-by-side"),
     ("evaluate", "split"): ("test", "val"),
 }

@@ -75,8 +75,10 @@ def smooth_join(f: np.ndarray, w_left: float, w_right: float, lam: float) -> np.
 def concatenate(path: np.ndarray, phones: list[str], starts: np.ndarray, ends: np.ndarray,
                 node_start: np.ndarray, node_count: np.ndarray, node_pre: np.ndarray, node_phone: list[str],
                 coeffs: np.ndarray, rest: np.ndarray, fps: float, *, half_window: int, lam: float,
-                weight_of, interpolation: str = "linear") -> Concatenated:
-    """The whole VII-B chain up to (not including) Eq. 11. ``weight_of(phone)`` gives Table IV's factor."""
+                weight_of, interpolation: str = "linear", joins=None) -> Concatenated:
+    """The whole VII-B chain up to (not including) Eq. 11. ``weight_of(phone)`` gives Table IV's
+    factor. ``joins(out, ranges)``, if given, replaces Eq. 16 smoothing (e.g. Cao's blending
+    and low-pass, :mod:`facesynth.motion.cao`) and returns the mask of frames it changed."""
     ranges = frame_ranges(starts, ends, fps)
     total = ranges[-1][1]
     k = coeffs.shape[1]
@@ -90,7 +92,7 @@ def concatenate(path: np.ndarray, phones: list[str], starts: np.ndarray, ends: n
         node[a:b] = j
         step[a:b] = t
     smoothed = np.zeros(total, bool)
-    for t in range(len(path) - 1):
+    for t in range(len(path) - 1 if joins is None else 0):
         if phones[t] == PAU or phones[t + 1] == PAU or node_pre[path[t + 1]] == path[t]:
             continue  # captured neighbours need no smoothing; pauses are regenerated below
         join = ranges[t][1]
@@ -101,6 +103,8 @@ def concatenate(path: np.ndarray, phones: list[str], starts: np.ndarray, ends: n
         w_right = weight_of(node_phone[path[t + 1]])
         out[a:b] = smooth_join(out[a:b], w_left, w_right, lam)
         smoothed[a:b] = True
+    if joins is not None:
+        smoothed = joins(out, ranges)
     for t, (a, b) in enumerate(ranges):
         if phones[t] != PAU or b <= a:
             continue

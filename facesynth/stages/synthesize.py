@@ -85,12 +85,26 @@ def unseen_phones(utt: Utterance, db: Database) -> dict[str, str]:
     return out
 
 
+def greedy_search(db: Database, tc, utt: Utterance, steps: StepCosts, settings: SynthesizeSettings):
+    """Cao et al.'s GreedyMatching; returns a DpResult-like record with the Eq. 4 cost of its path."""
+    from ..search.dp import DpResult
+    from ..search.greedy import Greedy, anime_graph, cluster_graph, motion_features
+
+    if settings.greedy_clusters > 0:
+        features = motion_features(db.coeffs, db.nodes.frame_start, db.nodes.frame_count)
+        graph = cluster_graph(db.nodes.phone, db.nodes.emotion, db.nodes.suc, features, settings.greedy_clusters)
+    else:
+        graph = anime_graph(db.nodes.phone, db.nodes.emotion, db.nodes.suc)
+    result = Greedy(graph, db.nodes.viseme, db.nodes.emotion, tc, settings.alpha6 * settings.pnt).search(utt.phones, utt.emotions)
+    terms = path_terms(result.path, tc, steps)
+    cost = float(sum(v.astype(np.float64).sum() for v in terms.values()))
+    return DpResult(cost, result.path, np.zeros((0, 0), np.float32)), f"greedy ({'%d clusters' % settings.greedy_clusters if settings.greedy_clusters else 'unclustered'})"
+
+
 def search(tc, steps: StepCosts, settings: SynthesizeSettings):
-    """Run the configured search; returns (DpResult, device description)."""
+    """Run the DP; returns (DpResult, device description)."""
     from ..search.dp import dp_numpy, dp_opencl
 
-    if settings.search != "dp":
-        raise InputError(f"synthesize.search={settings.search!r} is not available in this version; use 'dp'.")
     if settings.use_opencl:
         from ..opencl import device_name
 
@@ -108,6 +122,31 @@ def table_iv_weight(settings: SynthesizeSettings):
     return weight
 
 
+def captured_runs(nodes: Nodes) -> list[slice]:
+    """Frames of each maximal run of captured-linked nodes (no pause, no pruned node inside)."""
+    runs = []
+    for k in np.nonzero(nodes.pre < 0)[0]:
+        last = k
+        while nodes.suc[last] >= 0:
+            last = nodes.suc[last]
+        runs.append(slice(int(nodes.frame_start[k]), int(nodes.frame_start[last] + nodes.frame_count[last])))
+    return runs
+
+
+def cao_joins(db: Database, path: np.ndarray, phones: list[str]):
+    """Cao et al.'s blending across jumps and learned low-pass (``synthesize.postprocess = "cao"``)."""
+    from ..motion.cao import blend_jumps, learned_cutoffs, lowpass
+
+    take_range = np.array([(db.takes.frames(t).start, db.takes.frames(t).stop) for t in db.nodes.take])
+
+    def joins(out: np.ndarray, ranges) -> np.ndarray:
+        changed = blend_jumps(out, ranges, path, phones, db.nodes.phone, db.nodes.frame_start, db.nodes.frame_count,
+                              db.nodes.pre, take_range, db.coeffs)
+        out[:] = lowpass(out, learned_cutoffs(db.coeffs, captured_runs(db.nodes), db.fps), db.fps)
+        return changed
+    return joins
+
+
 def synthesize(db: Database, utt: Utterance, constraints: dict[int, int], settings: SynthesizeSettings, tc=None) -> dict:
     """Search and post-process. Returns a dict of everything ``motion.h5`` stores."""
     timings = {}
@@ -117,7 +156,12 @@ def synthesize(db: Database, utt: Utterance, constraints: dict[int, int], settin
     steps = step_costs(utt.phones, utt.emotions, db.nodes.phone, db.nodes.emotion, constraints, settings)
     timings["costs_s"] = time.perf_counter() - t0
     t0 = time.perf_counter()
-    result, device = search(tc, steps, settings)
+    if settings.search == "greedy":
+        if constraints:
+            raise InputError("motion-node constraints need the DP search (Eq. 10); drop --constraints or use --search dp.")
+        result, device = greedy_search(db, tc, utt, steps, settings)
+    else:
+        result, device = search(tc, steps, settings)
     timings["search_s"] = time.perf_counter() - t0
     path = result.path
     for t, node in constraints.items():  # Eq. 10 guarantees this; a failure is a bug
@@ -128,6 +172,7 @@ def synthesize(db: Database, utt: Utterance, constraints: dict[int, int], settin
         path, utt.phones, utt.starts, utt.ends, db.nodes.frame_start, db.nodes.frame_count, db.nodes.pre,
         db.nodes.phone, db.coeffs, rest, db.fps, half_window=settings.smoothing_half_window,
         lam=settings.smoothing_lambda, weight_of=table_iv_weight(settings), interpolation=settings.silence_interpolation,
+        joins=cao_joins(db, path, utt.phones) if settings.postprocess == "cao" else None,
     )
     markers = db.model.reconstruct(cat.coeffs)
     joins = sum(1 for t in range(len(path) - 1)
