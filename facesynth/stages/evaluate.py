@@ -116,7 +116,8 @@ def sentence_metrics(syn: np.ndarray, truth: np.ndarray, utt: Utterance, fps: fl
                      settings: EvaluateSettings) -> dict:
     n = min(len(syn), len(truth))
     syn, truth = syn[:n].astype(np.float64), truth[:n].astype(np.float64)
-    err = float(np.mean(np.sum((syn - truth) ** 2, axis=2)))  # Eq. 13
+    # Eq. 13 over the marker samples the capture has (a long gap leaves NaN in the truth).
+    err = float(np.nanmean(np.sum((syn - truth) ** 2, axis=2)))
     vel = (np.diff(syn, axis=0) - np.diff(truth, axis=0)) * fps
     gaps_syn = lip_gaps(syn, names, settings.lip_markers)
     gaps_true = lip_gaps(truth, names, settings.lip_markers)
@@ -124,12 +125,12 @@ def sentence_metrics(syn: np.ndarray, truth: np.ndarray, utt: Utterance, fps: fl
     for a, b, p in zip(utt.starts, utt.ends, utt.phones):
         if p in BILABIALS:
             fa, fb = int(round(a * fps)), min(int(round(b * fps)) + 1, n)
-            if fb > fa:
-                closures.append((gaps_syn[fa:fb].min(), gaps_true[fa:fb].min()))
+            if fb > fa and not np.isnan(gaps_true[fa:fb]).all():
+                closures.append((gaps_syn[fa:fb].min(), np.nanmin(gaps_true[fa:fb])))
     closures = np.array(closures).reshape(-1, 2)
     return {
         "frames": n, "err_mm2": err, "rms_mm": float(np.sqrt(err)),
-        "velocity_rms_mm_s": float(np.sqrt(np.mean(np.sum(vel**2, axis=2)))),
+        "velocity_rms_mm_s": float(np.sqrt(np.nanmean(np.sum(vel**2, axis=2)))),
         "bilabials": len(closures),
         "lip_closure_rate": float((closures[:, 0] < settings.closure_mm).mean()) if len(closures) else None,
         "lip_closure_rate_capture": float((closures[:, 1] < settings.closure_mm).mean()) if len(closures) else None,

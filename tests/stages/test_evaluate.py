@@ -64,3 +64,14 @@ def test_vector_round_trip():
     back = tune.from_vector(tune.to_vector(s), s)
     for k in tune.ALPHAS:
         assert getattr(back, k) == pytest.approx(getattr(s, k))
+
+
+def test_gaps_in_the_capture_are_left_out_of_the_error():
+    settings = Config.load().settings("evaluate")
+    names = ["ULI_C", "LLI_C", "X"]
+    truth = np.zeros((6, 3, 3))
+    syn = truth + 1.0
+    truth[2:4, 2] = np.nan  # a long gap the normalizer could not fill
+    utt = Utterance(["aa"], np.array([0.0]), np.array([0.06]), ["neutral"])
+    m = evaluate.sentence_metrics(syn, truth, utt, 100.0, names, settings)
+    assert m["err_mm2"] == pytest.approx(3.0)  # every seen marker is off by (1, 1, 1) mm; the gap is skipped, not NaN
