@@ -81,6 +81,28 @@ class PanelMatrix:
         return self.panels[j // self.panel, i, j % self.panel]
 
 
+def dp_bounded(tc: np.ndarray, obs: np.ndarray, upper: float) -> tuple[DpResult, np.ndarray]:
+    """The reference DP pruned by an upper bound on the optimal cost (e.g. greedy's path
+    cost under Eq. 4): a state whose accumulated cost plus the least possible remaining cost
+    (the sum of each later step's smallest observation cost; TC >= 0) exceeds ``upper`` can
+    lie on no optimal path, so its row of TC is not read. Exact: same cost and path as
+    :func:`dp_numpy` whenever ``upper`` >= the optimum. Returns the result and the fraction
+    of states kept active at each step."""
+    tc = np.asarray(tc, np.float32)
+    obs = np.asarray(obs, np.float32)
+    t_count, n = obs.shape
+    remaining = np.concatenate([np.cumsum(obs.min(axis=1)[::-1], dtype=np.float64)[::-1][1:], [0.0]])
+    phi = np.full((t_count, n), np.inf, np.float32)
+    phi[0] = obs[0]
+    active_fraction = np.ones(t_count)
+    for t in range(1, t_count):
+        active = np.nonzero(phi[t - 1].astype(np.float64) + remaining[t - 1] <= upper)[0]
+        active_fraction[t - 1] = len(active) / n
+        phi[t] = (phi[t - 1][active][:, None] + tc[active]).min(axis=0) + obs[t]
+    path = backtrack(phi, lambda j: tc[:, j])
+    return DpResult(float(phi[-1, path[-1]]), path, phi), active_fraction
+
+
 def to_panels(tc: np.ndarray, panel: int = PANEL) -> np.ndarray:
     """Panel-major copy of TC: (n_panels, N, panel), columns padded with +inf."""
     return PanelMatrix.from_matrix(tc, panel).panels

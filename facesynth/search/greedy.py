@@ -249,11 +249,12 @@ class Greedy:
 def pq_matching(greedy: Greedy, phones: list[str], emotions: list[str], h: int) -> GreedyResult:
     """Cao's PQ-Matching(h) (their Algorithm 1): in windows of h spoken phones, a
     best-first (priority-queue) branch-and-bound search for the fewest jumps, then the
-    lowest cost; windows are concatenated. Unclustered graph."""
+    lowest cost; windows are concatenated. Works on either graph."""
     g = greedy.g
+    follows_of = [set(x.tolist()) for x in g.successors]
     animes = np.full(len(phones), -1, np.int64)
     spoken = [t for t, p in enumerate(phones) if p != PAU]
-    prev = -1  # the node before the window, and whether it directly precedes it
+    prev = -1  # the anime before the window
     i = 0
     while i < len(spoken):
         window = spoken[i : i + h]
@@ -261,9 +262,9 @@ def pq_matching(greedy: Greedy, phones: list[str], emotions: list[str], h: int) 
         emo = [greedy.emotion_names.get(emotions[t], -1) for t in window]
         joined = prev >= 0 and window[0] - 1 == spoken[i - 1]
         heap: list = []
-        first_tc = tc_values(greedy.tc, prev, g.node[cands[0]]) if prev >= 0 else np.zeros(len(cands[0]))
+        first_tc = tc_values(greedy.tc, int(g.node[prev]), g.node[cands[0]]) if prev >= 0 else np.zeros(len(cands[0]))
         for a, tc in zip(cands[0], first_tc):
-            captured = joined and g.suc[prev] == g.node[a]
+            captured = joined and int(a) in follows_of[prev]
             heap.append((int(joined and not captured), (0.0 if captured else float(tc)) + greedy.penalty * (g.emotion[a] != emo[0]), 0, int(a), None))
         heapq.heapify(heap)
         closed: dict[tuple[int, int], tuple | None] = {}
@@ -282,7 +283,7 @@ def pq_matching(greedy: Greedy, phones: list[str], emotions: list[str], h: int) 
             for b, tc in zip(nxt, steps):
                 if (depth + 1, int(b)) in closed:
                     continue
-                captured = follows and g.suc[a] == b
+                captured = follows and int(b) in follows_of[a]
                 heapq.heappush(heap, (jumps + int(follows and not captured),
                                       cost + (0.0 if captured else float(tc)) + greedy.penalty * (g.emotion[b] != emo[depth + 1]),
                                       depth + 1, int(b), (depth, a)))
@@ -291,6 +292,6 @@ def pq_matching(greedy: Greedy, phones: list[str], emotions: list[str], h: int) 
             chain.append(state[1])
             state = closed[state]
         animes[window] = chain[::-1]
-        prev = int(g.node[animes[window[-1]]])
+        prev = int(animes[window[-1]])
         i += h
     return greedy.finish(phones, animes)

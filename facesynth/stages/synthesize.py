@@ -166,7 +166,12 @@ def synthesize(db: Database, utt: Utterance, constraints: dict[int, int], settin
     path = result.path
     for t, node in constraints.items():  # Eq. 10 guarantees this; a failure is a bug
         assert path[t] == node, f"constraint at step {t} not met"
-    terms = path_terms(path, tc, steps)
+    return {"path": path, "cost": result.cost, "terms": path_terms(path, tc, steps), "device": device,
+            "timings": timings, **render_path(db, utt, path, settings)}
+
+
+def render_path(db: Database, utt: Utterance, path: np.ndarray, settings: SynthesizeSettings) -> dict:
+    """VII-B for a given node path: concatenate, smooth, regenerate pauses, Eq. 11, down-sample."""
     rest = db.model.project(db.reference[None])[0]
     cat = concatenate(
         path, utt.phones, utt.starts, utt.ends, db.nodes.frame_start, db.nodes.frame_count, db.nodes.pre,
@@ -178,11 +183,8 @@ def synthesize(db: Database, utt: Utterance, constraints: dict[int, int], settin
     joins = sum(1 for t in range(len(path) - 1)
                 if utt.phones[t] != PAU and utt.phones[t + 1] != PAU and db.nodes.pre[path[t + 1]] != path[t])
     take = np.where(cat.node >= 0, db.nodes.take[np.maximum(cat.node, 0)], -1)
-    return {
-        "path": path, "cost": result.cost, "terms": terms, "device": device, "concatenated": cat,
-        "markers_capture": markers, "markers": downsample(markers, db.fps, settings.output_fps),
-        "non_captured_joins": joins, "take": take, "timings": timings,
-    }
+    return {"concatenated": cat, "markers_capture": markers, "markers": downsample(markers, db.fps, settings.output_fps),
+            "non_captured_joins": joins, "take": take}
 
 
 def prepare(db: Database, phones_path: Path | None, emotions_path: Path | None, constraints_path: Path | None,

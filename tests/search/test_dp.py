@@ -80,3 +80,16 @@ def test_real_database_with_emotions_and_constraints(tiny_db, tiny_corpus, held_
         assert ref.path[t] == node
     if with_constraints:
         assert constraints  # the take shares phones with the database
+
+
+def test_bounded_dp_is_exact_and_prunes_with_a_tight_bound():
+    from facesynth.search.dp import dp_bounded
+
+    tc, obs = _random(300, 12, seed=11)
+    ref = dp_numpy(tc, obs)
+    for slack in (0.0, 50.0, 1e6):
+        res, active = dp_bounded(tc, obs, ref.cost + slack)
+        assert res.cost == ref.cost and res.path.tolist() == ref.path.tolist()
+    _, tight = dp_bounded(tc, obs, ref.cost)
+    _, loose = dp_bounded(tc, obs, 1e9)
+    assert tight.mean() < loose.mean() == 1.0
