@@ -65,7 +65,8 @@ def align_samples(samples: np.ndarray, rate: int, text: str, *, extra: dict | No
 
 
 def align_words(samples: np.ndarray, rate: int, text: str, *, extra: dict | None = None,
-                settings: AlignSettings | None = None, where: str = "audio") -> tuple[list[Segment], list[Segment]]:
+                settings: AlignSettings | None = None, where: str = "audio",
+                retry_tail: bool = True) -> tuple[list[Segment], list[Segment]]:
     """Like :func:`align_samples`, also returning the word segments."""
     import pocketsphinx
 
@@ -113,13 +114,30 @@ def align_words(samples: np.ndarray, rate: int, text: str, *, extra: dict | None
         pron = _stressed(name, tuple(p.name for p in phones), extra)
         for p, label in zip(phones, pron):
             segments.append(Segment(p.start * frame, (p.start + p.duration) * frame, to_festival(label) or PAU))
-    if [w.label for w in word_segments] != words:
-        lost = [w for w in words if w not in {s.label for s in word_segments}]
+    duration = len(audio) / settings.sample_rate
+    placed = [w.label for w in word_segments]
+    if placed != words:
+        # The search sometimes stops short of the end, calling the last words silence. If the
+        # words it placed are a prefix, align the rest to the audio after them, once.
+        rest = words[len(placed):]
+        cut = word_segments[-1].end if word_segments else 0.0
+        if placed == words[: len(placed)] and placed and retry_tail:
+            start = int(round(cut * settings.sample_rate))
+            try:
+                tail, tail_words = align_words(audio[start:], settings.sample_rate, " ".join(rest), extra=extra,
+                                               settings=settings, where=where, retry_tail=False)
+            except InputError:
+                tail = None
+            if tail is not None:
+                kept = [s for s in segments if s.end <= cut + 1e-6]
+                shifted = [Segment(s.start + cut, s.end + cut, s.label) for s in tail]
+                moved = [Segment(w.start + cut, w.end + cut, w.label) for w in tail_words]
+                return _tile(kept + shifted, duration), word_segments + moved
+        lost = [w for w in words if w not in set(placed)] or rest
         raise InputError(
             f"{where}: forced alignment could not place {', '.join(repr(w) for w in lost) or 'every word'}; "
             "check that the text matches the speech."
         )
-    duration = len(audio) / settings.sample_rate
     return _tile(segments, duration), word_segments
 
 
