@@ -101,18 +101,33 @@ def map_phones(labels, where: str, times=None) -> list[str]:
 
 
 @lru_cache(maxsize=1)
+def _cmudict_lines() -> list[str]:
+    data = resources.files("facesynth").joinpath("data/cmudict.dict.gz").read_bytes()
+    return gzip.decompress(data).decode("utf-8").splitlines()
+
+
+def _parse(lines, wanted: set[str] | None) -> dict[str, tuple[tuple[str, ...], ...]]:
+    words: dict[str, list[tuple[str, ...]]] = {}
+    for line in lines:
+        head = line.split(" ", 1)[0]
+        word = head.split("(", 1)[0] if head.endswith(")") else head
+        if wanted is not None and word not in wanted:
+            continue
+        body = line.split("#", 1)[0].split()
+        if len(body) > 1:
+            words.setdefault(word, []).append(tuple(body[1:]))
+    return {w: tuple(p) for w, p in words.items()}
+
+
+@lru_cache(maxsize=1)
 def cmudict() -> dict[str, tuple[tuple[str, ...], ...]]:
     """The CMU Pronouncing Dictionary (with stress digits): word -> pronunciations.
 
     Shipped with the package (BSD licence, ``facesynth/data/cmudict.LICENSE``).
     """
-    data = resources.files("facesynth").joinpath("data/cmudict.dict.gz").read_bytes()
-    words: dict[str, list[tuple[str, ...]]] = {}
-    for line in gzip.decompress(data).decode("utf-8").splitlines():
-        line = line.split("#", 1)[0].strip()
-        if not line:
-            continue
-        word, *phones = line.split()
-        word = re.sub(r"\(\d+\)$", "", word)
-        words.setdefault(word, []).append(tuple(phones))
-    return {w: tuple(p) for w, p in words.items()}
+    return _parse(_cmudict_lines(), None)
+
+
+def pronunciations(words) -> dict[str, tuple[tuple[str, ...], ...]]:
+    """The CMU dictionary entries of just these words (much faster than the whole)."""
+    return _parse(_cmudict_lines(), set(words))

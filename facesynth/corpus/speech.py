@@ -17,7 +17,7 @@ from importlib import resources
 import numpy as np
 from scipy.signal import butter, lfilter, sosfilt
 
-from ..phonemes import PAU, VOWELS, cmudict, to_festival
+from ..phonemes import PAU, VOWELS, pronunciations, to_festival
 from .face import P, PARAMS
 
 EMOTIONS = ("neutral", "happy", "angry", "sad")
@@ -111,7 +111,7 @@ def lexicon() -> dict[str, tuple[tuple[str, ...], tuple[int, ...]]]:
     """Word -> (Festival phones, stress per phone: 1 stressed vowel, 0 otherwise)."""
     text = resources.files("facesynth.corpus").joinpath("words.txt").read_text("utf-8")
     words = [w for line in text.splitlines() if not line.startswith("#") for w in line.split()]
-    cmu = cmudict()
+    cmu = pronunciations(words)
     out = {}
     for word in words:
         if word not in cmu:

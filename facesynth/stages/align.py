@@ -17,7 +17,7 @@ from ..config import AlignSettings
 from ..errors import InputError
 from ..formats.audio import read_audio, resample
 from ..formats.labels import Segment, write_textgrid
-from ..phonemes import PAU, cmudict, to_festival
+from ..phonemes import PAU, pronunciations, to_festival
 
 _WORD = re.compile(r"[a-z0-9']+")
 
@@ -49,9 +49,9 @@ def _strip(phones) -> tuple[str, ...]:
     return tuple(re.sub(r"\d", "", p).upper() for p in phones)
 
 
-def _stressed(word: str, sphinx_phones: tuple[str, ...], extra: dict) -> tuple[str, ...]:
+def _stressed(word: str, sphinx_phones: tuple[str, ...], extra: dict, stressed: dict) -> tuple[str, ...]:
     """The stressed pronunciation of ``word`` whose phones match what was aligned."""
-    for pron in list(extra.get(word, [])) + list(cmudict().get(word, ())):
+    for pron in list(extra.get(word, [])) + list(stressed.get(word, ())):
         if _strip(pron) == sphinx_phones:
             return tuple(pron)
     return sphinx_phones
@@ -101,6 +101,7 @@ def align_words(samples: np.ndarray, rate: int, text: str, *, extra: dict | None
     if alignment is None:
         raise InputError(f"{where}: forced alignment found no path; check that the text matches the speech.")
     frame = 1.0 / settings.frame_rate
+    stressed = pronunciations(words)
     segments: list[Segment] = []
     word_segments: list[Segment] = []
     for word in alignment:
@@ -111,7 +112,7 @@ def align_words(samples: np.ndarray, rate: int, text: str, *, extra: dict | None
             segments.append(Segment(start, end, PAU))
             continue
         word_segments.append(Segment(start, end, name))
-        pron = _stressed(name, tuple(p.name for p in phones), extra)
+        pron = _stressed(name, tuple(p.name for p in phones), extra, stressed)
         for p, label in zip(phones, pron):
             segments.append(Segment(p.start * frame, (p.start + p.duration) * frame, to_festival(label) or PAU))
     duration = len(audio) / settings.sample_rate
