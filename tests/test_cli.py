@@ -1,8 +1,6 @@
 """The command line end to end on the tiny corpus, through click's CliRunner."""
 
 import h5py
-import numpy as np
-import pytest
 from click.testing import CliRunner
 
 from facesynth.cli import main

@@ -83,7 +83,7 @@ def apply_emotions(utt: Utterance, path: Path, emotions, aliases) -> None:
                 raise InputError(f"{path}, line {n}: the span ends at or before it starts.")
             spans.append((start, end, label, f"{path}, line {n}"))
     spans.sort()
-    for (a0, a1, _, wa), (b0, _, _, wb) in zip(spans, spans[1:]):
+    for (_, a1, _, wa), (b0, _, _, wb) in zip(spans, spans[1:]):
         if b0 < a1 - 1e-9:
             raise InputError(f"{wb}: emotion span overlaps the one at {wa.split(', ', 1)[1]}; make spans disjoint.")
     names = [(s, e, _emotion_name(lab, emotions, aliases, where)) for s, e, lab, where in spans]

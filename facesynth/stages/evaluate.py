@@ -27,10 +27,10 @@ from pathlib import Path
 
 import numpy as np
 
-from ..artifacts import open_artifact, read, read_strings
-from ..config import EvaluateSettings, IngestSettings, NormalizeSettings, SynthesizeSettings
+from ..artifacts import open_artifact, read_strings
+from ..config import EvaluateSettings, NormalizeSettings, SynthesizeSettings
 from ..errors import InputError
-from ..motion.postprocess import frame_ranges, interpolate
+from ..motion.postprocess import frame_ranges
 from ..phonemes import PAU, viseme
 from ..progress import progress
 from ..search.inputs import Utterance

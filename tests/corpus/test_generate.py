@@ -3,7 +3,6 @@
 import hashlib
 
 import numpy as np
-import pytest
 
 from facesynth.corpus.face import LIP_GAP_MARKERS, P, Rig, build_face_model
 from facesynth.corpus.generate import generate

@@ -2,11 +2,9 @@
 
 import itertools
 
-import h5py
 import numpy as np
 import pytest
 
-from facesynth.search import dp as dp_module
 from facesynth.search.costs import step_costs
 from facesynth.search.dp import OpenCLDp, dp_numpy, dp_opencl
 

@@ -4,7 +4,6 @@ never above greedy's, PQ-Matching over the whole sentence agrees, ties follow em
 import numpy as np
 import pytest
 
-from facesynth.config import Config
 from facesynth.motion.cao import blend_jumps, learned_cutoffs, lowpass
 from facesynth.phonemes import PAU
 from facesynth.search.costs import path_terms, step_costs

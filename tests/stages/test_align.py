@@ -1,9 +1,8 @@
 import numpy as np
 import pytest
 
-from facesynth.corpus.speech import lexicon
 from facesynth.errors import InputError
-from facesynth.formats.audio import read_audio, write_wav
+from facesynth.formats.audio import read_audio
 from facesynth.formats.labels import read_phone_segments, read_textgrid
 from facesynth.stages import align
 

@@ -4,7 +4,6 @@ import pytest
 from click.testing import CliRunner
 
 from facesynth.cli import main
-from facesynth.config import Config
 from facesynth.errors import InputError
 from facesynth.stages import prune
 from facesynth.stages.build_db import Nodes
