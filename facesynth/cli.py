@@ -338,6 +338,28 @@ def evaluate(ctx: Context, db: Path, heldout: Path, output: Path):
 
 
 @main.command()
+@click.argument("corpus", type=EXISTING)
+@click.option("--db", "db_path", type=EXISTING, required=True, help="The database whose head frame and rest pose to use.")
+@click.option("--take", required=True, help="The take to export (e.g. a held-out one).")
+@click.option("-o", "--output", type=PATH, required=True, help="Output motion.h5.")
+@stage
+def capture(ctx: Context, corpus: Path, db_path: Path, take: str, output: Path):
+    """Export a captured take as a motion artifact: the ground truth to render beside a synthesis.
+
+    \b
+    Example:
+      facesynth capture corpus.h5 --db db.h5 --take sad_s017 -o truth.h5
+      facesynth deform truth.h5 --mesh corpus/face.obj --binding corpus/markers.csv -o truth_anim.h5
+      facesynth render anim.h5 --audio corpus/audio/sad_s017.wav --view side-by-side --compare truth_anim.h5 -o cmp.avi
+    """
+    from .stages import evaluate as stage
+
+    s = stage.capture(db_path, corpus, take, output, ctx.config.settings("normalize"),
+                      ctx.config.settings("synthesize").output_fps, ctx.overwrite)
+    ctx.say(f"exported take {s['take']} ({s['frames']} frames) -> {output}")
+
+
+@main.command()
 @click.argument("db", type=EXISTING)
 @click.option("--validation", type=EXISTING, required=True, help="The corpus.h5 with val (tuning) and test (report) takes.")
 @click.option("-o", "--output", type=PATH, required=True, help="Output TOML with the tuned [synthesize] weights.")

@@ -247,7 +247,7 @@ def run(pca_path: Path, out: Path, settings: BuildDbSettings, overwrite: bool = 
         with write_artifact(out, "motiondb", config=settings_json(settings), inputs=[pca_path], overwrite=overwrite) as g:
             copy_tables(f, g)
             write_pca(g, model)
-            for key in ("markers", "reference"):
+            for key in ("markers", "reference", "head_rotation", "head_translation"):
                 f.copy(f[key], g, name=key)
             c = g.create_dataset("coefficients", data=coeffs)
             c.attrs["fps"] = fps

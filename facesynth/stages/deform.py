@@ -10,7 +10,8 @@ stored in the artifact as a sparse matrix.
 
 Marker motion is the displacement from the database's neutral rest pose; a similarity
 transform (rotation, uniform scale, translation) fitted from the rest pose to the bound
-vertices carries it into the mesh's frame and units.
+vertices carries it into the mesh's frame and units. With ``apply_head_motion`` the
+motion's rigid head motion is put back through the same transform.
 """
 
 from __future__ import annotations
@@ -101,14 +102,21 @@ def bind(vertices: np.ndarray, faces: np.ndarray, binding: dict[str, int], motio
     return Rig(vertices, faces, names, sources, weights, unreached)
 
 
-def animate(rig: Rig, markers: np.ndarray, marker_names: list[str], reference: np.ndarray) -> tuple[np.ndarray, dict]:
-    """Vertices (T, V, 3) float32 for marker frames (T, M, 3) mm. Also returns the fit report."""
+def animate(rig: Rig, markers: np.ndarray, marker_names: list[str], reference: np.ndarray,
+            head: tuple[np.ndarray, np.ndarray] | None = None) -> tuple[np.ndarray, dict]:
+    """Vertices (T, V, 3) float32 for marker frames (T, M, 3) mm, optionally moved by a head
+    motion (rotations (T, 3, 3), translations (T, 3) mm in the marker frame). Also returns
+    the fit report."""
+    from ..motion.head import apply
+
     cols = np.array([marker_names.index(m) for m in rig.markers])
-    s, r, _, residual = similarity_fit(reference[cols].astype(np.float64), rig.rest[rig.vertex_of])
+    s, r, offset, residual = similarity_fit(reference[cols].astype(np.float64), rig.rest[rig.vertex_of])
     motion = (markers[:, cols] - reference[cols]) @ (s * r).T  # (T, K, 3) in mesh units
     out = np.empty((len(markers),) + rig.rest.shape, np.float32)
     for t in range(len(markers)):
         out[t] = rig.rest + rig.weights @ motion[t]
+        if head is not None:
+            out[t] = apply(out[t], head[0][t], head[1][t], s, r, offset)
     return out, {"scale": s, "fit_rms": residual}
 
 
@@ -121,11 +129,15 @@ def run(motion: Path, mesh: Path, binding_path: Path, out: Path, settings: Defor
         fps = float(f["markers"].attrs["fps"])
         names = read_strings(f, "marker_names")
         reference = read(f, "reference")
-        ground_truth = read(f, "ground_truth") if "ground_truth" in f else None
+        head = None
+        if settings.apply_head_motion:
+            if "head_rotation" not in f:
+                raise InputError(f"{motion}: no head motion to put back; set deform.apply_head_motion=false.")
+            head = (read(f, "head_rotation"), read(f, "head_translation"))
     vertices, faces = read_mesh(mesh)
     binding = read_binding(binding_path)
     rig = bind(vertices, faces, binding, names, settings, str(mesh), str(binding_path))
-    frames, fit = animate(rig, markers, names, reference)
+    frames, fit = animate(rig, markers, names, reference, head)
     with write_artifact(out, "meshanim", config=settings_json(settings), inputs=[motion, mesh, binding_path], overwrite=overwrite) as g:
         v = g.create_dataset("vertices", data=frames, chunks=(1,) + frames.shape[1:])
         v.attrs.update(fps=fps, units="mesh units")
@@ -141,8 +153,5 @@ def run(motion: Path, mesh: Path, binding_path: Path, out: Path, settings: Defor
         m = g.create_dataset("markers", data=markers)
         m.attrs.update(fps=fps, units="mm")
         write_strings(g, "marker_names", names)
-        if ground_truth is not None:
-            gt_frames, _ = animate(rig, ground_truth, names, reference)
-            g.create_dataset("ground_truth_vertices", data=gt_frames, chunks=(1,) + gt_frames.shape[1:])
         g.attrs["fit_rms"] = fit["fit_rms"]
     return {"frames": len(frames), "vertices": len(vertices), "unreached": rig.unreached, **fit}

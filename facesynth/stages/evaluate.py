@@ -49,24 +49,34 @@ class Sentence:
     truth: np.ndarray  # (T, M, 3) mm, head frame, capture rate
 
 
+def normalized_take(f, i: int, takes: Takes, db: Database, settings: NormalizeSettings):
+    """Take i of an open corpus, gaps filled and aligned to the database's reference frame
+    (Eq. 1-2). Returns markers (T, M, 3), rotations (T, 3, 3), translations (T, 3)."""
+    names = db.marker_names
+    origin = int(np.argmin(np.linalg.norm(db.reference, axis=1)))
+    rigid = np.array([names.index(n) for n in settings.rigid_markers]) if settings.rigid_markers else np.arange(len(names))
+    raw = f["markers"][takes.frames(i)].astype(np.float64)
+    for m in range(raw.shape[1]):
+        raw[:, m], _ = fill_gaps(raw[:, m], settings.max_gap_frames)
+    return rigid_align(raw, db.reference.astype(np.float64), origin, rigid)
+
+
+def _check_markers(corpus: Path, f, db: Database) -> None:
+    if read_strings(f, "marker_names") != db.marker_names:
+        raise InputError(f"{corpus}: its markers differ from the database's; use the corpus the database was built from.")
+
+
 def heldout(corpus: Path, db: Database, split: str, normalize_settings: NormalizeSettings) -> list[Sentence]:
     """The corpus's held-out takes with their phones and normalized capture."""
     with open_artifact(corpus, "corpus") as f:
         takes, phones = Takes.read(f), Phones.read(f)
-        names = read_strings(f, "marker_names")
-        if names != db.marker_names:
-            raise InputError(f"{corpus}: its markers differ from the database's; evaluate with the corpus the database was built from.")
+        _check_markers(corpus, f, db)
         rows = [i for i in range(len(takes)) if takes.split[i] == split]
         if not rows:
             raise InputError(f"{corpus}: no take has split '{split}'; mark held-out takes in the manifest's split column.")
-        origin = int(np.argmin(np.linalg.norm(db.reference, axis=1)))
-        rigid = np.array([names.index(n) for n in normalize_settings.rigid_markers]) if normalize_settings.rigid_markers else np.arange(len(names))
         out = []
         for i in rows:
-            raw = f["markers"][takes.frames(i)].astype(np.float64)
-            for m in range(raw.shape[1]):
-                raw[:, m], _ = fill_gaps(raw[:, m], normalize_settings.max_gap_frames)
-            truth, _, _ = rigid_align(raw, db.reference.astype(np.float64), origin, rigid)
+            truth, _, _ = normalized_take(f, i, takes, db, normalize_settings)
             seg = np.nonzero(phones.take == i)[0]
             utt = Utterance([phones.phone[r] for r in seg], phones.start[seg], phones.end[seg], [takes.emotion[i]] * len(seg))
             out.append(Sentence(takes.name[i], takes.emotion[i], _merge_pauses(utt), truth.astype(np.float32)))
@@ -252,6 +262,37 @@ def write_report(folder: Path, metrics: dict, images: list[str], meta: dict) -> 
     parts.append(f"<h2>Lower-lip marker {html.escape(meta['plot_marker'])} (paper Figs. 15-16)</h2>")
     parts += [f"<p><img src='{html.escape(name)}'></p>" for name in images]
     (folder / "index.html").write_text("\n".join(parts), encoding="utf-8")
+
+
+def capture(db_path: Path, corpus: Path, take: str, out: Path, normalize_settings: NormalizeSettings,
+            output_fps: float, overwrite: bool = False) -> dict:
+    """Write a captured take as a ``motion`` artifact in the database's head frame (attribute
+    ``source = "capture"``, no search path): ground truth to deform and render beside a synthesis."""
+    from ..artifacts import check_output, write_artifact
+    from ..motion.head import relative_to_take
+    from ..motion.postprocess import downsample
+    from .synthesize import write_head_and_markers
+
+    check_output(out, overwrite)
+    db = load_database(db_path)
+    with open_artifact(corpus, "corpus") as f:
+        takes = Takes.read(f)
+        _check_markers(corpus, f, db)
+        if take not in takes.name:
+            raise InputError(f"{corpus}: no take {take!r}; it has {', '.join(takes.name[:5])}...")
+        i = takes.index(take)
+        markers, rotations, translations = normalized_take(f, i, takes, db, normalize_settings)
+    rel_r, rel_t = relative_to_take(rotations, translations, [slice(0, len(markers))])
+    with write_artifact(out, "motion", config="{}", inputs=[db_path, corpus], overwrite=overwrite) as g:
+        g.attrs["source"] = "capture"
+        g.attrs["take"] = take
+        m = g.create_dataset("markers", data=downsample(markers.astype(np.float32), db.fps, output_fps))
+        m.attrs.update(units="mm", fps=output_fps)
+        mc = g.create_dataset("markers_capture", data=markers.astype(np.float32))
+        mc.attrs.update(units="mm", fps=db.fps)
+        write_head_and_markers(g, db.marker_names, db.reference, downsample(rel_r, db.fps, output_fps),
+                               downsample(rel_t, db.fps, output_fps), output_fps)
+    return {"frames": int(np.ceil(len(markers) * output_fps / db.fps)), "take": take}
 
 
 def run(db_path: Path, corpus: Path, out_dir: Path, settings: EvaluateSettings, synth: SynthesizeSettings,

@@ -162,7 +162,7 @@ def prune(db_path: Path, out: Path, remove: list[int], reasons: list[str], setti
         with write_artifact(out, "motiondb", config=settings_json(settings), inputs=[db_path], overwrite=overwrite) as g:
             copy_tables(f, g)
             write_pca(g, read_pca(f))
-            for key in ("coefficients", "markers", "reference"):
+            for key in ("coefficients", "markers", "reference", "head_rotation", "head_translation"):
                 if key in f:
                     f.copy(f[key], g, name=key)
             kept.write(g)

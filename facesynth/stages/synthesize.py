@@ -22,6 +22,7 @@ from ..phonemes import PAU, viseme
 from ..search.costs import StepCosts, path_terms, step_costs, transition_matrix, transition_rows
 from ..search.dp import PanelMatrix
 from ..search.inputs import Utterance, apply_emotions, read_constraints, read_utterance
+from ..motion.head import follow_sources, relative_to_take
 from ..motion.postprocess import concatenate, downsample
 from ..tables import Takes
 from .build_db import Nodes
@@ -40,6 +41,8 @@ class Database:
     takes: Takes
     fps: float
     path: Path
+    head_rotation: np.ndarray     # (F, 3, 3) per database frame, relative to its take's mean pose
+    head_translation: np.ndarray  # (F, 3) mm, likewise
 
     def transition(self, settings: SynthesizeSettings) -> np.ndarray:
         """The full (N, N) TC matrix of Table I."""
@@ -67,9 +70,13 @@ def load_database(path: Path) -> Database:
             read_shape = f[key].shape if key in f else None
             if read_shape != (len(f["nodes/phone"]),) * 2:
                 raise InputError(f"{path}: dataset '{key}' is missing or not (nodes x nodes); rebuild it with facesynth build-db.")
+        takes = Takes.read(f)
+        rotation, translation = relative_to_take(read(f, "head_rotation"), read(f, "head_translation"),
+                                                 [takes.frames(i) for i in range(len(takes))])
         return Database(
             Nodes.read(f), read(f, "coefficients"), read_pca(f), read(f, "reference"),
-            read_strings(f, "marker_names"), Takes.read(f), float(f["coefficients"].attrs["fps"]), Path(path),
+            read_strings(f, "marker_names"), takes, float(f["coefficients"].attrs["fps"]), Path(path),
+            rotation, translation,
         )
 
 
@@ -183,8 +190,11 @@ def render_path(db: Database, utt: Utterance, path: np.ndarray, settings: Synthe
     joins = sum(1 for t in range(len(path) - 1)
                 if utt.phones[t] != PAU and utt.phones[t + 1] != PAU and db.nodes.pre[path[t + 1]] != path[t])
     take = np.where(cat.node >= 0, db.nodes.take[np.maximum(cat.node, 0)], -1)
+    head_r, head_t = follow_sources(cat.source_frame, db.head_rotation, db.head_translation)
     return {"concatenated": cat, "markers_capture": markers, "markers": downsample(markers, db.fps, settings.output_fps),
-            "non_captured_joins": joins, "take": take}
+            "non_captured_joins": joins, "take": take,
+            "head_rotation": downsample(head_r, db.fps, settings.output_fps),
+            "head_translation": downsample(head_t, db.fps, settings.output_fps)}
 
 
 def prepare(db: Database, phones_path: Path | None, emotions_path: Path | None, constraints_path: Path | None,
@@ -217,9 +227,7 @@ def write_motion(out: Path, db: Database, utt: Utterance, res: dict, settings: S
         mc.attrs.update(units="mm", fps=db.fps)
         c = g.create_dataset("coefficients", data=cat.coeffs)
         c.attrs["fps"] = db.fps
-        write_strings(g, "marker_names", db.marker_names)
-        r = g.create_dataset("reference", data=db.reference)
-        r.attrs["units"] = "mm"
+        write_head_and_markers(g, db.marker_names, db.reference, res["head_rotation"], res["head_translation"], settings.output_fps)
         p = g.create_group("path")
         p.create_dataset("node", data=res["path"])
         write_strings(p, "phone", utt.phones)
@@ -241,6 +249,17 @@ def write_motion(out: Path, db: Database, utt: Utterance, res: dict, settings: S
         v.create_dataset("source_frame", data=cat.source_frame)
         v.create_dataset("step", data=cat.step)
         v.create_dataset("smoothed", data=cat.smoothed)
+
+
+def write_head_and_markers(g, names: list[str], reference: np.ndarray, head_r: np.ndarray, head_t: np.ndarray, fps: float) -> None:
+    """Marker names, rest pose and the head motion of a ``motion`` artifact."""
+    write_strings(g, "marker_names", names)
+    r = g.create_dataset("reference", data=reference)
+    r.attrs["units"] = "mm"
+    hr = g.create_dataset("head_rotation", data=head_r.astype(np.float32))
+    hr.attrs.update(fps=fps, convention="head pose relative to the source take's mean: x -> head_rotation @ x + head_translation")
+    ht = g.create_dataset("head_translation", data=head_t.astype(np.float32))
+    ht.attrs.update(fps=fps, units="mm")
 
 
 def run(db_path: Path, out: Path, settings: SynthesizeSettings, ingest_settings: IngestSettings, *,
