@@ -130,6 +130,17 @@ def build_nodes(takes: Takes, phones: Phones, fps: float) -> Nodes:
                     for k, v in rows.items()})
 
 
+def node_frames(nodes: Nodes, n_frames: int) -> tuple[np.ndarray, np.ndarray]:
+    """Per frame: its node (-1 outside nodes) and relative time in the node (paper III)."""
+    node = -np.ones(n_frames, np.int64)
+    relative = np.full(n_frames, np.nan, np.float32)
+    for k in range(len(nodes)):
+        sl = nodes.frames(k)
+        node[sl] = k
+        relative[sl] = np.linspace(0.0, 1.0, sl.stop - sl.start)
+    return node, relative
+
+
 def resample(sequence: np.ndarray, n: int) -> np.ndarray:
     """Linear time-warp of a (c, K) sequence to n samples spanning the same duration."""
     c = len(sequence)
@@ -252,6 +263,9 @@ def run(pca_path: Path, out: Path, settings: BuildDbSettings, overwrite: bool = 
             c = g.create_dataset("coefficients", data=coeffs)
             c.attrs["fps"] = fps
             nodes.write(g)
+            frame_node, relative = node_frames(nodes, len(coeffs))
+            g.create_dataset("frames/node", data=frame_node).attrs["meaning"] = "node of each frame (-1: not in a node); a phoneme cluster is the frames whose node has that phone"
+            g.create_dataset("frames/relative_time", data=relative).attrs["meaning"] = "0 to 1 inside its node (NaN outside nodes)"
             write_pair_terms(g, dsc, pgap, vgap, states)
     return {"nodes": len(nodes), "with_predecessor": int((nodes.pre >= 0).sum()), **timings}
 

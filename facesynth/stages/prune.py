@@ -31,7 +31,7 @@ from ..artifacts import open_artifact, read, read_strings, write_artifact, write
 from ..config import PruneSettings, settings_json
 from ..errors import InputError
 from ..tables import Takes, copy_tables
-from .build_db import Nodes, write_pair_terms
+from .build_db import Nodes, node_frames, write_pair_terms
 from .pca import read_pca, write_pca
 
 
@@ -166,6 +166,9 @@ def prune(db_path: Path, out: Path, remove: list[int], reasons: list[str], setti
                 if key in f:
                     f.copy(f[key], g, name=key)
             kept.write(g)
+            frame_node, relative = node_frames(kept, len(f["coefficients"]))
+            g.create_dataset("frames/node", data=frame_node)
+            g.create_dataset("frames/relative_time", data=relative)
             pairs = {}
             for key in ("dsc", "pgap", "vgap"):
                 src = f[f"pairs/{key}"]

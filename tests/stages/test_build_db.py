@@ -80,3 +80,16 @@ def test_the_tiny_database_is_consistent(tiny_db):
         if nodes.pre[k] >= 0:
             assert nodes.suc[nodes.pre[k]] == k and nodes.take[nodes.pre[k]] == t
     assert set(nodes.emotion) == {"neutral", "happy", "angry", "sad"}
+
+
+def test_frames_know_their_node_and_relative_time(tiny_db):
+    import h5py
+
+    with h5py.File(tiny_db) as f:
+        nodes = Nodes.read(f)
+        frame_node, rel = f["frames/node"][()], f["frames/relative_time"][()]
+    k = 7
+    sl = nodes.frames(k)
+    assert (frame_node[sl] == k).all() and rel[sl][0] == 0.0 and rel[sl][-1] == 1.0
+    assert np.all(np.diff(rel[sl]) > 0)
+    assert np.isnan(rel[frame_node < 0]).all()

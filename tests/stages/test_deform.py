@@ -108,3 +108,20 @@ def test_similarity_fit_recovers_scale_rotation_translation():
     r = Rotation.from_euler("xyz", [30, -10, 70], degrees=True).as_matrix()
     s, rr, t, res = similarity_fit(a, 2.5 * a @ r.T + [1, 2, 3])
     assert s == pytest.approx(2.5) and np.allclose(rr, r) and np.allclose(t, [1, 2, 3]) and res < 1e-9
+
+
+def test_ply_meshes_and_non_manifold_edges(tmp_path, config):
+    import trimesh
+
+    from facesynth.formats.mesh import read_mesh
+
+    # three triangles sharing the edge 0-1 (non-manifold), written as PLY
+    verts = np.array([[0, 0, 0], [10, 0, 0], [5, 8, 0], [5, -8, 0], [5, 0, 8]], float)
+    faces = np.array([[0, 1, 2], [1, 0, 3], [0, 1, 4]])
+    trimesh.Trimesh(verts, faces, process=False).export(tmp_path / "m.ply")
+    v, f = read_mesh(tmp_path / "m.ply")
+    assert np.allclose(v, verts) and np.array_equal(f, faces)
+    rig = bind(v, f, {"a": 2, "b": 3, "c": 4}, ["a", "b", "c"], config.settings("deform"), "m.ply", "b")
+    reference = v[[2, 3, 4]]
+    frames, _ = animate(rig, (reference + [0, 0, 1.0])[None], ["a", "b", "c"], reference)
+    assert np.allclose(frames[0, :, 2] - verts[:, 2], 1.0)  # every vertex is reached across the shared edge

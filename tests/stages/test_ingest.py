@@ -120,3 +120,16 @@ def test_emotion_aliases_are_accepted(corpus, config):
     ingest.run(corpus / "manifest.csv", corpus / "c.h5", config.settings("ingest"))
     with h5py.File(corpus / "c.h5") as f:
         assert f["takes/emotion"][0].decode() == "happy"
+
+
+def test_a_take_with_only_a_transcript_is_aligned(corpus, config):
+    rows = _rows(corpus)
+    rows[1]["alignment"] = ""  # neutral_s001: align its transcript with pocketsphinx
+    _write_manifest(corpus, rows)
+    out = corpus / "corpus.h5"
+    ingest.run(corpus / "manifest.csv", out, config.settings("ingest"))
+    with h5py.File(out) as f:
+        take = f["phones/take"][()]
+        phones = [p.decode() for p in f["phones/phone"][()]]
+    aligned = [p for p, t in zip(phones, take) if t == 1 and p != "pau"]
+    assert len(aligned) >= len(rows[1]["transcript"].split())

@@ -110,3 +110,24 @@ def test_numpy_and_opencl_synthesis_write_the_same_motion(tiny_db, tiny_corpus, 
     with h5py.File(tmp_path / "a.h5") as a, h5py.File(tmp_path / "b.h5") as b:
         assert np.array_equal(a["path/node"][()], b["path/node"][()])
         assert np.array_equal(a["markers"][()], b["markers"][()])
+
+
+def test_audio_and_text_are_aligned_on_the_fly_and_emotion_tiers_read(tiny_db, tiny_corpus, config, tmp_path):
+    import csv
+
+    from facesynth.formats.labels import Segment, read_textgrid, write_textgrid
+
+    row = next(r for r in csv.DictReader(open(tiny_corpus / "manifest.csv")) if r["take"] == "neutral_s001")
+    s = synthesize.run(tiny_db, tmp_path / "a.h5", config.settings("synthesize"), config.settings("ingest"),
+                       audio=tiny_corpus / row["audio"], text=row["transcript"])
+    assert s["phones"] > len(row["transcript"].split())
+    tiers = read_textgrid(tiny_corpus / row["alignment"])
+    end = tiers["phones"][-1].end
+    write_textgrid(tmp_path / "e.TextGrid", {"phones": tiers["phones"],
+                                             "emotions": [Segment(0, end / 2, "sad"), Segment(end / 2, end, "happy")]})
+    synthesize.run(tiny_db, tmp_path / "b.h5", config.settings("synthesize"), config.settings("ingest"),
+                   phones_path=tmp_path / "e.TextGrid", emotions_path=tmp_path / "e.TextGrid")
+    with h5py.File(tmp_path / "b.h5") as f:
+        asked = [e.decode() for e in f["path/emotion"][()]]
+        mids = (f["path/start"][()] + f["path/end"][()]) / 2
+    assert all(e == ("sad" if m < end / 2 else "happy") for e, m in zip(asked, mids))
