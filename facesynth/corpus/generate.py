@@ -79,16 +79,14 @@ def _inject_contamination(positions: np.ndarray, names: list[str], rng: np.rando
         else:
             length = int(rng.integers(15, 60))
             start = int(rng.integers(lo, max(lo + 1, hi - length)))
-            rest = np.nanmean(positions[start], axis=0)
             m = int(rng.integers(n_markers))
             d = np.linalg.norm(positions[start] - positions[start, m], axis=1)
             d[m] = np.inf
-            candidates = np.argsort(d)[1:4]  # a near neighbour, as a labelling swap would pick
+            candidates = np.argsort(d)[1:4]  # the 2nd to 4th nearest marker: a near one, as a labelling error would pick
             k = int(candidates[rng.integers(len(candidates))])
             sl = slice(start, start + length)
             positions[sl, [m, k]] = positions[sl, [k, m]]
             markers = f"{names[m]}+{names[k]}"
-            del rest
         end = min(start + length, n_frames) - 1
         events.append({"take": take, "type": kind, "markers": markers, "start_frame": start, "end_frame": end,
                        "start_s": f"{start / CAPTURE_FPS:.4f}", "end_s": f"{(end + 1) / CAPTURE_FPS:.4f}"})

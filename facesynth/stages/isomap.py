@@ -132,7 +132,7 @@ def barycentric_pick(points: np.ndarray, xy: tuple[float, float]) -> tuple[np.nd
     return tri.simplices[s], np.array([b[0], b[1], 1.0 - b.sum()])
 
 
-def render_map(points: np.ndarray, emotion: list[str], node: np.ndarray, settings: IsomapSettings) -> tuple[np.ndarray, callable]:
+def render_map(points: np.ndarray, emotion: list[str], settings: IsomapSettings) -> tuple[np.ndarray, callable]:
     """Eq. 3 image of a 2D map (size x size x 3 uint8) and the map -> pixel transform."""
     size = settings.image_size
     lo, hi = points.min(0), points.max(0)
@@ -167,7 +167,7 @@ def save_cluster_images(cluster: Cluster, folder: Path, settings: IsomapSettings
 
     trajectories = []
     for kind, points in (("isomap", cluster.isomap), ("pca", cluster.pca_map)):
-        image, to_px = render_map(points, cluster.emotion, cluster.node, settings)
+        image, to_px = render_map(points, cluster.emotion, settings)
         img = Image.fromarray(image)
         draw = ImageDraw.Draw(img)
         for k in np.unique(cluster.node):
