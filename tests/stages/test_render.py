@@ -78,3 +78,23 @@ def test_audio_shorter_than_the_motion_is_refused(anim, tmp_path):
     with pytest.raises(InputError, match="short.wav: the audio lasts 0.25 s but the motion"):
         render.run([anim[0]], [short], tmp_path / "x.avi", Config.load().settings("render"))
     assert not (tmp_path / "x.avi").exists()
+
+
+def test_production_mesh_rasterizes_like_the_reference(shared_assets):
+    path = shared_assets / "ict-face" / "ict_face.npz"
+    if not path.exists():
+        pytest.skip("shared assets not present")
+    d = np.load(path)
+    verts = d["vertices"].astype(np.float64) + 0.8 * d["expr_deltas"][list(d["expr_names"]).index("jawOpen")].astype(np.float64)
+    faces = d["faces"].astype(np.int64)
+    cam = render.Camera.fit(verts, 160, 128, 30.0)
+    screen = cam.project(verts)
+    raster = render.OpenCLRasterizer(faces, len(verts), 160, 128)
+    image = raster.render(screen, render.vertex_normals(verts, faces, render.face_incidence(len(verts), faces)))
+    ids = raster.triangle_ids()
+    ids = np.where(ids == np.iinfo(np.int32).max, -1, ids)
+    ref = render.triangle_ids_numpy(screen, faces, 160, 128)
+    assert (ids == ref).mean() > 0.99
+    mouth = d["loop_mouth"]
+    mx, my = screen[mouth, 0].mean(), screen[mouth, 1].mean()
+    assert image[int(my), int(mx)].max() < 60  # the open mouth shows the dark interior
