@@ -30,19 +30,25 @@ class Utterance:
         return int(hits[0]) if len(hits) else None
 
 
+def utterance(phones, starts, ends, emotions=None) -> Utterance:
+    """An Utterance with adjacent pauses merged: one silence is one step of the search."""
+    emotions = list(emotions) if emotions is not None else ["neutral"] * len(phones)
+    out_p, out_s, out_e, out_m = [], [], [], []
+    for p, a, b, m in zip(phones, starts, ends, emotions):
+        if out_p and p == PAU and out_p[-1] == PAU:
+            out_e[-1] = b
+            continue
+        out_p.append(p)
+        out_s.append(a)
+        out_e.append(b)
+        out_m.append(m)
+    return Utterance(out_p, np.array(out_s, float), np.array(out_e, float), out_m)
+
+
 def read_utterance(phones_path: Path, tier_names=("phones",)) -> Utterance:
     segs = read_phone_segments(phones_path, tier_names)
     labels = map_phones([s.label for s in segs], str(phones_path), [s.start for s in segs])
-    # Merge adjacent pauses: one silence is one step of the search.
-    phones, starts, ends = [], [], []
-    for s, p in zip(segs, labels):
-        if phones and p == PAU and phones[-1] == PAU:
-            ends[-1] = s.end
-            continue
-        phones.append(p)
-        starts.append(s.start)
-        ends.append(s.end)
-    return Utterance(phones, np.array(starts), np.array(ends), ["neutral"] * len(phones))
+    return utterance(labels, [s.start for s in segs], [s.end for s in segs])
 
 
 def _emotion_name(raw: str, emotions, aliases, where: str) -> str:

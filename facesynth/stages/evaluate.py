@@ -33,7 +33,7 @@ from ..errors import InputError
 from ..motion.postprocess import frame_ranges
 from ..phonemes import PAU, viseme
 from ..progress import progress
-from ..search.inputs import Utterance
+from ..search.inputs import Utterance, utterance
 from ..tables import Phones, Takes
 from .normalize import fill_gaps, rigid_align
 from .synthesize import Database, load_database, synthesize
@@ -78,18 +78,9 @@ def heldout(corpus: Path, db: Database, split: str, normalize_settings: Normaliz
         for i in rows:
             truth, _, _ = normalized_take(f, i, takes, db, normalize_settings)
             seg = np.nonzero(phones.take == i)[0]
-            utt = Utterance([phones.phone[r] for r in seg], phones.start[seg], phones.end[seg], [takes.emotion[i]] * len(seg))
-            out.append(Sentence(takes.name[i], takes.emotion[i], _merge_pauses(utt), truth.astype(np.float32)))
+            utt = utterance([phones.phone[r] for r in seg], phones.start[seg], phones.end[seg], [takes.emotion[i]] * len(seg))
+            out.append(Sentence(takes.name[i], takes.emotion[i], utt, truth.astype(np.float32)))
     return out
-
-
-def _merge_pauses(utt: Utterance) -> Utterance:
-    keep = [k for k in range(len(utt)) if not (k > 0 and utt.phones[k] == PAU and utt.phones[k - 1] == PAU)]
-    ends = utt.ends.copy()
-    for k in range(len(utt) - 1, 0, -1):
-        if utt.phones[k] == PAU and utt.phones[k - 1] == PAU:
-            ends[k - 1] = ends[k]
-    return Utterance([utt.phones[k] for k in keep], utt.starts[keep], ends[keep], [utt.emotions[k] for k in keep])
 
 
 def baseline(db: Database, utt: Utterance) -> np.ndarray:
@@ -169,8 +160,10 @@ def aggregate(rows: list[dict]) -> dict:
 
 def evaluate(db_path: Path, corpus: Path, settings: EvaluateSettings, synth: SynthesizeSettings,
              normalize_settings: NormalizeSettings, sentences: list[Sentence] | None = None,
-             db: Database | None = None, tc=None) -> tuple[dict, list[dict]]:
-    """Returns (metrics per method, per-sentence records with the curves to plot)."""
+             db: Database | None = None, tc=None, with_baseline: bool = True) -> tuple[dict, list[dict]]:
+    """Returns (metrics per method, per-sentence records with the curves to plot).
+    ``with_baseline=False`` skips the baseline, which does not depend on the search
+    settings (tune leaves it out of its many evaluations)."""
     db = db or load_database(db_path)
     for name in tuple(settings.lip_markers) + (settings.plot_marker,):
         if name not in db.marker_names:
@@ -178,22 +171,24 @@ def evaluate(db_path: Path, corpus: Path, settings: EvaluateSettings, synth: Syn
     sentences = sentences if sentences is not None else heldout(corpus, db, settings.split, normalize_settings)
     if tc is None:
         tc = db.transition_panels(synth) if synth.use_opencl else db.transition(synth)
-    per_method: dict[str, list[dict]] = {"dp": [], "baseline": []}
+    per_method: dict[str, list[dict]] = {"dp": [], "baseline": []} if with_baseline else {"dp": []}
     records = []
     for s in progress(sentences, "evaluate"):
         res = synthesize(db, s.utterance, {}, synth, tc=tc)
-        base = baseline(db, s.utterance)
         spoken = [k for k, p in enumerate(s.utterance.phones) if p != PAU]
         agreement = float(np.mean([db.nodes.emotion[res["path"][k]] == s.utterance.emotions[k] for k in spoken]))
         m_dp = sentence_metrics(res["markers_capture"], s.truth, s.utterance, db.fps, db.marker_names, settings)
         m_dp.update(emotion_agreement=agreement, non_captured_joins=res["non_captured_joins"], take=s.take, emotion=s.emotion)
-        m_base = sentence_metrics(base, s.truth, s.utterance, db.fps, db.marker_names, settings)
-        m_base.update(take=s.take, emotion=s.emotion)
         per_method["dp"].append(m_dp)
-        per_method["baseline"].append(m_base)
         k = db.marker_names.index(settings.plot_marker)
-        records.append({"take": s.take, "emotion": s.emotion, "fps": db.fps,
-                        "truth": s.truth[:, k], "dp": res["markers_capture"][:, k], "baseline": base[:, k]})
+        record = {"take": s.take, "emotion": s.emotion, "fps": db.fps, "truth": s.truth[:, k], "dp": res["markers_capture"][:, k]}
+        if with_baseline:
+            base = baseline(db, s.utterance)
+            m_base = sentence_metrics(base, s.truth, s.utterance, db.fps, db.marker_names, settings)
+            m_base.update(take=s.take, emotion=s.emotion)
+            per_method["baseline"].append(m_base)
+            record["baseline"] = base[:, k]
+        records.append(record)
     metrics = {}
     for method, rows in per_method.items():
         emotions = sorted({r["emotion"] for r in rows})

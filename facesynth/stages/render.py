@@ -43,8 +43,8 @@ class Camera:
         centre = (lo + hi) / 2
         half = 0.55 * max((hi[1] - lo[1]), (hi[0] - lo[0]) * height / width)
         focal = 0.5 * height / np.tan(np.deg2rad(fov_deg) / 2)
-        distance = half * focal / (0.5 * height) + (hi[2] - centre[2])
-        return cls(np.array([centre[0], centre[1], hi[2] + distance - (hi[2] - centre[2])]), focal, width, height)
+        # Far enough in front of the nearest point that the half-extent fills the frame.
+        return cls(np.array([centre[0], centre[1], hi[2] + half * focal / (0.5 * height)]), focal, width, height)
 
     def project(self, points: np.ndarray) -> np.ndarray:
         """(n, 3) -> (n, 4) float32: pixel x, pixel y, depth (> 0 in front), 0."""

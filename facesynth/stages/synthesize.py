@@ -21,7 +21,7 @@ from ..errors import InputError
 from ..phonemes import PAU, viseme
 from ..search.costs import StepCosts, path_terms, step_costs, transition_matrix, transition_rows
 from ..search.dp import PanelMatrix
-from ..search.inputs import Utterance, apply_emotions, read_constraints, read_utterance
+from ..search.inputs import Utterance, apply_emotions, read_constraints, read_utterance, utterance
 from ..motion.head import follow_sources, relative_to_take
 from ..motion.postprocess import concatenate, downsample
 from ..tables import Takes
@@ -208,7 +208,7 @@ def prepare(db: Database, phones_path: Path | None, emotions_path: Path | None, 
 
         samples, rate = read_audio(audio)
         segs: list[Segment] = align_samples(samples, rate, text, where=str(audio))
-        utt = Utterance([s.label for s in segs], np.array([s.start for s in segs]), np.array([s.end for s in segs]), ["neutral"] * len(segs))
+        utt = utterance([s.label for s in segs], [s.start for s in segs], [s.end for s in segs])
     else:
         raise InputError("give the utterance's phones with --phonemes, or --audio and --text to align them.")
     if emotions_path is not None:

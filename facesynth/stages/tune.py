@@ -52,7 +52,8 @@ def tune(db_path: Path, corpus: Path, settings: TuneSettings, synth: SynthesizeS
 
     def error(v: np.ndarray, sentences) -> float:
         s = from_vector(v, synth)
-        metrics, _ = evaluate(db_path, corpus, evaluate_settings, s, normalize_settings, sentences=sentences, db=db)
+        metrics, _ = evaluate(db_path, corpus, evaluate_settings, s, normalize_settings, sentences=sentences, db=db,
+                              with_baseline=False)
         return metrics["dp"]["overall"]["err_mm2"]  # mean Eq. 13 over the sentences (Eq. 12 / K)
 
     def objective(v: np.ndarray) -> float:
