@@ -15,6 +15,7 @@ from pathlib import Path
 import numpy as np
 
 from facesynth.config import Config
+from facesynth.opencl import use_opencl
 from facesynth.search.costs import path_terms, step_costs
 from facesynth.search.dp import dp_bounded, dp_numpy, dp_opencl
 from facesynth.search.greedy import Greedy, anime_graph, cluster_graph, motion_features, pq_matching
@@ -41,7 +42,9 @@ def main() -> None:
     config = Config.load()
     s, ev = config.settings("synthesize"), config.settings("evaluate")
     db = load_database(args.db)
-    tc = db.transition_panels(s)
+    on_device = use_opencl(s.use_opencl)
+    tc = db.transition_panels(s) if on_device else db.transition(s)
+    dp, device = (dp_opencl, "OpenCL") if on_device else (dp_numpy, "NumPy")
     penalty = s.alpha6 * s.pnt
     greedy = Greedy(anime_graph(db.nodes.phone, db.nodes.emotion, db.nodes.suc), db.nodes.viseme, db.nodes.emotion, tc, penalty)
     sentences = heldout(args.corpus, db, "test", config.settings("normalize"))
@@ -73,10 +76,10 @@ def main() -> None:
         for h in range(3, args.max_h + 1):
             sec, p = timed(lambda h=h: pq_matching(greedy, utt.phones, utt.emotions, h), 1)
             table["rows"].append(row(f"PQ-Matching({h})", sec, p.path, p.jumps, utt, steps, sent.truth))
-        sec, d = timed(lambda: dp_opencl(tc, steps.total), 3)
+        sec, d = timed(lambda: dp(tc, steps.total), 3)
         jumps = sum(1 for t in range(len(utt) - 1) if utt.phones[t] != "pau" and utt.phones[t + 1] != "pau"
                     and db.nodes.suc[d.path[t]] != d.path[t + 1])
-        table["rows"].append(row("DP (Algorithm 1, OpenCL)", sec, d.path, jumps, utt, steps, sent.truth))
+        table["rows"].append(row(f"DP (Algorithm 1, {device})", sec, d.path, jumps, utt, steps, sent.truth))
         g_cost = next(r for r in table["rows"] if r["search"] == "GreedyMatching")["eq4_cost"]
         table["dp_cost_not_above_greedy"] = table["rows"][-1]["eq4_cost"] <= g_cost + 1e-3
         # Greedy's cost as an upper bound pruning the exact DP (NumPy, against the plain NumPy DP).

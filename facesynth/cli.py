@@ -4,6 +4,7 @@ stage and map user errors to one line and exit status 1."""
 from __future__ import annotations
 
 import functools
+import logging
 import sys
 import time
 from pathlib import Path
@@ -44,6 +45,26 @@ class Context:
             click.echo(message, err=True)
 
 
+class _MessageFormatter(logging.Formatter):
+    """Warnings as 'warning: ...', everything else as the bare message."""
+
+    def format(self, record: logging.LogRecord) -> str:
+        message = record.getMessage()
+        return f"warning: {message}" if record.levelno >= logging.WARNING else message
+
+
+def _configure_logging(verbose: int, quiet: bool) -> None:
+    """Messages of the ``facesynth`` logger (e.g. the OpenCL device choice) go to stderr:
+    warnings by default, details with -v, nothing but errors with -q."""
+    logger = logging.getLogger("facesynth")
+    logger.handlers.clear()
+    handler = logging.StreamHandler(sys.stderr)
+    handler.setFormatter(_MessageFormatter())
+    logger.addHandler(handler)
+    logger.setLevel(logging.ERROR if quiet else logging.INFO if verbose else logging.WARNING)
+    logger.propagate = False
+
+
 def stage(func):
     """Add the global options to a command and turn FacesynthError into exit status 1."""
     @click.option("--config", "config_path", type=EXISTING, default=None, help="TOML file overriding configs/default.toml.")
@@ -54,6 +75,7 @@ def stage(func):
     @functools.wraps(func)
     def wrapper(config_path, overrides, verbose, quiet, overwrite, **kwargs):
         set_quiet(quiet)
+        _configure_logging(verbose, quiet)
         started = time.perf_counter()
         try:
             ctx = Context(Config.load(config_path, tuple(overrides)), verbose, quiet, overwrite)
@@ -200,7 +222,7 @@ def build_db(ctx: Context, pca_path: Path, output: Path):
 
     s = stage.run(pca_path, output, ctx.config.settings("build_db"), ctx.overwrite)
     ctx.say(f"built {s['nodes']} motion nodes ({s['with_predecessor']} with a captured predecessor); "
-            f"DSC {s['dsc_s']:.2f} s, PGap/VGap {s['gaps_s']:.2f} s -> {output}")
+            f"DSC {s['dsc_s']:.2f} s, PGap/VGap {s['gaps_s']:.2f} s on {s['device']} -> {output}")
 
 
 @main.command()
@@ -497,6 +519,21 @@ def prune(ctx: Context, db_path: Path, remove: str | None, auto: bool, reason: s
         ctx.detail("removed: " + ",".join(str(i) for i in s["found"]))
     ctx.say(f"removed {s['removed']} nodes, kept {s['kept']} ({s['links_cut']} captured links cut) -> {output}")
 
+
+@main.command()
+@stage
+def devices(ctx: Context):
+    """List every OpenCL platform and device, whether facesynth's kernels build on it, and
+    which one it uses (PYOPENCL_CTX=PLATFORM:DEVICE chooses another).
+
+    \b
+    Example:
+      facesynth devices
+    """
+    from .opencl import describe_devices
+
+    for line in describe_devices():
+        click.echo(line)
 
 if __name__ == "__main__":  # pragma: no cover
     main()

@@ -131,6 +131,7 @@ class RenderSettings:
     fps: float
     view: str
     fov_deg: float
+    use_opencl: bool
 
 
 SECTIONS: dict[str, type] = {

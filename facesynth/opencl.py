@@ -1,59 +1,343 @@
-"""OpenCL plumbing: the device comes from ``PYOPENCL_CTX`` (never hard-coded), kernels are
-``facesynth/kernels/*.cl`` files built once per context, build failures carry the log."""
+"""OpenCL plumbing: which device runs the kernels, and what happens when none can.
+
+The device comes from ``PYOPENCL_CTX`` when it is set (never hard-coded). Without it,
+every device of every platform is tried in a fixed order, GPUs first, then accelerators,
+then CPUs, and within a kind a system driver before the PoCL that the pyopencl wheel
+bundles; the first device that builds and runs ``kernels/probe.cl`` is used. The bundled
+PoCL (3.0-rc2 on LLVM 14) cannot build for processors newer than its LLVM (e.g. AMD
+Zen 5), so on such a machine a system driver (Debian's ``pocl-opencl-icd``) or a GPU is
+taken instead.
+
+When no device builds, :func:`use_opencl` says so once with one warning line and every
+stage runs its NumPy implementation (the DP is bit-identical to its kernel; the pair gaps
+and the rasterizer agree within the tolerances their docstrings give). Setting the
+environment variable ``FACESYNTH_OPENCL=off`` (or a stage's ``use_opencl = false``)
+forces NumPy. An explicit ``PYOPENCL_CTX`` whose device cannot build is a user error
+naming the device and the first line of its build log.
+
+Kernels are ``facesynth/kernels/*.cl`` files, built once per process.
+"""
 
 from __future__ import annotations
 
+import ctypes
+import logging
 import os
+from dataclasses import dataclass
 from functools import lru_cache
 from importlib import resources
+from pathlib import Path
 
 from .errors import FacesynthError
 
+log = logging.getLogger("facesynth")
+
+#: Environment variable that forces the NumPy implementations ("off", "0", "no", "false", "numpy").
+FORCE_ENV = "FACESYNTH_OPENCL"
+_OFF = {"off", "0", "no", "false", "numpy"}
+
+#: Build options of every facesynth kernel.
+BUILD_OPTIONS = ("-cl-std=CL1.2",)
+
+_KIND_ORDER = {"GPU": 0, "ACCELERATOR": 1, "CPU": 2}
+
+_ADVICE = ("install your system's OpenCL driver (e.g. Debian's pocl-opencl-icd) or choose a device with "
+           "PYOPENCL_CTX; 'facesynth devices' lists them")
+
 
 class OpenCLUnavailable(FacesynthError):
-    """No OpenCL platform or device could be opened."""
+    """No OpenCL device can be used (or the one named by ``PYOPENCL_CTX`` cannot build)."""
+
+
+@dataclass(frozen=True)
+class Device:
+    """One OpenCL device as the ICD loader lists it."""
+
+    platform_index: int
+    device_index: int
+    name: str
+    kind: str             # "GPU", "ACCELERATOR", "CPU" or "OTHER"
+    platform: str         # platform name and version, e.g. "Portable Computing Language, OpenCL 3.0 PoCL 3.1"
+    driver: str           # the driver library's path ("" when it cannot be told)
+    bundled: bool         # the PoCL inside the pyopencl wheel
+
+    @property
+    def spec(self) -> str:
+        """The value of ``PYOPENCL_CTX`` that selects this device."""
+        return f"{self.platform_index}:{self.device_index}"
+
+    def describe(self) -> str:
+        return f"{self.name} ({self.platform})"
+
+
+@dataclass(frozen=True)
+class Probe:
+    """Whether a device builds and runs the probe kernel; ``reason`` is the first line of the
+    build log (or of the error) when it does not."""
+
+    device: Device
+    ok: bool
+    reason: str = ""
+
+
+@dataclass(frozen=True)
+class Choice:
+    """The device this process uses (None: the NumPy implementations) and why."""
+
+    device: Device | None
+    reason: str
+    probes: tuple[Probe, ...] = ()
+
+    @property
+    def description(self) -> str:
+        """What artifacts record as their ``device`` attribute."""
+        return f"OpenCL: {self.device.describe()}" if self.device else "NumPy"
+
+
+def _cl():
+    import pyopencl as cl
+
+    return cl
+
+
+def _library_ranges() -> list[tuple[int, int, str]]:
+    """Address ranges of the shared libraries mapped into this process (Linux; else empty)."""
+    ranges = []
+    try:
+        with open("/proc/self/maps") as fh:
+            for line in fh:
+                parts = line.split()
+                if len(parts) >= 6 and parts[5].startswith("/"):
+                    lo, hi = (int(x, 16) for x in parts[0].split("-"))
+                    ranges.append((lo, hi, parts[5]))
+    except OSError:
+        pass
+    return ranges
+
+
+def _driver_library(platform, ranges) -> str:
+    """The library that implements ``platform``: an ICD platform handle starts with a pointer
+    to its driver's dispatch table, which lives in that driver's mapped image."""
+    try:
+        dispatch = ctypes.c_void_p.from_address(platform.int_ptr).value or 0
+    except (ValueError, OSError, AttributeError):
+        return ""
+    return next((path for lo, hi, path in ranges if lo <= dispatch < hi), "")
+
+
+def list_devices() -> list[Device]:
+    """Every device of every OpenCL platform (empty when there is no OpenCL at all)."""
+    try:
+        cl = _cl()
+        platforms = cl.get_platforms()
+    except (ImportError, OSError, RuntimeError) as exc:  # no ICD loader or no platform: no OpenCL here
+        log.debug("no OpenCL platforms: %s", exc)
+        return []
+    ranges = _library_ranges()
+    wheel = str(Path(cl.__file__).parent)
+    out = []
+    for p, platform in enumerate(platforms):
+        try:
+            devices = platform.get_devices()
+        except cl.Error as exc:  # e.g. POCL_DEVICES=none: a platform without devices
+            log.debug("platform %s has no devices: %s", platform.name, exc)
+            continue
+        driver = _driver_library(platform, ranges)
+        for d, device in enumerate(devices):
+            kind = next((k for k in _KIND_ORDER if device.type & getattr(cl.device_type, k)), "OTHER")
+            version = " ".join(platform.version.split(",")[0].split())  # e.g. "OpenCL 3.0 PoCL 3.1+debian Linux"
+            out.append(Device(p, d, device.name.strip(), kind, f"{platform.name.strip()}, {version}",
+                              driver, bool(driver) and driver.startswith(wheel)))
+    return out
+
+
+def candidate_order(devices: list[Device]) -> list[Device]:
+    """GPUs, then accelerators, then CPUs; a system driver before the bundled PoCL; then as listed."""
+    return sorted(devices, key=lambda d: (_KIND_ORDER.get(d.kind, 3), d.bundled, d.platform_index, d.device_index))
+
+
+def _cl_device(device: Device):
+    return _cl().get_platforms()[device.platform_index].get_devices()[device.device_index]
+
+
+def build_log_line(exc: BaseException) -> str:
+    """The first meaningful line of a failed build's log (pyopencl puts the log after
+    'Build on <device>:'), else the first line of the error."""
+    text = str(exc)
+    marker = text.find("Build on")
+    if marker >= 0:
+        for line in text[marker:].splitlines()[1:]:
+            if line.strip() and not line.startswith("(options:"):
+                return line.strip()
+    return text.strip().splitlines()[0] if text.strip() else type(exc).__name__
+
+
+def probe(device: Device) -> Probe:
+    """Build ``kernels/probe.cl`` on ``device`` and check what it computes."""
+    import numpy as np
+
+    try:
+        cl = _cl()
+        ctx = cl.Context([_cl_device(device)])
+        prg = cl.Program(ctx, kernel_source("probe")).build(options=list(BUILD_OPTIONS))
+        q = cl.CommandQueue(ctx)
+        x = np.array([3.0, 1.5, 2.0, 4.0], np.float32)
+        mf = cl.mem_flags
+        xb = cl.Buffer(ctx, mf.READ_ONLY | mf.COPY_HOST_PTR, hostbuf=x)
+        yb = cl.Buffer(ctx, mf.WRITE_ONLY, x.nbytes)
+        low = np.array([np.iinfo(np.int32).max], np.int32)
+        lb = cl.Buffer(ctx, mf.READ_WRITE | mf.COPY_HOST_PTR, hostbuf=low)
+        prg.probe(q, x.shape, None, xb, yb, lb)
+        y = np.empty_like(x)
+        cl.enqueue_copy(q, y, yb)
+        cl.enqueue_copy(q, low, lb, is_blocking=True)
+    except (_cl().Error, RuntimeError, ValueError, OSError) as exc:  # a driver failure: this device is unusable
+        return Probe(device, False, build_log_line(exc))
+    if not (np.array_equal(y, 36 * x) and low[0] == np.float32(1.5).view(np.int32)):
+        return Probe(device, False, "the probe kernel ran but computed wrong numbers")
+    return Probe(device, True)
+
+
+def _forced_off() -> bool:
+    return os.environ.get(FORCE_ENV, "").strip().lower() in _OFF
+
+
+def _explicit(spec: str) -> Choice:
+    """The device named by ``PYOPENCL_CTX``; refused with the reason when it cannot build."""
+    devices = list_devices()
+    parts = spec.strip().split(":")
+    try:
+        p = int(parts[0]) if parts[0] else 0
+        d = int(parts[1]) if len(parts) > 1 and parts[1] else 0
+    except ValueError:
+        raise OpenCLUnavailable(f"PYOPENCL_CTX={spec!r}: expected PLATFORM[:DEVICE] numbers, e.g. 0:0; "
+                                "'facesynth devices' lists them.") from None
+    device = next((x for x in devices if (x.platform_index, x.device_index) == (p, d)), None)
+    if device is None:
+        listed = ", ".join(f"{x.spec} {x.name}" for x in devices) or "none"
+        raise OpenCLUnavailable(f"PYOPENCL_CTX={spec!r}: no such OpenCL device (devices: {listed}); "
+                                "choose one that 'facesynth devices' lists, or unset PYOPENCL_CTX.")
+    result = probe(device)
+    if not result.ok:
+        raise OpenCLUnavailable(f"PYOPENCL_CTX={spec!r}: device {device.describe()} cannot build OpenCL kernels "
+                                f"({result.reason}); choose another device ('facesynth devices' lists them), "
+                                f"unset PYOPENCL_CTX, or set {FORCE_ENV}=off to run on NumPy.")
+    return Choice(device, f"PYOPENCL_CTX={spec}", (result,))
+
+
+@lru_cache(maxsize=1)
+def choice() -> Choice:
+    """The device this process uses, chosen once (see the module docstring)."""
+    if _forced_off():
+        return Choice(None, f"{FORCE_ENV}={os.environ[FORCE_ENV]}")
+    spec = os.environ.get("PYOPENCL_CTX")
+    if spec is not None and spec.strip():
+        chosen = _explicit(spec)
+        log.info("OpenCL device %s (%s)", chosen.device.describe(), chosen.reason)
+        return chosen
+    probes = []
+    for device in candidate_order(list_devices()):
+        result = probe(device)
+        probes.append(result)
+        if result.ok:
+            skipped = "; ".join(f"{r.device.name}: {r.reason}" for r in probes[:-1])
+            reason = "the first device that builds the probe kernel (GPUs, then CPUs, system drivers before the bundled PoCL)"
+            chosen = Choice(device, reason + (f"; skipped {skipped}" if skipped else ""), tuple(probes))
+            log.info("OpenCL device %s: %s", device.describe(), chosen.reason)
+            return chosen
+    if probes:
+        why = "; ".join(f"{r.device.name}: {r.reason}" for r in probes)
+        return Choice(None, f"no OpenCL device builds kernels ({why})", tuple(probes))
+    return Choice(None, "no OpenCL device found")
+
+
+def describe_devices() -> list[str]:
+    """Lines of ``facesynth devices``: each device with its probe result, then the choice."""
+    devices = list_devices()
+    try:
+        chosen, error = choice(), None
+    except OpenCLUnavailable as exc:
+        chosen, error = None, exc
+    probed = {p.device: p for p in (chosen.probes if chosen else ())}
+    lines = []
+    for device in devices:
+        result = probed.get(device) or probe(device)
+        state = "builds" if result.ok else f"does not build: {result.reason}"
+        origin = " [bundled with pyopencl]" if device.bundled else ""
+        lines.append(f"{device.spec}  {device.kind:<5} {device.name} ({device.platform}){origin}: {state}")
+        if device.driver:
+            lines.append(f"      driver {device.driver}")
+    if not devices:
+        lines.append("no OpenCL platform or device found")
+    if chosen is None:
+        lines.append(f"facesynth cannot use OpenCL: {error}")
+    elif chosen.device is None:
+        lines.append(f"facesynth uses NumPy: {chosen.reason}")
+    else:
+        lines.append(f"facesynth uses {chosen.device.spec} {chosen.device.name}: {chosen.reason}")
+    return lines
+
+
+def use_opencl(wanted: bool = True) -> bool:
+    """Whether a stage that can use OpenCL should: ``wanted`` (its ``use_opencl`` setting), not
+    forced off, and a device builds. A fallback caused by the drivers is warned about once."""
+    if not wanted:
+        return False
+    chosen = choice()
+    if chosen.device is None and not _forced_off():
+        _warn_fallback(chosen.reason)
+    return chosen.device is not None
+
+
+@lru_cache(maxsize=1)
+def _warn_fallback(reason: str) -> None:
+    log.warning("%s; running the NumPy implementation (same results, slower); to use OpenCL, %s.", reason, _ADVICE)
+
+
+def device_description(wanted: bool = True) -> str:
+    """What an artifact records as ``device``: "OpenCL: <device> (<platform>)" or "NumPy"."""
+    return choice().description if use_opencl(wanted) else "NumPy"
+
+
+def reset() -> None:
+    """Forget the chosen device and built kernels (tests switch devices through the environment)."""
+    for cached in (choice, _warn_fallback, context, queue, program, kernel):
+        cached.cache_clear()
 
 
 @lru_cache(maxsize=1)
 def context():
-    """The OpenCL context chosen by ``PYOPENCL_CTX`` (first device if unset)."""
-    import pyopencl as cl
-
-    os.environ.setdefault("PYOPENCL_CTX", "0")
-    try:
-        return cl.create_some_context(interactive=False)
-    except (cl.Error, RuntimeError, ValueError) as exc:
-        raise OpenCLUnavailable(
-            f"no OpenCL device could be opened ({exc}); install pocl-binary-distribution, set PYOPENCL_CTX, "
-            "or run on the NumPy reference with --set synthesize.use_opencl=false."
-        ) from None
+    """The OpenCL context of the chosen device."""
+    chosen = choice()
+    if chosen.device is None:
+        raise OpenCLUnavailable(f"{chosen.reason}; {_ADVICE}, or set use_opencl = false.")
+    return _cl().Context([_cl_device(chosen.device)])
 
 
 @lru_cache(maxsize=1)
 def queue():
-    import pyopencl as cl
+    return _cl().CommandQueue(context())
 
-    return cl.CommandQueue(context())
+
+def kernel_source(name: str) -> str:
+    """The text of ``kernels/<name>.cl``."""
+    return resources.files("facesynth").joinpath(f"kernels/{name}.cl").read_text("utf-8")
 
 
 @lru_cache(maxsize=None)
 def program(name: str):
     """Build ``kernels/<name>.cl`` once for the current context."""
-    import pyopencl as cl
-
-    source = resources.files("facesynth").joinpath(f"kernels/{name}.cl").read_text("utf-8")
+    cl = _cl()
     try:
-        return cl.Program(context(), source).build(options=["-cl-std=CL1.2"])
-    except cl.RuntimeError as exc:  # build failure: keep the compiler's log
-        raise RuntimeError(f"OpenCL kernel {name}.cl failed to build:\n{exc}") from None
+        return cl.Program(context(), kernel_source(name)).build(options=list(BUILD_OPTIONS))
+    except cl.Error as exc:  # the probe built, so this is a kernel the device cannot take: keep the log
+        raise RuntimeError(f"OpenCL kernel {name}.cl failed to build on {choice().description}:\n{exc}") from None
 
 
 @lru_cache(maxsize=None)
 def kernel(program_name: str, kernel_name: str):
     """One kernel object per (file, name), retrieved once."""
-    import pyopencl as cl
-
-    return cl.Kernel(program(program_name), kernel_name)
+    return _cl().Kernel(program(program_name), kernel_name)
 
 
 def device_name() -> str:

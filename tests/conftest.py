@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 from pathlib import Path
 
 import pytest
@@ -9,6 +10,52 @@ import pytest
 from facesynth.config import Config
 
 SHARED_ASSETS = Path(__file__).resolve().parents[2] / "shared" / "assets"
+
+
+@functools.lru_cache(maxsize=1)
+def _opencl_probes():
+    from facesynth import opencl
+
+    return [opencl.probe(d) for d in opencl.candidate_order(opencl.list_devices())]
+
+
+def pytest_report_header(config):
+    """Which OpenCL devices the OpenCL-versus-reference tests run on, and what the rest uses."""
+    from facesynth import opencl
+
+    probes = _opencl_probes()
+    lines = [f"OpenCL {p.device.spec} {p.device.describe()}: " + ("builds" if p.ok else f"does not build ({p.reason})")
+             for p in probes] or ["OpenCL: no device found"]
+    try:
+        lines.append(f"facesynth's default device: {opencl.choice().description}")
+    except opencl.OpenCLUnavailable as exc:
+        lines.append(f"facesynth's default device: none ({exc})")
+    return lines
+
+
+def pytest_generate_tests(metafunc):
+    """``opencl_device``: every OpenCL device that builds facesynth's kernels, one test each."""
+    if "opencl_device" in metafunc.fixturenames:
+        working = [p.device for p in _opencl_probes() if p.ok]
+        metafunc.parametrize("opencl_device", working or [None], indirect=True,
+                             ids=[f"{d.spec}-{d.name}" for d in working] or ["no-device"])
+
+
+@pytest.fixture
+def opencl_device(request, monkeypatch):
+    """Run the test with facesynth's OpenCL code on one device (``PYOPENCL_CTX``); skip with the
+    reason when no device builds."""
+    from facesynth import opencl
+
+    device = request.param
+    if device is None:
+        reasons = "; ".join(f"{p.device.name}: {p.reason}" for p in _opencl_probes()) or "no OpenCL device found"
+        pytest.skip(f"no OpenCL device builds facesynth's kernels ({reasons})")
+    monkeypatch.setenv("PYOPENCL_CTX", device.spec)
+    monkeypatch.delenv(opencl.FORCE_ENV, raising=False)
+    opencl.reset()
+    yield device
+    opencl.reset()
 
 
 @pytest.fixture(scope="session")

@@ -32,6 +32,7 @@ import numpy as np
 from ..artifacts import open_artifact, read, read_strings, write_artifact, write_strings
 from ..config import BuildDbSettings, settings_json
 from ..errors import InputError
+from ..opencl import device_description, use_opencl
 from ..phonemes import PAU, viseme
 from ..tables import Phones, Takes, copy_tables
 from .pca import PcaModel, read_pca, write_pca
@@ -252,7 +253,7 @@ def run(pca_path: Path, out: Path, settings: BuildDbSettings, overwrite: bool = 
         timings["dsc_s"] = time.perf_counter() - t0
         t0 = time.perf_counter()
         states = boundary_states(coeffs, nodes, model)
-        gaps = pair_gaps_opencl if settings.use_opencl else pair_gaps_numpy
+        gaps = pair_gaps_opencl if use_opencl(settings.use_opencl) else pair_gaps_numpy
         pgap, vgap = gaps(*states)
         timings["gaps_s"] = time.perf_counter() - t0
         with write_artifact(out, "motiondb", config=settings_json(settings), inputs=[pca_path], overwrite=overwrite) as g:
@@ -267,7 +268,9 @@ def run(pca_path: Path, out: Path, settings: BuildDbSettings, overwrite: bool = 
             g.create_dataset("frames/node", data=frame_node).attrs["meaning"] = "node of each frame (-1: not in a node); a phoneme cluster is the frames whose node has that phone"
             g.create_dataset("frames/relative_time", data=relative).attrs["meaning"] = "0 to 1 inside its node (NaN outside nodes)"
             write_pair_terms(g, dsc, pgap, vgap, states)
-    return {"nodes": len(nodes), "with_predecessor": int((nodes.pre >= 0).sum()), **timings}
+            g["pairs"].attrs["device"] = device_description(settings.use_opencl)  # where PGap/VGap were computed
+    return {"nodes": len(nodes), "with_predecessor": int((nodes.pre >= 0).sum()),
+            "device": device_description(settings.use_opencl), **timings}
 
 
 def write_pair_terms(g: h5py.File, dsc, pgap, vgap, states) -> None:

@@ -115,28 +115,128 @@ class OpenCLRasterizer:
         return out.reshape(self.height, self.width)
 
 
+def _edge(ax, ay, bx, by, px, py):
+    """``edge_fn`` of raster.cl, operation for operation in float32."""
+    return (bx - ax) * (py - ay) - (by - ay) * (px - ax)
+
+
+def _cover(screen: np.ndarray, faces: np.ndarray, f: np.ndarray, x: np.ndarray, y: np.ndarray):
+    """``cover`` of raster.cl for fragments (triangle f, pixel x, y): (covered, w0, w1, w2, z), float32."""
+    a, b, c = (screen[faces[f, k]] for k in range(3))
+    area = _edge(a[..., 0], a[..., 1], b[..., 0], b[..., 1], c[..., 0], c[..., 1])
+    px = x.astype(np.float32) + np.float32(0.5)
+    py = y.astype(np.float32) + np.float32(0.5)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        w0 = _edge(b[..., 0], b[..., 1], c[..., 0], c[..., 1], px, py) / area
+        w1 = _edge(c[..., 0], c[..., 1], a[..., 0], a[..., 1], px, py) / area
+        w2 = _edge(a[..., 0], a[..., 1], b[..., 0], b[..., 1], px, py) / area
+    z = w0 * a[..., 2] + w1 * b[..., 2] + w2 * c[..., 2]
+    covered = (area != 0) & (w0 >= 0) & (w1 >= 0) & (w2 >= 0) & (z > 0)
+    return covered, w0, w1, w2, z
+
+
 def triangle_ids_numpy(screen: np.ndarray, faces: np.ndarray, width: int, height: int) -> np.ndarray:
-    """Reference z-buffer: the nearest triangle per pixel (lowest id on equal depth), -1 if none."""
-    depth = np.full((height, width), np.inf, np.float32)
-    ids = np.full((height, width), -1, np.int64)
-    for f, (a, b, c) in enumerate(screen[faces][:, :, :3].astype(np.float32)):
-        area = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
-        if area == 0:
-            continue
-        x0, x1 = max(int(np.floor(min(a[0], b[0], c[0]))), 0), min(int(np.ceil(max(a[0], b[0], c[0]))), width - 1)
-        y0, y1 = max(int(np.floor(min(a[1], b[1], c[1]))), 0), min(int(np.ceil(max(a[1], b[1], c[1]))), height - 1)
-        if x1 < x0 or y1 < y0:
-            continue
-        px, py = np.meshgrid(np.arange(x0, x1 + 1) + 0.5, np.arange(y0, y1 + 1) + 0.5)
-        e = lambda p, q: (q[0] - p[0]) * (py - p[1]) - (q[1] - p[1]) * (px - p[0])  # noqa: E731
-        w0, w1, w2 = e(b, c) / area, e(c, a) / area, e(a, b) / area
-        z = (w0 * a[2] + w1 * b[2] + w2 * c[2]).astype(np.float32)
-        inside = (w0 >= 0) & (w1 >= 0) & (w2 >= 0) & (z > 0)
-        region = depth[y0 : y1 + 1, x0 : x1 + 1]
-        better = inside & (z < region)
-        region[better] = z[better]
-        ids[y0 : y1 + 1, x0 : x1 + 1][better] = f
-    return ids
+    """The z-buffer of ``kernels/raster.cl`` in NumPy: per pixel the nearest triangle (lowest id
+    on equal depth), -1 where none.
+
+    screen : (V, 4) float32, pixel x, pixel y, depth (> 0 in front), 0.
+    faces : (F, 3) int vertex indices.
+    Returns (height, width) int64. Coverage and depth are computed with the kernel's float32
+    operations in the kernel's order, so the ids equal the kernel's wherever the device rounds
+    divisions correctly (PoCL on the CPU does); elsewhere a pixel on a shared edge may differ.
+    Triangles are rasterized in groups of similar bounding-box size, all fragments of a group
+    at once, and the nearest fragment of each pixel is found with one sort.
+    """
+    screen = np.ascontiguousarray(screen, np.float32)
+    faces = np.asarray(faces, np.int64)
+    corners = screen[faces][:, :, :2]                                   # (F, 3, 2)
+    with np.errstate(invalid="ignore"):
+        x0 = np.clip(np.floor(corners[:, :, 0].min(1)), 0, None)
+        y0 = np.clip(np.floor(corners[:, :, 1].min(1)), 0, None)
+        x1 = np.clip(np.ceil(corners[:, :, 0].max(1)), None, width - 1)
+        y1 = np.clip(np.ceil(corners[:, :, 1].max(1)), None, height - 1)
+    ok = np.isfinite(x0 + y0 + x1 + y1) & (x1 >= x0) & (y1 >= y0)
+    idx = np.nonzero(ok)[0]
+    x0, y0, x1, y1 = (v[idx].astype(np.int64) for v in (x0, y0, x1, y1))
+    # Buckets by bounding box size rounded up to a power of two, so padding stays below 4x.
+    bw = 1 << np.ceil(np.log2(x1 - x0 + 1)).astype(np.int64)
+    bh = 1 << np.ceil(np.log2(y1 - y0 + 1)).astype(np.int64)
+    pixels, depths, ids = [], [], []
+    for w, h in sorted(set(zip(bw.tolist(), bh.tolist()))):
+        sel = np.nonzero((bw == w) & (bh == h))[0]
+        for part in np.array_split(sel, max(1, len(sel) * w * h // (1 << 22))):  # bounded memory
+            ox, oy = np.meshgrid(np.arange(w), np.arange(h))
+            x = x0[part, None] + ox.reshape(1, -1)
+            y = y0[part, None] + oy.reshape(1, -1)
+            f = np.broadcast_to(idx[part, None], x.shape)
+            inside = (x <= x1[part, None]) & (y <= y1[part, None])
+            x, y, f = x[inside], y[inside], f[inside]
+            covered, _, _, _, z = _cover(screen, faces, f, x, y)
+            pixels.append((y * width + x)[covered])
+            depths.append(z[covered])
+            ids.append(f[covered])
+    out = np.full(height * width, -1, np.int64)
+    if pixels:
+        pixel, depth, face = np.concatenate(pixels), np.concatenate(depths), np.concatenate(ids)
+        order = np.lexsort((face, depth, pixel))                        # nearest, then lowest id
+        first = order[np.r_[True, pixel[order][1:] != pixel[order][:-1]]] if len(order) else order
+        out[pixel[first]] = face[first]
+    return out.reshape(height, width)
+
+
+def shade_numpy(screen: np.ndarray, faces: np.ndarray, normals: np.ndarray, ids: np.ndarray) -> np.ndarray:
+    """``shade`` of ``kernels/raster.cl`` in NumPy: (H, W, 3) uint8 from the triangle ids of
+    :func:`triangle_ids_numpy`. Same float32 operations; a channel may differ from the kernel's
+    by one level where the device's sqrt or division rounds differently."""
+    height, width = ids.shape
+    f32 = np.float32
+    colour = np.broadcast_to(BACKGROUND, (height * width, 4)).copy()
+    hit = np.nonzero(ids.reshape(-1) >= 0)[0]
+    f = ids.reshape(-1)[hit]
+    _, w0, w1, w2, _ = _cover(np.asarray(screen, f32), np.asarray(faces, np.int64), f, hit % width, hit // width)
+    nrm = np.asarray(normals, f32)
+    n = w0[:, None] * nrm[faces[f, 0]] + w1[:, None] * nrm[faces[f, 1]] + w2[:, None] * nrm[faces[f, 2]]
+    length = np.sqrt(n[:, 0] * n[:, 0] + n[:, 1] * n[:, 1] + n[:, 2] * n[:, 2]) + f32(1e-12)
+    n = n / length[:, None]
+    key, fill = np.array([-0.35, 0.45, 0.82], f32), np.array([0.6, -0.1, 0.79], f32)
+    kl = np.sqrt(key[0] * key[0] + key[1] * key[1] + key[2] * key[2])
+    fl = np.sqrt(fill[0] * fill[0] + fill[1] * fill[1] + fill[2] * fill[2])
+    d1 = np.maximum((n[:, 0] * key[0] + n[:, 1] * key[1] + n[:, 2] * key[2]) / kl, f32(0))
+    d2 = np.maximum((n[:, 0] * fill[0] + n[:, 1] * fill[1] + n[:, 2] * fill[2]) / fl, f32(0))
+    h = np.array([key[0] / kl, key[1] / kl, key[2] / kl + f32(1)], f32)
+    hl = np.sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2])
+    spec = np.maximum((n[:, 0] * h[0] + n[:, 1] * h[1] + n[:, 2] * h[2]) / hl, f32(0))
+    for _ in range(5):  # ^32
+        spec = spec * spec
+    lit = SKIN[None] * (f32(0.18) + f32(0.72) * d1 + f32(0.25) * d2)[:, None] + (f32(0.25) * spec)[:, None]
+    colour[hit] = np.where((n[:, 2] < 0)[:, None], SKIN[None] * f32(0.12), lit)  # back face: dark interior
+    colour = np.clip(colour, f32(0), f32(1))
+    return (colour[:, :3] * f32(255) + f32(0.5)).astype(np.uint8).reshape(height, width, 3)
+
+
+class NumpyRasterizer:
+    """The NumPy implementation of :class:`OpenCLRasterizer`, used when no OpenCL device builds."""
+
+    def __init__(self, faces: np.ndarray, n_vertices: int, width: int, height: int):
+        self.faces = np.asarray(faces, np.int64)
+        self.width, self.height = width, height
+        self.ids = np.full((height, width), -1, np.int64)
+
+    def render(self, screen: np.ndarray, normals: np.ndarray) -> np.ndarray:
+        self.ids = triangle_ids_numpy(screen, self.faces, self.width, self.height)
+        return shade_numpy(screen, self.faces, normals, self.ids)
+
+    def triangle_ids(self) -> np.ndarray:
+        """(height, width) int32, INT32_MAX where no triangle (as the kernel's buffer)."""
+        return np.where(self.ids < 0, np.iinfo(np.int32).max, self.ids).astype(np.int32)
+
+
+def rasterizer(faces: np.ndarray, n_vertices: int, width: int, height: int, wanted: bool = True):
+    """The OpenCL rasterizer when a device builds (and ``wanted``), else the NumPy one."""
+    from ..opencl import use_opencl
+
+    cls = OpenCLRasterizer if use_opencl(wanted) else NumpyRasterizer
+    return cls(faces, n_vertices, width, height)
 
 
 def draw_markers(points_px: np.ndarray, width: int, height: int, radius: int = 3) -> np.ndarray:
@@ -183,7 +283,7 @@ def render_frames(clip: Clip, settings: RenderSettings, compare: Clip | None = N
     width = settings.width // 2 if view == "side-by-side" else settings.width
     camera = Camera.fit(clip.vertices[0], width, settings.height, settings.fov_deg)
     incidence = face_incidence(clip.vertices.shape[1], clip.faces)
-    raster = OpenCLRasterizer(clip.faces, clip.vertices.shape[1], width, settings.height) if view != "markers" else None
+    raster = rasterizer(clip.faces, clip.vertices.shape[1], width, settings.height, settings.use_opencl) if view != "markers" else None
 
     def shaded(vertices):
         # The camera looks along -z without rotation, so world normals are camera normals.

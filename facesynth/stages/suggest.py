@@ -18,6 +18,7 @@ import numpy as np
 
 from ..config import IngestSettings, SynthesizeSettings
 from ..errors import InputError
+from ..opencl import use_opencl
 from ..phonemes import PAU
 from ..search.costs import step_costs
 from .synthesize import load_database, prepare
@@ -55,7 +56,7 @@ def suggest(db_path: Path, phones_path: Path, at_s: float, settings: SynthesizeS
     next_p = utt.phones[c + 1] if c + 1 < len(utt) else PAU
     tc = db.transition(settings)
     obs = step_costs(utt.phones, utt.emotions, db.nodes.phone, db.nodes.emotion, constraints, settings).total
-    run = dp_opencl if settings.use_opencl else dp_numpy
+    run = dp_opencl if use_opencl(settings.use_opencl) else dp_numpy
     forward = run(tc, obs)
     backward = run(np.ascontiguousarray(tc.T), obs[::-1].copy())
     through = forward.phi[c].astype(np.float64) + backward.phi[len(utt) - 1 - c] - obs[c]

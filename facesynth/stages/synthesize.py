@@ -18,6 +18,7 @@ import numpy as np
 from ..artifacts import open_artifact, read, read_strings, write_artifact, write_strings
 from ..config import IngestSettings, SynthesizeSettings, settings_json
 from ..errors import InputError
+from ..opencl import use_opencl
 from ..phonemes import PAU, viseme
 from ..search.costs import StepCosts, path_terms, step_costs, transition_matrix, transition_rows
 from ..search.dp import PanelMatrix
@@ -110,12 +111,11 @@ def greedy_search(db: Database, tc, utt: Utterance, steps: StepCosts, settings: 
 
 def search(tc, steps: StepCosts, settings: SynthesizeSettings):
     """Run the DP; returns (DpResult, device description)."""
+    from ..opencl import device_description
     from ..search.dp import dp_numpy, dp_opencl
 
-    if settings.use_opencl:
-        from ..opencl import device_name
-
-        return dp_opencl(tc, steps.total), f"OpenCL: {device_name()}"
+    if use_opencl(settings.use_opencl):
+        return dp_opencl(tc, steps.total), device_description()
     return dp_numpy(tc, steps.total), "NumPy"
 
 
@@ -159,7 +159,7 @@ def synthesize(db: Database, utt: Utterance, constraints: dict[int, int], settin
     timings = {}
     t0 = time.perf_counter()
     if tc is None:
-        tc = db.transition_panels(settings) if settings.use_opencl else db.transition(settings)
+        tc = db.transition_panels(settings) if use_opencl(settings.use_opencl) else db.transition(settings)
     steps = step_costs(utt.phones, utt.emotions, db.nodes.phone, db.nodes.emotion, constraints, settings)
     timings["costs_s"] = time.perf_counter() - t0
     t0 = time.perf_counter()

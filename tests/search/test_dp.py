@@ -18,7 +18,7 @@ def _random(n, t, seed):
 
 
 @pytest.mark.parametrize("n, t", [(1, 3), (5, 4), (95, 6), (96, 6), (97, 9), (500, 14), (1300, 24)])
-def test_opencl_equals_reference_on_random_costs(n, t):
+def test_opencl_equals_reference_on_random_costs(n, t, opencl_device):
     tc, obs = _random(n, t, seed=n)
     ref, cl = dp_numpy(tc, obs), dp_opencl(tc, obs)
     assert cl.cost == ref.cost
@@ -37,14 +37,14 @@ def test_reference_finds_the_brute_force_optimum():
     assert tuple(ref.path) == best[1]  # tuples compare lexicographically: lowest index wins ties
 
 
-def test_ties_go_to_the_lowest_index():
+def test_ties_go_to_the_lowest_index(opencl_device):
     tc = np.zeros((200, 200), np.float32)
     obs = np.zeros((5, 200), np.float32)
     for result in (dp_numpy(tc, obs), dp_opencl(tc, obs)):
         assert result.path.tolist() == [0] * 5 and result.cost == 0.0
 
 
-def test_buffers_split_below_the_allocation_limit_give_the_same_answer(monkeypatch):
+def test_buffers_split_below_the_allocation_limit_give_the_same_answer(monkeypatch, opencl_device):
     tc, obs = _random(700, 8, seed=3)
     ref = dp_numpy(tc, obs)
     monkeypatch.setattr("facesynth.opencl.max_alloc_bytes", lambda: 3 * 700 * 96 * 4)  # three panels per buffer
@@ -55,7 +55,8 @@ def test_buffers_split_below_the_allocation_limit_give_the_same_answer(monkeypat
 
 
 @pytest.mark.parametrize("with_emotions, with_constraints", [(False, False), (True, False), (False, True), (True, True)])
-def test_real_database_with_emotions_and_constraints(tiny_db, tiny_corpus, held_out_take, config, with_emotions, with_constraints):
+def test_real_database_with_emotions_and_constraints(tiny_db, tiny_corpus, held_out_take, config, with_emotions, with_constraints,
+                                                    opencl_device):
     from facesynth.search.inputs import read_utterance
     from facesynth.stages.synthesize import load_database
 

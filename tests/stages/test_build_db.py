@@ -52,7 +52,7 @@ def test_dsc_of_curves_worked_by_hand():
     assert dsc_matrix(coeffs, nodes, samples=3)[:, 0].tolist() == [0.0, 0.0, 0.0]
 
 
-def test_pair_gaps_opencl_matches_numpy_reference():
+def test_pair_gaps_opencl_matches_numpy_reference(opencl_device):
     rng = np.random.default_rng(0)
     n, m3 = 300, 3 * 17
     states = [rng.normal(0, 20, (n, m3)).astype(np.float32) for _ in range(4)]

@@ -20,17 +20,22 @@ def anim(tiny_db, tiny_corpus, held_out_take, tmp_path_factory):
     return d / "a.h5", tiny_corpus / "audio" / f"{held_out_take}.wav"
 
 
-def test_opencl_rasterizer_matches_the_numpy_reference(anim):
+def test_opencl_rasterizer_matches_the_numpy_reference(anim, opencl_device):
     clip = render.read_clip(anim[0])
     cam = render.Camera.fit(clip.vertices[0], 160, 128, 30.0)
     screen = cam.project(clip.vertices[5].astype(np.float64))
     raster = render.OpenCLRasterizer(clip.faces, clip.vertices.shape[1], 160, 128)
-    raster.render(screen, render.vertex_normals(clip.vertices[5], clip.faces, render.face_incidence(clip.vertices.shape[1], clip.faces)))
+    normals = render.vertex_normals(clip.vertices[5], clip.faces, render.face_incidence(clip.vertices.shape[1], clip.faces))
+    image = raster.render(screen, normals)
     ids = raster.triangle_ids()
-    ids = np.where(ids == np.iinfo(np.int32).max, -1, ids)
-    ref = render.triangle_ids_numpy(screen, clip.faces, 160, 128)
-    assert (ref >= 0).mean() > 0.2  # the face covers much of the frame
-    assert (ids == ref).mean() > 0.995
+    reference = render.NumpyRasterizer(clip.faces, clip.vertices.shape[1], 160, 128)
+    ref_image = reference.render(screen, normals)
+    assert (reference.triangle_ids() != np.iinfo(np.int32).max).mean() > 0.2  # the face covers much of the frame
+    # The documented tolerance: the same triangle on all but pixels on shared edges, colour
+    # within one level where the device rounds sqrt/division differently.
+    assert (ids == reference.triangle_ids()).mean() > 0.995
+    same = ids == reference.triangle_ids()
+    assert np.abs(image.astype(int) - ref_image.astype(int))[same].max() <= 1
 
 
 def _audio_of(avi, tmp_path):
@@ -80,21 +85,31 @@ def test_audio_shorter_than_the_motion_is_refused(anim, tmp_path):
     assert not (tmp_path / "x.avi").exists()
 
 
-def test_production_mesh_rasterizes_like_the_reference(shared_assets):
+def _production_face_open_mouth(shared_assets):
     path = shared_assets / "ict-face" / "ict_face.npz"
     if not path.exists():
         pytest.skip("shared assets not present")
     d = np.load(path)
     verts = d["vertices"].astype(np.float64) + 0.8 * d["expr_deltas"][list(d["expr_names"]).index("jawOpen")].astype(np.float64)
     faces = d["faces"].astype(np.int64)
-    cam = render.Camera.fit(verts, 160, 128, 30.0)
-    screen = cam.project(verts)
+    screen = render.Camera.fit(verts, 160, 128, 30.0).project(verts)
+    normals = render.vertex_normals(verts, faces, render.face_incidence(len(verts), faces))
+    mouth = d["loop_mouth"]
+    return verts, faces, screen, normals, (int(screen[mouth, 1].mean()), int(screen[mouth, 0].mean()))
+
+
+def test_production_mesh_shows_a_dark_open_mouth(shared_assets):
+    verts, faces, screen, normals, mouth = _production_face_open_mouth(shared_assets)
+    image = render.NumpyRasterizer(faces, len(verts), 160, 128).render(screen, normals)
+    assert image[mouth].max() < 60  # the open mouth shows the dark interior
+
+
+def test_production_mesh_rasterizes_like_the_reference(shared_assets, opencl_device):
+    verts, faces, screen, normals, mouth = _production_face_open_mouth(shared_assets)
     raster = render.OpenCLRasterizer(faces, len(verts), 160, 128)
-    image = raster.render(screen, render.vertex_normals(verts, faces, render.face_incidence(len(verts), faces)))
+    image = raster.render(screen, normals)
     ids = raster.triangle_ids()
     ids = np.where(ids == np.iinfo(np.int32).max, -1, ids)
     ref = render.triangle_ids_numpy(screen, faces, 160, 128)
     assert (ids == ref).mean() > 0.99
-    mouth = d["loop_mouth"]
-    mx, my = screen[mouth, 0].mean(), screen[mouth, 1].mean()
-    assert image[int(my), int(mx)].max() < 60  # the open mouth shows the dark interior
+    assert image[mouth].max() < 60

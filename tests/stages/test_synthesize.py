@@ -100,7 +100,7 @@ def test_cli_warns_about_phones_without_nodes(tiny_db, tiny_corpus, tmp_path):
             assert f"no node of /{phone}/" in r.output
 
 
-def test_numpy_and_opencl_synthesis_write_the_same_motion(tiny_db, tiny_corpus, held_out_take, config, tmp_path):
+def test_numpy_and_opencl_synthesis_write_the_same_motion(tiny_db, tiny_corpus, held_out_take, config, tmp_path, opencl_device):
     from facesynth.config import Config
 
     tg = tiny_corpus / "labels" / f"{held_out_take}.TextGrid"
