@@ -22,7 +22,7 @@ import numpy as np
 
 from facesynth.config import Config
 from facesynth.formats.labels import Segment, write_textgrid
-from facesynth.opencl import choice, context, kernel, queue, use_opencl
+from facesynth.opencl import build, choice, context, queue, use_opencl
 from facesynth.phonemes import PAU, cmudict, to_festival
 from facesynth.search.costs import step_costs
 from facesynth.search.dp import PANEL, OpenCLDp, dp_numpy
@@ -77,7 +77,8 @@ def read_floor(panels: np.ndarray, steps: int, repeats: int = 3) -> float:
     import pyopencl as cl
 
     ctx, q = context(), queue()
-    k = kernel("read_panels", "read_panels")
+    source = (Path(__file__).parent / "kernels" / "read_panels.cl").read_text("utf-8")
+    k = build(source, "read_panels.cl", PANEL=PANEL).read_panels
     n = panels.shape[1]
     mf = cl.mem_flags
     buf = cl.Buffer(ctx, mf.READ_ONLY | mf.COPY_HOST_PTR, hostbuf=panels)

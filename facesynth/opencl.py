@@ -324,20 +324,27 @@ def kernel_source(name: str) -> str:
     return resources.files("facesynth").joinpath(f"kernels/{name}.cl").read_text("utf-8")
 
 
-@lru_cache(maxsize=None)
-def program(name: str):
-    """Build ``kernels/<name>.cl`` once for the current context."""
+def build(source: str, name: str = "<source>", **defines: int):
+    """Build OpenCL C ``source`` for the current context; ``defines`` become ``-DNAME=value``
+    options, so a kernel's compile-time sizes come from the Python constant that lays out its data."""
     cl = _cl()
+    options = list(BUILD_OPTIONS) + [f"-D{key}={value}" for key, value in sorted(defines.items())]
     try:
-        return cl.Program(context(), kernel_source(name)).build(options=list(BUILD_OPTIONS))
+        return cl.Program(context(), source).build(options=options)
     except cl.Error as exc:  # the probe built, so this is a kernel the device cannot take: keep the log
-        raise RuntimeError(f"OpenCL kernel {name}.cl failed to build on {choice().description}:\n{exc}") from None
+        raise RuntimeError(f"OpenCL kernel {name} failed to build on {choice().description}:\n{exc}") from None
 
 
 @lru_cache(maxsize=None)
-def kernel(program_name: str, kernel_name: str):
-    """One kernel object per (file, name), retrieved once."""
-    return _cl().Kernel(program(program_name), kernel_name)
+def program(name: str, **defines: int):
+    """Build ``kernels/<name>.cl`` once per set of ``defines`` for the current context."""
+    return build(kernel_source(name), f"{name}.cl", **defines)
+
+
+@lru_cache(maxsize=None)
+def kernel(program_name: str, kernel_name: str, **defines: int):
+    """One kernel object per (file, name, defines), retrieved once."""
+    return _cl().Kernel(program(program_name, **defines), kernel_name)
 
 
 def device_name() -> str:

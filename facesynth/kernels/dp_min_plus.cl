@@ -7,7 +7,7 @@
 // Plain operators only: this PoCL build does not inline fmin/select/vload.
 
 #ifndef PANEL
-#define PANEL 96
+#error "build with -DPANEL=<columns per panel> (facesynth.search.dp.PANEL)"
 #endif
 #define NVEC (PANEL / 8)
 

@@ -12,6 +12,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+#: Columns per panel of the panel-major TC matrix (a multiple of 8: the kernel reads float8s).
+#: The one source of this size: ``kernels/dp_min_plus.cl`` is built with ``-DPANEL=<this>``.
 PANEL = 96
 
 
@@ -121,7 +123,7 @@ class OpenCLDp:
         from ..opencl import context, kernel, max_alloc_bytes, queue
 
         self.ctx, self.queue = context(), queue()
-        self.kernel = kernel("dp_min_plus", "min_plus_panels")
+        self.kernel = kernel("dp_min_plus", "min_plus_panels", PANEL=PANEL)
         self.tc = tc if isinstance(tc, PanelMatrix) else PanelMatrix.from_matrix(tc)
         self.n = self.tc.n
         panels = self.tc.panels
