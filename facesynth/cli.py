@@ -142,7 +142,7 @@ def ingest(ctx: Context, manifest: Path, output: Path):
     """
     from .stages import ingest as stage_ingest
 
-    s = stage_ingest.run(manifest, output, ctx.config.settings("ingest"), ctx.overwrite)
+    s = stage_ingest.run(manifest, output, ctx.config.settings("ingest"), ctx.config.settings("align"), ctx.overwrite)
     ctx.say(f"ingested {s['takes']} takes, {s['frames']} frames of {s['markers']} markers at {s['fps']:g} Hz, "
             f"{s['phones']} phone segments ({100 * s['missing_fraction']:.2f}% samples missing) -> {output}")
 
@@ -228,8 +228,9 @@ def synthesize(ctx: Context, db: Path, phonemes, audio, text, emotions, constrai
     settings = ctx.config.settings("synthesize")
     if search:
         settings = dataclasses.replace(settings, search=search)
-    s = stage.run(db, output, settings, ctx.config.settings("ingest"), phones_path=phonemes, emotions_path=emotions,
-                  constraints_path=constraints, audio=audio, text=text, overwrite=ctx.overwrite)
+    s = stage.run(db, output, settings, ctx.config.settings("ingest"), ctx.config.settings("align"),
+                  phones_path=phonemes, emotions_path=emotions, constraints_path=constraints, audio=audio, text=text,
+                  overwrite=ctx.overwrite)
     for phone, how in s["unseen"].items():
         ctx.say(f"warning: the database has no node of /{phone}/; it will be covered by {how}.")
     ctx.detail(f"load {s['load_s']:.3f} s, costs {s['costs_s']:.3f} s, search {s['search_s']:.3f} s on {s['device']}")
