@@ -47,7 +47,8 @@ def build_paper_db(folder: Path) -> Path:
     folder.mkdir(parents=True, exist_ok=True)
     c = Config.load()
     generate(folder / "corpus", "paper", seed=0, overwrite=True)
-    ingest.run(folder / "corpus" / "manifest.csv", folder / "corpus.h5", c.settings("ingest"), overwrite=True)
+    ingest.run(folder / "corpus" / "manifest.csv", folder / "corpus.h5", c.settings("ingest"),
+               c.settings("align"), overwrite=True)
     normalize.run(folder / "corpus.h5", folder / "normalized.h5", c.settings("normalize"), overwrite=True)
     pca.run(folder / "normalized.h5", folder / "pca.h5", c.settings("pca"), overwrite=True)
     build_db.run(folder / "pca.h5", db, c.settings("build_db"), overwrite=True)

@@ -12,7 +12,7 @@ from pathlib import Path
 import click
 
 from . import __version__
-from .config import Config
+from .config import SAMPLE_CORPUS_PRESETS, Config, choices
 from .errors import FacesynthError
 from .progress import set_quiet
 
@@ -107,7 +107,7 @@ def main():
 
 @main.command("sample-corpus")
 @click.argument("out_dir", type=PATH)
-@click.option("--preset", type=click.Choice(["tiny", "small", "paper"]), default="small", show_default=True)
+@click.option("--preset", type=click.Choice(SAMPLE_CORPUS_PRESETS), default="small", show_default=True)
 @click.option("--seed", type=int, default=0, show_default=True)
 @stage
 def sample_corpus_cmd(ctx: Context, out_dir: Path, preset: str, seed: int):
@@ -164,7 +164,7 @@ def ingest(ctx: Context, manifest: Path, output: Path):
     """
     from .stages import ingest as stage_ingest
 
-    s = stage_ingest.run(manifest, output, ctx.config.settings("ingest"), ctx.overwrite)
+    s = stage_ingest.run(manifest, output, ctx.config.settings("ingest"), ctx.config.settings("align"), ctx.overwrite)
     ctx.say(f"ingested {s['takes']} takes, {s['frames']} frames of {s['markers']} markers at {s['fps']:g} Hz, "
             f"{s['phones']} phone segments ({100 * s['missing_fraction']:.2f}% samples missing) -> {output}")
 
@@ -232,7 +232,7 @@ def build_db(ctx: Context, pca_path: Path, output: Path):
 @click.option("--text", default=None, help="What --audio says.")
 @click.option("--emotions", type=EXISTING, default=None, help="Emotion spans: 'start_s end_s emotion' lines, or a TextGrid tier 'emotions'.")
 @click.option("--constraints", type=EXISTING, default=None, help="Motion-node constraints: 'INDEX NODE' or 'TIMEs NODE' lines.")
-@click.option("--search", type=click.Choice(["dp", "greedy"]), default=None, help="Search (default: synthesize.search).")
+@click.option("--search", type=click.Choice(choices("synthesize", "search")), default=None, help="Search (default: synthesize.search).")
 @click.option("-o", "--output", type=PATH, required=True, help="Output motion.h5.")
 @stage
 def synthesize(ctx: Context, db: Path, phonemes, audio, text, emotions, constraints, search, output: Path):
@@ -250,8 +250,9 @@ def synthesize(ctx: Context, db: Path, phonemes, audio, text, emotions, constrai
     settings = ctx.config.settings("synthesize")
     if search:
         settings = dataclasses.replace(settings, search=search)
-    s = stage.run(db, output, settings, ctx.config.settings("ingest"), phones_path=phonemes, emotions_path=emotions,
-                  constraints_path=constraints, audio=audio, text=text, overwrite=ctx.overwrite)
+    s = stage.run(db, output, settings, ctx.config.settings("ingest"), ctx.config.settings("align"),
+                  phones_path=phonemes, emotions_path=emotions, constraints_path=constraints, audio=audio, text=text,
+                  overwrite=ctx.overwrite)
     for phone, how in s["unseen"].items():
         ctx.say(f"warning: the database has no node of /{phone}/; it will be covered by {how}.")
     ctx.detail(f"load {s['load_s']:.3f} s, costs {s['costs_s']:.3f} s, search {s['search_s']:.3f} s on {s['device']}")
@@ -312,7 +313,7 @@ def deform(ctx: Context, motion: Path, mesh: Path, binding: Path, output: Path):
 @main.command()
 @click.argument("anims", nargs=-1, required=True, type=EXISTING)
 @click.option("--audio", "audios", multiple=True, required=True, type=EXISTING, help="Audio of each animation, in order.")
-@click.option("--view", type=click.Choice(["shaded", "markers", "side-by-side"]), default=None, help="Default: render.view.")
+@click.option("--view", type=click.Choice(choices("render", "view")), default=None, help="Default: render.view.")
 @click.option("--compare", type=EXISTING, default=None, help="Second animation for the side-by-side view.")
 @click.option("-o", "--output", type=PATH, required=True, help="Output .avi.")
 @stage

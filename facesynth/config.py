@@ -1,137 +1,186 @@
-"""Typed, per-stage settings.
+"""Typed, per-stage settings, validated when they are loaded.
 
-``configs/default.toml`` is the single source of default values. A stage asks for its
-own section as a frozen dataclass; the resolved section is stored in the artifact the
+``configs/default.toml`` is the single source of default values. Each setting is declared
+once, as a field of its section's frozen dataclass: its Python type, and through
+:func:`setting` its allowed range or choices, unit and source. :meth:`Config.load` checks
+the defaults, a ``--config`` file and every ``--set section.key=value`` against these
+declarations before any work is done: an unknown section or key, a wrong type, a value out
+of range (NaN and infinity included) or an unknown choice is refused with one sentence that
+names where it came from, the key, the value given and what is allowed. A stage asks for
+its own section as a frozen dataclass; the resolved section is stored in the artifact the
 stage writes (root attribute ``config``). Precedence: defaults < ``--config`` file <
-``--set section.key=value`` overrides.
+``--set`` overrides.
+
+``python -m facesynth.config`` prints the settings reference, ``docs/configuration.md``.
 """
 
 from __future__ import annotations
 
 import dataclasses
 import json
+import math
 import sys
+import typing
 from dataclasses import dataclass
 from importlib import resources
 from pathlib import Path
 from typing import Any, Mapping, TypeVar
 
 from .errors import ConfigError
+from .phonemes import PAU, PHONES
 
 if sys.version_info >= (3, 11):
     import tomllib
 else:  # pragma: no cover
     import tomli as tomllib
 
+DEFAULTS_NAME = "configs/default.toml"
+
+#: Presets of ``facesynth sample-corpus --preset`` (sizes in :mod:`facesynth.corpus.generate`).
+SAMPLE_CORPUS_PRESETS: tuple[str, ...] = ("tiny", "small", "paper")
+
+#: Phones a Table IV list may name: the Festival set without the pause.
+_SPOKEN_PHONES: tuple[str, ...] = tuple(p for p in PHONES if p != PAU)
+
+
+@dataclass(frozen=True)
+class Declaration:
+    """What one setting may hold, beyond its Python type (stored in its field's metadata).
+
+    ``ge``/``gt``/``le``/``lt`` bound a number (inclusive/exclusive); ``choices`` lists the
+    allowed strings (for a list: of each element); ``min_items``/``max_items`` bound a list's
+    length; ``finite`` refuses NaN and infinity for floats. ``unit`` and ``source`` are for
+    people: the unit of a number and where its value or meaning comes from."""
+
+    source: str
+    unit: str = ""
+    ge: float | None = None
+    gt: float | None = None
+    le: float | None = None
+    lt: float | None = None
+    choices: tuple[str, ...] | None = None
+    min_items: int = 0
+    max_items: int | None = None
+    finite: bool = True
+
+
+def setting(source: str, *, unit: str = "", ge: float | None = None, gt: float | None = None,
+            le: float | None = None, lt: float | None = None, choices: tuple[str, ...] | None = None,
+            min_items: int = 0, max_items: int | None = None, finite: bool = True) -> Any:
+    """A settings-dataclass field carrying its :class:`Declaration`. It has no default: the
+    default value lives in ``configs/default.toml`` only."""
+    decl = Declaration(source, unit, ge, gt, le, lt, tuple(choices) if choices else None, min_items, max_items, finite)
+    return dataclasses.field(metadata={"setting": decl})
+
 
 @dataclass(frozen=True)
 class IngestSettings:
-    emotions: tuple[str, ...]
-    emotion_aliases: Mapping[str, str]
-    max_audio_mismatch_s: float
-    phone_tiers: tuple[str, ...]
+    emotions: tuple[str, ...] = setting("paper III (four expressions)", min_items=1)
+    emotion_aliases: Mapping[str, str] = setting("not in the paper: other spellings in manifests and emotion files")
+    max_audio_mismatch_s: float = setting("not in the paper: input check", unit="s", ge=0)
+    phone_tiers: tuple[str, ...] = setting("not in the paper: TextGrid tier names", min_items=1)
 
 
 @dataclass(frozen=True)
 class AlignSettings:
-    frame_rate: int
-    sample_rate: int
+    frame_rate: int = setting("pocketsphinx's acoustic front end (its default)", unit="frames/s", ge=1)
+    sample_rate: int = setting("pocketsphinx's English acoustic model", unit="Hz", ge=8000)
 
 
 @dataclass(frozen=True)
 class NormalizeSettings:
-    origin_marker: str
-    rigid_markers: tuple[str, ...]
-    max_gap_frames: int
-    reference_take: str
-    reference_frame: int
-    reference_silence_s: float
+    origin_marker: str = setting("paper III ('a specific marker'); empty: the marker nearest the centroid")
+    rigid_markers: tuple[str, ...] = setting("Eq. 1-2; empty: all markers, as in the paper")
+    max_gap_frames: int = setting("not in the paper: gap filling", unit="frames", ge=0)
+    reference_take: str = setting("Eq. 1-2 reference frame; empty: leading silences of neutral takes")
+    reference_frame: int = setting("Eq. 1-2 reference frame; -1: automatic", unit="frame index", ge=-1)
+    reference_silence_s: float = setting("Eq. 1-2 automatic reference", unit="s", gt=0)
 
 
 @dataclass(frozen=True)
 class PcaSettings:
-    n_components: int
-    variance_target: float
+    n_components: int = setting("paper III (25 components)", ge=1)
+    variance_target: float = setting("paper III (98.53% of the variance); 0: use n_components", unit="fraction", ge=0, le=1)
 
 
 @dataclass(frozen=True)
 class BuildDbSettings:
-    dsc_samples: int
-    use_opencl: bool
+    dsc_samples: int = setting("Eq. 6 (time-warp before the blend)", unit="samples", ge=3)
+    use_opencl: bool = setting("not in the paper: compute device")
 
 
 @dataclass(frozen=True)
 class IsomapSettings:
-    n_neighbors: int
-    max_exact_frames: int
-    image_size: int
-    kernel_sigma_px: float
-    rho: float
+    n_neighbors: int = setting("paper IV (12 neighbours)", ge=2)
+    max_exact_frames: int = setting("not in the paper: landmark Isomap; 0: every frame exactly", unit="frames", ge=0)
+    image_size: int = setting("Eq. 3 image", unit="px", ge=16)
+    kernel_sigma_px: float = setting("Eq. 3 (Gaussian width)", unit="px", gt=0)
+    rho: float = setting("Eq. 3 (0 < rho < 1)", gt=0, lt=1)
 
 
 @dataclass(frozen=True)
 class PruneSettings:
-    jump_z: float
-    max_excursion_s: float
-    outlier_z: float
+    jump_z: float = setting("paper V (chosen on the sample corpus)", unit="robust z-score", gt=0)
+    max_excursion_s: float = setting("paper V (chosen on the sample corpus)", unit="s", gt=0)
+    outlier_z: float = setting("paper V (chosen on the sample corpus)", unit="robust z-score", gt=0)
 
 
 @dataclass(frozen=True)
 class SynthesizeSettings:
-    search: str
-    greedy_clusters: int
-    postprocess: str
-    use_opencl: bool
-    pnt: float
-    alpha1: float
-    alpha2: float
-    alpha3: float
-    alpha4: float
-    alpha5: float
-    alpha6: float
-    huge_penalty: float
-    smoothing_half_window: int
-    smoothing_lambda: float
-    weight_high: float
-    weight_low: float
-    weight_intermediate: float
-    high_phones: tuple[str, ...]
-    low_phones: tuple[str, ...]
-    output_fps: float
-    silence_interpolation: str
+    search: str = setting("paper VI-B, Algorithm 1 (dp); Cao et al. 2004 (greedy)", choices=("dp", "greedy"))
+    greedy_clusters: int = setting("Cao et al. 5.3; 0: unclustered Anime Graph", unit="clusters", ge=0)
+    postprocess: str = setting("paper VII-B, Eq. 16 (deng); Cao et al. 6.3 (cao)", choices=("deng", "cao"))
+    use_opencl: bool = setting("not in the paper: compute device")
+    pnt: float = setting("Tables I-II, Eq. 5 (PNT)", unit="cost", gt=0)
+    alpha1: float = setting("Table I, rule 4", ge=0)
+    alpha2: float = setting("Table I, rules 2-3 (weight of DSC, Eq. 6)", ge=0)
+    alpha3: float = setting("Eq. 7", ge=0)
+    alpha4: float = setting("Table II, rule 2 (0 < alpha4 < 1)", gt=0, lt=1)
+    alpha5: float = setting("Table II", ge=0)
+    alpha6: float = setting("Eq. 5", ge=0)
+    huge_penalty: float = setting("Eq. 10 (HugePenalty)", unit="cost", gt=0)
+    smoothing_half_window: int = setting("Eq. 16 (s = 3)", unit="frames at the capture rate", ge=0)
+    smoothing_lambda: float = setting("Eq. 16 (weight of the smoothness term)", ge=0)
+    weight_high: float = setting("Table IV (2)", gt=0)
+    weight_low: float = setting("Table IV (0.5)", gt=0)
+    weight_intermediate: float = setting("Table IV (1.0)", gt=0)
+    high_phones: tuple[str, ...] = setting("Table IV", choices=_SPOKEN_PHONES)
+    low_phones: tuple[str, ...] = setting("Table IV", choices=_SPOKEN_PHONES)
+    output_fps: float = setting("paper VII-B (30 frames/s)", unit="frames/s", gt=0)
+    silence_interpolation: str = setting("paper VII-B (linear)", choices=("linear", "cubic", "cosine"))
 
 
 @dataclass(frozen=True)
 class EvaluateSettings:
-    split: str
-    lip_markers: tuple[str, ...]
-    closure_mm: float
-    plot_marker: str
+    split: str = setting("paper VIII (test sentences); val: the tuning sentences", choices=("test", "val"))
+    lip_markers: tuple[str, ...] = setting("not in the paper: upper and lower inner-lip markers", min_items=2, max_items=2)
+    closure_mm: float = setting("not in the paper: bilabial closure", unit="mm", gt=0)
+    plot_marker: str = setting("paper Figs. 15-16 (marker #79)")
 
 
 @dataclass(frozen=True)
 class TuneSettings:
-    starts: int
-    max_evaluations: int
-    seed: int
-    spread: float
+    starts: int = setting("paper VI-D (random restarts)", ge=1)
+    max_evaluations: int = setting("paper VI-D", unit="evaluations per start", ge=1)
+    seed: int = setting("not in the paper: random starts", ge=0)
+    spread: float = setting("paper VI-D (random starts)", unit="factor", ge=1)
 
 
 @dataclass(frozen=True)
 class DeformSettings:
-    sigma: float
-    distance_threshold: float
-    apply_head_motion: bool
+    sigma: float = setting("Eq. 14 (the paper's 1.5 on its model)", unit="mesh units", gt=0)
+    distance_threshold: float = setting("paper VII-A (mesh-distance threshold)", unit="mesh units", gt=0)
+    apply_head_motion: bool = setting("Eq. 1-2 (the removed head motion)")
 
 
 @dataclass(frozen=True)
 class RenderSettings:
-    width: int
-    height: int
-    fps: float
-    view: str
-    fov_deg: float
-    use_opencl: bool
+    width: int = setting("not in the paper: video size", unit="px", ge=16)
+    height: int = setting("not in the paper: video size", unit="px", ge=16)
+    fps: float = setting("paper VII-B (30 frames/s)", unit="frames/s", gt=0)
+    view: str = setting("not in the paper: what is drawn", choices=("shaded", "markers", "side-by-side"))
+    fov_deg: float = setting("not in the paper: vertical field of view", unit="degrees", gt=0, lt=180)
+    use_opencl: bool = setting("not in the paper: rasterize on OpenCL (NumPy without a device that builds)")
 
 
 SECTIONS: dict[str, type] = {
@@ -149,15 +198,156 @@ SECTIONS: dict[str, type] = {
     "render": RenderSettings,
 }
 
-_CHOICES = {
-    ("synthesize", "search"): ("dp", "greedy"),
-    ("synthesize", "silence_interpolation"): ("linear", "cubic", "cosine"),
-    ("synthesize", "postprocess"): ("deng", "cao"),
-    ("render", "view"): ("shaded", "markers", "side-by-side"),
-    ("evaluate", "split"): ("test", "val"),
-}
-
 S = TypeVar("S")
+
+
+@dataclass(frozen=True)
+class Declared:
+    """One declared setting: ``section.name``, its Python type and its :class:`Declaration`."""
+
+    section: str
+    name: str
+    type: Any
+    decl: Declaration
+
+    @property
+    def key(self) -> str:
+        return f"{self.section}.{self.name}"
+
+    def type_name(self) -> str:
+        """The kind of value, in words: 'integer', 'number', 'list of strings'..."""
+        origin = typing.get_origin(self.type)
+        if origin is tuple:
+            return "list of strings" if typing.get_args(self.type)[0] is str else "list of numbers"
+        if origin is not None:  # Mapping[str, str]
+            return "table of strings"
+        return {bool: "boolean", str: "string", int: "integer", float: "number"}[self.type]
+
+    def limits(self) -> str:
+        """The allowed range, choices or length in words ('' when any value of the type will do)."""
+        d = self.decl
+        if self.type is bool:
+            return "true or false"
+        if typing.get_origin(self.type) is tuple:
+            parts = []
+            if d.choices:
+                parts.append(f"each one of {', '.join(d.choices)}")
+            if d.min_items and d.max_items == d.min_items:
+                parts.append(f"exactly {d.min_items}")
+            else:
+                if d.min_items:
+                    parts.append(f"at least {d.min_items}")
+                if d.max_items is not None:
+                    parts.append(f"at most {d.max_items}")
+            return ", ".join(parts)
+        if d.choices:
+            return f"one of {', '.join(d.choices)}"
+        bounds = [f"{op} {_number(v)}" for op, v in ((">=", d.ge), (">", d.gt), ("<=", d.le), ("<", d.lt)) if v is not None]
+        return " and ".join(bounds)
+
+    def allowed(self) -> str:
+        """What the setting may hold, in one phrase: 'a number > 0 (mm)', 'one of dp, greedy'."""
+        if self.type is bool or (self.decl.choices and typing.get_origin(self.type) is not tuple):
+            return self.limits()
+        text = f"{'an' if self.type is int else 'a'} {self.type_name()}"
+        if self.type is float and not self.decl.finite:
+            text += ", inf or nan"
+        limits = self.limits()
+        if limits:
+            text += (", " if typing.get_origin(self.type) is tuple else " ") + limits
+        return text + (f" ({self.decl.unit})" if self.decl.unit else "")
+
+    def check(self, value: Any, origin: str) -> Any:
+        """``value`` as stored (ints given for floats become floats), or ConfigError."""
+        ok, stored = self._convert(value)
+        if not ok:
+            raise ConfigError(f"{origin}: '{self.key}' must be {self.allowed()}; got {_literal(value)}.")
+        return stored
+
+    def _convert(self, value: Any) -> tuple[bool, Any]:
+        d = self.decl
+        origin = typing.get_origin(self.type)
+        if origin is tuple:
+            element = typing.get_args(self.type)[0]
+            if not isinstance(value, list) or not all(_is(x, element) for x in value):
+                return False, value
+            if d.choices and any(x not in d.choices for x in value):
+                return False, value
+            if len(value) < d.min_items or (d.max_items is not None and len(value) > d.max_items):
+                return False, value
+            return True, [float(x) if element is float else x for x in value]
+        if origin is not None:  # Mapping[str, str]
+            ok = isinstance(value, dict) and all(isinstance(v, str) for v in value.values())
+            return ok, value
+        if not _is(value, self.type):
+            return False, value
+        if self.type is float:
+            value = float(value)
+            if not math.isfinite(value):
+                return not d.finite, value
+        if self.type in (int, float):
+            if ((d.ge is not None and not value >= d.ge) or (d.gt is not None and not value > d.gt)
+                    or (d.le is not None and not value <= d.le) or (d.lt is not None and not value < d.lt)):
+                return False, value
+        if d.choices and value not in d.choices:
+            return False, value
+        return True, value
+
+
+def _is(value: Any, kind: type) -> bool:
+    """Whether a TOML value has the Python type ``kind`` (an integer is also a float; a bool is no number)."""
+    if isinstance(value, bool):
+        return kind is bool
+    if kind is float:
+        return isinstance(value, (int, float))
+    return isinstance(value, kind)
+
+
+def _number(v: float) -> str:
+    return str(int(v)) if float(v).is_integer() else repr(v)
+
+
+def _literal(value: Any) -> str:
+    """``value`` written as in TOML, for messages."""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, str):
+        return json.dumps(value)
+    if isinstance(value, float):
+        if not math.isfinite(value):
+            return str(value)  # nan, inf, -inf: as TOML writes them
+        text = repr(value)
+        whole = text.lstrip("-")[:-2]
+        if text.endswith(".0") and len(whole) > 6:  # 1000000000.0 -> 1.0e9
+            digits = whole.rstrip("0")
+            text = f"{'-' if value < 0 else ''}{digits[0]}.{digits[1:] or '0'}e{len(whole) - 1}"
+        return text
+    if isinstance(value, list):
+        return "[" + ", ".join(_literal(v) for v in value) + "]"
+    if isinstance(value, dict):
+        return "{ " + ", ".join(f"{k} = {_literal(v)}" for k, v in value.items()) + " }"
+    return str(value)
+
+
+def _declarations() -> dict[str, dict[str, Declared]]:
+    out: dict[str, dict[str, Declared]] = {}
+    for section, cls in SECTIONS.items():
+        hints = typing.get_type_hints(cls)
+        out[section] = {f.name: Declared(section, f.name, hints[f.name], f.metadata["setting"])
+                        for f in dataclasses.fields(cls)}
+    return out
+
+
+#: Every setting's declaration, by section and key (built once from the dataclasses above).
+DECLARATIONS: Mapping[str, Mapping[str, Declared]] = _declarations()
+
+
+def choices(section: str, name: str) -> tuple[str, ...]:
+    """The allowed values of a choice setting, e.g. for a click option's ``click.Choice``."""
+    found = DECLARATIONS[section][name].decl.choices
+    if not found:
+        raise KeyError(f"{section}.{name} is not a choice setting")
+    return found
 
 
 def _read_toml(path: Path) -> dict[str, Any]:
@@ -171,8 +361,8 @@ def _read_toml(path: Path) -> dict[str, Any]:
 
 
 def default_config() -> dict[str, dict[str, Any]]:
-    """The packaged defaults, ``configs/default.toml``, as nested dicts."""
-    text = resources.files("facesynth").joinpath("configs/default.toml").read_text("utf-8")
+    """The packaged defaults, ``configs/default.toml``, as nested dicts (not yet checked)."""
+    text = resources.files("facesynth").joinpath(DEFAULTS_NAME).read_text("utf-8")
     return tomllib.loads(text)
 
 
@@ -188,42 +378,43 @@ def _parse_override(item: str) -> tuple[str, str, Any]:
     return section, name, value
 
 
+def _apply(data: dict[str, dict[str, Any]], layer: dict[str, Any], origin: str) -> None:
+    """Check every value of ``layer`` against its declaration and put it into ``data``."""
+    for section, values in layer.items():
+        if section not in DECLARATIONS:
+            known = ", ".join(DECLARATIONS)
+            raise ConfigError(f"{origin}: unknown section [{section}]; the sections are {known}.")
+        if not isinstance(values, dict):
+            raise ConfigError(f"{origin}: [{section}] must be a table of settings; got {_literal(values)}.")
+        declared = DECLARATIONS[section]
+        for name, value in values.items():
+            if name not in declared:
+                raise ConfigError(f"{origin}: unknown key '{section}.{name}'; the keys of [{section}] are "
+                                  f"{', '.join(declared)}.")
+            data.setdefault(section, {})[name] = declared[name].check(value, origin)
+
+
 class Config:
-    """The resolved configuration: defaults, then a file, then ``--set`` overrides."""
+    """The resolved, checked configuration: defaults, then a file, then ``--set`` overrides."""
 
     def __init__(self, data: dict[str, dict[str, Any]]):
         self._data = data
 
     @classmethod
     def load(cls, path: Path | None = None, overrides: tuple[str, ...] = ()) -> "Config":
-        data = default_config()
-        layers: list[tuple[str, dict[str, Any]]] = []
+        """Read and check the defaults, the file at ``path`` and each ``section.key=value`` of
+        ``overrides``, in that order. Raises ConfigError naming the origin, key and allowed values."""
+        data: dict[str, dict[str, Any]] = {}
+        _apply(data, default_config(), DEFAULTS_NAME)
+        for section, declared in DECLARATIONS.items():
+            lacking = [name for name in declared if name not in data.get(section, {})]
+            if lacking:
+                raise ConfigError(f"{DEFAULTS_NAME}: no default for '{section}.{lacking[0]}'; every setting needs one.")
         if path is not None:
-            layers.append((str(path), _read_toml(Path(path))))
+            _apply(data, _read_toml(Path(path)), str(path))
         for item in overrides:
             section, name, value = _parse_override(item)
-            layers.append((f"--set {item}", {section: {name: value}}))
-        for origin, layer in layers:
-            for section, values in layer.items():
-                if section not in data or not isinstance(values, dict):
-                    known = ", ".join(sorted(data))
-                    raise ConfigError(f"{origin}: unknown section [{section}]; known sections: {known}.")
-                for name, value in values.items():
-                    if name not in data[section]:
-                        raise ConfigError(
-                            f"{origin}: unknown key '{section}.{name}'; see configs/default.toml for the keys."
-                        )
-                    default = data[section][name]
-                    if isinstance(default, (int, float)) and not isinstance(default, bool) and isinstance(value, int) and not isinstance(value, bool):
-                        value = type(default)(value)
-                    if type(value) is not type(default) and not (isinstance(default, float) and isinstance(value, int)):
-                        raise ConfigError(
-                            f"{origin}: '{section}.{name}' must be {type(default).__name__}, got {value!r}."
-                        )
-                    choices = _CHOICES.get((section, name))
-                    if choices and value not in choices:
-                        raise ConfigError(f"{origin}: '{section}.{name}' must be one of {', '.join(choices)}; got {value!r}.")
-                    data[section][name] = value
+            _apply(data, {section: {name: value}}, f"--set {item}")
         return cls(data)
 
     def section(self, name: str) -> dict[str, Any]:
@@ -249,3 +440,34 @@ def settings_json(settings: Any) -> str:
             return {k: plain(x) for k, x in v.items()}
         return v
     return json.dumps({k: plain(v) for k, v in dataclasses.asdict(settings).items()}, sort_keys=True)
+
+
+def reference_markdown() -> str:
+    """The settings reference (``docs/configuration.md``), made from the declarations and the defaults."""
+    defaults = default_config()
+    lines = [
+        "# Configuration reference",
+        "",
+        "<!-- Made by `python -m facesynth.config > docs/configuration.md` from the declarations in",
+        "facesynth/config.py and the defaults in configs/default.toml; a test checks it is current. -->",
+        "",
+        "Every setting, with its type and allowed values, unit, default and source. \"Paper\" is",
+        "Deng & Neumann (2008); equation, table and section numbers refer to it. The comments in",
+        "[`configs/default.toml`](../configs/default.toml) say what each setting does. Precedence:",
+        "defaults < `--config FILE` < `--set section.key=value`. Every value, the defaults included,",
+        "is checked when the configuration is loaded: an unknown section or key, a wrong type, a",
+        "number out of range (NaN and infinity included) or an unknown choice stops the command",
+        "with exit status 1 and one sentence naming the key and what is allowed.",
+    ]
+    for section, declared in DECLARATIONS.items():
+        lines += ["", f"## [{section}]", "", "| key | type | allowed | unit | default | source |",
+                  "|---|---|---|---|---|---|"]
+        for name, d in declared.items():
+            cells = [f"`{name}`", d.type_name(), d.limits() or "any", d.decl.unit or "—",
+                     f"`{_literal(defaults[section][name])}`", d.decl.source]
+            lines.append("| " + " | ".join(c.replace("|", "\\|") for c in cells) + " |")
+    return "\n".join(lines) + "\n"
+
+
+if __name__ == "__main__":  # pragma: no cover
+    print(reference_markdown(), end="")

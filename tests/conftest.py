@@ -85,7 +85,7 @@ def tiny_artifacts(tiny_corpus, config, tmp_path_factory) -> dict[str, Path]:
 
     d = tmp_path_factory.mktemp("artifacts")
     paths = {k: d / f"{k}.h5" for k in ("corpus", "normalized", "pca")}
-    ingest.run(tiny_corpus / "manifest.csv", paths["corpus"], config.settings("ingest"))
+    ingest.run(tiny_corpus / "manifest.csv", paths["corpus"], config.settings("ingest"), config.settings("align"))
     normalize.run(paths["corpus"], paths["normalized"], config.settings("normalize"))
     pca.run(paths["normalized"], paths["pca"], config.settings("pca"))
     return paths
@@ -115,7 +115,7 @@ def small_db_and_truth(tmp_path_factory, config) -> tuple[Path, Path]:
 
     d = tmp_path_factory.mktemp("small")
     generate(d / "corpus", "small", seed=0)
-    ingest.run(d / "corpus" / "manifest.csv", d / "corpus.h5", config.settings("ingest"))
+    ingest.run(d / "corpus" / "manifest.csv", d / "corpus.h5", config.settings("ingest"), config.settings("align"))
     normalize.run(d / "corpus.h5", d / "normalized.h5", config.settings("normalize"))
     pca.run(d / "normalized.h5", d / "pca.h5", config.settings("pca"))
     build_db.run(d / "pca.h5", d / "db.h5", config.settings("build_db"))

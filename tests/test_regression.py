@@ -41,11 +41,13 @@ def test_same_seed_gives_identical_artifacts(tiny_corpus, config, tmp_path):
     from facesynth.stages import build_db, ingest, normalize, pca, synthesize
 
     def chain():
-        ingest.run(tiny_corpus / "manifest.csv", tmp_path / "c.h5", config.settings("ingest"), overwrite=True)
+        ingest.run(tiny_corpus / "manifest.csv", tmp_path / "c.h5", config.settings("ingest"),
+                   config.settings("align"), overwrite=True)
         normalize.run(tmp_path / "c.h5", tmp_path / "n.h5", config.settings("normalize"), overwrite=True)
         pca.run(tmp_path / "n.h5", tmp_path / "p.h5", config.settings("pca"), overwrite=True)
         build_db.run(tmp_path / "p.h5", tmp_path / "d.h5", config.settings("build_db"), overwrite=True)
         synthesize.run(tmp_path / "d.h5", tmp_path / "m.h5", config.settings("synthesize"), config.settings("ingest"),
+                       config.settings("align"),
                        phones_path=tiny_corpus / "labels" / "happy_s004.TextGrid", overwrite=True)
         return {p: hashlib.sha256((tmp_path / p).read_bytes()).hexdigest() for p in ("c.h5", "n.h5", "p.h5", "d.h5", "m.h5")}
 

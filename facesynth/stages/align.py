@@ -57,20 +57,19 @@ def _stressed(word: str, sphinx_phones: tuple[str, ...], extra: dict, stressed: 
     return sphinx_phones
 
 
-def align_samples(samples: np.ndarray, rate: int, text: str, *, extra: dict | None = None,
-                  settings: AlignSettings | None = None, where: str = "audio") -> list[Segment]:
-    """Align mono ``samples`` at ``rate`` Hz to ``text``. Returns Festival phone segments
-    tiling [0, duration] (silences as ``pau``)."""
+def align_samples(samples: np.ndarray, rate: int, text: str, *, settings: AlignSettings, extra: dict | None = None,
+                  where: str = "audio") -> list[Segment]:
+    """Align mono ``samples`` at ``rate`` Hz to ``text`` with the ``[align]`` settings. Returns
+    Festival phone segments (seconds) tiling [0, duration] (silences as ``pau``)."""
     return align_words(samples, rate, text, extra=extra, settings=settings, where=where)[0]
 
 
-def align_words(samples: np.ndarray, rate: int, text: str, *, extra: dict | None = None,
-                settings: AlignSettings | None = None, where: str = "audio",
+def align_words(samples: np.ndarray, rate: int, text: str, *, settings: AlignSettings, extra: dict | None = None,
+                where: str = "audio",
                 retry_tail: bool = True) -> tuple[list[Segment], list[Segment]]:
     """Like :func:`align_samples`, also returning the word segments."""
     import pocketsphinx
 
-    settings = settings or AlignSettings(frame_rate=100, sample_rate=16000)
     extra = extra or {}
     words = normalize_text(text)
     if not words:

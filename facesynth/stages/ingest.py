@@ -15,7 +15,7 @@ from pathlib import Path
 import numpy as np
 
 from ..artifacts import write_artifact, write_strings
-from ..config import IngestSettings, settings_json
+from ..config import AlignSettings, IngestSettings, settings_json
 from ..errors import InputError
 from ..formats.audio import read_audio, resample
 from ..formats.labels import Segment, check_segments, read_phone_segments
@@ -84,19 +84,22 @@ def read_manifest(path: Path, settings: IngestSettings) -> list[ManifestRow]:
     return rows
 
 
-def _segments_for(row: ManifestRow, settings: IngestSettings, samples: np.ndarray, rate: int, where: str) -> list[Segment]:
+def _segments_for(row: ManifestRow, settings: IngestSettings, align_settings: AlignSettings, samples: np.ndarray,
+                  rate: int, where: str) -> list[Segment]:
+    """The take's phone segments (seconds): read from its alignment file, or its transcript
+    aligned to ``samples`` (mono, ``rate`` Hz) with ``align_settings``."""
     if row.alignment is not None:
         if not row.alignment.exists():
             raise InputError(f"{where}: alignment file {row.alignment} not found; fix the manifest's alignment column.")
         return read_phone_segments(row.alignment, settings.phone_tiers)
     from .align import align_samples
 
-    return align_samples(samples, rate, row.transcript, where=where)
+    return align_samples(samples, rate, row.transcript, settings=align_settings, where=where)
 
 
-def ingest(rows: list[ManifestRow], settings: IngestSettings):
-    """Read and check every take. Returns (markers (F,M,3) float32 mm, names, fps, takes,
-    phones, audio list of (samples, rate))."""
+def ingest(rows: list[ManifestRow], settings: IngestSettings, align_settings: AlignSettings):
+    """Read and check every take; a take with only a transcript is aligned with ``align_settings``.
+    Returns (markers (F,M,3) float32 mm, names, fps, takes, phones, audio list of (samples, rate))."""
     markers, audio, starts, counts = [], [], [], []
     phone_take, phone_start, phone_end, phone_label = [], [], [], []
     names = fps = None
@@ -125,7 +128,7 @@ def ingest(rows: list[ManifestRow], settings: IngestSettings):
                 f"{row.audio}: audio lasts {audio_s:.2f} s but the motion {motion_s:.2f} s; "
                 f"trim or pad them to the same length (tolerance {settings.max_audio_mismatch_s:g} s)."
             )
-        segs = _segments_for(row, settings, samples, rate, where)
+        segs = _segments_for(row, settings, align_settings, samples, rate, where)
         source = str(row.alignment or row.audio)
         check_segments(segs, source)
         if segs[-1].end > motion_s + settings.max_audio_mismatch_s:
@@ -145,9 +148,10 @@ def ingest(rows: list[ManifestRow], settings: IngestSettings):
     return np.concatenate(markers).astype(np.float32), names, fps, takes, phones, audio
 
 
-def run(manifest: Path, out: Path, settings: IngestSettings, overwrite: bool = False) -> dict:
+def run(manifest: Path, out: Path, settings: IngestSettings, align_settings: AlignSettings,
+        overwrite: bool = False) -> dict:
     rows = read_manifest(manifest, settings)
-    markers, names, fps, takes, phones, audio = ingest(rows, settings)
+    markers, names, fps, takes, phones, audio = ingest(rows, settings, align_settings)
     rate = audio[0][1]
     samples = [resample(s, r, rate) for s, r in audio]
     audio_start = np.cumsum([0] + [len(s) for s in samples[:-1]])

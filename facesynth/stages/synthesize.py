@@ -16,7 +16,7 @@ from pathlib import Path
 import numpy as np
 
 from ..artifacts import open_artifact, read, read_strings, write_artifact, write_strings
-from ..config import IngestSettings, SynthesizeSettings, settings_json
+from ..config import AlignSettings, IngestSettings, SynthesizeSettings, settings_json
 from ..errors import InputError
 from ..opencl import use_opencl
 from ..phonemes import PAU, viseme
@@ -198,7 +198,10 @@ def render_path(db: Database, utt: Utterance, path: np.ndarray, settings: Synthe
 
 
 def prepare(db: Database, phones_path: Path | None, emotions_path: Path | None, constraints_path: Path | None,
-            ingest_settings: IngestSettings, audio: Path | None = None, text: str | None = None) -> tuple[Utterance, dict[int, int]]:
+            ingest_settings: IngestSettings, audio: Path | None = None, text: str | None = None,
+            align_settings: AlignSettings | None = None) -> tuple[Utterance, dict[int, int]]:
+    """The utterance (phones read from ``phones_path``, or ``audio`` aligned to ``text`` with
+    ``align_settings``, which that needs) with its emotions, and its constraints by phone index."""
     if phones_path is not None:
         utt = read_utterance(phones_path, ingest_settings.phone_tiers)
     elif audio is not None and text is not None:
@@ -206,8 +209,10 @@ def prepare(db: Database, phones_path: Path | None, emotions_path: Path | None, 
         from ..formats.labels import Segment
         from .align import align_samples
 
+        if align_settings is None:
+            raise TypeError("prepare: aligning audio needs align_settings")
         samples, rate = read_audio(audio)
-        segs: list[Segment] = align_samples(samples, rate, text, where=str(audio))
+        segs: list[Segment] = align_samples(samples, rate, text, settings=align_settings, where=str(audio))
         utt = utterance([s.label for s in segs], [s.start for s in segs], [s.end for s in segs])
     else:
         raise InputError("give the utterance's phones with --phonemes, or --audio and --text to align them.")
@@ -262,7 +267,8 @@ def write_head_and_markers(g, names: list[str], reference: np.ndarray, head_r: n
     ht.attrs.update(fps=fps, units="mm")
 
 
-def run(db_path: Path, out: Path, settings: SynthesizeSettings, ingest_settings: IngestSettings, *,
+def run(db_path: Path, out: Path, settings: SynthesizeSettings, ingest_settings: IngestSettings,
+        align_settings: AlignSettings, *,
         phones_path: Path | None = None, emotions_path: Path | None = None, constraints_path: Path | None = None,
         audio: Path | None = None, text: str | None = None, overwrite: bool = False) -> dict:
     from concurrent.futures import ThreadPoolExecutor
@@ -273,7 +279,8 @@ def run(db_path: Path, out: Path, settings: SynthesizeSettings, ingest_settings:
     t0 = time.perf_counter()
     db = load_database(db_path)
     load_s = time.perf_counter() - t0
-    utt, constraints = prepare(db, phones_path, emotions_path, constraints_path, ingest_settings, audio, text)
+    utt, constraints = prepare(db, phones_path, emotions_path, constraints_path, ingest_settings, audio, text,
+                               align_settings)
     inputs = [p for p in (db_path, phones_path, emotions_path, constraints_path, audio) if p is not None]
     with ThreadPoolExecutor(max_workers=1) as pool:  # hash the inputs for provenance while the search runs
         records = pool.submit(lambda: [input_record(p) for p in inputs])

@@ -47,7 +47,7 @@ def test_capture_exports_a_take_and_synthesis_carries_head_motion(tiny_db, tiny_
         assert f.attrs["source"] == "capture" and f["markers"].attrs["fps"] == 30
         assert f["head_rotation"].shape == (len(f["markers"]), 3, 3)
     synthesize.run(tiny_db, tmp_path / "m.h5", config.settings("synthesize"), config.settings("ingest"),
-                   phones_path=tiny_corpus / "labels" / f"{held_out_take}.TextGrid")
+                   config.settings("align"), phones_path=tiny_corpus / "labels" / f"{held_out_take}.TextGrid")
     with h5py.File(tmp_path / "m.h5") as f:
         r = f["head_rotation"][()]
         assert len(r) == len(f["markers"]) and np.allclose(r @ np.swapaxes(r, 1, 2), np.eye(3), atol=1e-5)

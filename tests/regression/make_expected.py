@@ -25,7 +25,7 @@ CHECKED = {
 def tiny_metrics(folder: Path) -> dict:
     c = Config.load()
     generate(folder / "corpus", "tiny", seed=0)
-    ingest.run(folder / "corpus" / "manifest.csv", folder / "corpus.h5", c.settings("ingest"))
+    ingest.run(folder / "corpus" / "manifest.csv", folder / "corpus.h5", c.settings("ingest"), c.settings("align"))
     normalize.run(folder / "corpus.h5", folder / "normalized.h5", c.settings("normalize"))
     pca.run(folder / "normalized.h5", folder / "pca.h5", c.settings("pca"))
     build_db.run(folder / "pca.h5", folder / "db.h5", c.settings("build_db"))

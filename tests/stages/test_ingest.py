@@ -38,14 +38,14 @@ def _rows(d):
 def _refused(d, config, match):
     out = d / "corpus.h5"
     with pytest.raises(InputError, match=match):
-        ingest.run(d / "manifest.csv", out, config.settings("ingest"))
+        ingest.run(d / "manifest.csv", out, config.settings("ingest"), config.settings("align"))
     assert not out.exists()
     assert not list(d.glob("corpus.h5.tmp-*"))
 
 
 def test_good_manifest_is_ingested(corpus, config):
     out = corpus / "corpus.h5"
-    summary = ingest.run(corpus / "manifest.csv", out, config.settings("ingest"))
+    summary = ingest.run(corpus / "manifest.csv", out, config.settings("ingest"), config.settings("align"))
     assert summary["takes"] == 3 and summary["markers"] == 93
     with h5py.File(out) as f:
         assert f["markers"].attrs["units"] == "mm" and f["markers"].attrs["fps"] == 120
@@ -117,7 +117,7 @@ def test_emotion_aliases_are_accepted(corpus, config):
     rows = _rows(corpus)
     rows[0]["emotion"] = "Happiness"
     _write_manifest(corpus, rows)
-    ingest.run(corpus / "manifest.csv", corpus / "c.h5", config.settings("ingest"))
+    ingest.run(corpus / "manifest.csv", corpus / "c.h5", config.settings("ingest"), config.settings("align"))
     with h5py.File(corpus / "c.h5") as f:
         assert f["takes/emotion"][0].decode() == "happy"
 
@@ -127,9 +127,33 @@ def test_a_take_with_only_a_transcript_is_aligned(corpus, config):
     rows[1]["alignment"] = ""  # neutral_s001: align its transcript with pocketsphinx
     _write_manifest(corpus, rows)
     out = corpus / "corpus.h5"
-    ingest.run(corpus / "manifest.csv", out, config.settings("ingest"))
+    ingest.run(corpus / "manifest.csv", out, config.settings("ingest"), config.settings("align"))
     with h5py.File(out) as f:
         take = f["phones/take"][()]
         phones = [p.decode() for p in f["phones/phone"][()]]
     aligned = [p for p, t in zip(phones, take) if t == 1 and p != "pau"]
     assert len(aligned) >= len(rows[1]["transcript"].split())
+
+
+def test_align_settings_reach_the_aligner_of_transcript_only_takes(corpus, tmp_path, monkeypatch):
+    from click.testing import CliRunner
+
+    from facesynth.cli import main
+    from facesynth.formats.labels import read_phone_segments
+    from facesynth.stages import align
+
+    rows = _rows(corpus)
+    aligned = corpus / rows[1]["alignment"]
+    rows[1]["alignment"] = ""
+    _write_manifest(corpus, rows)
+    received = []
+
+    def fake_align(samples, rate, text, *, settings=None, extra=None, where="audio"):
+        received.append(settings)
+        return read_phone_segments(aligned, ("phones",))
+
+    monkeypatch.setattr(align, "align_samples", fake_align)
+    r = CliRunner().invoke(main, ["ingest", str(corpus / "manifest.csv"), "-o", str(tmp_path / "c.h5"),
+                                  "--set", "align.sample_rate=8000", "--set", "align.frame_rate=50"])
+    assert r.exit_code == 0, r.output
+    assert [(s.sample_rate, s.frame_rate) for s in received] == [(8000, 50)]

@@ -15,7 +15,7 @@ def anim(tiny_db, tiny_corpus, held_out_take, tmp_path_factory):
     config = Config.load()
     d = tmp_path_factory.mktemp("render")
     synthesize.run(tiny_db, d / "m.h5", config.settings("synthesize"), config.settings("ingest"),
-                   phones_path=tiny_corpus / "labels" / f"{held_out_take}.TextGrid")
+                   config.settings("align"), phones_path=tiny_corpus / "labels" / f"{held_out_take}.TextGrid")
     deform.run(d / "m.h5", tiny_corpus / "face.obj", tiny_corpus / "markers.csv", d / "a.h5", config.settings("deform"))
     return d / "a.h5", tiny_corpus / "audio" / f"{held_out_take}.wav"
 

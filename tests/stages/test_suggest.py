@@ -20,7 +20,7 @@ def test_suggested_costs_are_what_the_constrained_search_finds(tiny_db, tiny_cor
     for r in rows[1:3]:  # constrain to a suggestion: the search's cost is the suggested cost
         (tmp_path / "c.txt").write_text(f"{c} {r.node}\n")
         synthesize.run(tiny_db, tmp_path / "m.h5", config.settings("synthesize"), config.settings("ingest"),
-                       phones_path=tg, constraints_path=tmp_path / "c.txt", overwrite=True)
+                       config.settings("align"), phones_path=tg, constraints_path=tmp_path / "c.txt", overwrite=True)
         with h5py.File(tmp_path / "m.h5") as f:
             assert f["path"].attrs["total_cost"] == pytest.approx(r.cost, rel=1e-5)
     for r in rows:

@@ -9,7 +9,8 @@ from facesynth.stages import synthesize
 
 
 def _run(db, tg, out, config, **kw):
-    return synthesize.run(db, out, config.settings("synthesize"), config.settings("ingest"), phones_path=tg, **kw)
+    return synthesize.run(db, out, config.settings("synthesize"), config.settings("ingest"),
+                          config.settings("align"), phones_path=tg, **kw)
 
 
 def test_motion_artifact_holds_both_rates_path_costs_and_provenance(tiny_db, tiny_corpus, held_out_take, config, tmp_path):
@@ -119,15 +120,33 @@ def test_audio_and_text_are_aligned_on_the_fly_and_emotion_tiers_read(tiny_db, t
 
     row = next(r for r in csv.DictReader(open(tiny_corpus / "manifest.csv")) if r["take"] == "neutral_s001")
     s = synthesize.run(tiny_db, tmp_path / "a.h5", config.settings("synthesize"), config.settings("ingest"),
-                       audio=tiny_corpus / row["audio"], text=row["transcript"])
+                       config.settings("align"), audio=tiny_corpus / row["audio"], text=row["transcript"])
     assert s["phones"] > len(row["transcript"].split())
     tiers = read_textgrid(tiny_corpus / row["alignment"])
     end = tiers["phones"][-1].end
     write_textgrid(tmp_path / "e.TextGrid", {"phones": tiers["phones"],
                                              "emotions": [Segment(0, end / 2, "sad"), Segment(end / 2, end, "happy")]})
     synthesize.run(tiny_db, tmp_path / "b.h5", config.settings("synthesize"), config.settings("ingest"),
-                   phones_path=tmp_path / "e.TextGrid", emotions_path=tmp_path / "e.TextGrid")
+                   config.settings("align"), phones_path=tmp_path / "e.TextGrid", emotions_path=tmp_path / "e.TextGrid")
     with h5py.File(tmp_path / "b.h5") as f:
         asked = [e.decode() for e in f["path/emotion"][()]]
         mids = (f["path/start"][()] + f["path/end"][()]) / 2
     assert all(e == ("sad" if m < end / 2 else "happy") for e, m in zip(asked, mids))
+
+
+def test_align_settings_reach_the_aligner_of_the_input_audio(tiny_db, tiny_corpus, held_out_take, tmp_path, monkeypatch):
+    from facesynth.formats.labels import read_phone_segments
+    from facesynth.stages import align
+
+    received = []
+
+    def fake_align(samples, rate, text, *, settings=None, extra=None, where="audio"):
+        received.append(settings)
+        return read_phone_segments(tiny_corpus / "labels" / f"{held_out_take}.TextGrid", ("phones",))
+
+    monkeypatch.setattr(align, "align_samples", fake_align)
+    r = CliRunner().invoke(main, ["synthesize", str(tiny_db), "--audio", str(tiny_corpus / "audio" / f"{held_out_take}.wav"),
+                                  "--text", "words", "-o", str(tmp_path / "m.h5"),
+                                  "--set", "align.sample_rate=22050", "--set", "align.frame_rate=200"])
+    assert r.exit_code == 0, r.output
+    assert [(s.sample_rate, s.frame_rate) for s in received] == [(22050, 200)]
