@@ -26,7 +26,7 @@ from facesynth.opencl import build, choice, context, queue, use_opencl
 from facesynth.phonemes import PAU, cmudict, to_festival
 from facesynth.search.costs import step_costs
 from facesynth.search.dp import PANEL, OpenCLDp, dp_numpy
-from facesynth.stages.synthesize import load_database
+from facesynth.model.motiondb import MotionDatabase
 
 PHRASES = {  # paper Table V
     14: "I know you meant it",
@@ -112,7 +112,7 @@ def main() -> None:
     ap.add_argument("--skip-20k", action="store_true")
     args = ap.parse_args()
     db_path = args.db or build_paper_db(args.work)
-    db = load_database(db_path)
+    db = MotionDatabase.read(db_path)
     s = Config.load().settings("synthesize")
     tc = db.transition(s)
     on_device = use_opencl(True)

@@ -11,21 +11,18 @@ import json
 import time
 from pathlib import Path
 
-from facesynth.artifacts import open_artifact, read
 from facesynth.config import Config
-from facesynth.stages.build_db import Nodes
+from facesynth.model.motiondb import MotionDatabase
 from facesynth.stages.prune import contaminated_nodes, detect
-from facesynth.tables import Takes
 
 
 def evaluate(db: Path, truth_csv: Path, overrides: tuple[str, ...] = ()) -> dict:
     settings = Config.load(None, overrides).settings("prune")
-    with open_artifact(db, "motiondb") as f:
-        nodes, takes = Nodes.read(f), Takes.read(f)
-        coeffs, markers, fps = read(f, "coefficients"), read(f, "markers"), float(f["coefficients"].attrs["fps"])
+    database = MotionDatabase.read(db, markers=True)
+    nodes, takes = database.nodes, database.takes
     truth = contaminated_nodes(nodes, takes, truth_csv)
     t0 = time.perf_counter()
-    found = detect(nodes, takes, markers, coeffs, fps, settings)
+    found = detect(nodes, takes, database.frames.markers, database.coeffs, database.fps, settings)
     seconds = time.perf_counter() - t0
     flagged = set(found)
     tp = len(flagged & truth)

@@ -19,8 +19,9 @@ from facesynth.opencl import use_opencl
 from facesynth.search.costs import path_terms, step_costs
 from facesynth.search.dp import dp_bounded, dp_numpy, dp_opencl
 from facesynth.search.greedy import Greedy, anime_graph, cluster_graph, motion_features, pq_matching
-from facesynth.stages.evaluate import heldout, sentence_metrics
-from facesynth.stages.synthesize import load_database, render_path
+from facesynth.evaluation import heldout, sentence_metrics
+from facesynth.model.motiondb import MotionDatabase
+from facesynth.search.synthesis import render_path
 
 
 def timed(fn, repeats: int):
@@ -41,7 +42,7 @@ def main() -> None:
     args = ap.parse_args()
     config = Config.load()
     s, ev = config.settings("synthesize"), config.settings("evaluate")
-    db = load_database(args.db)
+    db = MotionDatabase.read(args.db)
     on_device = use_opencl(s.use_opencl)
     tc = db.transition_panels(s) if on_device else db.transition(s)
     dp, device = (dp_opencl, "OpenCL") if on_device else (dp_numpy, "NumPy")

@@ -168,6 +168,19 @@ def attr(f: h5py.File | h5py.Dataset | h5py.Group, key: str):
     return value.decode("utf-8") if isinstance(value, bytes) else value
 
 
+#: Version of each group encoding (the ``encoding-type`` attribute names the group's layout,
+#: ``encoding-version`` this number); bumped when a group's layout changes incompatibly.
+ENCODING_VERSION = "1"
+
+
+def stamp(group: h5py.Group, encoding: str) -> h5py.Group:
+    """Mark ``group`` with its ``encoding-type`` and ``encoding-version`` (as anndata does), so a
+    reader can tell a group it knows from one it does not. Returns the group."""
+    group.attrs["encoding-type"] = encoding
+    group.attrs["encoding-version"] = ENCODING_VERSION
+    return group
+
+
 def write_strings(group: h5py.Group, key: str, values: Sequence[str]) -> h5py.Dataset:
     """Write a list of strings as a UTF-8 string dataset."""
     return group.create_dataset(key, data=np.array(list(values), dtype=object), dtype=STR)

@@ -375,9 +375,9 @@ def capture(ctx: Context, corpus: Path, db_path: Path, take: str, output: Path):
       facesynth deform truth.h5 --mesh corpus/face.obj --binding corpus/markers.csv -o truth_anim.h5
       facesynth render anim.h5 --audio corpus/audio/sad_s017.wav --view side-by-side --compare truth_anim.h5 -o cmp.avi
     """
-    from .stages import evaluate as stage
+    from .stages import capture as stage
 
-    s = stage.capture(db_path, corpus, take, output, ctx.config.settings("normalize"),
+    s = stage.run(db_path, corpus, take, output, ctx.config.settings("normalize"),
                       ctx.config.settings("synthesize").output_fps, ctx.overwrite)
     ctx.say(f"exported take {s['take']} ({s['frames']} frames) -> {output}")
 
@@ -485,9 +485,9 @@ def db_show(ctx: Context, db_path: Path, phoneme: str | None, node: int | None):
     Example:
       facesynth db show db.h5 --node 42
     """
-    from .stages import prune as stage
+    from .model.motiondb import MotionDatabase, describe
 
-    for line in stage.show(db_path, phoneme, node):
+    for line in describe(MotionDatabase.read(db_path), phoneme, node):
         click.echo(line)
 
 

@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from facesynth.stages import evaluate
+from facesynth import evaluation
 
 EXPECTED = json.loads((Path(__file__).parent / "regression" / "expected_tiny.json").read_text())
 HIGHER_IS_BETTER = {"lip_closure_rate", "emotion_agreement"}
@@ -18,7 +18,7 @@ HIGHER_IS_BETTER = {"lip_closure_rate", "emotion_agreement"}
 
 @pytest.fixture(scope="module")
 def metrics(tiny_db, tiny_artifacts, config):
-    m, _ = evaluate.evaluate(tiny_db, tiny_artifacts["corpus"], config.settings("evaluate"), config.settings("synthesize"),
+    m, _ = evaluation.evaluate(tiny_db, tiny_artifacts["corpus"], config.settings("evaluate"), config.settings("synthesize"),
                              config.settings("normalize"))
     return m
 

@@ -23,70 +23,18 @@ All three are (N, N) float32, row = predecessor candidate i, column = node j.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+import time
 from pathlib import Path
 
-import h5py
 import numpy as np
 
-from ..artifacts import open_artifact, read, read_strings, write_artifact, write_strings
 from ..config import BuildDbSettings, settings_json
 from ..errors import InputError
+from ..model.motiondb import MotionDatabase, Nodes, PairTerms
+from ..model.pca import PcaFrames, PcaModel
+from ..model.tables import Phones, Takes
 from ..opencl import device_description, use_opencl
 from ..phonemes import PAU, viseme
-from ..tables import Phones, Takes, copy_tables
-from .pca import PcaModel, read_pca, write_pca
-
-
-@dataclass
-class Nodes:
-    """The motion-node table; row k is node k. Frames index the artifact's ``coefficients``."""
-
-    phone: list[str]
-    viseme: np.ndarray        # (N,) int
-    emotion: list[str]
-    take: np.ndarray          # (N,) int, row of /takes
-    frame_start: np.ndarray   # (N,) int, global frame index
-    frame_count: np.ndarray   # (N,) int
-    start_s: np.ndarray       # (N,) s from the take's start
-    end_s: np.ndarray
-    prev_phone: list[str]     # triphone context (pau at sentence edges)
-    next_phone: list[str]
-    pre: np.ndarray           # (N,) int, captured predecessor node or -1
-    suc: np.ndarray           # (N,) int, captured successor node or -1
-
-    def __len__(self) -> int:
-        return len(self.phone)
-
-    def frames(self, k: int) -> slice:
-        return slice(int(self.frame_start[k]), int(self.frame_start[k] + self.frame_count[k]))
-
-    def subset(self, keep: np.ndarray) -> "Nodes":
-        """The nodes in ``keep`` (sorted indices), links re-indexed; links to dropped nodes become -1."""
-        remap = -np.ones(len(self), np.int64)
-        remap[keep] = np.arange(len(keep))
-        pick = lambda xs: [xs[k] for k in keep]  # noqa: E731
-        pre = np.where(self.pre[keep] >= 0, remap[np.maximum(self.pre[keep], 0)], -1)
-        suc = np.where(self.suc[keep] >= 0, remap[np.maximum(self.suc[keep], 0)], -1)
-        return Nodes(pick(self.phone), self.viseme[keep], pick(self.emotion), self.take[keep],
-                     self.frame_start[keep], self.frame_count[keep], self.start_s[keep], self.end_s[keep],
-                     pick(self.prev_phone), pick(self.next_phone), pre, suc)
-
-    _STRINGS = ("phone", "emotion", "prev_phone", "next_phone")
-    _ARRAYS = ("viseme", "take", "frame_start", "frame_count", "start_s", "end_s", "pre", "suc")
-
-    def write(self, f: h5py.File) -> None:
-        g = f.create_group("nodes")
-        for key in self._STRINGS:
-            write_strings(g, key, getattr(self, key))
-        for key in self._ARRAYS:
-            g.create_dataset(key, data=getattr(self, key))
-
-    @classmethod
-    def read(cls, f: h5py.File) -> "Nodes":
-        values = {k: read_strings(f, f"nodes/{k}") for k in cls._STRINGS}
-        values.update({k: read(f, f"nodes/{k}") for k in cls._ARRAYS})
-        return cls(**values)
 
 
 def build_nodes(takes: Takes, phones: Phones, fps: float) -> Nodes:
@@ -131,18 +79,7 @@ def build_nodes(takes: Takes, phones: Phones, fps: float) -> Nodes:
                     for k, v in rows.items()})
 
 
-def node_frames(nodes: Nodes, n_frames: int) -> tuple[np.ndarray, np.ndarray]:
-    """Per frame: its node (-1 outside nodes) and relative time in the node (paper III)."""
-    node = -np.ones(n_frames, np.int64)
-    relative = np.full(n_frames, np.nan, np.float32)
-    for k in range(len(nodes)):
-        sl = nodes.frames(k)
-        node[sl] = k
-        relative[sl] = np.linspace(0.0, 1.0, sl.stop - sl.start)
-    return node, relative
-
-
-def resample(sequence: np.ndarray, n: int) -> np.ndarray:
+def warp_to_samples(sequence: np.ndarray, n: int) -> np.ndarray:
     """Linear time-warp of a (c, K) sequence to n samples spanning the same duration."""
     c = len(sequence)
     if c == n:
@@ -157,7 +94,7 @@ def resample(sequence: np.ndarray, n: int) -> np.ndarray:
 def dsc_matrix(coeffs: np.ndarray, nodes: Nodes, samples: int) -> np.ndarray:
     """All-pairs DSC (Eq. 6): dsc[i, j] = DSC(o_i, pre(o_j)); 0 where o_j has no predecessor."""
     n = len(nodes)
-    warped = np.stack([resample(coeffs[nodes.frames(k)], samples) for k in range(n)])  # (N, S, K)
+    warped = np.stack([warp_to_samples(coeffs[nodes.frames(k)], samples) for k in range(n)])  # (N, S, K)
     s = np.linspace(0.0, 1.0, samples)
     d2 = np.zeros((samples - 2, samples))
     for r in range(samples - 2):
@@ -237,50 +174,24 @@ def pair_gaps_opencl(first_pos, last_pos, first_vel, last_vel) -> tuple[np.ndarr
 
 
 def run(pca_path: Path, out: Path, settings: BuildDbSettings, overwrite: bool = False) -> dict:
-    import time
-
+    """Build the database from ``pca_path`` and write ``out`` (a ``motiondb`` artifact); returns
+    a summary with the time of each part in seconds and the device of the pair gaps."""
     if settings.dsc_samples < 3:
         raise InputError("build_db.dsc_samples must be at least 3 (a second derivative needs three samples).")
-    with open_artifact(pca_path, "pca") as f:
-        coeffs = read(f, "coefficients")
-        fps = float(f["coefficients"].attrs["fps"])
-        model = read_pca(f)
-        takes, phones = Takes.read(f), Phones.read(f)
-        nodes = build_nodes(takes, phones, fps)
-        timings = {}
-        t0 = time.perf_counter()
-        dsc = dsc_matrix(coeffs, nodes, settings.dsc_samples)
-        timings["dsc_s"] = time.perf_counter() - t0
-        t0 = time.perf_counter()
-        states = boundary_states(coeffs, nodes, model)
-        gaps = pair_gaps_opencl if use_opencl(settings.use_opencl) else pair_gaps_numpy
-        pgap, vgap = gaps(*states)
-        timings["gaps_s"] = time.perf_counter() - t0
-        with write_artifact(out, "motiondb", config=settings_json(settings), inputs=[pca_path], overwrite=overwrite) as g:
-            copy_tables(f, g)
-            write_pca(g, model)
-            for key in ("markers", "reference", "head_rotation", "head_translation"):
-                f.copy(f[key], g, name=key)
-            c = g.create_dataset("coefficients", data=coeffs)
-            c.attrs["fps"] = fps
-            nodes.write(g)
-            frame_node, relative = node_frames(nodes, len(coeffs))
-            g.create_dataset("frames/node", data=frame_node).attrs["meaning"] = "node of each frame (-1: not in a node); a phoneme cluster is the frames whose node has that phone"
-            g.create_dataset("frames/relative_time", data=relative).attrs["meaning"] = "0 to 1 inside its node (NaN outside nodes)"
-            write_pair_terms(g, dsc, pgap, vgap, states)
-            g["pairs"].attrs["device"] = device_description(settings.use_opencl)  # where PGap/VGap were computed
-    return {"nodes": len(nodes), "with_predecessor": int((nodes.pre >= 0).sum()),
-            "device": device_description(settings.use_opencl), **timings}
-
-
-def write_pair_terms(g: h5py.File, dsc, pgap, vgap, states) -> None:
-    n = len(dsc)
-    chunks = (min(n, 256), n)
-    p = g.create_group("pairs")
-    for key, value, units in (("dsc", dsc, "mm^2/frame^3"), ("pgap", pgap, "mm"), ("vgap", vgap, "mm/frame")):
-        d = p.create_dataset(key, data=value, chunks=chunks)
-        d.attrs["units"] = units
-        d.attrs["layout"] = "row = predecessor candidate i, column = node j"
-    b = g.create_group("boundary")
-    for key, value in zip(("first_pos", "last_pos", "first_vel", "last_vel"), states):
-        b.create_dataset(key, data=value.astype(np.float32))
+    pca = PcaFrames.read(pca_path)
+    coeffs = pca.coefficients
+    nodes = build_nodes(pca.takes, pca.phones, pca.frames.fps)
+    timings = {}
+    t0 = time.perf_counter()
+    dsc = dsc_matrix(coeffs, nodes, settings.dsc_samples)
+    timings["dsc_s"] = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    states = boundary_states(coeffs, nodes, pca.model)
+    gaps = pair_gaps_opencl if use_opencl(settings.use_opencl) else pair_gaps_numpy
+    pgap, vgap = gaps(*states)
+    timings["gaps_s"] = time.perf_counter() - t0
+    device = device_description(settings.use_opencl)
+    db = MotionDatabase(pca.takes, pca.phones, pca.marker_names, pca.model, coeffs, pca.frames, nodes)
+    db.write(out, PairTerms(dsc, pgap, vgap, states, device), config=settings_json(settings), inputs=[pca_path],
+             overwrite=overwrite)
+    return {"nodes": len(nodes), "with_predecessor": int((nodes.pre >= 0).sum()), "device": device, **timings}

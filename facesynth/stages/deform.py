@@ -23,10 +23,12 @@ import numpy as np
 from scipy import sparse
 from scipy.sparse.csgraph import dijkstra
 
-from ..artifacts import open_artifact, read, read_strings, write_artifact, write_strings
+from ..artifacts import check_output
 from ..config import DeformSettings, settings_json
 from ..errors import InputError
 from ..formats.mesh import read_binding, read_mesh
+from ..model.meshanim import MeshAnimation
+from ..model.motion import Motion
 
 
 def edge_graph(vertices: np.ndarray, faces: np.ndarray) -> sparse.csr_matrix:
@@ -70,7 +72,7 @@ def similarity_fit(source: np.ndarray, target: np.ndarray) -> tuple[float, np.nd
 
 
 @dataclass
-class Rig:
+class BoundMesh:
     """A mesh bound to markers: everything needed to animate it from marker motion."""
 
     rest: np.ndarray          # (V, 3) mesh units
@@ -82,7 +84,7 @@ class Rig:
 
 
 def bind(vertices: np.ndarray, faces: np.ndarray, binding: dict[str, int], motion_markers: list[str],
-         settings: DeformSettings, mesh_name: str, binding_name: str) -> Rig:
+         settings: DeformSettings, mesh_name: str, binding_name: str) -> BoundMesh:
     unknown = [m for m in binding if m not in motion_markers]
     if unknown:
         raise InputError(f"{binding_name}: marker(s) {unknown[:5]} are not in the motion; bind only markers it has ({motion_markers[:4]}...).")
@@ -99,59 +101,40 @@ def bind(vertices: np.ndarray, faces: np.ndarray, binding: dict[str, int], motio
     distances = mesh_distances(vertices, faces, sources, settings.distance_threshold)
     weights = deformation_weights(distances, settings.sigma, settings.distance_threshold)
     unreached = int((np.asarray(weights.sum(axis=1)).ravel() == 0).sum())
-    return Rig(vertices, faces, names, sources, weights, unreached)
+    return BoundMesh(vertices, faces, names, sources, weights, unreached)
 
 
-def animate(rig: Rig, markers: np.ndarray, marker_names: list[str], reference: np.ndarray,
+def animate(bound: BoundMesh, markers: np.ndarray, marker_names: list[str], reference: np.ndarray,
             head: tuple[np.ndarray, np.ndarray] | None = None) -> tuple[np.ndarray, dict]:
     """Vertices (T, V, 3) float32 for marker frames (T, M, 3) mm, optionally moved by a head
     motion (rotations (T, 3, 3), translations (T, 3) mm in the marker frame). Also returns
     the fit report."""
     from ..motion.head import apply
 
-    cols = np.array([marker_names.index(m) for m in rig.markers])
-    s, r, offset, residual = similarity_fit(reference[cols].astype(np.float64), rig.rest[rig.vertex_of])
+    cols = np.array([marker_names.index(m) for m in bound.markers])
+    s, r, offset, residual = similarity_fit(reference[cols].astype(np.float64), bound.rest[bound.vertex_of])
     motion = (markers[:, cols] - reference[cols]) @ (s * r).T  # (T, K, 3) in mesh units
-    out = np.empty((len(markers),) + rig.rest.shape, np.float32)
+    out = np.empty((len(markers),) + bound.rest.shape, np.float32)
     for t in range(len(markers)):
-        out[t] = rig.rest + rig.weights @ motion[t]
+        out[t] = bound.rest + bound.weights @ motion[t]
         if head is not None:
             out[t] = apply(out[t], head[0][t], head[1][t], s, r, offset)
     return out, {"scale": s, "fit_rms": residual}
 
 
-def run(motion: Path, mesh: Path, binding_path: Path, out: Path, settings: DeformSettings, overwrite: bool = False) -> dict:
-    from ..artifacts import check_output
-
+def run(motion_path: Path, mesh: Path, binding_path: Path, out: Path, settings: DeformSettings,
+        overwrite: bool = False) -> dict:
+    """Deform ``mesh`` by the marker motion of ``motion_path`` and write ``out`` (a ``meshanim``
+    artifact); returns a summary with the similarity fit."""
     check_output(out, overwrite)
-    with open_artifact(motion, "motion") as f:
-        markers = read(f, "markers")
-        fps = float(f["markers"].attrs["fps"])
-        names = read_strings(f, "marker_names")
-        reference = read(f, "reference")
-        head = None
-        if settings.apply_head_motion:
-            if "head_rotation" not in f:
-                raise InputError(f"{motion}: no head motion to put back; set deform.apply_head_motion=false.")
-            head = (read(f, "head_rotation"), read(f, "head_translation"))
+    motion = Motion.read(motion_path)
+    head = motion.head(motion_path) if settings.apply_head_motion else None
     vertices, faces = read_mesh(mesh)
     binding = read_binding(binding_path)
-    rig = bind(vertices, faces, binding, names, settings, str(mesh), str(binding_path))
-    frames, fit = animate(rig, markers, names, reference, head)
-    with write_artifact(out, "meshanim", config=settings_json(settings), inputs=[motion, mesh, binding_path], overwrite=overwrite) as g:
-        v = g.create_dataset("vertices", data=frames, chunks=(1,) + frames.shape[1:])
-        v.attrs.update(fps=fps, units="mesh units")
-        g.create_dataset("rest", data=vertices.astype(np.float32))
-        g.create_dataset("faces", data=faces.astype(np.int32))
-        w = g.create_group("weights")
-        w.create_dataset("data", data=rig.weights.data)
-        w.create_dataset("indices", data=rig.weights.indices)
-        w.create_dataset("indptr", data=rig.weights.indptr)
-        w.attrs["shape"] = rig.weights.shape
-        write_strings(w, "markers", rig.markers)
-        w.create_dataset("vertex_of", data=rig.vertex_of)
-        m = g.create_dataset("markers", data=markers)
-        m.attrs.update(fps=fps, units="mm")
-        write_strings(g, "marker_names", names)
-        g.attrs["fit_rms"] = fit["fit_rms"]
-    return {"frames": len(frames), "vertices": len(vertices), "unreached": rig.unreached, **fit}
+    names = motion.marker_names
+    bound = bind(vertices, faces, binding, names, settings, str(mesh), str(binding_path))
+    frames, fit = animate(bound, motion.markers, names, motion.reference, head)
+    MeshAnimation(frames, motion.fps, vertices, faces, motion.markers, names, bound.weights, bound.markers,
+                  bound.vertex_of, fit["fit_rms"]).write(
+        out, config=settings_json(settings), inputs=[motion_path, mesh, binding_path], overwrite=overwrite)
+    return {"frames": len(frames), "vertices": len(vertices), "unreached": bound.unreached, **fit}

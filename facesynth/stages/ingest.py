@@ -2,7 +2,7 @@
 
 The manifest is a CSV with the columns ``take, mocap, audio, alignment, transcript,
 emotion, sentence, split`` (paths relative to the manifest). A take with an empty
-``alignment`` and a ``transcript`` is aligned with :mod:`facesynth.stages.align`.
+``alignment`` and a ``transcript`` is aligned with :mod:`facesynth.alignment`.
 Phones are mapped to the Festival set; marker gaps stay NaN here.
 """
 
@@ -14,7 +14,6 @@ from pathlib import Path
 
 import numpy as np
 
-from ..artifacts import write_artifact, write_strings
 from ..config import AlignSettings, IngestSettings, settings_json
 from ..errors import InputError
 from ..formats.audio import read_audio, resample
@@ -22,7 +21,8 @@ from ..formats.labels import Segment, check_segments, read_phone_segments
 from ..formats.mocap import read_mocap
 from ..phonemes import map_phones
 from ..progress import progress
-from ..tables import Phones, Takes
+from ..model.corpus import Corpus
+from ..model.tables import Phones, Takes
 
 REQUIRED_COLUMNS = ("take", "mocap", "audio", "alignment", "emotion")
 SPLITS = ("train", "val", "test")
@@ -92,7 +92,7 @@ def _segments_for(row: ManifestRow, settings: IngestSettings, align_settings: Al
         if not row.alignment.exists():
             raise InputError(f"{where}: alignment file {row.alignment} not found; fix the manifest's alignment column.")
         return read_phone_segments(row.alignment, settings.phone_tiers)
-    from .align import align_samples
+    from ..alignment import align_samples
 
     return align_samples(samples, rate, row.transcript, settings=align_settings, where=where)
 
@@ -150,23 +150,15 @@ def ingest(rows: list[ManifestRow], settings: IngestSettings, align_settings: Al
 
 def run(manifest: Path, out: Path, settings: IngestSettings, align_settings: AlignSettings,
         overwrite: bool = False) -> dict:
+    """Read the takes of ``manifest`` and write ``out`` (a ``corpus`` artifact); returns a summary."""
     rows = read_manifest(manifest, settings)
     markers, names, fps, takes, phones, audio = ingest(rows, settings, align_settings)
     rate = audio[0][1]
     samples = [resample(s, r, rate) for s, r in audio]
     audio_start = np.cumsum([0] + [len(s) for s in samples[:-1]])
-    with write_artifact(out, "corpus", config=settings_json(settings), inputs=[manifest], overwrite=overwrite) as f:
-        d = f.create_dataset("markers", data=markers, chunks=(min(len(markers), 1024), markers.shape[1], 3))
-        d.attrs["units"] = "mm"
-        d.attrs["fps"] = fps
-        write_strings(f, "marker_names", names)
-        takes.write(f)
-        phones.write(f)
-        a = f.create_group("audio")
-        a.create_dataset("samples", data=np.concatenate(samples).astype(np.float32))
-        a.create_dataset("start", data=audio_start.astype(np.int64))
-        a.create_dataset("count", data=np.array([len(s) for s in samples], np.int64))
-        a.attrs["sample_rate"] = rate
+    Corpus(takes, phones, names, markers, fps, np.concatenate(samples).astype(np.float32), audio_start,
+           np.array([len(s) for s in samples], np.int64), rate).write(
+        out, config=settings_json(settings), inputs=[manifest], overwrite=overwrite)
     missing = float(np.isnan(markers).any(axis=2).mean())
     return {"takes": len(takes), "frames": int(markers.shape[0]), "markers": len(names), "phones": len(phones),
             "fps": fps, "missing_fraction": missing}

@@ -23,37 +23,20 @@ from __future__ import annotations
 import html
 import time
 import warnings
-from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 from scipy.ndimage import gaussian_filter
 from scipy.spatial import Delaunay
 
-from ..artifacts import open_artifact, read, read_strings, write_artifact, write_strings
+from ..artifacts import check_output
 from ..config import IsomapSettings, settings_json
 from ..errors import InputError
+from ..model.isomap import Cluster, PhonemeMaps
+from ..model.motiondb import MotionDatabase, Nodes
 from ..progress import progress
-from .build_db import Nodes
-from .pca import read_pca, write_pca
 
 EMOTION_COLOURS = {"neutral": (0, 0, 0), "angry": (220, 30, 30), "sad": (20, 160, 40), "happy": (30, 70, 230)}
-
-
-@dataclass
-class Cluster:
-    """One phoneme cluster: frame rows, their node, relative time, emotion and 2D maps."""
-
-    phone: str
-    frames: np.ndarray        # (n,) rows of the database's coefficients
-    node: np.ndarray          # (n,)
-    relative_time: np.ndarray  # (n,) in [0, 1]
-    emotion: list[str]
-    isomap: np.ndarray        # (n, 2)
-    pca_map: np.ndarray       # (n, 2)
-    neighbors: int
-    exact: int
-    note: str
 
 
 def cluster_frames(nodes: Nodes, phone: str) -> tuple[np.ndarray, np.ndarray, np.ndarray, list[str]]:
@@ -107,7 +90,9 @@ def build_clusters(coeffs: np.ndarray, nodes: Nodes, settings: IsomapSettings, p
         frames, node, rel, emo = cluster_frames(nodes, phone)
         x = coeffs[frames].astype(np.float64)
         iso, k, exact, note = embed(x, settings.n_neighbors, settings.max_exact_frames)
-        out.append(Cluster(phone, frames, node, rel, emo, iso, pca_map(x), k, exact, note))
+        flat = pca_map(x)
+        out.append(Cluster(phone, frames, node, rel, emo, iso, flat, k, exact, note, coeffs[frames],
+                           {"isomap": _triangulate(iso), "pca_map": _triangulate(flat)}))
     return out
 
 
@@ -205,38 +190,21 @@ def write_index(folder: Path, clusters: list[Cluster], trajectories: dict[str, l
 
 
 def run(db_path: Path, out: Path, settings: IsomapSettings, images: Path | None = None, overwrite: bool = False) -> dict:
-    from ..artifacts import check_output
-
+    """Embed every phoneme cluster of ``db_path``, write ``out`` (an ``isomap`` artifact) and,
+    with ``images``, the PNGs and ``index.html`` there; returns a summary."""
     check_output(out, overwrite)
     if settings.n_neighbors < 2:
         raise InputError("isomap.n_neighbors must be at least 2.")
-    with open_artifact(db_path, "motiondb") as f:
-        coeffs = read(f, "coefficients")
-        nodes = Nodes.read(f)
-        model = read_pca(f)
-        names = read_strings(f, "marker_names")
+    db = MotionDatabase.read(db_path)
     t0 = time.perf_counter()
-    clusters = build_clusters(coeffs, nodes, settings)
+    clusters = build_clusters(db.coeffs, db.nodes, settings)
     embed_s = time.perf_counter() - t0
     if images is not None:
         images.mkdir(parents=True, exist_ok=True)
         trajectories = {c.phone: save_cluster_images(c, images, settings) for c in progress(clusters, "images")}
         write_index(images, clusters, trajectories, settings.image_size)
-    with write_artifact(out, "isomap", config=settings_json(settings), inputs=[db_path], overwrite=overwrite) as g:
-        write_pca(g, model)
-        write_strings(g, "marker_names", names)
-        root = g.create_group("clusters")
-        for c in clusters:
-            h = root.create_group(c.phone)
-            h.create_dataset("frames", data=c.frames)
-            h.create_dataset("node", data=c.node)
-            h.create_dataset("relative_time", data=c.relative_time)
-            write_strings(h, "emotion", c.emotion)
-            h.create_dataset("coefficients", data=coeffs[c.frames])
-            for kind, points in (("isomap", c.isomap), ("pca_map", c.pca_map)):
-                h.create_dataset(kind, data=points)
-                h.create_dataset(f"{kind}_triangles", data=_triangulate(points))
-            h.attrs.update(n_neighbors=c.neighbors, exact_frames=c.exact, note=c.note)
+    PhonemeMaps(db.model, db.marker_names, {c.phone: c for c in clusters}).write(
+        out, config=settings_json(settings), inputs=[db_path], overwrite=overwrite)
     small = {c.phone: c.note for c in clusters if c.note}
     return {"clusters": len(clusters), "frames": int(sum(len(c.frames) for c in clusters)), "embed_s": embed_s,
             "largest": max(len(c.frames) for c in clusters), "notes": small}
@@ -250,14 +218,10 @@ def _triangulate(points: np.ndarray) -> np.ndarray:
 def pick(isomap_path: Path, phone: str, x: float, y: float, use_pca_map: bool = False) -> tuple[np.ndarray, list[str], dict]:
     """Fig. 7: the frame at a picked 2D point as markers (M, 3) mm, by barycentric
     interpolation of the three captured frames of the covering triangle."""
-    with open_artifact(isomap_path, "isomap") as f:
-        if phone not in f["clusters"]:
-            raise InputError(f"{isomap_path}: no phoneme cluster /{phone}/; it has {', '.join(sorted(f['clusters']))}.")
-        kind = "pca_map" if use_pca_map else "isomap"
-        points = read(f, f"clusters/{phone}/{kind}")
-        coeffs, node = read(f, f"clusters/{phone}/coefficients"), read(f, f"clusters/{phone}/node")
-        model = read_pca(f)
-        names = read_strings(f, "marker_names")
+    maps = PhonemeMaps.read(isomap_path)
+    cluster = maps.cluster(phone, isomap_path)
+    kind = "pca_map" if use_pca_map else "isomap"
+    points = getattr(cluster, kind)
     hit = barycentric_pick(points, (x, y))
     if hit is None:
         lo, hi = points.min(0), points.max(0)
@@ -266,8 +230,8 @@ def pick(isomap_path: Path, phone: str, x: float, y: float, use_pca_map: bool = 
             f"(x {lo[0]:.3g} to {hi[0]:.3g}, y {lo[1]:.3g} to {hi[1]:.3g}); pick a point inside it."
         )
     corners, weights = hit
-    frame = (weights[:, None] * coeffs[corners].astype(np.float64)).sum(0)
-    info = {"corners": corners.tolist(), "weights": weights.round(6).tolist(), "nodes": node[corners].tolist()}
-    return model.reconstruct(frame[None])[0], names, info
+    frame = (weights[:, None] * cluster.coefficients[corners].astype(np.float64)).sum(0)
+    info = {"corners": corners.tolist(), "weights": weights.round(6).tolist(), "nodes": cluster.node[corners].tolist()}
+    return maps.model.reconstruct(frame[None])[0], maps.marker_names, info
 
 

@@ -1,5 +1,4 @@
-"""``facesynth prune`` and ``facesynth db show``: browse and clean the motion-node database
-(paper V).
+"""``facesynth prune``: clean the motion-node database (paper V).
 
 Pruning writes a new ``motiondb`` artifact without the removed nodes; the input is never
 changed. Links into removed nodes become "none" (so Table I rule 4 applies to their
@@ -27,12 +26,11 @@ from pathlib import Path
 
 import numpy as np
 
-from ..artifacts import open_artifact, read, read_strings, write_artifact, write_strings
+from ..artifacts import check_output
 from ..config import PruneSettings, settings_json
 from ..errors import InputError
-from ..tables import Takes, copy_tables
-from .build_db import Nodes, node_frames, write_pair_terms
-from .pca import read_pca, write_pca
+from ..model.motiondb import MotionDatabase, Nodes, Pruned
+from ..model.tables import Takes
 
 
 def parse_ids(text: str, n: int) -> list[int]:
@@ -148,97 +146,45 @@ def detect(nodes: Nodes, takes: Takes, markers: np.ndarray, coeffs: np.ndarray, 
     return dict(sorted(found.items()))
 
 
-def prune(db_path: Path, out: Path, remove: list[int], reasons: list[str], settings: PruneSettings, overwrite: bool) -> dict:
-    with open_artifact(db_path, "motiondb") as f:
-        nodes = Nodes.read(f)
-        n = len(nodes)
-        keep = np.setdiff1d(np.arange(n), remove)
-        if len(keep) == 0:
-            raise InputError(f"{db_path}: removing every node would leave an empty database.")
-        kept = nodes.subset(keep)
-        original = read(f, "pruned/original_id") if "pruned" in f else np.arange(n)
-        earlier_ids = list(read(f, "pruned/removed_id")) if "pruned" in f else []
-        earlier_reasons = read_strings(f, "pruned/reason") if "pruned" in f else []
-        with write_artifact(out, "motiondb", config=settings_json(settings), inputs=[db_path], overwrite=overwrite) as g:
-            copy_tables(f, g)
-            write_pca(g, read_pca(f))
-            for key in ("coefficients", "markers", "reference", "head_rotation", "head_translation"):
-                if key in f:
-                    f.copy(f[key], g, name=key)
-            kept.write(g)
-            frame_node, relative = node_frames(kept, len(f["coefficients"]))
-            g.create_dataset("frames/node", data=frame_node)
-            g.create_dataset("frames/relative_time", data=relative)
-            pairs = {}
-            for key in ("dsc", "pgap", "vgap"):
-                src = f[f"pairs/{key}"]
-                m = np.empty((len(keep), len(keep)), np.float32)
-                for a in range(0, len(keep), 512):
-                    m[a : a + 512] = src[keep[a : a + 512]][:, keep]
-                pairs[key] = m
-            lost_pre = (nodes.pre[keep] >= 0) & (kept.pre < 0)
-            pairs["dsc"][:, lost_pre] = 0.0  # their predecessor is gone: rule 4 applies, DSC unused
-            states = tuple(read(f, f"boundary/{k}")[keep] for k in ("first_pos", "last_pos", "first_vel", "last_vel"))
-            write_pair_terms(g, pairs["dsc"], pairs["pgap"], pairs["vgap"], states)
-            p = g.create_group("pruned")
-            p.create_dataset("original_id", data=original[keep])
-            p.create_dataset("removed_id", data=np.array(earlier_ids + [int(original[i]) for i in remove], np.int64))
-            write_strings(p, "reason", earlier_reasons + reasons)
+def prune(db: MotionDatabase, out: Path, remove: list[int], reasons: list[str], settings: PruneSettings,
+          overwrite: bool) -> dict:
+    """Write ``db`` without the nodes ``remove`` (ids in ``db``) to ``out``, recording ``reasons``;
+    ``db`` must have been read with its markers."""
+    n = len(db.nodes)
+    keep = np.setdiff1d(np.arange(n), remove)
+    if len(keep) == 0:
+        raise InputError(f"{db.path}: removing every node would leave an empty database.")
+    kept = db.nodes.subset(keep)
+    before = db.pruned or Pruned(np.arange(n), np.zeros(0, np.int64), [])
+    pairs = db.read_pairs().subset(keep)
+    lost_pre = (db.nodes.pre[keep] >= 0) & (kept.pre < 0)
+    pairs.dsc[:, lost_pre] = 0.0  # their predecessor is gone: rule 4 applies, DSC unused
+    pruned = Pruned(before.original_id[keep],
+                    np.concatenate([before.removed_id, before.original_id[np.asarray(remove, np.int64)]]).astype(np.int64),
+                    before.reason + reasons)
+    cleaned = MotionDatabase(db.takes, db.phones, db.marker_names, db.model, db.coeffs, db.frames, kept, pruned)
+    cleaned.write(out, pairs, config=settings_json(settings), inputs=[db.path], overwrite=overwrite)
     return {"removed": len(remove), "kept": len(keep), "links_cut": int(lost_pre.sum())}
 
 
 def run(db_path: Path, out: Path, settings: PruneSettings, remove: str | None, auto: bool, reason: str, overwrite: bool) -> dict:
-    from ..artifacts import check_output
-
+    """Remove the nodes ``remove`` ('3,5,10-12') or, with ``auto``, the contaminated ones found
+    by :func:`detect`, writing ``out``; nothing is written when there is nothing to remove."""
     check_output(out, overwrite)
     if (remove is None) == (not auto):
         raise InputError("give exactly one of --remove IDS or --auto.")
-    with open_artifact(db_path, "motiondb") as f:
-        nodes = Nodes.read(f)
-        if auto:
-            found = detect(nodes, Takes.read(f), read(f, "markers"), read(f, "coefficients"),
-                           float(f["coefficients"].attrs["fps"]), settings)
-        else:
-            found = {i: reason for i in parse_ids(remove, len(nodes))}
+    db = MotionDatabase.read(db_path, markers=True)
+    if auto:
+        found = detect(db.nodes, db.takes, db.frames.markers, db.coeffs, db.fps, settings)
+    else:
+        found = {i: reason for i in parse_ids(remove, len(db.nodes))}
     ids = list(found)
     reasons = [f"auto: {kind}" if auto else kind for kind in found.values()]
     if not ids:
-        return {"removed": 0, "kept": len(nodes), "links_cut": 0, "found": {}}
-    summary = prune(db_path, out, ids, reasons, settings, overwrite)
+        return {"removed": 0, "kept": len(db.nodes), "links_cut": 0, "found": {}}
+    summary = prune(db, out, ids, reasons, settings, overwrite)
     summary["found"] = found
     return summary
-
-
-def show(db_path: Path, phone: str | None = None, node: int | None = None) -> list[str]:
-    """Lines describing the database's nodes (all, one phoneme's, or one node in detail)."""
-    with open_artifact(db_path, "motiondb") as f:
-        nodes = Nodes.read(f)
-        takes = Takes.read(f)
-        fps = float(f["coefficients"].attrs["fps"])
-        original = read(f, "pruned/original_id") if "pruned" in f else None
-    if node is not None:
-        if not 0 <= node < len(nodes):
-            raise InputError(f"{db_path}: node {node} does not exist (0 to {len(nodes) - 1}).")
-        k = node
-        lines = [f"node {k}: /{nodes.phone[k]}/ in [{nodes.prev_phone[k]} {nodes.phone[k]} {nodes.next_phone[k]}], {nodes.emotion[k]}",
-                 f"  take {takes.name[nodes.take[k]]} ({takes.sentence[nodes.take[k]]}), {nodes.start_s[k]:.3f}-{nodes.end_s[k]:.3f} s, "
-                 f"{nodes.frame_count[k]} frames at {fps:g} Hz",
-                 f"  captured predecessor: {nodes.pre[k] if nodes.pre[k] >= 0 else 'none'}, successor: {nodes.suc[k] if nodes.suc[k] >= 0 else 'none'}"]
-        if original is not None:
-            lines.append(f"  id in the unpruned database: {original[k]}")
-        same = [j for j in range(len(nodes)) if nodes.phone[j] == nodes.phone[k] and j != k
-                and nodes.prev_phone[j] == nodes.prev_phone[k] and nodes.next_phone[j] == nodes.next_phone[k]]
-        lines.append(f"  same triphone context: {same[:20] if same else 'none'}")
-        return lines
-    if phone is not None and phone not in nodes.phone:
-        raise InputError(f"{db_path}: no node of /{phone}/; phones present: {' '.join(sorted(set(nodes.phone)))}.")
-    lines = ["id\tphone\tcontext\temotion\ttake\tframes\tpre\tsuc"]
-    for k in range(len(nodes)):
-        if phone is not None and nodes.phone[k] != phone:
-            continue
-        lines.append(f"{k}\t{nodes.phone[k]}\t{nodes.prev_phone[k]}-{nodes.phone[k]}+{nodes.next_phone[k]}\t{nodes.emotion[k]}\t"
-                     f"{takes.name[nodes.take[k]]}\t{nodes.frame_start[k]}+{nodes.frame_count[k]}\t{nodes.pre[k]}\t{nodes.suc[k]}")
-    return lines
 
 
 def contaminated_nodes(nodes: Nodes, takes: Takes, truth_csv: Path) -> set[int]:

@@ -18,10 +18,11 @@ from pathlib import Path
 import numpy as np
 from scipy import sparse
 
-from ..artifacts import atomic_path, open_artifact, read
+from ..artifacts import atomic_path
 from ..config import RenderSettings
 from ..errors import InputError
 from ..formats.audio import read_audio, resample, write_wav
+from ..model.meshanim import MeshAnimation
 from ..progress import progress
 
 SKIN = np.array([0.86, 0.68, 0.58, 1.0], np.float32)
@@ -252,21 +253,6 @@ def draw_markers(points_px: np.ndarray, width: int, height: int, radius: int = 3
     return img
 
 
-@dataclass
-class Clip:
-    vertices: np.ndarray   # (T, V, 3)
-    faces: np.ndarray
-    markers: np.ndarray    # (T, M, 3) mm, head frame
-    fps: float
-    path: Path
-
-
-def read_clip(path: Path) -> Clip:
-    with open_artifact(path, "meshanim") as f:
-        return Clip(read(f, "vertices"), read(f, "faces").astype(np.int64), read(f, "markers"),
-                    float(f["vertices"].attrs["fps"]), Path(path))
-
-
 def clip_audio(audio_path: Path, n_frames: int, fps: float, rate: int) -> np.ndarray:
     """The clip's audio at ``rate``, cut or padded to exactly n_frames / fps seconds."""
     samples, src_rate = read_audio(audio_path)
@@ -277,7 +263,7 @@ def clip_audio(audio_path: Path, n_frames: int, fps: float, rate: int) -> np.nda
     return np.pad(samples, (0, max(0, need - len(samples))))[:need]
 
 
-def render_frames(clip: Clip, settings: RenderSettings, compare: Clip | None = None):
+def render_frames(clip: MeshAnimation, settings: RenderSettings, compare: MeshAnimation | None = None):
     """Yield RGB frames (H, W, 3) uint8 for one clip in the configured view."""
     view = settings.view
     width = settings.width // 2 if view == "side-by-side" else settings.width
@@ -313,13 +299,13 @@ def run(anims: list[Path], audios: list[Path], out: Path, settings: RenderSettin
         raise InputError(f"{out}: the output must be an .avi file.")
     if settings.width % 16 or settings.height % 16:
         raise InputError(f"render size {settings.width}x{settings.height}: width and height must be multiples of 16.")
-    clips = [read_clip(p) for p in anims]
-    other = read_clip(compare) if compare else None
+    clips = [MeshAnimation.read(p) for p in anims]
+    other = MeshAnimation.read(compare) if compare else None
     rate = 48000
     audio = np.concatenate([clip_audio(a, len(c.vertices), settings.fps, rate) for c, a in zip(clips, audios)])
-    for c in clips:
+    for path, c in zip(anims, clips):
         if abs(c.fps - settings.fps) > 1e-6:
-            raise InputError(f"{c.path}: animation is at {c.fps:g} fps but render.fps is {settings.fps:g}; set one to the other.")
+            raise InputError(f"{path}: animation is at {c.fps:g} fps but render.fps is {settings.fps:g}; set one to the other.")
     n_frames = sum(len(c.vertices) for c in clips)
     with tempfile.TemporaryDirectory() as tmp, atomic_path(out, overwrite) as tmp_out:
         wav = Path(tmp) / "audio.wav"

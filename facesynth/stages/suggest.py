@@ -20,8 +20,10 @@ from ..config import IngestSettings, SynthesizeSettings
 from ..errors import InputError
 from ..opencl import use_opencl
 from ..phonemes import PAU
+from ..model.motiondb import MotionDatabase
 from ..search.costs import step_costs
-from .synthesize import load_database, prepare
+from ..search.dp import dp_numpy, dp_opencl
+from ..search.synthesis import prepare
 
 
 @dataclass
@@ -38,9 +40,7 @@ class Suggestion:
 
 def suggest(db_path: Path, phones_path: Path, at_s: float, settings: SynthesizeSettings, ingest_settings: IngestSettings,
             emotions_path: Path | None = None, constraints_path: Path | None = None) -> tuple[dict, list[Suggestion]]:
-    from ..search.dp import dp_numpy, dp_opencl
-
-    db = load_database(db_path)
+    db = MotionDatabase.read(db_path)
     utt, constraints = prepare(db, phones_path, emotions_path, constraints_path, ingest_settings)
     c = utt.index_at(at_s)
     if c is None:

@@ -20,11 +20,11 @@ from pathlib import Path
 import numpy as np
 from scipy.optimize import minimize
 
-from ..artifacts import atomic_path
+from ..artifacts import atomic_path, check_output
 from ..config import EvaluateSettings, NormalizeSettings, SynthesizeSettings, TuneSettings
 from ..errors import InputError
-from .evaluate import heldout, evaluate
-from .synthesize import load_database
+from ..evaluation import evaluate, heldout
+from ..model.motiondb import MotionDatabase
 
 ALPHAS = ("alpha1", "alpha2", "alpha3", "alpha4", "alpha5", "alpha6")
 
@@ -45,7 +45,7 @@ def tune(db_path: Path, corpus: Path, settings: TuneSettings, synth: SynthesizeS
     for name in ALPHAS:
         if getattr(synth, name) <= 0:
             raise InputError(f"synthesize.{name} must be positive to tune it (got {getattr(synth, name)}).")
-    db = load_database(db_path)
+    db = MotionDatabase.read(db_path)
     validation = heldout(corpus, db, "val", normalize_settings)
     test = heldout(corpus, db, "test", normalize_settings)
     cache: dict[tuple, float] = {}
@@ -104,8 +104,6 @@ def write_config(path: Path, summary: dict, overwrite: bool) -> None:
 def run(db_path: Path, corpus: Path, out: Path, settings: TuneSettings, synth: SynthesizeSettings,
         evaluate_settings: EvaluateSettings, normalize_settings: NormalizeSettings, overwrite: bool = False,
         progress_fn=None) -> dict:
-    from ..artifacts import check_output
-
     check_output(out, overwrite)
     summary = tune(db_path, corpus, settings, synth, evaluate_settings, normalize_settings, progress_fn)
     write_config(out, summary, overwrite)

@@ -40,9 +40,9 @@ def test_apply_moves_vertices_rigidly_through_the_marker_frame():
 def test_capture_exports_a_take_and_synthesis_carries_head_motion(tiny_db, tiny_artifacts, tiny_corpus, held_out_take, config, tmp_path):
     import h5py
 
-    from facesynth.stages import deform, evaluate, synthesize
+    from facesynth.stages import capture, deform, synthesize
 
-    evaluate.capture(tiny_db, tiny_artifacts["corpus"], held_out_take, tmp_path / "truth.h5", config.settings("normalize"), 30.0)
+    capture.run(tiny_db, tiny_artifacts["corpus"], held_out_take, tmp_path / "truth.h5", config.settings("normalize"), 30.0)
     with h5py.File(tmp_path / "truth.h5") as f:
         assert f.attrs["source"] == "capture" and f["markers"].attrs["fps"] == 30
         assert f["head_rotation"].shape == (len(f["markers"]), 3, 3)

@@ -14,7 +14,8 @@ from pathlib import Path
 
 from facesynth.config import Config
 from facesynth.corpus.generate import generate
-from facesynth.stages import build_db, evaluate, ingest, normalize, pca
+from facesynth import evaluation
+from facesynth.stages import build_db, ingest, normalize, pca
 
 CHECKED = {
     "dp": ["rms_mm", "velocity_rms_mm_s", "lip_closure_rate", "emotion_agreement", "non_captured_joins"],
@@ -29,7 +30,7 @@ def tiny_metrics(folder: Path) -> dict:
     normalize.run(folder / "corpus.h5", folder / "normalized.h5", c.settings("normalize"))
     pca.run(folder / "normalized.h5", folder / "pca.h5", c.settings("pca"))
     build_db.run(folder / "pca.h5", folder / "db.h5", c.settings("build_db"))
-    metrics, _ = evaluate.evaluate(folder / "db.h5", folder / "corpus.h5", c.settings("evaluate"), c.settings("synthesize"),
+    metrics, _ = evaluation.evaluate(folder / "db.h5", folder / "corpus.h5", c.settings("evaluate"), c.settings("synthesize"),
                                    c.settings("normalize"))
     return {m: {k: metrics[m]["overall"][k] for k in keys} for m, keys in CHECKED.items()}
 

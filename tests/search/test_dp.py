@@ -58,9 +58,9 @@ def test_buffers_split_below_the_allocation_limit_give_the_same_answer(monkeypat
 def test_real_database_with_emotions_and_constraints(tiny_db, tiny_corpus, held_out_take, config, with_emotions, with_constraints,
                                                     opencl_device):
     from facesynth.search.inputs import read_utterance
-    from facesynth.stages.synthesize import load_database
+    from facesynth.model.motiondb import MotionDatabase
 
-    db = load_database(tiny_db)
+    db = MotionDatabase.read(tiny_db)
     s = config.settings("synthesize")
     tc = db.transition(s)
     utt = read_utterance(tiny_corpus / "labels" / f"{held_out_take}.TextGrid")

@@ -10,7 +10,7 @@ from facesynth.search.costs import path_terms, step_costs
 from facesynth.search.dp import dp_numpy
 from facesynth.search.greedy import Greedy, anime_graph, cluster_graph, motion_features, pq_matching
 from facesynth.search.inputs import read_utterance
-from facesynth.stages.synthesize import load_database
+from facesynth.model.motiondb import MotionDatabase
 
 
 def min_jumps(phones, node_phone, suc):
@@ -74,7 +74,7 @@ def test_ties_follow_the_asked_emotion():
 
 
 def test_dp_cost_is_never_above_greedy_on_the_real_database(tiny_db, tiny_corpus, config):
-    db = load_database(tiny_db)
+    db = MotionDatabase.read(tiny_db)
     s = config.settings("synthesize")
     tc = db.transition(s)
     greedy = Greedy(anime_graph(db.nodes.phone, db.nodes.emotion, db.nodes.suc), db.nodes.viseme, db.nodes.emotion, tc, s.alpha6 * s.pnt)
@@ -88,7 +88,7 @@ def test_dp_cost_is_never_above_greedy_on_the_real_database(tiny_db, tiny_corpus
 
 
 def test_clustered_graph_matches_phones_through_its_merged_animes(tiny_db, tiny_corpus, config):
-    db = load_database(tiny_db)
+    db = MotionDatabase.read(tiny_db)
     features = motion_features(db.coeffs, db.nodes.frame_start, db.nodes.frame_count)
     graph = cluster_graph(db.nodes.phone, db.nodes.emotion, db.nodes.suc, features, k=60)
     assert len(graph.node) == 60 and graph.phones.sum() >= 60

@@ -1,8 +1,9 @@
 import numpy as np
 import pytest
 
-from facesynth.stages.build_db import Nodes, build_nodes, dsc_matrix, pair_gaps_numpy, pair_gaps_opencl
-from facesynth.tables import Phones, Takes
+from facesynth.model.motiondb import Nodes
+from facesynth.stages.build_db import build_nodes, dsc_matrix, pair_gaps_numpy, pair_gaps_opencl
+from facesynth.model.tables import Phones, Takes
 
 
 def _tables():

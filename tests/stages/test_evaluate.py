@@ -8,7 +8,8 @@ from facesynth.cli import main
 from facesynth.config import Config
 from facesynth.errors import InputError
 from facesynth.search.inputs import Utterance
-from facesynth.stages import evaluate, tune
+from facesynth import evaluation
+from facesynth.stages import tune
 
 
 def test_report_has_numbers_per_method_and_plots(tiny_db, tiny_artifacts, tmp_path):
@@ -35,7 +36,7 @@ def test_metrics_worked_by_hand():
     syn = truth.copy()
     syn[:, 2, 0] += 2.0  # one marker 2 mm off everywhere
     utt = Utterance(["aa", "p", "aa"], np.array([0.0, 0.04, 0.06]), np.array([0.04, 0.06, 0.1]), ["neutral"] * 3)
-    m = evaluate.sentence_metrics(syn, truth, utt, 100.0, names, settings)
+    m = evaluation.sentence_metrics(syn, truth, utt, 100.0, names, settings)
     assert m["err_mm2"] == pytest.approx(4.0 / 3.0)  # Eq. 13: (2 mm)^2 on one of three markers
     assert m["velocity_rms_mm_s"] == pytest.approx(0.0)
     assert m["bilabials"] == 1 and m["lip_closure_rate"] == 1.0 and m["min_lip_gap_mm"] == 0.0
@@ -44,7 +45,7 @@ def test_metrics_worked_by_hand():
 def test_missing_split_and_markers_are_named(tiny_db, tiny_artifacts):
     c = Config.load(None, ("evaluate.lip_markers=['NOPE', 'LLI_C']",))
     with pytest.raises(InputError, match="marker 'NOPE' is not in the database"):
-        evaluate.evaluate(tiny_db, tiny_artifacts["corpus"], c.settings("evaluate"), c.settings("synthesize"), c.settings("normalize"))
+        evaluation.evaluate(tiny_db, tiny_artifacts["corpus"], c.settings("evaluate"), c.settings("synthesize"), c.settings("normalize"))
 
 
 def test_tune_writes_weights_synthesize_accepts(tiny_db, tiny_artifacts, tmp_path):
@@ -73,5 +74,5 @@ def test_gaps_in_the_capture_are_left_out_of_the_error():
     syn = truth + 1.0
     truth[2:4, 2] = np.nan  # a long gap the normalizer could not fill
     utt = Utterance(["aa"], np.array([0.0]), np.array([0.06]), ["neutral"])
-    m = evaluate.sentence_metrics(syn, truth, utt, 100.0, names, settings)
+    m = evaluation.sentence_metrics(syn, truth, utt, 100.0, names, settings)
     assert m["err_mm2"] == pytest.approx(3.0)  # every seen marker is off by (1, 1, 1) mm; the gap is skipped, not NaN

@@ -140,7 +140,7 @@ def test_align_settings_reach_the_aligner_of_transcript_only_takes(corpus, tmp_p
 
     from facesynth.cli import main
     from facesynth.formats.labels import read_phone_segments
-    from facesynth.stages import align
+    from facesynth import alignment as align
 
     rows = _rows(corpus)
     aligned = corpus / rows[1]["alignment"]

@@ -65,9 +65,9 @@ def test_pick_interpolates_the_covering_triangle(iso, tiny_db):
     # the picked frame is the mean of the three captured frames (Eq. 11 is affine)
     with h5py.File(d / "iso.h5") as f:
         c = f["clusters"][phone]["coefficients"][()][tri[0]].mean(0)
-        from facesynth.stages.pca import read_pca
+        from facesynth.model.pca import PcaModel
 
-        expected = read_pca(f).reconstruct(c[None])[0]
+        expected = PcaModel.read(f).reconstruct(c[None])[0]
     np.testing.assert_allclose(markers, expected, atol=1e-3)
     assert len(names) == markers.shape[0]
 

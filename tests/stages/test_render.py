@@ -7,6 +7,7 @@ import soundfile as sf
 
 from facesynth.config import Config
 from facesynth.errors import InputError
+from facesynth.model.meshanim import MeshAnimation
 from facesynth.stages import deform, render, synthesize
 
 
@@ -21,7 +22,7 @@ def anim(tiny_db, tiny_corpus, held_out_take, tmp_path_factory):
 
 
 def test_opencl_rasterizer_matches_the_numpy_reference(anim, opencl_device):
-    clip = render.read_clip(anim[0])
+    clip = MeshAnimation.read(anim[0])
     cam = render.Camera.fit(clip.vertices[0], 160, 128, 30.0)
     screen = cam.project(clip.vertices[5].astype(np.float64))
     raster = render.OpenCLRasterizer(clip.faces, clip.vertices.shape[1], 160, 128)

@@ -9,7 +9,7 @@ from facesynth.stages import suggest, synthesize
 def test_suggested_costs_are_what_the_constrained_search_finds(tiny_db, tiny_corpus, held_out_take, config, tmp_path):
     tg = tiny_corpus / "labels" / f"{held_out_take}.TextGrid"
     utt = read_utterance(tg)
-    db = synthesize.load_database(tiny_db)
+    db = synthesize.MotionDatabase.read(tiny_db)
     c = next(k for k, p in enumerate(utt.phones) if p != "pau" and db.nodes.phone.count(p) >= 3)
     at = 0.5 * (utt.starts[c] + utt.ends[c])
     info, rows = suggest.suggest(tiny_db, tg, at, config.settings("synthesize"), config.settings("ingest"))

@@ -1,7 +1,8 @@
-"""Tables shared by the corpus-side artifacts: the takes and their phone segments.
+"""Tables shared by the corpus-side artifacts: the takes, their phone segments and the markers.
 
-Stored as column datasets under ``/takes`` and ``/phones`` and copied forward by each
-stage, so every artifact downstream of ``ingest`` knows which frames belong to which take.
+Stored as column datasets under ``/takes`` and ``/phones`` (and ``/marker_names``) and
+written forward by each stage, so every artifact downstream of ``ingest`` knows which
+frames belong to which take.
 """
 
 from __future__ import annotations
@@ -11,7 +12,7 @@ from dataclasses import dataclass
 import h5py
 import numpy as np
 
-from .artifacts import read, read_strings, write_strings
+from ..artifacts import read, read_strings, stamp, write_strings
 
 
 @dataclass
@@ -36,7 +37,7 @@ class Takes:
         return self.name.index(name)
 
     def write(self, f: h5py.File) -> None:
-        g = f.create_group("takes")
+        g = stamp(f.create_group("takes"), "takes")
         for key in ("name", "emotion", "sentence", "split", "transcript"):
             write_strings(g, key, getattr(self, key))
         g.create_dataset("frame_start", data=self.frame_start.astype(np.int64))
@@ -63,7 +64,7 @@ class Phones:
         return len(self.phone)
 
     def write(self, f: h5py.File) -> None:
-        g = f.create_group("phones")
+        g = stamp(f.create_group("phones"), "phones")
         g.create_dataset("take", data=self.take.astype(np.int64))
         g.create_dataset("start", data=self.start.astype(np.float64))
         g.create_dataset("end", data=self.end.astype(np.float64))
@@ -76,7 +77,13 @@ class Phones:
         return cls(read(f, "phones/take"), read(f, "phones/start"), read(f, "phones/end"), read_strings(f, "phones/phone"))
 
 
-def copy_tables(src: h5py.File, dst: h5py.File) -> None:
-    """Copy ``/takes``, ``/phones`` and ``/marker_names`` forward to a new artifact."""
-    for key in ("takes", "phones", "marker_names"):
-        src.copy(src[key], dst, name=key)
+def read_tables(f: h5py.File) -> tuple[Takes, Phones, list[str]]:
+    """The takes, phones and marker names every corpus-side artifact carries."""
+    return Takes.read(f), Phones.read(f), read_strings(f, "marker_names")
+
+
+def write_tables(f: h5py.File, takes: Takes, phones: Phones, marker_names: list[str]) -> None:
+    """Write ``/takes``, ``/phones`` and ``/marker_names``."""
+    takes.write(f)
+    phones.write(f)
+    write_strings(f, "marker_names", marker_names)

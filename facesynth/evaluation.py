@@ -1,0 +1,196 @@
+"""Synthesized motion against captured ground truth (paper VI-D, VIII).
+
+Every held-out take of the corpus (``evaluate.split``) is synthesized from its own phone
+timing and emotion, with no constraints, and compared at the capture rate with its
+capture, normalized with the database's own reference frame (Eq. 1-2) so both are in the
+same head frame. Numbers, per method (``dp`` and ``baseline``), per emotion and overall:
+
+* ``err_mm2``: Eq. 13, the mean over frames and markers of the squared marker distance;
+  ``total_err_mm2``: Eq. 12, its sum over sentences; ``rms_mm``: the root of Eq. 13;
+* ``velocity_rms_mm_s``: the same for marker velocities;
+* lip closure on /p b m/: the fraction of bilabials whose lip gap gets below
+  ``closure_mm`` within the phone (the capture's own fraction beside it), and the mean of
+  the smallest gap;
+* ``emotion_agreement``: the fraction of spoken phones whose node has the asked emotion;
+* ``non_captured_joins``: joins of nodes that were not captured together.
+
+The baseline is the per-phoneme mean pose (mean PCA frame of all the database's frames of
+that phone) placed at each phone's centre and interpolated linearly, the rest pose in pauses.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from .config import EvaluateSettings, NormalizeSettings, SynthesizeSettings
+from .errors import InputError
+from .model.corpus import Corpus
+from .model.motiondb import MotionDatabase
+from .motion.postprocess import frame_ranges
+from .motion.rigid import fill_gaps, rigid_align
+from .opencl import use_opencl
+from .phonemes import PAU, viseme
+from .progress import progress
+from .search.inputs import Utterance, utterance
+from .search.synthesis import synthesize
+
+
+BILABIALS = ("p", "b", "m")
+
+
+@dataclass
+class Sentence:
+    """A held-out take: its utterance (phones, times, emotion) and its normalized capture,
+    truth : (T, M, 3) float32 mm in the head frame at the capture rate."""
+
+    take: str
+    emotion: str
+    utterance: Utterance
+    truth: np.ndarray
+
+
+def normalized_take(raw: np.ndarray, db: MotionDatabase, settings: NormalizeSettings):
+    """One take's captured markers (T, M, 3) mm, gaps filled and aligned to the database's
+    reference frame (Eq. 1-2). Returns markers (T, M, 3), rotations (T, 3, 3), translations (T, 3) mm."""
+    names = db.marker_names
+    origin = int(np.argmin(np.linalg.norm(db.reference, axis=1)))
+    rigid = np.array([names.index(n) for n in settings.rigid_markers]) if settings.rigid_markers else np.arange(len(names))
+    raw = raw.astype(np.float64)
+    for m in range(raw.shape[1]):
+        raw[:, m], _ = fill_gaps(raw[:, m], settings.max_gap_frames)
+    return rigid_align(raw, db.reference.astype(np.float64), origin, rigid)
+
+
+def heldout(corpus_path: Path, db: MotionDatabase, split: str, normalize_settings: NormalizeSettings) -> list[Sentence]:
+    """The corpus's takes of ``split`` with their phones and normalized capture."""
+    corpus = Corpus.read(corpus_path, audio=False)
+    corpus.check_markers(db.marker_names, corpus_path)
+    takes, phones = corpus.takes, corpus.phones
+    rows = [i for i in range(len(takes)) if takes.split[i] == split]
+    if not rows:
+        raise InputError(f"{corpus_path}: no take has split '{split}'; mark held-out takes in the manifest's split column.")
+    out = []
+    for i in rows:
+        truth, _, _ = normalized_take(corpus.markers[takes.frames(i)], db, normalize_settings)
+        seg = np.nonzero(phones.take == i)[0]
+        utt = utterance([phones.phone[r] for r in seg], phones.start[seg], phones.end[seg], [takes.emotion[i]] * len(seg))
+        out.append(Sentence(takes.name[i], takes.emotion[i], utt, truth.astype(np.float32)))
+    return out
+
+
+def baseline(db: MotionDatabase, utt: Utterance) -> np.ndarray:
+    """Per-phoneme mean pose at phone centres, linearly interpolated. (T, M, 3) at capture rate."""
+    phones = np.array(db.nodes.phone)
+    means: dict[str, np.ndarray] = {}
+    rest = db.model.project(db.reference[None])[0].astype(np.float64)
+
+    def mean_pose(p: str) -> np.ndarray:
+        if p not in means:
+            sel = np.nonzero(phones == p)[0]
+            if len(sel) == 0:  # an unseen phone: its viseme's nodes, else every node
+                sel = np.nonzero(db.nodes.viseme == viseme(p))[0]
+                sel = sel if len(sel) else np.arange(len(phones))
+            rows = np.concatenate([np.arange(db.nodes.frame_start[k], db.nodes.frame_start[k] + db.nodes.frame_count[k]) for k in sel])
+            means[p] = db.coeffs[rows].astype(np.float64).mean(0)
+        return means[p]
+
+    ranges = frame_ranges(utt.starts, utt.ends, db.fps)
+    total = ranges[-1][1]
+    centres = np.array([(a + b - 1) / 2.0 for a, b in ranges])
+    poses = np.stack([rest if p == PAU else mean_pose(p) for p in utt.phones])
+    frames = np.arange(total)
+    coeffs = np.stack([np.interp(frames, centres, poses[:, k]) for k in range(poses.shape[1])], 1)
+    return db.model.reconstruct(coeffs)
+
+
+def lip_gaps(markers: np.ndarray, names: list[str], lip_markers: tuple[str, ...]) -> np.ndarray:
+    i, j = (names.index(n) for n in lip_markers)
+    return np.linalg.norm(markers[:, i] - markers[:, j], axis=1)
+
+
+def sentence_metrics(syn: np.ndarray, truth: np.ndarray, utt: Utterance, fps: float, names: list[str],
+                     settings: EvaluateSettings) -> dict:
+    n = min(len(syn), len(truth))
+    syn, truth = syn[:n].astype(np.float64), truth[:n].astype(np.float64)
+    # Eq. 13 over the marker samples the capture has (a long gap leaves NaN in the truth).
+    err = float(np.nanmean(np.sum((syn - truth) ** 2, axis=2)))
+    vel = (np.diff(syn, axis=0) - np.diff(truth, axis=0)) * fps
+    gaps_syn = lip_gaps(syn, names, settings.lip_markers)
+    gaps_true = lip_gaps(truth, names, settings.lip_markers)
+    closures = []
+    for a, b, p in zip(utt.starts, utt.ends, utt.phones):
+        if p in BILABIALS:
+            fa, fb = int(round(a * fps)), min(int(round(b * fps)) + 1, n)
+            if fb > fa and not np.isnan(gaps_true[fa:fb]).all():
+                closures.append((gaps_syn[fa:fb].min(), np.nanmin(gaps_true[fa:fb])))
+    closures = np.array(closures).reshape(-1, 2)
+    return {
+        "frames": n, "err_mm2": err, "rms_mm": float(np.sqrt(err)),
+        "velocity_rms_mm_s": float(np.sqrt(np.nanmean(np.sum(vel**2, axis=2)))),
+        "bilabials": len(closures),
+        "lip_closure_rate": float((closures[:, 0] < settings.closure_mm).mean()) if len(closures) else None,
+        "lip_closure_rate_capture": float((closures[:, 1] < settings.closure_mm).mean()) if len(closures) else None,
+        "min_lip_gap_mm": float(closures[:, 0].mean()) if len(closures) else None,
+    }
+
+
+def aggregate(rows: list[dict]) -> dict:
+    """Pool sentence metrics: Eq. 12 sums, frame-weighted means, pooled lip closures."""
+    frames = np.array([r["frames"] for r in rows], float)
+    out = {"sentences": len(rows), "total_err_mm2": float(sum(r["err_mm2"] for r in rows)),
+           "err_mm2": float(np.mean([r["err_mm2"] for r in rows]))}
+    out["rms_mm"] = float(np.sqrt(np.average([r["err_mm2"] for r in rows], weights=frames)))
+    out["velocity_rms_mm_s"] = float(np.sqrt(np.average([r["velocity_rms_mm_s"] ** 2 for r in rows], weights=frames)))
+    lips = [r for r in rows if r["bilabials"]]
+    if lips:
+        count = sum(r["bilabials"] for r in lips)
+        for key in ("lip_closure_rate", "lip_closure_rate_capture", "min_lip_gap_mm"):
+            out[key] = float(sum(r[key] * r["bilabials"] for r in lips) / count)
+        out["bilabials"] = count
+    for key in ("emotion_agreement", "non_captured_joins"):
+        if all(key in r for r in rows):
+            out[key] = float(np.mean([r[key] for r in rows])) if key == "emotion_agreement" else int(sum(r[key] for r in rows))
+    return out
+
+
+def evaluate(db_path: Path, corpus: Path, settings: EvaluateSettings, synth: SynthesizeSettings,
+             normalize_settings: NormalizeSettings, sentences: list[Sentence] | None = None,
+             db: MotionDatabase | None = None, tc=None, with_baseline: bool = True) -> tuple[dict, list[dict]]:
+    """Returns (metrics per method, per-sentence records with the curves to plot).
+    ``with_baseline=False`` skips the baseline, which does not depend on the search
+    settings (tune leaves it out of its many evaluations)."""
+    db = db or MotionDatabase.read(db_path)
+    for name in tuple(settings.lip_markers) + (settings.plot_marker,):
+        if name not in db.marker_names:
+            raise InputError(f"evaluate: marker {name!r} is not in the database; set evaluate.lip_markers / evaluate.plot_marker to markers it has.")
+    sentences = sentences if sentences is not None else heldout(corpus, db, settings.split, normalize_settings)
+    if tc is None:
+        tc = db.transition_panels(synth) if use_opencl(synth.use_opencl) else db.transition(synth)
+    per_method: dict[str, list[dict]] = {"dp": [], "baseline": []} if with_baseline else {"dp": []}
+    records = []
+    for s in progress(sentences, "evaluate"):
+        res = synthesize(db, s.utterance, {}, synth, tc=tc)
+        spoken = [k for k, p in enumerate(s.utterance.phones) if p != PAU]
+        agreement = float(np.mean([db.nodes.emotion[res["path"][k]] == s.utterance.emotions[k] for k in spoken]))
+        m_dp = sentence_metrics(res["markers_capture"], s.truth, s.utterance, db.fps, db.marker_names, settings)
+        m_dp.update(emotion_agreement=agreement, non_captured_joins=res["non_captured_joins"], take=s.take, emotion=s.emotion)
+        per_method["dp"].append(m_dp)
+        k = db.marker_names.index(settings.plot_marker)
+        record = {"take": s.take, "emotion": s.emotion, "fps": db.fps, "truth": s.truth[:, k], "dp": res["markers_capture"][:, k]}
+        if with_baseline:
+            base = baseline(db, s.utterance)
+            m_base = sentence_metrics(base, s.truth, s.utterance, db.fps, db.marker_names, settings)
+            m_base.update(take=s.take, emotion=s.emotion)
+            per_method["baseline"].append(m_base)
+            record["baseline"] = base[:, k]
+        records.append(record)
+    metrics = {}
+    for method, rows in per_method.items():
+        emotions = sorted({r["emotion"] for r in rows})
+        metrics[method] = {"overall": aggregate(rows),
+                           "per_emotion": {e: aggregate([r for r in rows if r["emotion"] == e]) for e in emotions},
+                           "per_sentence": rows}
+    return metrics, records

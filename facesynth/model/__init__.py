@@ -1,0 +1,18 @@
+"""The objects every stage passes around, each with the one reader and writer of its artifact kind.
+
+============  ==========================  ==========================================
+module        objects                     artifact kind(s)
+============  ==========================  ==========================================
+tables        Takes, Phones               the ``/takes`` and ``/phones`` tables of all
+corpus        Corpus                      ``corpus`` (facesynth ingest)
+frames        NormalizedFrames            ``normalized`` (facesynth normalize)
+pca           PcaModel, PcaFrames         ``pca`` (facesynth pca)
+motiondb      Nodes, MotionDatabase       ``motiondb`` (facesynth build-db, prune)
+isomap        IsomapCluster               ``isomap`` (facesynth isomap)
+motion        Motion                      ``motion`` (facesynth synthesize, capture)
+meshanim      MeshAnimation               ``meshanim`` (facesynth deform)
+============  ==========================  ==========================================
+
+Stage modules (``facesynth.stages``) import these and the domain packages, never another
+stage. Nothing else opens these kinds with h5py.
+"""

@@ -1,0 +1,69 @@
+"""The ingested capture (paper III) and the ``corpus`` artifact."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from ..artifacts import attr, open_artifact, read, stamp, write_artifact
+from ..errors import InputError
+from .tables import Phones, Takes, read_tables, write_tables
+
+
+@dataclass
+class Corpus:
+    """Every take of a capture, concatenated.
+
+    takes, phones, marker_names : the tables (M markers, F frames in all).
+    markers : (F, M, 3) float32 mm, as captured (head motion in; NaN in gaps).
+    fps : capture rate, frames/s.
+    audio : (S,) float32 samples of all takes at ``sample_rate`` Hz; take i's are
+        ``audio[audio_start[i] : audio_start[i] + audio_count[i]]``.
+    """
+
+    takes: Takes
+    phones: Phones
+    marker_names: list[str]
+    markers: np.ndarray
+    fps: float
+    audio: np.ndarray
+    audio_start: np.ndarray
+    audio_count: np.ndarray
+    sample_rate: int
+
+    KIND = "corpus"
+
+    @classmethod
+    def read(cls, path: Path, *, audio: bool = True) -> "Corpus":
+        """The corpus at ``path``; ``audio=False`` leaves the samples out (an empty array)."""
+        with open_artifact(path, cls.KIND) as f:
+            takes, phones, names = read_tables(f)
+            samples = read(f, "audio/samples") if audio else np.zeros(0, np.float32)
+            return cls(takes, phones, names, read(f, "markers"), float(attr(f["markers"], "fps")), samples,
+                       read(f, "audio/start"), read(f, "audio/count"), int(attr(f["audio"], "sample_rate")))
+
+    def write(self, path: Path, *, config: str, inputs, overwrite: bool = False) -> None:
+        with write_artifact(path, self.KIND, config=config, inputs=inputs, overwrite=overwrite) as f:
+            m = self.markers
+            d = f.create_dataset("markers", data=m, chunks=(max(1, min(len(m), 1024)), m.shape[1], 3))
+            d.attrs["units"] = "mm"
+            d.attrs["fps"] = self.fps
+            write_tables(f, self.takes, self.phones, self.marker_names)
+            a = stamp(f.create_group("audio"), "audio")
+            a.create_dataset("samples", data=self.audio.astype(np.float32))
+            a.create_dataset("start", data=self.audio_start.astype(np.int64))
+            a.create_dataset("count", data=self.audio_count.astype(np.int64))
+            a.attrs["sample_rate"] = self.sample_rate
+
+    def take_index(self, name: str, path: Path) -> int:
+        """Row of take ``name``; a clear error naming ``path`` when there is none."""
+        if name not in self.takes.name:
+            raise InputError(f"{path}: no take {name!r}; it has {', '.join(self.takes.name[:5])}...")
+        return self.takes.index(name)
+
+    def check_markers(self, names: list[str], path: Path) -> None:
+        """Refuse a corpus whose markers are not ``names`` (e.g. a database's)."""
+        if self.marker_names != names:
+            raise InputError(f"{path}: its markers differ from the database's; use the corpus the database was built from.")

@@ -1,0 +1,79 @@
+"""Normalized marker frames (paper III, Eq. 1-2) and the ``normalized`` artifact.
+
+Every artifact from ``normalized`` on carries the same four datasets, written by
+:func:`write_head_frames` and read by :func:`read_head_frames`: the normalized markers, the
+rest pose they were aligned to, and the per-frame rigid head motion that was removed.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+import h5py
+import numpy as np
+
+from ..artifacts import attr, open_artifact, read, write_artifact
+from .tables import Phones, Takes, read_tables, write_tables
+
+
+@dataclass
+class HeadFrames:
+    """Normalized frames and the head motion removed from them.
+
+    markers : (F, M, 3) float32 mm, head motion removed (NaN where a long gap stayed).
+    reference : (M, 3) float32 mm, the closed-mouth rest pose of Eq. 1-2.
+    head_rotation : (F, 3, 3) float32; captured = head_rotation @ normalized + head_translation.
+    head_translation : (F, 3) float32 mm.
+    fps : frames/s; origin_marker : the marker placed at the origin.
+    """
+
+    markers: np.ndarray
+    reference: np.ndarray
+    head_rotation: np.ndarray
+    head_translation: np.ndarray
+    fps: float
+    origin_marker: str
+
+
+def read_head_frames(f: h5py.File) -> HeadFrames:
+    return HeadFrames(read(f, "markers"), read(f, "reference"), read(f, "head_rotation"), read(f, "head_translation"),
+                      float(attr(f["markers"], "fps")), str(attr(f["markers"], "origin_marker")))
+
+
+def write_head_frames(g: h5py.File, frames: HeadFrames) -> None:
+    m = frames.markers
+    d = g.create_dataset("markers", data=m, chunks=(max(1, min(len(m), 1024)), m.shape[1], 3))
+    d.attrs["units"] = "mm"
+    d.attrs["fps"] = frames.fps
+    d.attrs["origin_marker"] = frames.origin_marker
+    r = g.create_dataset("head_rotation", data=frames.head_rotation.astype(np.float32))
+    r.attrs["fps"] = frames.fps
+    r.attrs["convention"] = "captured = head_rotation @ normalized + head_translation"
+    t = g.create_dataset("head_translation", data=frames.head_translation.astype(np.float32))
+    t.attrs["units"] = "mm"
+    t.attrs["fps"] = frames.fps
+    ref = g.create_dataset("reference", data=frames.reference.astype(np.float32))
+    ref.attrs["units"] = "mm"
+
+
+@dataclass
+class NormalizedFrames:
+    """A ``normalized`` artifact: the corpus tables and its frames with head motion removed."""
+
+    takes: Takes
+    phones: Phones
+    marker_names: list[str]
+    frames: HeadFrames
+
+    KIND = "normalized"
+
+    @classmethod
+    def read(cls, path: Path) -> "NormalizedFrames":
+        with open_artifact(path, cls.KIND) as f:
+            return cls(*read_tables(f), read_head_frames(f))
+
+    def write(self, path: Path, *, config: str, inputs, overwrite: bool = False) -> None:
+        with write_artifact(path, self.KIND, config=config, inputs=inputs, overwrite=overwrite) as g:
+            write_tables(g, self.takes, self.phones, self.marker_names)
+            write_head_frames(g, self.frames)

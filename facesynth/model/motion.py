@@ -1,0 +1,147 @@
+"""Marker motion (paper VI-VII) and the ``motion`` artifact, written by ``synthesize`` (with
+its search path and per-frame provenance) and by ``capture`` (a captured take as ground truth)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from ..artifacts import attr, open_artifact, read, read_strings, stamp, write_artifact, write_strings
+from ..errors import InputError
+
+
+@dataclass
+class SearchPath:
+    """The search's choice, one row per input phone (T phones).
+
+    node : (T,) int64 chosen node; phone, emotion : asked; node_phone, node_emotion : chosen.
+    start, end : (T,) float64 s. costs : per term ("tc", "oc", "emp", "block"), (T,) float32.
+    total_cost : Eq. 4; non_captured_joins : joins without a captured link; search : "dp" or
+    "greedy"; device : where the search ran.
+    """
+
+    node: np.ndarray
+    phone: list[str]
+    emotion: list[str]
+    node_phone: list[str]
+    node_emotion: list[str]
+    start: np.ndarray
+    end: np.ndarray
+    costs: dict[str, np.ndarray]
+    total_cost: float
+    non_captured_joins: int
+    search: str
+    device: str
+
+
+@dataclass
+class Provenance:
+    """Per capture-rate frame (F frames at ``fps``): node, take row, source frame in the
+    database (-1: regenerated silence), input phone index, smoothed flag; and the take names."""
+
+    node: np.ndarray
+    take: np.ndarray
+    take_names: list[str]
+    source_frame: np.ndarray
+    step: np.ndarray
+    smoothed: np.ndarray
+    fps: float
+
+
+@dataclass
+class Motion:
+    """Marker motion in the head frame (head motion removed), with the head motion beside it.
+
+    markers : (T, M, 3) float32 mm at ``fps`` (the output rate).
+    markers_capture : (F, M, 3) float32 mm at ``capture_fps``.
+    marker_names : M names; reference : (M, 3) float32 mm rest pose.
+    head_rotation : (T, 3, 3) float32, head_translation : (T, 3) float32 mm, at ``fps``: the head
+        pose relative to the source take's mean (x -> head_rotation @ x + head_translation).
+    coefficients : (F, K) float32 PCA coefficients at ``capture_fps`` (synthesis only).
+    path, provenance : the search and where each frame came from (synthesis only).
+    source : "synthesis" or "capture"; take : the captured take (capture only).
+    """
+
+    markers: np.ndarray
+    fps: float
+    markers_capture: np.ndarray
+    capture_fps: float
+    marker_names: list[str]
+    reference: np.ndarray
+    head_rotation: np.ndarray | None
+    head_translation: np.ndarray | None
+    coefficients: np.ndarray | None = None
+    path: SearchPath | None = None
+    provenance: Provenance | None = None
+    source: str = "synthesis"
+    take: str = ""
+
+    KIND = "motion"
+
+    @classmethod
+    def read(cls, path: Path) -> "Motion":
+        """The marker motion and head motion (not the search path or provenance)."""
+        with open_artifact(path, cls.KIND) as f:
+            has_head = "head_rotation" in f
+            return cls(read(f, "markers"), float(attr(f["markers"], "fps")), read(f, "markers_capture"),
+                       float(attr(f["markers_capture"], "fps")), read_strings(f, "marker_names"), read(f, "reference"),
+                       read(f, "head_rotation") if has_head else None, read(f, "head_translation") if has_head else None,
+                       source=str(f.attrs.get("source", "synthesis")), take=str(f.attrs.get("take", "")))
+
+    def head(self, path: Path) -> tuple[np.ndarray, np.ndarray]:
+        """(rotations, translations) at the output rate; a clear error when there is none."""
+        if self.head_rotation is None:
+            raise InputError(f"{path}: no head motion to put back; set deform.apply_head_motion=false.")
+        return self.head_rotation, self.head_translation
+
+    def write(self, out: Path, *, config: str, inputs=(), records=None, overwrite: bool = False) -> None:
+        with write_artifact(out, self.KIND, config=config, inputs=inputs, records=records, overwrite=overwrite) as g:
+            if self.source == "capture":
+                g.attrs["source"] = "capture"
+                g.attrs["take"] = self.take
+            m = g.create_dataset("markers", data=self.markers)
+            m.attrs.update(units="mm", fps=self.fps)
+            mc = g.create_dataset("markers_capture", data=self.markers_capture)
+            mc.attrs.update(units="mm", fps=self.capture_fps)
+            if self.coefficients is not None:
+                c = g.create_dataset("coefficients", data=self.coefficients)
+                c.attrs["fps"] = self.capture_fps
+            write_strings(g, "marker_names", self.marker_names)
+            r = g.create_dataset("reference", data=self.reference)
+            r.attrs["units"] = "mm"
+            hr = g.create_dataset("head_rotation", data=self.head_rotation.astype(np.float32))
+            hr.attrs.update(fps=self.fps, convention="head pose relative to the source take's mean: x -> head_rotation @ x + head_translation")
+            ht = g.create_dataset("head_translation", data=self.head_translation.astype(np.float32))
+            ht.attrs.update(fps=self.fps, units="mm")
+            if self.path is not None:
+                _write_path(g, self.path)
+            if self.provenance is not None:
+                _write_provenance(g, self.provenance)
+
+
+def _write_path(g, s: SearchPath) -> None:
+    p = stamp(g.create_group("path"), "search-path")
+    p.create_dataset("node", data=s.node)
+    write_strings(p, "phone", s.phone)
+    write_strings(p, "emotion", s.emotion)
+    write_strings(p, "node_phone", s.node_phone)
+    write_strings(p, "node_emotion", s.node_emotion)
+    p.create_dataset("start", data=s.start).attrs["units"] = "s"
+    p.create_dataset("end", data=s.end).attrs["units"] = "s"
+    for key, value in s.costs.items():
+        p.create_dataset(f"cost_{key}", data=value)
+    p.attrs.update(total_cost=s.total_cost, non_captured_joins=s.non_captured_joins, search=s.search, device=s.device)
+
+
+def _write_provenance(g, v: Provenance) -> None:
+    p = stamp(g.create_group("provenance"), "provenance")
+    p.attrs["fps"] = v.fps
+    p.attrs["meaning"] = "per capture-rate frame: node, take row, source frame in the database (-1: regenerated silence)"
+    p.create_dataset("node", data=v.node)
+    p.create_dataset("take", data=v.take)
+    write_strings(p, "take_names", v.take_names)
+    p.create_dataset("source_frame", data=v.source_frame)
+    p.create_dataset("step", data=v.step)
+    p.create_dataset("smoothed", data=v.smoothed)

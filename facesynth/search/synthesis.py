@@ -1,0 +1,178 @@
+"""Synthesis (paper VI and VII-B): search the motion-node database for an utterance and turn
+the chosen path into marker motion.
+
+The constrained DP of Algorithm 1 (or Cao et al.'s greedy search) picks one node per input
+phone minimizing Eq. 4; the path is concatenated, smoothed, time-warped to the input timing
+at the capture rate, back-projected with Eq. 11 and down-sampled to the output rate. Every
+output frame keeps its provenance (node, take, source frame).
+"""
+
+from __future__ import annotations
+
+import time
+from pathlib import Path
+
+import numpy as np
+
+from ..config import AlignSettings, IngestSettings, SynthesizeSettings
+from ..errors import InputError
+from ..model.motion import Motion, Provenance, SearchPath
+from ..model.motiondb import MotionDatabase, Nodes
+from ..motion.head import follow_sources
+from ..motion.postprocess import concatenate, downsample
+from ..opencl import use_opencl
+from ..phonemes import PAU, viseme
+from .costs import StepCosts, path_terms, step_costs
+from .inputs import Utterance, apply_emotions, read_constraints, read_utterance, utterance
+
+
+def unseen_phones(utt: Utterance, db: MotionDatabase) -> dict[str, str]:
+    """Input phones with no node, and how the search will cover them."""
+    have = set(db.nodes.phone)
+    have_vis = {viseme(p) for p in have}
+    out = {}
+    for p in dict.fromkeys(utt.phones):
+        if p == PAU or p in have:
+            continue
+        out[p] = "nodes of the same viseme (Table II rule 2)" if viseme(p) in have_vis else "any node (Table II rule 3)"
+    return out
+
+
+def greedy_search(db: MotionDatabase, tc, utt: Utterance, steps: StepCosts, settings: SynthesizeSettings):
+    """Cao et al.'s GreedyMatching; returns a DpResult-like record with the Eq. 4 cost of its path."""
+    from .dp import DpResult
+    from .greedy import Greedy, anime_graph, cluster_graph, motion_features
+
+    if settings.greedy_clusters > 0:
+        features = motion_features(db.coeffs, db.nodes.frame_start, db.nodes.frame_count)
+        graph = cluster_graph(db.nodes.phone, db.nodes.emotion, db.nodes.suc, features, settings.greedy_clusters)
+    else:
+        graph = anime_graph(db.nodes.phone, db.nodes.emotion, db.nodes.suc)
+    result = Greedy(graph, db.nodes.viseme, db.nodes.emotion, tc, settings.alpha6 * settings.pnt).search(utt.phones, utt.emotions)
+    terms = path_terms(result.path, tc, steps)
+    cost = float(sum(v.astype(np.float64).sum() for v in terms.values()))
+    return DpResult(cost, result.path, np.zeros((0, 0), np.float32)), f"greedy ({'%d clusters' % settings.greedy_clusters if settings.greedy_clusters else 'unclustered'})"
+
+
+def search(tc, steps: StepCosts, settings: SynthesizeSettings):
+    """Run the DP; returns (DpResult, device description)."""
+    from ..opencl import device_description
+    from .dp import dp_numpy, dp_opencl
+
+    if use_opencl(settings.use_opencl):
+        return dp_opencl(tc, steps.total), device_description()
+    return dp_numpy(tc, steps.total), "NumPy"
+
+
+def table_iv_weight(settings: SynthesizeSettings):
+    def weight(phone: str) -> float:
+        if phone in settings.high_phones:
+            return settings.weight_high
+        if phone in settings.low_phones:
+            return settings.weight_low
+        return settings.weight_intermediate
+    return weight
+
+
+def captured_runs(nodes: Nodes) -> list[slice]:
+    """Frames of each maximal run of captured-linked nodes (no pause, no pruned node inside)."""
+    runs = []
+    for k in np.nonzero(nodes.pre < 0)[0]:
+        last = k
+        while nodes.suc[last] >= 0:
+            last = nodes.suc[last]
+        runs.append(slice(int(nodes.frame_start[k]), int(nodes.frame_start[last] + nodes.frame_count[last])))
+    return runs
+
+
+def cao_joins(db: MotionDatabase, path: np.ndarray, phones: list[str]):
+    """Cao et al.'s blending across jumps and learned low-pass (``synthesize.postprocess = "cao"``)."""
+    from ..motion.cao import blend_jumps, learned_cutoffs, lowpass
+
+    take_range = np.array([(db.takes.frames(t).start, db.takes.frames(t).stop) for t in db.nodes.take])
+
+    def joins(out: np.ndarray, ranges) -> np.ndarray:
+        changed = blend_jumps(out, ranges, path, phones, db.nodes.phone, db.nodes.frame_start, db.nodes.frame_count,
+                              db.nodes.pre, take_range, db.coeffs)
+        out[:] = lowpass(out, learned_cutoffs(db.coeffs, captured_runs(db.nodes), db.fps), db.fps)
+        return changed
+    return joins
+
+
+def synthesize(db: MotionDatabase, utt: Utterance, constraints: dict[int, int], settings: SynthesizeSettings, tc=None) -> dict:
+    """Search and post-process. Returns a dict of everything ``motion.h5`` stores."""
+    timings = {}
+    t0 = time.perf_counter()
+    if tc is None:
+        tc = db.transition_panels(settings) if use_opencl(settings.use_opencl) else db.transition(settings)
+    steps = step_costs(utt.phones, utt.emotions, db.nodes.phone, db.nodes.emotion, constraints, settings)
+    timings["costs_s"] = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    if settings.search == "greedy":
+        if constraints:
+            raise InputError("motion-node constraints need the DP search (Eq. 10); drop --constraints or use --search dp.")
+        result, device = greedy_search(db, tc, utt, steps, settings)
+    else:
+        result, device = search(tc, steps, settings)
+    timings["search_s"] = time.perf_counter() - t0
+    path = result.path
+    for t, node in constraints.items():  # Eq. 10 guarantees this; a failure is a bug
+        assert path[t] == node, f"constraint at step {t} not met"
+    return {"path": path, "cost": result.cost, "terms": path_terms(path, tc, steps), "device": device,
+            "timings": timings, **render_path(db, utt, path, settings)}
+
+
+def render_path(db: MotionDatabase, utt: Utterance, path: np.ndarray, settings: SynthesizeSettings) -> dict:
+    """VII-B for a given node path: concatenate, smooth, regenerate pauses, Eq. 11, down-sample."""
+    rest = db.model.project(db.reference[None])[0]
+    cat = concatenate(
+        path, utt.phones, utt.starts, utt.ends, db.nodes.frame_start, db.nodes.frame_count, db.nodes.pre,
+        db.nodes.phone, db.coeffs, rest, db.fps, half_window=settings.smoothing_half_window,
+        lam=settings.smoothing_lambda, weight_of=table_iv_weight(settings), interpolation=settings.silence_interpolation,
+        joins=cao_joins(db, path, utt.phones) if settings.postprocess == "cao" else None,
+    )
+    markers = db.model.reconstruct(cat.coeffs)
+    joins = sum(1 for t in range(len(path) - 1)
+                if utt.phones[t] != PAU and utt.phones[t + 1] != PAU and db.nodes.pre[path[t + 1]] != path[t])
+    take = np.where(cat.node >= 0, db.nodes.take[np.maximum(cat.node, 0)], -1)
+    head_r, head_t = follow_sources(cat.source_frame, *db.head_relative_to_take)
+    return {"concatenated": cat, "markers_capture": markers, "markers": downsample(markers, db.fps, settings.output_fps),
+            "non_captured_joins": joins, "take": take,
+            "head_rotation": downsample(head_r, db.fps, settings.output_fps),
+            "head_translation": downsample(head_t, db.fps, settings.output_fps)}
+
+
+def prepare(db: MotionDatabase, phones_path: Path | None, emotions_path: Path | None, constraints_path: Path | None,
+            ingest_settings: IngestSettings, audio: Path | None = None, text: str | None = None,
+            align_settings: AlignSettings | None = None) -> tuple[Utterance, dict[int, int]]:
+    """The utterance (phones read from ``phones_path``, or ``audio`` aligned to ``text`` with
+    ``align_settings``, which that needs) with its emotions, and its constraints by phone index."""
+    if phones_path is not None:
+        utt = read_utterance(phones_path, ingest_settings.phone_tiers)
+    elif audio is not None and text is not None:
+        from ..formats.audio import read_audio
+        from ..formats.labels import Segment
+        from ..alignment import align_samples
+
+        if align_settings is None:
+            raise TypeError("prepare: aligning audio needs align_settings")
+        samples, rate = read_audio(audio)
+        segs: list[Segment] = align_samples(samples, rate, text, settings=align_settings, where=str(audio))
+        utt = utterance([s.label for s in segs], [s.start for s in segs], [s.end for s in segs])
+    else:
+        raise InputError("give the utterance's phones with --phonemes, or --audio and --text to align them.")
+    if emotions_path is not None:
+        apply_emotions(utt, emotions_path, ingest_settings.emotions, ingest_settings.emotion_aliases)
+    constraints = read_constraints(constraints_path, utt, db.nodes.phone) if constraints_path else {}
+    return utt, constraints
+
+
+def as_motion(db: MotionDatabase, utt: Utterance, res: dict, settings: SynthesizeSettings) -> Motion:
+    """The ``motion`` artifact's contents for a :func:`synthesize` result."""
+    cat = res["concatenated"]
+    path = SearchPath(res["path"], list(utt.phones), list(utt.emotions), [db.nodes.phone[j] for j in res["path"]],
+                      [db.nodes.emotion[j] for j in res["path"]], utt.starts, utt.ends, res["terms"], res["cost"],
+                      res["non_captured_joins"], settings.search, res["device"])
+    provenance = Provenance(cat.node, res["take"], db.takes.name, cat.source_frame, cat.step, cat.smoothed, db.fps)
+    return Motion(res["markers"], settings.output_fps, res["markers_capture"], db.fps, db.marker_names, db.reference,
+                  res["head_rotation"], res["head_translation"], cat.coeffs, path, provenance)
