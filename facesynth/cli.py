@@ -14,7 +14,6 @@ import click
 from . import __version__
 from .config import SAMPLE_CORPUS_PRESETS, Config, choices
 from .errors import FacesynthError
-from .progress import set_quiet
 
 PATH = click.Path(path_type=Path)
 EXISTING = click.Path(path_type=Path, dir_okay=False)
@@ -74,7 +73,6 @@ def stage(func):
     @click.option("--overwrite", is_flag=True, help="Replace existing outputs.")
     @functools.wraps(func)
     def wrapper(config_path, overrides, verbose, quiet, overwrite, **kwargs):
-        set_quiet(quiet)
         _configure_logging(verbose, quiet)
         started = time.perf_counter()
         try:
@@ -138,16 +136,12 @@ def align(ctx: Context, audio: Path, text: str | None, transcript: Path | None, 
     Example:
       facesynth align corpus/audio/neutral_s000.wav --text "beautiful he men" -o s000.TextGrid
     """
-    from .errors import InputError
     from .stages import align as stage_align
 
     if (text is None) == (transcript is None):
-        raise InputError("give exactly one of --text or --transcript.")
-    if transcript is not None:
-        if not transcript.exists():
-            raise InputError(f"{transcript}: transcript file not found.")
-        text = transcript.read_text("utf-8")
-    summary = stage_align.run(audio, text, output, ctx.config.settings("align"), dict_path, ctx.overwrite)
+        raise click.UsageError("give exactly one of --text or --transcript.")
+    summary = stage_align.run(audio, text if transcript is None else stage_align.read_transcript(transcript), output,
+                              ctx.config.settings("align"), dict_path, ctx.overwrite)
     ctx.say(f"aligned {summary['phones']} phones over {summary['seconds']:.2f} s -> {output}")
 
 
@@ -282,11 +276,8 @@ def suggest(ctx: Context, db: Path, phonemes: Path, at_s: float, emotions, const
                                emotions, constraints)
     ctx.say(f"phone {info['index']} /{info['phone']}/ in context {info['context']}, relative time {info['relative_time']:.2f}; "
             f"unconstrained optimum {info['optimum']:.2f} uses node {info['optimal_node']}")
-    click.echo("rank\tnode\temotion\ttake\tcontext\tcontext_correct\ttime_correct_frame\tcost\textra_cost")
-    shown = [r for r in rows if r.context_correct or not context_only][:top]
-    for rank, r in enumerate(shown, 1):
-        click.echo(f"{rank}\t{r.node}\t{r.emotion}\t{r.take}\t{r.context}\t{'yes' if r.context_correct else 'no'}\t"
-                   f"{r.time_correct_frame:.2f}\t{r.cost:.2f}\t{r.extra:.2f}")
+    for line in stage.table(rows, top, context_only):
+        click.echo(line)
 
 
 @main.command()
@@ -325,17 +316,14 @@ def render(ctx: Context, anims, audios, view, compare, output: Path):
       facesynth render anim.h5 --audio corpus/audio/happy_s014.wav -o happy.avi
     """
     import dataclasses
-    import time
 
     from .stages import render as stage
 
     settings = ctx.config.settings("render")
     if view:
         settings = dataclasses.replace(settings, view=view)
-    started = time.perf_counter()
     s = stage.run(list(anims), list(audios), output, settings, compare, ctx.overwrite)
-    elapsed = time.perf_counter() - started
-    ctx.say(f"rendered {s['frames']} frames ({s['seconds']:.2f} s of video, {s['frames'] / elapsed:.1f} frames/s) -> {output}")
+    ctx.say(f"rendered {s['frames']} frames ({s['seconds']:.2f} s of video, {s['frames_per_s']:.1f} frames/s) -> {output}")
 
 
 @main.command()
@@ -458,9 +446,8 @@ def isomap_pick(ctx: Context, isomap_path: Path, phoneme: str, x: float, y: floa
 
     markers, names, info = stage.pick(isomap_path, phoneme, x, y, pca_map)
     ctx.detail(f"triangle of frames {info['corners']} (nodes {info['nodes']}), weights {info['weights']}")
-    click.echo("marker,x_mm,y_mm,z_mm")
-    for name, (px, py, pz) in zip(names, markers):
-        click.echo(f"{name},{px:.4f},{py:.4f},{pz:.4f}")
+    for line in stage.markers_csv(markers, names):
+        click.echo(line)
 
 
 @main.group()
@@ -513,10 +500,7 @@ def prune(ctx: Context, db_path: Path, remove: str | None, auto: bool, reason: s
         ctx.say("nothing to remove; no output written.")
         return
     if auto:
-        kinds = {}
-        for kind in s["found"].values():
-            kinds[kind] = kinds.get(kind, 0) + 1
-        ctx.say("found " + ", ".join(f"{v} {k}" for k, v in sorted(kinds.items())))
+        ctx.say("found " + ", ".join(f"{v} {k}" for k, v in stage.count_by_kind(s["found"]).items()))
         ctx.detail("removed: " + ",".join(str(i) for i in s["found"]))
     ctx.say(f"removed {s['removed']} nodes, kept {s['kept']} ({s['links_cut']} captured links cut) -> {output}")
 

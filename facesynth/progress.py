@@ -1,8 +1,12 @@
-"""Progress bars that show on a terminal and stay silent in pipes and CI."""
+"""Progress bars that show on a terminal and stay silent in pipes, in CI and with ``-q``.
+
+Whether to draw is read from the ``facesynth`` logger, which the command line configures
+(``-q`` raises it to errors only), so no flag of our own is kept between calls.
+"""
 
 from __future__ import annotations
 
-import contextlib
+import logging
 import os
 import sys
 from typing import Iterable, Iterator, TypeVar
@@ -11,23 +15,10 @@ import click
 
 T = TypeVar("T")
 
-_quiet = False
-
-
-def set_quiet(quiet: bool) -> None:
-    """Silence progress bars for this process (the ``-q`` flag)."""
-    global _quiet
-    _quiet = quiet
-
 
 def _interactive() -> bool:
-    return (not _quiet) and sys.stderr.isatty() and not os.environ.get("CI")
-
-
-@contextlib.contextmanager
-def _bar(iterable, length, label):
-    with click.progressbar(iterable, length=length, label=label, file=sys.stderr) as bar:
-        yield bar
+    return (logging.getLogger("facesynth").isEnabledFor(logging.WARNING) and sys.stderr.isatty()
+            and not os.environ.get("CI"))
 
 
 def progress(iterable: Iterable[T], label: str, length: int | None = None) -> Iterator[T]:
@@ -35,5 +26,5 @@ def progress(iterable: Iterable[T], label: str, length: int | None = None) -> It
     if not _interactive():
         yield from iterable
         return
-    with _bar(iterable, length, label) as bar:
+    with click.progressbar(iterable, length=length, label=label, file=sys.stderr) as bar:
         yield from bar

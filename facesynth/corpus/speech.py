@@ -154,7 +154,7 @@ def design_sentences(n: int, rng: np.random.Generator, min_phones: int, max_phon
 
 
 @dataclass
-class Utterance:
+class ReadSentence:
     """One read sentence: words, phones with times (s), and stress per phone."""
 
     words: list[str]
@@ -169,7 +169,7 @@ class Utterance:
         return float(self.ends[-1])
 
 
-def time_utterance(words: list[str], style: EmotionStyle, rng: np.random.Generator, pause_prob: float) -> Utterance:
+def time_utterance(words: list[str], style: EmotionStyle, rng: np.random.Generator, pause_prob: float) -> ReadSentence:
     """Phone durations with variation: class base x emotion tempo x stress x log-normal noise;
     leading/trailing silence and sometimes a mid-sentence pause between words."""
     lex = lexicon()
@@ -202,10 +202,10 @@ def time_utterance(words: list[str], style: EmotionStyle, rng: np.random.Generat
     for k, w in enumerate(words):
         idx = [i for i, wi in enumerate(word_index) if wi == k]
         spans.append((w, float(starts[idx[0]]), float(ends[idx[-1]])))
-    return Utterance(list(words), phones, starts, ends, np.array(stress), spans)
+    return ReadSentence(list(words), phones, starts, ends, np.array(stress), spans)
 
 
-def articulation(utt: Utterance, style: EmotionStyle, fps: float, rng: np.random.Generator) -> np.ndarray:
+def articulation(utt: ReadSentence, style: EmotionStyle, fps: float, rng: np.random.Generator) -> np.ndarray:
     """Rig parameters over time by dominance blending. Returns (T, len(PARAMS)) at ``fps``."""
     n_frames = int(np.floor(utt.duration * fps)) + 1
     t = np.arange(n_frames) / fps
@@ -233,7 +233,7 @@ def articulation(utt: Utterance, style: EmotionStyle, fps: float, rng: np.random
     return out
 
 
-def pitch(utt: Utterance, style: EmotionStyle, fps: float, rng: np.random.Generator) -> np.ndarray:
+def pitch(utt: ReadSentence, style: EmotionStyle, fps: float, rng: np.random.Generator) -> np.ndarray:
     """F0 contour (Hz) at ``fps``: declination, accents on stressed vowels, final fall, jitter."""
     n_frames = int(np.floor(utt.duration * fps)) + 1
     t = np.arange(n_frames) / fps
@@ -283,7 +283,7 @@ def _resonator(freq: float, bandwidth: float, rate: int) -> tuple[np.ndarray, np
     return np.array([a.sum()]), a  # unit gain at DC
 
 
-def synthesize_audio(utt: Utterance, f0_frames: np.ndarray, fps: float, style: EmotionStyle,
+def synthesize_audio(utt: ReadSentence, f0_frames: np.ndarray, fps: float, style: EmotionStyle,
                      rate: int, rng: np.random.Generator) -> np.ndarray:
     """Source-filter speech: a glottal pulse train at the F0 contour through time-varying
     formant resonators (blocks of 5 ms), plus shaped noise for fricatives and stop bursts.

@@ -235,3 +235,8 @@ def pick(isomap_path: Path, phone: str, x: float, y: float, use_pca_map: bool = 
     return maps.model.reconstruct(frame[None])[0], maps.marker_names, info
 
 
+
+
+def markers_csv(markers: np.ndarray, names: list[str]) -> list[str]:
+    """Lines of a marker frame (M, 3) mm as CSV: ``marker,x_mm,y_mm,z_mm``."""
+    return ["marker,x_mm,y_mm,z_mm"] + [f"{name},{x:.4f},{y:.4f},{z:.4f}" for name, (x, y, z) in zip(names, markers)]

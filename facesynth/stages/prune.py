@@ -187,6 +187,11 @@ def run(db_path: Path, out: Path, settings: PruneSettings, remove: str | None, a
     return summary
 
 
+def count_by_kind(found: dict[int, str]) -> dict[str, int]:
+    """How many nodes of each contamination kind (``found``: node -> kind), kinds sorted."""
+    return {kind: sum(1 for k in found.values() if k == kind) for kind in sorted(set(found.values()))}
+
+
 def contaminated_nodes(nodes: Nodes, takes: Takes, truth_csv: Path) -> set[int]:
     """Nodes whose frames overlap an injected contamination event (the sample corpus's ground truth)."""
     import csv

@@ -12,6 +12,7 @@ time 0 and picture and sound end together.
 from __future__ import annotations
 
 import tempfile
+import time
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -299,6 +300,7 @@ def run(anims: list[Path], audios: list[Path], out: Path, settings: RenderSettin
         raise InputError(f"{out}: the output must be an .avi file.")
     if settings.width % 16 or settings.height % 16:
         raise InputError(f"render size {settings.width}x{settings.height}: width and height must be multiples of 16.")
+    started = time.perf_counter()
     clips = [MeshAnimation.read(p) for p in anims]
     other = MeshAnimation.read(compare) if compare else None
     rate = 48000
@@ -321,4 +323,4 @@ def run(anims: list[Path], audios: list[Path], out: Path, settings: RenderSettin
         for frame in progress(frames, "render", length=n_frames):
             writer.send(np.ascontiguousarray(frame))
         writer.close()
-    return {"frames": n_frames, "seconds": n_frames / settings.fps}
+    return {"frames": n_frames, "seconds": n_frames / settings.fps, "frames_per_s": n_frames / (time.perf_counter() - started)}

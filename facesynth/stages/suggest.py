@@ -71,3 +71,14 @@ def suggest(db_path: Path, phones_path: Path, at_s: float, settings: SynthesizeS
     info = {"phone": phone, "index": c, "relative_time": rel, "context": f"{prev_p}-{phone}+{next_p}",
             "optimum": forward.cost, "optimal_node": int(forward.path[c])}
     return info, out
+
+
+def table(rows: list[Suggestion], top: int, context_only: bool) -> list[str]:
+    """Tab-separated lines of ``facesynth suggest``: a header, then the best ``top`` rows
+    (only context-correct ones with ``context_only``)."""
+    lines = ["rank\tnode\temotion\ttake\tcontext\tcontext_correct\ttime_correct_frame\tcost\textra_cost"]
+    shown = [r for r in rows if r.context_correct or not context_only][:top]
+    for rank, r in enumerate(shown, 1):
+        lines.append(f"{rank}\t{r.node}\t{r.emotion}\t{r.take}\t{r.context}\t{'yes' if r.context_correct else 'no'}\t"
+                     f"{r.time_correct_frame:.2f}\t{r.cost:.2f}\t{r.extra:.2f}")
+    return lines
