@@ -75,6 +75,8 @@ def setting(source: str, *, unit: str = "", ge: float | None = None, gt: float |
 
 @dataclass(frozen=True)
 class IngestSettings:
+    """``[ingest]``: emotion labels and their aliases, audio/motion length check, phone tiers."""
+
     emotions: tuple[str, ...] = setting("paper III (four expressions)", min_items=1)
     emotion_aliases: Mapping[str, str] = setting("not in the paper: other spellings in manifests and emotion files")
     max_audio_mismatch_s: float = setting("not in the paper: input check", unit="s", ge=0)
@@ -83,12 +85,16 @@ class IngestSettings:
 
 @dataclass(frozen=True)
 class AlignSettings:
+    """``[align]``: pocketsphinx's front end (frame rate, frames/s) and model sample rate (Hz)."""
+
     frame_rate: int = setting("pocketsphinx's acoustic front end (its default)", unit="frames/s", ge=1)
     sample_rate: int = setting("pocketsphinx's English acoustic model", unit="Hz", ge=8000)
 
 
 @dataclass(frozen=True)
 class NormalizeSettings:
+    """``[normalize]``: origin and rigid markers, gap filling, the reference frame of Eq. 1-2."""
+
     origin_marker: str = setting("paper III ('a specific marker'); empty: the marker nearest the centroid")
     rigid_markers: tuple[str, ...] = setting("Eq. 1-2; empty: all markers, as in the paper")
     max_gap_frames: int = setting("not in the paper: gap filling", unit="frames", ge=0)
@@ -99,18 +105,24 @@ class NormalizeSettings:
 
 @dataclass(frozen=True)
 class PcaSettings:
+    """``[pca]``: number of components (paper III: 25) or a variance target."""
+
     n_components: int = setting("paper III (25 components)", ge=1)
     variance_target: float = setting("paper III (98.53% of the variance); 0: use n_components", unit="fraction", ge=0, le=1)
 
 
 @dataclass(frozen=True)
 class BuildDbSettings:
+    """``[build_db]``: DSC time-warp samples (Eq. 6) and the compute device of the pair gaps."""
+
     dsc_samples: int = setting("Eq. 6 (time-warp before the blend)", unit="samples", ge=3)
     use_opencl: bool = setting("not in the paper: compute device")
 
 
 @dataclass(frozen=True)
 class IsomapSettings:
+    """``[isomap]``: neighbours (paper IV: 12), landmark size, the Eq. 3 image size and kernel."""
+
     n_neighbors: int = setting("paper IV (12 neighbours)", ge=2)
     max_exact_frames: int = setting("not in the paper: landmark Isomap; 0: every frame exactly", unit="frames", ge=0)
     image_size: int = setting("Eq. 3 image", unit="px", ge=16)
@@ -120,6 +132,8 @@ class IsomapSettings:
 
 @dataclass(frozen=True)
 class PruneSettings:
+    """``[prune]``: the thresholds of ``prune --auto`` (jump and outlier robust z-scores, excursion length)."""
+
     jump_z: float = setting("paper V (chosen on the sample corpus)", unit="robust z-score", gt=0)
     max_excursion_s: float = setting("paper V (chosen on the sample corpus)", unit="s", gt=0)
     outlier_z: float = setting("paper V (chosen on the sample corpus)", unit="robust z-score", gt=0)
@@ -127,6 +141,10 @@ class PruneSettings:
 
 @dataclass(frozen=True)
 class SynthesizeSettings:
+    """``[synthesize]``: search, cost weights (Tables I-II, Eq. 4-10: PNT, alpha1..alpha6), smoothing
+    (Eq. 16, Table IV), silence and output rate.
+    """
+
     search: str = setting("paper VI-B, Algorithm 1 (dp); Cao et al. 2004 (greedy)", choices=("dp", "greedy"))
     greedy_clusters: int = setting("Cao et al. 5.3; 0: unclustered Anime Graph", unit="clusters", ge=0)
     postprocess: str = setting("paper VII-B, Eq. 16 (deng); Cao et al. 6.3 (cao)", choices=("deng", "cao"))
@@ -152,6 +170,8 @@ class SynthesizeSettings:
 
 @dataclass(frozen=True)
 class EvaluateSettings:
+    """``[evaluate]``: which takes, the lip markers and closure threshold (mm), the plotted marker."""
+
     split: str = setting("paper VIII (test sentences); val: the tuning sentences", choices=("test", "val"))
     lip_markers: tuple[str, ...] = setting("not in the paper: upper and lower inner-lip markers", min_items=2, max_items=2)
     closure_mm: float = setting("not in the paper: bilabial closure", unit="mm", gt=0)
@@ -160,6 +180,8 @@ class EvaluateSettings:
 
 @dataclass(frozen=True)
 class TuneSettings:
+    """``[tune]``: the multi-start Nelder-Mead search of the cost weights (paper VI-D)."""
+
     starts: int = setting("paper VI-D (random restarts)", ge=1)
     max_evaluations: int = setting("paper VI-D", unit="evaluations per start", ge=1)
     seed: int = setting("not in the paper: random starts", ge=0)
@@ -168,6 +190,8 @@ class TuneSettings:
 
 @dataclass(frozen=True)
 class DeformSettings:
+    """``[deform]``: Eq. 14 Gaussian width and mesh-distance threshold (mesh units), head motion."""
+
     sigma: float = setting("Eq. 14 (the paper's 1.5 on its model)", unit="mesh units", gt=0)
     distance_threshold: float = setting("paper VII-A (mesh-distance threshold)", unit="mesh units", gt=0)
     apply_head_motion: bool = setting("Eq. 1-2 (the removed head motion)")
@@ -175,6 +199,8 @@ class DeformSettings:
 
 @dataclass(frozen=True)
 class RenderSettings:
+    """``[render]``: video size (px), frame rate, view, field of view (degrees), compute device."""
+
     width: int = setting("not in the paper: video size", unit="px", ge=16)
     height: int = setting("not in the paper: video size", unit="px", ge=16)
     fps: float = setting("paper VII-B (30 frames/s)", unit="frames/s", gt=0)
@@ -212,6 +238,7 @@ class Declared:
 
     @property
     def key(self) -> str:
+        """``section.key`` of this setting."""
         return f"{self.section}.{self.name}"
 
     def type_name(self) -> str:

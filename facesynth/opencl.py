@@ -67,6 +67,7 @@ class Device:
         return f"{self.platform_index}:{self.device_index}"
 
     def describe(self) -> str:
+        """Device and platform, e.g. "pthread-AMD EPYC (Portable Computing Language, OpenCL 3.0 PoCL 3.1)"."""
         return f"{self.name} ({self.platform})"
 
 
@@ -316,6 +317,7 @@ def context():
 
 @lru_cache(maxsize=1)
 def queue():
+    """The command queue of the chosen device (one per process)."""
     return _cl().CommandQueue(context())
 
 
@@ -348,8 +350,10 @@ def kernel(program_name: str, kernel_name: str, **defines: int):
 
 
 def device_name() -> str:
+    """Name(s) of the chosen device."""
     return ", ".join(d.name for d in context().devices)
 
 
 def max_alloc_bytes() -> int:
+    """The largest single buffer the chosen device allows, bytes."""
     return min(d.max_mem_alloc_size for d in context().devices)

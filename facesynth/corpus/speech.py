@@ -25,6 +25,11 @@ EMOTIONS = ("neutral", "happy", "angry", "sad")
 
 @dataclass(frozen=True)
 class EmotionStyle:
+    """How one emotion shapes speech: tempo (duration multiplier), articulation sharpness and
+    jaw gain (multipliers), lip spread bias, F0 base and range (Hz), loudness, head-motion gain,
+    and the mean intensity of each rig expression parameter.
+    """
+
     tempo: float        # duration multiplier
     sharpness: float    # dominance rate multiplier (higher: crisper articulation)
     jaw_gain: float     # jaw amplitude multiplier
@@ -166,6 +171,7 @@ class ReadSentence:
 
     @property
     def duration(self) -> float:
+        """Seconds from the sentence's start to its last phone's end."""
         return float(self.ends[-1])
 
 

@@ -62,6 +62,7 @@ def read_binding(path: Path) -> dict[str, int]:
 
 
 def write_binding(path: Path, binding: dict[str, int]) -> None:
+    """Write a ``marker,vertex`` CSV binding (vertex: 0-based index into the mesh's vertices)."""
     with open(path, "w", encoding="utf-8", newline="") as fh:
         writer = csv.writer(fh)
         writer.writerow(["marker", "vertex"])

@@ -53,6 +53,7 @@ def read_mocap(path: Path) -> MarkerTake:
 
 
 def read_c3d(path: Path) -> MarkerTake:
+    """Markers of a C3D file (millimetres, as C3D stores them; missing samples NaN)."""
     import c3d
 
     try:
@@ -104,6 +105,7 @@ def write_c3d(path: Path, take: MarkerTake) -> None:
 
 
 def read_trc(path: Path) -> MarkerTake:
+    """Markers of a tab-separated TRC file (units from its header, converted to mm; empty cells NaN)."""
     try:
         lines = Path(path).read_text("utf-8", errors="replace").splitlines()
         keys = lines[1].split("\t")
@@ -129,6 +131,7 @@ def read_trc(path: Path) -> MarkerTake:
 
 
 def write_trc(path: Path, take: MarkerTake) -> None:
+    """Write a take as a TRC file (tab-separated, mm)."""
     n_frames, n_markers, _ = take.positions.shape
     with open(path, "w", encoding="utf-8", newline="\n") as fh:
         fh.write(f"PathFileType\t4\t(X/Y/Z)\t{Path(path).name}\n")
@@ -187,6 +190,7 @@ def read_csv(path: Path) -> MarkerTake:
 
 
 def write_csv(path: Path, take: MarkerTake) -> None:
+    """Write a take as CSV: a ``frame`` column and ``NAME_x, NAME_y, NAME_z`` columns in mm."""
     with open(path, "w", encoding="utf-8", newline="") as fh:
         writer = csv.writer(fh)
         writer.writerow(["frame", "time"] + [f"{n}_{a}" for n in take.names for a in "xyz"])

@@ -45,6 +45,7 @@ class Corpus:
                        read(f, "audio/start"), read(f, "audio/count"), int(attr(f["audio"], "sample_rate")))
 
     def write(self, path: Path, *, config: str, inputs, overwrite: bool = False) -> None:
+        """Write the corpus to ``path`` (an atomic, stamped ``corpus`` artifact)."""
         with write_artifact(path, self.KIND, config=config, inputs=inputs, overwrite=overwrite) as f:
             m = self.markers
             d = f.create_dataset("markers", data=m, chunks=(max(1, min(len(m), 1024)), m.shape[1], 3))

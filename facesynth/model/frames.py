@@ -37,11 +37,13 @@ class HeadFrames:
 
 
 def read_head_frames(f: h5py.File) -> HeadFrames:
+    """The normalized markers, rest pose and head motion of an open artifact."""
     return HeadFrames(read(f, "markers"), read(f, "reference"), read(f, "head_rotation"), read(f, "head_translation"),
                       float(attr(f["markers"], "fps")), str(attr(f["markers"], "origin_marker")))
 
 
 def write_head_frames(g: h5py.File, frames: HeadFrames) -> None:
+    """Write ``markers``, ``head_rotation``, ``head_translation`` and ``reference`` with units and rates."""
     m = frames.markers
     d = g.create_dataset("markers", data=m, chunks=(max(1, min(len(m), 1024)), m.shape[1], 3))
     d.attrs["units"] = "mm"
@@ -70,10 +72,12 @@ class NormalizedFrames:
 
     @classmethod
     def read(cls, path: Path) -> "NormalizedFrames":
+        """The ``normalized`` artifact at ``path``."""
         with open_artifact(path, cls.KIND) as f:
             return cls(*read_tables(f), read_head_frames(f))
 
     def write(self, path: Path, *, config: str, inputs, overwrite: bool = False) -> None:
+        """Write a ``normalized`` artifact to ``path``."""
         with write_artifact(path, self.KIND, config=config, inputs=inputs, overwrite=overwrite) as g:
             write_tables(g, self.takes, self.phones, self.marker_names)
             write_head_frames(g, self.frames)

@@ -52,12 +52,14 @@ class PhonemeMaps:
     KIND = "isomap"
 
     def cluster(self, phone: str, path: Path) -> Cluster:
+        """The cluster of ``phone``; a clear error naming ``path`` when there is none."""
         if phone not in self.clusters:
             raise InputError(f"{path}: no phoneme cluster /{phone}/; it has {', '.join(sorted(self.clusters))}.")
         return self.clusters[phone]
 
     @classmethod
     def read(cls, path: Path) -> "PhonemeMaps":
+        """Every cluster of the ``isomap`` artifact at ``path``."""
         with open_artifact(path, cls.KIND) as f:
             clusters = {}
             for phone in f["clusters"]:
@@ -71,6 +73,7 @@ class PhonemeMaps:
             return cls(PcaModel.read(f), read_strings(f, "marker_names"), clusters)
 
     def write(self, path: Path, *, config: str, inputs, overwrite: bool = False) -> None:
+        """Write an ``isomap`` artifact to ``path``."""
         with write_artifact(path, self.KIND, config=config, inputs=inputs, overwrite=overwrite) as g:
             self.model.write(g)
             write_strings(g, "marker_names", self.marker_names)

@@ -45,6 +45,7 @@ class MeshAnimation:
                        fit_rms=float(f.attrs.get("fit_rms", np.nan)))
 
     def write(self, out: Path, *, config: str, inputs, overwrite: bool = False) -> None:
+        """Write a ``meshanim`` artifact (with its deformation weights) to ``out``."""
         with write_artifact(out, self.KIND, config=config, inputs=inputs, overwrite=overwrite) as g:
             v = g.create_dataset("vertices", data=self.vertices, chunks=(1,) + self.vertices.shape[1:])
             v.attrs.update(fps=self.fps, units="mesh units")

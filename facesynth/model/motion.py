@@ -97,6 +97,7 @@ class Motion:
         return self.head_rotation, self.head_translation
 
     def write(self, out: Path, *, config: str, inputs=(), records=None, overwrite: bool = False) -> None:
+        """Write a ``motion`` artifact to ``out`` (provenance from ``inputs`` or precomputed ``records``)."""
         with write_artifact(out, self.KIND, config=config, inputs=inputs, records=records, overwrite=overwrite) as g:
             if self.source == "capture":
                 g.attrs["source"] = "capture"

@@ -56,6 +56,7 @@ class Nodes:
         return len(self.phone)
 
     def frames(self, k: int) -> slice:
+        """The global frame range of node ``k``."""
         return slice(int(self.frame_start[k]), int(self.frame_start[k] + self.frame_count[k]))
 
     def subset(self, keep: np.ndarray) -> "Nodes":
@@ -73,6 +74,7 @@ class Nodes:
     _ARRAYS = ("viseme", "take", "frame_start", "frame_count", "start_s", "end_s", "pre", "suc")
 
     def write(self, f: h5py.File) -> None:
+        """Write the table as ``/nodes``."""
         g = stamp(f.create_group("nodes"), "nodes")
         for key in self._STRINGS:
             write_strings(g, key, getattr(self, key))
@@ -81,6 +83,7 @@ class Nodes:
 
     @classmethod
     def read(cls, f: h5py.File) -> "Nodes":
+        """The table under ``/nodes`` of an open artifact."""
         values = {k: read_strings(f, f"nodes/{k}") for k in cls._STRINGS}
         values.update({k: read(f, f"nodes/{k}") for k in cls._ARRAYS})
         return cls(**values)

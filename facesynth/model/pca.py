@@ -50,6 +50,7 @@ class PcaModel:
         return cls(read(f, "pca/mean"), read(f, "pca/basis"), read(f, "pca/variances"), float(f["pca"].attrs["explained"]))
 
     def write(self, f: h5py.File) -> None:
+        """Write the model under ``/pca``."""
         p = stamp(f.create_group("pca"), "pca-model")
         p.create_dataset("mean", data=self.mean)
         p.create_dataset("basis", data=self.basis)
@@ -79,11 +80,13 @@ class PcaFrames:
 
     @classmethod
     def read(cls, path: Path) -> "PcaFrames":
+        """The ``pca`` artifact at ``path``."""
         with open_artifact(path, cls.KIND) as f:
             takes, phones, names = read_tables(f)
             return cls(takes, phones, names, PcaModel.read(f), read(f, "coefficients"), read_head_frames(f))
 
     def write(self, path: Path, *, config: str, inputs, overwrite: bool = False) -> None:
+        """Write a ``pca`` artifact to ``path``."""
         with write_artifact(path, self.KIND, config=config, inputs=inputs, overwrite=overwrite) as g:
             write_tables(g, self.takes, self.phones, self.marker_names)
             self.model.write(g)

@@ -31,12 +31,15 @@ class Takes:
         return len(self.name)
 
     def frames(self, i: int) -> slice:
+        """The global frame range of take ``i``."""
         return slice(int(self.frame_start[i]), int(self.frame_start[i] + self.frame_count[i]))
 
     def index(self, name: str) -> int:
+        """Row of the take named ``name``."""
         return self.name.index(name)
 
     def write(self, f: h5py.File) -> None:
+        """Write the table as ``/takes``."""
         g = stamp(f.create_group("takes"), "takes")
         for key in ("name", "emotion", "sentence", "split", "transcript"):
             write_strings(g, key, getattr(self, key))
@@ -45,6 +48,7 @@ class Takes:
 
     @classmethod
     def read(cls, f: h5py.File) -> "Takes":
+        """The table under ``/takes`` of an open artifact."""
         return cls(
             *(read_strings(f, f"takes/{k}") for k in ("name", "emotion", "sentence", "split", "transcript")),
             read(f, "takes/frame_start"), read(f, "takes/frame_count"),
@@ -64,6 +68,7 @@ class Phones:
         return len(self.phone)
 
     def write(self, f: h5py.File) -> None:
+        """Write the table as ``/phones`` (times in s)."""
         g = stamp(f.create_group("phones"), "phones")
         g.create_dataset("take", data=self.take.astype(np.int64))
         g.create_dataset("start", data=self.start.astype(np.float64))
@@ -74,6 +79,7 @@ class Phones:
 
     @classmethod
     def read(cls, f: h5py.File) -> "Phones":
+        """The table under ``/phones`` of an open artifact."""
         return cls(read(f, "phones/take"), read(f, "phones/start"), read(f, "phones/end"), read_strings(f, "phones/phone"))
 
 

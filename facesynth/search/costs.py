@@ -26,6 +26,7 @@ class StepCosts:
 
     @property
     def total(self) -> np.ndarray:
+        """(T, N) float32: the sum of the three terms."""
         return (self.oc + self.emp + self.block).astype(np.float32)
 
 

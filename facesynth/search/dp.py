@@ -19,6 +19,10 @@ PANEL = 96
 
 @dataclass
 class DpResult:
+    """What the DP returns: COST* (Algorithm 1 line 10), the path ((T,) node per step) and the
+    accumulated costs phi ((T, N) float32).
+    """
+
     cost: float            # COST* of Algorithm 1 line 10
     path: np.ndarray       # (T,) node per step
     phi: np.ndarray        # (T, N) float32 accumulated costs
@@ -61,6 +65,7 @@ class PanelMatrix:
 
     @classmethod
     def from_matrix(cls, tc: np.ndarray, panel: int = PANEL) -> "PanelMatrix":
+        """The panel-major copy of a dense (N, N) matrix."""
         out = cls(tc.shape[0], panel)
         for a in range(0, out.n, 2048):
             out.set_rows(slice(a, min(out.n, a + 2048)), tc[a : a + 2048])
@@ -76,6 +81,7 @@ class PanelMatrix:
             self.panels[full, rows, : n - full * panel] = values[:, full * panel :]
 
     def column(self, j: int) -> np.ndarray:
+        """TC[:, j], (N,) float32."""
         return self.panels[j // self.panel, :, j % self.panel]
 
     def __getitem__(self, ij: tuple[int, int]) -> np.float32:
@@ -140,6 +146,7 @@ class OpenCLDp:
         self.cols = self.n_panels * PANEL
 
     def run(self, obs: np.ndarray) -> DpResult:
+        """The DP for observation costs ``obs`` ((T, N) float32) on the device."""
         import pyopencl as cl
 
         t_count, n = obs.shape
@@ -167,4 +174,7 @@ class OpenCLDp:
 
 
 def dp_opencl(tc: "np.ndarray | PanelMatrix", obs: np.ndarray) -> DpResult:
+    """Algorithm 1 on OpenCL for ``tc`` ((N, N) float32 or a PanelMatrix) and ``obs`` ((T, N) float32);
+    bit-identical to :func:`dp_numpy`.
+    """
     return OpenCLDp(tc).run(obs)

@@ -45,6 +45,7 @@ class AnimeGraph:
 
     @property
     def clustered(self) -> bool:
+        """Whether animes are clusters of nodes (Cao et al. 5.3) rather than single nodes."""
         return self.suc is None
 
 
@@ -103,6 +104,10 @@ def motion_features(coeffs: np.ndarray, frame_start: np.ndarray, frame_count: np
 
 @dataclass
 class GreedyResult:
+    """A greedy search's path: per step the node ((T,) int64, the anime's representative) and
+    anime ((T,) int64), and the number of jumps between spoken steps that are not captured links.
+    """
+
     path: np.ndarray   # (T,) node per step (the anime's representative)
     animes: np.ndarray  # (T,) anime per step
     jumps: int         # joins between spoken steps that are not captured links
@@ -216,6 +221,7 @@ class Greedy:
         return out
 
     def search(self, phones: list[str], emotions: list[str]) -> GreedyResult:
+        """GreedyMatching (Cao et al. 5.2) for the input ``phones`` and ``emotions``."""
         animes = np.full(len(phones), -1, np.int64)
         t, before = 0, -1
         while t < len(phones):

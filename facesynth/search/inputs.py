@@ -26,6 +26,7 @@ class Utterance:
         return len(self.phones)
 
     def index_at(self, time_s: float) -> int | None:
+        """The step whose phone spans ``time_s`` (seconds), or None."""
         hits = np.nonzero((self.starts <= time_s) & (time_s < self.ends))[0]
         return int(hits[0]) if len(hits) else None
 
@@ -46,6 +47,7 @@ def utterance(phones, starts, ends, emotions=None) -> Utterance:
 
 
 def read_utterance(phones_path: Path, tier_names=("phones",)) -> Utterance:
+    """The utterance of a TextGrid (first tier of ``tier_names``) or ``.lab`` file, in the Festival set."""
     segs = read_phone_segments(phones_path, tier_names)
     labels = map_phones([s.label for s in segs], str(phones_path), [s.start for s in segs])
     return utterance(labels, [s.start for s in segs], [s.end for s in segs])

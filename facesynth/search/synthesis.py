@@ -65,6 +65,7 @@ def search(tc, steps: StepCosts, settings: SynthesizeSettings):
 
 
 def table_iv_weight(settings: SynthesizeSettings):
+    """The Table IV smoothing weight of a phone (high, low or intermediate) under ``settings``."""
     def weight(phone: str) -> float:
         if phone in settings.high_phones:
             return settings.weight_high

@@ -16,6 +16,9 @@ from ..phonemes import PAU
 
 def run(audio_path: Path, text: str, out: Path, settings: AlignSettings, dict_path: Path | None = None,
         overwrite: bool = False) -> dict:
+    """Align ``text`` to the speech of ``audio_path`` and write ``out`` (a TextGrid with phone and
+    word tiers); returns the number of phones and the duration (s).
+    """
     samples, rate = read_audio(audio_path)
     extra = read_pronunciations(dict_path) if dict_path else {}
     segments, words = align_words(samples, rate, text, extra=extra, settings=settings, where=str(audio_path))

@@ -45,6 +45,7 @@ def plot(records: list[dict], folder: Path, marker: str) -> list[str]:
 
 
 def write_report(folder: Path, metrics: dict, images: list[str], meta: dict) -> None:
+    """Write ``metrics.json`` and ``index.html`` (tables per method and emotion, the plots) to ``folder``."""
     (folder / "metrics.json").write_text(json.dumps({**metrics, "meta": meta}, indent=2, sort_keys=True), encoding="utf-8")
     keys = [("rms_mm", "RMS error (mm)"), ("err_mm2", "Eq. 13 error (mm²)"), ("total_err_mm2", "Eq. 12 total (mm²)"),
             ("velocity_rms_mm_s", "velocity RMS error (mm/s)"), ("lip_closure_rate", "bilabials closed"),
@@ -77,6 +78,9 @@ def write_report(folder: Path, metrics: dict, images: list[str], meta: dict) -> 
 
 def run(db_path: Path, corpus: Path, out_dir: Path, settings: EvaluateSettings, synth: SynthesizeSettings,
         normalize_settings: NormalizeSettings, overwrite: bool = False) -> dict:
+    """Evaluate the database on the corpus's held-out takes and write the report to ``out_dir``;
+    returns the overall metrics per method.
+    """
     if out_dir.exists() and (out_dir / "metrics.json").exists() and not overwrite:
         raise InputError(f"{out_dir}: already holds a report; pass --overwrite or choose another folder.")
     metrics, records = evaluate(db_path, corpus, settings, synth, normalize_settings)

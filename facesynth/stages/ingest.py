@@ -30,6 +30,8 @@ SPLITS = ("train", "val", "test")
 
 @dataclass
 class ManifestRow:
+    """One take of the manifest (``line``: its line number, for messages), paths resolved."""
+
     line: int
     take: str
     mocap: Path

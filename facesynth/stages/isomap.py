@@ -85,6 +85,7 @@ def embed(x: np.ndarray, n_neighbors: int, max_exact: int) -> tuple[np.ndarray, 
 
 
 def build_clusters(coeffs: np.ndarray, nodes: Nodes, settings: IsomapSettings, phones: list[str] | None = None) -> list[Cluster]:
+    """Embed every phoneme cluster (or those of ``phones``) of the database frames ``coeffs`` (F, K)."""
     out = []
     for phone in progress(phones or sorted(set(nodes.phone)), "isomap"):
         frames, node, rel, emo = cluster_frames(nodes, phone)
@@ -170,6 +171,7 @@ def save_cluster_images(cluster: Cluster, folder: Path, settings: IsomapSettings
 
 
 def write_index(folder: Path, clusters: list[Cluster], trajectories: dict[str, list[dict]], size: int) -> None:
+    """Write ``index.html`` showing every cluster's two maps, with node trajectories to hover."""
     parts = ["<!doctype html><meta charset='utf-8'><title>facesynth phoneme-Isomaps</title>",
              "<style>body{font-family:sans-serif} .pair{display:inline-block;margin:8px;vertical-align:top}"
              " .map{position:relative;display:inline-block} svg{position:absolute;left:0;top:0}"

@@ -20,6 +20,9 @@ from ..motion.rigid import fill_gaps, rigid_align
 
 
 def choose_origin(reference_frames: np.ndarray, names: list[str], settings: NormalizeSettings) -> int:
+    """The origin marker: the one named in the settings, else the marker nearest the markers'
+    centroid in the reference frames (M, 3).
+    """
     if settings.origin_marker:
         if settings.origin_marker not in names:
             raise InputError(f"normalize.origin_marker {settings.origin_marker!r} is not a marker of this corpus; pick one of {names[:6]}...")

@@ -54,6 +54,7 @@ def parse_ids(text: str, n: int) -> list[int]:
 
 
 def robust_z(x: np.ndarray, axis=0) -> np.ndarray:
+    """Robust z-scores: (x - median) / (1.4826 * MAD) along ``axis``."""
     med = np.median(x, axis=axis, keepdims=True)
     mad = np.median(np.abs(x - med), axis=axis, keepdims=True) * 1.4826
     return (x - med) / np.maximum(mad, 1e-9)

@@ -41,6 +41,7 @@ class Camera:
 
     @classmethod
     def fit(cls, vertices: np.ndarray, width: int, height: int, fov_deg: float) -> "Camera":
+        """A camera whose view holds ``vertices`` (V, 3), steady for the whole clip."""
         lo, hi = vertices.min(0), vertices.max(0)
         centre = (lo + hi) / 2
         half = 0.55 * max((hi[1] - lo[1]), (hi[0] - lo[0]) * height / width)
@@ -67,6 +68,7 @@ def vertex_normals(vertices: np.ndarray, faces: np.ndarray, incidence: sparse.cs
 
 
 def face_incidence(n_vertices: int, faces: np.ndarray) -> sparse.csr_matrix:
+    """(V, F) sparse vertex-face incidence, to sum face normals onto vertices."""
     rows = faces.reshape(-1)
     cols = np.repeat(np.arange(len(faces)), 3)
     return sparse.csr_matrix((np.ones(len(rows)), (rows, cols)), shape=(n_vertices, len(faces)))
@@ -93,6 +95,7 @@ class OpenCLRasterizer:
         self.big = np.full(width * height, np.iinfo(np.int32).max, np.int32)
 
     def render(self, screen: np.ndarray, normals: np.ndarray) -> np.ndarray:
+        """One RGB frame (H, W, 3) uint8 from projected vertices ``screen`` (V, 4) and ``normals`` (V, 4)."""
         import pyopencl as cl
 
         q = self.q
@@ -110,6 +113,7 @@ class OpenCLRasterizer:
         return out
 
     def triangle_ids(self) -> np.ndarray:
+        """(height, width) int32 triangle per pixel of the last frame, INT32_MAX where none."""
         import pyopencl as cl
 
         out = np.empty(self.width * self.height, np.int32)
@@ -225,6 +229,7 @@ class NumpyRasterizer:
         self.ids = np.full((height, width), -1, np.int64)
 
     def render(self, screen: np.ndarray, normals: np.ndarray) -> np.ndarray:
+        """One RGB frame (H, W, 3) uint8, as :meth:`OpenCLRasterizer.render`."""
         self.ids = triangle_ids_numpy(screen, self.faces, self.width, self.height)
         return shade_numpy(screen, self.faces, normals, self.ids)
 
@@ -290,6 +295,9 @@ def render_frames(clip: MeshAnimation, settings: RenderSettings, compare: MeshAn
 
 def run(anims: list[Path], audios: list[Path], out: Path, settings: RenderSettings, compare: Path | None = None,
         overwrite: bool = False) -> dict:
+    """Render the animations one after another, each with its audio, into the AVI ``out``;
+    returns frames, seconds of video and frames rendered per second.
+    """
     import imageio_ffmpeg
 
     if len(anims) != len(audios):

@@ -28,6 +28,11 @@ from ..search.synthesis import prepare
 
 @dataclass
 class Suggestion:
+    """A node to constrain the phone at the asked time to: its emotion, take, triphone context
+    (and whether it matches), the time-correct frame (fractional database frame), the best total
+    cost of the utterance through it and that cost above the unconstrained optimum.
+    """
+
     node: int
     emotion: str
     take: str
@@ -40,6 +45,9 @@ class Suggestion:
 
 def suggest(db_path: Path, phones_path: Path, at_s: float, settings: SynthesizeSettings, ingest_settings: IngestSettings,
             emotions_path: Path | None = None, constraints_path: Path | None = None) -> tuple[dict, list[Suggestion]]:
+    """Nodes of the phone at ``at_s`` (s) ranked by the best total cost through them (forward and
+    backward DP, paper VI-A); returns the phone's description and the ranked suggestions.
+    """
     db = MotionDatabase.read(db_path)
     utt, constraints = prepare(db, phones_path, emotions_path, constraints_path, ingest_settings)
     c = utt.index_at(at_s)

@@ -30,11 +30,13 @@ ALPHAS = ("alpha1", "alpha2", "alpha3", "alpha4", "alpha5", "alpha6")
 
 
 def to_vector(s: SynthesizeSettings) -> np.ndarray:
+    """The search vector of the alphas: logs, alpha4 as a logit."""
     a4 = min(max(s.alpha4, 1e-6), 1 - 1e-6)
     return np.array([np.log(s.alpha1), np.log(s.alpha2), np.log(s.alpha3), np.log(a4 / (1 - a4)), np.log(s.alpha5), np.log(s.alpha6)])
 
 
 def from_vector(v: np.ndarray, s: SynthesizeSettings) -> SynthesizeSettings:
+    """Settings with the alphas of search vector ``v``."""
     a = np.exp(v)
     return dataclasses.replace(s, alpha1=float(a[0]), alpha2=float(a[1]), alpha3=float(a[2]),
                                alpha4=float(1 / (1 + np.exp(-v[3]))), alpha5=float(a[4]), alpha6=float(a[5]))
@@ -42,6 +44,9 @@ def from_vector(v: np.ndarray, s: SynthesizeSettings) -> SynthesizeSettings:
 
 def tune(db_path: Path, corpus: Path, settings: TuneSettings, synth: SynthesizeSettings, evaluate_settings: EvaluateSettings,
          normalize_settings: NormalizeSettings, progress_fn=None) -> dict:
+    """Tune alpha1..alpha6 on the validation takes of ``corpus``; returns the weights and the
+    errors (mm^2) before and after on the validation and test takes.
+    """
     for name in ALPHAS:
         if getattr(synth, name) <= 0:
             raise InputError(f"synthesize.{name} must be positive to tune it (got {getattr(synth, name)}).")
@@ -92,6 +97,7 @@ def _simplex(v: np.ndarray, step: float = 0.7) -> np.ndarray:
 
 
 def write_config(path: Path, summary: dict, overwrite: bool) -> None:
+    """Write the tuned weights as a TOML ``[synthesize]`` section ``synthesize --config`` accepts."""
     lines = ["# Cost weights tuned by `facesynth tune` (paper VI-D): use with --config.",
              f"# validation error (Eq. 13, mm^2): {summary['validation_err_before']:.4f} -> {summary['validation_err_after']:.4f}"]
     if "test_err_before" in summary:
@@ -104,6 +110,7 @@ def write_config(path: Path, summary: dict, overwrite: bool) -> None:
 def run(db_path: Path, corpus: Path, out: Path, settings: TuneSettings, synth: SynthesizeSettings,
         evaluate_settings: EvaluateSettings, normalize_settings: NormalizeSettings, overwrite: bool = False,
         progress_fn=None) -> dict:
+    """Tune and write ``out``; returns the summary."""
     check_output(out, overwrite)
     summary = tune(db_path, corpus, settings, synth, evaluate_settings, normalize_settings, progress_fn)
     write_config(out, summary, overwrite)
