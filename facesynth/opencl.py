@@ -300,6 +300,15 @@ def device_description(wanted: bool = True) -> str:
     return choice().description if use_opencl(wanted) else "NumPy"
 
 
+def device_record(wanted: bool = True) -> tuple[str, str]:
+    """What an artifact records of where it was computed: the device (as :func:`device_description`)
+    and why that one ("use_opencl = false", the choice's reason, or why no device could be used)."""
+    if not wanted:
+        return "NumPy", "use_opencl = false"
+    chosen = choice()
+    return device_description(wanted), chosen.reason
+
+
 def reset() -> None:
     """Forget the chosen device and built kernels (tests switch devices through the environment)."""
     for cached in (choice, _warn_fallback, context, queue, program, kernel):

@@ -104,7 +104,7 @@ def test_the_pipeline_runs_and_matches_without_a_working_device(no_device_builds
     assert r.exit_code == 0, r.output
     assert len([line for line in r.output.splitlines() if line.startswith("warning:") and BROKEN in line]) == 1
     with h5py.File(tiny_db) as a, h5py.File(tmp_path / "db.h5") as b:
-        assert b["pairs"].attrs["device"] == "NumPy"
+        assert b["pairs"].attrs["device"] == "NumPy" and BROKEN in b["pairs"].attrs["device_reason"]
         assert np.array_equal(a["pairs/dsc"][()], b["pairs/dsc"][()])
         np.testing.assert_allclose(b["pairs/pgap"][()], a["pairs/pgap"][()], rtol=1e-5, atol=1e-4)
     tg = tiny_corpus / "labels" / f"{held_out_take}.TextGrid"
@@ -112,7 +112,7 @@ def test_the_pipeline_runs_and_matches_without_a_working_device(no_device_builds
     r = runner.invoke(main, ["synthesize", str(tiny_db), "--phonemes", str(tg), "-o", str(tmp_path / "m.h5")])
     assert r.exit_code == 0 and r.output.count(BROKEN) == 1, r.output
     with h5py.File(tmp_path / "m.h5") as f:
-        assert f["path"].attrs["device"] == "NumPy"
+        assert f["path"].attrs["device"] == "NumPy" and BROKEN in f["path"].attrs["device_reason"]
     opencl.reset()
     r = runner.invoke(main, ["synthesize", str(tiny_db), "--phonemes", str(tg), "-o", str(tmp_path / "n.h5"),
                              "--set", "synthesize.use_opencl=false"])

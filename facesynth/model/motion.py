@@ -19,7 +19,7 @@ class SearchPath:
     node : (T,) int64 chosen node; phone, emotion : asked; node_phone, node_emotion : chosen.
     start, end : (T,) float64 s. costs : per term ("tc", "oc", "emp", "block"), (T,) float32.
     total_cost : Eq. 4; non_captured_joins : joins without a captured link; search : "dp" or
-    "greedy"; device : where the search ran.
+    "greedy"; device : where the search ran, device_reason : why there.
     """
 
     node: np.ndarray
@@ -34,6 +34,7 @@ class SearchPath:
     non_captured_joins: int
     search: str
     device: str
+    device_reason: str = ""
 
 
 @dataclass
@@ -133,7 +134,8 @@ def _write_path(g, s: SearchPath) -> None:
     p.create_dataset("end", data=s.end).attrs["units"] = "s"
     for key, value in s.costs.items():
         p.create_dataset(f"cost_{key}", data=value)
-    p.attrs.update(total_cost=s.total_cost, non_captured_joins=s.non_captured_joins, search=s.search, device=s.device)
+    p.attrs.update(total_cost=s.total_cost, non_captured_joins=s.non_captured_joins, search=s.search, device=s.device,
+                   device_reason=s.device_reason)
 
 
 def _write_provenance(g, v: Provenance) -> None:

@@ -108,7 +108,7 @@ class PairTerms:
     dsc : (N, N) float32 mm^2/frame^3, Eq. 6 (0 where node j has no captured predecessor).
     pgap, vgap : (N, N) float32, Eq. 8-9 in mm and mm/frame.
     boundary : first_pos, last_pos, first_vel, last_vel, each (N, 3M) float32 (mm, mm/frame).
-    device : where PGap/VGap were computed ("OpenCL: ..." or "NumPy").
+    device : where PGap/VGap were computed ("OpenCL: ..." or "NumPy"); device_reason : why there.
     """
 
     dsc: np.ndarray
@@ -116,6 +116,7 @@ class PairTerms:
     vgap: np.ndarray
     boundary: tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]
     device: str
+    device_reason: str = ""
 
     def subset(self, keep: np.ndarray) -> "PairTerms":
         """Rows and columns ``keep`` of every table, in row blocks."""
@@ -125,7 +126,7 @@ class PairTerms:
             for a in range(0, len(keep), 512):
                 out[a : a + 512] = m[keep[a : a + 512]][:, keep]
             tables.append(out)
-        return PairTerms(*tables, tuple(b[keep] for b in self.boundary), self.device)
+        return PairTerms(*tables, tuple(b[keep] for b in self.boundary), self.device, self.device_reason)
 
 
 @dataclass
@@ -206,7 +207,7 @@ class MotionDatabase:
         with open_artifact(self.path, self.KIND) as f:
             return PairTerms(*(read(f, f"pairs/{k}") for k in PAIR_KEYS),
                              tuple(read(f, f"boundary/{k}") for k in BOUNDARY_KEYS),
-                             str(f["pairs"].attrs.get("device", "")))
+                             str(f["pairs"].attrs.get("device", "")), str(f["pairs"].attrs.get("device_reason", "")))
 
     def transition(self, settings) -> np.ndarray:
         """The full (N, N) float32 TC matrix of Table I for ``settings`` (SynthesizeSettings)."""
@@ -253,6 +254,7 @@ class MotionDatabase:
                 d.attrs["units"] = PAIR_UNITS[key]
                 d.attrs["layout"] = "row = predecessor candidate i, column = node j"
             p.attrs["device"] = pairs.device
+            p.attrs["device_reason"] = pairs.device_reason
             b = stamp(g.create_group("boundary"), "boundary-states")
             for key, value in zip(BOUNDARY_KEYS, pairs.boundary):
                 b.create_dataset(key, data=value.astype(np.float32))

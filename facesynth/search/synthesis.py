@@ -51,17 +51,17 @@ def greedy_search(db: MotionDatabase, tc, utt: Utterance, steps: StepCosts, sett
     result = Greedy(graph, db.nodes.viseme, db.nodes.emotion, tc, settings.alpha6 * settings.pnt).search(utt.phones, utt.emotions)
     terms = path_terms(result.path, tc, steps)
     cost = float(sum(v.astype(np.float64).sum() for v in terms.values()))
-    return DpResult(cost, result.path, np.zeros((0, 0), np.float32)), f"greedy ({'%d clusters' % settings.greedy_clusters if settings.greedy_clusters else 'unclustered'})"
+    graph_kind = f"{settings.greedy_clusters} clusters" if settings.greedy_clusters else "unclustered"
+    return DpResult(cost, result.path, np.zeros((0, 0), np.float32)), (f"greedy ({graph_kind})", "synthesize.search = greedy")
 
 
 def search(tc, steps: StepCosts, settings: SynthesizeSettings):
-    """Run the DP; returns (DpResult, device description)."""
-    from ..opencl import device_description
+    """Run the DP; returns (DpResult, (device, why that device))."""
+    from ..opencl import device_record
     from .dp import dp_numpy, dp_opencl
 
-    if use_opencl(settings.use_opencl):
-        return dp_opencl(tc, steps.total), device_description()
-    return dp_numpy(tc, steps.total), "NumPy"
+    run = dp_opencl if use_opencl(settings.use_opencl) else dp_numpy
+    return run(tc, steps.total), device_record(settings.use_opencl)
 
 
 def table_iv_weight(settings: SynthesizeSettings):
@@ -119,7 +119,8 @@ def synthesize(db: MotionDatabase, utt: Utterance, constraints: dict[int, int], 
     path = result.path
     for t, node in constraints.items():  # Eq. 10 guarantees this; a failure is a bug
         assert path[t] == node, f"constraint at step {t} not met"
-    return {"path": path, "cost": result.cost, "terms": path_terms(path, tc, steps), "device": device,
+    return {"path": path, "cost": result.cost, "terms": path_terms(path, tc, steps), "device": device[0],
+            "device_reason": device[1],
             "timings": timings, **render_path(db, utt, path, settings)}
 
 
@@ -173,7 +174,7 @@ def as_motion(db: MotionDatabase, utt: Utterance, res: dict, settings: Synthesiz
     cat = res["concatenated"]
     path = SearchPath(res["path"], list(utt.phones), list(utt.emotions), [db.nodes.phone[j] for j in res["path"]],
                       [db.nodes.emotion[j] for j in res["path"]], utt.starts, utt.ends, res["terms"], res["cost"],
-                      res["non_captured_joins"], settings.search, res["device"])
+                      res["non_captured_joins"], settings.search, res["device"], res["device_reason"])
     provenance = Provenance(cat.node, res["take"], db.takes.name, cat.source_frame, cat.step, cat.smoothed, db.fps)
     return Motion(res["markers"], settings.output_fps, res["markers_capture"], db.fps, db.marker_names, db.reference,
                   res["head_rotation"], res["head_translation"], cat.coeffs, path, provenance)

@@ -33,7 +33,7 @@ from ..errors import InputError
 from ..model.motiondb import MotionDatabase, Nodes, PairTerms
 from ..model.pca import PcaFrames, PcaModel
 from ..model.tables import Phones, Takes
-from ..opencl import device_description, use_opencl
+from ..opencl import device_record, use_opencl
 from ..phonemes import PAU, viseme
 
 
@@ -190,8 +190,8 @@ def run(pca_path: Path, out: Path, settings: BuildDbSettings, overwrite: bool = 
     gaps = pair_gaps_opencl if use_opencl(settings.use_opencl) else pair_gaps_numpy
     pgap, vgap = gaps(*states)
     timings["gaps_s"] = time.perf_counter() - t0
-    device = device_description(settings.use_opencl)
+    device, reason = device_record(settings.use_opencl)
     db = MotionDatabase(pca.takes, pca.phones, pca.marker_names, pca.model, coeffs, pca.frames, nodes)
-    db.write(out, PairTerms(dsc, pgap, vgap, states, device), config=settings_json(settings), inputs=[pca_path],
+    db.write(out, PairTerms(dsc, pgap, vgap, states, device, reason), config=settings_json(settings), inputs=[pca_path],
              overwrite=overwrite)
     return {"nodes": len(nodes), "with_predecessor": int((nodes.pre >= 0).sum()), "device": device, **timings}
