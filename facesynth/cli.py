@@ -520,5 +520,31 @@ def devices(ctx: Context):
     for line in describe_devices():
         click.echo(line)
 
+
+@main.command()
+@click.argument("files", metavar="FILE...", nargs=-1, required=True, type=PATH)
+@stage
+def check(ctx: Context, files: tuple[Path, ...]):
+    """Validate artifacts against docs/file-format.md: kind, schema, every group and dataset
+    (dtype, shape, units, fps, encoding-type), no links or data outside the file, finite
+    numbers, and inputs that still exist with the recorded sha256 (relative paths from the
+    current directory). Prints one line per problem, or 'FILE: ok (kind, schema N)'.
+
+    \b
+    Example:
+      facesynth check corpus.h5 db.h5 motion.h5
+    """
+    from .check import check_files
+
+    reports = check_files(files)
+    for report in reports:
+        if not (report.ok and ctx.quiet):
+            click.echo("\n".join(report.lines()))
+    bad = [r for r in reports if not r.ok]
+    if bad:
+        n = sum(len(r.problems) for r in bad)
+        raise FacesynthError(f"{n} problem{'s' * (n > 1)} in {len(bad)} of {len(reports)} file{'s' * (len(reports) > 1)}.")
+
+
 if __name__ == "__main__":  # pragma: no cover
     main()

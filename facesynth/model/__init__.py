@@ -11,6 +11,7 @@ motiondb      Nodes, MotionDatabase       ``motiondb`` (facesynth build-db, prun
 isomap        IsomapCluster               ``isomap`` (facesynth isomap)
 motion        Motion                      ``motion`` (facesynth synthesize, capture)
 meshanim      MeshAnimation               ``meshanim`` (facesynth deform)
+spec          KINDS (the specification)   every kind, as data (facesynth check, docs)
 ============  ==========================  ==========================================
 
 Stage modules (``facesynth.stages``) import these and the domain packages, never another

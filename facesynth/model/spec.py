@@ -1,0 +1,534 @@
+"""The specification of every artifact kind, as data: what ``facesynth check`` validates and
+what ``docs/file-format.md`` lists.
+
+For each kind and schema it declares every group (with the ``encoding-type`` its writer
+stamps on it) and every dataset: dtype, shape in symbols, unit, the attributes it must
+carry, whether its numbers must be finite and whether it is required. The facts come from
+the writers in this package (one per kind); ``tests/test_check.py`` writes every kind from
+the tiny sample corpus and checks it against this specification, so the two cannot drift.
+
+Shapes are tuples of sizes: an int is a fixed size, a symbol (see :data:`SYMBOLS`) has one
+size throughout the file (``facesynth check`` takes the size most keys agree on as right);
+``"3M"`` is three times M and ``"V+1"`` is V plus one. The symbols a group with a pattern
+name (``<phone>``) lists in its ``local`` have one size within each such group.
+
+``python -m facesynth.model.spec docs/file-format.md`` rewrites the generated part of that
+document from :func:`markdown`; without an argument it prints it.
+"""
+
+from __future__ import annotations
+
+import re
+import sys
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Iterator, Union
+
+from ..artifacts import ENCODING_VERSION, PRODUCERS, SCHEMAS
+
+#: What each shape symbol counts.
+SYMBOLS: dict[str, str] = {
+    "F": "frames at the capture rate (all takes of a corpus-side artifact; a motion's capture-rate frames)",
+    "Fo": "frames at the output rate (a motion's and a mesh animation's frames)",
+    "M": "markers",
+    "T": "takes",
+    "P": "phone segments of the takes",
+    "S": "audio samples of all takes",
+    "K": "PCA components",
+    "N": "motion nodes",
+    "R": "nodes removed by every prune so far",
+    "U": "phones of a synthesized utterance (steps of the search)",
+    "V": "mesh vertices",
+    "Tri": "mesh triangles",
+    "B": "markers bound to the mesh",
+    "W": "stored (non-zero) deformation weights",
+    "n": "frames of one phoneme cluster",
+    "ti": "Delaunay triangles of one cluster's Isomap",
+    "tp": "Delaunay triangles of one cluster's PCA map",
+}
+
+#: The dtypes a dataset may be declared with.
+DTYPES = ("float32", "float64", "int32", "int64", "bool", "str")
+
+#: Attribute types: a UTF-8 string, an integer, a number, a JSON string, a 1-D integer array.
+ATTR_TYPES = ("str", "int", "float", "json", "ints")
+
+_SIZE = re.compile(r"^(\d*)([A-Za-z][A-Za-z0-9]*)(?:\+(\d+))?$")
+
+Required = Union[bool, str]
+"""True (always), False (optional) or a variant's name (required in that variant, optional otherwise)."""
+
+
+@dataclass(frozen=True)
+class Attr:
+    """An attribute of a group, a dataset or the file's root.
+
+    type : one of :data:`ATTR_TYPES`. choices : the allowed strings. ge, gt, le : bounds of a
+    number. shape : for type ``ints``, the symbols its values are the sizes of (e.g. ("V", "B")).
+    """
+
+    name: str
+    type: str
+    doc: str = ""
+    choices: tuple[str, ...] | None = None
+    ge: float | None = None
+    gt: float | None = None
+    le: float | None = None
+    shape: tuple[str, ...] | None = None
+    required: Required = True
+
+
+@dataclass(frozen=True)
+class Dataset:
+    """A dataset: dtype (one of :data:`DTYPES`, or a tuple of those allowed), shape in symbols,
+    the unit of its numbers (stored as the ``units`` attribute when ``attrs`` lists it), and
+    whether every number must be finite (True, False, or only in the named variant)."""
+
+    name: str
+    dtype: str | tuple[str, ...]
+    shape: tuple[str | int, ...]
+    doc: str
+    unit: str | None = None
+    attrs: tuple[Attr, ...] = ()
+    finite: Required = True
+    required: Required = True
+
+
+@dataclass(frozen=True)
+class Group:
+    """A group stamped with ``encoding-type`` = ``encoding``. A name in angle brackets
+    (``<phone>``) stands for any number of groups of any name, each laid out alike; their
+    ``local`` symbols are bound afresh in each."""
+
+    name: str
+    encoding: str
+    doc: str
+    children: tuple[Entry, ...]
+    attrs: tuple[Attr, ...] = ()
+    required: Required = True
+    local: tuple[str, ...] = ()
+
+    @property
+    def pattern(self) -> bool:
+        return self.name.startswith("<")
+
+
+@dataclass(frozen=True)
+class Block:
+    """Entries several kinds share at their root, written by one function of the model layer."""
+
+    name: str
+    doc: str
+    entries: tuple[Entry, ...]
+
+
+Entry = Union[Dataset, Group]
+
+
+@dataclass(frozen=True)
+class Kind:
+    """An artifact kind at one schema: its root entries (shared blocks included) and root
+    attributes beyond the common ones. ``variant_attr`` names the root attribute that selects
+    a variant (absent: ``variants[0]``); ``writers`` the commands that write it, when more than
+    its producer."""
+
+    name: str
+    schema: int
+    doc: str
+    entries: tuple[Entry | Block, ...]
+    attrs: tuple[Attr, ...] = ()
+    variant_attr: str | None = None
+    variants: tuple[str, ...] = ()
+    writers: tuple[str, ...] = ()
+
+    @property
+    def producers(self) -> tuple[str, ...]:
+        """The commands that write this kind."""
+        return self.writers or (PRODUCERS[self.name],)
+
+    @property
+    def root(self) -> tuple[Entry, ...]:
+        """Every root entry, the shared blocks' spelled out."""
+        out: list[Entry] = []
+        for e in self.entries:
+            out.extend(e.entries if isinstance(e, Block) else (e,))
+        return tuple(out)
+
+    def variant(self, root_attrs) -> str | None:
+        """The variant a file with these root attributes is in (None for a kind without variants)."""
+        if not self.variant_attr:
+            return None
+        value = root_attrs.get(self.variant_attr, self.variants[0])
+        return value.decode("utf-8") if isinstance(value, bytes) else str(value)
+
+
+def applies(flag: Required, variant: str | None) -> bool:
+    """Whether a ``required``/``finite`` flag holds in ``variant``."""
+    return flag is True or (isinstance(flag, str) and flag == variant)
+
+
+def parse_size(size: str | int) -> tuple[int, str | None, int]:
+    """A shape entry as (factor, symbol, offset): size = factor * symbol + offset (symbol None:
+    the fixed size ``offset``)."""
+    if isinstance(size, int):
+        return 1, None, size
+    m = _SIZE.match(size)
+    if not m:
+        raise ValueError(f"bad shape entry {size!r}")
+    return int(m.group(1) or 1), m.group(2), int(m.group(3) or 0)
+
+
+# ---------------------------------------------------------------- shared pieces
+
+def _fps(doc: str = "frames/s") -> Attr:
+    return Attr("fps", "float", doc, gt=0)
+
+
+def _units(unit: str) -> Attr:
+    return Attr("units", "str", f"always {unit!r}", choices=(unit,))
+
+
+MM = _units("mm")
+SECONDS = _units("s")
+
+#: Root attributes of every artifact.
+COMMON_ATTRS: tuple[Attr, ...] = (
+    Attr("facesynth_kind", "str", "the kind: " + ", ".join(f"`{k}`" for k in SCHEMAS), choices=tuple(SCHEMAS)),
+    Attr("facesynth_schema", "int", "layout version of that kind; bumped on an incompatible change", ge=1),
+    Attr("facesynth_version", "str", "the facesynth version that wrote it"),
+    Attr("config", "json", "the resolved settings of the stage's configuration section"),
+    Attr("inputs", "json", "list of `{path, kind, sha256}` of the files it was made from"),
+)
+
+TABLES = Block("tables", "The corpus tables, copied forward by every corpus-side stage (`corpus` to `motiondb`).", (
+    Group("takes", "takes", "one row per take; its frames are `frame_start : frame_start + frame_count`", (
+        Dataset("name", "str", ("T",), "take name"),
+        Dataset("emotion", "str", ("T",), "emotion label"),
+        Dataset("sentence", "str", ("T",), "sentence id"),
+        Dataset("split", "str", ("T",), "`train`, `val` or `test`"),
+        Dataset("transcript", "str", ("T",), "what is said"),
+        Dataset("frame_start", "int64", ("T",), "first frame of the take in the frame arrays"),
+        Dataset("frame_count", "int64", ("T",), "frames of the take"),
+    )),
+    Group("phones", "phones", "one row per phone segment", (
+        Dataset("take", "int64", ("P",), "row of `takes`"),
+        Dataset("start", "float64", ("P",), "start, from the take's first frame", "s", (SECONDS,)),
+        Dataset("end", "float64", ("P",), "end, from the take's first frame", "s", (SECONDS,)),
+        Dataset("phone", "str", ("P",), "Festival phone (Table VI set), `pau` for silence"),
+    )),
+    Dataset("marker_names", "str", ("M",), "marker order of every marker array"),
+))
+
+HEAD_FRAMES = Block("head-frames", "The normalized frames and the head motion removed from them (paper III, "
+                    "Eq. 1-2), copied forward from `normalized`.", (
+    Dataset("markers", "float32", ("F", "M", 3), "head motion removed; NaN where a gap was too long to fill",
+            "mm", (MM, _fps(), Attr("origin_marker", "str", "the marker placed at the origin")), finite=False),
+    Dataset("head_rotation", "float32", ("F", 3, 3), "`captured = head_rotation @ normalized + head_translation`",
+            None, (_fps(), Attr("convention", "str", "this formula, as text"))),
+    Dataset("head_translation", "float32", ("F", 3), "see `head_rotation`", "mm", (MM, _fps())),
+    Dataset("reference", "float32", ("M", 3), "the neutral closed-mouth reference frame `y` of Eq. 1", "mm", (MM,)),
+))
+
+PCA_MODEL = Block("pca-model", "The PCA model of marker frames (Eq. 11); a frame's markers are packed "
+                  "marker-major into a 3M vector (index = 3 * marker + axis).", (
+    Group("pca", "pca-model", "the model", (
+        Dataset("mean", "float64", ("3M",), "MeanMotion of Eq. 11", "mm"),
+        Dataset("basis", "float64", ("3M", "K"), "EigMx of Eq. 11, orthonormal columns"),
+        Dataset("variances", "float64", ("K",), "variance along each component", "mm^2"),
+    ), attrs=(Attr("explained", "float", "fraction of the total variance the K components cover", ge=0, le=1),
+              Attr("layout", "str", "`vector index = 3 * marker + axis`"))),
+))
+
+
+# ---------------------------------------------------------------- the kinds
+
+CORPUS = Kind("corpus", SCHEMAS["corpus"], "The ingested capture (paper III): every take concatenated.", (
+    Dataset("markers", "float32", ("F", "M", 3), "raw capture, head motion in; NaN where a marker was not seen",
+            "mm", (MM, _fps()), finite=False),
+    TABLES,
+    Group("audio", "audio", "all takes' audio, mono, concatenated", (
+        Dataset("samples", "float32", ("S",), "samples of every take, one after another"),
+        Dataset("start", "int64", ("T",), "first sample of each take"),
+        Dataset("count", "int64", ("T",), "samples of each take"),
+    ), attrs=(Attr("sample_rate", "int", "samples/s", gt=0),)),
+))
+
+NORMALIZED = Kind("normalized", SCHEMAS["normalized"], "The capture with head motion removed (paper III, Eq. 1-2).", (
+    TABLES, HEAD_FRAMES,
+))
+
+PCA = Kind("pca", SCHEMAS["pca"], "The normalized frames and their PCA coefficients (paper III, Eq. 11).", (
+    TABLES, PCA_MODEL,
+    Dataset("coefficients", "float32", ("F", "K"), "PcaCoef of Eq. 11 per frame", "mm", (MM, _fps())),
+    HEAD_FRAMES,
+))
+
+_PAIR_LAYOUT = Attr("layout", "str", "`row = predecessor candidate i, column = node j`")
+
+MOTIONDB = Kind("motiondb", SCHEMAS["motiondb"], (
+    "The motion-node database (paper III, VI-B): a node per training phone, the frames they index "
+    "(the phoneme clusters) and the pairwise transition terms of Table I, stored in row chunks so "
+    "a search streams them. `facesynth prune` writes the same kind with the `pruned` group."), (
+    TABLES, PCA_MODEL, HEAD_FRAMES,
+    Dataset("coefficients", "float32", ("F", "K"), "PcaCoef of Eq. 11 per frame; nodes index these frames", "mm",
+            (_fps(),)),
+    Group("nodes", "nodes", "one row per motion node", (
+        Dataset("phone", "str", ("N",), "the node's phone"),
+        Dataset("emotion", "str", ("N",), "emotion of its take"),
+        Dataset("prev_phone", "str", ("N",), "triphone context before (`pau` at sentence edges)"),
+        Dataset("next_phone", "str", ("N",), "triphone context after (`pau` at sentence edges)"),
+        Dataset("viseme", "int64", ("N",), "Table VI class of the phone"),
+        Dataset("take", "int64", ("N",), "row of `takes`"),
+        Dataset("frame_start", "int64", ("N",), "first frame in `coefficients`"),
+        Dataset("frame_count", "int64", ("N",), "frames of the node"),
+        Dataset("start_s", "float64", ("N",), "the phone's start in its take", "s"),
+        Dataset("end_s", "float64", ("N",), "the phone's end in its take", "s"),
+        Dataset("pre", "int64", ("N",), "captured predecessor node, -1 if none"),
+        Dataset("suc", "int64", ("N",), "captured successor node, -1 if none"),
+    )),
+    Group("frames", "phoneme-clusters", "per frame: its node; a phoneme cluster is the frames whose node has that phone", (
+        Dataset("node", "int64", ("F",), "node of each frame, -1 outside nodes (pauses, held-out takes)",
+                attrs=(Attr("meaning", "str", "what the values are"),)),
+        Dataset("relative_time", "float32", ("F",), "0 to 1 inside the frame's node, NaN outside",
+                attrs=(Attr("meaning", "str", "what the values are"),), finite=False),
+    )),
+    Group("pairs", "pair-terms", "the pair terms of Table I, row = predecessor candidate i, column = node j", (
+        Dataset("dsc", "float32", ("N", "N"), "DSC(o_i, pre(o_j)) of Eq. 6; 0 where o_j has no predecessor",
+                "mm^2/frame^3", (_units("mm^2/frame^3"), _PAIR_LAYOUT)),
+        Dataset("pgap", "float32", ("N", "N"), "PGap of Eq. 8 from o_i to o_j", "mm", (MM, _PAIR_LAYOUT)),
+        Dataset("vgap", "float32", ("N", "N"), "VGap of Eq. 9 from o_i to o_j", "mm/frame",
+                (_units("mm/frame"), _PAIR_LAYOUT)),
+    ), attrs=(Attr("device", "str", "where PGap and VGap were computed"),)),
+    Group("boundary", "boundary-states", "the node boundary states behind Eq. 8-9 (3M vectors)", (
+        Dataset("first_pos", "float32", ("N", "3M"), "markers of the node's first frame", "mm"),
+        Dataset("last_pos", "float32", ("N", "3M"), "markers of the node's last frame", "mm"),
+        Dataset("first_vel", "float32", ("N", "3M"), "velocity at the node's first frame", "mm/frame"),
+        Dataset("last_vel", "float32", ("N", "3M"), "velocity at the node's last frame", "mm/frame"),
+    )),
+    Group("pruned", "pruned", "what `facesynth prune` removed (a pruned database only)", (
+        Dataset("original_id", "int64", ("N",), "each kept node's id in the unpruned database"),
+        Dataset("removed_id", "int64", ("R",), "every removed id, all prunes so far"),
+        Dataset("reason", "str", ("R",), "why each was removed"),
+    ), required=False),
+), writers=("facesynth build-db", "facesynth prune"))
+
+ISOMAP = Kind("isomap", SCHEMAS["isomap"], (
+    "Phoneme-Isomaps (paper IV, Eq. 3, Fig. 7): per phoneme cluster two 2D maps with their Delaunay "
+    "triangles, and the PCA model and marker names that turn a picked point into markers (Eq. 11)."), (
+    PCA_MODEL,
+    Dataset("marker_names", "str", ("M",), "marker order"),
+    Group("clusters", "phoneme-maps", "one group per phoneme cluster", (
+        Group("<phone>", "phoneme-map", "the cluster of frames whose node has phone `<phone>`", (
+            Dataset("frames", "int64", ("n",), "the cluster's frames (rows of the database's `coefficients`)"),
+            Dataset("node", "int64", ("n",), "their nodes"),
+            Dataset("relative_time", "float64", ("n",), "position in the node, 0 to 1"),
+            Dataset("emotion", "str", ("n",), "emotion of each frame"),
+            Dataset("coefficients", "float32", ("n", "K"), "the frames themselves", "mm"),
+            Dataset("isomap", "float64", ("n", 2), "the 2D Isomap of Eq. 3"),
+            Dataset("isomap_triangles", "int32", ("ti", 3), "Delaunay triangles of `isomap` (rows of the cluster)"),
+            Dataset("pca_map", "float64", ("n", 2), "projection on the cluster's two main axes"),
+            Dataset("pca_map_triangles", "int32", ("tp", 3), "Delaunay triangles of `pca_map` (rows of the cluster)"),
+        ), attrs=(Attr("n_neighbors", "int", "Isomap neighbours used (0: shown as the PCA map)", ge=0),
+                  Attr("exact_frames", "int", "frames embedded exactly (the rest by the out-of-sample extension)", ge=0),
+                  Attr("note", "str", "why fewer neighbours were used, or empty")),
+            local=("n", "ti", "tp")),
+    )),
+))
+
+_HEAD_CONVENTION = Attr("convention", "str", "how the head motion applies")
+
+MOTION = Kind("motion", SCHEMAS["motion"], (
+    "Marker motion in the head frame, with the head motion beside it. `facesynth synthesize` writes the "
+    "`synthesis` variant (with the search path and per-frame provenance); `facesynth capture` writes a "
+    "captured take as the `capture` variant (root attribute `source = \"capture\"`, no `coefficients`, "
+    "`path` or `provenance`), whose markers keep NaN where a gap was too long to fill."), (
+    Dataset("markers", "float32", ("Fo", "M", 3), "the motion at the output rate, head frame", "mm",
+            (MM, _fps("output rate, frames/s")), finite="synthesis"),
+    Dataset("markers_capture", "float32", ("F", "M", 3), "the motion at the capture rate, before down-sampling", "mm",
+            (MM, _fps("capture rate, frames/s")), finite="synthesis"),
+    Dataset("coefficients", "float32", ("F", "K"), "the concatenated, smoothed PCA frames", "mm",
+            (_fps("capture rate, frames/s"),), required="synthesis"),
+    Dataset("marker_names", "str", ("M",), "marker order"),
+    Dataset("reference", "float32", ("M", 3), "rest pose", "mm", (MM,)),
+    Dataset("head_rotation", "float32", ("Fo", 3, 3),
+            "head pose relative to each source take's mean: `x -> head_rotation @ x + head_translation` "
+            "(`deform.apply_head_motion` puts it back)",
+            None, (_fps("output rate, frames/s"), _HEAD_CONVENTION)),
+    Dataset("head_translation", "float32", ("Fo", 3), "see `head_rotation`", "mm", (MM, _fps("output rate, frames/s"))),
+    Group("path", "search-path", "the search's choice, one row per input phone (`cost_tc[t]` is the transition into step t)", (
+        Dataset("node", "int64", ("U",), "the chosen node"),
+        Dataset("phone", "str", ("U",), "the phone asked for"),
+        Dataset("emotion", "str", ("U",), "the emotion asked for"),
+        Dataset("node_phone", "str", ("U",), "the chosen node's phone"),
+        Dataset("node_emotion", "str", ("U",), "the chosen node's emotion"),
+        Dataset("start", "float64", ("U",), "the input phone's start", "s", (SECONDS,)),
+        Dataset("end", "float64", ("U",), "the input phone's end", "s", (SECONDS,)),
+        Dataset("cost_tc", "float32", ("U",), "transition cost of Eq. 4 into the step"),
+        Dataset("cost_oc", "float32", ("U",), "observation cost of Eq. 4"),
+        Dataset("cost_emp", "float32", ("U",), "emotion mismatch penalty of Eq. 4"),
+        Dataset("cost_block", "float32", ("U",), "blocking penalty of Eq. 10"),
+    ), attrs=(Attr("total_cost", "float", "Eq. 4 along the path"),
+              Attr("non_captured_joins", "int", "joins without a captured predecessor/successor link", ge=0),
+              Attr("search", "str", "the search that chose the path (`dp` or `greedy`)"),
+              Attr("device", "str", "where the search ran")), required="synthesis"),
+    Group("provenance", "provenance", "where each capture-rate frame came from", (
+        Dataset("node", "int64", ("F",), "source node, -1 for regenerated silence"),
+        Dataset("take", "int64", ("F",), "source take (row of `take_names`), -1 for regenerated silence"),
+        Dataset("take_names", "str", ("T",), "the database's take names"),
+        Dataset("source_frame", "int64", ("F",), "frame in the database, -1 for regenerated silence"),
+        Dataset("step", "int64", ("F",), "input phone (row of `path`)"),
+        Dataset("smoothed", "bool", ("F",), "frame changed by Eq. 16 smoothing (or Cao's blending)"),
+    ), attrs=(_fps("capture rate, frames/s"), Attr("meaning", "str", "what the values are")), required="synthesis"),
+), attrs=(Attr("source", "str", "`capture` for a captured take; absent for a synthesis", choices=("capture",),
+               required=False),
+          Attr("take", "str", "the captured take", required="capture")),
+    variant_attr="source", variants=("synthesis", "capture"), writers=("facesynth synthesize", "facesynth capture"))
+
+MESHANIM = Kind("meshanim", SCHEMAS["meshanim"], (
+    "The face mesh moved by marker motion (paper VII-A), with the deformation weights of Eq. 14-15. "
+    "Vertices and markers keep NaN where the driving motion has them (a capture with long gaps)."), (
+    Dataset("vertices", "float32", ("Fo", "V", 3), "the animated mesh", "mesh units",
+            (_units("mesh units"), _fps()), finite=False),
+    Dataset("rest", "float32", ("V", 3), "the mesh as read", "mesh units"),
+    Dataset("faces", "int32", ("Tri", 3), "triangles (rows of `rest`)"),
+    Group("weights", "csr-matrix", "the (V, B) Gaussian weights of Eq. 14-15 in CSR form; rows sum to 1 (0 where unreached)", (
+        Dataset("data", "float32", ("W",), "the non-zero weights"),
+        Dataset("indices", ("int32", "int64"), ("W",), "column (bound marker) of each weight"),
+        Dataset("indptr", ("int32", "int64"), ("V+1",), "row starts in `data`"),
+        Dataset("markers", "str", ("B",), "the bound markers"),
+        Dataset("vertex_of", "int64", ("B",), "each bound marker's vertex"),
+    ), attrs=(Attr("shape", "ints", "the matrix's shape (V, B)", shape=("V", "B")),)),
+    Dataset("markers", "float32", ("Fo", "M", 3), "the driving marker motion", "mm", (MM, _fps()), finite=False),
+    Dataset("marker_names", "str", ("M",), "marker order"),
+), attrs=(Attr("fit_rms", "float", "residual of the marker-to-mesh similarity fit, mesh units"),))
+
+#: Every kind's specification at its current schema.
+KINDS: dict[str, Kind] = {k.name: k for k in (CORPUS, NORMALIZED, PCA, MOTIONDB, ISOMAP, MOTION, MESHANIM)}
+
+BLOCKS: tuple[Block, ...] = (TABLES, HEAD_FRAMES, PCA_MODEL)
+
+
+def walk(entries: tuple[Entry, ...], prefix: str = "") -> Iterator[tuple[str, Entry]]:
+    """Every entry below ``entries`` with its key (``clusters/<phone>/frames``), depth first."""
+    for e in entries:
+        key = f"{prefix}{e.name}"
+        yield key, e
+        if isinstance(e, Group):
+            yield from walk(e.children, key + "/")
+
+
+# ---------------------------------------------------------------- the document
+
+def _cell(text: str) -> str:
+    return text.replace("|", "\\|")
+
+
+def _attr_text(a: Attr) -> str:
+    bits = []
+    if a.choices and len(a.choices) == 1:
+        bits.append(f"`{a.name}` = `{a.choices[0]}`")
+    else:
+        kind = {"str": "string", "int": "int", "float": "float", "json": "JSON string", "ints": "int array"}[a.type]
+        bounds = [f">= {a.ge:g}" if a.ge is not None else "", f"> {a.gt:g}" if a.gt is not None else "",
+                  f"<= {a.le:g}" if a.le is not None else ""]
+        if a.shape:
+            bounds.append("(" + ", ".join(a.shape) + ")")
+        if a.choices:
+            bounds.append("one of " + ", ".join(f"`{c}`" for c in a.choices))
+        bounds = [b for b in bounds if b]
+        bits.append(f"`{a.name}` ({kind}{' ' + ', '.join(bounds) if bounds else ''})" + (f": {a.doc}" if a.doc else ""))
+    if a.required is False:
+        bits.append("(optional)")
+    elif isinstance(a.required, str):
+        bits.append(f"(required in `{a.required}`)")
+    return " ".join(bits)
+
+
+def _required_text(flag: Required) -> str:
+    return "yes" if flag is True else "no" if flag is False else f"in `{flag}`"
+
+
+def _dtype_text(d: Dataset) -> str:
+    text = " or ".join(d.dtype) if isinstance(d.dtype, tuple) else d.dtype
+    if d.dtype in ("float32", "float64"):
+        if d.finite is False:
+            text += ", NaN allowed"
+        elif isinstance(d.finite, str):
+            text += f", finite in `{d.finite}`"
+    return text
+
+
+def _shape_text(shape: tuple) -> str:
+    return "(" + ", ".join(str(s) for s in shape) + ("," if len(shape) == 1 else "") + ")"
+
+
+def _rows(entries: tuple[Entry, ...]) -> list[str]:
+    rows = ["| key | type | shape | unit | attributes | required | meaning |", "|---|---|---|---|---|---|---|"]
+    for key, e in walk(entries):
+        attrs = "; ".join(_attr_text(a) for a in e.attrs)
+        if isinstance(e, Group):
+            local = f" ({', '.join(e.local)} per group)" if e.local else ""
+            rows.append(f"| `{key}/` | group `{e.encoding}` | | | {_cell(attrs)} | {_required_text(e.required)} | "
+                        f"{_cell(e.doc)}{local} |")
+        else:
+            rows.append(f"| `{key}` | {_dtype_text(e)} | {_shape_text(e.shape)} | {e.unit or ''} | {_cell(attrs)} | "
+                        f"{_required_text(e.required)} | {_cell(e.doc)} |")
+    return rows
+
+
+def markdown() -> str:
+    """The generated part of ``docs/file-format.md``: symbols, shared blocks and every kind's table."""
+    out = ["## Shape symbols", "",
+           "Shapes name their sizes with symbols; a symbol has one size throughout a file "
+           "(`3M` is three times M, `V+1` is V plus one).", "",
+           "| symbol | counts |", "|---|---|"]
+    out += [f"| `{s}` | {doc} |" for s, doc in SYMBOLS.items()]
+    out += ["", "## Root attributes of every artifact", "", "| attribute | type | meaning |", "|---|---|---|"]
+    out += [f"| `{a.name}` | {a.type} | {_cell(a.doc)} |" for a in COMMON_ATTRS]
+    out += ["", f"Every group carries `encoding-type` (named in the tables below as `group TYPE`) and "
+            f"`encoding-version` = `{ENCODING_VERSION}`; the root is identified by `facesynth_kind` instead.",
+            "", "\"Required\" of an entry inside an optional group means required when the group is there; "
+            "\"in `synthesis`\" means required (or finite) in that variant of the kind only.",
+            "", "## Shared blocks", "",
+            "Root entries several kinds carry, written by one function of the model layer.", ""]
+    for b in BLOCKS:
+        out += [f"### `{b.name}`", "", b.doc, ""] + _rows(b.entries) + [""]
+    out += ["## Kinds", ""]
+    for k in KINDS.values():
+        writers = " and ".join(f"`{w}`" for w in k.producers)
+        out += [f"### `{k.name}` (schema {k.schema}, written by {writers})", "", k.doc, ""]
+        blocks = [e.name for e in k.entries if isinstance(e, Block)]
+        if blocks:
+            out += ["Shared blocks: " + ", ".join(f"`{b}`" for b in blocks) + ".", ""]
+        if k.variant_attr:
+            out += ["Variants: " + ", ".join(f"`{v}`" for v in k.variants)
+                    + f" (root attribute `{k.variant_attr}`; absent: `{k.variants[0]}`).", ""]
+        if k.attrs:
+            out += ["Root attributes: " + "; ".join(_attr_text(a) for a in k.attrs) + ".", ""]
+        own = tuple(e for e in k.entries if not isinstance(e, Block))
+        out += (_rows(own) if own else ["Nothing but the shared blocks."]) + [""]
+    return "\n".join(out).rstrip() + "\n"
+
+
+#: The line of ``docs/file-format.md`` after which the document is generated by :func:`markdown`.
+GENERATED_MARK = ("<!-- Generated from facesynth/model/spec.py by `python -m facesynth.model.spec docs/file-format.md`; "
+                  "edit the specification, not the text below. -->")
+
+
+def document(current: str) -> str:
+    """``current`` (the text of ``docs/file-format.md``) with its generated part brought up to date."""
+    head = current.split(GENERATED_MARK)[0].rstrip()
+    return f"{head}\n\n{GENERATED_MARK}\n\n{markdown()}"
+
+
+def main(argv: list[str]) -> int:
+    if not argv:
+        sys.stdout.write(markdown())
+        return 0
+    path = Path(argv[0])
+    path.write_text(document(path.read_text(encoding="utf-8")), encoding="utf-8")
+    return 0
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main(sys.argv[1:]))
