@@ -19,7 +19,7 @@ class Cluster:
     """One phoneme cluster (n frames) and its 2D maps.
 
     frames : (n,) int64 rows of the database's coefficients; node : (n,) int64 their node;
-    relative_time : (n,) float32 in [0, 1]; emotion : n names.
+    relative_time : (n,) float64 in [0, 1]; emotion : n names.
     isomap, pca_map : (n, 2) float64 embeddings; triangles : per map, (t, 3) int32 Delaunay
     triangles (0 rows when the points are degenerate); coefficients : (n, K) float32.
     neighbors : the Isomap neighbour count used; exact : frames embedded exactly (the rest

@@ -298,7 +298,8 @@ MOTIONDB = Kind("motiondb", SCHEMAS["motiondb"], (
         Dataset("pgap", "float32", ("N", "N"), "PGap of Eq. 8 from o_i to o_j", "mm", (MM, _PAIR_LAYOUT)),
         Dataset("vgap", "float32", ("N", "N"), "VGap of Eq. 9 from o_i to o_j", "mm/frame",
                 (_units("mm/frame"), _PAIR_LAYOUT)),
-    ), attrs=(Attr("device", "str", "where PGap and VGap were computed"),)),
+    ), attrs=(Attr("device", "str", "where PGap and VGap were computed"),
+           Attr("device_reason", "str", "why that device (the OpenCL choice, or why NumPy)"))),
     Group("boundary", "boundary-states", "the node boundary states behind Eq. 8-9 (3M vectors)", (
         Dataset("first_pos", "float32", ("N", "3M"), "markers of the node's first frame", "mm"),
         Dataset("last_pos", "float32", ("N", "3M"), "markers of the node's last frame", "mm"),
@@ -370,7 +371,8 @@ MOTION = Kind("motion", SCHEMAS["motion"], (
     ), attrs=(Attr("total_cost", "float", "Eq. 4 along the path"),
               Attr("non_captured_joins", "int", "joins without a captured predecessor/successor link", ge=0),
               Attr("search", "str", "the search that chose the path (`dp` or `greedy`)"),
-              Attr("device", "str", "where the search ran")), required="synthesis"),
+              Attr("device", "str", "where the search ran"),
+              Attr("device_reason", "str", "why that device (the OpenCL choice, or why NumPy)")), required="synthesis"),
     Group("provenance", "provenance", "where each capture-rate frame came from", (
         Dataset("node", "int64", ("F",), "source node, -1 for regenerated silence"),
         Dataset("take", "int64", ("F",), "source take (row of `take_names`), -1 for regenerated silence"),
