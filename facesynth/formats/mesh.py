@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import csv
+import io
 from pathlib import Path
 
 import numpy as np
@@ -23,8 +24,9 @@ def read_mesh(path: Path) -> tuple[np.ndarray, np.ndarray]:
         raise InputError(f"{path}: mesh file not found; check the --mesh path.")
     if path.suffix.lower() not in (".obj", ".ply"):
         raise InputError(f"{path}: unsupported mesh format {path.suffix!r}; use .obj or .ply.")
+    source = io.StringIO(_obj_vertices_and_faces(path)) if path.suffix.lower() == ".obj" else str(path)
     try:
-        mesh = trimesh.load(str(path), process=False, force="mesh", maintain_order=True)
+        mesh = trimesh.load(source, file_type=path.suffix.lower()[1:], process=False, force="mesh", maintain_order=True)
     except Exception as exc:  # trimesh raises many types for malformed files
         raise InputError(f"{path}: unreadable mesh ({type(exc).__name__}: {exc}); re-export it.") from None
     vertices = np.asarray(mesh.vertices, dtype=np.float64)
@@ -32,6 +34,42 @@ def read_mesh(path: Path) -> tuple[np.ndarray, np.ndarray]:
     if len(vertices) == 0 or len(faces) == 0:
         raise InputError(f"{path}: the mesh has no triangles.")
     return vertices, faces
+
+
+def _obj_vertices_and_faces(path: Path) -> str:
+    """The OBJ's ``v`` and ``f`` lines only, each face corner reduced to its absolute 1-based
+    vertex index, for trimesh. Given the whole file, trimesh splits it by material (repeating
+    the vertices per material), drops the vertices after the last one a face uses when faces
+    carry ``vt``/``vn`` references, and counts relative (negative) indices from the end of
+    the file instead of from the face; bindings index the file's own vertex list."""
+    lines: list[str] = []
+    count, highest, highest_line = 0, 0, 0
+    with open(path, encoding="utf-8", errors="replace") as fh:
+        for number, line in enumerate(fh, 1):
+            fields = line.split()
+            if not fields or fields[0] not in ("v", "f"):
+                continue
+            if fields[0] == "v":
+                count += 1
+                lines.append(line.strip())
+                continue
+            corners = []
+            for corner in fields[1:]:
+                try:
+                    index = int(corner.split("/")[0])
+                except ValueError:
+                    raise InputError(f"{path}, line {number}: face corner {corner!r} is not a vertex index; re-export the mesh.") from None
+                absolute = index if index > 0 else count + 1 + index  # relative: counted back from this face
+                if absolute < 1 or index == 0:
+                    raise InputError(f"{path}, line {number}: vertex index {index} refers to no vertex "
+                                     f"({count} read so far; OBJ indices start at 1); re-export the mesh.")
+                if absolute > highest:
+                    highest, highest_line = absolute, number
+                corners.append(str(absolute))
+            lines.append("f " + " ".join(corners))
+    if highest > count:
+        raise InputError(f"{path}, line {highest_line}: vertex index {highest} but the file has {count} vertices; re-export the mesh.")
+    return "\n".join(lines) + "\n"
 
 
 def write_obj(path: Path, vertices: np.ndarray, faces: np.ndarray, comment: str = "") -> None:
@@ -49,15 +87,25 @@ def read_binding(path: Path) -> dict[str, int]:
     if not path.exists():
         raise InputError(f"{path}: binding file not found; check the --binding path.")
     binding: dict[str, int] = {}
-    with open(path, encoding="utf-8", newline="") as fh:
-        reader = csv.DictReader(fh)
-        if not reader.fieldnames or {"marker", "vertex"} - set(reader.fieldnames):
-            raise InputError(f"{path}: the binding CSV needs the columns 'marker' and 'vertex'.")
-        for line, row in enumerate(reader, 2):
-            try:
-                binding[row["marker"].strip()] = int(row["vertex"])
-            except (TypeError, ValueError):
-                raise InputError(f"{path}, line {line}: vertex {row['vertex']!r} is not an integer index.") from None
+    first_line: dict[str, int] = {}
+    # utf-8-sig: spreadsheets save CSV with a byte-order mark, which would hide the 'marker' column
+    with open(path, encoding="utf-8-sig", newline="") as fh:
+        try:
+            reader = csv.DictReader(fh)
+            if not reader.fieldnames or {"marker", "vertex"} - set(reader.fieldnames):
+                raise InputError(f"{path}: the binding CSV needs the columns 'marker' and 'vertex'.")
+            for row in reader:
+                line = reader.line_num  # the file's line: blank lines are skipped, not counted as rows
+                try:
+                    name, vertex = (row["marker"] or "").strip(), int(row["vertex"])
+                except (TypeError, ValueError):
+                    raise InputError(f"{path}, line {line}: vertex {row['vertex']!r} is not an integer index.") from None
+                if name in first_line:
+                    raise InputError(f"{path}, line {line}: marker {name!r} is bound again (first on line "
+                                     f"{first_line[name]}); bind each marker once.")
+                binding[name], first_line[name] = vertex, line
+        except UnicodeDecodeError as exc:
+            raise InputError(f"{path}: not UTF-8 text ({exc.reason} at byte {exc.start}); save the binding as UTF-8 CSV.") from None
     return binding
 
 

@@ -19,6 +19,7 @@ from pathlib import Path
 
 import numpy as np
 from scipy.optimize import minimize
+from scipy.special import expit
 
 from ..artifacts import atomic_path, check_output
 from ..config import EvaluateSettings, NormalizeSettings, SynthesizeSettings, TuneSettings
@@ -39,7 +40,7 @@ def from_vector(v: np.ndarray, s: SynthesizeSettings) -> SynthesizeSettings:
     """Settings with the alphas of search vector ``v``."""
     a = np.exp(v)
     return dataclasses.replace(s, alpha1=float(a[0]), alpha2=float(a[1]), alpha3=float(a[2]),
-                               alpha4=float(1 / (1 + np.exp(-v[3]))), alpha5=float(a[4]), alpha6=float(a[5]))
+                               alpha4=float(np.clip(expit(v[3]), 1e-6, 1 - 1e-6)), alpha5=float(a[4]), alpha6=float(a[5]))
 
 
 def tune(db_path: Path, corpus: Path, settings: TuneSettings, synth: SynthesizeSettings, evaluate_settings: EvaluateSettings,
