@@ -183,7 +183,7 @@ class TuneSettings:
     """``[tune]``: the multi-start Nelder-Mead search of the cost weights (paper VI-D)."""
 
     starts: int = setting("paper VI-D (random restarts)", ge=1)
-    max_evaluations: int = setting("paper VI-D", unit="evaluations per start", ge=1)
+    max_evaluations: int = setting("paper VI-D; split evenly across the starts", unit="evaluations in all", ge=1)
     seed: int = setting("not in the paper: random starts", ge=0)
     spread: float = setting("paper VI-D (random starts)", unit="factor", ge=1)
 
