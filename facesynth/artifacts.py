@@ -154,6 +154,22 @@ def read(f: h5py.File, key: str) -> np.ndarray:
         raise ArtifactError(f"{f.filename}: missing dataset '{key}'; the file is damaged or from another tool.") from None
 
 
+def read_rows(dataset: h5py.Dataset, rows: slice, out: np.ndarray) -> np.ndarray:
+    """Read rows ``rows`` (a slice with start and stop, step 1) of a 2-D dataset into ``out``,
+    a C-contiguous array of shape (rows, columns); HDF5 converts to ``out``'s dtype.
+
+    Unlike ``dataset[rows]`` nothing is allocated, so a loop over row blocks reuses one
+    buffer instead of faulting in fresh pages for every block. Returns ``out``.
+    """
+    count = rows.stop - rows.start
+    if out.shape != (count, dataset.shape[1]) or not out.flags.c_contiguous:
+        raise ValueError(f"read_rows: out must be C-contiguous ({count}, {dataset.shape[1]}), not {out.shape}")
+    file_space = dataset.id.get_space()
+    file_space.select_hyperslab((rows.start, 0), out.shape)
+    dataset.id.read(h5py.h5s.create_simple(out.shape), file_space, out)
+    return out
+
+
 def read_strings(f: h5py.File, key: str) -> list[str]:
     """Read a UTF-8 string dataset as a list of ``str``."""
     return [s.decode("utf-8") if isinstance(s, bytes) else str(s) for s in read(f, key)]

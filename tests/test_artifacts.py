@@ -62,3 +62,19 @@ def test_existing_output_is_not_replaced_without_overwrite(tmp_path):
         with write_artifact(out, "pca"):
             pass
     assert out.read_text() == "precious"
+
+
+def test_read_rows_fills_the_given_buffer(tmp_path):
+    from facesynth.artifacts import read_rows
+
+    data = np.arange(7 * 5, dtype=np.float32).reshape(7, 5)
+    with h5py.File(tmp_path / "x.h5", "w") as f:
+        f.create_dataset("d", data=data, chunks=(3, 5))
+    buf = np.full((4, 5), -1, np.float32)
+    with h5py.File(tmp_path / "x.h5", "r") as f:
+        assert read_rows(f["d"], slice(2, 6), buf) is buf
+        assert np.array_equal(buf, data[2:6])
+        read_rows(f["d"], slice(6, 7), buf[:1])
+        assert np.array_equal(buf[0], data[6])
+        with pytest.raises(ValueError, match="C-contiguous"):
+            read_rows(f["d"], slice(0, 4), buf[:, :3])

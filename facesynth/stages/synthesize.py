@@ -15,11 +15,11 @@ from pathlib import Path
 
 import numpy as np
 
-from ..artifacts import open_artifact, read, read_strings, write_artifact, write_strings
+from ..artifacts import open_artifact, read, read_rows, read_strings, write_artifact, write_strings
 from ..config import IngestSettings, SynthesizeSettings, settings_json
 from ..errors import InputError
 from ..phonemes import PAU, viseme
-from ..search.costs import StepCosts, path_terms, step_costs, transition_matrix, transition_rows
+from ..search.costs import StepCosts, path_terms, step_costs, transition_matrix, transition_panel_rows
 from ..search.dp import PanelMatrix
 from ..search.inputs import Utterance, apply_emotions, read_constraints, read_utterance, utterance
 from ..motion.head import follow_sources, relative_to_take
@@ -50,16 +50,20 @@ class Database:
             return transition_matrix(read(f, "pairs/dsc"), read(f, "pairs/pgap"), read(f, "pairs/vgap"),
                                      self.nodes.viseme, self.nodes.pre, settings)
 
-    def transition_panels(self, settings: SynthesizeSettings, block: int = 512) -> PanelMatrix:
+    def transition_panels(self, settings: SynthesizeSettings) -> PanelMatrix:
         """TC assembled straight into the panel-major layout of the OpenCL DP, streaming the
-        pair terms from the file in row blocks (no full-size intermediate copies)."""
+        pair terms from the file in row blocks (build-db's chunk height) into reused buffers."""
         n = len(self.nodes)
         out = PanelMatrix(n)
         with open_artifact(self.path, "motiondb") as f:
-            dsc, pgap, vgap = f["pairs/dsc"], f["pairs/pgap"], f["pairs/vgap"]
+            terms = [f[f"pairs/{key}"] for key in ("dsc", "pgap", "vgap")]
+            block = 256
+            buffers = np.empty((5, min(block, n), n), np.float32)  # dsc, pgap, vgap rows; two for the sums
             for a in range(0, n, block):
                 rows = slice(a, min(n, a + block))
-                out.set_rows(rows, transition_rows(rows, dsc[rows], pgap[rows], vgap[rows], self.nodes.viseme, self.nodes.pre, settings))
+                dsc, pgap, vgap = (read_rows(d, rows, b[: rows.stop - a]) for d, b in zip(terms, buffers))
+                transition_panel_rows(out.panels, rows, dsc, pgap, vgap, self.nodes.viseme, self.nodes.pre, settings,
+                                      scratch=buffers[3:])
         return out
 
 
