@@ -10,9 +10,11 @@ from __future__ import annotations
 import contextlib
 import hashlib
 import json
+import mmap
 import os
+import threading
 from pathlib import Path
-from typing import Iterator, Sequence
+from typing import Callable, Iterator, Sequence
 
 import h5py
 import numpy as np
@@ -46,11 +48,21 @@ STR = h5py.string_dtype("utf-8")
 
 
 def sha256_of(path: Path) -> str:
-    """Hex sha256 of a file's bytes."""
+    """Hex sha256 of a file's bytes.
+
+    A regular file is hashed through a memory map in one call, which reads the page cache in
+    place and releases the GIL for the whole file (so other threads run meanwhile).
+    """
     digest = hashlib.sha256()
     with open(path, "rb") as fh:
-        for block in iter(lambda: fh.read(1 << 22), b""):
-            digest.update(block)
+        try:
+            view = mmap.mmap(fh.fileno(), 0, access=mmap.ACCESS_READ)
+        except (ValueError, OSError):  # empty file, or not mappable
+            for block in iter(lambda: fh.read(1 << 22), b""):
+                digest.update(block)
+        else:
+            with view:
+                digest.update(view)
     return digest.hexdigest()
 
 
@@ -90,6 +102,30 @@ def input_record(path: Path) -> dict:
         with h5py.File(path, "r") as f:
             kind = f.attrs.get("facesynth_kind")
     return {"path": str(path), "kind": kind, "sha256": sha256_of(path)}
+
+
+def input_records_in_background(paths: Sequence[Path]) -> Callable[[], list[dict]]:
+    """Start computing :func:`input_record` of each path on a daemon thread; returns a function
+    that waits for the records (re-raising an error of the thread). Hashing a database of a
+    few hundred MB takes a few tenths of a second of one core, so it runs while other work does;
+    a command that fails meanwhile does not wait for it."""
+    outcome: dict = {}
+
+    def work() -> None:
+        try:
+            outcome["records"] = [input_record(p) for p in paths]
+        except BaseException as exc:  # handed to the waiting thread
+            outcome["error"] = exc
+
+    thread = threading.Thread(target=work, name="facesynth-input-hashes", daemon=True)
+    thread.start()
+
+    def wait() -> list[dict]:
+        thread.join()
+        if "error" in outcome:
+            raise outcome["error"]
+        return outcome["records"]
+    return wait
 
 
 @contextlib.contextmanager

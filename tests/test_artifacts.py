@@ -78,3 +78,23 @@ def test_read_rows_fills_the_given_buffer(tmp_path):
         assert np.array_equal(buf[0], data[6])
         with pytest.raises(ValueError, match="C-contiguous"):
             read_rows(f["d"], slice(0, 4), buf[:, :3])
+
+
+@pytest.mark.parametrize("content", [b"", b"hello", bytes(range(256)) * 5000])
+def test_sha256_of_any_file(tmp_path, content):
+    import hashlib
+
+    from facesynth.artifacts import sha256_of
+
+    (tmp_path / "f").write_bytes(content)
+    assert sha256_of(tmp_path / "f") == hashlib.sha256(content).hexdigest()
+
+
+def test_input_records_in_background_give_the_records_or_the_error(tmp_path):
+    from facesynth.artifacts import input_record, input_records_in_background
+
+    (tmp_path / "a.txt").write_text("hello")
+    wait = input_records_in_background([tmp_path / "a.txt"])
+    assert wait() == [input_record(tmp_path / "a.txt")]
+    with pytest.raises(FileNotFoundError):
+        input_records_in_background([tmp_path / "missing.txt"])()

@@ -9,6 +9,7 @@ is why the OpenCL kernel keeps no backpointers.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Callable
 
 import numpy as np
 
@@ -137,7 +138,10 @@ class OpenCLDp:
             self.groups.append((first, count, buf))
         self.cols = self.n_panels * PANEL
 
-    def run(self, obs: np.ndarray) -> DpResult:
+    def run(self, obs: np.ndarray, while_running: Callable[[], None] | None = None) -> DpResult:
+        """The DP for obs (T, N) float32. ``while_running``, if given, is called on this thread
+        once every step is queued and before waiting for the device: host work that overlaps
+        the search (a CPU device runs the kernels on its own threads)."""
         import pyopencl as cl
 
         t_count, n = obs.shape
@@ -155,6 +159,9 @@ class OpenCLDp:
                 self.kernel(self.queue, (count,), None, buf, src, self._obs_row(obs_buf, t), dst,
                             np.int32(self.n), np.int32(first), np.int32(count))
             cl.enqueue_copy(self.queue, phi[t], dst, is_blocking=False)
+        self.queue.flush()
+        if while_running is not None:
+            while_running()
         self.queue.finish()
         phi = phi[:, :n]
         path = backtrack(phi, self.tc.column)
@@ -164,5 +171,5 @@ class OpenCLDp:
         return obs_buf.get_sub_region(4 * t * self.cols, 4 * self.cols)
 
 
-def dp_opencl(tc: "np.ndarray | PanelMatrix", obs: np.ndarray) -> DpResult:
-    return OpenCLDp(tc).run(obs)
+def dp_opencl(tc: "np.ndarray | PanelMatrix", obs: np.ndarray, while_running: Callable[[], None] | None = None) -> DpResult:
+    return OpenCLDp(tc).run(obs, while_running)

@@ -12,6 +12,7 @@ from __future__ import annotations
 import time
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Callable
 
 import numpy as np
 
@@ -22,7 +23,7 @@ from ..phonemes import PAU, viseme
 from ..search.costs import StepCosts, path_terms, step_costs, transition_matrix, transition_panel_rows
 from ..search.dp import PanelMatrix
 from ..search.inputs import Utterance, apply_emotions, read_constraints, read_utterance, utterance
-from ..motion.head import follow_sources, relative_to_take
+from ..motion.head import follow_sources, import_scipy, relative_to_take
 from ..motion.postprocess import concatenate, downsample
 from ..tables import Takes
 from .build_db import Nodes
@@ -112,14 +113,20 @@ def greedy_search(db: Database, tc, utt: Utterance, steps: StepCosts, settings: 
     return DpResult(cost, result.path, np.zeros((0, 0), np.float32)), f"greedy ({'%d clusters' % settings.greedy_clusters if settings.greedy_clusters else 'unclustered'})"
 
 
-def search(tc, steps: StepCosts, settings: SynthesizeSettings):
-    """Run the DP; returns (DpResult, device description)."""
-    from ..search.dp import dp_numpy, dp_opencl
+def search(tc, steps: StepCosts, settings: SynthesizeSettings, *, while_running: Callable[[], None] | None = None,
+           timings: dict[str, float] | None = None):
+    """Run the DP; returns (DpResult, device description). ``while_running`` is host work to do
+    while an OpenCL search runs; ``timings`` gets ``opencl_setup_s`` (context, kernel, buffers)."""
+    from ..search.dp import OpenCLDp, dp_numpy
 
     if settings.use_opencl:
         from ..opencl import device_name
 
-        return dp_opencl(tc, steps.total), f"OpenCL: {device_name()}"
+        t0 = time.perf_counter()
+        runner = OpenCLDp(tc)
+        if timings is not None:
+            timings["opencl_setup_s"] = time.perf_counter() - t0
+        return runner.run(steps.total, while_running), f"OpenCL: {device_name()}"
     return dp_numpy(tc, steps.total), "NumPy"
 
 
@@ -159,26 +166,34 @@ def cao_joins(db: Database, path: np.ndarray, phones: list[str]):
 
 
 def synthesize(db: Database, utt: Utterance, constraints: dict[int, int], settings: SynthesizeSettings, tc=None) -> dict:
-    """Search and post-process. Returns a dict of everything ``motion.h5`` stores."""
+    """Search and post-process. Returns a dict of everything ``motion.h5`` stores, and
+    ``timings``: seconds spent on the transition costs (when ``tc`` is not given), the step
+    costs, the OpenCL set-up, the search and the post-processing."""
     timings = {}
     t0 = time.perf_counter()
     if tc is None:
         tc = db.transition_panels(settings) if settings.use_opencl else db.transition(settings)
+        timings["transition_s"] = time.perf_counter() - t0
+    t0 = time.perf_counter()
     steps = step_costs(utt.phones, utt.emotions, db.nodes.phone, db.nodes.emotion, constraints, settings)
-    timings["costs_s"] = time.perf_counter() - t0
+    timings["steps_s"] = time.perf_counter() - t0
     t0 = time.perf_counter()
     if settings.search == "greedy":
         if constraints:
             raise InputError("motion-node constraints need the DP search (Eq. 10); drop --constraints or use --search dp.")
         result, device = greedy_search(db, tc, utt, steps, settings)
     else:
-        result, device = search(tc, steps, settings)
-    timings["search_s"] = time.perf_counter() - t0
+        # scipy (head motion) is imported while the device searches
+        result, device = search(tc, steps, settings, while_running=import_scipy, timings=timings)
+    timings["search_s"] = time.perf_counter() - t0 - timings.get("opencl_setup_s", 0.0)
     path = result.path
     for t, node in constraints.items():  # Eq. 10 guarantees this; a failure is a bug
         assert path[t] == node, f"constraint at step {t} not met"
-    return {"path": path, "cost": result.cost, "terms": path_terms(path, tc, steps), "device": device,
-            "timings": timings, **render_path(db, utt, path, settings)}
+    t0 = time.perf_counter()
+    out = {"path": path, "cost": result.cost, "terms": path_terms(path, tc, steps), "device": device,
+           "timings": timings, **render_path(db, utt, path, settings)}
+    timings["postprocess_s"] = time.perf_counter() - t0
+    return out
 
 
 def render_path(db: Database, utt: Utterance, path: np.ndarray, settings: SynthesizeSettings) -> dict:
@@ -269,19 +284,25 @@ def write_head_and_markers(g, names: list[str], reference: np.ndarray, head_r: n
 def run(db_path: Path, out: Path, settings: SynthesizeSettings, ingest_settings: IngestSettings, *,
         phones_path: Path | None = None, emotions_path: Path | None = None, constraints_path: Path | None = None,
         audio: Path | None = None, text: str | None = None, overwrite: bool = False) -> dict:
-    from concurrent.futures import ThreadPoolExecutor
-
-    from ..artifacts import check_output, input_record
+    """Synthesize and write ``out``. The summary's ``*_s`` entries are the seconds of each phase:
+    ``load_s`` (database tables), those of :func:`synthesize`, ``hash_wait_s`` (waiting for the
+    inputs' sha256, computed on another thread from the start) and ``write_s``."""
+    from ..artifacts import check_output, input_records_in_background
 
     check_output(out, overwrite)
+    inputs = [p for p in (db_path, phones_path, emotions_path, constraints_path, audio) if p is not None]
+    records = input_records_in_background(inputs)
     t0 = time.perf_counter()
     db = load_database(db_path)
     load_s = time.perf_counter() - t0
     utt, constraints = prepare(db, phones_path, emotions_path, constraints_path, ingest_settings, audio, text)
-    inputs = [p for p in (db_path, phones_path, emotions_path, constraints_path, audio) if p is not None]
-    with ThreadPoolExecutor(max_workers=1) as pool:  # hash the inputs for provenance while the search runs
-        records = pool.submit(lambda: [input_record(p) for p in inputs])
-        res = synthesize(db, utt, constraints, settings)
-        write_motion(out, db, utt, res, settings, records.result(), overwrite)
+    res = synthesize(db, utt, constraints, settings)
+    t0 = time.perf_counter()
+    input_records = records()
+    hash_wait_s = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    write_motion(out, db, utt, res, settings, input_records, overwrite)
+    write_s = time.perf_counter() - t0
     return {"phones": len(utt), "cost": res["cost"], "joins": res["non_captured_joins"], "device": res["device"],
-            "unseen": unseen_phones(utt, db), "frames": len(res["markers"]), "load_s": load_s, **res["timings"]}
+            "unseen": unseen_phones(utt, db), "frames": len(res["markers"]), "load_s": load_s, **res["timings"],
+            "hash_wait_s": hash_wait_s, "write_s": write_s}
