@@ -206,6 +206,58 @@ def read_rows(dataset: h5py.Dataset, rows: slice, out: np.ndarray) -> np.ndarray
     return out
 
 
+class RowReader:
+    """Row blocks of a 2-D dataset as float32, read in place from the page cache when the
+    storage allows.
+
+    When the dataset is stored uncompressed as little-endian float32 in chunks that span
+    whole rows (as ``build-db`` writes the pair terms) in a plain HDF5 file, a block of rows
+    inside one chunk is a read-only view of a memory map of the file: no copy, no buffer.
+    Anything else (other layouts, filters, external storage, a block across chunks) is read
+    through HDF5 into a reused buffer with :func:`read_rows`. Use as a context manager.
+    """
+
+    def __init__(self, dataset: h5py.Dataset, block: int):
+        self.dataset, self.block = dataset, block
+        self.buffer: np.ndarray | None = None
+        self.map: mmap.mmap | None = None
+        self.chunk_rows = 0
+        plist, file = dataset.id.get_create_plist(), dataset.file
+        if (dataset.ndim == 2 and dataset.dtype == np.dtype("<f4") and plist.get_layout() == h5py.h5d.CHUNKED
+                and dataset.chunks[1] == dataset.shape[1] and plist.get_nfilters() == 0
+                and plist.get_external_count() == 0 and file.driver == "sec2"
+                and file.id.get_create_plist().get_userblock() == 0):
+            with contextlib.suppress(OSError, ValueError):
+                with open(file.filename, "rb") as fh:
+                    self.map = mmap.mmap(fh.fileno(), 0, access=mmap.ACCESS_READ)
+                self.chunk_rows = dataset.chunks[0]
+
+    def rows(self, rows: slice) -> np.ndarray:
+        """Rows ``rows`` (at most ``block`` of them), (r, columns); valid until the next call."""
+        count, columns = rows.stop - rows.start, self.dataset.shape[1]
+        if self.map is not None and rows.start % self.chunk_rows == 0 and count <= self.chunk_rows:
+            info = self.dataset.id.get_chunk_info_by_coord((rows.start, 0))
+            nbytes = self.chunk_rows * columns * 4
+            if (info.byte_offset is not None and info.filter_mask == 0 and info.size == nbytes
+                    and info.byte_offset + nbytes <= len(self.map)):
+                return np.frombuffer(self.map, np.float32, count * columns, info.byte_offset).reshape(count, columns)
+        if self.buffer is None:
+            self.buffer = np.empty((self.block, columns), np.float32)
+        return read_rows(self.dataset, rows, self.buffer[:count])
+
+    def close(self) -> None:
+        if self.map is not None:
+            with contextlib.suppress(BufferError):  # a view still in use keeps the map open
+                self.map.close()
+            self.map = None
+
+    def __enter__(self) -> "RowReader":
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()
+
+
 def read_strings(f: h5py.File, key: str) -> list[str]:
     """Read a UTF-8 string dataset as a list of ``str``."""
     return [s.decode("utf-8") if isinstance(s, bytes) else str(s) for s in read(f, key)]

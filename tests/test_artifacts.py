@@ -98,3 +98,26 @@ def test_input_records_in_background_give_the_records_or_the_error(tmp_path):
     assert wait() == [input_record(tmp_path / "a.txt")]
     with pytest.raises(FileNotFoundError):
         input_records_in_background([tmp_path / "missing.txt"])()
+
+
+@pytest.mark.parametrize("layout, mapped", [
+    ({"chunks": (3, 5)}, True),                          # build-db's layout: whole-row chunks, no filter
+    ({"chunks": (3, 5), "compression": "gzip"}, False),  # filtered: through HDF5
+    ({"chunks": (3, 2)}, False),                         # chunks that split rows
+    ({}, False),                                         # contiguous
+    ({"chunks": (3, 5), "dtype": ">f4"}, False),         # big-endian
+])
+def test_row_reader_maps_plain_chunks_and_reads_anything_else(tmp_path, layout, mapped):
+    from facesynth.artifacts import RowReader
+
+    data = np.arange(8 * 5, dtype=np.float32).reshape(8, 5) / 7
+    with h5py.File(tmp_path / "x.h5", "w") as f:
+        f.create_dataset("d", data=data, **layout)
+    with h5py.File(tmp_path / "x.h5", "r") as f, RowReader(f["d"], 3) as reader:
+        assert (reader.map is not None) == mapped
+        for a in range(0, 8, 3):
+            rows = reader.rows(slice(a, min(8, a + 3)))
+            assert np.array_equal(rows, data[a : a + 3]) and rows.dtype == np.float32
+            assert rows.flags.writeable != mapped  # a map of the file is read-only
+        assert np.array_equal(reader.rows(slice(1, 3)), data[1:3])  # across a chunk boundary: read
+        del rows

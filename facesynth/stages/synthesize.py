@@ -9,6 +9,7 @@ its provenance (node, take, source frame).
 
 from __future__ import annotations
 
+import contextlib
 import time
 from dataclasses import dataclass
 from pathlib import Path
@@ -16,7 +17,7 @@ from typing import Callable
 
 import numpy as np
 
-from ..artifacts import open_artifact, read, read_rows, read_strings, write_artifact, write_strings
+from ..artifacts import RowReader, open_artifact, read, read_strings, write_artifact, write_strings
 from ..config import IngestSettings, SynthesizeSettings, settings_json
 from ..errors import InputError
 from ..phonemes import PAU, viseme
@@ -53,18 +54,19 @@ class Database:
 
     def transition_panels(self, settings: SynthesizeSettings) -> PanelMatrix:
         """TC assembled straight into the panel-major layout of the OpenCL DP, streaming the
-        pair terms from the file in row blocks (build-db's chunk height) into reused buffers."""
+        pair terms in row blocks (build-db's chunk height) read in place from the file."""
         n = len(self.nodes)
         out = PanelMatrix(n)
-        with open_artifact(self.path, "motiondb") as f:
-            terms = [f[f"pairs/{key}"] for key in ("dsc", "pgap", "vgap")]
-            block = 256
-            buffers = np.empty((5, min(block, n), n), np.float32)  # dsc, pgap, vgap rows; two for the sums
+        block = min(256, n)
+        scratch = np.empty((2, block, n), np.float32)
+        with open_artifact(self.path, "motiondb") as f, contextlib.ExitStack() as stack:
+            terms = [stack.enter_context(RowReader(f[f"pairs/{key}"], block)) for key in ("dsc", "pgap", "vgap")]
             for a in range(0, n, block):
                 rows = slice(a, min(n, a + block))
-                dsc, pgap, vgap = (read_rows(d, rows, b[: rows.stop - a]) for d, b in zip(terms, buffers))
+                dsc, pgap, vgap = (t.rows(rows) for t in terms)
                 transition_panel_rows(out.panels, rows, dsc, pgap, vgap, self.nodes.viseme, self.nodes.pre, settings,
-                                      scratch=buffers[3:])
+                                      scratch=scratch)
+                del dsc, pgap, vgap  # views of the file's map, which closes with the readers
         return out
 
 
