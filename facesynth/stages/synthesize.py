@@ -21,7 +21,7 @@ from ..artifacts import RowReader, open_artifact, read, read_strings, write_arti
 from ..config import IngestSettings, SynthesizeSettings, settings_json
 from ..errors import InputError
 from ..phonemes import PAU, viseme
-from ..search.costs import StepCosts, path_terms, step_costs, transition_matrix, transition_panel_rows
+from ..search.costs import StepCosts, path_terms, step_costs, transition_panel_rows, transition_rows
 from ..search.dp import PanelMatrix
 from ..search.inputs import Utterance, apply_emotions, read_constraints, read_utterance, utterance
 from ..motion.head import follow_sources, import_scipy, relative_to_take
@@ -47,10 +47,16 @@ class Database:
     head_translation: np.ndarray  # (F, 3) mm, likewise
 
     def transition(self, settings: SynthesizeSettings) -> np.ndarray:
-        """The full (N, N) TC matrix of Table I."""
-        with open_artifact(self.path, "motiondb") as f:
-            return transition_matrix(read(f, "pairs/dsc"), read(f, "pairs/pgap"), read(f, "pairs/vgap"),
-                                     self.nodes.viseme, self.nodes.pre, settings)
+        """The full (N, N) float32 TC matrix of Table I, streaming the pair terms in row blocks."""
+        n = len(self.nodes)
+        tc = np.empty((n, n), np.float32)
+        block = min(256, n)
+        with open_artifact(self.path, "motiondb") as f, contextlib.ExitStack() as stack:
+            terms = [stack.enter_context(RowReader(f[f"pairs/{key}"], block)) for key in ("dsc", "pgap", "vgap")]
+            for a in range(0, n, block):
+                rows = slice(a, min(n, a + block))
+                tc[rows] = transition_rows(rows, *(t.rows(rows) for t in terms), self.nodes.viseme, self.nodes.pre, settings)
+        return tc
 
     def transition_panels(self, settings: SynthesizeSettings) -> PanelMatrix:
         """TC assembled straight into the panel-major layout of the OpenCL DP, streaming the
