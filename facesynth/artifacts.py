@@ -268,7 +268,8 @@ class RowReader:
 
     When the dataset is stored uncompressed as little-endian float32 in chunks that span
     whole rows (as ``build-db`` writes the pair terms) in a plain HDF5 file, a block of rows
-    inside one chunk is a read-only view of a memory map of the file: no copy, no buffer.
+    that lies inside one chunk is a read-only view of a memory map of the file: no copy, no
+    buffer.
     Anything else (other layouts, filters, external storage, a block across chunks) is read
     through HDF5 into a reused buffer with :func:`read_rows`. Use as a context manager.
     """
@@ -291,12 +292,14 @@ class RowReader:
     def rows(self, rows: slice) -> np.ndarray:
         """Rows ``rows`` (at most ``block`` of them), (r, columns); valid until the next call."""
         count, columns = rows.stop - rows.start, self.dataset.shape[1]
-        if self.map is not None and rows.start % self.chunk_rows == 0 and count <= self.chunk_rows:
-            info = self.dataset.id.get_chunk_info_by_coord((rows.start, 0))
+        first = rows.start - rows.start % self.chunk_rows if self.map is not None else 0
+        if self.map is not None and rows.stop <= first + self.chunk_rows:
+            info = self.dataset.id.get_chunk_info_by_coord((first, 0))
             nbytes = self.chunk_rows * columns * 4
             if (info.byte_offset is not None and info.filter_mask == 0 and info.size == nbytes
                     and info.byte_offset + nbytes <= len(self.map)):
-                return np.frombuffer(self.map, np.float32, count * columns, info.byte_offset).reshape(count, columns)
+                offset = info.byte_offset + (rows.start - first) * columns * 4
+                return np.frombuffer(self.map, np.float32, count * columns, offset).reshape(count, columns)
         if self.buffer is None:
             self.buffer = np.empty((self.block, columns), np.float32)
         return read_rows(self.dataset, rows, self.buffer[:count])

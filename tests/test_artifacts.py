@@ -152,5 +152,7 @@ def test_row_reader_maps_plain_chunks_and_reads_anything_else(tmp_path, layout, 
             rows = reader.rows(slice(a, min(8, a + 3)))
             assert np.array_equal(rows, data[a : a + 3]) and rows.dtype == np.float32
             assert rows.flags.writeable != mapped  # a map of the file is read-only
-        assert np.array_equal(reader.rows(slice(1, 3)), data[1:3])  # across a chunk boundary: read
-        del rows
+        inside = reader.rows(slice(4, 6))  # inside the second chunk
+        assert np.array_equal(inside, data[4:6]) and inside.flags.writeable != mapped
+        assert np.array_equal(reader.rows(slice(2, 4)), data[2:4])  # across a chunk boundary: read
+        del rows, inside

@@ -60,10 +60,10 @@ class Database:
 
     def transition_panels(self, settings: SynthesizeSettings) -> PanelMatrix:
         """TC assembled straight into the panel-major layout of the OpenCL DP, streaming the
-        pair terms in row blocks (build-db's chunk height) read in place from the file."""
+        pair terms in row blocks read in place from the file."""
         n = len(self.nodes)
         out = PanelMatrix(n)
-        block = min(256, n)
+        block = min(128, n)  # half a chunk of build-db: the block's sums stay in cache
         scratch = np.empty((2, block, n), np.float32)
         with open_artifact(self.path, "motiondb") as f, contextlib.ExitStack() as stack:
             terms = [stack.enter_context(RowReader(f[f"pairs/{key}"], block)) for key in ("dsc", "pgap", "vgap")]
