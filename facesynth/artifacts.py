@@ -57,8 +57,8 @@ HASH_CACHE_MIN_BYTES = 64 << 20
 def sha256_of(path: Path) -> str:
     """Hex sha256 of a file's bytes.
 
-    A regular file is hashed through a memory map in one call, which reads the page cache in
-    place and releases the GIL for the whole file (so other threads run meanwhile).
+    The file is read in 16 MB blocks into one reused buffer; reading and hashing a block
+    release the GIL, so other threads run meanwhile.
 
     The digest of a file of at least :data:`HASH_CACHE_MIN_BYTES` is remembered in
     ``$XDG_CACHE_HOME/facesynth/sha256/`` (default ``~/.cache``) under the file's device,
@@ -78,15 +78,11 @@ def sha256_of(path: Path) -> str:
             return cached
     started_ns = time.time_ns()
     digest = hashlib.sha256()
-    with open(path, "rb") as fh:
-        try:
-            view = mmap.mmap(fh.fileno(), 0, access=mmap.ACCESS_READ)
-        except (ValueError, OSError):  # empty file, or not mappable
-            for block in iter(lambda: fh.read(1 << 22), b""):
-                digest.update(block)
-        else:
-            with view:
-                digest.update(view)
+    buffer = bytearray(min(16 << 20, max(before.st_size, 1 << 16)))
+    view = memoryview(buffer)
+    with open(path, "rb", buffering=0) as fh:
+        while count := fh.readinto(buffer):
+            digest.update(view[:count])
     hex_digest = digest.hexdigest()
     settled = max(before.st_mtime_ns, before.st_ctime_ns) < started_ns - 1_000_000_000
     if key is not None and settled and _hash_cache_key(os.stat(path)) == key:
@@ -278,6 +274,7 @@ class RowReader:
         self.dataset, self.block = dataset, block
         self.buffer: np.ndarray | None = None
         self.map: mmap.mmap | None = None
+        self.mapped: tuple[int, int] | None = None  # byte range of the last mapped block
         self.chunk_rows = 0
         plist, file = dataset.id.get_create_plist(), dataset.file
         if (dataset.ndim == 2 and dataset.dtype == np.dtype("<f4") and plist.get_layout() == h5py.h5d.CHUNKED
@@ -291,6 +288,7 @@ class RowReader:
 
     def rows(self, rows: slice) -> np.ndarray:
         """Rows ``rows`` (at most ``block`` of them), (r, columns); valid until the next call."""
+        self._release()
         count, columns = rows.stop - rows.start, self.dataset.shape[1]
         first = rows.start - rows.start % self.chunk_rows if self.map is not None else 0
         if self.map is not None and rows.stop <= first + self.chunk_rows:
@@ -299,12 +297,23 @@ class RowReader:
             if (info.byte_offset is not None and info.filter_mask == 0 and info.size == nbytes
                     and info.byte_offset + nbytes <= len(self.map)):
                 offset = info.byte_offset + (rows.start - first) * columns * 4
+                self.mapped = (offset, offset + count * columns * 4)
                 return np.frombuffer(self.map, np.float32, count * columns, offset).reshape(count, columns)
         if self.buffer is None:
             self.buffer = np.empty((self.block, columns), np.float32)
         return read_rows(self.dataset, rows, self.buffer[:count])
 
+    def _release(self) -> None:
+        """Unmap the pages of the last block (they stay in the page cache), so the process
+        does not grow by the size of everything it read; a view still held reads them again."""
+        if self.map is not None and self.mapped is not None:
+            start = self.mapped[0] - self.mapped[0] % mmap.PAGESIZE
+            with contextlib.suppress(OSError, ValueError):
+                self.map.madvise(mmap.MADV_DONTNEED, start, self.mapped[1] - start)
+        self.mapped = None
+
     def close(self) -> None:
+        self._release()
         if self.map is not None:
             with contextlib.suppress(BufferError):  # a view still in use keeps the map open
                 self.map.close()
