@@ -264,10 +264,10 @@ class RowReader:
 
     When the dataset is stored uncompressed as little-endian float32 in chunks that span
     whole rows (as ``build-db`` writes the pair terms) in a plain HDF5 file, a block of rows
-    that lies inside one chunk is a read-only view of a memory map of the file: no copy, no
-    buffer.
-    Anything else (other layouts, filters, external storage, a block across chunks) is read
-    through HDF5 into a reused buffer with :func:`read_rows`. Use as a context manager.
+    that lies inside one chunk is a read-only view of a memory map of the file at the chunk's
+    address: no copy, no buffer. Anything else (other layouts, filters, external storage, a
+    block across chunks) is read through HDF5 into a reused buffer with :func:`read_rows`.
+    Use as a context manager.
     """
 
     def __init__(self, dataset: h5py.Dataset, block: int):

@@ -61,8 +61,8 @@ def transition_panel_rows(panels: np.ndarray, rows: slice, dsc: np.ndarray, pgap
     scratch : (2, r', N) float32 work space with r' >= r, or None to allocate it.
 
     The same float32 operations in the same order as :func:`transition_rows`, so the values
-    are bit-identical. The sums run over contiguous rows and the result is copied into the
-    panel layout once, with no temporary arrays allocated per call.
+    are bit-identical. The sums run over contiguous rows in ``scratch`` and the result is
+    copied into the panel layout once; no (r, N) array is allocated when ``scratch`` is given.
     """
     n, width = len(pre), panels.shape[2]
     r = rows.stop - rows.start
