@@ -62,3 +62,97 @@ def test_existing_output_is_not_replaced_without_overwrite(tmp_path):
         with write_artifact(out, "pca"):
             pass
     assert out.read_text() == "precious"
+
+
+def test_read_rows_fills_the_given_buffer(tmp_path):
+    from facesynth.artifacts import read_rows
+
+    data = np.arange(7 * 5, dtype=np.float32).reshape(7, 5)
+    with h5py.File(tmp_path / "x.h5", "w") as f:
+        f.create_dataset("d", data=data, chunks=(3, 5))
+    buf = np.full((4, 5), -1, np.float32)
+    with h5py.File(tmp_path / "x.h5", "r") as f:
+        assert read_rows(f["d"], slice(2, 6), buf) is buf
+        assert np.array_equal(buf, data[2:6])
+        read_rows(f["d"], slice(6, 7), buf[:1])
+        assert np.array_equal(buf[0], data[6])
+        with pytest.raises(ValueError, match="C-contiguous"):
+            read_rows(f["d"], slice(0, 4), buf[:, :3])
+
+
+@pytest.mark.parametrize("content", [b"", b"hello", bytes(range(256)) * 5000])
+def test_sha256_of_any_file(tmp_path, content):
+    import hashlib
+
+    from facesynth.artifacts import sha256_of
+
+    (tmp_path / "f").write_bytes(content)
+    assert sha256_of(tmp_path / "f") == hashlib.sha256(content).hexdigest()
+
+
+def test_input_records_in_background_give_the_records_or_the_error(tmp_path):
+    from facesynth.artifacts import input_record, input_records_in_background
+
+    (tmp_path / "a.txt").write_text("hello")
+    wait = input_records_in_background([tmp_path / "a.txt"])
+    assert wait() == [input_record(tmp_path / "a.txt")]
+    with pytest.raises(FileNotFoundError):
+        input_records_in_background([tmp_path / "missing.txt"])()
+
+
+def test_large_file_digests_are_remembered_until_the_file_changes(tmp_path, monkeypatch):
+    import hashlib
+    import time
+
+    from facesynth import artifacts
+
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "cache"))
+    monkeypatch.setattr(artifacts, "HASH_CACHE_MIN_BYTES", 4)
+    f = tmp_path / "db.bin"
+    f.write_bytes(b"first version")
+    assert artifacts.sha256_of(f) == hashlib.sha256(b"first version").hexdigest()
+    assert not (tmp_path / "cache").exists()  # written less than a second ago: not remembered
+    real_ns = time.time_ns
+    monkeypatch.setattr(artifacts.time, "time_ns", lambda: real_ns() + 5_000_000_000)
+    artifacts.sha256_of(f)
+    (entry,) = (tmp_path / "cache" / "facesynth" / "sha256").iterdir()
+    entry.write_text("ab" * 32)  # a remembered digest is used without reading the file
+    assert artifacts.sha256_of(f) == "ab" * 32
+    time.sleep(0.05)
+    f.write_bytes(b"other version")  # same size, new modification and status-change times
+    assert artifacts.sha256_of(f) == hashlib.sha256(b"other version").hexdigest()
+    time.sleep(0.05)
+    f.chmod(0o600)  # only the status-change time moves
+    assert artifacts.sha256_of(f) == hashlib.sha256(b"other version").hexdigest()
+    for e in entry.parent.iterdir():
+        e.write_text("not a digest")  # a damaged entry is ignored
+    assert artifacts.sha256_of(f) == hashlib.sha256(b"other version").hexdigest()
+    monkeypatch.setattr(artifacts.time, "time_ns", real_ns)
+    small = tmp_path / "small.txt"
+    small.write_bytes(b"abc")  # below the size limit: always hashed
+    assert artifacts.sha256_of(small) == hashlib.sha256(b"abc").hexdigest()
+
+
+@pytest.mark.parametrize("layout, mapped", [
+    ({"chunks": (3, 5)}, True),                          # build-db's layout: whole-row chunks, no filter
+    ({"chunks": (3, 5), "compression": "gzip"}, False),  # filtered: through HDF5
+    ({"chunks": (3, 2)}, False),                         # chunks that split rows
+    ({}, False),                                         # contiguous
+    ({"chunks": (3, 5), "dtype": ">f4"}, False),         # big-endian
+])
+def test_row_reader_maps_plain_chunks_and_reads_anything_else(tmp_path, layout, mapped):
+    from facesynth.artifacts import RowReader
+
+    data = np.arange(8 * 5, dtype=np.float32).reshape(8, 5) / 7
+    with h5py.File(tmp_path / "x.h5", "w") as f:
+        f.create_dataset("d", data=data, **layout)
+    with h5py.File(tmp_path / "x.h5", "r") as f, RowReader(f["d"], 3) as reader:
+        assert (reader.map is not None) == mapped
+        for a in range(0, 8, 3):
+            rows = reader.rows(slice(a, min(8, a + 3)))
+            assert np.array_equal(rows, data[a : a + 3]) and rows.dtype == np.float32
+            assert rows.flags.writeable != mapped  # a map of the file is read-only
+        inside = reader.rows(slice(4, 6))  # inside the second chunk
+        assert np.array_equal(inside, data[4:6]) and inside.flags.writeable != mapped
+        assert np.array_equal(reader.rows(slice(2, 4)), data[2:4])  # across a chunk boundary: read
+        del rows, inside

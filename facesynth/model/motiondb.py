@@ -8,6 +8,7 @@ streamed from the file when the search needs them, never held twice.
 
 from __future__ import annotations
 
+import contextlib
 from dataclasses import dataclass, field
 from functools import cached_property
 from pathlib import Path
@@ -15,7 +16,7 @@ from pathlib import Path
 import h5py
 import numpy as np
 
-from ..artifacts import attr, open_artifact, read, read_strings, stamp, write_artifact, write_strings
+from ..artifacts import RowReader, attr, open_artifact, read, read_strings, stamp, write_artifact, write_strings
 from ..errors import InputError
 from .frames import HeadFrames, write_head_frames
 from .pca import PcaModel
@@ -210,27 +211,38 @@ class MotionDatabase:
                              str(f["pairs"].attrs.get("device", "")), str(f["pairs"].attrs.get("device_reason", "")))
 
     def transition(self, settings) -> np.ndarray:
-        """The full (N, N) float32 TC matrix of Table I for ``settings`` (SynthesizeSettings)."""
-        from ..search.costs import transition_matrix
-
-        with open_artifact(self.path, self.KIND) as f:
-            return transition_matrix(read(f, "pairs/dsc"), read(f, "pairs/pgap"), read(f, "pairs/vgap"),
-                                     self.nodes.viseme, self.nodes.pre, settings)
-
-    def transition_panels(self, settings, block: int = 512):
-        """TC assembled straight into the panel-major layout of the OpenCL DP (a PanelMatrix),
-        streaming the pair terms from the file in row blocks (no full-size intermediate copies)."""
+        """The full (N, N) float32 TC matrix of Table I for ``settings`` (SynthesizeSettings),
+        streaming the pair terms in row blocks."""
         from ..search.costs import transition_rows
+
+        n = len(self.nodes)
+        tc = np.empty((n, n), np.float32)
+        block = min(256, n)
+        with open_artifact(self.path, self.KIND) as f, contextlib.ExitStack() as stack:
+            terms = [stack.enter_context(RowReader(f[f"pairs/{key}"], block)) for key in PAIR_KEYS]
+            for a in range(0, n, block):
+                rows = slice(a, min(n, a + block))
+                tc[rows] = transition_rows(rows, *(t.rows(rows) for t in terms), self.nodes.viseme, self.nodes.pre, settings)
+        return tc
+
+    def transition_panels(self, settings):
+        """TC assembled straight into the panel-major layout of the OpenCL DP (a PanelMatrix),
+        streaming the pair terms in row blocks read in place from the file."""
+        from ..search.costs import transition_panel_rows
         from ..search.dp import PanelMatrix
 
         n = len(self.nodes)
         out = PanelMatrix(n)
-        with open_artifact(self.path, self.KIND) as f:
-            dsc, pgap, vgap = f["pairs/dsc"], f["pairs/pgap"], f["pairs/vgap"]
+        block = min(128, n)  # half a chunk of build-db: the block's sums stay in cache
+        scratch = np.empty((2, block, n), np.float32)
+        with open_artifact(self.path, self.KIND) as f, contextlib.ExitStack() as stack:
+            terms = [stack.enter_context(RowReader(f[f"pairs/{key}"], block)) for key in PAIR_KEYS]
             for a in range(0, n, block):
                 rows = slice(a, min(n, a + block))
-                out.set_rows(rows, transition_rows(rows, dsc[rows], pgap[rows], vgap[rows], self.nodes.viseme,
-                                                   self.nodes.pre, settings))
+                dsc, pgap, vgap = (t.rows(rows) for t in terms)
+                transition_panel_rows(out.panels, rows, dsc, pgap, vgap, self.nodes.viseme, self.nodes.pre, settings,
+                                      scratch=scratch)
+                del dsc, pgap, vgap  # views of the file's map, which closes with the readers
         return out
 
     def write(self, path: Path, pairs: PairTerms, *, config: str, inputs, overwrite: bool = False) -> None:

@@ -6,13 +6,14 @@ taken relative to its take's mean pose: ``R_rel = Rbar^T R_t``, ``t_rel = Rbar^T
 (Rbar the rotation nearest the take's mean, tbar its mean translation). A synthesized frame
 gets the relative head motion of its source frame; pauses are interpolated (rotations by
 slerp) and the result is smoothed lightly so joins between takes do not jerk the head.
+
+scipy is imported where it is used: importing it costs more than the head motion of a
+sentence, and ``synthesize`` imports it (:func:`import_scipy`) while the search runs.
 """
 
 from __future__ import annotations
 
 import numpy as np
-from scipy.ndimage import gaussian_filter1d
-from scipy.spatial.transform import Rotation, Slerp
 
 
 def relative_to_take(rotations: np.ndarray, translations: np.ndarray, take_ranges: list[slice]) -> tuple[np.ndarray, np.ndarray]:
@@ -30,9 +31,18 @@ def relative_to_take(rotations: np.ndarray, translations: np.ndarray, take_range
     return rel_r, rel_t
 
 
+def import_scipy() -> None:
+    """Import the scipy modules :func:`follow_sources` uses (about 0.3 s), e.g. while a device works."""
+    import scipy.ndimage  # noqa: F401
+    import scipy.spatial.transform  # noqa: F401
+
+
 def follow_sources(source_frame: np.ndarray, rotations: np.ndarray, translations: np.ndarray,
                    smooth_frames: float = 3.0) -> tuple[np.ndarray, np.ndarray]:
     """Head motion for frames copied from ``source_frame`` (-1: interpolate). Returns (T, 3, 3), (T, 3)."""
+    from scipy.ndimage import gaussian_filter1d
+    from scipy.spatial.transform import Rotation, Slerp
+
     have = np.nonzero(source_frame >= 0)[0]
     n = len(source_frame)
     if len(have) == 0:

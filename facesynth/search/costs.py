@@ -50,6 +50,43 @@ def transition_rows(rows: slice, dsc: np.ndarray, pgap: np.ndarray, vgap: np.nda
     return t.astype(np.float32, copy=False)
 
 
+def transition_panel_rows(panels: np.ndarray, rows: slice, dsc: np.ndarray, pgap: np.ndarray, vgap: np.ndarray,
+                          node_viseme: np.ndarray, pre: np.ndarray, s: SynthesizeSettings,
+                          scratch: np.ndarray | None = None) -> None:
+    """Write rows ``rows`` of TC (Table I) straight into a panel-major matrix.
+
+    panels : (n_panels, N, W) float32, ``panels[p, i, c] = TC[i, p * W + c]``
+        (:class:`~facesynth.search.dp.PanelMatrix`); only ``panels[:, rows, :]`` is written,
+        the padding columns past N are left as they are.
+    dsc, pgap, vgap : (r, N) float32, rows ``rows`` of the pair terms (mm^2/frame^3, mm, mm/frame).
+    scratch : (2, r', N) float32 work space with r' >= r, or None to allocate it.
+
+    The same float32 operations in the same order as :func:`transition_rows`, so the values
+    are bit-identical. The sums run over contiguous rows in ``scratch`` and the result is
+    copied into the panel layout once; no (r, N) array is allocated when ``scratch`` is given.
+    """
+    n, width = len(pre), panels.shape[2]
+    r = rows.stop - rows.start
+    total, term = np.empty((2, r, n), np.float32) if scratch is None else scratch[:, :r]
+    has_pre = pre >= 0
+    pre_viseme = np.where(has_pre, node_viseme[np.maximum(pre, 0)], -1)
+    # PNT * [viseme(o_i) != viseme(pre(o_j))] for each viseme a row can have: (V, N) float32
+    penalty = np.float32(s.pnt) * (np.arange(node_viseme.max() + 1)[:, None] != pre_viseme[None, :])
+    np.multiply(dsc, np.float32(s.alpha2), out=total)
+    np.multiply(pgap, np.float32(s.alpha3), out=term)
+    total += term
+    total += vgap
+    np.take(penalty, node_viseme[rows], axis=0, out=term)
+    total += term
+    total[:, ~has_pre] = np.float32(s.alpha1 * s.pnt)
+    captured = np.nonzero(has_pre & (pre >= rows.start) & (pre < rows.stop))[0]
+    total[pre[captured] - rows.start, captured] = 0.0
+    full = n // width
+    panels[:full, rows] = total[:, : full * width].reshape(r, full, width).transpose(1, 0, 2)
+    if full < len(panels):
+        panels[full, rows, : n - full * width] = total[:, full * width :]
+
+
 def transition_matrix(dsc: np.ndarray, pgap: np.ndarray, vgap: np.ndarray, node_viseme: np.ndarray,
                       pre: np.ndarray, s: SynthesizeSettings) -> np.ndarray:
     """TC[i, j] of Table I, (N, N) float32, row i = the node before, column j = the node after."""

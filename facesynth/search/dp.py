@@ -9,6 +9,7 @@ is why the OpenCL kernel keeps no backpointers.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Callable
 
 import numpy as np
 
@@ -145,8 +146,10 @@ class OpenCLDp:
             self.groups.append((first, count, buf))
         self.cols = self.n_panels * PANEL
 
-    def run(self, obs: np.ndarray) -> DpResult:
-        """The DP for observation costs ``obs`` ((T, N) float32) on the device."""
+    def run(self, obs: np.ndarray, while_running: Callable[[], None] | None = None) -> DpResult:
+        """The DP for observation costs ``obs`` ((T, N) float32) on the device. ``while_running``,
+        if given, is called on this thread once every step is queued and before waiting for the
+        device: host work that overlaps the search (a CPU device runs the kernels on its own threads)."""
         import pyopencl as cl
 
         t_count, n = obs.shape
@@ -154,27 +157,31 @@ class OpenCLDp:
         obs_padded = np.zeros((t_count, self.cols), np.float32)
         obs_padded[:, :n] = obs
         obs_buf = cl.Buffer(self.ctx, mf.READ_ONLY | mf.COPY_HOST_PTR, hostbuf=obs_padded)
-        phi_bufs = [cl.Buffer(self.ctx, mf.READ_WRITE, 4 * self.cols) for _ in range(2)]
-        phi = np.empty((t_count, self.cols), np.float32)
-        phi[0] = obs_padded[0]
-        cl.enqueue_copy(self.queue, phi_bufs[0], phi[0])
+        # Every step's phi stays on the device and is read back once at the end: a read after
+        # each step would make the host wait for that step, so nothing could overlap the search.
+        phi_buf = cl.Buffer(self.ctx, mf.READ_WRITE, obs_padded.nbytes)
+        cl.enqueue_copy(self.queue, phi_buf, obs_padded[0])  # phi_0 = obs_0
         for t in range(1, t_count):
-            src, dst = phi_bufs[(t - 1) % 2], phi_bufs[t % 2]
+            src, obs_row, dst = self._row(phi_buf, t - 1), self._row(obs_buf, t), self._row(phi_buf, t)
             for first, count, buf in self.groups:
-                self.kernel(self.queue, (count,), None, buf, src, self._obs_row(obs_buf, t), dst,
+                self.kernel(self.queue, (count,), None, buf, src, obs_row, dst,
                             np.int32(self.n), np.int32(first), np.int32(count))
-            cl.enqueue_copy(self.queue, phi[t], dst, is_blocking=False)
-        self.queue.finish()
+        self.queue.flush()
+        if while_running is not None:
+            while_running()
+        phi = np.empty((t_count, self.cols), np.float32)
+        cl.enqueue_copy(self.queue, phi, phi_buf)  # blocking: waits for the last step
         phi = phi[:, :n]
         path = backtrack(phi, self.tc.column)
         return DpResult(float(phi[-1, path[-1]]), path, phi)
 
-    def _obs_row(self, obs_buf, t):
-        return obs_buf.get_sub_region(4 * t * self.cols, 4 * self.cols)
+    def _row(self, buffer, t):
+        """Row t of a (T, cols) float32 buffer, as a sub-buffer."""
+        return buffer.get_sub_region(4 * t * self.cols, 4 * self.cols)
 
 
-def dp_opencl(tc: "np.ndarray | PanelMatrix", obs: np.ndarray) -> DpResult:
+def dp_opencl(tc: "np.ndarray | PanelMatrix", obs: np.ndarray, while_running: Callable[[], None] | None = None) -> DpResult:
     """Algorithm 1 on OpenCL for ``tc`` ((N, N) float32 or a PanelMatrix) and ``obs`` ((T, N) float32);
-    bit-identical to :func:`dp_numpy`.
+    bit-identical to :func:`dp_numpy`. ``while_running`` as for :meth:`OpenCLDp.run`.
     """
-    return OpenCLDp(tc).run(obs)
+    return OpenCLDp(tc).run(obs, while_running)

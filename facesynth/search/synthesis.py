@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import time
 from pathlib import Path
+from typing import Callable
 
 import numpy as np
 
@@ -18,7 +19,7 @@ from ..config import AlignSettings, IngestSettings, SynthesizeSettings
 from ..errors import InputError
 from ..model.motion import Motion, Provenance, SearchPath
 from ..model.motiondb import MotionDatabase, Nodes
-from ..motion.head import follow_sources
+from ..motion.head import follow_sources, import_scipy
 from ..motion.postprocess import concatenate, downsample
 from ..opencl import use_opencl
 from ..phonemes import PAU, viseme
@@ -55,13 +56,20 @@ def greedy_search(db: MotionDatabase, tc, utt: Utterance, steps: StepCosts, sett
     return DpResult(cost, result.path, np.zeros((0, 0), np.float32)), (f"greedy ({graph_kind})", "synthesize.search = greedy")
 
 
-def search(tc, steps: StepCosts, settings: SynthesizeSettings):
-    """Run the DP; returns (DpResult, (device, why that device))."""
+def search(tc, steps: StepCosts, settings: SynthesizeSettings, *, while_running: Callable[[], None] | None = None,
+           timings: dict[str, float] | None = None):
+    """Run the DP; returns (DpResult, (device, why that device)). ``while_running`` is host work to
+    do while an OpenCL search runs; ``timings`` gets ``opencl_setup_s`` (context, kernel, buffers)."""
     from ..opencl import device_record
-    from .dp import dp_numpy, dp_opencl
+    from .dp import OpenCLDp, dp_numpy
 
-    run = dp_opencl if use_opencl(settings.use_opencl) else dp_numpy
-    return run(tc, steps.total), device_record(settings.use_opencl)
+    if not use_opencl(settings.use_opencl):
+        return dp_numpy(tc, steps.total), device_record(settings.use_opencl)
+    t0 = time.perf_counter()
+    runner = OpenCLDp(tc)
+    if timings is not None:
+        timings["opencl_setup_s"] = time.perf_counter() - t0
+    return runner.run(steps.total, while_running), device_record(settings.use_opencl)
 
 
 def table_iv_weight(settings: SynthesizeSettings):
@@ -101,27 +109,34 @@ def cao_joins(db: MotionDatabase, path: np.ndarray, phones: list[str]):
 
 
 def synthesize(db: MotionDatabase, utt: Utterance, constraints: dict[int, int], settings: SynthesizeSettings, tc=None) -> dict:
-    """Search and post-process. Returns a dict of everything ``motion.h5`` stores."""
+    """Search and post-process. Returns a dict of everything ``motion.h5`` stores, and
+    ``timings``: seconds spent on the transition costs (when ``tc`` is not given), the step
+    costs, the OpenCL set-up, the search and the post-processing."""
     timings = {}
     t0 = time.perf_counter()
     if tc is None:
         tc = db.transition_panels(settings) if use_opencl(settings.use_opencl) else db.transition(settings)
+        timings["transition_s"] = time.perf_counter() - t0
+    t0 = time.perf_counter()
     steps = step_costs(utt.phones, utt.emotions, db.nodes.phone, db.nodes.emotion, constraints, settings)
-    timings["costs_s"] = time.perf_counter() - t0
+    timings["steps_s"] = time.perf_counter() - t0
     t0 = time.perf_counter()
     if settings.search == "greedy":
         if constraints:
             raise InputError("motion-node constraints need the DP search (Eq. 10); drop --constraints or use --search dp.")
         result, device = greedy_search(db, tc, utt, steps, settings)
     else:
-        result, device = search(tc, steps, settings)
-    timings["search_s"] = time.perf_counter() - t0
+        # scipy (head motion) is imported while the device searches
+        result, device = search(tc, steps, settings, while_running=import_scipy, timings=timings)
+    timings["search_s"] = time.perf_counter() - t0 - timings.get("opencl_setup_s", 0.0)
     path = result.path
     for t, node in constraints.items():  # Eq. 10 guarantees this; a failure is a bug
         assert path[t] == node, f"constraint at step {t} not met"
-    return {"path": path, "cost": result.cost, "terms": path_terms(path, tc, steps), "device": device[0],
-            "device_reason": device[1],
-            "timings": timings, **render_path(db, utt, path, settings)}
+    t0 = time.perf_counter()
+    out = {"path": path, "cost": result.cost, "terms": path_terms(path, tc, steps), "device": device[0],
+           "device_reason": device[1], "timings": timings, **render_path(db, utt, path, settings)}
+    timings["postprocess_s"] = time.perf_counter() - t0
+    return out
 
 
 def render_path(db: MotionDatabase, utt: Utterance, path: np.ndarray, settings: SynthesizeSettings) -> dict:

@@ -5,10 +5,9 @@
 from __future__ import annotations
 
 import time
-from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
-from ..artifacts import check_output, input_record
+from ..artifacts import check_output, input_records_in_background
 from ..config import AlignSettings, IngestSettings, SynthesizeSettings, settings_json
 from ..model.motiondb import MotionDatabase
 from ..search.synthesis import as_motion, prepare, synthesize, unseen_phones
@@ -19,19 +18,26 @@ def run(db_path: Path, out: Path, settings: SynthesizeSettings, ingest_settings:
         phones_path: Path | None = None, emotions_path: Path | None = None, constraints_path: Path | None = None,
         audio: Path | None = None, text: str | None = None, overwrite: bool = False) -> dict:
     """Synthesize the utterance (phones from ``phones_path``, or ``audio`` aligned to ``text``)
-    with its emotions and constraints, and write ``out`` (a ``motion`` artifact). Returns a
-    summary with the timing of each phase in seconds."""
+    with its emotions and constraints, and write ``out`` (a ``motion`` artifact). The summary's
+    ``*_s`` entries are the seconds of each phase: ``load_s`` (database tables), those of
+    :func:`~facesynth.search.synthesis.synthesize`, ``hash_wait_s`` (waiting for the inputs'
+    sha256, computed on another thread from the start) and ``write_s``."""
     check_output(out, overwrite)
+    inputs = [p for p in (db_path, phones_path, emotions_path, constraints_path, audio) if p is not None]
+    records = input_records_in_background(inputs)
     t0 = time.perf_counter()
     db = MotionDatabase.read(db_path)
     load_s = time.perf_counter() - t0
     utt, constraints = prepare(db, phones_path, emotions_path, constraints_path, ingest_settings, audio, text,
                                align_settings)
-    inputs = [p for p in (db_path, phones_path, emotions_path, constraints_path, audio) if p is not None]
-    with ThreadPoolExecutor(max_workers=1) as pool:  # hash the inputs for provenance while the search runs
-        records = pool.submit(lambda: [input_record(p) for p in inputs])
-        res = synthesize(db, utt, constraints, settings)
-        as_motion(db, utt, res, settings).write(out, config=settings_json(settings), records=records.result(),
-                                                overwrite=overwrite)
+    res = synthesize(db, utt, constraints, settings)
+    t0 = time.perf_counter()
+    input_records = records()
+    hash_wait_s = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    as_motion(db, utt, res, settings).write(out, config=settings_json(settings), records=input_records,
+                                            overwrite=overwrite)
+    write_s = time.perf_counter() - t0
     return {"phones": len(utt), "cost": res["cost"], "joins": res["non_captured_joins"], "device": res["device"],
-            "unseen": unseen_phones(utt, db), "frames": len(res["markers"]), "load_s": load_s, **res["timings"]}
+            "unseen": unseen_phones(utt, db), "frames": len(res["markers"]), "load_s": load_s, **res["timings"],
+            "hash_wait_s": hash_wait_s, "write_s": write_s}

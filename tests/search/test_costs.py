@@ -33,3 +33,38 @@ def test_observation_emotion_and_blocking(s):
     assert c.emp[0].tolist() == [0.0, 60.0, 60.0, 0.0]                    # Eq. 5
     assert c.block[2].tolist() == [s.huge_penalty, s.huge_penalty, 0.0, s.huge_penalty]  # Eq. 10
     assert c.block[:2].max() == 0.0
+
+
+@pytest.mark.parametrize("n, block", [(5, 2), (96, 96), (97, 40), (300, 256), (401, 7)])
+def test_panel_rows_are_bit_identical_to_the_reference_matrix(s, n, block):
+    from facesynth.search.costs import transition_panel_rows
+    from facesynth.search.dp import PanelMatrix
+
+    rng = np.random.default_rng(n)
+    vis = rng.integers(0, 14, n)
+    pre = np.where(rng.random(n) < 0.8, np.arange(n) - 1, -1)
+    pre[0] = -1
+    dsc, pgap, vgap = (rng.random((n, n), dtype=np.float32) * scale for scale in (50, 20, 3))
+    dsc[rng.random((n, n)) < 0.05] = 0.0
+    ref = PanelMatrix.from_matrix(transition_matrix(dsc, pgap, vgap, vis, pre, s))
+    out = PanelMatrix(n)
+    scratch = np.empty((2, block, n), np.float32)
+    for a in range(0, n, block):
+        rows = slice(a, min(n, a + block))
+        transition_panel_rows(out.panels, rows, dsc[rows], pgap[rows], vgap[rows], vis, pre, s,
+                              scratch=scratch if a % 2 else None)
+    assert np.array_equal(out.panels.view(np.uint32), ref.panels.view(np.uint32))
+
+
+def test_streamed_matrices_of_the_real_database_match_the_reference(tiny_db, config):
+    from facesynth.artifacts import open_artifact, read
+    from facesynth.model.motiondb import MotionDatabase
+
+    db = MotionDatabase.read(tiny_db)
+    s = config.settings("synthesize")
+    with open_artifact(tiny_db, "motiondb") as f:
+        ref = transition_matrix(read(f, "pairs/dsc"), read(f, "pairs/pgap"), read(f, "pairs/vgap"), db.nodes.viseme, db.nodes.pre, s)
+    tc, panels = db.transition(s), db.transition_panels(s).panels
+    as_matrix = panels.transpose(1, 0, 2).reshape(len(tc), -1)[:, : len(tc)]
+    assert np.array_equal(tc.view(np.uint32), ref.view(np.uint32))
+    assert np.array_equal(as_matrix.view(np.uint32), ref.view(np.uint32))

@@ -92,3 +92,12 @@ def test_bounded_dp_is_exact_and_prunes_with_a_tight_bound():
     _, tight = dp_bounded(tc, obs, ref.cost)
     _, loose = dp_bounded(tc, obs, 1e9)
     assert tight.mean() < loose.mean() == 1.0
+
+
+def test_host_work_runs_once_while_the_device_searches():
+    tc, obs = _random(300, 7, seed=5)
+    calls = []
+    res = OpenCLDp(tc).run(obs, while_running=lambda: calls.append(1))
+    ref = dp_numpy(tc, obs)
+    assert calls == [1]
+    assert res.cost == ref.cost and res.path.tolist() == ref.path.tolist()

@@ -149,7 +149,7 @@ def test_same_seed_same_result_with_random_starts(tiny_db, tiny_artifacts, monke
         summary.pop("seconds")
         return summary, tried
 
-    (first, tried_first), (again, tried_again), (other, tried_other) = run(3), run(3), run(4)
+    (first, tried_first), (again, tried_again), (_, tried_other) = run(3), run(3), run(4)
     assert first == again and tried_first == tried_again
     assert first["evaluations"] <= 8
     # the first start is the current weights whatever the seed; the second is drawn from the seed
