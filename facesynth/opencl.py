@@ -173,6 +173,10 @@ def build_log_line(exc: BaseException) -> str:
     return text.strip().splitlines()[0] if text.strip() else type(exc).__name__
 
 
+#: The context each successful probe made, kept so the chosen device's is not made twice.
+_probe_contexts: dict[Device, object] = {}
+
+
 def probe(device: Device) -> Probe:
     """Build ``kernels/probe.cl`` on ``device`` and check what it computes."""
     import numpy as np
@@ -196,6 +200,7 @@ def probe(device: Device) -> Probe:
         return Probe(device, False, build_log_line(exc))
     if not (np.array_equal(y, 36 * x) and low[0] == np.float32(1.5).view(np.int32)):
         return Probe(device, False, "the probe kernel ran but computed wrong numbers")
+    _probe_contexts[device] = ctx
     return Probe(device, True)
 
 
@@ -313,6 +318,7 @@ def reset() -> None:
     """Forget the chosen device and built kernels (tests switch devices through the environment)."""
     for cached in (choice, _warn_fallback, context, queue, program, kernel):
         cached.cache_clear()
+    _probe_contexts.clear()
 
 
 @lru_cache(maxsize=1)
@@ -321,7 +327,7 @@ def context():
     chosen = choice()
     if chosen.device is None:
         raise OpenCLUnavailable(f"{chosen.reason}; {_ADVICE}, or set use_opencl = false.")
-    return _cl().Context([_cl_device(chosen.device)])
+    return _probe_contexts.get(chosen.device) or _cl().Context([_cl_device(chosen.device)])
 
 
 @lru_cache(maxsize=1)
