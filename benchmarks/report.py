@@ -387,7 +387,7 @@ def time_render(fs: str, demo: Path) -> dict:
             fps = float(f["vertices"].attrs["fps"])
             triangles = int(f["faces"].shape[0])
     audio = [x for a in anims for x in ("--audio", str(demo / "corpus" / "audio" / (a.name.split(".")[0] + ".wav")))]
-    seconds, _ = run([fs, "render", *map(str, anims), *audio, "-o", str(demo / "render_timed.avi"), "--overwrite", "-q"], demo)
+    seconds, _ = run([fs, "render", *map(str, anims), *audio, "-o", "render_timed.avi", "--overwrite", "-q"], demo)
     return {"frames": frames, "video_fps": fps, "triangles": triangles, "wall_s": seconds,
             "frames_per_s": frames / seconds, "times_real_time": frames / seconds / fps}
 
@@ -547,6 +547,7 @@ def main(argv: list[str] | None = None) -> int:
     if args.tune_evaluations < 1:
         ap.error("--tune-evaluations must be at least 1.")
     os.environ.setdefault("PYOPENCL_CTX", "0")
+    args.work, args.out = args.work.resolve(), args.out.resolve()  # commands run in other folders
     started = time.perf_counter()
     try:
         fs = facesynth_exe()
@@ -557,6 +558,7 @@ def main(argv: list[str] | None = None) -> int:
         for seed in args.seeds:
             say(f"seed {seed}: pipeline ({args.preset} preset), evaluate, prune, searches, tune ...")
             raws.append(run_seed(fs, args.work, args.preset, seed, args.tune_evaluations))
+            (args.work / f"seed{seed}" / "raw.json").write_text(json.dumps(raws[-1]), encoding="utf-8")
         paper = args.work / f"seed{args.seeds[0]}"
         if args.preset != "paper":
             paper = args.work / "paper"
