@@ -191,16 +191,22 @@ def seed_timings(raw: dict) -> dict:
     return t
 
 
+# A t interval assumes an unbounded, roughly normal quantity: none for rates and counts.
+NO_INTERVAL = ("fraction", "count", "MB")
+
+
 def aggregate(raws: list[dict]) -> dict:
     """Per-seed figures and their summaries (``summarize``) for every quality figure and
     timing, and the sentence bootstrap over all seeds' held-out sentences."""
     per_seed = [seed_figures(r) for r in raws]
     quality = {}
-    for key, *_ in QUALITY:
+    for key, _, unit, _ in QUALITY:
         values = [f.get(key) for f in per_seed]
         if any(v is None for v in values):
             continue
         quality[key] = {"per_seed": values, **summarize(values)}
+        if unit in NO_INTERVAL:
+            quality[key]["ci"] = None
     timings = [seed_timings(r) for r in raws]
     speed = {k: {"per_seed": [t[k] for t in timings], **summarize([t[k] for t in timings])} for k in timings[0]}
     rows = [row for r in raws for row in sentence_rows(r)]
@@ -255,7 +261,7 @@ def opencl_device() -> dict:
         d = context().devices[0]
     except OpenCLUnavailable as exc:
         return {"device": None, "note": str(exc)}
-    return {"device": d.name.strip(), "platform": f"{d.platform.name.strip()}, {d.platform.version.split(',')[0].strip()}",
+    return {"device": d.name.strip(), "platform": " ".join(f"{d.platform.name}, {d.platform.version.split(',')[0]}".split()),
             "compute_units": int(d.max_compute_units)}
 
 
@@ -432,7 +438,7 @@ def markdown(results: dict) -> str:
         "",
         f"`facesynth evaluate` on each seed's held-out (test) sentences, the database cleaned by "
         f"`prune --auto`. Spread: sample standard deviation and min–max over seeds; 95% CI: "
-        f"Student-t interval of the mean over seeds.",
+        f"Student-t interval of the mean over seeds (none for rates and counts).",
         "",
         "| figure | unit | mean | std | min – max | 95% CI | per seed |",
         "|---|---|---|---|---|---|---|",
