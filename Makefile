@@ -27,7 +27,7 @@ test: $(STAMP)
 
 # Every figure the README quotes, from fresh sample corpora over several seeds (mean and
 # spread), with the host's processor and memory bandwidth -> docs/results.md, docs/results.json.
-# Not part of `make test`: it runs the whole pipeline per seed (about 5 min per seed on 2 cores).
+# Not part of `make test`: it runs the whole pipeline per seed (10 to 12 min for 3 seeds on 2 cores).
 SEEDS            ?= 0 1 2
 REPORT_PRESET    ?= paper
 TUNE_EVALUATIONS ?= 12
