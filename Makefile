@@ -1,5 +1,6 @@
 # facesynth: `make demo` runs the whole pipeline on the built-in sample corpus,
-# `make test` runs the test suite. Both create the environment with pip alone.
+# `make test` runs the test suite, `make report` rebuilds every figure the README quotes.
+# All create the environment with pip alone.
 
 PYTHON ?= python3
 VENV   := .venv
@@ -11,7 +12,7 @@ CONFIG := configs/default.toml
 PRESET ?= small
 SEED   ?= 0
 
-.PHONY: all demo test bench clean
+.PHONY: all demo test report bench clean
 
 all: demo
 
@@ -23,6 +24,17 @@ $(STAMP): pyproject.toml
 
 test: $(STAMP)
 	$(BIN)/python -m pytest -q
+
+# Every figure the README quotes, from fresh sample corpora over several seeds (mean and
+# spread), with the host's processor and memory bandwidth -> docs/results.md, docs/results.json.
+# Not part of `make test`: it runs the whole pipeline per seed (10 to 12 min for 3 seeds on 2 cores).
+SEEDS            ?= 0 1 2
+REPORT_PRESET    ?= paper
+TUNE_EVALUATIONS ?= 12
+
+report: $(STAMP)
+	$(BIN)/python benchmarks/report.py --seeds $(SEEDS) --preset $(REPORT_PRESET) \
+	    --tune-evaluations $(TUNE_EVALUATIONS) --work $(OUT)/report --out docs
 
 # --- the demo pipeline: each artifact depends on what it is made from (the stage table
 # --- in docs/pipeline.md); a changed input or configuration reruns only what follows it.
