@@ -432,8 +432,8 @@ def markdown(results: dict) -> str:
         "",
         f"## Quality over {n} seed{'s' if n > 1 else ''}",
         "",
-        f"`facesynth evaluate` on each seed's held-out (test) sentences, the database cleaned by "
-        f"`prune --auto`. Spread: sample standard deviation and min–max over seeds; 95% CI: "
+        "`facesynth evaluate` on each seed's held-out (test) sentences, the database cleaned by "
+        "`prune --auto`. Spread: sample standard deviation and min–max over seeds; 95% CI: "
         "Student-t interval of the mean over seeds (none for rates and counts).",
         "",
         "| figure | unit | mean | std | min – max | 95% CI | per seed |",

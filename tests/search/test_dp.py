@@ -94,7 +94,7 @@ def test_bounded_dp_is_exact_and_prunes_with_a_tight_bound():
     assert tight.mean() < loose.mean() == 1.0
 
 
-def test_host_work_runs_once_while_the_device_searches():
+def test_host_work_runs_once_while_the_device_searches(opencl_device):
     tc, obs = _random(300, 7, seed=5)
     calls = []
     res = OpenCLDp(tc).run(obs, while_running=lambda: calls.append(1))
