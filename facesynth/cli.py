@@ -249,7 +249,7 @@ def synthesize(ctx: Context, db: Path, phonemes, audio, text, emotions, constrai
                   overwrite=ctx.overwrite)
     for phone, how in s["unseen"].items():
         ctx.say(f"warning: the database has no node of /{phone}/; it will be covered by {how}.")
-    phases = [("read database", "load_s"), ("transition costs", "transition_s"), ("step costs", "steps_s"),
+    phases = [("read database", "load_s"), ("device choice", "device_choice_s"), ("transition costs", "transition_s"), ("step costs", "steps_s"),
               ("OpenCL set-up", "opencl_setup_s"), ("search", "search_s"), ("post-processing", "postprocess_s"),
               ("input hashes", "hash_wait_s"), ("write", "write_s")]
     ctx.detail("phases: " + ", ".join(f"{name} {s[key]:.3f} s" for name, key in phases if key in s) + f"; search on {s['device']}")

@@ -110,12 +110,16 @@ def cao_joins(db: MotionDatabase, path: np.ndarray, phones: list[str]):
 
 def synthesize(db: MotionDatabase, utt: Utterance, constraints: dict[int, int], settings: SynthesizeSettings, tc=None) -> dict:
     """Search and post-process. Returns a dict of everything ``motion.h5`` stores, and
-    ``timings``: seconds spent on the transition costs (when ``tc`` is not given), the step
-    costs, the OpenCL set-up, the search and the post-processing."""
+    ``timings``: seconds spent choosing the device (the first time in a process), on the
+    transition costs (when ``tc`` is not given), the step costs, the OpenCL set-up, the search
+    and the post-processing."""
     timings = {}
     t0 = time.perf_counter()
+    on_device = use_opencl(settings.use_opencl)
+    timings["device_choice_s"] = time.perf_counter() - t0
+    t0 = time.perf_counter()
     if tc is None:
-        tc = db.transition_panels(settings) if use_opencl(settings.use_opencl) else db.transition(settings)
+        tc = db.transition_panels(settings) if on_device else db.transition(settings)
         timings["transition_s"] = time.perf_counter() - t0
     t0 = time.perf_counter()
     steps = step_costs(utt.phones, utt.emotions, db.nodes.phone, db.nodes.emotion, constraints, settings)
