@@ -88,7 +88,8 @@ def main() -> None:
     startup = [r["written_s"] - sum(r["phases"].values()) for r in runs]
     report = {
         "command": f"facesynth synthesize ({PHONES} phones of paper Table V) -v",
-        "facesynth": str(args.facesynth), "device": device_name(), "nodes": len(db.nodes),
+        "facesynth": "this environment's" if args.facesynth == Path(sys.executable).with_name("facesynth")
+        else str(args.facesynth), "device": device_name(), "nodes": len(db.nodes),
         "cpus": os.cpu_count(), "repeats": args.repeats,
         "command_to_file_written_s": summary(written),
         "command_to_exit_s": summary([r["exit_s"] for r in runs]),
