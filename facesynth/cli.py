@@ -273,14 +273,29 @@ def suggest(ctx: Context, db: Path, phonemes: Path, at_s: float, emotions, const
     Example:
       facesynth suggest db.h5 --phonemes corpus/labels/sad_s017.TextGrid --at 1.25
     """
+    from .errors import InputError
     from .stages import suggest as stage
 
+    if top < 1:
+        raise click.BadParameter(f"{top}: list at least one suggestion.", param_hint="--top")
     info, rows = stage.suggest(db, phonemes, at_s, ctx.config.settings("synthesize"), ctx.config.settings("ingest"),
                                emotions, constraints)
+    listed = stage.shown(rows, top, context_only)
+    if not listed:  # only --context-only can leave nothing: every phone has at least one node
+        raise InputError(stage.no_context_message(info, at_s) + "; drop --context-only to see the time-correct nodes.")
     ctx.say(f"phone {info['index']} /{info['phone']}/ in context {info['context']}, relative time {info['relative_time']:.2f}; "
             f"unconstrained optimum {info['optimum']:.2f} uses node {info['optimal_node']}")
+    if not any(r.context_correct for r in rows):
+        ctx.say("warning: " + stage.no_context_message(info, at_s) + ".")
     for line in stage.table(rows, top, context_only):
         click.echo(line)
+    best = listed[0]
+    ctx.say(f"best: rank 1 (the first row under the header), node {best.node}, "
+            f"{'context-correct' if best.context_correct else 'time-correct only'}, cost {best.cost:.2f}; to use it:")
+    ctx.say(f"  {stage.use_line(at_s, best, constraints)}")
+    emotion_option = f" --emotions {emotions}" if emotions else ""
+    ctx.say(f"  facesynth synthesize {db} --phonemes {phonemes}{emotion_option} "
+            f"--constraints {constraints or 'constraints.txt'} -o constrained.h5")
 
 
 @main.command()

@@ -2,11 +2,18 @@
 
 For the phone sounding at time ``T_c`` (relative time ``t_c`` inside it), every node of
 that phone is a candidate. For each the command reports its *time-correct* frame (the
-node's frame at relative time ``t_c``, interpolated), whether it is *context-correct*
-(same triphone context as the input phone), and the best total cost (Eq. 4) of the whole
-utterance when the phone is constrained to it: ``phi_c(j) + psi_c(j) - obs_c(j)``, where
-``phi`` is the forward DP of Algorithm 1 and ``psi`` the same DP run backwards (transposed
-TC, reversed steps). Best first.
+node's frame at relative time ``t_c``, rounded to the nearest captured frame and given as
+a frame index inside the node's take, 0 at the take's first frame), whether it is
+*context-correct* (the same triphone context ``prev-phone+next`` as the input phone, with
+``pau`` at a silence or the utterance's ends, as the database stores it), and the best
+total cost (Eq. 4) of the whole utterance when the phone is constrained to it:
+``phi_c(j) + psi_c(j) - obs_c(j)``, where ``phi`` is the forward DP of Algorithm 1 and
+``psi`` the same DP run backwards (transposed TC, reversed steps). Best first.
+
+Context-correct nodes exist only where the input shares a triphone with a training
+sentence; the sample corpus designs its sentences to cover new diphones, so a held-out
+sentence shares few. The description returned with the suggestions lists the phones of the
+utterance that have context-correct nodes, so a caller can point the user at them.
 """
 
 from __future__ import annotations
@@ -25,12 +32,15 @@ from ..search.costs import step_costs
 from ..search.dp import dp_numpy, dp_opencl
 from ..search.synthesis import prepare
 
+HEADER = "rank\tnode\temotion\ttake\tcontext\tcontext_correct\ttime_correct_take_frame\tcost\textra_cost"
+
 
 @dataclass
 class Suggestion:
     """A node to constrain the phone at the asked time to: its emotion, take, triphone context
-    (and whether it matches), the time-correct frame (fractional database frame), the best total
-    cost of the utterance through it and that cost above the unconstrained optimum.
+    (and whether it matches), the time-correct frame (an integer frame index inside the
+    node's take), the best total cost of the utterance through it and that cost above the
+    unconstrained optimum.
     """
 
     node: int
@@ -38,15 +48,37 @@ class Suggestion:
     take: str
     context: str
     context_correct: bool
-    time_correct_frame: float   # frame index in the database (fractional: interpolated)
+    time_correct_frame: int     # frame index inside the node's take (0 = the take's first frame)
     cost: float                 # best total cost of the utterance through this node
     extra: float                # cost above the unconstrained optimum
+
+
+def triphone(phones: list[str], c: int) -> tuple[str, str]:
+    """The previous and next phone of step ``c`` of an utterance (``pau`` at its ends)."""
+    return (phones[c - 1] if c > 0 else PAU), (phones[c + 1] if c + 1 < len(phones) else PAU)
+
+
+def context_correct_steps(phones: list[str], starts: np.ndarray, ends: np.ndarray, db_contexts: set[tuple[str, str, str]]) -> list[dict]:
+    """The spoken steps of an utterance that have at least one context-correct node: their
+    index, phone, triphone context and mid time (s)."""
+    out = []
+    for c, phone in enumerate(phones):
+        if phone == PAU:
+            continue
+        prev_p, next_p = triphone(phones, c)
+        if (prev_p, phone, next_p) in db_contexts:
+            out.append({"index": c, "phone": phone, "context": f"{prev_p}-{phone}+{next_p}",
+                        "time_s": round(0.5 * (float(starts[c]) + float(ends[c])), 3)})
+    return out
 
 
 def suggest(db_path: Path, phones_path: Path, at_s: float, settings: SynthesizeSettings, ingest_settings: IngestSettings,
             emotions_path: Path | None = None, constraints_path: Path | None = None) -> tuple[dict, list[Suggestion]]:
     """Nodes of the phone at ``at_s`` (s) ranked by the best total cost through them (forward and
     backward DP, paper VI-A); returns the phone's description and the ranked suggestions.
+
+    The description holds ``context_correct_at``: every spoken phone of the utterance that
+    has context-correct nodes (index, phone, context, mid time in s).
     """
     db = MotionDatabase.read(db_path)
     utt, constraints = prepare(db, phones_path, emotions_path, constraints_path, ingest_settings)
@@ -60,8 +92,7 @@ def suggest(db_path: Path, phones_path: Path, at_s: float, settings: SynthesizeS
     if len(candidates) == 0:
         raise InputError(f"{db_path}: the database has no node of /{phone}/ to suggest.")
     rel = (at_s - utt.starts[c]) / (utt.ends[c] - utt.starts[c])
-    prev_p = utt.phones[c - 1] if c > 0 else PAU
-    next_p = utt.phones[c + 1] if c + 1 < len(utt) else PAU
+    prev_p, next_p = triphone(utt.phones, c)
     tc = db.transition(settings)
     obs = step_costs(utt.phones, utt.emotions, db.nodes.phone, db.nodes.emotion, constraints, settings).total
     run = dp_opencl if use_opencl(settings.use_opencl) else dp_numpy
@@ -71,22 +102,55 @@ def suggest(db_path: Path, phones_path: Path, at_s: float, settings: SynthesizeS
     out = []
     for j in candidates:
         start, count = int(db.nodes.frame_start[j]), int(db.nodes.frame_count[j])
+        take = int(db.nodes.take[j])
+        frame = start - int(db.takes.frame_start[take]) + int(np.floor(rel * (count - 1) + 0.5))
         ctx = f"{db.nodes.prev_phone[j]}-{phone}+{db.nodes.next_phone[j]}"
-        out.append(Suggestion(int(j), db.nodes.emotion[j], db.takes.name[db.nodes.take[j]], ctx,
+        out.append(Suggestion(int(j), db.nodes.emotion[j], db.takes.name[take], ctx,
                               db.nodes.prev_phone[j] == prev_p and db.nodes.next_phone[j] == next_p,
-                              start + rel * (count - 1), float(through[j]), max(0.0, float(through[j] - forward.cost))))
+                              frame, float(through[j]), max(0.0, float(through[j] - forward.cost))))
     out.sort(key=lambda s: (s.cost, s.node))
+    contexts = set(zip(db.nodes.prev_phone, db.nodes.phone, db.nodes.next_phone))
     info = {"phone": phone, "index": c, "relative_time": rel, "context": f"{prev_p}-{phone}+{next_p}",
-            "optimum": forward.cost, "optimal_node": int(forward.path[c])}
+            "optimum": forward.cost, "optimal_node": int(forward.path[c]),
+            "context_correct_at": context_correct_steps(utt.phones, utt.starts, utt.ends, contexts)}
     return info, out
+
+
+def shown(rows: list[Suggestion], top: int, context_only: bool) -> list[Suggestion]:
+    """The rows ``facesynth suggest`` lists: the best ``top`` (only context-correct ones with
+    ``context_only``)."""
+    return [r for r in rows if r.context_correct or not context_only][:top]
 
 
 def table(rows: list[Suggestion], top: int, context_only: bool) -> list[str]:
     """Tab-separated lines of ``facesynth suggest``: a header, then the best ``top`` rows
-    (only context-correct ones with ``context_only``)."""
-    lines = ["rank\tnode\temotion\ttake\tcontext\tcontext_correct\ttime_correct_frame\tcost\textra_cost"]
-    shown = [r for r in rows if r.context_correct or not context_only][:top]
-    for rank, r in enumerate(shown, 1):
+    (only context-correct ones with ``context_only``); the first row after the header is
+    the best."""
+    lines = [HEADER]
+    for rank, r in enumerate(shown(rows, top, context_only), 1):
         lines.append(f"{rank}\t{r.node}\t{r.emotion}\t{r.take}\t{r.context}\t{'yes' if r.context_correct else 'no'}\t"
-                     f"{r.time_correct_frame:.2f}\t{r.cost:.2f}\t{r.extra:.2f}")
+                     f"{r.time_correct_frame}\t{r.cost:.2f}\t{r.extra:.2f}")
     return lines
+
+
+def elsewhere(info: dict, limit: int = 5) -> str:
+    """Where the utterance has context-correct nodes, as a phrase for messages."""
+    steps = info["context_correct_at"]
+    if not steps:
+        return "no phone of this utterance shares its triphone context with a database node"
+    listed = ", ".join(f"{s['time_s']:g} s /{s['phone']}/ ({s['context']})" for s in steps[:limit])
+    more = f" and {len(steps) - limit} more" if len(steps) > limit else ""
+    return f"phones with context-correct nodes: {listed}{more}"
+
+
+def no_context_message(info: dict, at_s: float) -> str:
+    """The sentence (without its full stop) saying that no node has the asked phone's triphone context."""
+    return (f"no node of /{info['phone']}/ has the context {info['context']} of the phone at {at_s:g} s; "
+            f"{elsewhere(info)}")
+
+
+def use_line(at_s: float, best: Suggestion, constraints_path: Path | None) -> str:
+    """The shell line that adds the best suggestion to a constraints file (``TIMEs NODE``)."""
+    target = constraints_path if constraints_path is not None else "constraints.txt"
+    redirect = ">>" if constraints_path is not None else ">"
+    return f'echo "{at_s:g}s {best.node}" {redirect} {target}'

@@ -1,7 +1,10 @@
 import h5py
 import pytest
+from click.testing import CliRunner
 
+from facesynth.cli import main
 from facesynth.errors import InputError
+from facesynth.formats.labels import Segment, read_phone_segments, write_textgrid
 from facesynth.search.inputs import read_utterance
 from facesynth.stages import suggest, synthesize
 
@@ -23,9 +26,14 @@ def test_suggested_costs_are_what_the_constrained_search_finds(tiny_db, tiny_cor
                        config.settings("align"), phones_path=tg, constraints_path=tmp_path / "c.txt", overwrite=True)
         with h5py.File(tmp_path / "m.h5") as f:
             assert f["path"].attrs["total_cost"] == pytest.approx(r.cost, rel=1e-5)
-    for r in rows:
+    for r in rows:  # the time-correct frame: an integer frame of the node's take, inside the node
+        take = db.nodes.take[r.node]
+        assert isinstance(r.time_correct_frame, int) and db.takes.name[take] == r.take
+        in_db = int(db.takes.frame_start[take]) + r.time_correct_frame
         node_frames = (db.nodes.frame_start[r.node], db.nodes.frame_start[r.node] + db.nodes.frame_count[r.node] - 1)
-        assert node_frames[0] <= r.time_correct_frame <= node_frames[1]
+        assert node_frames[0] <= in_db <= node_frames[1]
+        expected = node_frames[0] + round(0.5 * (db.nodes.frame_count[r.node] - 1))
+        assert abs(in_db - expected) <= 1
         assert r.context_correct == (r.context == info["context"])
 
 
@@ -33,3 +41,57 @@ def test_suggest_in_a_pause_is_refused(tiny_db, tiny_corpus, held_out_take, conf
     tg = tiny_corpus / "labels" / f"{held_out_take}.TextGrid"
     with pytest.raises(InputError, match="falls in a pause"):
         suggest.suggest(tiny_db, tg, 0.01, config.settings("synthesize"), config.settings("ingest"))
+
+
+def _spliced_sentence(tiny_corpus, tmp_path):
+    """A new sentence made of a stretch of a training sentence between silences: its inner
+    phones keep their training triphones, so context-correct nodes must exist for them."""
+    import csv
+
+    row = next(r for r in csv.DictReader(open(tiny_corpus / "manifest.csv")) if r["split"] == "train")
+    segs = [s for s in read_phone_segments(tiny_corpus / row["alignment"]) if s.label not in ("pau", "sil", "")]
+    stretch = segs[3:9]
+    t0 = stretch[0].start - 0.2
+    out = [Segment(0.0, 0.2, "pau")] + [Segment(s.start - t0, s.end - t0, s.label) for s in stretch]
+    out.append(Segment(out[-1].end, out[-1].end + 0.2, "pau"))
+    path = tmp_path / "spliced.TextGrid"
+    write_textgrid(path, {"phones": out})
+    return path, out
+
+
+def test_a_shared_triphone_gives_context_correct_suggestions(tiny_db, tiny_corpus, config, tmp_path):
+    tg, segs = _spliced_sentence(tiny_corpus, tmp_path)
+    db = synthesize.MotionDatabase.read(tiny_db)
+    c = 3  # pau, s3, s4, [s5], ...: an inner phone, its neighbours as in the training sentence
+    at = 0.5 * (segs[c].start + segs[c].end)
+    info, rows = suggest.suggest(tiny_db, tg, at, config.settings("synthesize"), config.settings("ingest"))
+    context = (segs[c - 1].label, segs[c].label, segs[c + 1].label)
+    assert info["context"] == "{}-{}+{}".format(*context)
+    same = {j for j in range(len(db.nodes)) if (db.nodes.prev_phone[j], db.nodes.phone[j], db.nodes.next_phone[j]) == context}
+    assert same and {r.node for r in rows if r.context_correct} == same
+    assert [s["index"] for s in info["context_correct_at"]] == [2, 3, 4, 5]  # not the edges, whose context is a pause
+
+    r = CliRunner().invoke(main, ["suggest", str(tiny_db), "--phonemes", str(tg), "--at", f"{at}", "--context-only"])
+    assert r.exit_code == 0, r.output
+    lines = r.stdout.splitlines()
+    assert lines[0].split("\t")[6] == "time_correct_take_frame"
+    assert {int(line.split("\t")[1]) for line in lines[1:]} == same
+    best = lines[1].split("\t")[1]
+    assert "best: rank 1" in r.stderr and f'echo "{at:g}s {best}" > constraints.txt' in r.stderr
+    assert "--constraints constraints.txt" in r.stderr
+
+
+def test_a_filter_that_leaves_nothing_is_an_error(tiny_db, tiny_corpus, held_out_take, config):
+    tg = tiny_corpus / "labels" / f"{held_out_take}.TextGrid"
+    utt = read_utterance(tg)
+    c = next(k for k, p in enumerate(utt.phones) if p != "pau")
+    at = 0.5 * (utt.starts[c] + utt.ends[c])
+    info, rows = suggest.suggest(tiny_db, tg, at, config.settings("synthesize"), config.settings("ingest"))
+    if any(r.context_correct for r in rows):
+        pytest.skip("this phone of the held-out sentence has context-correct nodes")
+    plain = CliRunner().invoke(main, ["suggest", str(tiny_db), "--phonemes", str(tg), "--at", f"{at}"])
+    assert plain.exit_code == 0 and "warning: no node of" in plain.stderr
+    only = CliRunner().invoke(main, ["suggest", str(tiny_db), "--phonemes", str(tg), "--at", f"{at}", "--context-only"])
+    assert only.exit_code == 1 and only.stdout == ""
+    assert only.stderr.startswith("error: no node of") and len(only.stderr.strip().splitlines()) == 1
+    assert "drop --context-only" in only.stderr
