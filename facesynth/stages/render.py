@@ -2,7 +2,8 @@
 
 Views: ``shaded`` (lit, smooth-normal, depth-correct mesh from a z-buffer rasterizer on
 OpenCL, with a NumPy reference), ``markers`` (the paper's marker mode: the markers as
-dots) and ``side-by-side`` (the animation beside a second one, e.g. ground truth).
+dots) and ``side-by-side`` (the animation beside a second one, e.g. ground truth: the
+left half is labelled "synthesis", the right half, ``--compare``, "capture").
 The camera looks along -z at the rest mesh (+y up), fitted once so the view is steady.
 Several animations render one after another into one video, each with its own audio;
 every clip's audio is cut or padded to its frame count, so the first frame is at audio
@@ -269,6 +270,36 @@ def clip_audio(audio_path: Path, n_frames: int, fps: float, rate: int) -> np.nda
     return np.pad(samples, (0, max(0, need - len(samples))))[:need]
 
 
+SIDE_BY_SIDE_LABELS = ("synthesis", "capture")  # left: the animation rendered; right: --compare
+
+
+def label_mask(text: str, scale: int = 2) -> np.ndarray:
+    """A (h, w) float mask in [0, 1] of ``text`` in Pillow's default bitmap font, enlarged
+    ``scale`` times (nearest neighbour, so the same on every machine)."""
+    from PIL import Image, ImageDraw, ImageFont
+
+    font = ImageFont.load_default_imagefont() if hasattr(ImageFont, "load_default_imagefont") else ImageFont.load_default()
+    left, top, right, bottom = ImageDraw.Draw(Image.new("L", (1, 1))).textbbox((0, 0), text, font=font)
+    image = Image.new("L", (right - left + 4, bottom - top + 4), 0)
+    ImageDraw.Draw(image).text((2 - left, 2 - top), text, fill=255, font=font)
+    mask = np.asarray(image, np.float32) / 255.0
+    return np.kron(mask, np.ones((scale, scale), np.float32))
+
+
+def burn_label(frame: np.ndarray, mask: np.ndarray, x: int = 8, y: int = 8) -> np.ndarray:
+    """Draw a label mask (from :func:`label_mask`) in white on a dark box at (x, y) of an RGB
+    frame (H, W, 3) uint8; returns the frame (modified in place)."""
+    h = min(mask.shape[0] + 4, frame.shape[0] - y)
+    w = min(mask.shape[1] + 4, frame.shape[1] - x)
+    if h <= 4 or w <= 4:
+        return frame
+    box = frame[y:y + h, x:x + w].astype(np.float32) * 0.35
+    m = mask[:h - 4, :w - 4, None]
+    box[2:h - 2, 2:w - 2] = box[2:h - 2, 2:w - 2] * (1 - m) + 255.0 * m
+    frame[y:y + h, x:x + w] = box.round().astype(np.uint8)
+    return frame
+
+
 def render_frames(clip: MeshAnimation, settings: RenderSettings, compare: MeshAnimation | None = None):
     """Yield RGB frames (H, W, 3) uint8 for one clip in the configured view."""
     view = settings.view
@@ -281,6 +312,8 @@ def render_frames(clip: MeshAnimation, settings: RenderSettings, compare: MeshAn
         # The camera looks along -z without rotation, so world normals are camera normals.
         return raster.render(camera.project(vertices), vertex_normals(vertices, clip.faces, incidence))
 
+    if view == "side-by-side":
+        masks = [label_mask(text) for text in SIDE_BY_SIDE_LABELS]
     if view == "markers":
         marker_camera = Camera.fit(clip.markers[0], width, settings.height, settings.fov_deg)
     for t in range(len(clip.vertices)):
@@ -290,7 +323,8 @@ def render_frames(clip: MeshAnimation, settings: RenderSettings, compare: MeshAn
             yield draw_markers(marker_camera.project(clip.markers[t].astype(np.float64)), width, settings.height)
         else:
             other = compare.vertices[min(t, len(compare.vertices) - 1)]
-            yield np.concatenate([shaded(clip.vertices[t]), shaded(other)], axis=1)
+            left, right = (np.array(shaded(v), np.uint8) for v in (clip.vertices[t], other))
+            yield np.concatenate([burn_label(left, masks[0]), burn_label(right, masks[1])], axis=1)
 
 
 def run(anims: list[Path], audios: list[Path], out: Path, settings: RenderSettings, compare: Path | None = None,

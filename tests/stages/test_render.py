@@ -114,3 +114,19 @@ def test_production_mesh_rasterizes_like_the_reference(shared_assets, opencl_dev
     ref = render.triangle_ids_numpy(screen, faces, 160, 128)
     assert (ids == ref).mean() > 0.99
     assert image[mouth].max() < 60
+
+
+def test_side_by_side_halves_are_labelled(anim):
+    """The left half says "synthesis", the right "capture": the label region differs from the
+    background there, and the two labels differ from each other."""
+    settings = Config.load(None, ("render.width=320", "render.height=240", "render.view=side-by-side")).settings("render")
+    clip = MeshAnimation.read(anim[0])
+    frame = next(render.render_frames(clip, settings, clip))
+    half = settings.width // 2
+    background = np.round(render.BACKGROUND[:3] * 255)
+    left, right = frame[8:30, 8:80].astype(float), frame[8:30, half + 8:half + 80].astype(float)
+    for region in (left, right):
+        assert (np.abs(region - background).max(-1) > 100).sum() > 40  # white text on the dark box
+    assert np.abs(left - right).max() > 100  # "synthesis" is not "capture"
+    # the faces themselves are untouched away from the labels: both halves show the same mesh
+    assert np.array_equal(frame[120:, :half], frame[120:, half:])
