@@ -21,7 +21,7 @@ from scipy import sparse
 
 from ..artifacts import atomic_path
 from ..config import RenderSettings
-from ..errors import InputError
+from ..errors import InputError, UsageError
 from ..formats.audio import read_audio, resample, write_wav
 from ..model.meshanim import MeshAnimation
 from ..progress import progress
@@ -301,9 +301,9 @@ def run(anims: list[Path], audios: list[Path], out: Path, settings: RenderSettin
     import imageio_ffmpeg
 
     if len(anims) != len(audios):
-        raise InputError(f"give one --audio per animation ({len(anims)} animations, {len(audios)} audio files).")
+        raise UsageError(f"give one --audio per animation ({len(anims)} animations, {len(audios)} audio files).")
     if settings.view == "side-by-side" and compare is None:
-        raise InputError("the side-by-side view needs --compare ANIM (e.g. the ground truth deformed onto the same mesh).")
+        raise UsageError("the side-by-side view needs --compare ANIM (e.g. the ground truth deformed onto the same mesh).")
     if out.suffix.lower() != ".avi":
         raise InputError(f"{out}: the output must be an .avi file.")
     if settings.width % 16 or settings.height % 16:
