@@ -157,3 +157,36 @@ def test_reads_table_covers_every_command_and_section():
 
     assert sorted(paths(main)) == sorted(READS)
     assert {s for sections in READS.values() for s in sections} == set(SECTIONS)
+
+
+# --- outputs: tracebacks before, one line and exit 1 now ----------------------------------
+
+def test_evaluate_into_an_existing_file(tiny_db, tiny_artifacts, tmp_path):
+    existing = tmp_path / "report.txt"
+    existing.write_text("keep me\n")
+    _is_error(_run("evaluate", tiny_db, "--heldout", tiny_artifacts["corpus"], "-o", existing), 1,
+              "report.txt: is a file, but this output is a folder (for the report)")
+    assert existing.read_text() == "keep me\n"
+
+
+def test_evaluate_into_a_folder_that_is_not_empty(tiny_db, tiny_artifacts, tmp_path):
+    (tmp_path / "notes.txt").write_text("mine\n")
+    _is_error(_run("evaluate", tiny_db, "--heldout", tiny_artifacts["corpus"], "-o", tmp_path), 1,
+              "is not empty; pass --overwrite")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["notes.txt"]
+
+
+@pytest.mark.parametrize("quiet", [(), ("-q",)])
+def test_synthesize_into_a_folder(tiny_db, utterance, tmp_path, quiet):
+    _is_error(_run("synthesize", tiny_db, "--phonemes", utterance[0], "-o", tmp_path, "--overwrite", *quiet), 1,
+              "is a folder, but this output is one file")
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_folder_outputs_that_are_files(tiny_db, tmp_path):
+    existing = tmp_path / "taken"
+    existing.write_text("keep me\n")
+    _is_error(_run("isomap", tiny_db, "-o", tmp_path / "i.h5", "--images", existing), 1,
+              "taken: is a file, but this output is a folder (for the images)")
+    _is_error(_run("sample-corpus", existing, "--preset", "tiny"), 1, "taken: is a file")
+    assert existing.read_text() == "keep me\n" and not (tmp_path / "i.h5").exists()
