@@ -190,3 +190,61 @@ def test_folder_outputs_that_are_files(tiny_db, tmp_path):
               "taken: is a file, but this output is a folder (for the images)")
     _is_error(_run("sample-corpus", existing, "--preset", "tiny"), 1, "taken: is a file")
     assert existing.read_text() == "keep me\n" and not (tmp_path / "i.h5").exists()
+
+
+# --- no silent no-ops ---------------------------------------------------------------------
+
+def test_emotion_span_outside_the_utterance(tiny_db, utterance, tmp_path):
+    spans = tmp_path / "spans.txt"
+    spans.write_text("# in seconds\n100 200 happy\n")
+    r = _run("synthesize", tiny_db, "--phonemes", utterance[0], "--emotions", spans, "-o", tmp_path / "m.h5")
+    _is_error(r, 1, "spans.txt, line 2: the emotion span 100 to 200 s lies outside the utterance",
+              f"to {utterance[1]:.3f} s)")
+    assert not (tmp_path / "m.h5").exists()
+
+
+def test_emotion_span_partly_outside_is_fine(tiny_db, utterance, tmp_path):
+    spans = tmp_path / "spans.txt"
+    spans.write_text("0 1000 happy\n")
+    r = _run("synthesize", tiny_db, "--phonemes", utterance[0], "--emotions", spans, "-o", tmp_path / "m.h5")
+    assert r.exit_code == 0, r.output
+    assert "emotion span" not in r.output
+
+
+def test_emotion_span_between_midpoints_is_warned_about(tiny_db, utterance, tmp_path):
+    from facesynth.search.inputs import read_utterance
+
+    utt = read_utterance(utterance[0], ("phones",))
+    spans = tmp_path / "spans.txt"
+    spans.write_text(f"{utt.starts[1]:.4f} {utt.starts[1] + 0.001:.4f} happy\n")
+    r = _run("synthesize", tiny_db, "--phonemes", utterance[0], "--emotions", spans, "-o", tmp_path / "m.h5")
+    assert r.exit_code == 0, r.output
+    assert "warning: " in r.output and "holds no phone's midpoint, so it changes nothing" in r.output
+
+
+def test_constraint_outside_the_utterance(tiny_db, utterance, tmp_path):
+    constraints = tmp_path / "c.txt"
+    constraints.write_text("100s 0\n")
+    _is_error(_run("synthesize", tiny_db, "--phonemes", utterance[0], "--constraints", constraints,
+                   "-o", tmp_path / "m.h5"), 1, "c.txt, line 1: time 100.000 s is outside the utterance")
+
+
+@pytest.mark.parametrize("extra_s", [1.2, -0.2])
+def test_render_refuses_audio_of_another_length(anim, tmp_path, extra_s):
+    x, rate = sf.read(anim[1])
+    n = len(x) + int(extra_s * rate)
+    other = tmp_path / "other.wav"
+    sf.write(other, np.pad(x, (0, max(0, n - len(x))))[:n], rate)
+    _is_error(_run("render", anim[0], "--audio", other, "-o", tmp_path / "v.avi"), 1,
+              "other.wav: the audio lasts", "more than 2 frames apart")
+    assert not (tmp_path / "v.avi").exists()
+
+
+def test_render_takes_audio_within_two_frames(tmp_path):
+    n_frames, rate = 90, 16000
+    for frames_off in (-1.9, 1.9):
+        sf.write(tmp_path / "a.wav", np.zeros(int(round((n_frames + frames_off) / 30.0 * rate))), rate)
+        assert len(render.clip_audio(tmp_path / "a.wav", n_frames, 30.0, 48000)) == n_frames / 30.0 * 48000
+    sf.write(tmp_path / "a.wav", np.zeros(int(round((n_frames + 2.5) / 30.0 * rate))), rate)
+    with pytest.raises(InputError, match="more than 2 frames apart"):
+        render.clip_audio(tmp_path / "a.wav", n_frames, 30.0, 48000)

@@ -81,7 +81,7 @@ def test_audio_shorter_than_the_motion_is_refused(anim, tmp_path):
     x, rate = sf.read(anim[1])
     short = tmp_path / "short.wav"
     sf.write(short, x[: rate // 4], rate)
-    with pytest.raises(InputError, match="short.wav: the audio lasts 0.25 s but the motion"):
+    with pytest.raises(InputError, match="short.wav: the audio lasts 0.25 s but the animation"):
         render.run([anim[0]], [short], tmp_path / "x.avi", Config.load().settings("render"))
     assert not (tmp_path / "x.avi").exists()
 
