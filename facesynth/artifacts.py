@@ -119,9 +119,18 @@ def _hash_cache_put(key: str, hex_digest: str) -> None:
 
 
 def check_output(path: Path, overwrite: bool) -> None:
-    """Refuse to replace an existing output unless ``overwrite`` is set."""
+    """Refuse to replace an existing output unless ``overwrite`` is set, and a folder always
+    (an output here is one file; ``--overwrite`` does not delete folders)."""
+    if Path(path).is_dir():
+        raise OutputExistsError(f"{path}: is a folder, but this output is one file; give a file name (e.g. inside that folder).")
     if Path(path).exists() and not overwrite:
         raise OutputExistsError(f"{path}: output exists; pass --overwrite to replace it or choose another path.")
+
+
+def check_output_folder(path: Path, what: str) -> None:
+    """Refuse an output folder (``what``: 'the report', 'the images') whose path is a file."""
+    if Path(path).exists() and not Path(path).is_dir():
+        raise OutputExistsError(f"{path}: is a file, but this output is a folder (for {what}); give a folder path.")
 
 
 @contextlib.contextmanager

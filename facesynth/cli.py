@@ -1,5 +1,7 @@
 """The ``facesynth`` command line: thin click commands that parse, load settings, call a
-stage and map user errors to one line and exit status 1."""
+stage and map user errors to exit statuses: 0 ok, 1 bad input or data (one line), 2 bad
+usage (a missing or contradictory option, a bad ``--set``; click's usage message), 130
+interrupted."""
 
 from __future__ import annotations
 
@@ -12,8 +14,8 @@ from pathlib import Path
 import click
 
 from . import __version__
-from .config import SAMPLE_CORPUS_PRESETS, Config, choices
-from .errors import FacesynthError
+from .config import SAMPLE_CORPUS_PRESETS, Config, choices, parse_override
+from .errors import FacesynthError, OverrideError, UsageError
 
 PATH = click.Path(path_type=Path)
 EXISTING = click.Path(path_type=Path, dir_okay=False)
@@ -64,8 +66,57 @@ def _configure_logging(verbose: int, quiet: bool) -> None:
     logger.propagate = False
 
 
+#: The configuration sections each command reads, by command path ("isomap build"). A
+#: ``--set`` must name one of them; ``Config.settings`` refuses any other, keeping this true.
+READS: dict[str, tuple[str, ...]] = {
+    "sample-corpus": (),
+    "align": ("align",),
+    "ingest": ("ingest", "align"),
+    "normalize": ("normalize",),
+    "pca": ("pca",),
+    "build-db": ("build_db",),
+    "synthesize": ("synthesize", "ingest", "align"),
+    "suggest": ("synthesize", "ingest"),
+    "deform": ("deform",),
+    "render": ("render",),
+    "evaluate": ("evaluate", "synthesize", "normalize"),
+    "capture": ("normalize", "synthesize"),
+    "tune": ("tune", "synthesize", "evaluate", "normalize"),
+    "isomap build": ("isomap",),
+    "isomap pick": (),
+    "db show": (),
+    "prune": ("prune",),
+    "devices": (),
+    "check": (),
+}
+
+
+def _command_path() -> str:
+    """The running command's path below ``facesynth``: 'synthesize', 'isomap build'."""
+    names, ctx = [], click.get_current_context()
+    while ctx.parent is not None:
+        names.append(ctx.info_name)
+        ctx = ctx.parent
+    return " ".join(reversed(names))
+
+
+def _check_overrides_read(command: str, overrides: tuple[str, ...]) -> None:
+    """Refuse a ``--set`` for a section ``command`` never reads: it would be ignored silently."""
+    reads = READS[command]
+    for item in overrides:
+        section = parse_override(item)[0]
+        if section not in reads:
+            readers = [name for name, sections in READS.items() if section in sections]
+            mine = ", ".join(f"[{name}]" for name in reads) or "no settings"
+            raise OverrideError(f"--set {item}: [{section}] is read by "
+                                f"{', '.join('facesynth ' + name for name in readers)}; "
+                                f"facesynth {command} reads {mine}, so this setting would be ignored.")
+
+
 def stage(func):
-    """Add the global options to a command and turn FacesynthError into exit status 1."""
+    """Add the global options to a command and map its errors to exit statuses: UsageError
+    (bad usage, e.g. a bad ``--set``) to click's usage message and 2, any other
+    FacesynthError to one line and 1, Ctrl-C to 130."""
     @click.option("--config", "config_path", type=EXISTING, default=None, help="TOML file overriding configs/default.toml.")
     @click.option("--set", "overrides", multiple=True, metavar="SECTION.KEY=VALUE", help="Override one setting (repeatable).")
     @click.option("-v", "--verbose", count=True, help="Say more.")
@@ -76,8 +127,13 @@ def stage(func):
         _configure_logging(verbose, quiet)
         started = time.perf_counter()
         try:
-            ctx = Context(Config.load(config_path, tuple(overrides)), verbose, quiet, overwrite)
+            command = _command_path()
+            config = Config.load(config_path, tuple(overrides))
+            _check_overrides_read(command, tuple(overrides))
+            ctx = Context(config.only(READS[command]), verbose, quiet, overwrite)
             func(ctx, **kwargs)
+        except UsageError as exc:
+            raise click.UsageError(str(exc)) from None
         except FacesynthError as exc:
             click.echo(f"error: {exc}", err=True)
             sys.exit(1)
@@ -139,7 +195,7 @@ def align(ctx: Context, audio: Path, text: str | None, transcript: Path | None, 
     from .stages import align as stage_align
 
     if (text is None) == (transcript is None):
-        raise click.UsageError("give exactly one of --text or --transcript.")
+        raise UsageError("give exactly one of --text or --transcript.")
     summary = stage_align.run(audio, text if transcript is None else stage_align.read_transcript(transcript), output,
                               ctx.config.settings("align"), dict_path, ctx.overwrite)
     ctx.say(f"aligned {summary['phones']} phones over {summary['seconds']:.2f} s -> {output}")

@@ -6,7 +6,8 @@ once, as a field of its section's frozen dataclass: its Python type, and through
 the defaults, a ``--config`` file and every ``--set section.key=value`` against these
 declarations before any work is done: an unknown section or key, a wrong type, a value out
 of range (NaN and infinity included) or an unknown choice is refused with one sentence that
-names where it came from, the key, the value given and what is allowed. A stage asks for
+names where it came from, the key, the value given and what is allowed (a ``--set``
+problem is an :class:`~facesynth.errors.OverrideError`, bad usage). A stage asks for
 its own section as a frozen dataclass; the resolved section is stored in the artifact the
 stage writes (root attribute ``config``). Precedence: defaults < ``--config`` file <
 ``--set`` overrides.
@@ -26,7 +27,7 @@ from importlib import resources
 from pathlib import Path
 from typing import Any, Mapping, TypeVar
 
-from .errors import ConfigError
+from .errors import ConfigError, OverrideError
 from .phonemes import PAU, PHONES
 
 if sys.version_info >= (3, 11):
@@ -393,9 +394,11 @@ def default_config() -> dict[str, dict[str, Any]]:
     return tomllib.loads(text)
 
 
-def _parse_override(item: str) -> tuple[str, str, Any]:
+def parse_override(item: str) -> tuple[str, str, Any]:
+    """``(section, key, value)`` of one ``--set section.key=value``; a bare word is a string.
+    Raises OverrideError when ``item`` has no ``section.key=`` part."""
     if "=" not in item or "." not in item.split("=", 1)[0]:
-        raise ConfigError(f"--set {item!r}: expected section.key=value, e.g. --set pca.n_components=20.")
+        raise OverrideError(f"--set {item!r}: expected section.key=value, e.g. --set pca.n_components=20.")
     key, raw = item.split("=", 1)
     section, name = key.strip().split(".", 1)
     try:
@@ -424,13 +427,20 @@ def _apply(data: dict[str, dict[str, Any]], layer: dict[str, Any], origin: str) 
 class Config:
     """The resolved, checked configuration: defaults, then a file, then ``--set`` overrides."""
 
-    def __init__(self, data: dict[str, dict[str, Any]]):
+    def __init__(self, data: dict[str, dict[str, Any]], reads: tuple[str, ...] | None = None):
         self._data = data
+        self._reads = reads
+
+    def only(self, reads: tuple[str, ...]) -> "Config":
+        """The same values, of which :meth:`settings` hands out only the sections ``reads``
+        (the command line's declaration of what a command reads, kept true by this guard)."""
+        return Config(self._data, tuple(reads))
 
     @classmethod
     def load(cls, path: Path | None = None, overrides: tuple[str, ...] = ()) -> "Config":
         """Read and check the defaults, the file at ``path`` and each ``section.key=value`` of
-        ``overrides``, in that order. Raises ConfigError naming the origin, key and allowed values."""
+        ``overrides``, in that order. Raises ConfigError naming the origin, key and allowed values
+        (OverrideError, bad usage, for an override)."""
         data: dict[str, dict[str, Any]] = {}
         _apply(data, default_config(), DEFAULTS_NAME)
         for section, declared in DECLARATIONS.items():
@@ -440,8 +450,11 @@ class Config:
         if path is not None:
             _apply(data, _read_toml(Path(path)), str(path))
         for item in overrides:
-            section, name, value = _parse_override(item)
-            _apply(data, {section: {name: value}}, f"--set {item}")
+            section, name, value = parse_override(item)
+            try:
+                _apply(data, {section: {name: value}}, f"--set {item}")
+            except ConfigError as exc:
+                raise OverrideError(str(exc)) from None
         return cls(data)
 
     def section(self, name: str) -> dict[str, Any]:
@@ -450,6 +463,10 @@ class Config:
 
     def settings(self, section: str, cls: type[S] | None = None) -> S:
         """The section as its frozen dataclass (lists become tuples)."""
+        if self._reads is not None and section not in self._reads:
+            # A programming error, not the user's: the command reads a section it does not declare.
+            raise RuntimeError(f"[{section}] is not among the sections this command declares ({', '.join(self._reads)}); "
+                               "add it to facesynth.cli.READS")
         cls = cls or SECTIONS[section]
         values = {}
         for field in dataclasses.fields(cls):
@@ -484,7 +501,10 @@ def reference_markdown() -> str:
         "defaults < `--config FILE` < `--set section.key=value`. Every value, the defaults included,",
         "is checked when the configuration is loaded: an unknown section or key, a wrong type, a",
         "number out of range (NaN and infinity included) or an unknown choice stops the command",
-        "with exit status 1 and one sentence naming the key and what is allowed.",
+        "with one sentence naming the key and what is allowed: exit status 1 for the defaults or a",
+        "`--config` file, 2 (bad usage) for a `--set`. A `--set` must name a section the command",
+        "reads (the message names the commands that read it); a `--config` file may hold sections",
+        "of other commands, so one file can serve the whole pipeline, and those are checked too.",
     ]
     for section, declared in DECLARATIONS.items():
         lines += ["", f"## [{section}]", "", "| key | type | allowed | unit | default | source |",

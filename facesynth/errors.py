@@ -2,8 +2,10 @@
 
 Every error a user can cause (bad input file, bad configuration, impossible request)
 is a :class:`FacesynthError` whose message is one sentence naming the file, the place
-and what to do. The command line prints it and exits with status 1; anything else
-that escapes is a bug and keeps its traceback.
+and what to do. The command line prints it and exits with status 1 (bad input or data),
+or 2 for a :class:`UsageError` (bad usage: a missing or contradictory option, a bad
+``--set``), as click does for its own usage errors; anything else that escapes is a bug
+and keeps its traceback.
 """
 
 
@@ -29,3 +31,12 @@ class SearchError(FacesynthError):
 
 class OutputExistsError(FacesynthError):
     """The output path exists and ``--overwrite`` was not given."""
+
+
+class UsageError(FacesynthError):
+    """The command was called wrongly: an option is missing or contradicts another (exit status 2)."""
+
+
+class OverrideError(ConfigError, UsageError):
+    """A ``--set`` override is malformed, names an unknown setting or one of a section the
+    command does not read, or holds a value the setting does not allow (exit status 2)."""

@@ -20,6 +20,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..artifacts import check_output_folder
 from ..errors import InputError
 from ..formats.audio import write_wav
 from ..formats.labels import Segment, write_textgrid
@@ -109,6 +110,7 @@ def generate(out_dir: Path, preset: str = "small", seed: int = 0, overwrite: boo
     if preset not in PRESETS:
         raise InputError(f"unknown preset {preset!r}; choose tiny, small or paper.")
     out_dir = Path(out_dir)
+    check_output_folder(out_dir, "the corpus")
     if (out_dir / "manifest.csv").exists() and not overwrite:
         raise InputError(f"{out_dir}: already holds a corpus (manifest.csv); pass --overwrite or choose another folder.")
     spec = PRESETS[preset]

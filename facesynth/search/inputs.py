@@ -3,6 +3,7 @@ its motion-node constraints (formats documented in ``docs/inputs.md``)."""
 
 from __future__ import annotations
 
+import logging
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -11,6 +12,8 @@ import numpy as np
 from ..errors import InputError, SearchError
 from ..formats.labels import read_phone_segments, read_textgrid
 from ..phonemes import PAU, map_phones
+
+log = logging.getLogger(__name__)
 
 
 @dataclass
@@ -64,7 +67,9 @@ def _emotion_name(raw: str, emotions, aliases, where: str) -> str:
 def apply_emotions(utt: Utterance, path: Path, emotions, aliases) -> None:
     """Set each phone's emotion from a span file (``start_s end_s emotion`` per line) or a
     TextGrid tier named ``emotions``. A phone takes the span holding its midpoint; spans
-    may not overlap; phones outside every span stay neutral."""
+    may not overlap; phones outside every span stay neutral. A span entirely outside the
+    utterance is an InputError (times are seconds); one that holds no phone's midpoint is
+    warned about, since it changes nothing."""
     path = Path(path)
     spans: list[tuple[float, float, str, str]] = []
     if path.suffix.lower() == ".textgrid":
@@ -94,12 +99,20 @@ def apply_emotions(utt: Utterance, path: Path, emotions, aliases) -> None:
     for (_, a1, _, wa), (b0, _, _, wb) in zip(spans, spans[1:]):
         if b0 < a1 - 1e-9:
             raise InputError(f"{wb}: emotion span overlaps the one at {wa.split(', ', 1)[1]}; make spans disjoint.")
-    names = [(s, e, _emotion_name(lab, emotions, aliases, where)) for s, e, lab, where in spans]
+    first, last = float(utt.starts[0]), float(utt.ends[-1])
+    for s, e, _, where in spans:
+        if e <= first or s >= last:
+            raise InputError(f"{where}: the emotion span {s:g} to {e:g} s lies outside the utterance "
+                             f"({first:.3f} to {last:.3f} s); give its start and end in seconds within it.")
+    names = [(s, e, _emotion_name(lab, emotions, aliases, where), where) for s, e, lab, where in spans]
     mids = 0.5 * (utt.starts + utt.ends)
-    for k, m in enumerate(mids):
-        for s, e, name in names:
-            if s <= m < e:
-                utt.emotions[k] = name
+    for s, e, name, where in names:
+        held = (s <= mids) & (mids < e)
+        if not held.any():
+            log.warning(f"{where}: the emotion span {s:g} to {e:g} s holds no phone's midpoint, so it changes nothing; "
+                        "widen it to cover the phones meant.")
+        for k in np.nonzero(held)[0]:
+            utt.emotions[k] = name
 
 
 def read_constraints(path: Path, utt: Utterance, node_phone: list[str]) -> dict[int, int]:

@@ -16,7 +16,7 @@ from typing import Callable
 import numpy as np
 
 from ..config import AlignSettings, IngestSettings, SynthesizeSettings
-from ..errors import InputError
+from ..errors import InputError, UsageError
 from ..model.motion import Motion, Provenance, SearchPath
 from ..model.motiondb import MotionDatabase, Nodes
 from ..motion.head import follow_sources, import_scipy
@@ -127,7 +127,7 @@ def synthesize(db: MotionDatabase, utt: Utterance, constraints: dict[int, int], 
     t0 = time.perf_counter()
     if settings.search == "greedy":
         if constraints:
-            raise InputError("motion-node constraints need the DP search (Eq. 10); drop --constraints or use --search dp.")
+            raise UsageError("motion-node constraints need the DP search (Eq. 10); drop --constraints or use --search dp.")
         result, device = greedy_search(db, tc, utt, steps, settings)
     else:
         # scipy (head motion) is imported while the device searches
@@ -168,6 +168,8 @@ def prepare(db: MotionDatabase, phones_path: Path | None, emotions_path: Path | 
             align_settings: AlignSettings | None = None) -> tuple[Utterance, dict[int, int]]:
     """The utterance (phones read from ``phones_path``, or ``audio`` aligned to ``text`` with
     ``align_settings``, which that needs) with its emotions, and its constraints by phone index."""
+    if phones_path is not None and (audio is not None or text is not None):
+        raise UsageError("give the utterance's phones with --phonemes or with --audio and --text, not both.")
     if phones_path is not None:
         utt = read_utterance(phones_path, ingest_settings.phone_tiers)
     elif audio is not None and text is not None:
@@ -181,7 +183,7 @@ def prepare(db: MotionDatabase, phones_path: Path | None, emotions_path: Path | 
         segs: list[Segment] = align_samples(samples, rate, text, settings=align_settings, where=str(audio))
         utt = utterance([s.label for s in segs], [s.start for s in segs], [s.end for s in segs])
     else:
-        raise InputError("give the utterance's phones with --phonemes, or --audio and --text to align them.")
+        raise UsageError("give the utterance's phones with --phonemes, or --audio and --text to align them.")
     if emotions_path is not None:
         apply_emotions(utt, emotions_path, ingest_settings.emotions, ingest_settings.emotion_aliases)
     constraints = read_constraints(constraints_path, utt, db.nodes.phone) if constraints_path else {}

@@ -9,8 +9,9 @@ from pathlib import Path
 
 import numpy as np
 
+from ..artifacts import check_output_folder
 from ..config import EvaluateSettings, NormalizeSettings, SynthesizeSettings
-from ..errors import InputError
+from ..errors import OutputExistsError
 from ..evaluation import evaluate
 
 
@@ -76,13 +77,21 @@ def write_report(folder: Path, metrics: dict, images: list[str], meta: dict) -> 
     (folder / "index.html").write_text("\n".join(parts), encoding="utf-8")
 
 
+def check_report_folder(out_dir: Path, overwrite: bool) -> None:
+    """Refuse a report folder that is a file, or that already holds files unless ``overwrite``
+    (an empty folder is fine); the report's files are written over, nothing else is removed."""
+    check_output_folder(out_dir, "the report")
+    if out_dir.is_dir() and any(out_dir.iterdir()) and not overwrite:
+        what = "already holds a report" if (out_dir / "metrics.json").exists() else "is not empty"
+        raise OutputExistsError(f"{out_dir}: {what}; pass --overwrite to write the report into it or choose another folder.")
+
+
 def run(db_path: Path, corpus: Path, out_dir: Path, settings: EvaluateSettings, synth: SynthesizeSettings,
         normalize_settings: NormalizeSettings, overwrite: bool = False) -> dict:
     """Evaluate the database on the corpus's held-out takes and write the report to ``out_dir``;
     returns the overall metrics per method.
     """
-    if out_dir.exists() and (out_dir / "metrics.json").exists() and not overwrite:
-        raise InputError(f"{out_dir}: already holds a report; pass --overwrite or choose another folder.")
+    check_report_folder(out_dir, overwrite)
     metrics, records = evaluate(db_path, corpus, settings, synth, normalize_settings)
     out_dir.mkdir(parents=True, exist_ok=True)
     images = plot(records, out_dir, settings.plot_marker)

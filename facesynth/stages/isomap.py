@@ -31,7 +31,7 @@ import numpy as np
 from scipy.ndimage import gaussian_filter
 from scipy.spatial import Delaunay
 
-from ..artifacts import check_output
+from ..artifacts import check_output, check_output_folder
 from ..config import IsomapSettings, settings_json
 from ..errors import InputError
 from ..model.isomap import Cluster, PhonemeMaps
@@ -346,6 +346,8 @@ def run(db_path: Path, out: Path, settings: IsomapSettings, images: Path | None 
     """Embed every phoneme cluster of ``db_path``, write ``out`` (an ``isomap`` artifact) and,
     with ``images``, the PNGs and ``index.html`` there; returns a summary."""
     check_output(out, overwrite)
+    if images is not None:
+        check_output_folder(images, "the images")
     if settings.n_neighbors < 2:
         raise InputError("isomap.n_neighbors must be at least 2.")
     db = MotionDatabase.read(db_path)

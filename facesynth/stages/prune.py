@@ -28,7 +28,7 @@ import numpy as np
 
 from ..artifacts import check_output
 from ..config import PruneSettings, settings_json
-from ..errors import InputError
+from ..errors import InputError, UsageError
 from ..model.motiondb import MotionDatabase, Nodes, Pruned
 from ..model.tables import Takes
 
@@ -171,9 +171,9 @@ def prune(db: MotionDatabase, out: Path, remove: list[int], reasons: list[str], 
 def run(db_path: Path, out: Path, settings: PruneSettings, remove: str | None, auto: bool, reason: str, overwrite: bool) -> dict:
     """Remove the nodes ``remove`` ('3,5,10-12') or, with ``auto``, the contaminated ones found
     by :func:`detect`, writing ``out``; nothing is written when there is nothing to remove."""
-    check_output(out, overwrite)
     if (remove is None) == (not auto):
-        raise InputError("give exactly one of --remove IDS or --auto.")
+        raise UsageError("give exactly one of --remove IDS or --auto.")
+    check_output(out, overwrite)
     db = MotionDatabase.read(db_path, markers=True)
     if auto:
         found = detect(db.nodes, db.takes, db.frames.markers, db.coeffs, db.fps, settings)

@@ -22,7 +22,7 @@ from scipy import sparse
 
 from ..artifacts import atomic_path
 from ..config import RenderSettings
-from ..errors import InputError
+from ..errors import InputError, UsageError
 from ..formats.audio import read_audio, resample, write_wav
 from ..model.meshanim import MeshAnimation
 from ..progress import progress
@@ -260,13 +260,23 @@ def draw_markers(points_px: np.ndarray, width: int, height: int, radius: int = 3
     return img
 
 
-def clip_audio(audio_path: Path, n_frames: int, fps: float, rate: int) -> np.ndarray:
-    """The clip's audio at ``rate``, cut or padded to exactly n_frames / fps seconds."""
+#: Audio may be longer or shorter than its animation by at most this many video frames;
+#: the difference (rounding of the frame count) is cut or padded with silence.
+MAX_AUDIO_MISMATCH_FRAMES = 2
+
+
+def clip_audio(audio_path: Path, n_frames: int, fps: float, rate: int, anim_path: Path | None = None) -> np.ndarray:
+    """The clip's audio at ``rate`` (samples,) float, cut or padded to exactly n_frames / fps
+    seconds. An audio file longer or shorter than that by more than
+    :data:`MAX_AUDIO_MISMATCH_FRAMES` frames is an InputError: it is another utterance's."""
     samples, src_rate = read_audio(audio_path)
     samples = resample(samples, src_rate, rate)
     need = int(round(n_frames / fps * rate))
-    if len(samples) < need - int(0.5 * rate):
-        raise InputError(f"{audio_path}: the audio lasts {len(samples) / rate:.2f} s but the motion {n_frames / fps:.2f} s; use the utterance's own audio.")
+    if abs(len(samples) - need) > MAX_AUDIO_MISMATCH_FRAMES / fps * rate:
+        anim = f" ({anim_path})" if anim_path is not None else ""
+        raise InputError(f"{audio_path}: the audio lasts {len(samples) / rate:.2f} s but the animation{anim} "
+                         f"{n_frames / fps:.2f} s (more than {MAX_AUDIO_MISMATCH_FRAMES} frames apart); "
+                         "give the audio of the utterance it was synthesized from, or trim or pad the audio to match.")
     return np.pad(samples, (0, max(0, need - len(samples))))[:need]
 
 
@@ -335,9 +345,9 @@ def run(anims: list[Path], audios: list[Path], out: Path, settings: RenderSettin
     import imageio_ffmpeg
 
     if len(anims) != len(audios):
-        raise InputError(f"give one --audio per animation ({len(anims)} animations, {len(audios)} audio files).")
+        raise UsageError(f"give one --audio per animation ({len(anims)} animations, {len(audios)} audio files).")
     if settings.view == "side-by-side" and compare is None:
-        raise InputError("the side-by-side view needs --compare ANIM (e.g. the ground truth deformed onto the same mesh).")
+        raise UsageError("the side-by-side view needs --compare ANIM (e.g. the ground truth deformed onto the same mesh).")
     if out.suffix.lower() != ".avi":
         raise InputError(f"{out}: the output must be an .avi file.")
     if settings.width % 16 or settings.height % 16:
@@ -345,11 +355,11 @@ def run(anims: list[Path], audios: list[Path], out: Path, settings: RenderSettin
     started = time.perf_counter()
     clips = [MeshAnimation.read(p) for p in anims]
     other = MeshAnimation.read(compare) if compare else None
-    rate = 48000
-    audio = np.concatenate([clip_audio(a, len(c.vertices), settings.fps, rate) for c, a in zip(clips, audios)])
     for path, c in zip(anims, clips):
         if abs(c.fps - settings.fps) > 1e-6:
             raise InputError(f"{path}: animation is at {c.fps:g} fps but render.fps is {settings.fps:g}; set one to the other.")
+    rate = 48000
+    audio = np.concatenate([clip_audio(a, len(c.vertices), settings.fps, rate, p) for c, a, p in zip(clips, audios, anims)])
     n_frames = sum(len(c.vertices) for c in clips)
     with tempfile.TemporaryDirectory() as tmp, atomic_path(out, overwrite) as tmp_out:
         wav = Path(tmp) / "audio.wav"

@@ -9,6 +9,7 @@ from pathlib import Path
 
 from ..artifacts import check_output, input_records_in_background
 from ..config import AlignSettings, IngestSettings, SynthesizeSettings, settings_json
+from ..errors import UsageError
 from ..model.motiondb import MotionDatabase
 from ..search.synthesis import as_motion, prepare, synthesize, unseen_phones
 
@@ -22,6 +23,8 @@ def run(db_path: Path, out: Path, settings: SynthesizeSettings, ingest_settings:
     ``*_s`` entries are the seconds of each phase: ``load_s`` (database tables), those of
     :func:`~facesynth.search.synthesis.synthesize`, ``hash_wait_s`` (waiting for the inputs'
     sha256, computed on another thread from the start) and ``write_s``."""
+    if settings.search == "greedy" and constraints_path is not None:
+        raise UsageError("motion-node constraints need the DP search (Eq. 10); drop --constraints or use --search dp.")
     check_output(out, overwrite)
     inputs = [p for p in (db_path, phones_path, emotions_path, constraints_path, audio) if p is not None]
     records = input_records_in_background(inputs)

@@ -84,4 +84,4 @@ def test_db_show_lists_and_details(tiny_db):
 
 def test_prune_needs_one_of_remove_or_auto(tiny_db, tmp_path):
     r = CliRunner().invoke(main, ["prune", str(tiny_db), "-o", str(tmp_path / "x.h5")])
-    assert r.exit_code == 1 and "exactly one of --remove IDS or --auto" in r.output
+    assert r.exit_code == 2 and "exactly one of --remove IDS or --auto" in r.output  # bad usage

@@ -6,7 +6,7 @@ import pytest
 import soundfile as sf
 
 from facesynth.config import Config
-from facesynth.errors import InputError
+from facesynth.errors import InputError, UsageError
 from facesynth.model.meshanim import MeshAnimation
 from facesynth.stages import deform, render, synthesize
 
@@ -72,7 +72,7 @@ def test_marker_and_side_by_side_views(anim, tmp_path):
     render.run([anim[0]], [anim[1]], tmp_path / "s.avi", Config.load(None, ("render.view=side-by-side",)).settings("render"),
                compare=anim[0])
     assert imageio_ffmpeg.count_frames_and_secs(str(tmp_path / "s.avi"))[0] > 0
-    with pytest.raises(InputError, match="side-by-side view needs --compare"):
+    with pytest.raises(UsageError, match="side-by-side view needs --compare"):
         render.run([anim[0]], [anim[1]], tmp_path / "t.avi", Config.load(None, ("render.view=side-by-side",)).settings("render"))
     del base
 
@@ -81,7 +81,7 @@ def test_audio_shorter_than_the_motion_is_refused(anim, tmp_path):
     x, rate = sf.read(anim[1])
     short = tmp_path / "short.wav"
     sf.write(short, x[: rate // 4], rate)
-    with pytest.raises(InputError, match="short.wav: the audio lasts 0.25 s but the motion"):
+    with pytest.raises(InputError, match="short.wav: the audio lasts 0.25 s but the animation"):
         render.run([anim[0]], [short], tmp_path / "x.avi", Config.load().settings("render"))
     assert not (tmp_path / "x.avi").exists()
 
