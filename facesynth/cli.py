@@ -234,9 +234,11 @@ def normalize(ctx: Context, corpus: Path, output: Path):
 
     s = stage_normalize.run(corpus, output, ctx.config.settings("normalize"), ctx.overwrite)
     for take, marker, start, length in s["long_gaps"]:
-        ctx.say(f"warning: take {take!r}, marker {marker}: gap of {length:.3f} s at {start:.3f} s is too long to fill; "
-                "PCA will project those frames from the visible markers.")
-    ctx.say(f"normalized {s['frames']} frames (origin marker {s['origin_marker']}) -> {output}")
+        ctx.detail(f"take {take!r}, marker {marker}: gap of {length:.3f} s at {start:.3f} s is too long to fill; "
+                   "PCA will project those frames from the visible markers.")
+    gaps = (f"; {len(s['long_gaps'])} gaps too long to fill are left for PCA to project (-v lists them)"
+            if s["long_gaps"] else "")
+    ctx.say(f"normalized {s['frames']} frames (origin marker {s['origin_marker']}){gaps} -> {output}")
 
 
 @main.command()
@@ -370,8 +372,8 @@ def deform(ctx: Context, motion: Path, mesh: Path, binding: Path, output: Path):
     from .stages import deform as stage
 
     s = stage.run(motion, mesh, binding, output, ctx.config.settings("deform"), ctx.overwrite)
-    if s["unreached"]:
-        ctx.say(f"note: {s['unreached']} vertices are farther than deform.distance_threshold from every marker and stay at rest.")
+    if s["unreached"]:  # eyes, teeth, the back of the head: expected, so only with -v
+        ctx.detail(f"{s['unreached']} vertices are farther than deform.distance_threshold from every marker and stay at rest.")
     ctx.say(f"deformed {s['vertices']} vertices over {s['frames']} frames (marker fit RMS {s['fit_rms']:.3g} mesh units) -> {output}")
 
 
@@ -495,8 +497,8 @@ def isomap_build(ctx: Context, db: Path, output: Path, images: Path | None):
     from .stages import isomap as stage
 
     s = stage.run(db, output, ctx.config.settings("isomap"), images, ctx.overwrite)
-    for phone, note in s["notes"].items():
-        ctx.say(f"note: /{phone}/: {note}")
+    for phone, note in s["notes"].items():  # small clusters get fewer neighbours: expected, so only with -v
+        ctx.detail(f"/{phone}/: {note}")
     where = f"; images in {images}/index.html" if images else ""
     ctx.say(f"embedded {s['clusters']} phoneme clusters ({s['frames']} frames, largest {s['largest']}) "
             f"in {s['embed_s']:.1f} s -> {output}{where}")
