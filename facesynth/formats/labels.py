@@ -102,10 +102,12 @@ def read_lab(path: Path) -> list[Segment]:
         raise InputError(f"{path}: alignment file not found; check the path.")
     lines = [line.strip() for line in _decode(path.read_bytes()).splitlines()]
     segs: list[Segment] = []
+    number = 0
     try:
         if "#" in lines:  # Festival/xwaves: header, '#', then "end colour label"
             prev = 0.0
-            for line in lines[lines.index("#") + 1 :]:
+            first = lines.index("#") + 1
+            for number, line in enumerate(lines[first:], first + 1):
                 if not line:
                     continue
                 parts = line.split()
@@ -113,13 +115,14 @@ def read_lab(path: Path) -> list[Segment]:
                 segs.append(Segment(prev, end, parts[-1] if len(parts) >= 3 else ""))
                 prev = end
         else:  # HTK: "start end label" in units of 100 ns
-            for line in lines:
+            for number, line in enumerate(lines, 1):
                 if not line or line == ".":
                     continue
                 parts = line.split()
                 segs.append(Segment(int(parts[0]) * 1e-7, int(parts[1]) * 1e-7, parts[2] if len(parts) > 2 else ""))
     except (ValueError, IndexError):
-        raise InputError(f"{path}: malformed .lab line; expected HTK 'start end label' or Festival 'end colour label'.") from None
+        raise InputError(f"{path}, line {number}: malformed .lab line {lines[number - 1]!r}; expected HTK "
+                         "'start end label' (100 ns units) or Festival 'end colour label' after a '#' line.") from None
     return segs
 
 

@@ -65,3 +65,10 @@ def test_missing_phone_tier_is_named(tmp_path):
     write_textgrid(p, {"words": [Segment(0, 1, "a")], "other": [Segment(0, 1, "b")]})
     with pytest.raises(InputError, match="no phone tier"):
         read_phone_segments(p)
+
+
+def test_a_malformed_lab_line_is_named_by_its_number(tmp_path):
+    path = tmp_path / "x.lab"
+    path.write_text("0 1000000 pau\n1000000 2000000 aa\n2000000 oops b\n")
+    with pytest.raises(InputError, match=r"x\.lab, line 3: malformed \.lab line '2000000 oops b'"):
+        read_lab(path)
