@@ -33,6 +33,33 @@ class DefaultGroup(click.Group):
         return super().resolve_command(ctx, args)
 
 
+class PipelineGroup(click.Group):
+    """The top-level group: ``facesynth --help`` lists the commands in pipeline order (the
+    order of the README and docs/pipeline.md), then any others alphabetically."""
+
+    order = ("sample-corpus", "align", "ingest", "normalize", "pca", "build-db", "db", "check", "prune", "isomap",
+             "synthesize", "suggest", "deform", "render", "capture", "evaluate", "tune", "devices")
+
+    def list_commands(self, ctx):
+        listed = [name for name in self.order if name in self.commands]
+        return listed + sorted(set(self.commands) - set(listed))
+
+
+def _echo_lines(lines) -> None:
+    """Print lines to stdout; a reader that stops early (``| head``) ends the command quietly
+    with status 0 instead of a BrokenPipeError."""
+    import os
+
+    try:
+        for line in lines:
+            click.echo(line)
+        sys.stdout.flush()
+    except BrokenPipeError:
+        # Python would flush stdout again at exit and fail; point it at /dev/null first.
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        sys.exit(0)
+
+
 class Context:
     def __init__(self, config: Config, verbose: int, quiet: bool, overwrite: bool):
         self.config, self.verbose, self.quiet, self.overwrite = config, verbose, quiet, overwrite
@@ -145,17 +172,25 @@ def stage(func):
     return wrapper
 
 
-@click.group(context_settings={"help_option_names": ["-h", "--help"], "max_content_width": 100})
+@click.group(cls=PipelineGroup, context_settings={"help_option_names": ["-h", "--help"], "max_content_width": 100})
 @click.version_option(__version__, prog_name="facesynth")
 def main():
     """Expressive, lip-synced 3D facial animation from a facial motion-capture database.
 
+    Commands are listed in pipeline order. Every example in their help runs as written on the
+    small built-in corpus, in a folder where the whole chain below has run (outputs are never
+    replaced: remove them first, or add --overwrite).
+
     \b
-    The whole chain on the built-in corpus:
+    Example (the whole chain on the built-in corpus, from capture to video):
       facesynth sample-corpus corpus/ --preset small
       facesynth ingest corpus/manifest.csv -o corpus.h5
       facesynth normalize corpus.h5 -o normalized.h5
       facesynth pca normalized.h5 -o pca.h5
+      facesynth build-db pca.h5 -o db.h5
+      facesynth synthesize db.h5 --phonemes corpus/labels/neutral_s016.TextGrid -o motion.h5
+      facesynth deform motion.h5 --mesh corpus/face.obj --binding corpus/markers.csv -o anim.h5
+      facesynth render anim.h5 --audio corpus/audio/neutral_s016.wav -o neutral_s016.avi
     """
 
 
@@ -167,9 +202,13 @@ def main():
 def sample_corpus_cmd(ctx: Context, out_dir: Path, preset: str, seed: int):
     """Write the built-in virtual-actress corpus (C3D, WAV, TextGrid, manifest, face mesh).
 
+    Presets: tiny (a few takes, for quick tests), small (the demo corpus: sentences s000 to
+    s017 in four emotions; every example in facesynth's help uses it) and paper (the size of
+    the paper's database).
+
     \b
     Example:
-      facesynth sample-corpus corpus/ --preset tiny --seed 0
+      facesynth sample-corpus corpus/ --preset small --seed 0
     """
     from .corpus.generate import generate
 
@@ -190,7 +229,8 @@ def align(ctx: Context, audio: Path, text: str | None, transcript: Path | None, 
 
     \b
     Example:
-      facesynth align corpus/audio/neutral_s000.wav --text "beautiful he men" -o s000.TextGrid
+      facesynth align corpus/audio/neutral_s000.wav --text "beautiful he men from began pretty strong" \\
+          -o s000.TextGrid
     """
     from .stages import align as stage_align
 
@@ -224,7 +264,9 @@ def ingest(ctx: Context, manifest: Path, output: Path):
 @click.option("-o", "--output", type=PATH, required=True, help="Output normalized.h5.")
 @stage
 def normalize(ctx: Context, corpus: Path, output: Path):
-    """Fill marker gaps and remove head motion (Eq. 1-2), keeping it as per-frame transforms.
+    """Fill marker gaps and remove head motion, keeping it as per-frame transforms.
+
+    Head motion is removed as in Eq. 1-2 of the paper.
 
     \b
     Example:
@@ -292,7 +334,8 @@ def synthesize(ctx: Context, db: Path, phonemes, audio, text, emotions, constrai
 
     \b
     Example:
-      facesynth synthesize db.h5 --phonemes corpus/labels/happy_s014.TextGrid \\
+      echo "0 100 sad" > spans.txt
+      facesynth synthesize db.h5 --phonemes corpus/labels/neutral_s016.TextGrid \\
           --emotions spans.txt -o motion.h5
     """
     import dataclasses
@@ -363,7 +406,9 @@ def suggest(ctx: Context, db: Path, phonemes: Path, at_s: float, emotions, const
 @click.option("-o", "--output", type=PATH, required=True, help="Output anim.h5.")
 @stage
 def deform(ctx: Context, motion: Path, mesh: Path, binding: Path, output: Path):
-    """Deform a face mesh by the synthesized markers (mesh-distance Gaussian weights, Eq. 14-15).
+    """Deform a face mesh by the synthesized markers, with mesh-distance Gaussian weights.
+
+    The weights and the deformation are Eq. 14-15 of the paper.
 
     \b
     Example:
@@ -389,7 +434,7 @@ def render(ctx: Context, anims, audios, view, compare, output: Path):
 
     \b
     Example:
-      facesynth render anim.h5 --audio corpus/audio/happy_s014.wav -o happy.avi
+      facesynth render anim.h5 --audio corpus/audio/neutral_s016.wav -o neutral_s016.avi
     """
     import dataclasses
 
@@ -408,7 +453,9 @@ def render(ctx: Context, anims, audios, view, compare, output: Path):
 @click.option("-o", "--output", type=PATH, required=True, help="Report folder (metrics.json, index.html, plots).")
 @stage
 def evaluate(ctx: Context, db: Path, heldout: Path, output: Path):
-    """Synthesize every held-out sentence and compare with its capture (Eq. 12-13, lips, emotion).
+    """Synthesize every held-out sentence and compare it with its capture.
+
+    The measures: Eq. 12-13 of the paper, lip closure on /p b m/, emotion, joins.
 
     \b
     Example:
@@ -435,9 +482,10 @@ def capture(ctx: Context, corpus: Path, db_path: Path, take: str, output: Path):
 
     \b
     Example:
-      facesynth capture corpus.h5 --db db.h5 --take sad_s017 -o truth.h5
+      facesynth capture corpus.h5 --db db.h5 --take neutral_s016 -o truth.h5
       facesynth deform truth.h5 --mesh corpus/face.obj --binding corpus/markers.csv -o truth_anim.h5
-      facesynth render anim.h5 --audio corpus/audio/sad_s017.wav --view side-by-side --compare truth_anim.h5 -o cmp.avi
+      facesynth render anim.h5 --audio corpus/audio/neutral_s016.wav --view side-by-side \\
+          --compare truth_anim.h5 -o compare.avi
     """
     from .stages import capture as stage
 
@@ -454,10 +502,13 @@ def capture(ctx: Context, corpus: Path, db_path: Path, take: str, output: Path):
 def tune(ctx: Context, db: Path, validation: Path, output: Path):
     """Tune alpha1..alpha6 by cross-validation on the validation sentences (paper VI-D).
 
+    The example asks for a quick run of 12 evaluations from 3 starts; the default budget is
+    tune.max_evaluations = 60 from tune.starts = 6.
+
     \b
     Example:
-      facesynth tune db.h5 --validation corpus.h5 -o tuned.toml
-      facesynth synthesize db.h5 --phonemes X.TextGrid --config tuned.toml -o motion.h5
+      facesynth tune db.h5 --validation corpus.h5 -o tuned.toml --set tune.max_evaluations=12 --set tune.starts=3
+      facesynth synthesize db.h5 --phonemes corpus/labels/neutral_s016.TextGrid --config tuned.toml -o tuned.h5
     """
     from .stages import tune as stage
 
@@ -477,7 +528,7 @@ def isomap():
 
     \b
     Example:
-      facesynth isomap db.h5 -o isomap.h5 --images isomaps/
+      facesynth isomap db.h5 -o isomap.h5
       facesynth isomap pick isomap.h5 aa 0.5 -1.2
     """
 
@@ -488,11 +539,13 @@ def isomap():
 @click.option("--images", type=PATH, default=None, help="Folder for the PNG maps and index.html.")
 @stage
 def isomap_build(ctx: Context, db: Path, output: Path, images: Path | None):
-    """Per phoneme cluster: 2D Isomap, PCA map, Delaunay triangulation, Eq. 3 images.
+    """Per phoneme cluster: 2D Isomap, PCA map, Delaunay triangulation and images.
+
+    The images show the frames over the map as in Eq. 3 of the paper.
 
     \b
     Example:
-      facesynth isomap db.h5 -o isomap.h5 --images isomaps/
+      facesynth isomap build db.h5 -o isomap.h5 --images isomaps/
     """
     from .stages import isomap as stage
 
@@ -504,7 +557,8 @@ def isomap_build(ctx: Context, db: Path, output: Path, images: Path | None):
             f"in {s['embed_s']:.1f} s -> {output}{where}")
 
 
-@isomap.command("pick")
+# ignore_unknown_options: a negative coordinate ('-1.2') is an argument, not an unknown option.
+@isomap.command("pick", context_settings={"ignore_unknown_options": True})
 @click.argument("isomap_path", metavar="ISOMAP", type=EXISTING)
 @click.argument("phoneme")
 @click.argument("x", type=float)
@@ -512,18 +566,20 @@ def isomap_build(ctx: Context, db: Path, output: Path, images: Path | None):
 @click.option("--pca-map", is_flag=True, help="Pick on the PCA map instead of the Isomap.")
 @stage
 def isomap_pick(ctx: Context, isomap_path: Path, phoneme: str, x: float, y: float, pca_map: bool):
-    """Print the frame at a point of a phoneme's map as CSV markers (Fig. 7).
+    """Print the frame at a point of a phoneme's map as CSV markers.
+
+    The frame blends the three frames around the point, as in Fig. 7 of the paper.
 
     \b
     Example:
+      facesynth isomap db.h5 -o isomap.h5
       facesynth isomap pick isomap.h5 aa 0.5 -1.2 > frame.csv
     """
     from .stages import isomap as stage
 
     markers, names, info = stage.pick(isomap_path, phoneme, x, y, pca_map)
     ctx.detail(f"triangle of frames {info['corners']} (nodes {info['nodes']}), weights {info['weights']}")
-    for line in stage.markers_csv(markers, names):
-        click.echo(line)
+    _echo_lines(stage.markers_csv(markers, names))
 
 
 @main.group()
@@ -550,8 +606,7 @@ def db_show(ctx: Context, db_path: Path, phoneme: str | None, node: int | None):
     """
     from .model.motiondb import MotionDatabase, describe
 
-    for line in describe(MotionDatabase.read(db_path), phoneme, node):
-        click.echo(line)
+    _echo_lines(describe(MotionDatabase.read(db_path), phoneme, node))
 
 
 @main.command()
@@ -567,7 +622,7 @@ def prune(ctx: Context, db_path: Path, remove: str | None, auto: bool, reason: s
     \b
     Example:
       facesynth prune db.h5 --auto -o db_clean.h5
-      facesynth prune db.h5 --remove 12,40-42 --reason "lip marker swap" -o db_clean.h5
+      facesynth prune db.h5 --remove 12,40-42 --reason "lip marker swap" -o db_hand.h5
     """
     from .stages import prune as stage
 

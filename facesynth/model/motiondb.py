@@ -18,6 +18,7 @@ import numpy as np
 
 from ..artifacts import RowReader, attr, open_artifact, read, read_strings, stamp, write_artifact, write_strings
 from ..errors import InputError
+from ..phonemes import to_festival
 from .frames import HeadFrames, write_head_frames
 from .pca import PcaModel
 from .tables import Phones, Takes, read_tables, write_tables
@@ -294,8 +295,13 @@ def describe(db: MotionDatabase, phone: str | None = None, node: int | None = No
                 and nodes.prev_phone[j] == nodes.prev_phone[k] and nodes.next_phone[j] == nodes.next_phone[k]]
         lines.append(f"  same triphone context: {same[:20] if same else 'none'}")
         return lines
-    if phone is not None and phone not in nodes.phone:
-        raise InputError(f"{db.path}: no node of /{phone}/; phones present: {' '.join(sorted(set(nodes.phone)))}.")
+    if phone is not None:
+        # The same labels as the phone timings take: Festival or CMU (ARPAbet) names, any case.
+        asked, phone = phone, to_festival(phone)
+        if phone is None:
+            raise InputError(f"--phoneme {asked!r}: unknown phone; use Festival or CMU (ARPAbet) phone names.")
+        if phone not in nodes.phone:
+            raise InputError(f"{db.path}: no node of /{phone}/; phones present: {' '.join(sorted(set(nodes.phone)))}.")
     lines = ["id\tphone\tcontext\temotion\ttake\tframes\tpre\tsuc"]
     for k in range(len(nodes)):
         if phone is not None and nodes.phone[k] != phone:
