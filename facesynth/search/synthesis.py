@@ -16,7 +16,7 @@ from typing import Callable
 import numpy as np
 
 from ..config import AlignSettings, IngestSettings, SynthesizeSettings
-from ..errors import InputError, UsageError
+from ..errors import UsageError
 from ..model.motion import Motion, Provenance, SearchPath
 from ..model.motiondb import MotionDatabase, Nodes
 from ..motion.head import follow_sources, import_scipy

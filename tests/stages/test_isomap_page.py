@@ -2,7 +2,6 @@
 hover script naming the node, take and emotion under the pointer with its coordinates,
 checked in headless Chromium where it is installed."""
 
-import csv
 import json
 import re
 import shutil
