@@ -140,17 +140,15 @@ def _check_overrides_read(command: str, overrides: tuple[str, ...]) -> None:
                                 f"facesynth {command} reads {mine}, so this setting would be ignored.")
 
 
-def stage(func):
-    """Add the global options to a command and map its errors to exit statuses: UsageError
-    (bad usage, e.g. a bad ``--set``) to click's usage message and 2, any other
-    FacesynthError to one line and 1, Ctrl-C to 130."""
-    @click.option("--config", "config_path", type=EXISTING, default=None, help="TOML file overriding configs/default.toml.")
-    @click.option("--set", "overrides", multiple=True, metavar="SECTION.KEY=VALUE", help="Override one setting (repeatable).")
-    @click.option("-v", "--verbose", count=True, help="Say more.")
-    @click.option("-q", "--quiet", is_flag=True, help="Say nothing but errors; no progress bars.")
-    @click.option("--overwrite", is_flag=True, help="Replace existing outputs.")
+def stage(func=None, *, writes: bool = True):
+    """Add the global options to a command (``--overwrite`` only when it ``writes`` files) and map
+    its errors to exit statuses: UsageError (bad usage, e.g. a bad ``--set``) to click's usage
+    message and 2, any other FacesynthError to one line and 1, Ctrl-C to 130."""
+    if func is None:
+        return functools.partial(stage, writes=writes)
+
     @functools.wraps(func)
-    def wrapper(config_path, overrides, verbose, quiet, overwrite, **kwargs):
+    def wrapper(config_path, overrides, verbose, quiet, overwrite=False, **kwargs):
         _configure_logging(verbose, quiet)
         started = time.perf_counter()
         try:
@@ -169,7 +167,15 @@ def stage(func):
             sys.exit(130)
         if verbose and not quiet:
             click.echo(f"done in {time.perf_counter() - started:.2f} s", err=True)
-    return wrapper
+
+    if writes:
+        wrapper = click.option("--overwrite", is_flag=True, help="Replace existing outputs.")(wrapper)
+    wrapper = click.option("-q", "--quiet", is_flag=True, help="Say nothing but errors; no progress bars.")(wrapper)
+    wrapper = click.option("-v", "--verbose", count=True, help="Say more.")(wrapper)
+    wrapper = click.option("--set", "overrides", multiple=True, metavar="SECTION.KEY=VALUE",
+                           help="Override one setting (repeatable).")(wrapper)
+    return click.option("--config", "config_path", type=EXISTING, default=None,
+                        help="TOML file overriding configs/default.toml.")(wrapper)
 
 
 @click.group(cls=PipelineGroup, context_settings={"help_option_names": ["-h", "--help"], "max_content_width": 100})
@@ -366,7 +372,7 @@ def synthesize(ctx: Context, db: Path, phonemes, audio, text, emotions, constrai
 @click.option("--constraints", type=EXISTING, default=None, help="Constraints already chosen, as for synthesize.")
 @click.option("--top", type=int, default=15, show_default=True, help="How many to list.")
 @click.option("--context-only", is_flag=True, help="Only context-correct nodes (same triphone context).")
-@stage
+@stage(writes=False)
 def suggest(ctx: Context, db: Path, phonemes: Path, at_s: float, emotions, constraints, top: int, context_only: bool):
     """Suggest motion nodes for a constraint at a time: time- and context-correct, best first (paper VI-A).
 
@@ -564,7 +570,7 @@ def isomap_build(ctx: Context, db: Path, output: Path, images: Path | None):
 @click.argument("x", type=float)
 @click.argument("y", type=float)
 @click.option("--pca-map", is_flag=True, help="Pick on the PCA map instead of the Isomap.")
-@stage
+@stage(writes=False)
 def isomap_pick(ctx: Context, isomap_path: Path, phoneme: str, x: float, y: float, pca_map: bool):
     """Print the frame at a point of a phoneme's map as CSV markers.
 
@@ -596,7 +602,7 @@ def db():
 @click.argument("db_path", metavar="DB", type=EXISTING)
 @click.option("--phoneme", default=None, help="Only this phone's nodes.")
 @click.option("--node", type=int, default=None, help="One node in detail.")
-@stage
+@stage(writes=False)
 def db_show(ctx: Context, db_path: Path, phoneme: str | None, node: int | None):
     """List motion nodes: phone, triphone context, emotion, take, frames, neighbours.
 
@@ -637,7 +643,7 @@ def prune(ctx: Context, db_path: Path, remove: str | None, auto: bool, reason: s
 
 
 @main.command()
-@stage
+@stage(writes=False)
 def devices(ctx: Context):
     """List every OpenCL platform and device, whether facesynth's kernels build on it, and
     which one it uses (PYOPENCL_CTX=PLATFORM:DEVICE chooses another).
@@ -654,7 +660,7 @@ def devices(ctx: Context):
 
 @main.command()
 @click.argument("files", metavar="FILE...", nargs=-1, required=True, type=PATH)
-@stage
+@stage(writes=False)
 def check(ctx: Context, files: tuple[Path, ...]):
     """Validate artifacts against docs/file-format.md: kind, schema, every group and dataset
     (dtype, shape, units, fps, encoding-type), no links or data outside the file, finite

@@ -54,3 +54,15 @@ def test_usage_error_is_exit_2():
 def test_every_command_has_a_runnable_example():
     for name, command in main.commands.items():
         assert "Example:" in (command.help or ""), name
+
+
+def test_only_commands_that_write_offer_overwrite():
+    from facesynth.cli import main as group
+
+    readers = {("db", "show"), ("devices",), ("suggest",), ("isomap", "pick"), ("check",)}
+    for path in [("db", "show"), ("devices",), ("suggest",), ("isomap", "pick"), ("check",), ("synthesize",), ("render",)]:
+        command = group
+        for name in path:
+            command = command.commands[name]
+        has = any("--overwrite" in p.opts for p in command.params)
+        assert has == (path not in readers), path
