@@ -1,0 +1,110 @@
+"""The production face rig shipped with facesynth: ICT-FaceKit's face and head with 55 blendshapes.
+
+The rig is linear: for weights ``w`` (one per shape, 0..1 in the ARKit convention) the
+vertices are ``neutral + sum_e w[e] * deltas[e]``. Shapes follow ARKit's naming with
+ICT's ``_L``/``_R`` suffixes (the subject's own left is +x). Two ARKit shapes are split
+in ICT (``browInnerUp``, ``cheekPuff``: one ARKit weight drives both sides), ``tongueOut``
+has no ICT shape, and ``cheekRaiser_L/R`` have no ARKit column.
+
+Frame and units: millimetres (the source is in centimetres; :func:`load_face_rig`
+scales by 10), +y up, the face looks toward +z, +x is the subject's left.
+
+Data: ``facesynth/data/ict_face.npz`` and ``ict_face_arkit.tsv``, MIT licensed, with
+attribution in ``facesynth/data/ict_face.LICENSE``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+from importlib import resources
+
+import numpy as np
+
+CM_TO_MM = 10.0
+
+
+@dataclass(frozen=True)
+class FaceRig:
+    """A linear blendshape rig.
+
+    neutral : (V, 3) float64, mm, the rest mesh
+    faces : (F, 3) int64, triangles counter-clockwise seen from outside
+    shape_names : the E blendshape names (ICT order)
+    deltas : (E, V, 3) float32, mm, each shape minus the neutral mesh
+    landmarks68 : (68,) int64, Multi-PIE 68-point landmark vertices
+    loops : boundary loops by name ('mouth', 'eye_L', 'eye_R', 'neck'), each (n,) int64 in order
+    arkit_names : the 52 ARKit blendshape names, in Live Link Face column order
+    arkit_to_rig : (52, E) float64 matrix taking ARKit weights to rig weights
+    """
+
+    neutral: np.ndarray
+    faces: np.ndarray
+    shape_names: tuple[str, ...]
+    deltas: np.ndarray
+    landmarks68: np.ndarray
+    loops: dict
+    arkit_names: tuple[str, ...]
+    arkit_to_rig: np.ndarray
+
+    def shape_index(self, name: str) -> int:
+        """Index of the shape called ``name`` (ICT spelling, e.g. 'jawOpen', 'mouthSmile_L')."""
+        return self.shape_names.index(name)
+
+    def evaluate(self, weights: np.ndarray, vertices: np.ndarray | None = None) -> np.ndarray:
+        """Posed vertices.
+
+        weights : (T, E) or (E,) rig weights. vertices : optional (K,) indices to evaluate only
+        those (e.g. marker vertices). Returns (T, K or V, 3) float64 mm, or (K or V, 3) for 1-D weights.
+        """
+        w = np.asarray(weights, dtype=np.float64)
+        neutral, deltas = self.neutral, self.deltas
+        if vertices is not None:
+            neutral, deltas = neutral[vertices], deltas[:, vertices]
+        out = neutral + np.tensordot(w, deltas, axes=(w.ndim - 1, 0))
+        return out
+
+    def from_arkit(self, arkit_weights: np.ndarray) -> np.ndarray:
+        """Rig weights (..., E) for ARKit weights (..., 52) in :attr:`arkit_names` order."""
+        return np.asarray(arkit_weights, dtype=np.float64) @ self.arkit_to_rig
+
+    def to_arkit(self, rig_weights: np.ndarray) -> np.ndarray:
+        """ARKit weights (..., 52) for rig weights (..., E): split shapes averaged, tongueOut 0."""
+        counts = self.arkit_to_rig.sum(axis=1)
+        return (np.asarray(rig_weights, dtype=np.float64) @ self.arkit_to_rig.T) / np.maximum(counts, 1.0)
+
+
+def _read_arkit_table(shape_names: tuple[str, ...]) -> tuple[tuple[str, ...], np.ndarray]:
+    """Parse ``ict_face_arkit.tsv``: Live Link Face column -> ICT shapes ('-' for none)."""
+    text = resources.files("facesynth").joinpath("data/ict_face_arkit.tsv").read_text(encoding="utf-8")
+    names, rows = [], []
+    for line in text.splitlines():
+        if not line or line.startswith("#"):
+            continue
+        column, target, *_ = line.split("\t")
+        if column in ("Timecode", "BlendShapeCount") or column.startswith(("Head", "LeftEye", "RightEye")):
+            continue
+        row = np.zeros(len(shape_names))
+        if target != "-":
+            for ict in target.split("+"):
+                row[shape_names.index(ict)] = 1.0
+        names.append(column[0].lower() + column[1:])
+        rows.append(row)
+    return tuple(names), np.array(rows)
+
+
+@lru_cache(maxsize=1)
+def load_face_rig() -> FaceRig:
+    """The ICT-FaceKit rig from the package data, in millimetres (cached; treat as read-only)."""
+    with resources.files("facesynth").joinpath("data/ict_face.npz").open("rb") as fh:
+        data = np.load(fh, allow_pickle=False)
+        shape_names = tuple(str(n) for n in data["expr_names"])
+        neutral = data["vertices"].astype(np.float64) * CM_TO_MM
+        deltas = data["expr_deltas"].astype(np.float32) * np.float32(CM_TO_MM)
+        faces = data["faces"].astype(np.int64)
+        landmarks = data["landmarks68"].astype(np.int64)
+        loops = {k[len("loop_"):]: data[k].astype(np.int64) for k in data.files if k.startswith("loop_")}
+    arkit_names, arkit_to_rig = _read_arkit_table(shape_names)
+    for array in (neutral, deltas, faces, landmarks, arkit_to_rig, *loops.values()):
+        array.setflags(write=False)
+    return FaceRig(neutral, faces, shape_names, deltas, landmarks, loops, arkit_names, arkit_to_rig)
