@@ -82,6 +82,7 @@ class IngestSettings:
     emotion_aliases: Mapping[str, str] = setting("not in the paper: other spellings in manifests and emotion files")
     max_audio_mismatch_s: float = setting("not in the paper: input check", unit="s", ge=0)
     phone_tiers: tuple[str, ...] = setting("not in the paper: TextGrid tier names", min_items=1)
+    emotion_tiers: tuple[str, ...] = setting("not in the paper: TextGrid tier names of per-phone emotion")
 
 
 @dataclass(frozen=True)

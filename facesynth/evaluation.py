@@ -69,6 +69,7 @@ def heldout(corpus_path: Path, db: MotionDatabase, split: str, normalize_setting
     corpus = Corpus.read(corpus_path, audio=False)
     corpus.check_markers(db.marker_names, corpus_path)
     takes, phones = corpus.takes, corpus.phones
+    phone_emotion = phones.emotions(takes)
     rows = [i for i in range(len(takes)) if takes.split[i] == split]
     if not rows:
         raise InputError(f"{corpus_path}: no take has split '{split}'; mark held-out takes in the manifest's split column.")
@@ -76,7 +77,7 @@ def heldout(corpus_path: Path, db: MotionDatabase, split: str, normalize_setting
     for i in rows:
         truth, _, _ = normalized_take(corpus.markers[takes.frames(i)], db, normalize_settings)
         seg = np.nonzero(phones.take == i)[0]
-        utt = utterance([phones.phone[r] for r in seg], phones.start[seg], phones.end[seg], [takes.emotion[i]] * len(seg))
+        utt = utterance([phones.phone[r] for r in seg], phones.start[seg], phones.end[seg], [phone_emotion[r] for r in seg])
         out.append(Sentence(takes.name[i], takes.emotion[i], utt, truth.astype(np.float32)))
     return out
 

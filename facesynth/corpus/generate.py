@@ -1,15 +1,29 @@
 """``facesynth sample-corpus``: write the virtual actress's corpus in the formats a real user has.
 
+The actress lives on the production face rig (:mod:`facesynth.facerig`): her speech is
+articulated in the rig's blendshape weights (:mod:`facesynth.corpus.articulation`), her face
+blinks, raises the brows, looks around and shows four emotions, sometimes changing emotion
+inside a sentence (:mod:`facesynth.corpus.expression`), and her head moves with pitch and
+phrasing (:mod:`facesynth.corpus.speech`). About 90 markers glued to rig vertices
+(:mod:`facesynth.corpus.markers`) are captured with noise, gaps and contamination.
+
 Layout of OUT_DIR::
 
     manifest.csv            take, mocap, audio, alignment, transcript, emotion, sentence, split
+                            (emotion: the take's emotion at its start)
     mocap/<take>.c3d        markers, mm, 120 Hz, head motion, noise, gaps, contamination
     audio/<take>.wav        16 kHz mono speech whose pitch and spectrum follow the phones
-    labels/<take>.TextGrid  tiers 'phones' (Festival set) and 'words'
-    face.obj, markers.csv   the face mesh (mm) and the marker-to-vertex binding
+    labels/<take>.TextGrid  tiers 'phones' (Festival set), 'words' and 'emotion' (the emotion
+                            of each stretch of the take; ingest gives every phone the emotion
+                            at its centre)
+    face.obj                the rig's neutral mesh, mm (+y up, +z forward, +x the subject's left)
+    markers.csv             marker,vertex,rigid: the marker-to-vertex binding on face.obj and
+                            the rigid (head-pose) markers
     contamination.csv       ground truth of the injected spikes and marker swaps
-    groundtruth/<take>.c3d  held-out takes: clean markers in the head frame (no noise, no head motion)
+    groundtruth/<take>.c3d  every take: clean markers in the head frame (no noise, no head motion)
     groundtruth/<take>_head.csv   per-frame head rotation (row-major 3x3) and translation (mm)
+    groundtruth/<take>_truth.csv  per-frame rig weights (55), ARKit weights (52), emotion and
+                            intensity (:mod:`facesynth.corpus.truth`)
 """
 
 from __future__ import annotations
@@ -22,13 +36,19 @@ import numpy as np
 
 from ..artifacts import check_output_folder
 from ..errors import InputError
+from ..facerig import FaceRig, load_face_rig
 from ..formats.audio import write_wav
 from ..formats.labels import Segment, write_textgrid
 from ..formats.mesh import write_binding, write_obj
 from ..formats.mocap import MarkerTake, write_c3d
+from ..phonemes import PAU
 from ..progress import progress
-from .face import Rig, build_face_model
-from .speech import EMOTIONS, STYLES, articulation, design_sentences, head_motion, pitch, synthesize_audio, time_utterance
+from .articulation import CHANNEL_NAMES, ContactSolver, TokenVariation, apply_contact, articulate
+from .expression import (EMOTIONS, EmotionTrack, blink_times, blink_weights, brow_weights, couple_cheeks_and_nose,
+                         emotion_track, expression_weights, gaze_weights)
+from .markers import MarkerSet, build_marker_set
+from .speech import STYLES, ReadSentence, design_sentences, head_motion, pitch, synthesize_audio, time_utterance
+from .truth import write_truth
 
 CAPTURE_FPS = 120.0
 AUDIO_RATE = 16000
@@ -58,6 +78,80 @@ PRESETS = {
 }
 
 MARKER_NOISE_MM = 0.2
+#: Fraction of takes whose emotion changes inside the sentence.
+EMOTION_CHANGE_PROBABILITY = 0.25
+
+
+@dataclass
+class Performance:
+    """One take as performed: its timing, emotion, rig weights (T, E), head motion and audio pitch.
+
+    weights : (T, E) rig weights at the capture rate; rotations : (T, 3, 3); translations : (T, 3) mm;
+    f0 : (T,) Hz.
+    """
+
+    utterance: ReadSentence
+    emotion: EmotionTrack
+    weights: np.ndarray
+    rotations: np.ndarray
+    translations: np.ndarray
+    f0: np.ndarray
+
+
+def perform(words: list[str], emotion: str, rng: np.random.Generator, rig: FaceRig, solver: ContactSolver,
+            pause_prob: float, fps: float = 120.0, change_probability: float = EMOTION_CHANGE_PROBABILITY) -> Performance:
+    """The actress reads ``words`` in ``emotion`` (sometimes changing to another at a word boundary)."""
+    second, switch_word = None, None
+    if len(words) >= 3 and rng.random() < change_probability:
+        second = str(rng.choice([e for e in EMOTIONS if e != emotion]))
+        switch_word = int(rng.integers(1, len(words)))
+    styles = [STYLES[second if switch_word is not None and k >= switch_word else emotion] for k in range(len(words))]
+    utt = time_utterance(words, styles, rng, pause_prob)
+    n_frames = int(np.floor(utt.duration * fps)) + 1
+    switch_s = utt.word_spans[switch_word][1] if switch_word is not None else None
+    track = emotion_track(emotion, second, switch_s, n_frames, fps, rng)
+    style_rows = [STYLES[e] for e in EMOTIONS]
+    stiffness = track.blend @ np.array([s.stiffness for s in style_rows])
+    amplitude = track.at(0.5 * (utt.starts + utt.ends), fps) @ np.array([s.amplitude for s in style_rows])
+
+    f0, accents = pitch(utt, STYLES[emotion], fps, rng)
+    if second is not None:
+        f0_second, accents_second = pitch(utt, STYLES[second], fps, rng)
+        x = track.blend[:, EMOTIONS.index(second)]
+        f0 = (1 - x) * f0 + x * f0_second
+        accents = [a for a in accents if a[0] < switch_s] + [a for a in accents_second if a[0] >= switch_s]
+
+    take_sides = np.exp(rng.normal(0.0, TokenVariation().take_side_sigma, (len(CHANNEL_NAMES), 2)))
+    weights, drive = articulate(utt.phones, utt.starts, utt.ends, utt.stress, n_frames, fps, amplitude, stiffness,
+                                take_sides, rng, rig)
+    weights += expression_weights(rig, track, fps, rng)
+    pauses = [(float(a), float(b)) for a, b, p in zip(utt.starts, utt.ends, utt.phones) if p == PAU]
+    blink_scale = float(np.mean(track.blend @ np.array([s.blink_duration for s in style_rows])))
+    weights += blink_weights(rig, blink_times(utt.duration, pauses, rng), n_frames, fps, rng, blink_scale)
+    weights += brow_weights(rig, accents, n_frames, fps, rng)
+    weights += gaze_weights(rig, n_frames, fps, rng)
+    jaw_side = rig.shape_index(str(rng.choice(["jawLeft", "jawRight"])))
+    weights[:, jaw_side] += rng.uniform(0.0, 0.12) * weights[:, rig.shape_index("jawOpen")]
+    couple_cheeks_and_nose(rig, weights)
+    np.clip(weights, 0.0, 1.0, out=weights)
+    apply_contact(weights, drive, solver)
+    np.clip(weights, 0.0, 1.0, out=weights)
+
+    phrase_ends = [a for a, b, p in zip(utt.starts[1:], utt.ends[1:], utt.phones[1:]) if p == PAU]
+    rotations, translations = head_motion(f0, STYLES[emotion], fps, rng, phrase_ends)
+    return Performance(utt, track, weights, rotations, translations, f0)
+
+
+def emotion_segments(track: EmotionTrack, fps: float, duration: float) -> list[Segment]:
+    """The 'emotion' tier: stretches of one dominant emotion (boundaries at the cross-fade's middle)."""
+    labels = track.labels()
+    segs, start = [], 0
+    for t in range(1, len(labels) + 1):
+        if t == len(labels) or labels[t] != labels[start]:
+            end = duration if t == len(labels) else t / fps
+            segs.append(Segment(start / fps, end, labels[start]))
+            start = t
+    return segs
 
 
 def _inject_contamination(positions: np.ndarray, names: list[str], rng: np.random.Generator, rate: float,
@@ -105,6 +199,18 @@ def _add_gaps(positions: np.ndarray, rng: np.random.Generator, long_gap: bool) -
         positions[start : start + 40, int(rng.integers(n_markers))] = np.nan
 
 
+def _capture(clean: np.ndarray, rotations: np.ndarray, translations: np.ndarray, rng: np.random.Generator) -> np.ndarray:
+    """Clean head-frame markers (T, M, 3) mm -> as captured: head motion about a centre behind
+    the face, placement in the capture volume, and per-marker noise."""
+    centre = np.array([0.0, 0.0, -60.0])
+    moved = np.einsum("tij,tmj->tmi", rotations, clean - centre) + centre + translations[:, None, :]
+    yaw = np.deg2rad(rng.uniform(-8, 8))
+    world_r = np.array([[np.cos(yaw), 0, np.sin(yaw)], [0, 1, 0], [-np.sin(yaw), 0, np.cos(yaw)]])
+    world_t = np.array([250.0, 1550.0, -120.0]) + rng.uniform(-20, 20, 3)
+    captured = moved @ world_r.T + world_t
+    return captured + rng.normal(0.0, MARKER_NOISE_MM, captured.shape)
+
+
 def generate(out_dir: Path, preset: str = "small", seed: int = 0, overwrite: bool = False) -> dict:
     """Write the sample corpus into ``out_dir``. Returns a summary (takes, frames, nodes...)."""
     if preset not in PRESETS:
@@ -123,52 +229,45 @@ def generate(out_dir: Path, preset: str = "small", seed: int = 0, overwrite: boo
     sentences = design_sentences(n_sentences, design_rng, spec.min_phones, spec.max_phones)
     split_of = ["train"] * spec.train + ["val"] * spec.val + ["test"] * spec.test
 
-    face = build_face_model()
-    marker_rest = face.vertices[face.marker_vertices]
-    rig = Rig(marker_rest, face.lower[face.marker_vertices])
-    write_obj(out_dir / "face.obj", face.vertices, face.faces, "facesynth sample corpus face, millimetres, +y up, +z forward")
-    write_binding(out_dir / "markers.csv", dict(zip(face.marker_names, face.marker_vertices.tolist())))
+    rig = load_face_rig()
+    markers = build_marker_set(rig)
+    solver = ContactSolver(rig, markers.lip_pairs)
+    write_obj(out_dir / "face.obj", rig.neutral, rig.faces, "facesynth sample corpus face (ICT-FaceKit rig, MIT), millimetres, +y up, +z forward")
+    write_binding(out_dir / "markers.csv", markers.binding(), {n for n, r in zip(markers.names, markers.rigid) if r})
 
     jobs = [(e, s) for e in EMOTIONS for s in range(n_sentences)]
     take_seeds = root.spawn(len(jobs) + 1)[1:]
     manifest_rows, contamination, n_frames_total, n_phones_train = [], [], 0, 0
     for (emotion, s), take_seed in progress(list(zip(jobs, take_seeds)), "sample-corpus"):
         rng = np.random.default_rng(take_seed)
-        style = STYLES[emotion]
         take = f"{emotion}_s{s:03d}"
-        utt = time_utterance(sentences[s], style, rng, spec.pause_prob)
-        params = articulation(utt, style, CAPTURE_FPS, rng)
-        f0 = pitch(utt, style, CAPTURE_FPS, rng)
-        rotations, translations = head_motion(f0, style, CAPTURE_FPS, rng)
-        clean = rig.evaluate(params)  # (T, M, 3) head frame
-        # Head motion about a centre behind the face, then placement in the capture volume.
-        centre = np.array([0.0, 0.0, -60.0])
-        moved = np.einsum("tij,tmj->tmi", rotations, clean - centre) + centre + translations[:, None, :]
-        yaw = np.deg2rad(rng.uniform(-8, 8))
-        world_r = np.array([[np.cos(yaw), 0, np.sin(yaw)], [0, 1, 0], [-np.sin(yaw), 0, np.cos(yaw)]])
-        world_t = np.array([250.0, 1550.0, -120.0]) + rng.uniform(-20, 20, 3)
-        captured = moved @ world_r.T + world_t
-        captured += rng.normal(0.0, MARKER_NOISE_MM, captured.shape)
-        speech = [i for i, p in enumerate(utt.phones) if p != "pau"]
+        perf = perform(sentences[s], emotion, rng, rig, solver, spec.pause_prob, CAPTURE_FPS)
+        utt = perf.utterance
+        clean = rig.evaluate(perf.weights, vertices=markers.vertices)  # (T, M, 3) head frame, mm
+        captured = _capture(clean, perf.rotations, perf.translations, rng)
+        speech = [i for i, p in enumerate(utt.phones) if p != PAU]
         speech_frames = (int(utt.starts[speech[0]] * CAPTURE_FPS), int(utt.ends[speech[-1]] * CAPTURE_FPS))
         if split_of[s] == "train":
-            contamination += _inject_contamination(captured, face.marker_names, rng, spec.contamination_rate, take, speech_frames)
+            contamination += _inject_contamination(captured, markers.names, rng, spec.contamination_rate, take, speech_frames)
             n_phones_train += len(speech)
         _add_gaps(captured, rng, long_gap=(preset == "paper" and rng.random() < 0.05))
 
-        write_c3d(out_dir / "mocap" / f"{take}.c3d", MarkerTake(captured.astype(np.float32), face.marker_names, CAPTURE_FPS))
-        audio = synthesize_audio(utt, f0, CAPTURE_FPS, style, AUDIO_RATE, rng)
+        write_c3d(out_dir / "mocap" / f"{take}.c3d", MarkerTake(captured.astype(np.float32), markers.names, CAPTURE_FPS))
+        audio = synthesize_audio(utt, perf.f0, CAPTURE_FPS, STYLES[emotion], AUDIO_RATE, rng)
         write_wav(out_dir / "audio" / f"{take}.wav", audio, AUDIO_RATE)
         phones = [Segment(float(a), float(b), p) for a, b, p in zip(utt.starts, utt.ends, utt.phones)]
         words = [Segment(a, b, w) for w, a, b in utt.word_spans]
-        write_textgrid(out_dir / "labels" / f"{take}.TextGrid", {"phones": phones, "words": words}, utt.duration)
-        if split_of[s] != "train":
-            write_c3d(out_dir / "groundtruth" / f"{take}.c3d", MarkerTake(clean.astype(np.float32), face.marker_names, CAPTURE_FPS))
+        write_textgrid(out_dir / "labels" / f"{take}.TextGrid",
+                       {"phones": phones, "words": words, "emotion": emotion_segments(perf.emotion, CAPTURE_FPS, utt.duration)},
+                       utt.duration)
+        write_c3d(out_dir / "groundtruth" / f"{take}.c3d", MarkerTake(clean.astype(np.float32), markers.names, CAPTURE_FPS))
         with open(out_dir / "groundtruth" / f"{take}_head.csv", "w", newline="") as fh:
             writer = csv.writer(fh)
             writer.writerow([f"r{i}{j}" for i in range(3) for j in range(3)] + ["tx", "ty", "tz"])
-            for r, tr in zip(rotations, translations):
+            for r, tr in zip(perf.rotations, perf.translations):
                 writer.writerow([f"{v:.8f}" for v in r.reshape(-1)] + [f"{v:.5f}" for v in tr])
+        write_truth(out_dir / "groundtruth" / f"{take}_truth.csv", rig, CAPTURE_FPS, perf.weights,
+                    perf.emotion.labels(), perf.emotion.frame_intensity())
         n_frames_total += len(captured)
         manifest_rows.append({
             "take": take, "mocap": f"mocap/{take}.c3d", "audio": f"audio/{take}.wav",

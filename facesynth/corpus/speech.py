@@ -1,11 +1,10 @@
-"""Speech of the virtual actress: sentences, phone timing, articulation, pitch and audio.
+"""Speech of the virtual actress: sentences, phone timing, pitch, head motion and audio.
 
-Articulation follows the Cohen-Massaro dominance model: every phone has a target and a
-dominance for each rig parameter, and the parameter at time t is the dominance-weighted
-mean of the targets of all phones, so the same phone looks different in different
-contexts (coarticulation). Bilabials have an overwhelming lip-closure dominance, so the
-lips close on /p b m/ whatever surrounds them. Emotions change pose (expression
-parameters), dynamics (tempo, articulation sharpness, jaw amplitude), pitch and loudness.
+Phone durations follow the phone class, stress, phrase-final lengthening and the emotion's
+tempo (word by word, so a take that changes emotion changes tempo with it); pitch has
+declination, accents on some stressed vowels (which also raise the brows, see
+:mod:`facesynth.corpus.expression`) and a final fall; the head nods with the pitch. The
+articulation itself is in :mod:`facesynth.corpus.articulation`.
 """
 
 from __future__ import annotations
@@ -13,66 +12,39 @@ from __future__ import annotations
 from dataclasses import dataclass
 from functools import lru_cache
 from importlib import resources
+from typing import Sequence
 
 import numpy as np
 from scipy.signal import butter, lfilter, sosfilt
 
 from ..phonemes import PAU, VOWELS, pronunciations, to_festival
-from .face import P, PARAMS
-
-EMOTIONS = ("neutral", "happy", "angry", "sad")
+from .expression import EMOTIONS
 
 
 @dataclass(frozen=True)
 class EmotionStyle:
-    """How one emotion shapes speech: tempo (duration multiplier), articulation sharpness and
-    jaw gain (multipliers), lip spread bias, F0 base and range (Hz), loudness, head-motion gain,
-    and the mean intensity of each rig expression parameter.
+    """How one emotion shapes speech: tempo (duration multiplier), articulator stiffness and
+    articulation amplitude (multipliers), F0 base and range (Hz), loudness, head-motion gain
+    and a blink-duration multiplier. Its shape offsets are in
+    :data:`facesynth.corpus.expression.EMOTION_OFFSETS`.
     """
 
     tempo: float        # duration multiplier
-    sharpness: float    # dominance rate multiplier (higher: crisper articulation)
-    jaw_gain: float     # jaw amplitude multiplier
-    spread_bias: float  # constant lip spread added
+    stiffness: float    # multiplier of every articulator's natural frequency
+    amplitude: float    # articulation target multiplier
     f0_base: float      # Hz
     f0_range: float     # Hz
     loudness: float
     head_gain: float    # head motion amplitude multiplier
-    expression: dict    # rig expression parameter -> mean intensity
+    blink_duration: float
 
 
 STYLES = {
-    "neutral": EmotionStyle(1.00, 1.00, 1.00, 0.00, 195.0, 25.0, 1.0, 1.0, {}),
-    "happy": EmotionStyle(0.93, 1.05, 1.08, 0.18, 235.0, 45.0, 1.1, 1.2, {"smile": 0.8}),
-    "angry": EmotionStyle(0.88, 1.35, 1.20, 0.05, 220.0, 40.0, 1.35, 1.5, {"angry": 0.85}),
-    "sad": EmotionStyle(1.22, 0.75, 0.70, 0.00, 180.0, 12.0, 0.7, 0.6, {"sad": 0.8}),
+    "neutral": EmotionStyle(1.00, 1.00, 1.00, 195.0, 25.0, 1.0, 1.0, 1.0),
+    "happy": EmotionStyle(0.93, 1.05, 1.08, 235.0, 45.0, 1.1, 1.2, 0.9),
+    "angry": EmotionStyle(0.88, 1.25, 1.2, 220.0, 40.0, 1.35, 1.5, 0.85),
+    "sad": EmotionStyle(1.22, 0.78, 0.72, 180.0, 12.0, 0.7, 0.6, 1.35),
 }
-
-# Articulation targets (rig parameters) and the dominance of each phone class.
-_T = {
-    "aa": dict(jaw=0.85, spread=0.1, raise_=0.4), "ae": dict(jaw=0.70, spread=0.45, raise_=0.4),
-    "ah": dict(jaw=0.60, raise_=0.25), "ax": dict(jaw=0.35, raise_=0.1), "ao": dict(jaw=0.70, round=0.45),
-    "aw": dict(jaw=0.75, round=0.3), "ay": dict(jaw=0.70, spread=0.3), "eh": dict(jaw=0.50, spread=0.4),
-    "er": dict(jaw=0.35, round=0.35), "axr": dict(jaw=0.35, round=0.35), "ey": dict(jaw=0.45, spread=0.5),
-    "ih": dict(jaw=0.30, spread=0.45), "iy": dict(jaw=0.20, spread=0.7), "ow": dict(jaw=0.50, round=0.7),
-    "oy": dict(jaw=0.50, round=0.55), "uh": dict(jaw=0.35, round=0.5), "uw": dict(jaw=0.25, round=0.95),
-    "el": dict(jaw=0.3), "em": dict(jaw=0.1, close=1.0), "en": dict(jaw=0.25),
-    "p": dict(jaw=0.10, close=1.0), "b": dict(jaw=0.10, close=1.0), "m": dict(jaw=0.10, close=1.0),
-    "f": dict(jaw=0.15, tuck=1.0), "v": dict(jaw=0.15, tuck=1.0), "w": dict(jaw=0.2, round=1.0),
-    "r": dict(jaw=0.25, round=0.5), "sh": dict(jaw=0.2, round=0.55, raise_=0.3), "ch": dict(jaw=0.2, round=0.55, raise_=0.3),
-    "jh": dict(jaw=0.2, round=0.55, raise_=0.3), "zh": dict(jaw=0.2, round=0.55, raise_=0.3),
-    "s": dict(jaw=0.12, spread=0.5), "z": dict(jaw=0.12, spread=0.5), "th": dict(jaw=0.25), "dh": dict(jaw=0.25),
-    "t": dict(jaw=0.25), "d": dict(jaw=0.25), "n": dict(jaw=0.25), "l": dict(jaw=0.3), "nx": dict(jaw=0.25),
-    "k": dict(jaw=0.35), "g": dict(jaw=0.35), "ng": dict(jaw=0.35), "y": dict(jaw=0.2, spread=0.55),
-    "hh": dict(jaw=0.45), "pau": dict(jaw=0.0, close=0.5),
-}
-_STRONG = {"p": {"close": 20.0}, "b": {"close": 20.0}, "m": {"close": 20.0}, "em": {"close": 20.0},
-           "f": {"tuck": 20.0}, "v": {"tuck": 20.0}, "w": {"round": 8.0}, "uw": {"round": 3.0},
-           "sh": {"round": 3.0}, "ch": {"round": 3.0}, "jh": {"round": 3.0}, "zh": {"round": 3.0}}
-_WEAK = {"k", "g", "ng", "hh", "t", "d", "n", "l", "y", "th", "dh"}
-# Dominance decay rate per parameter (1/s): lip closure and the labiodental tuck are brief
-# gestures; lip rounding is anticipated over long spans (classic anticipatory coarticulation).
-_RATE = {"jaw": 18.0, "round": 12.0, "spread": 18.0, "close": 70.0, "tuck": 60.0, "raise": 20.0}
 
 # Formants (Hz) for the source-filter audio; consonants borrow a neutral tract.
 _FORMANTS = {
@@ -175,10 +147,13 @@ class ReadSentence:
         return float(self.ends[-1])
 
 
-def time_utterance(words: list[str], style: EmotionStyle, rng: np.random.Generator, pause_prob: float) -> ReadSentence:
+def time_utterance(words: list[str], style: EmotionStyle | Sequence[EmotionStyle], rng: np.random.Generator,
+                   pause_prob: float) -> ReadSentence:
     """Phone durations with variation: class base x emotion tempo x stress x log-normal noise;
-    leading/trailing silence and sometimes a mid-sentence pause between words."""
+    leading/trailing silence and sometimes a mid-sentence pause between words. ``style`` is
+    one style, or one per word (a take whose emotion changes)."""
     lex = lexicon()
+    styles = [style] * len(words) if isinstance(style, EmotionStyle) else list(style)
     pause_after = -1
     if len(words) >= 6 and rng.random() < pause_prob:
         pause_after = int(rng.integers(2, len(words) - 2))
@@ -186,7 +161,7 @@ def time_utterance(words: list[str], style: EmotionStyle, rng: np.random.Generat
     for k, w in enumerate(words):
         ph, st = lex[w]
         for p, s in zip(ph, st):
-            d = _base_duration(p) * style.tempo * (1.25 if s else 1.0) * float(np.exp(rng.normal(0.0, 0.18)))
+            d = _base_duration(p) * styles[k].tempo * (1.25 if s else 1.0) * float(np.exp(rng.normal(0.0, 0.18)))
             if p in VOWELS and k == len(words) - 1:
                 d *= 1.3  # phrase-final lengthening
             phones.append(p)
@@ -196,7 +171,7 @@ def time_utterance(words: list[str], style: EmotionStyle, rng: np.random.Generat
         if k == pause_after:
             phones.append(PAU)
             stress.append(0)
-            durations.append(rng.uniform(0.15, 0.30) * style.tempo)
+            durations.append(rng.uniform(0.15, 0.30) * styles[k].tempo)
             word_index.append(-1)
     phones.append(PAU)
     stress.append(0)
@@ -211,53 +186,32 @@ def time_utterance(words: list[str], style: EmotionStyle, rng: np.random.Generat
     return ReadSentence(list(words), phones, starts, ends, np.array(stress), spans)
 
 
-def articulation(utt: ReadSentence, style: EmotionStyle, fps: float, rng: np.random.Generator) -> np.ndarray:
-    """Rig parameters over time by dominance blending. Returns (T, len(PARAMS)) at ``fps``."""
-    n_frames = int(np.floor(utt.duration * fps)) + 1
-    t = np.arange(n_frames) / fps
-    centers = 0.5 * (utt.starts + utt.ends)
-    half = 0.35 * (utt.ends - utt.starts)
-    speech_params = ("jaw", "round", "spread", "close", "tuck", "raise")
-    out = np.zeros((n_frames, len(PARAMS)))
-    tau = np.clip(np.abs(t[:, None] - centers[None, :]) - half[None, :], 0.0, None)  # (T, n)
-    for name in speech_params:
-        key = "raise_" if name == "raise" else name
-        targets = np.array([_T[p].get(key, 0.0) for p in utt.phones])
-        alpha = np.array([
-            _STRONG.get(p, {}).get(name, 0.3 if p in _WEAK else (0.5 if p == PAU else 1.0)) for p in utt.phones
-        ])
-        if name == "close":  # only bilabials and silence care about closure
-            alpha = np.where(targets > 0, alpha, 0.6)
-        dominance = alpha[None, :] * np.exp(-_RATE[name] * style.sharpness * tau)
-        out[:, P[name]] = (dominance * targets[None, :]).sum(1) / dominance.sum(1)
-    out[:, P["jaw"]] *= style.jaw_gain * (1.0 + 0.15 * np.interp(t, centers, utt.stress.astype(float)))
-    out[:, P["spread"]] += style.spread_bias
-    for name in ("smile", "sad", "angry"):
-        mean = style.expression.get(name, 0.03)
-        wobble = sum(0.08 * np.sin(2 * np.pi * rng.uniform(0.1, 0.5) * t + rng.uniform(0, 2 * np.pi)) for _ in range(2))
-        out[:, P[name]] = np.clip(mean * (1.0 + rng.normal(0.0, 0.08)) + mean * wobble, 0.0, None)
-    return out
-
-
-def pitch(utt: ReadSentence, style: EmotionStyle, fps: float, rng: np.random.Generator) -> np.ndarray:
-    """F0 contour (Hz) at ``fps``: declination, accents on stressed vowels, final fall, jitter."""
+def pitch(utt: ReadSentence, style: EmotionStyle, fps: float, rng: np.random.Generator) -> tuple[np.ndarray, list[tuple[float, float]]]:
+    """F0 contour (Hz) at ``fps``: declination, accents on stressed vowels, final fall, jitter.
+    Returns (f0 (T,) Hz, the accents as (centre s, strength 0.5..1))."""
     n_frames = int(np.floor(utt.duration * fps)) + 1
     t = np.arange(n_frames) / fps
     speech = [i for i, p in enumerate(utt.phones) if p != PAU]
     t0, t1 = utt.starts[speech[0]], utt.ends[speech[-1]]
     x = np.clip((t - t0) / max(t1 - t0, 1e-3), 0, 1)
     f0 = style.f0_base + style.f0_range * (0.3 - 0.7 * x)
+    accents = []
     for i in speech:
         if utt.stress[i] and rng.random() < 0.45:
             c = 0.5 * (utt.starts[i] + utt.ends[i])
-            f0 += style.f0_range * rng.uniform(0.5, 1.0) * np.exp(-((t - c) ** 2) / (2 * 0.08**2))
+            strength = rng.uniform(0.5, 1.0)
+            f0 += style.f0_range * strength * np.exp(-((t - c) ** 2) / (2 * 0.08**2))
+            accents.append((float(c), float(strength)))
     f0 += style.f0_range * 0.08 * np.convolve(rng.normal(size=n_frames), np.ones(15) / 15, mode="same")
-    return f0
+    return f0, accents
 
 
-def head_motion(f0: np.ndarray, style: EmotionStyle, fps: float, rng: np.random.Generator) -> tuple[np.ndarray, np.ndarray]:
-    """Rigid head motion correlated with pitch. Returns rotations (T,3,3) and translations (T,3) mm."""
+def head_motion(f0: np.ndarray, style: EmotionStyle, fps: float, rng: np.random.Generator,
+                phrase_ends: Sequence[float] = ()) -> tuple[np.ndarray, np.ndarray]:
+    """Rigid head motion correlated with pitch, with a small downward nod closing each phrase
+    (``phrase_ends``, s). Returns rotations (T,3,3) and translations (T,3) mm."""
     n = len(f0)
+    t = np.arange(n) / fps
 
     def smooth_noise(scale: float, width: int) -> np.ndarray:
         k = np.hanning(width)
@@ -267,6 +221,8 @@ def head_motion(f0: np.ndarray, style: EmotionStyle, fps: float, rng: np.random.
     lag = int(0.1 * fps)  # the nod follows the pitch by ~100 ms
     f0_delayed = np.concatenate([np.full(lag, f0[0]), f0[:-lag]]) if lag else f0
     nod = style.head_gain * (np.deg2rad(2.5) * (f0_delayed - style.f0_base) / max(style.f0_range, 1.0) + smooth_noise(np.deg2rad(0.6), 90))
+    for end in phrase_ends:
+        nod -= style.head_gain * np.deg2rad(rng.uniform(0.5, 1.5)) * np.exp(-((t - end - 0.1) ** 2) / (2 * 0.12**2))
     yaw = style.head_gain * smooth_noise(np.deg2rad(1.5), 150)
     roll = style.head_gain * smooth_noise(np.deg2rad(0.8), 150)
     rotations = np.stack([_euler(a, b, c) for a, b, c in zip(nod, yaw, roll)])

@@ -82,7 +82,8 @@ def write_obj(path: Path, vertices: np.ndarray, faces: np.ndarray, comment: str 
 
 
 def read_binding(path: Path) -> dict[str, int]:
-    """Marker-to-vertex binding: a CSV with columns ``marker,vertex`` (0-based vertex index)."""
+    """Marker-to-vertex binding: a CSV with columns ``marker,vertex`` (0-based vertex index);
+    other columns (the sample corpus writes ``rigid``) are ignored here."""
     path = Path(path)
     if not path.exists():
         raise InputError(f"{path}: binding file not found; check the --binding path.")
@@ -109,10 +110,29 @@ def read_binding(path: Path) -> dict[str, int]:
     return binding
 
 
-def write_binding(path: Path, binding: dict[str, int]) -> None:
-    """Write a ``marker,vertex`` CSV binding (vertex: 0-based index into the mesh's vertices)."""
+def write_binding(path: Path, binding: dict[str, int], rigid: set[str] | None = None) -> None:
+    """Write a ``marker,vertex`` CSV binding (vertex: 0-based index into the mesh's vertices).
+    With ``rigid``, a third column ``rigid`` marks (1) the markers that move only with the
+    head, the set a normalizer fits the head pose on (:func:`read_rigid_markers`)."""
     with open(path, "w", encoding="utf-8", newline="") as fh:
         writer = csv.writer(fh)
-        writer.writerow(["marker", "vertex"])
+        writer.writerow(["marker", "vertex"] + (["rigid"] if rigid is not None else []))
         for name, vertex in binding.items():
-            writer.writerow([name, vertex])
+            writer.writerow([name, vertex] + ([int(name in rigid)] if rigid is not None else []))
+
+
+def read_rigid_markers(path: Path) -> list[str]:
+    """The markers a binding CSV marks ``rigid`` = 1, in the file's order; [] without that column."""
+    binding = read_binding(path)  # checks the file and its marker/vertex columns
+    with open(path, encoding="utf-8-sig", newline="") as fh:
+        reader = csv.DictReader(fh)
+        if "rigid" not in (reader.fieldnames or []):
+            return []
+        out = []
+        for row in reader:
+            flag = (row.get("rigid") or "").strip()
+            if flag not in ("0", "1", ""):
+                raise InputError(f"{path}, line {reader.line_num}: rigid {flag!r} must be 0 or 1.")
+            if flag == "1":
+                out.append((row["marker"] or "").strip())
+    return [name for name in out if name in binding]

@@ -215,6 +215,8 @@ TABLES = Block("tables", "The corpus tables, copied forward by every corpus-side
         Dataset("start", "float64", ("P",), "start, from the take's first frame", "s", (SECONDS,)),
         Dataset("end", "float64", ("P",), "end, from the take's first frame", "s", (SECONDS,)),
         Dataset("phone", "str", ("P",), "Festival phone (Table VI set), `pau` for silence"),
+        Dataset("emotion", "str", ("P",), "emotion of the phone (from the alignment's emotion tier, else its take's); "
+                "absent in files written before it existed, read then as the take's", required=False),
     )),
     Dataset("marker_names", "str", ("M",), "marker order of every marker array"),
 ))

@@ -57,12 +57,21 @@ class Takes:
 
 @dataclass
 class Phones:
-    """One row per phone segment: its take (row index into :class:`Takes`), times (s), phone."""
+    """One row per phone segment: its take (row index into :class:`Takes`), times (s), phone,
+    and its emotion (``None``: every phone has its take's emotion, as in files written
+    before per-phone emotion existed; see :meth:`emotions`)."""
 
     take: np.ndarray   # (n,) int64
     start: np.ndarray  # (n,) float64, seconds from the take's start
     end: np.ndarray    # (n,) float64
     phone: list[str]
+    emotion: list[str] | None = None
+
+    def emotions(self, takes: "Takes") -> list[str]:
+        """The emotion of every phone: its own, or its take's when the table has none."""
+        if self.emotion is not None:
+            return list(self.emotion)
+        return [takes.emotion[int(t)] for t in self.take]
 
     def __len__(self) -> int:
         return len(self.phone)
@@ -74,13 +83,17 @@ class Phones:
         g.create_dataset("start", data=self.start.astype(np.float64))
         g.create_dataset("end", data=self.end.astype(np.float64))
         write_strings(g, "phone", self.phone)
+        if self.emotion is not None:
+            write_strings(g, "emotion", self.emotion)
         g["start"].attrs["units"] = "s"
         g["end"].attrs["units"] = "s"
 
     @classmethod
     def read(cls, f: h5py.File) -> "Phones":
         """The table under ``/phones`` of an open artifact."""
-        return cls(read(f, "phones/take"), read(f, "phones/start"), read(f, "phones/end"), read_strings(f, "phones/phone"))
+        emotion = read_strings(f, "phones/emotion") if "phones/emotion" in f else None
+        return cls(read(f, "phones/take"), read(f, "phones/start"), read(f, "phones/end"), read_strings(f, "phones/phone"),
+                   emotion)
 
 
 def read_tables(f: h5py.File) -> tuple[Takes, Phones, list[str]]:

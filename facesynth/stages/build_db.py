@@ -41,6 +41,7 @@ def build_nodes(takes: Takes, phones: Phones, fps: float) -> Nodes:
     """One node per non-pause phone of the training takes, with links and triphone context."""
     rows: dict[str, list] = {k: [] for k in ("phone", "viseme", "emotion", "take", "frame_start", "frame_count",
                                              "start_s", "end_s", "prev_phone", "next_phone", "pre", "suc")}
+    phone_emotion = phones.emotions(takes)
     for t in range(len(takes)):
         if takes.split[t] != "train":
             continue
@@ -59,7 +60,7 @@ def build_nodes(takes: Takes, phones: Phones, fps: float) -> Nodes:
             k = len(rows["phone"])
             rows["phone"].append(phone)
             rows["viseme"].append(viseme(phone))
-            rows["emotion"].append(takes.emotion[t])
+            rows["emotion"].append(phone_emotion[r])
             rows["take"].append(t)
             rows["frame_start"].append(int(takes.frame_start[t]) + a)
             rows["frame_count"].append(b - a)

@@ -4,6 +4,12 @@ The manifest is a CSV with the columns ``take, mocap, audio, alignment, transcri
 emotion, sentence, split`` (paths relative to the manifest). A take with an empty
 ``alignment`` and a ``transcript`` is aligned with :mod:`facesynth.alignment`.
 Phones are mapped to the Festival set; marker gaps stay NaN here.
+
+Emotion: a take has its manifest ``emotion`` throughout, unless its TextGrid has an emotion
+tier (``ingest.emotion_tiers``): then every phone has the emotion of the interval holding
+its centre (labels as in the manifest, aliases allowed; an empty interval keeps the
+manifest's). The per-phone emotion is what ``build-db`` gives each motion node and what
+``evaluate`` asks the search for.
 """
 
 from __future__ import annotations
@@ -17,7 +23,7 @@ import numpy as np
 from ..config import AlignSettings, IngestSettings, settings_json
 from ..errors import InputError
 from ..formats.audio import read_audio, resample
-from ..formats.labels import Segment, check_segments, read_phone_segments
+from ..formats.labels import Segment, check_segments, read_phone_segments, read_textgrid
 from ..formats.mocap import read_mocap
 from ..phonemes import map_phones
 from ..progress import progress
@@ -99,11 +105,38 @@ def _segments_for(row: ManifestRow, settings: IngestSettings, align_settings: Al
     return align_samples(samples, rate, row.transcript, settings=align_settings, where=where)
 
 
+def phone_emotions(row: ManifestRow, segs: list[Segment], settings: IngestSettings) -> list[str]:
+    """The emotion of every phone segment of ``row``: from its TextGrid's emotion tier at the
+    phone's centre, else the manifest's emotion."""
+    path = row.alignment
+    if path is None or path.suffix.lower() != ".textgrid":
+        return [row.emotion] * len(segs)
+    tiers = {name.lower(): s for name, s in read_textgrid(path).items()}
+    tier = next((tiers[n.lower()] for n in settings.emotion_tiers if n.lower() in tiers), None)
+    if tier is None:
+        return [row.emotion] * len(segs)
+    aliases = {k.lower(): v for k, v in settings.emotion_aliases.items()}
+    out = []
+    for s in segs:
+        centre = 0.5 * (s.start + s.end)
+        interval = next((e for e in tier if e.start <= centre < e.end), None)
+        label = (interval.label if interval is not None else "").strip().lower()
+        if not label:
+            out.append(row.emotion)
+            continue
+        label = aliases.get(label, label)
+        if label not in settings.emotions:
+            raise InputError(f"{path}, emotion tier, {interval.start:.3f} s: unknown emotion {interval.label!r}; "
+                             f"use one of {', '.join(settings.emotions)}.")
+        out.append(label)
+    return out
+
+
 def ingest(rows: list[ManifestRow], settings: IngestSettings, align_settings: AlignSettings):
     """Read and check every take; a take with only a transcript is aligned with ``align_settings``.
     Returns (markers (F,M,3) float32 mm, names, fps, takes, phones, audio list of (samples, rate))."""
     markers, audio, starts, counts = [], [], [], []
-    phone_take, phone_start, phone_end, phone_label = [], [], [], []
+    phone_take, phone_start, phone_end, phone_label, phone_emotion = [], [], [], [], []
     names = fps = None
     for i, row in enumerate(progress(rows, "ingest")):
         where = f"take {row.take!r} (manifest line {row.line})"
@@ -144,9 +177,10 @@ def ingest(rows: list[ManifestRow], settings: IngestSettings, align_settings: Al
         phone_start += [s.start for s in segs]
         phone_end += [s.end for s in segs]
         phone_label += labels
+        phone_emotion += phone_emotions(row, segs, settings)
     takes = Takes([r.take for r in rows], [r.emotion for r in rows], [r.sentence for r in rows],
                   [r.split for r in rows], [r.transcript for r in rows], np.array(starts), np.array(counts))
-    phones = Phones(np.array(phone_take), np.array(phone_start), np.array(phone_end), phone_label)
+    phones = Phones(np.array(phone_take), np.array(phone_start), np.array(phone_end), phone_label, phone_emotion)
     return np.concatenate(markers).astype(np.float32), names, fps, takes, phones, audio
 
 
