@@ -14,8 +14,14 @@ same head frame. Numbers, per method (``dp`` and ``baseline``), per emotion and 
 * ``emotion_agreement``: the fraction of spoken phones whose node has the asked emotion;
 * ``non_captured_joins``: joins of nodes that were not captured together.
 
-The baseline is the per-phoneme mean pose (mean PCA frame of all the database's frames of
-that phone) placed at each phone's centre and interpolated linearly, the rest pose in pauses.
+Baselines, each given the same phone timing (and emotions):
+
+* ``baseline``: the per-phoneme mean pose (mean PCA frame of all the database's frames of
+  that phone) placed at each phone's centre and interpolated linearly, the rest pose in pauses;
+* ``baseline_emotion``: the same with the mean pose per (phone, emotion), the phone's mean
+  where the database has no node of that phone in that emotion;
+* ``dominance``: a Cohen-Massaro coarticulation model (:mod:`facesynth.motion.dominance`)
+  fitted on the database's training takes (targets, dominance magnitudes and rates per phone).
 """
 
 from __future__ import annotations
@@ -29,6 +35,7 @@ from .config import EvaluateSettings, NormalizeSettings, SynthesizeSettings
 from .errors import InputError
 from .model.corpus import Corpus
 from .model.motiondb import MotionDatabase
+from .motion.dominance import DominanceModel, fit_dominance, training_sentences
 from .motion.postprocess import frame_ranges
 from .motion.rigid import fill_gaps, rigid_align
 from .opencl import use_opencl
@@ -82,29 +89,40 @@ def heldout(corpus_path: Path, db: MotionDatabase, split: str, normalize_setting
     return out
 
 
-def baseline(db: MotionDatabase, utt: Utterance) -> np.ndarray:
-    """Per-phoneme mean pose at phone centres, linearly interpolated. (T, M, 3) at capture rate."""
+def baseline(db: MotionDatabase, utt: Utterance, by_emotion: bool = False) -> np.ndarray:
+    """Per-phoneme (or, with ``by_emotion``, per (phone, emotion)) mean pose at phone centres,
+    linearly interpolated. (T, M, 3) at capture rate."""
     phones = np.array(db.nodes.phone)
-    means: dict[str, np.ndarray] = {}
+    emotions = np.array(db.nodes.emotion)
+    means: dict[tuple[str, str], np.ndarray] = {}
     rest = db.model.project(db.reference[None])[0].astype(np.float64)
 
-    def mean_pose(p: str) -> np.ndarray:
-        if p not in means:
+    def mean_pose(p: str, emotion: str) -> np.ndarray:
+        key = (p, emotion if by_emotion else "")
+        if key not in means:
             sel = np.nonzero(phones == p)[0]
+            if by_emotion and (emotions[sel] == emotion).any():
+                sel = sel[emotions[sel] == emotion]
             if len(sel) == 0:  # an unseen phone: its viseme's nodes, else every node
                 sel = np.nonzero(db.nodes.viseme == viseme(p))[0]
                 sel = sel if len(sel) else np.arange(len(phones))
             rows = np.concatenate([np.arange(db.nodes.frame_start[k], db.nodes.frame_start[k] + db.nodes.frame_count[k]) for k in sel])
-            means[p] = db.coeffs[rows].astype(np.float64).mean(0)
-        return means[p]
+            means[key] = db.coeffs[rows].astype(np.float64).mean(0)
+        return means[key]
 
     ranges = frame_ranges(utt.starts, utt.ends, db.fps)
     total = ranges[-1][1]
     centres = np.array([(a + b - 1) / 2.0 for a, b in ranges])
-    poses = np.stack([rest if p == PAU else mean_pose(p) for p in utt.phones])
+    poses = np.stack([rest if p == PAU else mean_pose(p, e) for p, e in zip(utt.phones, utt.emotions)])
     frames = np.arange(total)
     coeffs = np.stack([np.interp(frames, centres, poses[:, k]) for k in range(poses.shape[1])], 1)
     return db.model.reconstruct(coeffs)
+
+
+def dominance_baseline(db: MotionDatabase, model: DominanceModel, utt: Utterance) -> np.ndarray:
+    """The fitted Cohen-Massaro model's markers (T, M, 3) mm at the capture rate."""
+    total = frame_ranges(utt.starts, utt.ends, db.fps)[-1][1]
+    return db.model.reconstruct(model.predict(utt.phones, utt.starts, utt.ends, total, db.fps))
 
 
 def lip_gaps(markers: np.ndarray, names: list[str], lip_markers: tuple[str, ...]) -> np.ndarray:
@@ -174,7 +192,9 @@ def evaluate(db_path: Path, corpus: Path, settings: EvaluateSettings, synth: Syn
     sentences = sentences if sentences is not None else heldout(corpus, db, settings.split, normalize_settings)
     if tc is None:
         tc = db.transition_panels(synth) if use_opencl(synth.use_opencl) else db.transition(synth)
-    per_method: dict[str, list[dict]] = {"dp": [], "baseline": []} if with_baseline else {"dp": []}
+    baselines = ("baseline", "baseline_emotion", "dominance") if with_baseline else ()
+    per_method: dict[str, list[dict]] = {"dp": [], **{b: [] for b in baselines}}
+    dominance = fit_dominance(training_sentences(db), db.fps, settings.dominance_iterations) if with_baseline else None
     records = []
     for s in progress(sentences, "evaluate"):
         res = synthesize(db, s.utterance, {}, synth, tc=tc)
@@ -185,12 +205,15 @@ def evaluate(db_path: Path, corpus: Path, settings: EvaluateSettings, synth: Syn
         per_method["dp"].append(m_dp)
         k = db.marker_names.index(settings.plot_marker)
         record = {"take": s.take, "emotion": s.emotion, "fps": db.fps, "truth": s.truth[:, k], "dp": res["markers_capture"][:, k]}
-        if with_baseline:
-            base = baseline(db, s.utterance)
+        for method in baselines:
+            if method == "dominance":
+                base = dominance_baseline(db, dominance, s.utterance)
+            else:
+                base = baseline(db, s.utterance, by_emotion=(method == "baseline_emotion"))
             m_base = sentence_metrics(base, s.truth, s.utterance, db.fps, db.marker_names, settings)
             m_base.update(take=s.take, emotion=s.emotion)
-            per_method["baseline"].append(m_base)
-            record["baseline"] = base[:, k]
+            per_method[method].append(m_base)
+            record[method] = base[:, k]
         records.append(record)
     metrics = {}
     for method, rows in per_method.items():

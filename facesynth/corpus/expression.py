@@ -34,7 +34,7 @@ EMOTIONS = ("neutral", "happy", "angry", "sad")
 #: Shape offsets of each emotion at intensity 1 (rig weights; a name without side drives both sides).
 EMOTION_OFFSETS: dict[str, dict[str, float]] = {
     "neutral": {},
-    "happy": {"mouthSmile": 0.5, "cheekSquint": 0.35, "eyeSquint": 0.2, "mouthDimple": 0.15, "browOuterUp": 0.1},
+    "happy": {"mouthSmile": 0.5, "mouthUpperUp": 0.15, "cheekSquint": 0.35, "eyeSquint": 0.2, "mouthDimple": 0.15, "browOuterUp": 0.1},
     "angry": {"browDown": 0.6, "noseSneer": 0.35, "mouthPress": 0.25, "eyeSquint": 0.25, "mouthStretch": 0.1,
               "jawForward": 0.08, "mouthFrown": 0.1, "eyeWide": 0.05},
     "sad": {"browInnerUp": 0.55, "mouthFrown": 0.4, "mouthShrugLower": 0.2, "eyeBlink": 0.12, "eyeLookDown": 0.12,

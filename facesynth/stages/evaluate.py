@@ -27,7 +27,8 @@ def plot(records: list[dict], folder: Path, marker: str) -> list[str]:
         fig, axes = plt.subplots(2, 1, figsize=(9, 5.5), sharex=True)
         n = min(len(r["truth"]), len(r["dp"]), len(r["baseline"]))
         t = np.arange(n) / r["fps"]
-        for key, style, label in (("truth", "--", "ground truth"), ("dp", "-", "synthesized (DP)"), ("baseline", ":", "baseline")):
+        for key, style, label in (("truth", "--", "ground truth"), ("dp", "-", "synthesized (DP)"), ("baseline", ":", "per-phone mean"),
+                                  ("dominance", "-.", "Cohen-Massaro (fitted)")):
             y = r[key][:n].astype(np.float64)
             axes[0].plot(t, y[:, 1], style, label=label, lw=1.4)
             speed = np.linalg.norm(np.gradient(y, axis=0), axis=1) * r["fps"]
@@ -68,7 +69,8 @@ def write_report(folder: Path, metrics: dict, images: list[str], meta: dict) -> 
              "<style>body{font-family:sans-serif} table{border-collapse:collapse;margin:8px 0} td,th{border:1px solid #ccc;padding:3px 8px;text-align:right} td:first-child{text-align:left}</style>",
              f"<h1>Evaluation on {meta['sentences']} held-out sentences</h1>",
              f"<p>Database {html.escape(meta['db'])}; ground truth {html.escape(meta['heldout'])} (split '{meta['split']}'). "
-             "The baseline is the per-phoneme mean pose, linearly interpolated.</p><h2>Overall</h2>", table(lambda m: m["overall"])]
+             "Baselines: <i>baseline</i>, the per-phoneme mean pose, linearly interpolated; <i>baseline_emotion</i>, the mean "
+             "pose per (phone, emotion); <i>dominance</i>, a Cohen-Massaro coarticulation model fitted on the training takes.</p><h2>Overall</h2>", table(lambda m: m["overall"])]
     emotions = sorted(next(iter(metrics.values()))["per_emotion"])
     for e in emotions:
         parts += [f"<h2>{html.escape(e)}</h2>", table(lambda m, e=e: m["per_emotion"][e])]

@@ -221,3 +221,17 @@ def test_a_vertex_out_of_the_mesh_is_refused_when_bound(tmp_path, config):
         p = _write(tmp_path, "b.csv", f"marker,vertex\na,0\nb,1\nc,{bad}\n")
         with pytest.raises(InputError, match=f"marker 'c' is bound to vertex {shown}, but m.obj has vertices 0 to 5"):
             bind(v, f, read_binding(p), ["a", "b", "c"], config.settings("deform"), "m.obj", str(p))
+
+
+def test_binding_with_rigid_markers(tmp_path):
+    from facesynth.formats.mesh import read_rigid_markers
+
+    p = tmp_path / "rigid.csv"
+    write_binding(p, {"ULI_C": 12, "FH_T": 3, "NOSE_BRIDGE": 7}, rigid={"FH_T", "NOSE_BRIDGE"})
+    assert p.read_text().splitlines()[:2] == ["marker,vertex,rigid", "ULI_C,12,0"]
+    assert read_binding(p) == {"ULI_C": 12, "FH_T": 3, "NOSE_BRIDGE": 7}  # the extra column is ignored there
+    assert read_rigid_markers(p) == ["FH_T", "NOSE_BRIDGE"]
+    assert read_rigid_markers(_write(tmp_path, "plain.csv", "marker,vertex\nA,1\n")) == []
+    bad = _write(tmp_path, "bad.csv", "marker,vertex,rigid\nA,1,0\nB,2,yes\n")
+    with pytest.raises(InputError, match=r"bad.csv, line 3: rigid 'yes' must be 0 or 1"):
+        read_rigid_markers(bad)

@@ -46,12 +46,46 @@ def _refused(d, config, match):
 def test_good_manifest_is_ingested(corpus, config):
     out = corpus / "corpus.h5"
     summary = ingest.run(corpus / "manifest.csv", out, config.settings("ingest"), config.settings("align"))
-    assert summary["takes"] == 3 and summary["markers"] == 93
+    assert summary["takes"] == 3 and summary["markers"] == 91
     with h5py.File(out) as f:
         assert f["markers"].attrs["units"] == "mm" and f["markers"].attrs["fps"] == 120
         assert f["audio"].attrs["sample_rate"] == 16000
         assert set(p.decode() for p in f["phones/phone"][()]) <= set(
             "pau aa ae ah ao aw ax ay b ch d dh eh er ey f g hh ih iy jh k l m n ng ow oy p r s sh t th uh uw v w y z zh".split())
+
+
+def _emotion_tier(d, take, intervals):
+    """Rewrite ``take``'s TextGrid with the emotion tier ``intervals`` (start, end, label)."""
+    from facesynth.formats.labels import read_textgrid
+
+    path = d / "labels" / f"{take}.TextGrid"
+    tiers = read_textgrid(path)
+    tiers["emotion"] = [Segment(a, b, label) for a, b, label in intervals]
+    write_textgrid(path, tiers, tiers["phones"][-1].end)
+    return tiers["phones"]
+
+
+def test_phones_take_the_emotion_tier(corpus, config):
+    from facesynth.model.corpus import Corpus
+
+    take = _rows(corpus)[0]["take"]
+    phones = _emotion_tier(corpus, take, [(0.0, 0.5, "neutral"), (0.5, 0.8, ""), (0.8, 99.0, "Anger")])
+    out = corpus / "corpus.h5"
+    ingest.run(corpus / "manifest.csv", out, config.settings("ingest"), config.settings("align"))
+    c = Corpus.read(out, audio=False)
+    rows = np.nonzero(c.phones.take == 0)[0]
+    emotions = c.phones.emotions(c.takes)
+    for r, seg in zip(rows, phones):
+        centre = 0.5 * (seg.start + seg.end)
+        # an empty interval keeps the manifest's emotion; 'Anger' is an alias of angry
+        assert emotions[r] == ("angry" if centre >= 0.8 else c.takes.emotion[0])
+    assert "angry" in emotions and c.takes.emotion[0] == "neutral"
+
+
+def test_unknown_emotion_in_the_tier(corpus, config):
+    take = _rows(corpus)[1]["take"]
+    _emotion_tier(corpus, take, [(0.0, 0.7, "neutral"), (0.7, 99.0, "bored")])
+    _refused(corpus, config, rf"labels/{take}.TextGrid, emotion tier, 0.700 s: unknown emotion 'bored'; use one of neutral")
 
 
 def test_missing_file(corpus, config):

@@ -1,0 +1,172 @@
+"""A fitted Cohen-Massaro coarticulation model: the parametric baseline for the DP search.
+
+Cohen & Massaro (1993): every phone type p has a target pose ``T_p`` and a dominance
+function ``D_i(t) = alpha_p * exp(-theta_p * |t - c_i|)`` around the centre ``c_i`` of each of
+its tokens; the pose at time t is the dominance-weighted mean of the targets of all tokens
+of the sentence::
+
+    F(t) = sum_i D_i(t) T_{p(i)} / sum_i D_i(t)
+
+(their exponent c is 1 here). Poses are vectors of any feature space; facesynth fits in the
+database's PCA coefficients (K components), so the squared error of the fit is the marker
+error of Eq. 13 up to the truncation of PCA.
+
+Fitting (:func:`fit_dominance`) on training sentences: for given magnitudes ``alpha`` and
+rates ``theta`` the targets enter linearly, so they are solved exactly by (ridge) least
+squares, and the 2P log-parameters are optimized on the remaining residual (variable
+projection) with L-BFGS-B, whose gradient is exact at the solved targets (Golub & Pereyra).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.optimize import minimize
+
+from ..phonemes import PAU
+
+_RIDGE = 1e-6
+_LOG_ALPHA_BOUNDS = (np.log(1e-3), np.log(1e3))
+_LOG_THETA_BOUNDS = (np.log(1.0), np.log(200.0))  # 1/s: dominance half-widths from 0.7 s to 3.5 ms
+
+
+@dataclass(frozen=True)
+class DominanceModel:
+    """Cohen-Massaro parameters per phone type.
+
+    phones : the P phone types; targets : (P, K) poses; magnitude : (P,) alpha;
+    rate : (P,) theta in 1/s. A phone not seen in fitting takes the mean target with the
+    median magnitude and rate.
+    """
+
+    phones: tuple[str, ...]
+    targets: np.ndarray
+    magnitude: np.ndarray
+    rate: np.ndarray
+
+    def _lookup(self, phones: list[str]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        index = {p: k for k, p in enumerate(self.phones)}
+        mean = self.targets.mean(axis=0)
+        targets = np.stack([self.targets[index[p]] if p in index else mean for p in phones])
+        alpha = np.array([self.magnitude[index[p]] if p in index else np.median(self.magnitude) for p in phones])
+        theta = np.array([self.rate[index[p]] if p in index else np.median(self.rate) for p in phones])
+        return targets, alpha, theta
+
+    def predict(self, phones: list[str], starts: np.ndarray, ends: np.ndarray, n_frames: int, fps: float) -> np.ndarray:
+        """Poses (n_frames, K) at ``fps`` for the phone sequence (times in s)."""
+        targets, alpha, theta = self._lookup(phones)
+        return token_weights(starts, ends, alpha, theta, n_frames, fps) @ targets
+
+
+def token_weights(starts: np.ndarray, ends: np.ndarray, alpha: np.ndarray, theta: np.ndarray, n_frames: int,
+                  fps: float) -> np.ndarray:
+    """Normalized dominances (n_frames, n) of n tokens: row t sums to 1."""
+    t = np.arange(n_frames)[:, None] / fps
+    centres = 0.5 * (np.asarray(starts) + np.asarray(ends))[None, :]
+    log_d = np.log(alpha)[None, :] - theta[None, :] * np.abs(t - centres)
+    log_d -= log_d.max(axis=1, keepdims=True)  # no underflow far from every centre
+    d = np.exp(log_d)
+    return d / d.sum(axis=1, keepdims=True)
+
+
+@dataclass
+class _Sequence:
+    token_type: np.ndarray  # (n,) index into the phone types
+    starts: np.ndarray
+    ends: np.ndarray
+    frames: np.ndarray      # (T,) frame indices kept for fitting
+    poses: np.ndarray       # (T_kept, K)
+
+
+def fit_dominance(sentences: list[tuple[list[str], np.ndarray, np.ndarray, np.ndarray, np.ndarray]], fps: float,
+                  max_iterations: int = 40) -> DominanceModel:
+    """Fit a :class:`DominanceModel` on training sentences.
+
+    sentences : (phones, starts s, ends s, poses (T, K) at ``fps``, mask (T,) bool of the frames
+    to fit: False for frames known to be bad, e.g. contaminated nodes). ``max_iterations``
+    bounds the L-BFGS-B iterations.
+    """
+    types = sorted({p for s in sentences for p in s[0]})
+    index = {p: k for k, p in enumerate(types)}
+    seqs = []
+    for phones, starts, ends, poses, mask in sentences:
+        keep = np.nonzero(mask & np.isfinite(poses).all(axis=1))[0]
+        seqs.append(_Sequence(np.array([index[p] for p in phones]), np.asarray(starts, float), np.asarray(ends, float),
+                              keep, poses[keep].astype(np.float64)))
+    n_types = len(types)
+    total = np.concatenate([s.poses for s in seqs])
+    y_norm = float((total**2).sum())
+
+    onehots = []
+    for sq in seqs:
+        onehot = np.zeros((len(sq.token_type), n_types))
+        onehot[np.arange(len(sq.token_type)), sq.token_type] = 1.0
+        onehots.append(onehot)
+
+    def weights_of(x: np.ndarray) -> list[tuple[np.ndarray, np.ndarray]]:
+        """Per sequence, the normalized token dominances (T_kept, n) and |t - c_i| (T_kept, n) s."""
+        alpha, theta = np.exp(x[:n_types]), np.exp(x[n_types:])
+        out = []
+        for sq in seqs:
+            n_frames = int(sq.frames.max()) + 1 if len(sq.frames) else 0
+            w = token_weights(sq.starts, sq.ends, alpha[sq.token_type], theta[sq.token_type], n_frames, fps)[sq.frames]
+            tau = np.abs(sq.frames[:, None] / fps - 0.5 * (sq.starts + sq.ends)[None, :])
+            out.append((w, tau))
+        return out
+
+    def solve(x: np.ndarray, with_gradient: bool = False):
+        tokens = weights_of(x)
+        blocks = [w @ onehot for (w, _), onehot in zip(tokens, onehots)]  # (T_kept, P) per sequence
+        gram = sum(a.T @ a for a in blocks) + _RIDGE * np.eye(n_types)
+        rhs = sum(a.T @ sq.poses for a, sq in zip(blocks, seqs))
+        targets = np.linalg.solve(gram, rhs)
+        residual = 0.0
+        gradient = np.zeros(2 * n_types)
+        theta = np.exp(x[n_types:])
+        for (w, tau), a, sq in zip(tokens, blocks, seqs):
+            fitted = a @ targets
+            error = fitted - sq.poses
+            residual += float((error**2).sum())
+            if with_gradient:
+                # variable projection: d residual / dx = 2 sum_t error_t . dF_t/dx at the solved targets, with
+                # dF_t/dx = sum_i w_ti g_ti (T_p(i) - F_t), g = d log D_i / dx (1 for log alpha, -theta |tau| for log theta)
+                token_targets = targets[sq.token_type]                                    # (n, K)
+                h = w * (error @ token_targets.T - (error * fitted).sum(axis=1, keepdims=True))  # (T_kept, n)
+                np.add.at(gradient, sq.token_type, 2.0 * h.sum(axis=0))
+                np.add.at(gradient, n_types + sq.token_type, 2.0 * (h * (-theta[sq.token_type] * tau)).sum(axis=0))
+        return targets, residual, gradient
+
+    # start: equal magnitudes, a 60 ms dominance decay (theta = 1/0.06 s)
+    x0 = np.concatenate([np.zeros(n_types), np.full(n_types, np.log(1 / 0.06))])
+    bounds = [_LOG_ALPHA_BOUNDS] * n_types + [_LOG_THETA_BOUNDS] * n_types
+    def objective(x: np.ndarray) -> tuple[float, np.ndarray]:
+        _, residual, gradient = solve(x, with_gradient=True)
+        return residual / y_norm, gradient / y_norm
+
+    result = minimize(objective, x0, jac=True, method="L-BFGS-B", bounds=bounds, options={"maxiter": max_iterations})
+    targets, _, _ = solve(result.x)
+    return DominanceModel(tuple(types), targets, np.exp(result.x[:n_types]), np.exp(result.x[n_types:]))
+
+
+def training_sentences(db) -> list[tuple[list[str], np.ndarray, np.ndarray, np.ndarray, np.ndarray]]:
+    """The training takes of a motion database as :func:`fit_dominance` sentences in PCA
+    coefficients, frames of pruned (removed) nodes masked out. db : a MotionDatabase."""
+    takes, phones, nodes = db.takes, db.phones, db.nodes
+    kept = np.zeros(len(db.coeffs), bool)
+    for k in range(len(nodes)):
+        kept[nodes.frames(k)] = True
+    out = []
+    for i in range(len(takes)):
+        if takes.split[i] != "train":
+            continue
+        sl = takes.frames(i)
+        rows = np.nonzero(phones.take == i)[0]
+        labels = [phones.phone[r] for r in rows]
+        mask = kept[sl].copy()
+        for r, p in zip(rows, labels):  # pauses are no node but belong to the fit
+            if p == PAU:
+                a, b = int(round(phones.start[r] * db.fps)), int(round(phones.end[r] * db.fps))
+                mask[a:b] = True
+        out.append((labels, phones.start[rows], phones.end[rows], db.coeffs[sl], mask))
+    return out
