@@ -21,7 +21,8 @@ Baselines, each given the same phone timing (and emotions):
 * ``baseline_emotion``: the same with the mean pose per (phone, emotion), the phone's mean
   where the database has no node of that phone in that emotion;
 * ``dominance``: a Cohen-Massaro coarticulation model (:mod:`facesynth.motion.dominance`)
-  fitted on the database's training takes (targets, dominance magnitudes and rates per phone).
+  fitted on the database's training takes (targets, dominance magnitudes and rates per phone);
+* ``dominance_emotion``: the same per (phone, emotion), given each phone's emotion.
 """
 
 from __future__ import annotations
@@ -35,7 +36,7 @@ from .config import EvaluateSettings, NormalizeSettings, SynthesizeSettings
 from .errors import InputError
 from .model.corpus import Corpus
 from .model.motiondb import MotionDatabase
-from .motion.dominance import DominanceModel, fit_dominance, training_sentences
+from .motion.dominance import DominanceModel, emotion_labels, fit_dominance, training_sentences
 from .motion.postprocess import frame_ranges
 from .motion.rigid import fill_gaps, rigid_align
 from .opencl import use_opencl
@@ -119,10 +120,12 @@ def baseline(db: MotionDatabase, utt: Utterance, by_emotion: bool = False) -> np
     return db.model.reconstruct(coeffs)
 
 
-def dominance_baseline(db: MotionDatabase, model: DominanceModel, utt: Utterance) -> np.ndarray:
-    """The fitted Cohen-Massaro model's markers (T, M, 3) mm at the capture rate."""
+def dominance_baseline(db: MotionDatabase, model: DominanceModel, utt: Utterance, by_emotion: bool = False) -> np.ndarray:
+    """The fitted Cohen-Massaro model's markers (T, M, 3) mm at the capture rate (``by_emotion``:
+    a model fitted per (phone, emotion))."""
     total = frame_ranges(utt.starts, utt.ends, db.fps)[-1][1]
-    return db.model.reconstruct(model.predict(utt.phones, utt.starts, utt.ends, total, db.fps))
+    labels = emotion_labels(utt.phones, utt.emotions) if by_emotion else utt.phones
+    return db.model.reconstruct(model.predict(labels, utt.starts, utt.ends, total, db.fps))
 
 
 def lip_gaps(markers: np.ndarray, names: list[str], lip_markers: tuple[str, ...]) -> np.ndarray:
@@ -192,9 +195,10 @@ def evaluate(db_path: Path, corpus: Path, settings: EvaluateSettings, synth: Syn
     sentences = sentences if sentences is not None else heldout(corpus, db, settings.split, normalize_settings)
     if tc is None:
         tc = db.transition_panels(synth) if use_opencl(synth.use_opencl) else db.transition(synth)
-    baselines = ("baseline", "baseline_emotion", "dominance") if with_baseline else ()
+    baselines = ("baseline", "baseline_emotion", "dominance", "dominance_emotion") if with_baseline else ()
     per_method: dict[str, list[dict]] = {"dp": [], **{b: [] for b in baselines}}
-    dominance = fit_dominance(training_sentences(db), db.fps, settings.dominance_iterations) if with_baseline else None
+    dominance = {by: fit_dominance(training_sentences(db, by_emotion=by), db.fps, settings.dominance_iterations)
+                 for by in (False, True)} if with_baseline else {}
     records = []
     for s in progress(sentences, "evaluate"):
         res = synthesize(db, s.utterance, {}, synth, tc=tc)
@@ -206,8 +210,9 @@ def evaluate(db_path: Path, corpus: Path, settings: EvaluateSettings, synth: Syn
         k = db.marker_names.index(settings.plot_marker)
         record = {"take": s.take, "emotion": s.emotion, "fps": db.fps, "truth": s.truth[:, k], "dp": res["markers_capture"][:, k]}
         for method in baselines:
-            if method == "dominance":
-                base = dominance_baseline(db, dominance, s.utterance)
+            if method.startswith("dominance"):
+                by = method == "dominance_emotion"
+                base = dominance_baseline(db, dominance[by], s.utterance, by_emotion=by)
             else:
                 base = baseline(db, s.utterance, by_emotion=(method == "baseline_emotion"))
             m_base = sentence_metrics(base, s.truth, s.utterance, db.fps, db.marker_names, settings)

@@ -35,9 +35,10 @@ _LOG_THETA_BOUNDS = (np.log(1.0), np.log(200.0))  # 1/s: dominance half-widths f
 class DominanceModel:
     """Cohen-Massaro parameters per phone type.
 
-    phones : the P phone types; targets : (P, K) poses; magnitude : (P,) alpha;
-    rate : (P,) theta in 1/s. A phone not seen in fitting takes the mean target with the
-    median magnitude and rate.
+    phones : the P phone types (phones, or phone|emotion labels, :func:`emotion_labels`);
+    targets : (P, K) poses; magnitude : (P,) alpha; rate : (P,) theta in 1/s. A label not
+    seen in fitting takes the mean target with the median magnitude and rate (an unseen
+    phone|emotion first the mean of that phone's other emotions).
     """
 
     phones: tuple[str, ...]
@@ -47,10 +48,16 @@ class DominanceModel:
 
     def _lookup(self, phones: list[str]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         index = {p: k for k, p in enumerate(self.phones)}
-        mean = self.targets.mean(axis=0)
-        targets = np.stack([self.targets[index[p]] if p in index else mean for p in phones])
-        alpha = np.array([self.magnitude[index[p]] if p in index else np.median(self.magnitude) for p in phones])
-        theta = np.array([self.rate[index[p]] if p in index else np.median(self.rate) for p in phones])
+        rows = []
+        for p in phones:
+            if p in index:
+                rows.append([index[p]])
+            else:  # phone|emotion unseen: the phone in the other emotions; else everything
+                same = [k for k, q in enumerate(self.phones) if q.split("|")[0] == p.split("|")[0]]
+                rows.append(same or list(range(len(self.phones))))
+        targets = np.stack([self.targets[r].mean(axis=0) for r in rows])
+        alpha = np.array([np.median(self.magnitude[r]) for r in rows])
+        theta = np.array([np.median(self.rate[r]) for r in rows])
         return targets, alpha, theta
 
     def predict(self, phones: list[str], starts: np.ndarray, ends: np.ndarray, n_frames: int, fps: float) -> np.ndarray:
@@ -149,10 +156,18 @@ def fit_dominance(sentences: list[tuple[list[str], np.ndarray, np.ndarray, np.nd
     return DominanceModel(tuple(types), targets, np.exp(result.x[:n_types]), np.exp(result.x[n_types:]))
 
 
-def training_sentences(db) -> list[tuple[list[str], np.ndarray, np.ndarray, np.ndarray, np.ndarray]]:
+def emotion_labels(phones: list[str], emotions: list[str]) -> list[str]:
+    """Phone labels that carry the emotion ('aa|happy'): a model fitted on them has a target,
+    magnitude and rate per (phone, emotion); a pause stays one type."""
+    return [p if p == PAU else f"{p}|{e}" for p, e in zip(phones, emotions)]
+
+
+def training_sentences(db, by_emotion: bool = False) -> list[tuple[list[str], np.ndarray, np.ndarray, np.ndarray, np.ndarray]]:
     """The training takes of a motion database as :func:`fit_dominance` sentences in PCA
-    coefficients, frames of pruned (removed) nodes masked out. db : a MotionDatabase."""
+    coefficients, frames of pruned (removed) nodes masked out. db : a MotionDatabase.
+    ``by_emotion``: phone labels per (phone, emotion) (:func:`emotion_labels`)."""
     takes, phones, nodes = db.takes, db.phones, db.nodes
+    phone_emotion = phones.emotions(takes)
     kept = np.zeros(len(db.coeffs), bool)
     for k in range(len(nodes)):
         kept[nodes.frames(k)] = True
@@ -164,6 +179,8 @@ def training_sentences(db) -> list[tuple[list[str], np.ndarray, np.ndarray, np.n
         rows = np.nonzero(phones.take == i)[0]
         labels = [phones.phone[r] for r in rows]
         mask = kept[sl].copy()
+        if by_emotion:
+            labels = emotion_labels(labels, [phone_emotion[r] for r in rows])
         for r, p in zip(rows, labels):  # pauses are no node but belong to the fit
             if p == PAU:
                 a, b = int(round(phones.start[r] * db.fps)), int(round(phones.end[r] * db.fps))

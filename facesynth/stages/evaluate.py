@@ -70,7 +70,8 @@ def write_report(folder: Path, metrics: dict, images: list[str], meta: dict) -> 
              f"<h1>Evaluation on {meta['sentences']} held-out sentences</h1>",
              f"<p>Database {html.escape(meta['db'])}; ground truth {html.escape(meta['heldout'])} (split '{meta['split']}'). "
              "Baselines: <i>baseline</i>, the per-phoneme mean pose, linearly interpolated; <i>baseline_emotion</i>, the mean "
-             "pose per (phone, emotion); <i>dominance</i>, a Cohen-Massaro coarticulation model fitted on the training takes.</p><h2>Overall</h2>", table(lambda m: m["overall"])]
+             "pose per (phone, emotion); <i>dominance</i>, a Cohen-Massaro coarticulation model fitted on the training takes; <i>dominance_emotion</i>, the same "
+             "per (phone, emotion).</p><h2>Overall</h2>", table(lambda m: m["overall"])]
     emotions = sorted(next(iter(metrics.values()))["per_emotion"])
     for e in emotions:
         parts += [f"<h2>{html.escape(e)}</h2>", table(lambda m, e=e: m["per_emotion"][e])]

@@ -22,6 +22,7 @@ CHECKED = {
     "baseline": ["rms_mm", "velocity_rms_mm_s"],
     "baseline_emotion": ["rms_mm"],
     "dominance": ["rms_mm"],
+    "dominance_emotion": ["rms_mm"],
 }
 
 
