@@ -54,8 +54,17 @@ STIFFNESS_HZ = {"jawOpen": 4.5, "jawForward": 3.5, "funnel": 6.0, "pucker": 5.0,
                 "rollUpper": 7.0, "press": 7.0, "stretch": 6.0, "upperUp": 6.5, "lowerDown": 6.5,
                 "shrugLower": 5.0, "shrugUpper": 5.0, "spread": 5.5}
 #: Natural frequency (Hz) of the lip-closure drive, and its virtual target (beyond contact at 1).
-CLOSURE_HZ = 11.0
-CLOSURE_VIRTUAL_TARGET = 1.7
+#: The lips close at up to ~250 mm/s, so the closing gesture starts well before the acoustic
+#: closure (:data:`CLOSURE_ONSET_LEAD_S`) and the release is timed to the phone's end
+#: (:data:`CLOSURE_OFFSET_LEAD_S`: the drive needs that long to fall back to contact).
+CLOSURE_HZ = 5.0
+CLOSURE_VIRTUAL_TARGET = 1.8
+CLOSURE_ONSET_LEAD_S = 0.07
+CLOSURE_OFFSET_LEAD_S = 0.045
+#: The fastest the closure itself moves the lower lip (mm/s); the jaw adds its own motion, and
+#: lower-lip speeds in speech stay within a few hundred mm/s. From a wide-open vowel the lips
+#: start closing earlier, and open later, rather than faster.
+MAX_LIP_SPEED_MM_S = 200.0
 #: How far ahead (s) a consonant looks for a rounded vowel, and the decay per phone in between.
 ROUNDING_LOOKAHEAD_S = 0.35
 ROUNDING_DECAY = 0.85
@@ -197,6 +206,12 @@ class ContactSolver:
     lip_pairs: np.ndarray
     target_gap_mm: float = 0.0
 
+    def closing_mm(self) -> float:
+        """How far one unit of ``mouthClose`` moves the lower inner lip toward the upper (mm)."""
+        close = self.rig.shape_index("mouthClose")
+        up, lo = self.lip_pairs[:, 0], self.lip_pairs[:, 1]
+        return float(np.mean(self.rig.deltas[close, lo, 1] - self.rig.deltas[close, up, 1]))
+
     def needed_close(self, weights: np.ndarray) -> np.ndarray:
         """weights : (T, E) with mouthClose ignored. Returns (T,) the closing weight, >= 0."""
         close = self.rig.shape_index("mouthClose")
@@ -234,20 +249,37 @@ def articulate(phones: list[str], starts: np.ndarray, ends: np.ndarray, stress: 
                 weights[:, rig.shape_index(shape)] = channels[:, c] * side_frames[:, c, k]
         else:
             weights[:, rig.shape_index(shapes[0])] = channels[:, c]
-    drive_input = target_sequence(np.where(closure, CLOSURE_VIRTUAL_TARGET, 0.0), starts, ends, n_frames, fps)
+    t = np.arange(n_frames) / fps
+    drive_input = np.zeros(n_frames)
+    for a, b in zip(starts[closure], ends[closure]):
+        drive_input[(t >= a - CLOSURE_ONSET_LEAD_S) & (t < b - CLOSURE_OFFSET_LEAD_S)] = CLOSURE_VIRTUAL_TARGET
     drive = critically_damped(drive_input[:, None], stiffness[:, None] * 2 * np.pi * CLOSURE_HZ, fps)[:, 0]
     return weights, drive
 
 
-def apply_contact(weights: np.ndarray, drive: np.ndarray, solver: ContactSolver, press_gain: float = 0.35) -> np.ndarray:
+def slew_limited(values: np.ndarray, max_step: float) -> np.ndarray:
+    """The smallest curve at or above ``values`` (T,) that changes by at most ``max_step`` per
+    frame: rises start earlier (a backward pass) and falls end later (a forward pass)."""
+    out = np.asarray(values, float).copy()
+    for t in range(len(out) - 2, -1, -1):
+        out[t] = max(out[t], out[t + 1] - max_step)
+    for t in range(1, len(out)):
+        out[t] = max(out[t], out[t - 1] - max_step)
+    return out
+
+
+def apply_contact(weights: np.ndarray, drive: np.ndarray, solver: ContactSolver, fps: float = 120.0,
+                  press_gain: float = 0.35) -> np.ndarray:
     """Put the lip closure into ``weights`` (T, E), in place and returned.
 
     Where the closure drive is below 1 the lips approach contact in proportion; at 1 and
     above they touch (``mouthClose`` solved on the rig), and the excess presses them together
-    (``mouthPress_L/R``) and rolls them in a little.
+    (``mouthPress_L/R``) and rolls them in a little. ``mouthClose`` changes no faster than
+    :data:`MAX_LIP_SPEED_MM_S` allows (``fps``: frames per second of ``weights``).
     """
     rig = solver.rig
-    reach = np.clip(drive, 0.0, 1.0)
+    # the opening shapes give way over at least 60 ms, like the closure itself
+    reach = slew_limited(np.clip(drive, 0.0, 1.0), 1.0 / (0.06 * fps))
     excess = np.clip(drive - 1.0, 0.0, None)
     for name, gain in (("mouthPress_L", press_gain), ("mouthPress_R", press_gain),
                        ("mouthRollLower", 0.1), ("mouthRollUpper", 0.08)):
@@ -258,5 +290,6 @@ def apply_contact(weights: np.ndarray, drive: np.ndarray, solver: ContactSolver,
         k = rig.shape_index(name)
         weights[:, k] *= 1.0 - 0.8 * reach
     needed = solver.needed_close(weights)
-    weights[:, rig.shape_index("mouthClose")] = reach ** 1.5 * needed
+    max_step = MAX_LIP_SPEED_MM_S / fps / solver.closing_mm()
+    weights[:, rig.shape_index("mouthClose")] = np.minimum(slew_limited(reach * needed, max_step), needed)
     return weights

@@ -134,7 +134,7 @@ def perform(words: list[str], emotion: str, rng: np.random.Generator, rig: FaceR
     weights[:, jaw_side] += rng.uniform(0.0, 0.12) * weights[:, rig.shape_index("jawOpen")]
     couple_cheeks_and_nose(rig, weights)
     np.clip(weights, 0.0, 1.0, out=weights)
-    apply_contact(weights, drive, solver)
+    apply_contact(weights, drive, solver, fps)
     np.clip(weights, 0.0, 1.0, out=weights)
 
     phrase_ends = [a for a, b, p in zip(utt.starts[1:], utt.ends[1:], utt.phones[1:]) if p == PAU]
