@@ -81,8 +81,10 @@ class Attr:
 @dataclass(frozen=True)
 class Dataset:
     """A dataset: dtype (one of :data:`DTYPES`, or a tuple of those allowed), shape in symbols,
-    the unit of its numbers (stored as the ``units`` attribute when ``attrs`` lists it), and
-    whether every number must be finite (True, False, or only in the named variant)."""
+    the unit of its numbers (stored as the ``units`` attribute when ``attrs`` lists it),
+    whether every number must be finite (True, False, or only in the named variant), and the
+    range of its numbers: ``ge`` a lower bound, ``below`` a symbol whose size every number must
+    stay under (an index into the rows that symbol counts)."""
 
     name: str
     dtype: str | tuple[str, ...]
@@ -92,6 +94,8 @@ class Dataset:
     attrs: tuple[Attr, ...] = ()
     finite: Required = True
     required: Required = True
+    ge: float | None = None
+    below: str | None = None
 
 
 @dataclass(frozen=True)
@@ -294,10 +298,10 @@ MOTIONDB = Kind("motiondb", SCHEMAS["motiondb"], (
     )),
     Group("pairs", "pair-terms", "the pair terms of Table I, row = predecessor candidate i, column = node j", (
         Dataset("dsc", "float32", ("N", "N"), "DSC(o_i, pre(o_j)) of Eq. 6; 0 where o_j has no predecessor",
-                "mm^2/frame^3", (_units("mm^2/frame^3"), _PAIR_LAYOUT)),
-        Dataset("pgap", "float32", ("N", "N"), "PGap of Eq. 8 from o_i to o_j", "mm", (MM, _PAIR_LAYOUT)),
+                "mm^2/frame^3", (_units("mm^2/frame^3"), _PAIR_LAYOUT), ge=0),
+        Dataset("pgap", "float32", ("N", "N"), "PGap of Eq. 8 from o_i to o_j", "mm", (MM, _PAIR_LAYOUT), ge=0),
         Dataset("vgap", "float32", ("N", "N"), "VGap of Eq. 9 from o_i to o_j", "mm/frame",
-                (_units("mm/frame"), _PAIR_LAYOUT)),
+                (_units("mm/frame"), _PAIR_LAYOUT), ge=0),
     ), attrs=(Attr("device", "str", "where PGap and VGap were computed"),
            Attr("device_reason", "str", "why that device (the OpenCL choice, or why NumPy)"))),
     Group("boundary", "boundary-states", "the node boundary states behind Eq. 8-9 (3M vectors)", (
@@ -392,7 +396,7 @@ MESHANIM = Kind("meshanim", SCHEMAS["meshanim"], (
     Dataset("vertices", "float32", ("Fo", "V", 3), "the animated mesh", "mesh units",
             (_units("mesh units"), _fps()), finite=False),
     Dataset("rest", "float32", ("V", 3), "the mesh as read", "mesh units"),
-    Dataset("faces", "int32", ("Tri", 3), "triangles (rows of `rest`)"),
+    Dataset("faces", "int32", ("Tri", 3), "triangles (rows of `rest`)", ge=0, below="V"),
     Group("weights", "csr-matrix", "the (V, B) Gaussian weights of Eq. 14-15 in CSR form; rows sum to 1 (0 where unreached)", (
         Dataset("data", "float32", ("W",), "the non-zero weights"),
         Dataset("indices", ("int32", "int64"), ("W",), "column (bound marker) of each weight"),
@@ -473,8 +477,11 @@ def _rows(entries: tuple[Entry, ...]) -> list[str]:
             rows.append(f"| `{key}/` | group `{e.encoding}` | | | {_cell(attrs)} | {_required_text(e.required)} | "
                         f"{_cell(e.doc)}{local} |")
         else:
+            bounds = [f"values >= {e.ge:g}"] if e.ge is not None else []
+            bounds += [f"values < {e.below}"] if e.below else []
+            doc = e.doc + (f" ({', '.join(bounds)})" if bounds else "")
             rows.append(f"| `{key}` | {_dtype_text(e)} | {_shape_text(e.shape)} | {e.unit or ''} | {_cell(attrs)} | "
-                        f"{_required_text(e.required)} | {_cell(e.doc)} |")
+                        f"{_required_text(e.required)} | {_cell(doc)} |")
     return rows
 
 
