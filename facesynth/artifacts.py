@@ -152,7 +152,7 @@ def check_output_folder(path: Path, what: str, overwrite: bool | None = None) ->
     if path.exists() and not path.is_dir():
         raise OutputExistsError(f"{path}: is a file, but this output is a folder (for {what}); give a folder path.")
     if overwrite is False and path.is_dir() and any(path.iterdir()):
-        raise OutputExistsError(f"{path}: output folder exists; pass --overwrite to replace it or choose another path.")
+        raise OutputExistsError(f"{path}: is not empty; pass --overwrite to replace the folder or choose another path.")
     _writable_folder(path)
     clean_stale_temporaries(path)
 

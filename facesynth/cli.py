@@ -138,7 +138,7 @@ def _check_overrides_read(command: str, overrides: tuple[str, ...]) -> None:
         section = parse_override(item)[0]
         if section not in reads:
             readers = [name for name, sections in READS.items() if section in sections]
-            mine = ", ".join(f"[{name}]" for name in reads) or "no settings"
+            mine = ", ".join(f"[{name}]" for name in reads if name != "limits") or "no settings"
             raise OverrideError(f"--set {item}: [{section}] is read by "
                                 f"{', '.join('facesynth ' + name for name in readers)}; "
                                 f"facesynth {command} reads {mine}, so this setting would be ignored.")
@@ -168,8 +168,8 @@ def _sigterm_raises():
 
 
 #: Output options that name a folder rather than a file, by command path.
-FOLDER_OUTPUTS: dict[str, tuple[str, ...]] = {"sample-corpus": ("out_dir",), "evaluate": ("output",),
-                                             "isomap build": ("images",)}
+FOLDER_OUTPUTS: dict[str, dict[str, str]] = {"sample-corpus": {"out_dir": "the corpus"},
+                                             "evaluate": {"output": "the report"}, "isomap build": {"images": "the images"}}
 
 
 def _check_outputs(command: str, kwargs: dict, overwrite: bool) -> None:
@@ -183,7 +183,7 @@ def _check_outputs(command: str, kwargs: dict, overwrite: bool) -> None:
         if value is None:
             continue
         if name in folders:
-            check_output_folder(Path(value), "this output", overwrite)
+            check_output_folder(Path(value), folders[name], overwrite)
         else:
             check_output(Path(value), overwrite)
 
