@@ -197,10 +197,15 @@ def value_problem(snapshot: Snapshot, key: str, data: np.ndarray) -> str | None:
     if e is None:
         return None
     data = np.asarray(data)
-    if data.dtype.kind == "f" and applies(e.finite, snapshot.variant) and data.size:
-        bad = int(data.size - np.count_nonzero(np.isfinite(data)))
-        if bad:
-            return f"{bad} non-finite value{'s' if bad > 1 else ''} (NaN or infinity) where every number must be finite"
+    if data.dtype.kind == "f" and data.size:
+        if applies(e.finite, snapshot.variant):
+            bad = int(data.size - np.count_nonzero(np.isfinite(data)))
+            if bad:
+                return f"{bad} non-finite value{'s' if bad > 1 else ''} (NaN or infinity) where every number must be finite"
+        else:  # NaN marks a missing sample here; an infinity is never a measurement
+            bad = int(np.count_nonzero(np.isinf(data)))
+            if bad:
+                return f"{bad} infinite value{'s' if bad > 1 else ''} where only finite numbers or NaN (missing) belong"
     if data.dtype.kind in "fiu" and data.size:
         if e.ge is not None:
             low = data.min()
