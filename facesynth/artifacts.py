@@ -293,12 +293,26 @@ def atomic_folder(path: Path, what: str, overwrite: bool = False) -> Iterator[Pa
 
 
 def input_record(path: Path) -> dict:
-    """Provenance entry of one input file: path, kind (if an artifact) and sha256."""
+    """Provenance entry of one input file: path, kind (if an artifact) and sha256.
+
+    For an artifact this command opened with :func:`open_artifact` the kind comes from that
+    validated snapshot (the file is not opened again), and a path that now names another file
+    (replaced while the command ran) is refused rather than recorded with the wrong hash."""
     path = Path(path)
+    handle, snapshot = next(((h, s) for h, s in _live_snapshots() if s.path == path), (None, None))
+    if snapshot is not None:
+        with contextlib.suppress(OSError):
+            held, now = os.fstat(handle), os.stat(path)
+            if (held.st_dev, held.st_ino) != (now.st_dev, now.st_ino):
+                raise InputError(f"{path}: was replaced while this command ran; run the command again.")
+        return {"path": str(path), "kind": snapshot.kind.name, "sha256": sha256_of(path)}
     kind = None
-    if h5py.is_hdf5(path):
-        with h5py.File(path, "r") as f:
-            kind = f.attrs.get("facesynth_kind")
+    try:
+        if h5py.is_hdf5(path):
+            with h5py.File(path, "r") as f:
+                kind = f.attrs.get("facesynth_kind")
+    except OSError:
+        kind = None
     return {"path": str(path), "kind": kind, "sha256": sha256_of(path)}
 
 
@@ -357,7 +371,20 @@ def write_artifact(
 
 #: What :func:`open_artifact` validated, by the operating-system file handle of the open file
 #: (``h5py`` hands out a new File object for ``dataset.file``; the handle is the same).
-_SNAPSHOTS: dict[int, object] = {}
+_SNAPSHOTS: dict[int, tuple[object, tuple[int, int]]] = {}  # handle -> (snapshot, (device, inode))
+
+
+def _live_snapshots() -> Iterator[tuple[int, object]]:
+    """(handle, snapshot) of the files still open on the inode they were validated on; others are forgotten."""
+    for handle, (snap, ids) in list(_SNAPSHOTS.items()):
+        try:
+            st = os.fstat(handle)
+        except OSError:
+            st = None
+        if st is None or (st.st_dev, st.st_ino) != ids:
+            _SNAPSHOTS.pop(handle, None)
+            continue
+        yield handle, snap
 
 
 def _handle(f: h5py.File) -> int | None:
@@ -370,7 +397,9 @@ def _handle(f: h5py.File) -> int | None:
 def snapshot_of(f: h5py.File):
     """The :class:`facesynth.check.Snapshot` of a file opened by :func:`open_artifact` (or None)."""
     handle = _handle(f)
-    snap = _SNAPSHOTS.get(handle) if handle is not None else None
+    if handle is None or handle not in _SNAPSHOTS:
+        return None
+    snap = dict(_live_snapshots()).get(handle)
     return snap if snap is not None and str(snap.path) == f.filename else None
 
 
@@ -443,8 +472,9 @@ def open_artifact(path: Path, kind: str) -> h5py.File:
         f.close()
         raise damaged(path, kind, "", exc) from None
     handle = _handle(f)
-    if handle is not None:
-        _SNAPSHOTS[handle] = snapshot
+    if handle is not None and snapshot is not None:
+        st = os.fstat(handle)
+        _SNAPSHOTS[handle] = (snapshot, (st.st_dev, st.st_ino))
     return f
 
 

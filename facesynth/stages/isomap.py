@@ -35,6 +35,7 @@ from scipy.spatial import Delaunay
 from ..artifacts import atomic_folder, check_output, check_output_folder
 from ..config import IsomapSettings, settings_json
 from ..errors import InputError
+from ..limits import require_memory
 from ..model.isomap import Cluster, PhonemeMaps
 from ..model.motiondb import MotionDatabase, Nodes
 from ..progress import progress
@@ -343,6 +344,18 @@ def write_index(folder: Path, clusters: list[Cluster], trajectories: dict[str, l
     (folder / "index.html").write_text("\n".join(parts), encoding="utf-8")
 
 
+def memory_estimate(nodes: Nodes, settings: IsomapSettings) -> float:
+    """Bytes the largest cluster's Isomap needs: its exactly embedded frames' geodesic distances
+    (n x n float64), the neighbour graph's shortest paths and the double-centred copy, about
+    three n x n float64 arrays."""
+    counts: dict[str, int] = {}
+    for phone, c in zip(nodes.phone, nodes.frame_count):
+        counts[phone] = counts.get(phone, 0) + int(c)
+    largest = max(counts.values(), default=0)
+    exact = largest if settings.max_exact_frames <= 0 else min(largest, settings.max_exact_frames)
+    return 3.0 * 8 * exact * exact
+
+
 def run(db_path: Path, out: Path, settings: IsomapSettings, images: Path | None = None, overwrite: bool = False) -> dict:
     """Embed every phoneme cluster of ``db_path``, write ``out`` (an ``isomap`` artifact) and,
     with ``images``, the PNGs and ``index.html`` there; returns a summary."""
@@ -352,6 +365,7 @@ def run(db_path: Path, out: Path, settings: IsomapSettings, images: Path | None 
     if settings.n_neighbors < 2:
         raise InputError("isomap.n_neighbors must be at least 2.")
     db = MotionDatabase.read(db_path)
+    require_memory(memory_estimate(db.nodes, settings), "embedding the largest phoneme cluster", str(db_path))
     t0 = time.perf_counter()
     clusters = build_clusters(db.coeffs, db.nodes, settings)
     embed_s = time.perf_counter() - t0
