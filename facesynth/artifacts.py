@@ -459,7 +459,8 @@ def open_artifact(path: Path, kind: str) -> h5py.File:
                 f"rebuild it with this version's `{PRODUCERS[kind]}`.")
         problems, snapshot = validate(f, path, bounds_in_force())
         if problems:
-            p = problems[0]
+            # a size past a bound first: it says what to raise, and the rest may follow from it
+            p = next((q for q in problems if "--set limits." in q.message or "memory" in q.message), problems[0])
             more = f" (and {len(problems) - 1} more problem{'s' * (len(problems) > 2)})" if len(problems) > 1 else ""
             message = p.message.rstrip(".")
             todo = "" if "--set limits." in message or "memory" in message else (

@@ -131,7 +131,9 @@ class Bounds:
                              f"{setting} = {limit / 1e6:.0f} MB; if that is right, raise it with --set {setting}=...")
             return False
         if self.available is not None and nbytes > self.available:
-            checker.say(key, f"declares {nbytes / 1e6:.0f} MB but {self.available / 1e6:.0f} MB of memory is available; "
+            from .limits import size_text
+
+            checker.say(key, f"declares {size_text(nbytes)} but {size_text(self.available)} of memory is available; "
                              "read it on a machine with more memory.")
             return False
         return True

@@ -65,7 +65,8 @@ def mem_available() -> int | None:
     return None
 
 
-def _size(nbytes: float) -> str:
+def size_text(nbytes: float) -> str:
+    """Bytes as people read them: '1.5 GB', '12.0 MB', '1.0 kB'."""
     for unit, scale in (("GB", 1e9), ("MB", 1e6)):
         if nbytes >= scale:
             return f"{nbytes / scale:.1f} {unit}"
@@ -76,5 +77,5 @@ def require_memory(nbytes: float, what: str, where: str) -> None:
     """Refuse work estimated to need ``nbytes`` of memory when less is available."""
     available = mem_available()
     if available is not None and nbytes > available:
-        raise InputError(f"{where}: {what} needs about {_size(nbytes)} of memory but {_size(available)} is available; "
+        raise InputError(f"{where}: {what} needs about {size_text(nbytes)} of memory but {size_text(available)} is available; "
                          "free memory, use a machine with more, or make the input smaller.")
