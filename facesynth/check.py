@@ -12,6 +12,8 @@ Like the NWB inspector, it reports every problem of a file, each as one sentence
 * an external or soft link, a dataset stored in external files or a virtual dataset:
   an artifact must stay inside its file, so none of these is followed or read;
 * a NaN or infinity in a dataset whose numbers must be finite;
+* a size past the ``[limits]`` bounds (markers, nodes, frames, vertices, bytes of one dataset),
+  which is reported without reading the dataset (a compression bomb is never expanded);
 * an input named in the ``inputs`` provenance that no longer exists or whose sha256 no longer
   matches (relative paths are read from the current directory, as the writers stored them).
 
@@ -21,6 +23,7 @@ reads a dataset in blocks of rows of at most :data:`SCAN_ELEMENTS` numbers.
 
 from __future__ import annotations
 
+import dataclasses
 import json
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -97,7 +100,9 @@ def check_file(path: Path, hashes: dict[Path, str] | None = None) -> FileReport:
         say("", f"cannot be opened as HDF5 ({exc}).")
         return report
     with f:
-        checker = _Checker(f, report, {} if hashes is None else hashes, bounds=bounds_in_force())
+        # size bounds apply; the memory available does not (the scan reads in bounded blocks)
+        bounds = dataclasses.replace(bounds_in_force(), available=None)
+        checker = _Checker(f, report, {} if hashes is None else hashes, bounds=bounds)
         try:
             checker.run()
         except OSError as exc:  # HDF5 could not read a part of the file: say so after what was found
