@@ -367,6 +367,13 @@ def write_artifact(
             f.attrs["config"] = config if isinstance(config, str) else json.dumps(config, sort_keys=True)
             f.attrs["inputs"] = json.dumps(records)
             yield f
+            from .check import written_problem
+
+            problem = written_problem(f, kind)
+            if problem:
+                sources = ", ".join(r["path"] for r in records) or "the inputs"
+                raise ArtifactError(f"{path}: {problem[0]}: the result {problem[1]}, so it was not written; an input "
+                                    f"({sources}) holds numbers out of range: check it with `facesynth check`.")
 
 
 #: What :func:`open_artifact` validated, by the operating-system file handle of the open file

@@ -33,7 +33,7 @@ import h5py
 import numpy as np
 
 from .artifacts import ENCODING_VERSION, PRODUCERS, SCHEMAS, sha256_of
-from .model.spec import COMMON_ATTRS, KINDS, SYMBOLS, Attr, Dataset, Entry, Group, Kind, applies, parse_size
+from .model.spec import COMMON_ATTRS, KINDS, MAX_FLOAT, MAX_INT, SYMBOLS, Attr, Dataset, Entry, Group, Kind, applies, parse_size
 
 #: Most numbers read at once by the finiteness scan (16 Mi: 64 MB of float32).
 SCAN_ELEMENTS = 1 << 24
@@ -209,20 +209,55 @@ def value_problem(snapshot: Snapshot, key: str, data: np.ndarray) -> str | None:
             bad = int(data.size - np.count_nonzero(np.isfinite(data)))
             if bad:
                 return f"{bad} non-finite value{'s' if bad > 1 else ''} (NaN or infinity) where every number must be finite"
+            largest = float(np.abs(data).max())
+            if largest > MAX_FLOAT:
+                return f"holds a magnitude of {largest:g}, beyond the largest an artifact holds ({MAX_FLOAT:g})"
         else:  # NaN marks a missing sample here; an infinity is never a measurement
             bad = int(np.count_nonzero(np.isinf(data)))
             if bad:
                 return f"{bad} infinite value{'s' if bad > 1 else ''} where only finite numbers or NaN (missing) belong"
+    if data.dtype.kind in "iu" and data.size:
+        extreme = max(abs(int(data.min())), abs(int(data.max())))
+        if extreme > MAX_INT:
+            return f"holds {extreme}, beyond the largest integer an artifact holds (2^53)"
     if data.dtype.kind in "fiu" and data.size:
         if e.ge is not None:
             low = data.min()
             if low < e.ge:  # NaN compares False: only where NaN is allowed
                 return f"holds {low:g}, below the smallest allowed value {e.ge:g}"
-        if e.below is not None and e.below in snapshot.sizes:
+        factor, symbol, offset = parse_size(e.below) if e.below is not None else (1, None, 0)
+        if symbol is not None and symbol in snapshot.sizes:
+            limit = factor * snapshot.sizes[symbol] + offset
             high = data.max()
-            if high >= snapshot.sizes[e.below]:
-                return f"holds {high:g}, but it indexes {e.below} = {snapshot.sizes[e.below]} rows"
+            if high >= limit:
+                return f"holds {high:g}, but its values must stay below {e.below} = {limit}"
     return None
+
+
+def written_problem(f: h5py.File, kind_name: str) -> tuple[str, str] | None:
+    """The first (key, problem) of the values an artifact being written holds against its
+    specification (non-finite where finite is required, magnitudes past :data:`MAX_FLOAT` /
+    :data:`MAX_INT`, ``ge`` bounds), or None. Writers run it before an output is published, so a
+    command never exits 0 having written a non-finite or out-of-range value. Reads in blocks."""
+    kind = KINDS[kind_name]
+    snapshot = Snapshot(Path(f.filename), kind, kind.variant(f.attrs), {})
+    found: list[tuple[str, str]] = []
+
+    def visit(name, obj):
+        if found or not isinstance(obj, h5py.Dataset) or obj.dtype.kind not in "fiu" or not obj.shape or not obj.size:
+            return
+        if entry_at(kind, name) is None:
+            return
+        row = int(np.prod(obj.shape[1:], dtype=np.int64)) or 1
+        step = max(1, SCAN_ELEMENTS // row)
+        for a in range(0, obj.shape[0], step):
+            problem = value_problem(snapshot, name, obj[a : a + step])
+            if problem:
+                found.append(("/" + name, problem))
+                return
+
+    f.visititems(visit)
+    return found[0] if found else None
 
 
 def _text(value) -> str:

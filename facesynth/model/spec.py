@@ -47,6 +47,15 @@ SYMBOLS: dict[str, str] = {
     "tp": "Delaunay triangles of one cluster's PCA map",
 }
 
+#: The largest magnitude of any float in an artifact where numbers must be finite (mm, s, costs,
+#: PCA coefficients: real values stay many orders below; a larger one is damage, and would
+#: overflow float32 sums of squares downstream).
+MAX_FLOAT = 1e15
+
+#: The largest magnitude of any integer in an artifact (indices and counts; 2**53 is where
+#: float64 stops holding every integer).
+MAX_INT = 2**53
+
 #: The dtypes a dataset may be declared with.
 DTYPES = ("float32", "float64", "int32", "int64", "bool", "str")
 
@@ -399,8 +408,8 @@ MESHANIM = Kind("meshanim", SCHEMAS["meshanim"], (
     Dataset("faces", "int32", ("Tri", 3), "triangles (rows of `rest`)", ge=0, below="V"),
     Group("weights", "csr-matrix", "the (V, B) Gaussian weights of Eq. 14-15 in CSR form; rows sum to 1 (0 where unreached)", (
         Dataset("data", "float32", ("W",), "the non-zero weights"),
-        Dataset("indices", ("int32", "int64"), ("W",), "column (bound marker) of each weight"),
-        Dataset("indptr", ("int32", "int64"), ("V+1",), "row starts in `data`"),
+        Dataset("indices", ("int32", "int64"), ("W",), "column (bound marker) of each weight", ge=0, below="B"),
+        Dataset("indptr", ("int32", "int64"), ("V+1",), "row starts in `data`", ge=0, below="W+1"),
         Dataset("markers", "str", ("B",), "the bound markers"),
         Dataset("vertex_of", "int64", ("B",), "each bound marker's vertex"),
     ), attrs=(Attr("shape", "ints", "the matrix's shape (V, B)", shape=("V", "B")),)),
@@ -492,7 +501,8 @@ def markdown() -> str:
            "(`3M` is three times M, `V+1` is V plus one).", "",
            "| symbol | counts |", "|---|---|"]
     out += [f"| `{s}` | {doc} |" for s, doc in SYMBOLS.items()]
-    out += ["", "## Root attributes of every artifact", "", "| attribute | type | meaning |", "|---|---|---|"]
+    out += ["", f"Every float where numbers must be finite has a magnitude of at most {MAX_FLOAT:g}, every integer at most "
+            f"2^53; readers refuse larger values.", "", "## Root attributes of every artifact", "", "| attribute | type | meaning |", "|---|---|---|"]
     out += [f"| `{a.name}` | {a.type} | {_cell(a.doc)} |" for a in COMMON_ATTRS]
     out += ["", f"Every group carries `encoding-type` (named in the tables below as `group TYPE`) and "
             f"`encoding-version` = `{ENCODING_VERSION}`; the root is identified by `facesynth_kind` instead.",
