@@ -222,15 +222,15 @@ def value_problem(snapshot: Snapshot, key: str, data: np.ndarray) -> str | None:
             return f"holds {extreme}, beyond the largest integer an artifact holds (2^53)"
     if data.dtype.kind in "fiu" and data.size:
         if e.ge is not None:
-            low = data.min()
+            low = data.min().item()
             if low < e.ge:  # NaN compares False: only where NaN is allowed
                 return f"holds {low:g}, below the smallest allowed value {e.ge:g}"
         factor, symbol, offset = parse_size(e.below) if e.below is not None else (1, None, 0)
         if symbol is not None and symbol in snapshot.sizes:
             limit = factor * snapshot.sizes[symbol] + offset
-            high = data.max()
+            high = data.max().item()
             if high >= limit:
-                return f"holds {high:g}, but its values must stay below {e.below} = {limit}"
+                return f"holds {high}, but its values must stay below {e.below} = {limit}"
     return None
 
 
@@ -346,9 +346,10 @@ class _Checker:
         for symbol in symbols:
             seen = self.seen.pop(symbol, [])
             values = [s.value for s in seen]
-            if len(set(values)) < 2:
-                continue
             if not values:
+                continue
+            if len(set(values)) < 2:
+                self.sizes.setdefault(symbol, values[0])
                 continue
             right = max(dict.fromkeys(values), key=values.count)  # most keys agree; ties: the first seen
             self.sizes.setdefault(symbol, right)

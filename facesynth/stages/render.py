@@ -373,6 +373,7 @@ def run(anims: list[Path], audios: list[Path], out: Path, settings: RenderSettin
             pix_fmt_out="yuvj420p", audio_path=str(wav.resolve()), audio_codec="pcm_s16le", macro_block_size=16,
             output_params=["-f", "avi", "-fflags", "+bitexact", "-flags:v", "+bitexact", "-flags:a", "+bitexact"],
         )
+        cleanup.callback(writer.close)  # on an error ffmpeg is stopped before its audio is removed
         writer.send(None)
         frames = (f for c in clips for f in render_frames(c, settings, other))
         for frame in progress(frames, "render", length=n_frames):
