@@ -12,6 +12,7 @@ import pytest
 from . import cases
 
 
+@pytest.mark.hostile_long
 def test_every_base_is_valid(hostile_bases, tmp_path):
     """Each kind's command succeeds on the unmutated input, so a refusal is the mutation's doing."""
     assert cases.check_bases(hostile_bases, tmp_path) == {}
