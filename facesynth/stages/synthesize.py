@@ -34,10 +34,12 @@ def run(db_path: Path, out: Path, settings: SynthesizeSettings, ingest_settings:
         raise UsageError("motion-node constraints need the DP search (Eq. 10); drop --constraints or use --search dp.")
     check_output(out, overwrite)
     inputs = [p for p in (db_path, phones_path, emotions_path, constraints_path, audio) if p is not None]
-    records = input_records_in_background(inputs)
     t0 = time.perf_counter()
     db = MotionDatabase.read(db_path)
     load_s = time.perf_counter() - t0
+    # hashed from here, while the search runs: the database's record comes from the file just
+    # validated (not opened again), and a database replaced meanwhile is refused
+    records = input_records_in_background(inputs)
     utt, constraints = prepare(db, phones_path, emotions_path, constraints_path, ingest_settings, audio, text,
                                align_settings)
     require_memory(memory_estimate(len(db.nodes), len(utt)), f"the search over {len(db.nodes)} motion nodes for "
