@@ -1,7 +1,7 @@
 """The ``facesynth`` command line: thin click commands that parse, load settings, call a
 stage and map user errors to exit statuses: 0 ok, 1 bad input or data (one line), 2 bad
 usage (a missing or contradictory option, a bad ``--set``; click's usage message), 130
-interrupted."""
+interrupted (Ctrl-C), 143 terminated (SIGTERM); outputs are checked before any work."""
 
 from __future__ import annotations
 
@@ -191,7 +191,9 @@ def _check_outputs(command: str, kwargs: dict, overwrite: bool) -> None:
 def stage(func=None, *, writes: bool = True):
     """Add the global options to a command (``--overwrite`` only when it ``writes`` files) and map
     its errors to exit statuses: UsageError (bad usage, e.g. a bad ``--set``) to click's usage
-    message and 2, any other FacesynthError to one line and 1, Ctrl-C to 130."""
+    message and 2, any other FacesynthError to one line and 1, Ctrl-C to 130, SIGTERM to 143.
+    Before the command runs, its output paths are checked (writable, no clobbering) and the
+    ``[limits]`` section is put in force (:mod:`facesynth.limits`)."""
     if func is None:
         return functools.partial(stage, writes=writes)
 
