@@ -12,7 +12,7 @@ CONFIG := configs/default.toml
 PRESET ?= small
 SEED   ?= 0
 
-.PHONY: all demo test report bench clean
+.PHONY: all demo test test-hostile report bench clean
 
 all: demo
 
@@ -24,6 +24,11 @@ $(STAMP): pyproject.toml
 
 test: $(STAMP)
 	$(BIN)/python -m pytest -q
+
+# The long hostile-input run: every input kind x mutation over five seeds (several minutes;
+# `make test` runs a quick part of it). `benchmarks/hostile.py` prints the same cases as a table.
+test-hostile: $(STAMP)
+	$(BIN)/python -m pytest -q -m hostile_long tests/hostile
 
 # Every figure the README quotes, from fresh sample corpora over several seeds (mean and
 # spread), with the host's processor and memory bandwidth -> docs/results.md, docs/results.json.

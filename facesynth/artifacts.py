@@ -8,10 +8,13 @@ artifacts it was made from. Readers check kind and schema; writes are atomic.
 from __future__ import annotations
 
 import contextlib
+import errno
 import hashlib
 import json
 import mmap
 import os
+import re
+import shutil
 import stat
 import threading
 import time
@@ -118,50 +121,198 @@ def _hash_cache_put(key: str, hex_digest: str) -> None:
             tmp.unlink()
 
 
+def _writable_folder(path: Path) -> None:
+    """Refuse an output whose folder is missing or not writable."""
+    folder = path.parent
+    if not folder.is_dir():
+        raise OutputExistsError(f"{path}: the output folder {folder} does not exist; create it first.")
+    if not os.access(folder, os.W_OK | os.X_OK):
+        raise OutputExistsError(f"{path}: the output folder {folder} is not writable; choose another place.")
+
+
 def check_output(path: Path, overwrite: bool) -> None:
-    """Refuse to replace an existing output unless ``overwrite`` is set, and a folder always
-    (an output here is one file; ``--overwrite`` does not delete folders)."""
-    if Path(path).is_dir():
+    """Refuse, before any work, an output that cannot be written: an existing file without
+    ``overwrite``, a folder (an output here is one file; ``--overwrite`` does not delete
+    folders), or a missing or read-only folder. Stale temporary files of this output left by
+    killed runs are removed."""
+    path = Path(path)
+    if path.is_dir():
         raise OutputExistsError(f"{path}: is a folder, but this output is one file; give a file name (e.g. inside that folder).")
-    if Path(path).exists() and not overwrite:
+    if path.exists() and not overwrite:
         raise OutputExistsError(f"{path}: output exists; pass --overwrite to replace it or choose another path.")
+    _writable_folder(path)
+    clean_stale_temporaries(path)
 
 
-def check_output_folder(path: Path, what: str) -> None:
-    """Refuse an output folder (``what``: 'the report', 'the images') whose path is a file."""
-    if Path(path).exists() and not Path(path).is_dir():
+def check_output_folder(path: Path, what: str, overwrite: bool | None = None) -> None:
+    """Refuse an output folder (``what``: 'the report', 'the images') whose path is a file, one
+    that exists and is not empty when ``overwrite`` is False (None: not checked), or whose parent
+    is missing or read-only."""
+    path = Path(path)
+    if path.exists() and not path.is_dir():
         raise OutputExistsError(f"{path}: is a file, but this output is a folder (for {what}); give a folder path.")
+    if overwrite is False and path.is_dir() and any(path.iterdir()):
+        raise OutputExistsError(f"{path}: is not empty; pass --overwrite to replace the folder or choose another path.")
+    _writable_folder(path)
+    clean_stale_temporaries(path)
+
+
+#: Temporary outputs are named ``NAME.tmp-PID`` in the output's folder (with a suffix, e.g.
+#: ``.wav``, for a helper file of that output).
+_TEMP = re.compile(r"^(?P<name>.+)\.tmp-(?P<pid>\d+)(?:\.[A-Za-z0-9]+)?$")
+
+
+def temporary_path(path: Path) -> Path:
+    """The temporary name of ``path`` for this process: ``NAME.tmp-PID`` beside it."""
+    path = Path(path)
+    return path.with_name(f"{path.name}.tmp-{os.getpid()}")
+
+
+def _alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:  # another user's process
+        return True
+    return True
+
+
+def clean_stale_temporaries(path: Path) -> list[Path]:
+    """Remove ``NAME.tmp-PID`` files and folders of the output ``path`` left by runs that were
+    killed (their process is gone); returns what was removed. Those of live processes stay."""
+    path = Path(path)
+    removed = []
+    try:
+        entries = list(path.parent.iterdir())
+    except OSError:
+        return removed
+    for entry in entries:
+        m = _TEMP.match(entry.name)
+        if not m or m.group("name") != path.name or int(m.group("pid")) == os.getpid() or _alive(int(m.group("pid"))):
+            continue
+        with contextlib.suppress(OSError):
+            if entry.is_dir() and not entry.is_symlink():
+                shutil.rmtree(entry)
+            else:
+                entry.unlink()
+            removed.append(entry)
+    return removed
+
+
+def _fsync_folder(folder: Path) -> None:
+    with contextlib.suppress(OSError):
+        fd = os.open(folder, os.O_RDONLY)
+        try:
+            os.fsync(fd)
+        finally:
+            os.close(fd)
+
+
+def publish(tmp: Path, path: Path, overwrite: bool) -> None:
+    """Move the finished file ``tmp`` to ``path``. Without ``overwrite`` the final name is created
+    exclusively (a hard link, or where the file system has none an exclusive placeholder then
+    replaced), so of two writers racing for one output exactly one wins and the other gets
+    OutputExistsError; with ``overwrite``, ``os.replace``."""
+    if overwrite:
+        os.replace(tmp, path)
+    else:
+        lost = OutputExistsError(f"{path}: another process wrote this output while this one ran; its file is kept. "
+                                 "Pass --overwrite to replace it or choose another path.")
+        try:
+            os.link(tmp, path)
+        except FileExistsError:
+            raise lost from None
+        except OSError:  # no hard links here (some network and FUSE file systems)
+            try:
+                os.close(os.open(path, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o644))
+            except FileExistsError:
+                raise lost from None
+            os.replace(tmp, path)
+        else:
+            os.unlink(tmp)
+    _fsync_folder(path.parent)
 
 
 @contextlib.contextmanager
 def atomic_path(path: Path, overwrite: bool = False) -> Iterator[Path]:
-    """Yield a temporary path beside ``path``; on success fsync it and rename it into place.
+    """Yield a temporary path beside ``path`` (``NAME.tmp-PID``); on success fsync it and
+    :func:`publish` it at ``path``.
 
-    On any exception (or a kill) the temporary file is removed (or left under its
-    ``.tmp-<pid>`` name), never at ``path``.
+    On any exception, Ctrl-C or SIGTERM (which the command line turns into an exception) the
+    temporary file is removed; a ``kill -9`` leaves it under its temporary name, never at
+    ``path``, and the next run writing ``path`` removes it.
     """
     path = Path(path)
     check_output(path, overwrite)
-    if not path.parent.exists():
-        raise InputError(f"{path}: the output folder {path.parent} does not exist; create it first.")
-    tmp = path.with_name(f"{path.name}.tmp-{os.getpid()}")
+    tmp = temporary_path(path)
     try:
         yield tmp
         with open(tmp, "rb+") as fh:
             os.fsync(fh.fileno())
-        os.replace(tmp, path)
+        publish(tmp, path, overwrite)
     finally:
-        if tmp.exists():
+        with contextlib.suppress(FileNotFoundError):
             tmp.unlink()
 
 
-def input_record(path: Path) -> dict:
-    """Provenance entry of one input file: path, kind (if an artifact) and sha256."""
+@contextlib.contextmanager
+def atomic_folder(path: Path, what: str, overwrite: bool = False) -> Iterator[Path]:
+    """Yield a temporary folder beside the output folder ``path`` (``NAME.tmp-PID``); on success
+    rename it into place. An existing ``path`` that is not empty is refused without ``overwrite`` (and the rename
+    itself refuses a folder another process made meanwhile); with it, the old folder is moved
+    aside and removed after the new one is in place. On failure the temporary folder is removed."""
     path = Path(path)
+    check_output_folder(path, what, overwrite)
+    tmp = temporary_path(path)
+    if tmp.exists():
+        shutil.rmtree(tmp)
+    tmp.mkdir()
+    old = path.with_name(f"{path.name}.old.tmp-{os.getpid()}")
+    try:
+        yield tmp
+        if path.is_dir() and not any(path.iterdir()):
+            pass  # an empty folder is replaced by the rename
+        elif path.exists() and overwrite:
+            os.rename(path, old)
+        elif path.exists():
+            raise OutputExistsError(f"{path}: another process wrote this output folder while this one ran; it is kept. "
+                                    "Pass --overwrite to replace it or choose another path.")
+        try:
+            os.rename(tmp, path)
+        except OSError as exc:
+            if exc.errno in (errno.EEXIST, errno.ENOTEMPTY):
+                raise OutputExistsError(f"{path}: another process wrote this output folder while this one ran; it is "
+                                        "kept. Pass --overwrite to replace it or choose another path.") from None
+            raise
+        _fsync_folder(path.parent)
+    finally:
+        for leftover in (tmp, old):
+            if leftover.exists():
+                shutil.rmtree(leftover, ignore_errors=True)
+
+
+def input_record(path: Path) -> dict:
+    """Provenance entry of one input file: path, kind (if an artifact) and sha256.
+
+    For an artifact this command opened with :func:`open_artifact` the kind comes from that
+    validated snapshot (the file is not opened again), and a path that now names another file
+    (replaced while the command ran) is refused rather than recorded with the wrong hash."""
+    path = Path(path)
+    handle, snapshot = next(((h, s) for h, s in _live_snapshots() if s.path == path), (None, None))
+    if snapshot is not None:
+        with contextlib.suppress(OSError):
+            held, now = os.fstat(handle), os.stat(path)
+            if (held.st_dev, held.st_ino) != (now.st_dev, now.st_ino):
+                raise InputError(f"{path}: was replaced while this command ran; run the command again.")
+        return {"path": str(path), "kind": snapshot.kind.name, "sha256": sha256_of(path)}
     kind = None
-    if h5py.is_hdf5(path):
-        with h5py.File(path, "r") as f:
-            kind = f.attrs.get("facesynth_kind")
+    try:
+        if h5py.is_hdf5(path):
+            with h5py.File(path, "r") as f:
+                kind = f.attrs.get("facesynth_kind")
+    except OSError:
+        kind = None
     return {"path": str(path), "kind": kind, "sha256": sha256_of(path)}
 
 
@@ -216,39 +367,153 @@ def write_artifact(
             f.attrs["config"] = config if isinstance(config, str) else json.dumps(config, sort_keys=True)
             f.attrs["inputs"] = json.dumps(records)
             yield f
+            from .check import written_problem
+
+            problem = written_problem(f, kind)
+            if problem:
+                sources = ", ".join(r["path"] for r in records) or "the inputs"
+                raise ArtifactError(f"{path}: {problem[0]}: the result {problem[1]}, so it was not written; an input "
+                                    f"({sources}) holds numbers out of range: check it with `facesynth check`.")
+
+
+#: What :func:`open_artifact` validated, by the operating-system file handle of the open file
+#: (``h5py`` hands out a new File object for ``dataset.file``; the handle is the same).
+_SNAPSHOTS: dict[int, tuple[object, tuple[int, int]]] = {}  # handle -> (snapshot, (device, inode))
+
+
+def _live_snapshots() -> Iterator[tuple[int, object]]:
+    """(handle, snapshot) of the files still open on the inode they were validated on; others are forgotten."""
+    for handle, (snap, ids) in list(_SNAPSHOTS.items()):
+        try:
+            st = os.fstat(handle)
+        except OSError:
+            st = None
+        if st is None or (st.st_dev, st.st_ino) != ids:
+            _SNAPSHOTS.pop(handle, None)
+            continue
+        yield handle, snap
+
+
+def _handle(f: h5py.File) -> int | None:
+    try:
+        return int(f.id.get_vfd_handle())
+    except (ValueError, TypeError, RuntimeError, OSError):
+        return None
+
+
+def snapshot_of(f: h5py.File):
+    """The :class:`facesynth.check.Snapshot` of a file opened by :func:`open_artifact` (or None)."""
+    handle = _handle(f)
+    if handle is None or handle not in _SNAPSHOTS:
+        return None
+    snap = dict(_live_snapshots()).get(handle)
+    return snap if snap is not None and str(snap.path) == f.filename else None
+
+
+def _reason(exc: BaseException) -> str:
+    """The useful part of an HDF5 error message ('truncated file: eof = 61, ...')."""
+    text = str(exc)
+    m = re.search(r"\(([^()]*)\)\s*$", text)
+    return (m.group(1) if m else text).strip() or type(exc).__name__
+
+
+def damaged(path: Path, kind: str, where: str, exc: BaseException) -> ArtifactError:
+    """The error for an HDF5 part that cannot be read: the file is damaged (e.g. truncated)."""
+    return ArtifactError(f"{path}: {where}cannot be read ({_reason(exc)}); the file is damaged or truncated: "
+                         f"make it again with `{PRODUCERS.get(kind, 'facesynth')}`.")
 
 
 def open_artifact(path: Path, kind: str) -> h5py.File:
-    """Open an artifact for reading after checking that it is of ``kind`` and a known schema."""
+    """Open an artifact for reading after checking it: the one place every reader goes through.
+
+    It checks that the file is an HDF5 file of ``kind`` at a known schema, then validates its
+    structure against the specification (:func:`facesynth.check.validate`): every group and
+    dataset, dtype and shape, the ``[limits]`` size bounds and the memory available, attributes,
+    and nothing that reaches outside the file (external or soft links, external storage,
+    virtual datasets). All this reads metadata only, before a byte of data is read; values are
+    checked as :func:`read` (or :class:`RowReader`) reads them. A damaged or truncated file is an
+    ArtifactError naming the file, never an HDF5 traceback.
+    """
+    from .check import bounds_in_force, validate
+
     path = Path(path)
+    producer = PRODUCERS.get(kind, "facesynth")
     if not path.exists():
-        raise InputError(f"{path}: file not found; make it with `{PRODUCERS.get(kind, 'facesynth')}` first.")
-    if not h5py.is_hdf5(path):
+        raise InputError(f"{path}: file not found; make it with `{producer}` first.")
+    if path.is_dir():
+        raise InputError(f"{path}: is a folder; expected a facesynth '{kind}' artifact file.")
+    try:
+        is_hdf5 = h5py.is_hdf5(path)
+    except OSError as exc:
+        raise InputError(f"{path}: cannot be read ({exc.strerror or exc}); check its permissions.") from None
+    if not is_hdf5:
         raise ArtifactError(f"{path}: not an HDF5 file; expected a facesynth '{kind}' artifact.")
-    f = h5py.File(path, "r")
-    found = f.attrs.get("facesynth_kind")
-    if found != kind:
+    try:
+        f = h5py.File(path, "r")
+    except OSError as exc:
+        raise damaged(path, kind, "", exc) from None
+    try:
+        found = f.attrs.get("facesynth_kind")
+        found = found.decode("utf-8", "replace") if isinstance(found, bytes) else found
+        if found != kind:
+            found_text = f"a '{found}' artifact" if isinstance(found, str) else "no facesynth artifact"
+            raise ArtifactError(
+                f"{path}: found {found_text} but expected '{kind}'; pass the output of `{PRODUCERS[kind]}`.")
+        schema = f.attrs.get("facesynth_schema", -1)
+        if not isinstance(schema, (int, np.integer)) or int(schema) != SCHEMAS[kind]:
+            raise ArtifactError(
+                f"{path}: '{kind}' schema {schema} is not the supported schema {SCHEMAS[kind]}; "
+                f"rebuild it with this version's `{PRODUCERS[kind]}`.")
+        problems, snapshot = validate(f, path, bounds_in_force())
+        if problems:
+            # a size past a bound first: it says what to raise, and the rest may follow from it
+            p = next((q for q in problems if "--set limits." in q.message or "memory" in q.message), problems[0])
+            more = f" (and {len(problems) - 1} more problem{'s' * (len(problems) > 2)})" if len(problems) > 1 else ""
+            message = p.message.rstrip(".")
+            todo = "" if "--set limits." in message or "memory" in message else (
+                f"; make it again with `{producer}` (`facesynth check {path}` lists every problem)")
+            raise ArtifactError(f"{path}: {p.key}: {message}{more}{todo}.")
+    except ArtifactError:
         f.close()
-        found_text = f"a '{found}' artifact" if found else "no facesynth artifact"
-        raise ArtifactError(
-            f"{path}: found {found_text} but expected '{kind}'; pass the output of `{PRODUCERS[kind]}`."
-        )
-    schema = int(f.attrs.get("facesynth_schema", -1))
-    if schema != SCHEMAS[kind]:
+        raise
+    except (OSError, RuntimeError, KeyError, ValueError) as exc:  # metadata HDF5 cannot read
         f.close()
-        raise ArtifactError(
-            f"{path}: '{kind}' schema {schema} is not the supported schema {SCHEMAS[kind]}; "
-            f"rebuild it with this version's `{PRODUCERS[kind]}`."
-        )
+        raise damaged(path, kind, "", exc) from None
+    handle = _handle(f)
+    if handle is not None and snapshot is not None:
+        st = os.fstat(handle)
+        _SNAPSHOTS[handle] = (snapshot, (st.st_dev, st.st_ino))
     return f
 
 
 def read(f: h5py.File, key: str) -> np.ndarray:
-    """Read dataset ``key`` fully, naming the file and key if it is missing."""
+    """Read dataset ``key`` fully, naming the file and key if it is missing or cannot be read,
+    and check its values against the specification (finite, in range) when ``f`` was opened
+    by :func:`open_artifact`."""
     try:
-        return f[key][()]
+        ds = f[key]
     except KeyError:
         raise ArtifactError(f"{f.filename}: missing dataset '{key}'; the file is damaged or from another tool.") from None
+    try:
+        data = ds[()]
+    except (OSError, RuntimeError) as exc:
+        kind = f.attrs.get("facesynth_kind", "")
+        raise damaged(Path(f.filename), kind if isinstance(kind, str) else "", f"/{key.lstrip('/')}: ", exc) from None
+    check_values(f, key, data)
+    return data
+
+
+def check_values(f: h5py.File, key: str, data: np.ndarray) -> None:
+    """Refuse values of ``key`` that break its specification (non-finite, out of range)."""
+    snapshot = snapshot_of(f)
+    if snapshot is None:
+        return
+    from .check import value_problem
+
+    problem = value_problem(snapshot, key, data)
+    if problem:
+        raise ArtifactError(f"{f.filename}: /{key.lstrip('/')}: {problem}; the file is damaged or was changed "
+                            f"by another tool: make it again with `{PRODUCERS.get(snapshot.kind.name, 'facesynth')}`.")
 
 
 def read_rows(dataset: h5py.Dataset, rows: slice, out: np.ndarray) -> np.ndarray:
@@ -307,10 +572,17 @@ class RowReader:
                     and info.byte_offset + nbytes <= len(self.map)):
                 offset = info.byte_offset + (rows.start - first) * columns * 4
                 self.mapped = (offset, offset + count * columns * 4)
-                return np.frombuffer(self.map, np.float32, count * columns, offset).reshape(count, columns)
+                block = np.frombuffer(self.map, np.float32, count * columns, offset).reshape(count, columns)
+                check_values(self.dataset.file, self.dataset.name, block)
+                return block
         if self.buffer is None:
             self.buffer = np.empty((self.block, columns), np.float32)
-        return read_rows(self.dataset, rows, self.buffer[:count])
+        try:
+            block = read_rows(self.dataset, rows, self.buffer[:count])
+        except (OSError, RuntimeError) as exc:
+            raise damaged(Path(self.dataset.file.filename), "", f"{self.dataset.name}: ", exc) from None
+        check_values(self.dataset.file, self.dataset.name, block)
+        return block
 
     def _release(self) -> None:
         """Unmap the pages of the last block (they stay in the page cache), so the process

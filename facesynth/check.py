@@ -12,6 +12,8 @@ Like the NWB inspector, it reports every problem of a file, each as one sentence
 * an external or soft link, a dataset stored in external files or a virtual dataset:
   an artifact must stay inside its file, so none of these is followed or read;
 * a NaN or infinity in a dataset whose numbers must be finite;
+* a size past the ``[limits]`` bounds (markers, nodes, frames, vertices, bytes of one dataset),
+  which is reported without reading the dataset (a compression bomb is never expanded);
 * an input named in the ``inputs`` provenance that no longer exists or whose sha256 no longer
   matches (relative paths are read from the current directory, as the writers stored them).
 
@@ -21,6 +23,7 @@ reads a dataset in blocks of rows of at most :data:`SCAN_ELEMENTS` numbers.
 
 from __future__ import annotations
 
+import dataclasses
 import json
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -30,7 +33,7 @@ import h5py
 import numpy as np
 
 from .artifacts import ENCODING_VERSION, PRODUCERS, SCHEMAS, sha256_of
-from .model.spec import COMMON_ATTRS, KINDS, Attr, Dataset, Entry, Group, Kind, applies, parse_size
+from .model.spec import COMMON_ATTRS, KINDS, MAX_FLOAT, MAX_INT, SYMBOLS, Attr, Dataset, Entry, Group, Kind, applies, parse_size
 
 #: Most numbers read at once by the finiteness scan (16 Mi: 64 MB of float32).
 SCAN_ELEMENTS = 1 << 24
@@ -97,13 +100,164 @@ def check_file(path: Path, hashes: dict[Path, str] | None = None) -> FileReport:
         say("", f"cannot be opened as HDF5 ({exc}).")
         return report
     with f:
-        checker = _Checker(f, report, {} if hashes is None else hashes)
+        # size bounds apply; the memory available does not (the scan reads in bounded blocks)
+        bounds = dataclasses.replace(bounds_in_force(), available=None)
+        checker = _Checker(f, report, {} if hashes is None else hashes, bounds=bounds)
         try:
             checker.run()
         except OSError as exc:  # HDF5 could not read a part of the file: say so after what was found
             checker.say("", f"a part of the file cannot be read ({exc}); it is damaged.")
             checker.finish()
     return report
+
+
+@dataclass(frozen=True)
+class Bounds:
+    """Size bounds a reader applies while validating: the largest size of each shape symbol
+    (symbol -> (size, the setting that raises it)), the most bytes one dataset may declare, and
+    the memory available (bytes, None if unknown)."""
+
+    symbols: dict[str, tuple[int, str]]
+    max_dataset_bytes: tuple[int, str]
+    available: int | None = None
+
+    def symbol(self, checker: "_Checker", key: str, symbol: str, size: int) -> None:
+        if symbol in self.symbols and size > self.symbols[symbol][0]:
+            limit, setting = self.symbols[symbol]
+            checker.say(key, f"gives {symbol} ({SYMBOLS[symbol]}) = {size}, above {setting} = {limit}; "
+                             f"if that is right, raise it with --set {setting}=...")
+
+    def dataset(self, checker: "_Checker", key: str, ds: h5py.Dataset) -> bool:
+        """Whether the dataset's declared size is within bounds (else one problem is said)."""
+        nbytes = int(np.prod(ds.shape, dtype=np.float64) * ds.dtype.itemsize)
+        limit, setting = self.max_dataset_bytes
+        if nbytes > limit:
+            checker.say(key, f"declares {nbytes / 1e6:.0f} MB ({_shape_text(ds.shape)} of {_dtype_name(ds.dtype)}), above "
+                             f"{setting} = {limit / 1e6:.0f} MB; if that is right, raise it with --set {setting}=...")
+            return False
+        if self.available is not None and nbytes > self.available:
+            from .limits import size_text
+
+            checker.say(key, f"declares {size_text(nbytes)} but {size_text(self.available)} of memory is available; "
+                             "read it on a machine with more memory.")
+            return False
+        return True
+
+
+@dataclass
+class Snapshot:
+    """What :func:`validate` learnt of an open artifact: its kind, variant and symbol sizes."""
+
+    path: Path
+    kind: Kind
+    variant: str | None
+    sizes: dict[str, int]
+
+
+def bounds_in_force() -> Bounds:
+    """The :class:`Bounds` of the ``[limits]`` settings in force (:func:`facesynth.limits.current`)."""
+    from . import limits
+
+    lim = limits.current()
+    symbols = {}
+    for names, setting in ((("M", "B"), "max_markers"), (("N", "R"), "max_nodes"), (("F", "Fo", "n"), "max_frames"),
+                           (("V",), "max_vertices")):
+        for name in names:
+            symbols[name] = (int(getattr(lim, setting)), f"limits.{setting}")
+    return Bounds(symbols, (int(lim.max_dataset_mb * 1e6), "limits.max_dataset_mb"), limits.mem_available())
+
+
+def validate(f: h5py.File, path: Path, bounds: Bounds) -> tuple[list[Problem], Snapshot | None]:
+    """The structural check of an open artifact that every reader runs before reading a value:
+    kind, schema, groups, datasets, dtypes, shapes against the specification and ``bounds``,
+    attributes, and no links, external storage or virtual datasets. It reads metadata only (no
+    dataset values, no provenance hashes); values are checked as they are read (:func:`value_problem`)."""
+    report = FileReport(Path(path))
+    checker = _Checker(f, report, {}, scan=False, provenance=False, bounds=bounds)
+    checker.run()
+    snapshot = Snapshot(Path(path), checker.kind, checker.variant, checker.sizes) if checker.kind else None
+    return report.problems, snapshot
+
+
+def entry_at(kind: Kind, key: str) -> Dataset | None:
+    """The specification of dataset ``key`` ('nodes/phone', '/clusters/aa/frames') in ``kind``."""
+    entries: tuple[Entry, ...] = kind.root
+    parts = [p for p in key.split("/") if p]
+    for n, part in enumerate(parts):
+        match = next((e for e in entries if e.name == part), None)
+        if match is None:
+            match = next((e for e in entries if isinstance(e, Group) and e.pattern), None)
+        if match is None:
+            return None
+        if n == len(parts) - 1:
+            return match if isinstance(match, Dataset) else None
+        if not isinstance(match, Group):
+            return None
+        entries = match.children
+    return None
+
+
+def value_problem(snapshot: Snapshot, key: str, data: np.ndarray) -> str | None:
+    """What is wrong with the values just read from ``key`` by its specification (finite, ``ge``,
+    ``below``), or None."""
+    e = entry_at(snapshot.kind, key)
+    if e is None:
+        return None
+    data = np.asarray(data)
+    if data.dtype.kind == "f" and data.size:
+        if applies(e.finite, snapshot.variant):
+            bad = int(data.size - np.count_nonzero(np.isfinite(data)))
+            if bad:
+                return f"{bad} non-finite value{'s' if bad > 1 else ''} (NaN or infinity) where every number must be finite"
+            largest = float(np.abs(data).max())
+            if largest > MAX_FLOAT:
+                return f"holds a magnitude of {largest:g}, beyond the largest an artifact holds ({MAX_FLOAT:g})"
+        else:  # NaN marks a missing sample here; an infinity is never a measurement
+            bad = int(np.count_nonzero(np.isinf(data)))
+            if bad:
+                return f"{bad} infinite value{'s' if bad > 1 else ''} where only finite numbers or NaN (missing) belong"
+    if data.dtype.kind in "iu" and data.size:
+        extreme = max(abs(int(data.min())), abs(int(data.max())))
+        if extreme > MAX_INT:
+            return f"holds {extreme}, beyond the largest integer an artifact holds (2^53)"
+    if data.dtype.kind in "fiu" and data.size:
+        if e.ge is not None:
+            low = data.min().item()
+            if low < e.ge:  # NaN compares False: only where NaN is allowed
+                return f"holds {low:g}, below the smallest allowed value {e.ge:g}"
+        factor, symbol, offset = parse_size(e.below) if e.below is not None else (1, None, 0)
+        if symbol is not None and symbol in snapshot.sizes:
+            limit = factor * snapshot.sizes[symbol] + offset
+            high = data.max().item()
+            if high >= limit:
+                return f"holds {high}, but its values must stay below {e.below} = {limit}"
+    return None
+
+
+def written_problem(f: h5py.File, kind_name: str) -> tuple[str, str] | None:
+    """The first (key, problem) of the values an artifact being written holds against its
+    specification (non-finite where finite is required, magnitudes past :data:`MAX_FLOAT` /
+    :data:`MAX_INT`, ``ge`` bounds), or None. Writers run it before an output is published, so a
+    command never exits 0 having written a non-finite or out-of-range value. Reads in blocks."""
+    kind = KINDS[kind_name]
+    snapshot = Snapshot(Path(f.filename), kind, kind.variant(f.attrs), {})
+    found: list[tuple[str, str]] = []
+
+    def visit(name, obj):
+        if found or not isinstance(obj, h5py.Dataset) or obj.dtype.kind not in "fiu" or not obj.shape or not obj.size:
+            return
+        if entry_at(kind, name) is None:
+            return
+        row = int(np.prod(obj.shape[1:], dtype=np.int64)) or 1
+        step = max(1, SCAN_ELEMENTS // row)
+        for a in range(0, obj.shape[0], step):
+            problem = value_problem(snapshot, name, obj[a : a + step])
+            if problem:
+                found.append(("/" + name, problem))
+                return
+
+    f.visititems(visit)
+    return found[0] if found else None
 
 
 def _text(value) -> str:
@@ -173,8 +327,11 @@ class _Checker:
     group's local symbols at the end of each group, the others at the end of the file): the
     size most keys agree on is taken as right, and each key that disagrees is one problem."""
 
-    def __init__(self, f: h5py.File, report: FileReport, hashes: dict[Path, str]):
+    def __init__(self, f: h5py.File, report: FileReport, hashes: dict[Path, str], *, scan: bool = True,
+                 provenance: bool = True, bounds: "Bounds | None" = None):
         self.f, self.report, self.hashes = f, report, hashes
+        self.scan, self.provenance, self.bounds = scan, provenance, bounds
+        self.sizes: dict[str, int] = {}  # each file-wide symbol's agreed size
         self.said: list[tuple[tuple, Problem]] = []
         self.seen: dict[str, list[_Seen]] = {}
         self.kind: Kind | None = None
@@ -189,9 +346,13 @@ class _Checker:
         for symbol in symbols:
             seen = self.seen.pop(symbol, [])
             values = [s.value for s in seen]
+            if not values:
+                continue
             if len(set(values)) < 2:
+                self.sizes.setdefault(symbol, values[0])
                 continue
             right = max(dict.fromkeys(values), key=values.count)  # most keys agree; ties: the first seen
+            self.sizes.setdefault(symbol, right)
             agree = [s for s in seen if s.value == right]
             others = f" (as do {len(agree) - 1} other key{'s' if len(agree) > 2 else ''})" if len(agree) > 1 else ""
             for n, s in enumerate(seen):
@@ -234,7 +395,7 @@ class _Checker:
             self._group(self.f, "/", self.kind.root)
         else:  # no specification to check against: only what would reach outside the file
             self._outside_tree(self.f, "/", 0)
-        if found is not None:
+        if found is not None and self.provenance:
             self._provenance()
         self.finish()
 
@@ -321,7 +482,9 @@ class _Checker:
             self._shape(key, shape, e.shape)
         for a in e.attrs:
             self._attr(ds, key, a)
-        if (not outside and found in ("float32", "float64") and shape and applies(e.finite, self.variant)):
+        if shape is not None and not outside and self.bounds is not None and not self.bounds.dataset(self, key, ds):
+            return
+        if (self.scan and not outside and found in ("float32", "float64") and shape and applies(e.finite, self.variant)):
             try:
                 bad = _count_nonfinite(ds)
             except OSError as exc:
@@ -349,6 +512,8 @@ class _Checker:
         if size < offset or (size - offset) % factor:
             self.say(key, f"{where} has {size} in axis {axis}, which is not {want} for any whole {symbol}.")
             return
+        if self.bounds is not None:
+            self.bounds.symbol(self, key, symbol, (size - offset) // factor)
         via = "" if want == symbol else f" ({want} = {size})"
         self.seen.setdefault(symbol, []).append(_Seen((size - offset) // factor, key, where, via, len(self.said)))
 

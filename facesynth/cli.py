@@ -1,19 +1,21 @@
 """The ``facesynth`` command line: thin click commands that parse, load settings, call a
 stage and map user errors to exit statuses: 0 ok, 1 bad input or data (one line), 2 bad
 usage (a missing or contradictory option, a bad ``--set``; click's usage message), 130
-interrupted."""
+interrupted (Ctrl-C), 143 terminated (SIGTERM); outputs are checked before any work."""
 
 from __future__ import annotations
 
+import contextlib
 import functools
 import logging
+import signal
 import sys
 import time
 from pathlib import Path
 
 import click
 
-from . import __version__
+from . import __version__, limits
 from .config import SAMPLE_CORPUS_PRESETS, Config, choices, parse_override
 from .errors import FacesynthError, OverrideError, UsageError
 
@@ -116,6 +118,8 @@ READS: dict[str, tuple[str, ...]] = {
     "devices": (),
     "check": (),
 }
+# Every command reads the input bounds (facesynth.limits).
+READS = {name: sections + ("limits",) for name, sections in READS.items()}
 
 
 def _command_path() -> str:
@@ -134,16 +138,62 @@ def _check_overrides_read(command: str, overrides: tuple[str, ...]) -> None:
         section = parse_override(item)[0]
         if section not in reads:
             readers = [name for name, sections in READS.items() if section in sections]
-            mine = ", ".join(f"[{name}]" for name in reads) or "no settings"
+            mine = ", ".join(f"[{name}]" for name in reads if name != "limits") or "no settings"
             raise OverrideError(f"--set {item}: [{section}] is read by "
                                 f"{', '.join('facesynth ' + name for name in readers)}; "
                                 f"facesynth {command} reads {mine}, so this setting would be ignored.")
 
 
+class Terminated(KeyboardInterrupt):
+    """SIGTERM, raised in the main thread like Ctrl-C so that every ``finally`` runs (temporary
+    outputs are removed) and the command ends with status 143."""
+
+
+def _terminate(signum, frame):
+    raise Terminated()
+
+
+@contextlib.contextmanager
+def _sigterm_raises():
+    """While a command runs, SIGTERM raises :class:`Terminated` (only the main thread can set it)."""
+    try:
+        previous = signal.signal(signal.SIGTERM, _terminate)
+    except ValueError:  # not the main thread
+        yield
+        return
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous)
+
+
+#: Output options that name a folder rather than a file, by command path.
+FOLDER_OUTPUTS: dict[str, dict[str, str]] = {"sample-corpus": {"out_dir": "the corpus"},
+                                             "evaluate": {"output": "the report"}, "isomap build": {"images": "the images"}}
+
+
+def _check_outputs(command: str, kwargs: dict, overwrite: bool) -> None:
+    """Check every output path (``-o``, ``--images``, a corpus folder) for writability and
+    no-clobber before any work, so a wrong path costs nothing."""
+    from .artifacts import check_output, check_output_folder
+
+    folders = FOLDER_OUTPUTS.get(command, ())
+    for name in ("output", "out_dir", "images"):
+        value = kwargs.get(name)
+        if value is None:
+            continue
+        if name in folders:
+            check_output_folder(Path(value), folders[name], overwrite)
+        else:
+            check_output(Path(value), overwrite)
+
+
 def stage(func=None, *, writes: bool = True):
     """Add the global options to a command (``--overwrite`` only when it ``writes`` files) and map
     its errors to exit statuses: UsageError (bad usage, e.g. a bad ``--set``) to click's usage
-    message and 2, any other FacesynthError to one line and 1, Ctrl-C to 130."""
+    message and 2, any other FacesynthError to one line and 1, Ctrl-C to 130, SIGTERM to 143.
+    Before the command runs, its output paths are checked (writable, no clobbering) and the
+    ``[limits]`` section is put in force (:mod:`facesynth.limits`)."""
     if func is None:
         return functools.partial(stage, writes=writes)
 
@@ -156,12 +206,18 @@ def stage(func=None, *, writes: bool = True):
             config = Config.load(config_path, tuple(overrides))
             _check_overrides_read(command, tuple(overrides))
             ctx = Context(config.only(READS[command]), verbose, quiet, overwrite)
-            func(ctx, **kwargs)
+            if writes:
+                _check_outputs(command, kwargs, overwrite)
+            with limits.using(ctx.config.settings("limits")), _sigterm_raises():
+                func(ctx, **kwargs)
         except UsageError as exc:
             raise click.UsageError(str(exc)) from None
         except FacesynthError as exc:
             click.echo(f"error: {exc}", err=True)
             sys.exit(1)
+        except Terminated:
+            click.echo("terminated (SIGTERM); no output was written.", err=True)
+            sys.exit(143)
         except KeyboardInterrupt:
             click.echo("interrupted; no output was written.", err=True)
             sys.exit(130)
@@ -216,9 +272,11 @@ def sample_corpus_cmd(ctx: Context, out_dir: Path, preset: str, seed: int):
     Example:
       facesynth sample-corpus corpus/ --preset small --seed 0
     """
+    from .artifacts import atomic_folder
     from .corpus.generate import generate
 
-    summary = generate(out_dir, preset, seed, overwrite=ctx.overwrite)
+    with atomic_folder(out_dir, "the corpus", ctx.overwrite) as folder:  # renamed into place when complete
+        summary = generate(folder, preset, seed, overwrite=True)
     ctx.say(f"wrote {summary['takes']} takes, {summary['seconds']:.1f} s of capture, "
             f"{summary['train_phones']} training phones, {summary['contamination_events']} contamination events to {out_dir}")
 

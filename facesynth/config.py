@@ -166,7 +166,7 @@ class SynthesizeSettings:
     weight_intermediate: float = setting("Table IV (1.0)", gt=0)
     high_phones: tuple[str, ...] = setting("Table IV", choices=_SPOKEN_PHONES)
     low_phones: tuple[str, ...] = setting("Table IV", choices=_SPOKEN_PHONES)
-    output_fps: float = setting("paper VII-B (30 frames/s)", unit="frames/s", gt=0)
+    output_fps: float = setting("paper VII-B (30 frames/s)", unit="frames/s", gt=0, le=1000)
     silence_interpolation: str = setting("paper VII-B (linear)", choices=("linear", "cubic", "cosine"))
 
 
@@ -207,10 +207,27 @@ class RenderSettings:
 
     width: int = setting("not in the paper: video size", unit="px", ge=16)
     height: int = setting("not in the paper: video size", unit="px", ge=16)
-    fps: float = setting("paper VII-B (30 frames/s)", unit="frames/s", gt=0)
+    fps: float = setting("paper VII-B (30 frames/s)", unit="frames/s", gt=0, le=1000)
     view: str = setting("not in the paper: what is drawn", choices=("shaded", "markers", "side-by-side"))
     fov_deg: float = setting("not in the paper: vertical field of view", unit="degrees", gt=0, lt=180)
     use_opencl: bool = setting("not in the paper: rasterize on OpenCL (NumPy without a device that builds)")
+
+
+@dataclass(frozen=True)
+class LimitsSettings:
+    """``[limits]``: physical bounds on what an input may hold, read by every command. A value
+    past a bound is refused with a sentence naming the setting that raises it; the defaults sit
+    far above any real face capture (the paper: 79 markers, 5,556 nodes, 120 Hz)."""
+
+    max_markers: int = setting("not in the paper: input bound (a face capture has tens to a few hundred)",
+                               unit="markers", ge=1)
+    max_nodes: int = setting("not in the paper: input bound (hours of capture: about 130,000)", unit="nodes", ge=1)
+    max_frames: int = setting("not in the paper: input bound on the frames of one artifact", unit="frames", ge=1)
+    max_vertices: int = setting("not in the paper: input bound on a face mesh", unit="vertices", ge=3)
+    max_fps: float = setting("not in the paper: input bound on capture and output frame rates", unit="frames/s", gt=0)
+    max_phone_s: float = setting("not in the paper: longest phone segment (pauses included)", unit="s", gt=0)
+    max_utterance_s: float = setting("not in the paper: longest utterance or take", unit="s", gt=0)
+    max_dataset_mb: float = setting("not in the paper: largest dataset an artifact may declare", unit="MB", gt=0)
 
 
 SECTIONS: dict[str, type] = {
@@ -226,6 +243,7 @@ SECTIONS: dict[str, type] = {
     "tune": TuneSettings,
     "deform": DeformSettings,
     "render": RenderSettings,
+    "limits": LimitsSettings,
 }
 
 S = TypeVar("S")
@@ -389,6 +407,10 @@ def _read_toml(path: Path) -> dict[str, Any]:
         raise ConfigError(f"{path}: configuration file not found; check the --config path.") from None
     except tomllib.TOMLDecodeError as exc:
         raise ConfigError(f"{path}: not valid TOML ({exc}); fix the file.") from None
+    except UnicodeDecodeError as exc:
+        raise ConfigError(f"{path}: byte {exc.start} is not UTF-8 text; save the file as UTF-8.") from None
+    except IsADirectoryError:
+        raise ConfigError(f"{path}: is a folder; give a TOML file to --config.") from None
 
 
 def default_config() -> dict[str, dict[str, Any]]:

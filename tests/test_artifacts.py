@@ -12,12 +12,15 @@ def test_stamps_and_provenance(tmp_path):
     out = tmp_path / "a.h5"
     with write_artifact(out, "pca", config={"n": 1}, inputs=[src]) as f:
         f.create_dataset("x", data=np.arange(3))
-    with open_artifact(out, "pca") as f:
+    with h5py.File(out, "r") as f:
         assert f.attrs["facesynth_kind"] == "pca"
         assert f.attrs["facesynth_schema"] == SCHEMAS["pca"]
         assert '"n": 1' in f.attrs["config"]
         assert "2cf24dba5fb0a30e26e83b2ac5b9e29e1b161e5c1fa7425e73043362938b9824" in f.attrs["inputs"]
         assert read(f, "x").tolist() == [0, 1, 2]
+    # open_artifact validates against the specification: a stamped file without the pca layout is refused
+    with pytest.raises(ArtifactError, match=r"a\.h5: /takes: missing required group .* make it again with `facesynth pca`"):
+        open_artifact(out, "pca")
 
 
 def test_wrong_kind_names_file_found_and_expected(tmp_path):
@@ -42,7 +45,7 @@ def test_missing_dataset_names_the_key(tmp_path):
     out = tmp_path / "a.h5"
     with write_artifact(out, "pca"):
         pass
-    with open_artifact(out, "pca") as f, pytest.raises(ArtifactError, match="missing dataset 'pca/mean'"):
+    with h5py.File(out, "r") as f, pytest.raises(ArtifactError, match="missing dataset 'pca/mean'"):
         read(f, "pca/mean")
 
 

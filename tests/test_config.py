@@ -58,7 +58,7 @@ def test_every_default_has_a_declaration_and_every_declaration_a_default():
     ("pca.n_components=true", r"must be an integer >= 1; got true\."),
     ("synthesize.pnt=nan", r"'synthesize.pnt' must be a number > 0 \(cost\); got nan\."),
     ("synthesize.pnt=inf", r"got inf\."),
-    ("synthesize.output_fps=-30", r"'synthesize.output_fps' must be a number > 0 \(frames/s\); got -30\.$"),
+    ("synthesize.output_fps=-30", r"'synthesize.output_fps' must be a number > 0 and <= 1000 \(frames/s\); got -30\.$"),
     ("synthesize.alpha4=1", r"'synthesize.alpha4' must be a number > 0 and < 1; got 1\."),
     ("synthesize.search=beam", r"'synthesize.search' must be one of dp, greedy; got \"beam\"\."),
     ("synthesize.use_opencl=yes", r"'synthesize.use_opencl' must be true or false; got \"yes\"\."),
@@ -78,7 +78,7 @@ def test_bad_overrides_are_named(override, message):
 
 @pytest.mark.parametrize("text, message", [
     ("[synthesize]\npnt = nan\n", r"'synthesize.pnt' must be a number > 0 \(cost\); got nan\."),
-    ("[synthesize]\noutput_fps = -30\n", r"'synthesize.output_fps' must be a number > 0 \(frames/s\); got -30\.$"),
+    ("[synthesize]\noutput_fps = -30\n", r"'synthesize.output_fps' must be a number > 0 and <= 1000 \(frames/s\); got -30\.$"),
     ("[pca]\nn_components = 0\n", r"'pca.n_components' must be an integer >= 1; got 0\."),
     ("[deform]\nsigma = -1.0\n", r"'deform.sigma' must be a number > 0 \(mesh units\); got -1\.0\."),
     ("[render]\nview = \"wire\"\n", r"'render.view' must be one of shaded, markers, side-by-side; got \"wire\"\."),

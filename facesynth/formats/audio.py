@@ -7,6 +7,7 @@ from pathlib import Path
 import numpy as np
 import soundfile as sf
 
+from .. import limits
 from ..errors import InputError
 
 
@@ -21,6 +22,13 @@ def read_audio(path: Path) -> tuple[np.ndarray, int]:
         raise InputError(f"{path}: unreadable audio ({exc}); use WAV or FLAC.") from None
     if data.shape[0] == 0:
         raise InputError(f"{path}: the audio file has no samples.")
+    if rate <= 0:
+        raise InputError(f"{path}: the header gives a sample rate of {rate} Hz; re-export the audio.")
+    finite = np.isfinite(data).all(axis=1)
+    if not finite.all():
+        first = int(np.argmin(finite))
+        raise InputError(f"{path}, {first / rate:.3f} s: a sample is NaN or infinite; re-export the audio.")
+    limits.bound(data.shape[0] / rate, "max_utterance_s", "the audio's length (s)", str(path))
     return data.mean(axis=1).astype(np.float32), int(rate)
 
 

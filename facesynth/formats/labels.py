@@ -1,20 +1,25 @@
 """Time-aligned labels: Praat TextGrid (long and short text formats) and .lab files.
 
-``.lab`` covers HTK (``start end label`` in 100 ns units) and Festival/xwaves
+``.lab`` covers HTK (``start end label`` in 100 ns units; an HTS full-context label
+``p1^p2-p3+p4=p5...`` stands for its centre phone p3) and Festival/xwaves
 (a header ending in ``#``, then ``end_time colour label`` in seconds).
 """
 
 from __future__ import annotations
 
+import math
 import re
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Sequence
 
+from .. import limits
 from ..errors import InputError
 
 _TOKEN = re.compile(r'"((?:[^"]|"")*)"|(<exists>)|([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)')
 _EPS = 1e-6
+#: The centre phone of an HTS full-context label, ``p1^p2-p3+p4=p5@...``.
+_HTS_CENTRE = re.compile(r"^[^\^\s]*\^[^-\s]*-([^+\s]+)\+[^=\s]*=")
 
 
 @dataclass(frozen=True)
@@ -30,6 +35,17 @@ def _decode(raw: bytes) -> str:
     if raw.startswith(b"\xff\xfe") or raw.startswith(b"\xfe\xff"):
         return raw.decode("utf-16")
     return raw.decode("utf-8-sig", errors="replace")
+
+
+def read_text(path: Path, what: str) -> str:
+    """A UTF-8 text file (``what`` it is, for the message: 'emotion file'), or InputError naming
+    the line and byte that are not UTF-8."""
+    raw = Path(path).read_bytes()
+    try:
+        return raw.decode("utf-8-sig")
+    except UnicodeDecodeError as exc:
+        line = raw.count(b"\n", 0, exc.start) + 1
+        raise InputError(f"{path}, line {line}: byte {exc.start} is not UTF-8 text; save the {what} as UTF-8.") from None
 
 
 def read_textgrid(path: Path) -> dict[str, list[Segment]]:
@@ -119,7 +135,9 @@ def read_lab(path: Path) -> list[Segment]:
                 if not line or line == ".":
                     continue
                 parts = line.split()
-                segs.append(Segment(int(parts[0]) * 1e-7, int(parts[1]) * 1e-7, parts[2] if len(parts) > 2 else ""))
+                label = parts[2] if len(parts) > 2 else ""
+                full = _HTS_CENTRE.match(label)  # HTS full-context label: the centre phone
+                segs.append(Segment(int(parts[0]) * 1e-7, int(parts[1]) * 1e-7, full.group(1) if full else label))
     except (ValueError, IndexError):
         raise InputError(f"{path}, line {number}: malformed .lab line {lines[number - 1]!r}; expected HTK "
                          "'start end label' (100 ns units) or Festival 'end colour label' after a '#' line.") from None
@@ -160,8 +178,16 @@ def check_segments(segs: Sequence[Segment], where: str) -> None:
     """Refuse empty, unsorted, overlapping or zero-length segment lists, naming the place."""
     if not segs:
         raise InputError(f"{where}: no phone segments; the alignment is empty.")
+    for s in segs:
+        if not (math.isfinite(s.start) and math.isfinite(s.end)):
+            raise InputError(f"{where}: segment {s.label!r} has time {s.start:g} to {s.end:g} s; times must be finite numbers.")
+        if s.start < 0:
+            raise InputError(f"{where}, {s.start:.3f} s: segment {s.label!r} starts before 0 s; times are seconds from the "
+                             "start of the audio.")
+    limits.bound(segs[-1].end, "max_utterance_s", "the utterance's end (s)", where)
     prev_end = segs[0].start
     for s in segs:
+        limits.bound(s.end - s.start, "max_phone_s", f"the length (s) of segment {s.label!r} at {s.start:.3f} s", where)
         if s.end <= s.start + _EPS:
             raise InputError(f"{where}, {s.start:.3f} s: segment {s.label!r} ends at or before it starts.")
         if s.start < prev_end - _EPS:

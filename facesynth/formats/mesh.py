@@ -8,6 +8,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .. import limits
 from ..errors import InputError
 
 
@@ -33,6 +34,15 @@ def read_mesh(path: Path) -> tuple[np.ndarray, np.ndarray]:
     faces = np.asarray(mesh.faces, dtype=np.int64)
     if len(vertices) == 0 or len(faces) == 0:
         raise InputError(f"{path}: the mesh has no triangles.")
+    limits.bound(len(vertices), "max_vertices", "the number of vertices", str(path))
+    bad = ~np.isfinite(vertices).all(axis=1)
+    if bad.any():
+        raise InputError(f"{path}: vertex {int(np.argmax(bad))} has a coordinate that is NaN or infinite; fix the mesh.")
+    outside = (faces < 0) | (faces >= len(vertices))
+    if outside.any():
+        k = int(np.argmax(outside.any(axis=1)))
+        raise InputError(f"{path}: triangle {k} names vertex {int(faces[k][outside[k]][0])}, but the mesh has vertices "
+                         f"0 to {len(vertices) - 1}; fix the mesh.")
     return vertices, faces
 
 

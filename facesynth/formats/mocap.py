@@ -14,6 +14,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .. import limits
 from ..errors import InputError
 
 _UNIT_TO_MM = {"mm": 1.0, "cm": 10.0, "m": 1000.0, "millimeters": 1.0, "meters": 1000.0}
@@ -49,7 +50,24 @@ def read_mocap(path: Path) -> MarkerTake:
         raise InputError(f"{path}: the take has no frames; re-export it or drop it from the manifest.")
     if len(set(take.names)) != len(take.names):
         raise InputError(f"{path}: duplicate marker names; every marker needs its own label.")
+    check_take(take, str(path))
     return take
+
+
+def check_take(take: MarkerTake, where: str) -> None:
+    """Refuse what no capture holds: a frame rate that is not a positive finite number within
+    ``limits.max_fps``, more markers than ``limits.max_markers``, a take longer than
+    ``limits.max_utterance_s``, or an infinite coordinate (a missing sample is NaN, not inf)."""
+    if not (np.isfinite(take.fps) and take.fps > 0):
+        raise InputError(f"{where}: the frame rate is {take.fps:g} frames/s; it must be a positive number (fix the header).")
+    limits.bound(take.fps, "max_fps", "the frame rate (frames/s)", where)
+    limits.bound(len(take.names), "max_markers", "the number of markers", where)
+    limits.bound(take.positions.shape[0] / take.fps, "max_utterance_s", "the take's length (s)", where)
+    infinite = np.isinf(take.positions)
+    if infinite.any():
+        frame, marker, _ = (int(i[0]) for i in np.nonzero(infinite))
+        raise InputError(f"{where}: frame {frame + 1}, marker {take.names[marker]!r}: a coordinate is infinite; "
+                         "leave a missing sample empty (or NaN) and fix the export.")
 
 
 def read_c3d(path: Path) -> MarkerTake:
@@ -72,7 +90,8 @@ def read_c3d(path: Path) -> MarkerTake:
                 xyz = np.array(points[:, :3], dtype=np.float32)
                 xyz[points[:, 3] < 0] = np.nan
                 frames.append(xyz)
-    except (struct.error, ValueError, EOFError, IndexError, KeyError, OSError, TypeError) as exc:
+    except (struct.error, ValueError, EOFError, IndexError, KeyError, OSError, TypeError, AssertionError,
+            OverflowError, MemoryError) as exc:
         raise InputError(f"{path}: unreadable or truncated C3D file ({exc}); re-export it from the capture software.") from None
     if len(frames) != expected:
         raise InputError(
@@ -104,6 +123,16 @@ def write_c3d(path: Path, take: MarkerTake) -> None:
         writer.write(fh)
 
 
+def text_ends_with_newline(path: Path) -> bool:
+    """Whether the file's last byte is a line break (a file cut mid-line lacks it)."""
+    with open(path, "rb") as fh:
+        fh.seek(0, 2)
+        if fh.tell() == 0:
+            return False
+        fh.seek(-1, 2)
+        return fh.read(1) in (b"\n", b"\r")
+
+
 def read_trc(path: Path) -> MarkerTake:
     """Markers of a tab-separated TRC file (units from its header, converted to mm; empty cells NaN)."""
     try:
@@ -114,9 +143,24 @@ def read_trc(path: Path) -> MarkerTake:
         fps = float(meta["DataRate"])
         unit = meta.get("Units", "mm")
         names = [n.strip() for n in lines[3].split("\t")[2:] if n.strip()]
-        rows = [line.split("\t") for line in lines[5:] if line.strip()]
+        numbered = [(n, line.split("\t")) for n, line in enumerate(lines[5:], 6) if line.strip()]
+        declared = int(meta["NumFrames"]) if meta.get("NumFrames", "").strip().isdigit() else None
     except (IndexError, KeyError, ValueError) as exc:
         raise InputError(f"{path}: not a valid TRC file ({exc}); check its five header lines.") from None
+    # Every exporter ends each line with a line break: a last line without one (or a row with more
+    # cells than the header allows) is a file cut short or edited, which would change numbers silently.
+    width = 2 + 3 * len(names)
+    for number, row in numbered:
+        if len(row) > width:
+            raise InputError(f"{path}, line {number}: holds {len(row)} cells but the header has {width} "
+                             "(frame, time, x y z per marker); fix the export.")
+    if numbered and not text_ends_with_newline(path):
+        raise InputError(f"{path}, line {numbered[-1][0]}: the file ends in the middle of this line; it was cut short: "
+                         "export it again.")
+    if declared is not None and declared != len(numbered):
+        raise InputError(f"{path}: the header declares {declared} frames but {len(numbered)} follow; the file is "
+                         "cut short or edited: export it again.")
+    rows = [row for _, row in numbered]
     positions = np.full((len(rows), len(names), 3), np.nan, np.float32)
     for i, row in enumerate(rows):
         cells = row[2 : 2 + 3 * len(names)]

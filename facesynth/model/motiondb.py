@@ -153,6 +153,8 @@ class MotionDatabase:
     nodes : the N motion nodes.
     pruned : what prune removed, or None.
     path : the file (pair tables are read from it).
+    source : the file as :meth:`read` opened and validated it, kept open so that every later
+        read (the pair tables) comes from that same snapshot, even if the path is replaced meanwhile.
     """
 
     takes: Takes
@@ -164,8 +166,18 @@ class MotionDatabase:
     nodes: Nodes
     pruned: Pruned | None = None
     path: Path | None = field(default=None, compare=False)
+    source: h5py.File | None = field(default=None, compare=False, repr=False)
 
     KIND = "motiondb"
+
+    @contextlib.contextmanager
+    def _opened(self):
+        """The database file: the one :meth:`read` opened, else opened (and validated) now."""
+        if self.source is not None and self.source.id.valid:
+            yield self.source
+        else:
+            with open_artifact(self.path, self.KIND) as f:
+                yield f
 
     @property
     def fps(self) -> float:
@@ -188,7 +200,8 @@ class MotionDatabase:
     @classmethod
     def read(cls, path: Path, *, markers: bool = False) -> "MotionDatabase":
         """Everything but the pair tables; the normalized markers only if ``markers``."""
-        with open_artifact(path, cls.KIND) as f:
+        f = open_artifact(path, cls.KIND)
+        try:
             n = len(f["nodes/phone"]) if "nodes/phone" in f else -1
             for key in PAIR_KEYS:
                 shape = f[f"pairs/{key}"].shape if f"pairs/{key}" in f else None
@@ -202,11 +215,14 @@ class MotionDatabase:
             pruned = Pruned(read(f, "pruned/original_id"), read(f, "pruned/removed_id"),
                             read_strings(f, "pruned/reason")) if "pruned" in f else None
             return cls(takes, phones, names, PcaModel.read(f), read(f, "coefficients"), frames, Nodes.read(f),
-                       pruned, Path(path))
+                       pruned, Path(path), f)
+        except BaseException:
+            f.close()
+            raise
 
     def read_pairs(self) -> PairTerms:
         """The full pair tables and boundary states."""
-        with open_artifact(self.path, self.KIND) as f:
+        with self._opened() as f:
             return PairTerms(*(read(f, f"pairs/{k}") for k in PAIR_KEYS),
                              tuple(read(f, f"boundary/{k}") for k in BOUNDARY_KEYS),
                              str(f["pairs"].attrs.get("device", "")), str(f["pairs"].attrs.get("device_reason", "")))
@@ -219,7 +235,7 @@ class MotionDatabase:
         n = len(self.nodes)
         tc = np.empty((n, n), np.float32)
         block = min(256, n)
-        with open_artifact(self.path, self.KIND) as f, contextlib.ExitStack() as stack:
+        with self._opened() as f, contextlib.ExitStack() as stack:
             terms = [stack.enter_context(RowReader(f[f"pairs/{key}"], block)) for key in PAIR_KEYS]
             for a in range(0, n, block):
                 rows = slice(a, min(n, a + block))
@@ -236,7 +252,7 @@ class MotionDatabase:
         out = PanelMatrix(n)
         block = min(128, n)  # half a chunk of build-db: the block's sums stay in cache
         scratch = np.empty((2, block, n), np.float32)
-        with open_artifact(self.path, self.KIND) as f, contextlib.ExitStack() as stack:
+        with self._opened() as f, contextlib.ExitStack() as stack:
             terms = [stack.enter_context(RowReader(f[f"pairs/{key}"], block)) for key in PAIR_KEYS]
             for a in range(0, n, block):
                 rows = slice(a, min(n, a + block))

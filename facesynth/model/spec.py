@@ -47,6 +47,15 @@ SYMBOLS: dict[str, str] = {
     "tp": "Delaunay triangles of one cluster's PCA map",
 }
 
+#: The largest magnitude of any float in an artifact where numbers must be finite (mm, s, costs,
+#: PCA coefficients: real values stay many orders below; a larger one is damage, and would
+#: overflow float32 sums of squares downstream).
+MAX_FLOAT = 1e15
+
+#: The largest magnitude of any integer in an artifact (indices and counts; 2**53 is where
+#: float64 stops holding every integer).
+MAX_INT = 2**53
+
 #: The dtypes a dataset may be declared with.
 DTYPES = ("float32", "float64", "int32", "int64", "bool", "str")
 
@@ -81,8 +90,10 @@ class Attr:
 @dataclass(frozen=True)
 class Dataset:
     """A dataset: dtype (one of :data:`DTYPES`, or a tuple of those allowed), shape in symbols,
-    the unit of its numbers (stored as the ``units`` attribute when ``attrs`` lists it), and
-    whether every number must be finite (True, False, or only in the named variant)."""
+    the unit of its numbers (stored as the ``units`` attribute when ``attrs`` lists it),
+    whether every number must be finite (True, False, or only in the named variant), and the
+    range of its numbers: ``ge`` a lower bound, ``below`` a symbol whose size every number must
+    stay under (an index into the rows that symbol counts)."""
 
     name: str
     dtype: str | tuple[str, ...]
@@ -92,6 +103,8 @@ class Dataset:
     attrs: tuple[Attr, ...] = ()
     finite: Required = True
     required: Required = True
+    ge: float | None = None
+    below: str | None = None
 
 
 @dataclass(frozen=True)
@@ -296,10 +309,10 @@ MOTIONDB = Kind("motiondb", SCHEMAS["motiondb"], (
     )),
     Group("pairs", "pair-terms", "the pair terms of Table I, row = predecessor candidate i, column = node j", (
         Dataset("dsc", "float32", ("N", "N"), "DSC(o_i, pre(o_j)) of Eq. 6; 0 where o_j has no predecessor",
-                "mm^2/frame^3", (_units("mm^2/frame^3"), _PAIR_LAYOUT)),
-        Dataset("pgap", "float32", ("N", "N"), "PGap of Eq. 8 from o_i to o_j", "mm", (MM, _PAIR_LAYOUT)),
+                "mm^2/frame^3", (_units("mm^2/frame^3"), _PAIR_LAYOUT), ge=0),
+        Dataset("pgap", "float32", ("N", "N"), "PGap of Eq. 8 from o_i to o_j", "mm", (MM, _PAIR_LAYOUT), ge=0),
         Dataset("vgap", "float32", ("N", "N"), "VGap of Eq. 9 from o_i to o_j", "mm/frame",
-                (_units("mm/frame"), _PAIR_LAYOUT)),
+                (_units("mm/frame"), _PAIR_LAYOUT), ge=0),
     ), attrs=(Attr("device", "str", "where PGap and VGap were computed"),
            Attr("device_reason", "str", "why that device (the OpenCL choice, or why NumPy)"))),
     Group("boundary", "boundary-states", "the node boundary states behind Eq. 8-9 (3M vectors)", (
@@ -394,11 +407,11 @@ MESHANIM = Kind("meshanim", SCHEMAS["meshanim"], (
     Dataset("vertices", "float32", ("Fo", "V", 3), "the animated mesh", "mesh units",
             (_units("mesh units"), _fps()), finite=False),
     Dataset("rest", "float32", ("V", 3), "the mesh as read", "mesh units"),
-    Dataset("faces", "int32", ("Tri", 3), "triangles (rows of `rest`)"),
+    Dataset("faces", "int32", ("Tri", 3), "triangles (rows of `rest`)", ge=0, below="V"),
     Group("weights", "csr-matrix", "the (V, B) Gaussian weights of Eq. 14-15 in CSR form; rows sum to 1 (0 where unreached)", (
         Dataset("data", "float32", ("W",), "the non-zero weights"),
-        Dataset("indices", ("int32", "int64"), ("W",), "column (bound marker) of each weight"),
-        Dataset("indptr", ("int32", "int64"), ("V+1",), "row starts in `data`"),
+        Dataset("indices", ("int32", "int64"), ("W",), "column (bound marker) of each weight", ge=0, below="B"),
+        Dataset("indptr", ("int32", "int64"), ("V+1",), "row starts in `data`", ge=0, below="W+1"),
         Dataset("markers", "str", ("B",), "the bound markers"),
         Dataset("vertex_of", "int64", ("B",), "each bound marker's vertex"),
     ), attrs=(Attr("shape", "ints", "the matrix's shape (V, B)", shape=("V", "B")),)),
@@ -475,8 +488,11 @@ def _rows(entries: tuple[Entry, ...]) -> list[str]:
             rows.append(f"| `{key}/` | group `{e.encoding}` | | | {_cell(attrs)} | {_required_text(e.required)} | "
                         f"{_cell(e.doc)}{local} |")
         else:
+            bounds = [f"values >= {e.ge:g}"] if e.ge is not None else []
+            bounds += [f"values < {e.below}"] if e.below else []
+            doc = e.doc + (f" ({', '.join(bounds)})" if bounds else "")
             rows.append(f"| `{key}` | {_dtype_text(e)} | {_shape_text(e.shape)} | {e.unit or ''} | {_cell(attrs)} | "
-                        f"{_required_text(e.required)} | {_cell(e.doc)} |")
+                        f"{_required_text(e.required)} | {_cell(doc)} |")
     return rows
 
 
@@ -487,7 +503,8 @@ def markdown() -> str:
            "(`3M` is three times M, `V+1` is V plus one).", "",
            "| symbol | counts |", "|---|---|"]
     out += [f"| `{s}` | {doc} |" for s, doc in SYMBOLS.items()]
-    out += ["", "## Root attributes of every artifact", "", "| attribute | type | meaning |", "|---|---|---|"]
+    out += ["", f"Every float where numbers must be finite has a magnitude of at most {MAX_FLOAT:g}, every integer at most "
+            f"2^53; readers refuse larger values.", "", "## Root attributes of every artifact", "", "| attribute | type | meaning |", "|---|---|---|"]
     out += [f"| `{a.name}` | {a.type} | {_cell(a.doc)} |" for a in COMMON_ATTRS]
     out += ["", f"Every group carries `encoding-type` (named in the tables below as `group TYPE`) and "
             f"`encoding-version` = `{ENCODING_VERSION}`; the root is identified by `facesynth_kind` instead.",

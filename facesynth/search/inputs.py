@@ -4,13 +4,14 @@ its motion-node constraints (formats documented in ``docs/inputs.md``)."""
 from __future__ import annotations
 
 import logging
+import math
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
 from ..errors import InputError, SearchError
-from ..formats.labels import read_phone_segments, read_textgrid
+from ..formats.labels import read_phone_segments, read_text, read_textgrid
 from ..phonemes import PAU, map_phones
 
 log = logging.getLogger(__name__)
@@ -83,7 +84,7 @@ def apply_emotions(utt: Utterance, path: Path, emotions, aliases) -> None:
     else:
         if not path.exists():
             raise InputError(f"{path}: emotion file not found; check the --emotions path.")
-        for n, line in enumerate(path.read_text("utf-8").splitlines(), 1):
+        for n, line in enumerate(read_text(path, "emotion file").splitlines(), 1):
             line = line.split("#", 1)[0].strip()
             if not line:
                 continue
@@ -92,6 +93,8 @@ def apply_emotions(utt: Utterance, path: Path, emotions, aliases) -> None:
                 start, end, label = float(parts[0]), float(parts[1]), parts[2]
             except (ValueError, IndexError):
                 raise InputError(f"{path}, line {n}: expected 'start_s end_s emotion', got {line!r}.") from None
+            if not (math.isfinite(start) and math.isfinite(end)):
+                raise InputError(f"{path}, line {n}: the span {start:g} to {end:g} s must be finite seconds.")
             if end <= start:
                 raise InputError(f"{path}, line {n}: the span ends at or before it starts.")
             spans.append((start, end, label, f"{path}, line {n}"))
@@ -122,7 +125,7 @@ def read_constraints(path: Path, utt: Utterance, node_phone: list[str]) -> dict[
     if not path.exists():
         raise InputError(f"{path}: constraints file not found; check the --constraints path.")
     out: dict[int, int] = {}
-    for n, line in enumerate(path.read_text("utf-8").splitlines(), 1):
+    for n, line in enumerate(read_text(path, "constraints file").splitlines(), 1):
         line = line.split("#", 1)[0].strip()
         if not line:
             continue

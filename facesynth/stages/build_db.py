@@ -30,6 +30,7 @@ import numpy as np
 
 from ..config import BuildDbSettings, settings_json
 from ..errors import InputError
+from ..limits import bound, require_memory
 from ..model.motiondb import MotionDatabase, Nodes, PairTerms
 from ..model.pca import PcaFrames, PcaModel
 from ..model.tables import Phones, Takes
@@ -182,6 +183,9 @@ def run(pca_path: Path, out: Path, settings: BuildDbSettings, overwrite: bool = 
     pca = PcaFrames.read(pca_path)
     coeffs = pca.coefficients
     nodes = build_nodes(pca.takes, pca.phones, pca.frames.fps)
+    bound(len(nodes), "max_nodes", "the number of motion nodes", str(pca_path))
+    # the three (N, N) float32 pair tables and about as much again while they are computed
+    require_memory(6.0 * 4 * len(nodes) ** 2, f"the pair tables of {len(nodes)} motion nodes", str(pca_path))
     timings = {}
     t0 = time.perf_counter()
     dsc = dsc_matrix(coeffs, nodes, settings.dsc_samples)

@@ -9,7 +9,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..artifacts import check_output_folder
+from ..artifacts import atomic_folder, check_output_folder
 from ..config import EvaluateSettings, NormalizeSettings, SynthesizeSettings
 from ..errors import OutputExistsError
 from ..evaluation import evaluate
@@ -82,7 +82,8 @@ def write_report(folder: Path, metrics: dict, images: list[str], meta: dict) -> 
 
 def check_report_folder(out_dir: Path, overwrite: bool) -> None:
     """Refuse a report folder that is a file, or that already holds files unless ``overwrite``
-    (an empty folder is fine); the report's files are written over, nothing else is removed."""
+    (an empty folder is fine). The report is written into a temporary folder beside it and renamed
+    into place; with ``overwrite`` the old folder is replaced as a whole."""
     check_output_folder(out_dir, "the report")
     if out_dir.is_dir() and any(out_dir.iterdir()) and not overwrite:
         what = "already holds a report" if (out_dir / "metrics.json").exists() else "is not empty"
@@ -96,9 +97,9 @@ def run(db_path: Path, corpus: Path, out_dir: Path, settings: EvaluateSettings, 
     """
     check_report_folder(out_dir, overwrite)
     metrics, records = evaluate(db_path, corpus, settings, synth, normalize_settings)
-    out_dir.mkdir(parents=True, exist_ok=True)
-    images = plot(records, out_dir, settings.plot_marker)
-    meta = {"db": str(db_path), "heldout": str(corpus), "split": settings.split, "sentences": len(records),
-            "plot_marker": settings.plot_marker, "closure_mm": settings.closure_mm}
-    write_report(out_dir, metrics, images, meta)
+    with atomic_folder(out_dir, "the report", overwrite) as tmp:
+        images = plot(records, tmp, settings.plot_marker)
+        meta = {"db": str(db_path), "heldout": str(corpus), "split": settings.split, "sentences": len(records),
+                "plot_marker": settings.plot_marker, "closure_mm": settings.closure_mm}
+        write_report(tmp, metrics, images, meta)
     return {m: v["overall"] for m, v in metrics.items()}

@@ -22,6 +22,7 @@ a click gives the ``isomap pick`` command for the point.
 
 from __future__ import annotations
 
+import contextlib
 import html
 import time
 import warnings
@@ -31,9 +32,10 @@ import numpy as np
 from scipy.ndimage import gaussian_filter
 from scipy.spatial import Delaunay
 
-from ..artifacts import check_output, check_output_folder
+from ..artifacts import atomic_folder, check_output, check_output_folder
 from ..config import IsomapSettings, settings_json
 from ..errors import InputError
+from ..limits import require_memory
 from ..model.isomap import Cluster, PhonemeMaps
 from ..model.motiondb import MotionDatabase, Nodes
 from ..progress import progress
@@ -342,25 +344,39 @@ def write_index(folder: Path, clusters: list[Cluster], trajectories: dict[str, l
     (folder / "index.html").write_text("\n".join(parts), encoding="utf-8")
 
 
+def memory_estimate(nodes: Nodes, settings: IsomapSettings) -> float:
+    """Bytes the largest cluster's Isomap needs: its exactly embedded frames' geodesic distances
+    (n x n float64), the neighbour graph's shortest paths and the double-centred copy, about
+    three n x n float64 arrays."""
+    counts: dict[str, int] = {}
+    for phone, c in zip(nodes.phone, nodes.frame_count):
+        counts[phone] = counts.get(phone, 0) + int(c)
+    largest = max(counts.values(), default=0)
+    exact = largest if settings.max_exact_frames <= 0 else min(largest, settings.max_exact_frames)
+    return 3.0 * 8 * exact * exact
+
+
 def run(db_path: Path, out: Path, settings: IsomapSettings, images: Path | None = None, overwrite: bool = False) -> dict:
     """Embed every phoneme cluster of ``db_path``, write ``out`` (an ``isomap`` artifact) and,
     with ``images``, the PNGs and ``index.html`` there; returns a summary."""
     check_output(out, overwrite)
     if images is not None:
-        check_output_folder(images, "the images")
+        check_output_folder(images, "the images", overwrite)
     if settings.n_neighbors < 2:
         raise InputError("isomap.n_neighbors must be at least 2.")
     db = MotionDatabase.read(db_path)
+    require_memory(memory_estimate(db.nodes, settings), "embedding the largest phoneme cluster", str(db_path))
     t0 = time.perf_counter()
     clusters = build_clusters(db.coeffs, db.nodes, settings)
     embed_s = time.perf_counter() - t0
-    if images is not None:
-        images.mkdir(parents=True, exist_ok=True)
-        trajectories = {c.phone: save_cluster_images(c, images, settings) for c in progress(clusters, "images")}
-        take_of_node = {k: db.takes.name[int(db.nodes.take[k])] for k in range(len(db.nodes))}
-        write_index(images, clusters, trajectories, settings.image_size, take_of_node)
-    PhonemeMaps(db.model, db.marker_names, {c.phone: c for c in clusters}).write(
-        out, config=settings_json(settings), inputs=[db_path], overwrite=overwrite)
+    with contextlib.ExitStack() as stack:
+        if images is not None:  # written beside the folder, renamed into place after the artifact
+            folder = stack.enter_context(atomic_folder(images, "the images", overwrite))
+            trajectories = {c.phone: save_cluster_images(c, folder, settings) for c in progress(clusters, "images")}
+            take_of_node = {k: db.takes.name[int(db.nodes.take[k])] for k in range(len(db.nodes))}
+            write_index(folder, clusters, trajectories, settings.image_size, take_of_node)
+        PhonemeMaps(db.model, db.marker_names, {c.phone: c for c in clusters}).write(
+            out, config=settings_json(settings), inputs=[db_path], overwrite=overwrite)
     small = {c.phone: c.note for c in clusters if c.note}
     return {"clusters": len(clusters), "frames": int(sum(len(c.frames) for c in clusters)), "embed_s": embed_s,
             "largest": max(len(c.frames) for c in clusters), "notes": small}

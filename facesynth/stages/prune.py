@@ -34,7 +34,8 @@ from ..model.tables import Takes
 
 
 def parse_ids(text: str, n: int) -> list[int]:
-    """'3,5,10-12' -> [3, 5, 10, 11, 12]; every id must exist."""
+    """'3,5,10-12' -> [3, 5, 10, 11, 12]; every id must exist. Each part is checked against the
+    ``n`` nodes before a range is expanded, so a range past the end costs nothing."""
     ids: set[int] = set()
     for part in text.split(","):
         part = part.strip()
@@ -44,10 +45,12 @@ def parse_ids(text: str, n: int) -> list[int]:
         if not m:
             raise InputError(f"--remove {text!r}: {part!r} is not a node id or a range like 10-12.")
         a, b = int(m.group(1)), int(m.group(2) or m.group(1))
+        if b < a:
+            raise InputError(f"--remove {text!r}: the range {part!r} ends before it starts; write it low-high.")
+        if b >= n:
+            missing = f"{b}" if a == b else f"{max(a, n)}-{b}"
+            raise InputError(f"--remove: node(s) [{missing}] do not exist; the database has nodes 0 to {n - 1}.")
         ids.update(range(a, b + 1))
-    bad = sorted(i for i in ids if i >= n)
-    if bad:
-        raise InputError(f"--remove: node(s) {bad[:5]} do not exist; the database has nodes 0 to {n - 1}.")
     if not ids:
         raise InputError("--remove names no node.")
     return sorted(ids)

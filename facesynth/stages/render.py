@@ -12,7 +12,7 @@ time 0 and picture and sound end together.
 
 from __future__ import annotations
 
-import tempfile
+import contextlib
 import time
 from dataclasses import dataclass
 from pathlib import Path
@@ -361,15 +361,19 @@ def run(anims: list[Path], audios: list[Path], out: Path, settings: RenderSettin
     rate = 48000
     audio = np.concatenate([clip_audio(a, len(c.vertices), settings.fps, rate, p) for c, a, p in zip(clips, audios, anims)])
     n_frames = sum(len(c.vertices) for c in clips)
-    with tempfile.TemporaryDirectory() as tmp, atomic_path(out, overwrite) as tmp_out:
-        wav = Path(tmp) / "audio.wav"
+    # The temporary audio lies beside the output (NAME.tmp-PID.wav: removed on every exit, and by
+    # the next run after a kill); ffmpeg gets absolute paths, which never read as options.
+    with atomic_path(out, overwrite) as tmp_out, contextlib.ExitStack() as cleanup:
+        wav = tmp_out.with_name(tmp_out.name + ".wav")
+        cleanup.callback(lambda: wav.unlink(missing_ok=True))
         write_wav(wav, audio, rate)
         writer = imageio_ffmpeg.write_frames(
-            str(tmp_out), (settings.width, settings.height), fps=settings.fps, codec="mjpeg", quality=9,
+            str(tmp_out.resolve()), (settings.width, settings.height), fps=settings.fps, codec="mjpeg", quality=9,
             ffmpeg_log_level="error",
-            pix_fmt_out="yuvj420p", audio_path=str(wav), audio_codec="pcm_s16le", macro_block_size=16,
+            pix_fmt_out="yuvj420p", audio_path=str(wav.resolve()), audio_codec="pcm_s16le", macro_block_size=16,
             output_params=["-f", "avi", "-fflags", "+bitexact", "-flags:v", "+bitexact", "-flags:a", "+bitexact"],
         )
+        cleanup.callback(writer.close)  # on an error ffmpeg is stopped before its audio is removed
         writer.send(None)
         frames = (f for c in clips for f in render_frames(c, settings, other))
         for frame in progress(frames, "render", length=n_frames):

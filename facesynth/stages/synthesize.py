@@ -10,8 +10,15 @@ from pathlib import Path
 from ..artifacts import check_output, input_records_in_background
 from ..config import AlignSettings, IngestSettings, SynthesizeSettings, settings_json
 from ..errors import UsageError
+from ..limits import require_memory
 from ..model.motiondb import MotionDatabase
 from ..search.synthesis import as_motion, prepare, synthesize, unseen_phones
+
+
+def memory_estimate(nodes: int, phones: int) -> float:
+    """Bytes the dense search needs: the (N, N) float32 transition matrix (twice, while it is
+    assembled panel-major) and per phone a row of float64 costs and int32 backpointers."""
+    return 2.0 * 4 * nodes * nodes + 12.0 * phones * nodes
 
 
 def run(db_path: Path, out: Path, settings: SynthesizeSettings, ingest_settings: IngestSettings,
@@ -27,12 +34,16 @@ def run(db_path: Path, out: Path, settings: SynthesizeSettings, ingest_settings:
         raise UsageError("motion-node constraints need the DP search (Eq. 10); drop --constraints or use --search dp.")
     check_output(out, overwrite)
     inputs = [p for p in (db_path, phones_path, emotions_path, constraints_path, audio) if p is not None]
-    records = input_records_in_background(inputs)
     t0 = time.perf_counter()
     db = MotionDatabase.read(db_path)
     load_s = time.perf_counter() - t0
+    # hashed from here, while the search runs: the database's record comes from the file just
+    # validated (not opened again), and a database replaced meanwhile is refused
+    records = input_records_in_background(inputs)
     utt, constraints = prepare(db, phones_path, emotions_path, constraints_path, ingest_settings, audio, text,
                                align_settings)
+    require_memory(memory_estimate(len(db.nodes), len(utt)), f"the search over {len(db.nodes)} motion nodes for "
+                   f"{len(utt)} phones", str(db_path))
     res = synthesize(db, utt, constraints, settings)
     t0 = time.perf_counter()
     input_records = records()
