@@ -78,14 +78,14 @@ __kernel void tc_block(FEATURE_PARAMS,
 //   best[c] = min(init[c], min_r (phi[r] + TC(rows[r], j)))
 // rows are sorted by phi ascending. TC >= 0, so the scan stops at the first row with
 // phi >= best; a row whose cheap lower bound (viseme penalty and pivot bounds of PGap and
-// VGap, shrunk by 1e-4 against rounding) already reaches best is skipped without computing
+// VGap, shrunk by 1e-4 relative and `slack` absolute against rounding) already reaches best is skipped without computing
 // its cost. The minimum is the same float32 value as the dense min over all rows; evals[c]
 // counts the pair costs computed.
 // pivots: row_lp/row_lv[i * PIVOTS + q] = mixed-norm distance of node i's last position /
 // velocity from pivot q; col_fp/col_fv likewise for first position / velocity.
 __kernel void pruned_columns(FEATURE_PARAMS,
                              __global const float *row_lp, __global const float *row_lv,
-                             __global const float *col_fp, __global const float *col_fv,
+                             __global const float *col_fp, __global const float *col_fv, const float slack,
                              __global const int *rows, __global const float *phi, const int n_rows,
                              __global const int *cols, __global const float *init, const int n_cols,
                              __global float *best_out, __global int *evals_out)
@@ -116,7 +116,7 @@ __kernel void pruned_columns(FEATURE_PARAMS,
             lp = ap > lp ? ap : lp;
             lv = av > lv ? av : lv;
         }
-        const float lb = ((vis[i] != pv ? pnt : 0.0f) + a3 * lp + lv) * 0.9999f;
+        const float lb = ((vis[i] != pv ? pnt : 0.0f) + a3 * lp + lv) * 0.9999f - slack;
         if (p + lb >= best) continue;
         const float v = p + pair_tc(i, j, PAIR_ARGS);
         best = v < best ? v : best;

@@ -25,6 +25,7 @@ from .tables import Phones, Takes, read_tables, write_tables
 
 BOUNDARY_KEYS = ("first_pos", "last_pos", "first_vel", "last_vel")
 DSC_KEYS = ("dsc_out", "dsc_in", "dsc_scale")
+PIVOT_KEYS = ("pivot_last_pos", "pivot_first_pos", "pivot_last_vel", "pivot_first_vel")
 
 
 @dataclass
@@ -161,7 +162,7 @@ class MotionDatabase:
         """Everything but the transition features; the normalized markers only if ``markers``."""
         with open_artifact(path, cls.KIND) as f:
             n = len(f["nodes/phone"]) if "nodes/phone" in f else -1
-            for key in [f"boundary/{k}" for k in BOUNDARY_KEYS] + [f"transition/{k}" for k in DSC_KEYS]:
+            for key in [f"boundary/{k}" for k in BOUNDARY_KEYS] + [f"transition/{k}" for k in DSC_KEYS + PIVOT_KEYS]:
                 if key not in f or len(f[key]) != n:
                     raise InputError(f"{path}: dataset '{key}' is missing or not one row per node; "
                                      "rebuild it with facesynth build-db.")
@@ -182,7 +183,8 @@ class MotionDatabase:
             boundary = [read(f, f"boundary/{k}") for k in BOUNDARY_KEYS]
             first_pos, last_pos, first_vel, last_vel = boundary
             return PairFeatures(first_pos, last_pos, first_vel, last_vel,
-                                *(read(f, f"transition/{k}") for k in DSC_KEYS), self.nodes.viseme, self.nodes.pre)
+                                *(read(f, f"transition/{k}") for k in DSC_KEYS), self.nodes.viseme, self.nodes.pre,
+                                tuple(read(f, f"transition/{k}") for k in PIVOT_KEYS))
 
     def transition_costs(self, settings, opencl: bool | None = None):
         """Table I's costs for ``settings`` (SynthesizeSettings), computed on demand
@@ -226,6 +228,11 @@ class MotionDatabase:
             tr.create_dataset("dsc_out", data=np.asarray(features.dsc_out, np.float32)).attrs["units"] = "mm"
             tr.create_dataset("dsc_in", data=np.asarray(features.dsc_in, np.float32)).attrs["units"] = "mm"
             tr.create_dataset("dsc_scale", data=np.asarray(features.dsc_scale, np.float32)).attrs["units"] = "1/frame^3"
+            from ..search.pairs import pivot_distances
+
+            distances = features.pivot_distances if features.pivot_distances is not None else pivot_distances(features)
+            for key, value, units in zip(PIVOT_KEYS, distances, ("mm", "mm", "mm/frame", "mm/frame")):
+                tr.create_dataset(key, data=np.asarray(value, np.float32)).attrs["units"] = units
             if self.pruned is not None:
                 q = stamp(g.create_group("pruned"), "pruned")
                 q.create_dataset("original_id", data=self.pruned.original_id.astype(np.int64))

@@ -43,6 +43,9 @@ class PairFeatures:
     dsc_in : (N, D) float32, y_j: second differences of s * pre(o_j) (0 without predecessor).
     dsc_scale : (N,) float32, 1/frame^3 (0 without predecessor).
     viseme : (N,) int64 Table VI class; pre : (N,) int64 captured predecessor or -1.
+    pivot_distances : (N, PIVOTS) float32 each: mixed-norm distances (sum over markers of the
+        Euclidean distance) of last_pos, first_pos, last_vel, first_vel from the pivots of
+        :func:`pivot_distances` (mm, mm, mm/frame, mm/frame); computed when None.
     """
 
     first_pos: np.ndarray
@@ -54,6 +57,7 @@ class PairFeatures:
     dsc_scale: np.ndarray
     viseme: np.ndarray
     pre: np.ndarray
+    pivot_distances: tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray] | None = None
 
     def __len__(self) -> int:
         return len(self.pre)
@@ -71,8 +75,9 @@ class PairFeatures:
         scale = self.dsc_scale[keep].copy()
         dsc_in[lost] = 0.0
         scale[lost] = 0.0
+        pivots = None if self.pivot_distances is None else tuple(d[keep] for d in self.pivot_distances)
         return PairFeatures(self.first_pos[keep], self.last_pos[keep], self.first_vel[keep], self.last_vel[keep],
-                            self.dsc_out[keep], dsc_in, scale, self.viseme[keep], pre)
+                            self.dsc_out[keep], dsc_in, scale, self.viseme[keep], pre, pivots)
 
     def terms(self, rows: np.ndarray, cols: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """DSC, PGap and VGap of every (rows[a], cols[b]), each (r, c) float32, front-to-back sums
@@ -127,6 +132,16 @@ def _pivots(a: np.ndarray, b: np.ndarray, count: int) -> np.ndarray:
     return np.array(picks, np.float32)
 
 
+def pivot_distances(f: PairFeatures) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Distances of every node's last/first positions and last/first velocities from
+    :data:`PIVOTS` pivots each ((N, PIVOTS) float32; positions and velocities have their own
+    pivots: the mean, then farthest-first picks). Only bounds use them, so any pivots are
+    valid; ``build-db`` stores them so a search need not compute them."""
+    pos = _pivots(f.last_pos, f.first_pos, PIVOTS)
+    vel = _pivots(f.last_vel, f.first_vel, PIVOTS)
+    return mixed_norms(f.last_pos, pos), mixed_norms(f.first_pos, pos), mixed_norms(f.last_vel, vel), mixed_norms(f.first_vel, vel)
+
+
 @dataclass
 class TransitionCosts:
     """TC(i, j) of Table I for settings ``s``, computed on demand (rows i = the node before).
@@ -149,10 +164,8 @@ class TransitionCosts:
         self.pre = f.pre.astype(np.int64)
         self.pre_viseme = f.pre_viseme
         self.a1pnt = np.float32(self.s.alpha1 * self.s.pnt)
-        pos_piv = _pivots(f.last_pos, f.first_pos, PIVOTS)
-        vel_piv = _pivots(f.last_vel, f.first_vel, PIVOTS)
-        self.row_lp, self.col_fp = mixed_norms(f.last_pos, pos_piv), mixed_norms(f.first_pos, pos_piv)
-        self.row_lv, self.col_fv = mixed_norms(f.last_vel, vel_piv), mixed_norms(f.first_vel, vel_piv)
+        distances = f.pivot_distances if f.pivot_distances is not None else pivot_distances(f)
+        self.row_lp, self.col_fp, self.row_lv, self.col_fv = (np.asarray(d, np.float32) for d in distances)
         xn = np.linalg.norm(f.dsc_out.astype(np.float64), axis=1)
         yn = np.linalg.norm(f.dsc_in.astype(np.float64), axis=1)
         scale = f.dsc_scale.astype(np.float64)
@@ -296,6 +309,10 @@ class OpenCLPairs:
                          up(tc.pre_viseme.astype(np.int32)),
                          np.float32(tc.s.alpha2), np.float32(tc.s.alpha3), np.float32(tc.s.pnt), tc.a1pnt]
         self.pivots = [up(tc.row_lp), up(tc.row_lv), up(tc.col_fp), up(tc.col_fv)]
+        # Absolute slack of the kernel's cheap lower bound: float32 rounding of the stored pivot
+        # distances and of the computed sums, far below any cost that matters.
+        self.slack = 1e-4 * (tc.s.alpha3 * (float(tc.row_lp.max(initial=0)) + float(tc.col_fp.max(initial=0)))
+                             + float(tc.row_lv.max(initial=0)) + float(tc.col_fv.max(initial=0))) + 1e-3
 
     def upload(self, a: np.ndarray):
         """A read-only device copy of ``a`` (float32 or int32, C order)."""
@@ -321,6 +338,14 @@ class OpenCLPairs:
             cl.enqueue_copy(self.queue, out[a : a + len(r)], buf)
         return out
 
+    def _scratch(self, n: int):
+        """Device buffers for one step (rows, phi, cols, init, best, evals) of n entries, reused."""
+        if getattr(self, "_capacity", 0) < n:
+            cl, mf = self.cl, self.cl.mem_flags
+            self._capacity = max(n, 1024)
+            self._buffers = [cl.Buffer(self.ctx, mf.READ_WRITE, 4 * self._capacity) for _ in range(6)]
+        return self._buffers
+
     def column_minima(self, rows: np.ndarray, phi: np.ndarray, cols: np.ndarray, init: np.ndarray) -> tuple[np.ndarray, int]:
         """min(init[c], min_r phi[r] + TC(rows[r], cols[c])) for rows sorted by ``phi`` (float32);
         returns the (c,) float32 minima and the number of pair costs computed."""
@@ -328,14 +353,18 @@ class OpenCLPairs:
         n_cols = len(cols)
         if n_cols == 0:
             return np.zeros(0, np.float32), 0
+        host = [np.ascontiguousarray(rows, np.int32), np.ascontiguousarray(phi, np.float32),
+                np.ascontiguousarray(cols, np.int32), np.ascontiguousarray(init, np.float32)]
+        rows_buf, phi_buf, cols_buf, init_buf, best_buf, evals_buf = self._scratch(max(len(rows), n_cols))
+        for buf, a in zip((rows_buf, phi_buf, cols_buf, init_buf), host):
+            if len(a):
+                cl.enqueue_copy(self.queue, buf, a, is_blocking=False)
         best = np.empty(n_cols, np.float32)
         evals = np.empty(n_cols, np.int32)
-        best_buf = cl.Buffer(self.ctx, cl.mem_flags.WRITE_ONLY, best.nbytes)
-        evals_buf = cl.Buffer(self.ctx, cl.mem_flags.WRITE_ONLY, evals.nbytes)
         local = min(64, n_cols)
         self.pruned_kernel(self.queue, (-(-n_cols // local) * local,), (local,), *self.features, *self.pivots,
-                           self.upload(rows), self.upload(phi.astype(np.float32)), np.int32(len(rows)),
-                           self.upload(cols), self.upload(init.astype(np.float32)), np.int32(n_cols), best_buf, evals_buf)
-        cl.enqueue_copy(self.queue, best, best_buf)
-        cl.enqueue_copy(self.queue, evals, evals_buf)
+                           np.float32(self.slack), rows_buf, phi_buf, np.int32(len(rows)), cols_buf, init_buf,
+                           np.int32(n_cols), best_buf, evals_buf)
+        cl.enqueue_copy(self.queue, best, best_buf, is_blocking=False)
+        cl.enqueue_copy(self.queue, evals, evals_buf, is_blocking=True)
         return best, int(evals.astype(np.int64).sum())
