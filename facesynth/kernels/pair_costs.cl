@@ -7,18 +7,37 @@
 //   TC(i, j)   = 0 if pre[j] == i; alpha1 PNT if pre[j] < 0; else
 //                ((alpha2 DSC + alpha3 PGap) + VGap) + PNT [viseme(i) != viseme(pre(j))]
 //
-// Every sum runs front to back in float32 with no contraction, so the values are bit-identical
-// to the NumPy reference (facesynth.search.pairs), which does the same operations in the same
-// order. The host passes alpha1 * PNT already rounded to float32, as the reference does.
+// Layout (facesynth.search.pairs.DeviceLayout): x and y are (N, DIMS8 * 8), zero-padded; the
+// boundary states are (N, 3, MQ * 8), the x, y and z coordinates of the markers in planes,
+// zero-padded (a padded marker adds sqrt(0) = 0). Each sum runs in eight lanes (element or
+// marker d goes to lane d % 8, front to back), and the lanes are added as
+// ((l0 + l1) + (l2 + l3)) + ((l4 + l5) + (l6 + l7)); no contraction, correctly rounded sqrt.
+// The NumPy reference (facesynth.search.pairs) does the same operations in the same order, so
+// the values are bit-identical. The host passes alpha1 * PNT already rounded to float32.
 #pragma OPENCL FP_CONTRACT OFF
 
-#ifndef DIMS
-#error "build with -DDIMS=<DSC feature length> -DM3=<3 x markers> -DPIVOTS=<pivots>"
+#ifndef DIMS8
+#error "build with -DDIMS8=<DSC feature length / 8> -DMQ=<markers / 8, rounded up> -DPIVOTS=<pivots>"
 #endif
 
-typedef struct {
-    float a2, a3, pnt, a1pnt;
-} weights;
+inline float lanes(const float8 a)
+{
+    return ((a.s0 + a.s1) + (a.s2 + a.s3)) + ((a.s4 + a.s5) + (a.s6 + a.s7));
+}
+
+inline float gap(__global const float *last, __global const float *first)
+{
+    __global const float8 *l = (__global const float8 *)last;
+    __global const float8 *f = (__global const float8 *)first;
+    float8 acc = (float8)(0.0f);
+    for (int q = 0; q < MQ; ++q) {
+        const float8 dx = f[q] - l[q];
+        const float8 dy = f[MQ + q] - l[MQ + q];
+        const float8 dz = f[2 * MQ + q] - l[2 * MQ + q];
+        acc = acc + sqrt(dx * dx + dy * dy + dz * dz);
+    }
+    return lanes(acc);
+}
 
 inline float pair_tc(const int i, const int j,
                      __global const float *x, __global const float *y, __global const float *scale,
@@ -30,25 +49,17 @@ inline float pair_tc(const int i, const int j,
     const int p = pre[j];
     if (p == i) return 0.0f;
     if (p < 0) return a1pnt;
-    __global const float *xi = x + (size_t)i * DIMS;
-    __global const float *yj = y + (size_t)j * DIMS;
-    float dsc = 0.0f;
-    for (int d = 0; d < DIMS; ++d) {
-        const float s = xi[d] + yj[d];
-        dsc = dsc + s * s;
+    __global const float8 *xi = (__global const float8 *)(x + (size_t)i * DIMS8 * 8);
+    __global const float8 *yj = (__global const float8 *)(y + (size_t)j * DIMS8 * 8);
+    float8 acc = (float8)(0.0f);
+    for (int d = 0; d < DIMS8; ++d) {
+        const float8 s = xi[d] + yj[d];
+        acc = acc + s * s;
     }
-    dsc = dsc * scale[j];
-    __global const float *lp = last_pos + (size_t)i * M3;
-    __global const float *fp = first_pos + (size_t)j * M3;
-    __global const float *lv = last_vel + (size_t)i * M3;
-    __global const float *fv = first_vel + (size_t)j * M3;
-    float pg = 0.0f, vg = 0.0f;
-    for (int k = 0; k < M3; k += 3) {
-        const float px = fp[k] - lp[k], py = fp[k + 1] - lp[k + 1], pz = fp[k + 2] - lp[k + 2];
-        pg = pg + sqrt(px * px + py * py + pz * pz);
-        const float vx = fv[k] - lv[k], vy = fv[k + 1] - lv[k + 1], vz = fv[k + 2] - lv[k + 2];
-        vg = vg + sqrt(vx * vx + vy * vy + vz * vz);
-    }
+    const float dsc = lanes(acc) * scale[j];
+    const size_t stride = (size_t)3 * MQ * 8;
+    const float pg = gap(last_pos + (size_t)i * stride, first_pos + (size_t)j * stride);
+    const float vg = gap(last_vel + (size_t)i * stride, first_vel + (size_t)j * stride);
     float tc = a2 * dsc;
     tc = tc + a3 * pg;
     tc = tc + vg;
@@ -74,13 +85,15 @@ __kernel void tc_block(FEATURE_PARAMS,
     out[(size_t)r * n_cols + c] = pair_tc(rows[r], cols[c], PAIR_ARGS);
 }
 
-// One step of the exact pruned DP for a list of columns j (one work-item each):
-//   best[c] = min(init[c], min_r (phi[r] + TC(rows[r], j)))
+// One step of the exact pruned DP for a list of nodes (one work-item each):
+//   forward (backward == 0):  best[c] = min(init[c], min_r (phi[r] + TC(rows[r], cols[c])))
+//   backward (backward == 1): best[c] = min(init[c], min_r (phi[r] + TC(cols[c], rows[r])))
 // rows are sorted by phi ascending. TC >= 0, so the scan stops at the first row with
 // phi >= best; a row whose cheap lower bound (viseme penalty and pivot bounds of PGap and
-// VGap, shrunk by 1e-4 relative and `slack` absolute against rounding) already reaches best is skipped without computing
-// its cost. The minimum is the same float32 value as the dense min over all rows; evals[c]
-// counts the pair costs computed.
+// VGap, shrunk by 1e-4 relative and `slack` absolute against rounding) already reaches best
+// is skipped without computing its cost. Pairs of Table I rules 1 and 4 are left to init
+// (the captured link costs 0; rule 4 costs alpha1 PNT from every node). The minimum is the
+// same float32 value as the dense min over all rows; evals[c] counts the pair costs computed.
 // pivots: row_lp/row_lv[i * PIVOTS + q] = mixed-norm distance of node i's last position /
 // velocity from pivot q; col_fp/col_fv likewise for first position / velocity.
 __kernel void pruned_columns(FEATURE_PARAMS,
@@ -88,35 +101,39 @@ __kernel void pruned_columns(FEATURE_PARAMS,
                              __global const float *col_fp, __global const float *col_fv, const float slack,
                              __global const int *rows, __global const float *phi, const int n_rows,
                              __global const int *cols, __global const float *init, const int n_cols,
-                             __global float *best_out, __global int *evals_out)
+                             const int backward, __global float *best_out, __global int *evals_out)
 {
     const int c = get_global_id(0);
     if (c >= n_cols) return;
-    const int j = cols[c];
-    const int pj = pre[j];
-    const int pv = pre_vis[j];
+    const int me = cols[c];
+    const int me_pre = pre[me];
     float best = init[c];
     int evals = 0;
-    float fpq[PIVOTS], fvq[PIVOTS];
+    float mq_p[PIVOTS], mq_v[PIVOTS];
     for (int q = 0; q < PIVOTS; ++q) {
-        fpq[q] = col_fp[(size_t)j * PIVOTS + q];
-        fvq[q] = col_fv[(size_t)j * PIVOTS + q];
+        mq_p[q] = backward ? row_lp[(size_t)me * PIVOTS + q] : col_fp[(size_t)me * PIVOTS + q];
+        mq_v[q] = backward ? row_lv[(size_t)me * PIVOTS + q] : col_fv[(size_t)me * PIVOTS + q];
     }
+    __global const float *other_p = backward ? col_fp : row_lp;
+    __global const float *other_v = backward ? col_fv : row_lv;
     for (int r = 0; r < n_rows; ++r) {
         const float p = phi[r];
         if (p >= best) break;
-        const int i = rows[r];
-        if (i == pj) continue;  // rule 1 is in init
+        const int other = rows[r];
+        const int i = backward ? me : other;
+        const int j = backward ? other : me;
+        const int pj = backward ? pre[other] : me_pre;
+        if (pj == i || pj < 0) continue;  // rules 1 and 4 are in init
         float lp = 0.0f, lv = 0.0f;
         for (int q = 0; q < PIVOTS; ++q) {
-            const float dp = row_lp[(size_t)i * PIVOTS + q] - fpq[q];
-            const float dv = row_lv[(size_t)i * PIVOTS + q] - fvq[q];
+            const float dp = other_p[(size_t)other * PIVOTS + q] - mq_p[q];
+            const float dv = other_v[(size_t)other * PIVOTS + q] - mq_v[q];
             const float ap = dp < 0.0f ? -dp : dp;
             const float av = dv < 0.0f ? -dv : dv;
             lp = ap > lp ? ap : lp;
             lv = av > lv ? av : lv;
         }
-        const float lb = ((vis[i] != pv ? pnt : 0.0f) + a3 * lp + lv) * 0.9999f - slack;
+        const float lb = ((vis[i] != pre_vis[j] ? pnt : 0.0f) + a3 * lp + lv) * 0.9999f - slack;
         if (p + lb >= best) continue;
         const float v = p + pair_tc(i, j, PAIR_ARGS);
         best = v < best ? v : best;

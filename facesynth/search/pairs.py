@@ -12,8 +12,8 @@ pair (i, j) are made of, and a pair's DSC, PGap and VGap are computed when a sea
 * PGap, VGap (Eq. 8-9): sums over markers of the distances between o_i's last frame and o_j's
   first frame, positions (mm) and velocities (mm/frame).
 
-Every sum runs front to back in float32, here and in ``kernels/pair_costs.cl``, so both give
-bit-identical values. Against the stored float32 tables of schema 1 (DSC expanded as
+Every sum runs in float32 in eight lanes (term d in lane d % 8, front to back) that are then
+added in a fixed tree, here and in ``kernels/pair_costs.cl``, so both give bit-identical values. Against the stored float32 tables of schema 1 (DSC expanded as
 ``|x|^2 + |y|^2 + 2 x.y`` in float64 and rounded once) the float32 sums differ by at most
 ``(D + 2) 2^-24`` of the sum of the squares' magnitudes for DSC (D = (S - 2) K terms;
 measured: below 2e-6 relative to the largest DSC of a database) and by at most
@@ -79,36 +79,83 @@ class PairFeatures:
         return PairFeatures(self.first_pos[keep], self.last_pos[keep], self.first_vel[keep], self.last_vel[keep],
                             self.dsc_out[keep], dsc_in, scale, self.viseme[keep], pre, pivots)
 
+    def layout(self) -> "DeviceLayout":
+        """The padded, lane-ordered copies the pair sums run on (made once)."""
+        if getattr(self, "_layout", None) is None:
+            self._layout = DeviceLayout.of(self)
+        return self._layout
+
     def terms(self, rows: np.ndarray, cols: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """DSC, PGap and VGap of every (rows[a], cols[b]), each (r, c) float32, front-to-back sums
-        (the reference of ``kernels/pair_costs.cl``)."""
+        """DSC, PGap and VGap of every (rows[a], cols[b]), each (r, c) float32, summed in eight
+        lanes and then across them (the reference of ``kernels/pair_costs.cl``, bit-identical)."""
         rows, cols = np.asarray(rows), np.asarray(cols)
-        x, y = self.dsc_out[rows], self.dsc_in[cols]
-        dsc = np.zeros((len(rows), len(cols)), np.float32)
-        s = np.empty_like(dsc)
-        for d in range(x.shape[1]):
-            np.add(x[:, d, None], y[None, :, d], out=s)
+        lay = self.layout()
+        x, y = lay.x[rows], lay.y[cols]  # (r, Q, 8), (c, Q, 8)
+        acc = np.zeros((len(rows), len(cols), 8), np.float32)
+        s = np.empty_like(acc)
+        for q in range(x.shape[1]):
+            np.add(x[:, None, q], y[None, :, q], out=s)
             s *= s
-            dsc += s
+            acc += s
+        dsc = _lanes(acc)
         dsc *= self.dsc_scale[cols][None, :]
-        return dsc, _gap_sum(self.last_pos[rows], self.first_pos[cols]), _gap_sum(self.last_vel[rows], self.first_vel[cols])
+        return (dsc, _gap_lanes(lay.last_pos[rows], lay.first_pos[cols]),
+                _gap_lanes(lay.last_vel[rows], lay.first_vel[cols]))
 
 
-def _gap_sum(last: np.ndarray, first: np.ndarray) -> np.ndarray:
-    """sum_k || first[b, k] - last[a, k] ||, (r, c) float32, summed over markers front to back."""
-    out = np.zeros((len(last), len(first)), np.float32)
-    d = np.empty_like(out)
-    acc = np.empty_like(out)
-    for k in range(0, last.shape[1], 3):
-        np.subtract(first[None, :, k], last[:, k, None], out=d)
-        np.multiply(d, d, out=acc)
+@dataclass
+class DeviceLayout:
+    """The features as the pair sums read them: x, y (N, Q, 8) float32 zero-padded to a
+    multiple of 8; boundary states (N, 3, Mq, 8) float32, coordinate planes with marker k in
+    lane k % 8 of group k // 8, zero-padded."""
+
+    x: np.ndarray
+    y: np.ndarray
+    last_pos: np.ndarray
+    first_pos: np.ndarray
+    last_vel: np.ndarray
+    first_vel: np.ndarray
+
+    @classmethod
+    def of(cls, f: PairFeatures) -> "DeviceLayout":
+        def lanes8(a):
+            n, d = a.shape
+            out = np.zeros((n, -(-d // 8) * 8), np.float32)
+            out[:, :d] = a
+            return out.reshape(n, -1, 8)
+
+        def planes(a):
+            n, m3 = a.shape
+            m = m3 // 3
+            out = np.zeros((n, 3, -(-m // 8) * 8), np.float32)
+            out[:, :, :m] = a.reshape(n, m, 3).transpose(0, 2, 1)
+            return out.reshape(n, 3, -1, 8)
+
+        return cls(lanes8(f.dsc_out), lanes8(f.dsc_in), planes(f.last_pos), planes(f.first_pos), planes(f.last_vel),
+                   planes(f.first_vel))
+
+
+def _lanes(a: np.ndarray) -> np.ndarray:
+    """((l0 + l1) + (l2 + l3)) + ((l4 + l5) + (l6 + l7)) over the last axis (float32)."""
+    return ((a[..., 0] + a[..., 1]) + (a[..., 2] + a[..., 3])) + ((a[..., 4] + a[..., 5]) + (a[..., 6] + a[..., 7]))
+
+
+def _gap_lanes(last: np.ndarray, first: np.ndarray) -> np.ndarray:
+    """sum over markers of || first[b, k] - last[a, k] ||, (r, c) float32, in the lane order of
+    the kernel; last (r, 3, Mq, 8), first (c, 3, Mq, 8)."""
+    acc = np.zeros((len(last), len(first), 8), np.float32)
+    d = np.empty_like(acc)
+    sq = np.empty_like(acc)
+    for q in range(last.shape[2]):
+        np.subtract(first[None, :, 0, q], last[:, None, 0, q], out=sq)
+        sq *= sq
         for c in (1, 2):
-            np.subtract(first[None, :, k + c], last[:, k + c, None], out=d)
+            np.subtract(first[None, :, c, q], last[:, None, c, q], out=d)
             d *= d
-            acc += d
-        np.sqrt(acc, out=acc)
-        out += acc
-    return out
+            sq += d
+        np.sqrt(sq, out=sq)
+        acc += sq
+    return _lanes(acc)
 
 
 def mixed_norms(a: np.ndarray, pivots: np.ndarray) -> np.ndarray:
@@ -300,12 +347,13 @@ class OpenCLPairs:
 
         self.cl, self.ctx, self.queue, self.tc = cl, context(), queue(), tc
         f = tc.f
-        defines = dict(DIMS=int(f.dsc_out.shape[1]), M3=int(f.first_pos.shape[1]), PIVOTS=PIVOTS)
+        lay = f.layout()
+        defines = dict(DIMS8=int(lay.x.shape[1]), MQ=int(lay.last_pos.shape[2]), PIVOTS=PIVOTS)
         self.block_kernel = kernel("pair_costs", "tc_block", **defines)
         self.pruned_kernel = kernel("pair_costs", "pruned_columns", **defines)
         up = self.upload
-        self.features = [up(f.dsc_out), up(f.dsc_in), up(f.dsc_scale), up(f.last_pos), up(f.first_pos),
-                         up(f.last_vel), up(f.first_vel), up(f.viseme.astype(np.int32)), up(tc.pre.astype(np.int32)),
+        self.features = [up(lay.x), up(lay.y), up(f.dsc_scale), up(lay.last_pos), up(lay.first_pos),
+                         up(lay.last_vel), up(lay.first_vel), up(f.viseme.astype(np.int32)), up(tc.pre.astype(np.int32)),
                          up(tc.pre_viseme.astype(np.int32)),
                          np.float32(tc.s.alpha2), np.float32(tc.s.alpha3), np.float32(tc.s.pnt), tc.a1pnt]
         self.pivots = [up(tc.row_lp), up(tc.row_lv), up(tc.col_fp), up(tc.col_fv)]
@@ -346,9 +394,11 @@ class OpenCLPairs:
             self._buffers = [cl.Buffer(self.ctx, mf.READ_WRITE, 4 * self._capacity) for _ in range(6)]
         return self._buffers
 
-    def column_minima(self, rows: np.ndarray, phi: np.ndarray, cols: np.ndarray, init: np.ndarray) -> tuple[np.ndarray, int]:
-        """min(init[c], min_r phi[r] + TC(rows[r], cols[c])) for rows sorted by ``phi`` (float32);
-        returns the (c,) float32 minima and the number of pair costs computed."""
+    def column_minima(self, rows: np.ndarray, phi: np.ndarray, cols: np.ndarray, init: np.ndarray,
+                      backward: bool = False) -> tuple[np.ndarray, int]:
+        """min(init[c], min_r phi[r] + TC(rows[r], cols[c])) for rows sorted by ``phi`` (float32),
+        or with ``backward`` TC(cols[c], rows[r]); pairs of Table I rules 1 and 4 are left to
+        ``init``. Returns the (c,) float32 minima and the number of pair costs computed."""
         cl = self.cl
         n_cols = len(cols)
         if n_cols == 0:
@@ -364,7 +414,7 @@ class OpenCLPairs:
         local = min(64, n_cols)
         self.pruned_kernel(self.queue, (-(-n_cols // local) * local,), (local,), *self.features, *self.pivots,
                            np.float32(self.slack), rows_buf, phi_buf, np.int32(len(rows)), cols_buf, init_buf,
-                           np.int32(n_cols), best_buf, evals_buf)
+                           np.int32(n_cols), np.int32(bool(backward)), best_buf, evals_buf)
         cl.enqueue_copy(self.queue, best, best_buf, is_blocking=False)
         cl.enqueue_copy(self.queue, evals, evals_buf, is_blocking=True)
         return best, int(evals.astype(np.int64).sum())

@@ -85,9 +85,7 @@ def _dominated(tc: TransitionCosts, cand: np.ndarray, lower: np.ndarray, refs: n
     open_ = np.nonzero(~killed)[0]
     if len(open_):
         j = cand[open_]
-        best = np.full(len(j), np.inf)
-        for r, u in zip(refs, ref_upper):
-            best = np.minimum(best, u + tc.advantage(np.full(len(j), r), j))
+        best = (ref_upper[:, None] + tc.advantage(refs[:, None], j[None, :])).min(axis=0)
         killed[open_] = lower[open_] > best + _margin(lower[open_], best)
     return killed
 
@@ -101,9 +99,10 @@ def _references(idx: np.ndarray, upper: np.ndarray, count: int = REFERENCES) -> 
 
 
 def _column_minima_numpy(tc: TransitionCosts, rows: np.ndarray, phi: np.ndarray, cols: np.ndarray,
-                         init: np.ndarray) -> tuple[np.ndarray, int]:
+                         init: np.ndarray, backward: bool = False) -> tuple[np.ndarray, int]:
     """Reference of ``pruned_columns`` in ``kernels/pair_costs.cl``: the same minima, scanning the
-    sorted rows in blocks and stopping per column once ``phi >= best``."""
+    sorted rows in blocks and stopping per column once ``phi >= best`` (``backward``: the
+    costs TC(cols, rows))."""
     best = init.astype(np.float32).copy()
     evals = 0
     for a in range(0, len(rows), NUMPY_ROW_BLOCK):
@@ -111,17 +110,20 @@ def _column_minima_numpy(tc: TransitionCosts, rows: np.ndarray, phi: np.ndarray,
         if len(active) == 0:
             break
         r = rows[a : a + NUMPY_ROW_BLOCK]
-        block = phi[a : a + NUMPY_ROW_BLOCK, None] + tc.block_numpy(r, cols[active])
+        costs = tc.block_numpy(cols[active], r).T if backward else tc.block_numpy(r, cols[active])
+        block = phi[a : a + NUMPY_ROW_BLOCK, None] + costs
         evals += block.size
         best[active] = np.minimum(best[active], block.min(axis=0))
     return best, evals
 
 
-def dp_pruned(tc: TransitionCosts, obs: np.ndarray) -> tuple[DpResult, PruneStats]:
+def dp_pruned(tc: TransitionCosts, obs: np.ndarray, keep_last: bool = False) -> tuple[DpResult, PruneStats]:
     """Algorithm 1 for observation costs ``obs`` ((T, N) float32: OC + EMP + B per step) over the
     transition costs ``tc`` (computed on demand; on OpenCL when ``tc.opencl``). Returns the
     result (cost, (T,) path, (T, N) float32 phi with +inf on pruned states) and the counts.
-    The cost and path equal :func:`facesynth.search.dp.dp_numpy` on ``tc.dense()``."""
+    The cost and path equal :func:`facesynth.search.dp.dp_numpy` on ``tc.dense()``, and so does
+    phi on every state kept; with ``keep_last`` no state of the last step is pruned, so its
+    phi is the dense DP's for every node."""
     obs = np.asarray(obs, np.float32)
     t_count, n = obs.shape
     stats = PruneStats(dense_pairs=(t_count - 1) * n * n)
@@ -156,7 +158,7 @@ def dp_pruned(tc: TransitionCosts, obs: np.ndarray) -> tuple[DpResult, PruneStat
         upper[probes] = best + obs[t, probes]
         phi[t, probes] = upper[probes]
         refs, ref_upper = _references(all_nodes, upper)
-        killed = _dominated(tc, all_nodes, lower, refs, ref_upper, last)
+        killed = (np.zeros(n, bool) if last and keep_last else _dominated(tc, all_nodes, lower, refs, ref_upper, last))
         cols = np.nonzero(~killed & with_pre)[0]
         cols = cols[np.isinf(phi[t, cols])]  # the probes are done
         stats.columns.append(len(cols) + len(probes))
@@ -188,3 +190,29 @@ def _after(tc: TransitionCosts, live: np.ndarray, values: np.ndarray, last: bool
     refs, ref_upper = _references(live, values[live])
     killed = _dominated(tc, live, values[live], refs, ref_upper, last)
     return live[~killed]
+
+
+def backward_pruned(tc: TransitionCosts, obs: np.ndarray, stop: int = 0) -> tuple[np.ndarray, PruneStats]:
+    """The dense DP run backwards, exactly: ``beta[t](i) = min_k (beta[t+1](k) + TC(i, k)) + obs[t](i)``
+    for t from T - 1 down to ``stop`` (beta[T-1] = obs[T-1]); the same float32 values as
+    :func:`facesynth.search.dp.dp_numpy` on ``tc.dense().T`` with ``obs[::-1]``. Returns
+    ``beta[stop]`` ((N,) float32) and the counts. No state is pruned (every node's value is
+    wanted); the sorted scan with its cheap bounds still skips most pairs."""
+    obs = np.asarray(obs, np.float32)
+    t_count, n = obs.shape
+    stats = PruneStats(dense_pairs=(t_count - 1 - stop) * n * n)
+    minima = tc.device.column_minima if tc.opencl else (lambda *a, **k: _column_minima_numpy(tc, *a, **k))
+    beta = obs[-1].copy()
+    suc = tc._suc
+    no_pre = tc.pre < 0
+    nodes = np.arange(n, dtype=np.int32)
+    for t in range(t_count - 2, stop - 1, -1):
+        order = np.argsort(beta, kind="stable")
+        # rule 1: k = suc(i) costs 0; rule 4: every k without predecessor costs alpha1 PNT
+        rule4 = (beta[no_pre].min() + tc.a1pnt) if no_pre.any() else np.float32(np.inf)
+        init = np.where(suc >= 0, beta[np.maximum(suc, 0)], np.float32(np.inf))
+        init = np.minimum(init, rule4).astype(np.float32)
+        best, evals = minima(order.astype(np.int32), beta[order], nodes, init, backward=True)
+        stats.pairs += evals
+        beta = best + obs[t]
+    return beta, stats

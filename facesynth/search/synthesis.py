@@ -9,6 +9,7 @@ output frame keeps its provenance (node, take, source frame).
 
 from __future__ import annotations
 
+import threading
 import time
 from pathlib import Path
 from typing import Callable
@@ -69,9 +70,21 @@ def search(tc, steps: StepCosts, settings: SynthesizeSettings, *, while_running:
     from .pruned import dp_pruned
 
     if settings.dp == "pruned":
-        result, stats = dp_pruned(tc, steps.total)
-        if while_running is not None:
-            while_running()
+        if tc.opencl:
+            t0 = time.perf_counter()
+            tc.device  # kernels built, features uploaded
+            if timings is not None:
+                timings["opencl_setup_s"] = time.perf_counter() - t0
+        # The host work overlaps the search on a thread: the search waits on the device and on
+        # NumPy, both of which release the GIL.
+        helper = threading.Thread(target=while_running) if while_running is not None else None
+        if helper is not None:
+            helper.start()
+        try:
+            result, stats = dp_pruned(tc, steps.total)
+        finally:
+            if helper is not None:
+                helper.join()
         return result, device_record(settings.use_opencl), stats.fraction
     if not tc.opencl:
         return dp_numpy(tc.dense(), steps.total), device_record(settings.use_opencl), 1.0

@@ -117,3 +117,26 @@ def test_tiny_preset_with_emotions_and_constraints(tiny_db, tiny_corpus, held_ou
     for t, node in constraints.items():
         assert res.path[t] == node
     assert stats.fraction < 0.5
+
+
+@pytest.mark.parametrize("opencl", [False, True])
+def test_backward_values_and_a_kept_last_step_equal_the_dense_dp(opencl):
+    if opencl:
+        from facesynth.opencl import use_opencl
+
+        if not use_opencl(True):
+            pytest.skip("no OpenCL device builds facesynth's kernels")
+    from facesynth.search.pruned import backward_pruned
+
+    s = _settings()
+    f = random_features(150, seed=77, duplicates=30)
+    obs = _random_obs(f, 9, seed=5, s=s)
+    tc = TransitionCosts(f, s, opencl=opencl)
+    dense = tc.dense()
+    back = dp_numpy(np.ascontiguousarray(dense.T), obs[::-1].copy())
+    for stop in (0, 4, 8):
+        beta, _ = backward_pruned(tc, obs, stop)
+        assert np.array_equal(beta, back.phi[len(obs) - 1 - stop])
+    fwd = dp_numpy(dense, obs[:5])
+    res, _ = dp_pruned(tc, obs[:5], keep_last=True)
+    assert np.array_equal(res.phi[-1], fwd.phi[-1])
