@@ -100,3 +100,20 @@ def test_frames_know_their_node_and_relative_time(tiny_db):
     assert (frame_node[sl] == k).all() and rel[sl][0] == 0.0 and rel[sl][-1] == 1.0
     assert np.all(np.diff(rel[sl]) > 0)
     assert np.isnan(rel[frame_node < 0]).all()
+
+
+def test_a_database_with_pair_tables_says_to_rebuild(tiny_db, tmp_path):
+    """Schema 1 stored (N, N) pair tables; such a file is refused with one sentence."""
+    import shutil
+
+    import h5py
+
+    from facesynth.errors import FacesynthError
+    from facesynth.model.motiondb import MotionDatabase
+
+    old = tmp_path / "old.h5"
+    shutil.copy(tiny_db, old)
+    with h5py.File(old, "a") as f:
+        f.attrs["facesynth_schema"] = 1
+    with pytest.raises(FacesynthError, match=r"schema 1 is not the supported schema 2; rebuild it with .*facesynth build-db"):
+        MotionDatabase.read(old)
