@@ -94,8 +94,10 @@ def _references(idx: np.ndarray, upper: np.ndarray, count: int = REFERENCES) -> 
     """The ``count`` entries of ``idx`` with the smallest finite ``upper``."""
     finite = np.isfinite(upper)
     idx, upper = idx[finite], upper[finite]
-    order = np.argsort(upper, kind="stable")[:count]
-    return idx[order], upper[order].astype(np.float64)
+    if len(upper) > count:
+        keep = np.argpartition(upper, count - 1)[:count]
+        idx, upper = idx[keep], upper[keep]
+    return idx, upper.astype(np.float64)
 
 
 def _column_minima_numpy(tc: TransitionCosts, rows: np.ndarray, phi: np.ndarray, cols: np.ndarray,
@@ -152,7 +154,9 @@ def dp_pruned(tc: TransitionCosts, obs: np.ndarray, keep_last: bool = False) -> 
         rows_sorted, phi_sorted = order.astype(np.int32), prev[order]
         # Probes: a few columns evaluated first, so the references have tight values.
         candidates = np.nonzero(with_pre)[0]
-        probes = candidates[np.lexsort((upper[candidates], lower[candidates]))[:PROBES]]
+        if len(candidates) > 4 * PROBES:  # the few smallest lower bounds, without sorting all N
+            candidates = candidates[np.argpartition(lower[candidates], 4 * PROBES - 1)[: 4 * PROBES]]
+        probes = candidates[np.lexsort((candidates, upper[candidates], lower[candidates]))[:PROBES]]
         best, evals = minima(rows_sorted, phi_sorted, probes.astype(np.int32), pre_val[probes])
         stats.pairs += evals
         upper[probes] = best + obs[t, probes]
