@@ -142,3 +142,16 @@ __kernel void pruned_columns(FEATURE_PARAMS,
     best_out[c] = best;
     evals_out[c] = evals;
 }
+
+// The device layout of a boundary state: (n, 3M) interleaved x, y, z per marker ->
+// (n, 3, MQ * 8) coordinate planes, zero-padded (facesynth.search.pairs.DeviceLayout).
+__kernel void to_planes(__global const float *src, const int n, const int m, __global float *dst)
+{
+    const int node = get_global_id(0);
+    if (node >= n) return;
+    __global const float *s = src + (size_t)node * 3 * m;
+    __global float *d = dst + (size_t)node * 3 * MQ * 8;
+    for (int c = 0; c < 3; ++c)
+        for (int k = 0; k < MQ * 8; ++k)
+            d[c * MQ * 8 + k] = k < m ? s[3 * k + c] : 0.0f;
+}

@@ -213,8 +213,9 @@ class TransitionCosts:
         self.a1pnt = np.float32(self.s.alpha1 * self.s.pnt)
         distances = f.pivot_distances if f.pivot_distances is not None else pivot_distances(f)
         self.row_lp, self.col_fp, self.row_lv, self.col_fv = (np.asarray(d, np.float32) for d in distances)
-        xn = np.linalg.norm(f.dsc_out.astype(np.float64), axis=1)
-        yn = np.linalg.norm(f.dsc_in.astype(np.float64), axis=1)
+        # float32 norms: 1e-6 relative at most, far inside the margins the bounds are used with
+        xn = np.sqrt(np.einsum("ij,ij->i", f.dsc_out, f.dsc_out)).astype(np.float64)
+        yn = np.sqrt(np.einsum("ij,ij->i", f.dsc_in, f.dsc_in)).astype(np.float64)
         scale = f.dsc_scale.astype(np.float64)
         # a2 DSC(i, k) <= a2 scale_k (|x_i| + |y_k|)^2 <= dsc_row_max[i] for every k
         self.dsc_row_max = self.s.alpha2 * (scale.max(initial=0.0) * xn ** 2 + 2 * xn * (scale * yn).max(initial=0.0)
@@ -347,13 +348,31 @@ class OpenCLPairs:
 
         self.cl, self.ctx, self.queue, self.tc = cl, context(), queue(), tc
         f = tc.f
-        lay = f.layout()
-        defines = dict(DIMS8=int(lay.x.shape[1]), MQ=int(lay.last_pos.shape[2]), PIVOTS=PIVOTS)
+        dims8, markers = -(-f.dsc_out.shape[1] // 8), f.first_pos.shape[1] // 3
+        defines = dict(DIMS8=dims8, MQ=-(-markers // 8), PIVOTS=PIVOTS)
         self.block_kernel = kernel("pair_costs", "tc_block", **defines)
         self.pruned_kernel = kernel("pair_costs", "pruned_columns", **defines)
         up = self.upload
-        self.features = [up(lay.x), up(lay.y), up(f.dsc_scale), up(lay.last_pos), up(lay.first_pos),
-                         up(lay.last_vel), up(lay.first_vel), up(f.viseme.astype(np.int32)), up(tc.pre.astype(np.int32)),
+        # The lane layout of DeviceLayout, made on the device: no host copy of the features.
+        planes = kernel("pair_costs", "to_planes", **defines)
+
+        def as_planes(a):
+            src = up(a)
+            out = cl.Buffer(self.ctx, cl.mem_flags.READ_WRITE, max(4, 4 * len(a) * 3 * defines["MQ"] * 8))
+            if len(a):
+                planes(self.queue, (len(a),), None, src, np.int32(len(a)), np.int32(markers), out)
+            return out
+
+        def as_lanes(a):
+            if a.shape[1] % 8 == 0:
+                return up(a)
+            padded = np.zeros((len(a), dims8 * 8), np.float32)
+            padded[:, : a.shape[1]] = a
+            return up(padded)
+
+        self.features = [as_lanes(f.dsc_out), as_lanes(f.dsc_in), up(f.dsc_scale), as_planes(f.last_pos),
+                         as_planes(f.first_pos), as_planes(f.last_vel), as_planes(f.first_vel),
+                         up(f.viseme.astype(np.int32)), up(tc.pre.astype(np.int32)),
                          up(tc.pre_viseme.astype(np.int32)),
                          np.float32(tc.s.alpha2), np.float32(tc.s.alpha3), np.float32(tc.s.pnt), tc.a1pnt]
         self.pivots = [up(tc.row_lp), up(tc.row_lv), up(tc.col_fp), up(tc.col_fv)]

@@ -41,7 +41,7 @@ from .dp import DpResult
 from .pairs import TransitionCosts
 
 #: States used as dominance references per step.
-REFERENCES = 8
+REFERENCES = 4
 #: Columns evaluated first at each step to give the references exact values.
 PROBES = 32
 #: Rows per block in the NumPy reference's sorted scan.
