@@ -14,7 +14,9 @@ takes are kept once. Deterministic for a seed.
 Commands run in child processes; each child reports its own peak resident memory (VmHWM of
 /proc/self/status) and the parent times it.
 
-    python benchmarks/scale_search.py [--pca out/scale/pca.h5] [--copies 1 4 18] [--work out/scale]
+    python benchmarks/scale_search.py [--pca out/scale/pca.h5] [--copies 1 4 18] [--work out/scale] [--out docs]
+
+With ``--out`` it also writes ``scale.json`` (the JSON below) and ``scale.md`` (its tables) there.
 """
 
 from __future__ import annotations
@@ -215,6 +217,7 @@ def main() -> None:
     ap.add_argument("--work", type=Path, default=Path("out/scale"))
     ap.add_argument("--weak", nargs="*", default=["synthesize.pnt=1e-6"],
                     help="settings that weaken the bounds, measured at the smallest size")
+    ap.add_argument("--out", type=Path, default=None, help="folder for scale.json and scale.md")
     args = ap.parse_args()
     sys.path.insert(0, str(HERE))
     from dp_table_v import PHRASES, phrase_phones, write_phrase
@@ -223,7 +226,7 @@ def main() -> None:
     pca = args.pca or paper_pca(args.work)
     for length in LENGTHS:
         write_phrase(phrase_phones(PHRASES[length], length), args.work / f"phrase{length}.TextGrid")
-    report = {"sizes": []}
+    report = {"host": host(), "sizes": []}
     for copies in args.copies:
         folder = args.work / f"x{copies}"
         folder.mkdir(exist_ok=True)
@@ -248,6 +251,55 @@ def main() -> None:
         report["sizes"].append(row)
         print(json.dumps(row), file=sys.stderr, flush=True)
     print(json.dumps(report, indent=1))
+    if args.out is not None:
+        args.out.mkdir(parents=True, exist_ok=True)
+        (args.out / "scale.json").write_text(json.dumps(report, indent=1) + "\n", encoding="utf-8")
+        (args.out / "scale.md").write_text(markdown(report), encoding="utf-8")
+
+
+def host() -> dict:
+    """The processor count, memory and load average of the machine, and the OpenCL device."""
+    import os
+
+    from facesynth.opencl import choice
+
+    mem = next((int(line.split()[1]) for line in Path("/proc/meminfo").read_text().splitlines()
+                if line.startswith("MemTotal:")), 0)
+    return {"cpus": os.cpu_count(), "memory_gb": round(mem * 1024 / 1e9, 1),
+            "load_average_at_start": [round(x, 2) for x in os.getloadavg()], "device": choice().description}
+
+
+def markdown(report: dict) -> str:
+    """``docs/scale.md``: the tables of a :func:`main` report."""
+    h = report["host"]
+    lines = ["# The exact search at scale", "",
+             "Written by `benchmarks/scale_search.py --out docs` (do not edit); every number is in `scale.json`. "
+             f"Host: {h['cpus']} processors, {h['memory_gb']} GB, {h['device']}; load average when the run started "
+             f"{h['load_average_at_start'][0]} (other work on a shared machine slows every figure).", "",
+             "Databases: the paper preset's training takes replicated with time-warp and noise (the script's docstring). "
+             "Times are wall-clock seconds of fresh processes (start-up included), peaks are each process's VmHWM.", "",
+             "| nodes | build-db (s) | build-db peak (GB) | db.h5 (MB) | synthesize 14 / 24 / 53 / 63 phones (s) "
+             "| synthesize peak (GB) | search alone, 63 phones (s) | pair costs computed (63 phones) | dense read floor, 63 phones (s) |",
+             "|---|---|---|---|---|---|---|---|---|"]
+    for r in report["sizes"]:
+        syn = " / ".join(f"{x['command_s']:.2f}" for x in r["synthesize"])
+        peak = max(x["peak_gb"] for x in r["synthesize"])
+        last = r["search"]["phrases"][-1]
+        floor = r["search"].get("dense_read_floor_s", {}).get("63")
+        lines.append(f"| {r['nodes']:,} | {r['build_db_s']:.1f} | {r['build_db_peak_gb']:.2f} | {r['db_mb']:.0f} | {syn} | "
+                     f"{peak:.2f} | {last['dp_s']:.2f} | {last['pairs_fraction']:.2g} | "
+                     f"{'does not fit' if floor is None else f'{floor:.2f}'} |")
+    weak = [r for r in report["sizes"] if "search_weak" in r]
+    if weak:
+        r = weak[0]
+        lines += ["", f"Weights that make the bounds weak ({', '.join(r['search_weak']['settings'])}; {r['nodes']:,} nodes): "
+                  "the search stays exact and gets slower.", "",
+                  "| phones | search, default weights (s) | search, weak bounds (s) | slowdown | pair costs computed (weak) |",
+                  "|---|---|---|---|---|"]
+        for a, b in zip(r["search"]["phrases"], r["search_weak"]["phrases"]):
+            lines.append(f"| {a['phones']} | {a['dp_s']:.3f} | {b['dp_s']:.3f} | {b['dp_s'] / a['dp_s']:.0f}x | "
+                         f"{b['pairs_fraction']:.2g} |")
+    return "\n".join(lines) + "\n"
 
 
 if __name__ == "__main__":
