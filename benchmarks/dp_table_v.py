@@ -1,6 +1,8 @@
-"""Paper Table V on this machine: the DP for 14, 24, 53 and 63 phones on a paper-size
-database (about 5,556 nodes), on OpenCL against a plain read of the same bytes in the same
-run, and on the NumPy path (what the fallback costs when no OpenCL device builds) on the same
+"""Paper Table V on this machine: the dense DP (the reference; ``synthesize.dp = "dense"``) for
+14, 24, 53 and 63 phones on a paper-size database (about 5,556 nodes), on OpenCL against a
+plain read of the same bytes in the same run, the default exact pruned DP beside it (its time,
+the fraction of pair costs it computed, and that it found the same path and cost), and on the
+NumPy path (what the fallback costs when no OpenCL device builds) on the same
 database; the wall time of the whole ``facesynth synthesize`` command for the 63-phone phrase;
 and the DP on 20,000 nodes with generated costs (time and peak memory). Prints JSON. Without
 an OpenCL device that builds, only the NumPy figures are reported.
@@ -25,7 +27,8 @@ from facesynth.formats.labels import Segment, write_textgrid
 from facesynth.opencl import build, choice, context, queue, use_opencl
 from facesynth.phonemes import PAU, cmudict, to_festival
 from facesynth.search.costs import step_costs
-from facesynth.search.dp import PANEL, OpenCLDp, dp_numpy
+from facesynth.search.dp import PANEL, OpenCLDp, PanelMatrix, dp_numpy
+from facesynth.search.pruned import dp_pruned
 from facesynth.model.motiondb import MotionDatabase
 
 PHRASES = {  # paper Table V
@@ -114,9 +117,10 @@ def main() -> None:
     db_path = args.db or build_paper_db(args.work)
     db = MotionDatabase.read(db_path)
     s = Config.load().settings("synthesize")
-    tc = db.transition(s)
+    costs = db.transition_costs(s)
+    tc = costs.dense()  # the dense DP's matrix, computed once from the per-node features
     on_device = use_opencl(True)
-    matrix = db.transition_panels(s) if on_device else None
+    matrix = PanelMatrix.from_matrix(tc) if on_device else None
     runner = OpenCLDp(matrix) if on_device else None
     n = len(db.nodes)
     report = {"device": choice().description, "device_reason": choice().reason, "nodes": n, "panel": PANEL,
@@ -127,6 +131,9 @@ def main() -> None:
         numpy_s, ref = time_dp(lambda obs: dp_numpy(tc, obs), steps.total, repeats=2)
         row = {"phones": length, "text": text, "numpy_s": round(numpy_s, 4),
                "paper_gpu_s": {14: 50.828, 24: 90.891, 53: 232.078, 63: 256.484}[length]}
+        pruned_s, (pruned, stats) = time_dp(lambda obs: dp_pruned(costs, obs), steps.total)
+        row.update(pruned_s=round(pruned_s, 4), pairs_fraction=float(f"{stats.fraction:.3g}"),
+                   pruned_identical_to_dense=bool(ref.cost == pruned.cost and (ref.path == pruned.path).all()))
         if on_device:
             dp_s, res = time_dp(runner.run, steps.total)
             floor_s = read_floor(matrix.panels, length - 1)

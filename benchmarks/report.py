@@ -495,22 +495,28 @@ def markdown(results: dict) -> str:
         "",
         "## Speed",
         "",
-        f"On the host above. The DP (`benchmarks/dp_table_v.py`) on seed {results['seeds'][0]}'s paper-preset "
-        f"database ({dpt['nodes']:,} nodes, transition matrix {dpt['matrix_bytes'] / 1e6:.0f} MB), against a plain "
-        "read of the same bytes once per step measured in the same run (best of 3 each):",
+        f"On the host above. The dense DP (`benchmarks/dp_table_v.py`; the reference, `synthesize.dp = \"dense\"`) on "
+        f"seed {results['seeds'][0]}'s paper-preset database ({dpt['nodes']:,} nodes, transition matrix "
+        f"{dpt['matrix_bytes'] / 1e6:.0f} MB), against a plain read of the same bytes once per step measured in the "
+        "same run (best of 3 each), and the default exact pruned DP (same path and cost, no N x N matrix; "
+        "`benchmarks/scale_search.py` measures it up to hours of capture):",
         "",
-        "| phones (paper Table V) | DP (s) | read floor (s) | DP / read floor | read GB/s | NumPy DP (s) | NumPy / OpenCL | paper's GPU (s) |",
-        "|---|---|---|---|---|---|---|---|",
+        "| phones (paper Table V) | dense DP (s) | read floor (s) | dense / read floor | read GB/s | NumPy dense DP (s) "
+        "| NumPy / OpenCL | pruned DP (s) | pair costs computed | paper's GPU (s) |",
+        "|---|---|---|---|---|---|---|---|---|---|",
     ]
     for r in dpt["phrases"]:
+        pruned = (f"{r['pruned_s']:.3f} | {r['pairs_fraction']:.2g}" if "pruned_s" in r else "– | –")
         lines.append(f"| {r['phones']} | {r['dp_s']:.3f} | {r['read_floor_s']:.3f} | {r['ratio_to_read']:.2f} | "
-                     f"{r['read_gb_per_s']:.1f} | {r['numpy_s']:.3f} | {r['numpy_to_opencl']:.1f} | {r['paper_gpu_s']:.0f} |")
+                     f"{r['read_gb_per_s']:.1f} | {r['numpy_s']:.3f} | {r['numpy_to_opencl']:.1f} | {pruned} | "
+                     f"{r['paper_gpu_s']:.0f} |")
     st = s["synthesize_startup"]
     r = s["render"]
     lines += [
         "",
         f"* The DP's 14-phone path and cost are identical to the NumPy reference's: "
-        f"{'yes' if dpt['phrases'][0].get('identical_to_reference') else 'NO'}.",
+        f"{'yes' if dpt['phrases'][0].get('identical_to_reference') else 'NO'}; the pruned DP's to the dense DP's "
+        f"on every phrase: {'yes' if all(r.get('pruned_identical_to_dense', False) for r in dpt['phrases']) else 'NO'}.",
         "* The NumPy DP is what a machine without a working OpenCL device runs (the fallback); same path and cost.",
         f"* The whole `facesynth synthesize` command for 63 phones (`benchmarks/synthesize_startup.py`, fresh "
         f"processes, {st['repeats']} runs), process start to file written: {st['command_to_file_written_s']['min']:.2f} s "

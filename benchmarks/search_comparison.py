@@ -17,7 +17,7 @@ import numpy as np
 from facesynth.config import Config
 from facesynth.opencl import use_opencl
 from facesynth.search.costs import path_terms, step_costs
-from facesynth.search.dp import dp_bounded, dp_numpy, dp_opencl
+from facesynth.search.dp import PanelMatrix, dp_bounded, dp_numpy, dp_opencl
 from facesynth.search.greedy import Greedy, anime_graph, cluster_graph, motion_features, pq_matching
 from facesynth.evaluation import heldout, sentence_metrics
 from facesynth.model.motiondb import MotionDatabase
@@ -44,7 +44,8 @@ def main() -> None:
     s, ev = config.settings("synthesize"), config.settings("evaluate")
     db = MotionDatabase.read(args.db)
     on_device = use_opencl(s.use_opencl)
-    tc = db.transition_panels(s) if on_device else db.transition(s)
+    tc_full = db.transition(s)  # the dense DP's matrix, computed once from the per-node features
+    tc = PanelMatrix.from_matrix(tc_full) if on_device else tc_full
     dp, device = (dp_opencl, "OpenCL") if on_device else (dp_numpy, "NumPy")
     penalty = s.alpha6 * s.pnt
     greedy = Greedy(anime_graph(db.nodes.phone, db.nodes.emotion, db.nodes.suc), db.nodes.viseme, db.nodes.emotion, tc, penalty)
@@ -52,7 +53,6 @@ def main() -> None:
     spoken = lambda utt: sum(p != "pau" for p in utt.phones)  # noqa: E731
     sentences = sorted(sentences, key=lambda x: abs(spoken(x.utterance) - 22))[: args.sentences]
     report = {"nodes": len(db.nodes), "tables": []}
-    tc_full = db.transition(s)
 
     def bounded(full, obs, upper):
         plain_s, ref = timed(lambda: dp_numpy(full, obs), 1)

@@ -32,7 +32,7 @@ SCHEMAS: dict[str, int] = {
     "corpus": 1,
     "normalized": 1,
     "pca": 1,
-    "motiondb": 1,
+    "motiondb": 2,  # 2: per-node transition features instead of (N, N) pair tables
     "isomap": 1,
     "motion": 1,
     "meshanim": 1,

@@ -370,7 +370,7 @@ def pca(ctx: Context, normalized: Path, output: Path):
 @click.option("-o", "--output", type=PATH, required=True, help="Output db.h5.")
 @stage
 def build_db(ctx: Context, pca_path: Path, output: Path):
-    """Build the motion-node database and its pairwise transition terms (DSC, PGap, VGap).
+    """Build the motion-node database and the per-node features of its transition terms (DSC, PGap, VGap).
 
     \b
     Example:
@@ -380,7 +380,7 @@ def build_db(ctx: Context, pca_path: Path, output: Path):
 
     s = stage.run(pca_path, output, ctx.config.settings("build_db"), ctx.overwrite)
     ctx.say(f"built {s['nodes']} motion nodes ({s['with_predecessor']} with a captured predecessor); "
-            f"DSC {s['dsc_s']:.2f} s, PGap/VGap {s['gaps_s']:.2f} s on {s['device']} -> {output}")
+            f"DSC features {s['dsc_s']:.2f} s, boundary states {s['boundary_s']:.2f} s, write {s['write_s']:.2f} s -> {output}")
 
 
 @main.command()

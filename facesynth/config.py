@@ -115,10 +115,9 @@ class PcaSettings:
 
 @dataclass(frozen=True)
 class BuildDbSettings:
-    """``[build_db]``: DSC time-warp samples (Eq. 6) and the compute device of the pair gaps."""
+    """``[build_db]``: DSC time-warp samples (Eq. 6)."""
 
     dsc_samples: int = setting("Eq. 6 (time-warp before the blend)", unit="samples", ge=3)
-    use_opencl: bool = setting("not in the paper: compute device")
 
 
 @dataclass(frozen=True)
@@ -151,6 +150,8 @@ class SynthesizeSettings:
     greedy_clusters: int = setting("Cao et al. 5.3; 0: unclustered Anime Graph", unit="clusters", ge=0)
     postprocess: str = setting("paper VII-B, Eq. 16 (deng); Cao et al. 6.3 (cao)", choices=("deng", "cao"))
     use_opencl: bool = setting("not in the paper: compute device")
+    dp: str = setting("not in the paper: the exact pruned DP (pruned) or the dense reference (dense)",
+                      choices=("pruned", "dense"))
     pnt: float = setting("Tables I-II, Eq. 5 (PNT)", unit="cost", gt=0)
     alpha1: float = setting("Table I, rule 4", ge=0)
     alpha2: float = setting("Table I, rules 2-3 (weight of DSC, Eq. 6)", ge=0)

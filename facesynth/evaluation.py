@@ -194,7 +194,7 @@ def evaluate(db_path: Path, corpus: Path, settings: EvaluateSettings, synth: Syn
             raise InputError(f"evaluate: marker {name!r} is not in the database; set evaluate.lip_markers / evaluate.plot_marker to markers it has.")
     sentences = sentences if sentences is not None else heldout(corpus, db, settings.split, normalize_settings)
     if tc is None:
-        tc = db.transition_panels(synth) if use_opencl(synth.use_opencl) else db.transition(synth)
+        tc = db.transition_costs(synth, use_opencl(synth.use_opencl))
     baselines = ("baseline", "baseline_emotion", "dominance", "dominance_emotion") if with_baseline else ()
     per_method: dict[str, list[dict]] = {"dp": [], **{b: [] for b in baselines}}
     dominance = {by: fit_dominance(training_sentences(db, by_emotion=by), db.fps, settings.dominance_iterations)

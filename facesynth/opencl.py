@@ -372,3 +372,34 @@ def device_name() -> str:
 def max_alloc_bytes() -> int:
     """The largest single buffer the chosen device allows, bytes."""
     return min(d.max_mem_alloc_size for d in context().devices)
+
+
+#: Host alignment (bytes) of arrays handed to a device with USE_HOST_PTR: at least the
+#: device's CL_DEVICE_MEM_BASE_ADDR_ALIGN, and a page, so kernels may read float8s in place.
+HOST_ALIGNMENT = 4096
+
+
+def aligned_empty(shape, dtype, alignment: int = HOST_ALIGNMENT):
+    """An uninitialized C-order array whose data starts on an ``alignment``-byte boundary.
+    NumPy only promises 16 bytes; a kernel reading float8s through USE_HOST_PTR needs more."""
+    import numpy as np
+
+    dtype = np.dtype(dtype)
+    count = int(np.prod(shape, dtype=np.int64))
+    raw = np.empty(count * dtype.itemsize + alignment, np.uint8)
+    offset = (-raw.ctypes.data) % alignment
+    return raw[offset : offset + count * dtype.itemsize].view(dtype).reshape(shape)
+
+
+def host_aligned(a, alignment: int | None = None):
+    """``a`` itself when it is C-contiguous and starts on the device's base alignment (at least
+    128 bytes), else an aligned copy (:func:`aligned_empty`): what USE_HOST_PTR may be given."""
+    import numpy as np
+
+    if alignment is None:
+        alignment = max([128] + [d.mem_base_addr_align // 8 for d in context().devices])
+    if a.flags.c_contiguous and a.ctypes.data % alignment == 0:
+        return a
+    out = aligned_empty(a.shape, a.dtype, max(alignment, HOST_ALIGNMENT))
+    np.copyto(out, a)
+    return out

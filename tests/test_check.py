@@ -88,7 +88,7 @@ def test_the_specification_covers_every_kind_at_its_schema():
 def test_every_kind_written_by_its_stage_checks_clean(written, name):
     report = check.check_file(written[name])
     assert report.problems == []
-    assert report.lines() == [f"{written[name]}: ok ({report.kind}, schema 1)"]
+    assert report.lines() == [f"{written[name]}: ok ({report.kind}, schema {SCHEMAS[report.kind]})"]
 
 
 def _written_keys(f: h5py.File, kind: spec.Kind) -> dict[str, set[str]]:
@@ -137,8 +137,8 @@ def test_the_file_format_document_is_generated_from_the_specification():
 # ---------------------------------------------------------------- damaged files, one problem each
 
 DAMAGES = {
-    "a dataset dropped": ("motiondb", lambda f: f.__delitem__("pairs/vgap"),
-                          "/pairs/vgap: missing required dataset (float32, shape (N, N))."),
+    "a dataset dropped": ("motiondb", lambda f: f.__delitem__("transition/dsc_in"),
+                          "/transition/dsc_in: missing required dataset (float32, shape (N, D))."),
     "a group dropped": ("motion", lambda f: f.__delitem__("provenance"),
                         "/provenance: missing required group (encoding-type 'provenance')."),
     "a dtype changed": ("motiondb", lambda f: _replace(f, "nodes/viseme", f["nodes/viseme"][()].astype(np.float64)),
@@ -234,12 +234,12 @@ def test_data_kept_outside_the_file_is_refused_and_not_read(written, tmp_path):
 
 def test_every_problem_of_a_file_is_reported(written, tmp_path):
     def damage(f):
-        del f["pairs/vgap"]
+        del f["transition/dsc_in"]
         _replace(f, "nodes/viseme", f["nodes/viseme"][()].astype(np.float64))
         del f["boundary"].attrs["encoding-type"]
         f["outside"] = h5py.ExternalLink("other.h5", "/x")
         del f["markers"].attrs["units"]
-        f["pairs/dsc"][0, 0] = np.inf
+        f["transition/dsc_out"][0, 0] = np.inf
 
     path = _damaged(written, tmp_path, "motiondb", damage)
     status, lines = _check(path)
@@ -248,9 +248,9 @@ def test_every_problem_of_a_file_is_reported(written, tmp_path):
         "/outside: an external link to '/x' in 'other.h5'; an artifact must stay inside its file.",
         "/markers: missing attribute 'units' (str: always 'mm').",
         "/nodes/viseme: dtype float64; expected int64.",
-        "/pairs/dsc: 1 non-finite value (NaN or infinity) where every number must be finite.",
-        "/pairs/vgap: missing required dataset (float32, shape (N, N)).",
         "/boundary: no 'encoding-type' attribute; expected 'boundary-states'.",
+        "/transition/dsc_out: 1 non-finite value (NaN or infinity) where every number must be finite.",
+        "/transition/dsc_in: missing required dataset (float32, shape (N, D)).",
     )]
 
 

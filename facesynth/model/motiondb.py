@@ -1,9 +1,10 @@
 """The motion-node database (paper III, VI-B) and the ``motiondb`` artifact.
 
 One motion node per phone occurrence of the training takes, the frames they index (the
-phoneme clusters), and the pairwise transition terms of Table I (DSC, PGap, VGap) as
-(N, N) float32 tables, row = predecessor candidate i, column = node j. The pair tables are
-streamed from the file when the search needs them, never held twice.
+phoneme clusters), and per node the features from which the transition terms of Table I
+(DSC, PGap, VGap) of any pair are computed on demand (:mod:`facesynth.search.pairs`): the
+file grows linearly with the number of nodes. Databases of schema 1 stored (N, N) pair
+tables instead; reading one fails with a sentence that says to rebuild it with build-db.
 """
 
 from __future__ import annotations
@@ -16,16 +17,16 @@ from pathlib import Path
 import h5py
 import numpy as np
 
-from ..artifacts import RowReader, attr, open_artifact, read, read_strings, stamp, write_artifact, write_strings
+from ..artifacts import attr, open_artifact, read, read_strings, stamp, write_artifact, write_strings
 from ..errors import InputError
 from ..phonemes import to_festival
 from .frames import HeadFrames, write_head_frames
 from .pca import PcaModel
 from .tables import Phones, Takes, read_tables, write_tables
 
-PAIR_KEYS = ("dsc", "pgap", "vgap")
-PAIR_UNITS = {"dsc": "mm^2/frame^3", "pgap": "mm", "vgap": "mm/frame"}
 BOUNDARY_KEYS = ("first_pos", "last_pos", "first_vel", "last_vel")
+DSC_KEYS = ("dsc_out", "dsc_in", "dsc_scale")
+PIVOT_KEYS = ("pivot_last_pos", "pivot_first_pos", "pivot_last_vel", "pivot_first_vel")
 
 
 @dataclass
@@ -104,34 +105,6 @@ def node_frames(nodes: Nodes, n_frames: int) -> tuple[np.ndarray, np.ndarray]:
 
 
 @dataclass
-class PairTerms:
-    """The pairwise transition terms of Table I and what they were computed from.
-
-    dsc : (N, N) float32 mm^2/frame^3, Eq. 6 (0 where node j has no captured predecessor).
-    pgap, vgap : (N, N) float32, Eq. 8-9 in mm and mm/frame.
-    boundary : first_pos, last_pos, first_vel, last_vel, each (N, 3M) float32 (mm, mm/frame).
-    device : where PGap/VGap were computed ("OpenCL: ..." or "NumPy"); device_reason : why there.
-    """
-
-    dsc: np.ndarray
-    pgap: np.ndarray
-    vgap: np.ndarray
-    boundary: tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]
-    device: str
-    device_reason: str = ""
-
-    def subset(self, keep: np.ndarray) -> "PairTerms":
-        """Rows and columns ``keep`` of every table, in row blocks."""
-        tables = []
-        for m in (self.dsc, self.pgap, self.vgap):
-            out = np.empty((len(keep), len(keep)), np.float32)
-            for a in range(0, len(keep), 512):
-                out[a : a + 512] = m[keep[a : a + 512]][:, keep]
-            tables.append(out)
-        return PairTerms(*tables, tuple(b[keep] for b in self.boundary), self.device, self.device_reason)
-
-
-@dataclass
 class Pruned:
     """What ``facesynth prune`` removed: each kept node's id in the unpruned database, and
     every removed id (all prunes so far) with its reason."""
@@ -143,8 +116,8 @@ class Pruned:
 
 @dataclass
 class MotionDatabase:
-    """A ``motiondb`` artifact without its pair tables (read with :meth:`read_pairs` or
-    streamed by :meth:`transition` / :meth:`transition_panels`).
+    """A ``motiondb`` artifact without its transition features (read with :meth:`read_features`;
+    :meth:`transition_costs` computes Table I's costs from them on demand).
 
     takes, phones, marker_names : the corpus tables (M markers).
     model : the PCA model (K components).
@@ -152,9 +125,9 @@ class MotionDatabase:
     frames : the normalized frames and head motion (markers is None unless read with markers).
     nodes : the N motion nodes.
     pruned : what prune removed, or None.
-    path : the file (pair tables are read from it).
+    path : the file (the transition features are read from it).
     source : the file as :meth:`read` opened and validated it, kept open so that every later
-        read (the pair tables) comes from that same snapshot, even if the path is replaced meanwhile.
+        read (the transition features) comes from that same snapshot, even if the path is replaced meanwhile.
     """
 
     takes: Takes
@@ -199,14 +172,13 @@ class MotionDatabase:
 
     @classmethod
     def read(cls, path: Path, *, markers: bool = False) -> "MotionDatabase":
-        """Everything but the pair tables; the normalized markers only if ``markers``."""
+        """Everything but the transition features; the normalized markers only if ``markers``."""
         f = open_artifact(path, cls.KIND)
         try:
             n = len(f["nodes/phone"]) if "nodes/phone" in f else -1
-            for key in PAIR_KEYS:
-                shape = f[f"pairs/{key}"].shape if f"pairs/{key}" in f else None
-                if shape != (n, n):
-                    raise InputError(f"{path}: dataset 'pairs/{key}' is missing or not (nodes x nodes); "
+            for key in [f"boundary/{k}" for k in BOUNDARY_KEYS] + [f"transition/{k}" for k in DSC_KEYS + PIVOT_KEYS]:
+                if key not in f or len(f[key]) != n:
+                    raise InputError(f"{path}: dataset '{key}' is missing or not one row per node; "
                                      "rebuild it with facesynth build-db.")
             takes, phones, names = read_tables(f)
             frames = HeadFrames(read(f, "markers") if markers else None, read(f, "reference"),
@@ -220,50 +192,40 @@ class MotionDatabase:
             f.close()
             raise
 
-    def read_pairs(self) -> PairTerms:
-        """The full pair tables and boundary states."""
+    def read_features(self):
+        """The per-node transition features (a :class:`~facesynth.search.pairs.PairFeatures`)."""
+        from ..search.pairs import PairFeatures
+
         with self._opened() as f:
-            return PairTerms(*(read(f, f"pairs/{k}") for k in PAIR_KEYS),
-                             tuple(read(f, f"boundary/{k}") for k in BOUNDARY_KEYS),
-                             str(f["pairs"].attrs.get("device", "")), str(f["pairs"].attrs.get("device_reason", "")))
+            boundary = [read(f, f"boundary/{k}") for k in BOUNDARY_KEYS]
+            first_pos, last_pos, first_vel, last_vel = boundary
+            return PairFeatures(first_pos, last_pos, first_vel, last_vel,
+                                *(read(f, f"transition/{k}") for k in DSC_KEYS), self.nodes.viseme, self.nodes.pre,
+                                tuple(read(f, f"transition/{k}") for k in PIVOT_KEYS))
+
+    def transition_costs(self, settings, opencl: bool | None = None):
+        """Table I's costs for ``settings`` (SynthesizeSettings), computed on demand
+        (a :class:`~facesynth.search.pairs.TransitionCosts`); on OpenCL when ``opencl`` (default:
+        ``settings.use_opencl`` and a device that builds)."""
+        from ..opencl import use_opencl
+        from ..search.pairs import TransitionCosts
+
+        if opencl is None:
+            opencl = use_opencl(settings.use_opencl)
+        return TransitionCosts(self.read_features(), settings, opencl)
 
     def transition(self, settings) -> np.ndarray:
-        """The full (N, N) float32 TC matrix of Table I for ``settings`` (SynthesizeSettings),
-        streaming the pair terms in row blocks."""
-        from ..search.costs import transition_rows
-
-        n = len(self.nodes)
-        tc = np.empty((n, n), np.float32)
-        block = min(256, n)
-        with self._opened() as f, contextlib.ExitStack() as stack:
-            terms = [stack.enter_context(RowReader(f[f"pairs/{key}"], block)) for key in PAIR_KEYS]
-            for a in range(0, n, block):
-                rows = slice(a, min(n, a + block))
-                tc[rows] = transition_rows(rows, *(t.rows(rows) for t in terms), self.nodes.viseme, self.nodes.pre, settings)
-        return tc
+        """The full (N, N) float32 TC matrix of Table I for ``settings`` (SynthesizeSettings);
+        N^2 memory, for small databases and the dense reference DP."""
+        return self.transition_costs(settings).dense()
 
     def transition_panels(self, settings):
-        """TC assembled straight into the panel-major layout of the OpenCL DP (a PanelMatrix),
-        streaming the pair terms in row blocks read in place from the file."""
-        from ..search.costs import transition_panel_rows
-        from ..search.dp import PanelMatrix
+        """The full TC matrix in the panel-major layout of the dense OpenCL DP (a PanelMatrix)."""
+        return self.transition_costs(settings).panels()
 
-        n = len(self.nodes)
-        out = PanelMatrix(n)
-        block = min(128, n)  # half a chunk of build-db: the block's sums stay in cache
-        scratch = np.empty((2, block, n), np.float32)
-        with self._opened() as f, contextlib.ExitStack() as stack:
-            terms = [stack.enter_context(RowReader(f[f"pairs/{key}"], block)) for key in PAIR_KEYS]
-            for a in range(0, n, block):
-                rows = slice(a, min(n, a + block))
-                dsc, pgap, vgap = (t.rows(rows) for t in terms)
-                transition_panel_rows(out.panels, rows, dsc, pgap, vgap, self.nodes.viseme, self.nodes.pre, settings,
-                                      scratch=scratch)
-                del dsc, pgap, vgap  # views of the file's map, which closes with the readers
-        return out
-
-    def write(self, path: Path, pairs: PairTerms, *, config: str, inputs, overwrite: bool = False) -> None:
-        """Write the database with ``pairs``; ``frames.markers`` must be loaded."""
+    def write(self, path: Path, features, *, config: str, inputs, overwrite: bool = False) -> None:
+        """Write the database with its transition ``features`` (PairFeatures); ``frames.markers``
+        must be loaded."""
         with write_artifact(path, self.KIND, config=config, inputs=inputs, overwrite=overwrite) as g:
             write_tables(g, self.takes, self.phones, self.marker_names)
             self.model.write(g)
@@ -276,17 +238,18 @@ class MotionDatabase:
             fr.create_dataset("node", data=frame_node).attrs["meaning"] = (
                 "node of each frame (-1: not in a node); a phoneme cluster is the frames whose node has that phone")
             fr.create_dataset("relative_time", data=relative).attrs["meaning"] = "0 to 1 inside its node (NaN outside nodes)"
-            n = len(self.nodes)
-            p = stamp(g.create_group("pairs"), "pair-terms")
-            for key in PAIR_KEYS:
-                d = p.create_dataset(key, data=getattr(pairs, key), chunks=(max(1, min(n, 256)), max(n, 1)))
-                d.attrs["units"] = PAIR_UNITS[key]
-                d.attrs["layout"] = "row = predecessor candidate i, column = node j"
-            p.attrs["device"] = pairs.device
-            p.attrs["device_reason"] = pairs.device_reason
             b = stamp(g.create_group("boundary"), "boundary-states")
-            for key, value in zip(BOUNDARY_KEYS, pairs.boundary):
-                b.create_dataset(key, data=value.astype(np.float32))
+            for key in BOUNDARY_KEYS:
+                b.create_dataset(key, data=np.asarray(getattr(features, key), np.float32))
+            tr = stamp(g.create_group("transition"), "transition-features")
+            tr.create_dataset("dsc_out", data=np.asarray(features.dsc_out, np.float32)).attrs["units"] = "mm"
+            tr.create_dataset("dsc_in", data=np.asarray(features.dsc_in, np.float32)).attrs["units"] = "mm"
+            tr.create_dataset("dsc_scale", data=np.asarray(features.dsc_scale, np.float32)).attrs["units"] = "1/frame^3"
+            from ..search.pairs import pivot_distances
+
+            distances = features.pivot_distances if features.pivot_distances is not None else pivot_distances(features)
+            for key, value, units in zip(PIVOT_KEYS, distances, ("mm", "mm", "mm/frame", "mm/frame")):
+                tr.create_dataset(key, data=np.asarray(value, np.float32)).attrs["units"] = units
             if self.pruned is not None:
                 q = stamp(g.create_group("pruned"), "pruned")
                 q.create_dataset("original_id", data=self.pruned.original_id.astype(np.int64))

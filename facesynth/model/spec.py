@@ -36,6 +36,8 @@ SYMBOLS: dict[str, str] = {
     "S": "audio samples of all takes",
     "K": "PCA components",
     "N": "motion nodes",
+    "D": "DSC features per node: (build_db.dsc_samples - 2) x K",
+    "Q": "pivots of the PGap/VGap bounds",
     "R": "nodes removed by every prune so far",
     "U": "phones of a synthesized utterance (steps of the search)",
     "V": "mesh vertices",
@@ -278,12 +280,12 @@ PCA = Kind("pca", SCHEMAS["pca"], "The normalized frames and their PCA coefficie
     HEAD_FRAMES,
 ))
 
-_PAIR_LAYOUT = Attr("layout", "str", "`row = predecessor candidate i, column = node j`")
 
 MOTIONDB = Kind("motiondb", SCHEMAS["motiondb"], (
     "The motion-node database (paper III, VI-B): a node per training phone, the frames they index "
-    "(the phoneme clusters) and the pairwise transition terms of Table I, stored in row chunks so "
-    "a search streams them. `facesynth prune` writes the same kind with the `pruned` group."), (
+    "(the phoneme clusters) and per node the features from which the transition terms of Table I "
+    "of any pair are computed on demand (the file grows linearly with the nodes; schema 1 stored "
+    "(N, N) pair tables and must be rebuilt). `facesynth prune` writes the same kind with the `pruned` group."), (
     TABLES, PCA_MODEL, HEAD_FRAMES,
     Dataset("coefficients", "float32", ("F", "K"), "PcaCoef of Eq. 11 per frame; nodes index these frames", "mm",
             (_fps(),)),
@@ -307,19 +309,28 @@ MOTIONDB = Kind("motiondb", SCHEMAS["motiondb"], (
         Dataset("relative_time", "float32", ("F",), "0 to 1 inside the frame's node, NaN outside",
                 attrs=(Attr("meaning", "str", "what the values are"),), finite=False),
     )),
-    Group("pairs", "pair-terms", "the pair terms of Table I, row = predecessor candidate i, column = node j", (
-        Dataset("dsc", "float32", ("N", "N"), "DSC(o_i, pre(o_j)) of Eq. 6; 0 where o_j has no predecessor",
-                "mm^2/frame^3", (_units("mm^2/frame^3"), _PAIR_LAYOUT), ge=0),
-        Dataset("pgap", "float32", ("N", "N"), "PGap of Eq. 8 from o_i to o_j", "mm", (MM, _PAIR_LAYOUT), ge=0),
-        Dataset("vgap", "float32", ("N", "N"), "VGap of Eq. 9 from o_i to o_j", "mm/frame",
-                (_units("mm/frame"), _PAIR_LAYOUT), ge=0),
-    ), attrs=(Attr("device", "str", "where PGap and VGap were computed"),
-           Attr("device_reason", "str", "why that device (the OpenCL choice, or why NumPy)"))),
-    Group("boundary", "boundary-states", "the node boundary states behind Eq. 8-9 (3M vectors)", (
+    Group("boundary", "boundary-states", "the node boundary states behind Eq. 8-9 (3M vectors): "
+          "PGap(i, j) and VGap(i, j) are computed from them on demand", (
         Dataset("first_pos", "float32", ("N", "3M"), "markers of the node's first frame", "mm"),
         Dataset("last_pos", "float32", ("N", "3M"), "markers of the node's last frame", "mm"),
         Dataset("first_vel", "float32", ("N", "3M"), "velocity at the node's first frame", "mm/frame"),
         Dataset("last_vel", "float32", ("N", "3M"), "velocity at the node's last frame", "mm/frame"),
+    )),
+    Group("transition", "transition-features", "per-node features of Table I's pair terms: "
+          "DSC(o_i, pre(o_j)) = dsc_scale[j] * |dsc_out[i] + dsc_in[j]|^2 (Eq. 6), and pivot distances "
+          "that bound PGap/VGap for the pruned search; no (N, N) table is stored", (
+        Dataset("dsc_out", "float32", ("N", "D"), "second differences of (1 - s) warp(o_i), D = (dsc_samples - 2) K",
+                "mm", (MM,)),
+        Dataset("dsc_in", "float32", ("N", "D"), "second differences of s pre(o_j); 0 where o_j has no predecessor",
+                "mm", (MM,)),
+        Dataset("dsc_scale", "float32", ("N",), "1 / (frames between samples of pre(o_j))^3; 0 without predecessor",
+                "1/frame^3", (_units("1/frame^3"),)),
+        Dataset("pivot_last_pos", "float32", ("N", "Q"), "sum over markers of the distance of last_pos from each position pivot",
+                "mm", (MM,)),
+        Dataset("pivot_first_pos", "float32", ("N", "Q"), "the same for first_pos", "mm", (MM,)),
+        Dataset("pivot_last_vel", "float32", ("N", "Q"), "the same for last_vel and the velocity pivots", "mm/frame",
+                (_units("mm/frame"),)),
+        Dataset("pivot_first_vel", "float32", ("N", "Q"), "the same for first_vel", "mm/frame", (_units("mm/frame"),)),
     )),
     Group("pruned", "pruned", "what `facesynth prune` removed (a pruned database only)", (
         Dataset("original_id", "int64", ("N",), "each kept node's id in the unpruned database"),

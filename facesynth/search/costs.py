@@ -124,7 +124,8 @@ def step_costs(phones: list[str], emotions: list[str], node_phone: list[str], no
 
 def path_terms(path: np.ndarray, tc, steps: StepCosts) -> dict[str, np.ndarray]:
     """Every cost term along a path: tc[t] is the transition into step t (0 at t = 0).
-    ``tc`` is the (N, N) matrix or a :class:`~facesynth.search.dp.PanelMatrix`."""
+    ``tc`` is the (N, N) matrix, a :class:`~facesynth.search.dp.PanelMatrix` or a
+    :class:`~facesynth.search.pairs.TransitionCosts`."""
     t_idx = np.arange(len(path))
     tcs = np.zeros(len(path), np.float32)
     tcs[1:] = [tc[int(i), int(j)] for i, j in zip(path[:-1], path[1:])]

@@ -60,8 +60,11 @@ class PanelMatrix:
     ``TC[i, p * PANEL + c]``; columns past N are +inf. Rows can be filled block by block."""
 
     def __init__(self, n: int, panel: int = PANEL):
+        from ..opencl import aligned_empty
+
         self.n, self.panel = n, panel
-        self.panels = np.empty((-(-n // panel), n, panel), np.float32)
+        # page-aligned: the OpenCL DP reads it in place (USE_HOST_PTR) as float8s
+        self.panels = aligned_empty((-(-n // panel), n, panel), np.float32)
         self.panels[-1, :, n - (len(self.panels) - 1) * panel :] = np.inf
 
     @classmethod
@@ -127,7 +130,7 @@ class OpenCLDp:
     def __init__(self, tc: "np.ndarray | PanelMatrix"):
         import pyopencl as cl
 
-        from ..opencl import context, kernel, max_alloc_bytes, queue
+        from ..opencl import context, host_aligned, kernel, max_alloc_bytes, queue
 
         self.ctx, self.queue = context(), queue()
         self.kernel = kernel("dp_min_plus", "min_plus_panels", PANEL=PANEL)
@@ -141,9 +144,12 @@ class OpenCLDp:
         self.groups = []
         for first in range(0, self.n_panels, per_buffer):
             count = min(per_buffer, self.n_panels - first)
-            # USE_HOST_PTR: a CPU device reads the host array in place, no second copy.
-            buf = cl.Buffer(self.ctx, mf.READ_ONLY | mf.USE_HOST_PTR, hostbuf=panels[first : first + count])
-            self.groups.append((first, count, buf))
+            # USE_HOST_PTR: a CPU device reads the host array in place, no second copy. The kernel
+            # reads float8s, so the host memory must be aligned: a PanelMatrix is; any other
+            # array (a view at an odd offset) is copied into aligned memory first.
+            host = host_aligned(panels[first : first + count])
+            buf = cl.Buffer(self.ctx, mf.READ_ONLY | mf.USE_HOST_PTR, hostbuf=host)
+            self.groups.append((first, count, buf, host))
         self.cols = self.n_panels * PANEL
 
     def run(self, obs: np.ndarray, while_running: Callable[[], None] | None = None) -> DpResult:
@@ -163,7 +169,7 @@ class OpenCLDp:
         cl.enqueue_copy(self.queue, phi_buf, obs_padded[0])  # phi_0 = obs_0
         for t in range(1, t_count):
             src, obs_row, dst = self._row(phi_buf, t - 1), self._row(obs_buf, t), self._row(phi_buf, t)
-            for first, count, buf in self.groups:
+            for first, count, buf, _ in self.groups:
                 self.kernel(self.queue, (count,), None, buf, src, obs_row, dst,
                             np.int32(self.n), np.int32(first), np.int32(count))
         self.queue.flush()

@@ -114,16 +114,18 @@ class GreedyResult:
 
 
 def tc_values(tc, i: int, js: np.ndarray) -> np.ndarray:
-    """TC[i, js] from an (N, N) matrix or a PanelMatrix."""
+    """TC[i, js] from an (N, N) matrix, a PanelMatrix or a TransitionCosts (computed on demand)."""
     if isinstance(tc, np.ndarray):
         return tc[i, js]
+    if hasattr(tc, "values"):
+        return tc.values(i, np.asarray(js))
     return tc.panels[js // tc.panel, i, js % tc.panel]
 
 
 class Greedy:
     """GreedyMatching over an Anime Graph, ties broken by Table I + Eq. 5 costs.
 
-    tc : the transition matrix (ndarray or PanelMatrix); emotion_penalty : alpha6 * PNT.
+    tc : the transition costs (ndarray, PanelMatrix or TransitionCosts); emotion_penalty : alpha6 * PNT.
     """
 
     def __init__(self, graph: AnimeGraph, node_viseme: np.ndarray, node_emotion: list[str], tc, emotion_penalty: float):

@@ -9,6 +9,7 @@ output frame keeps its provenance (node, take, source frame).
 
 from __future__ import annotations
 
+import threading
 import time
 from pathlib import Path
 from typing import Callable
@@ -58,18 +59,40 @@ def greedy_search(db: MotionDatabase, tc, utt: Utterance, steps: StepCosts, sett
 
 def search(tc, steps: StepCosts, settings: SynthesizeSettings, *, while_running: Callable[[], None] | None = None,
            timings: dict[str, float] | None = None):
-    """Run the DP; returns (DpResult, (device, why that device)). ``while_running`` is host work to
-    do while an OpenCL search runs; ``timings`` gets ``opencl_setup_s`` (context, kernel, buffers)."""
+    """Run the DP over ``tc`` (a :class:`~facesynth.search.pairs.TransitionCosts`); returns
+    (DpResult, (device, why that device), fraction of pair costs computed). ``synthesize.dp``
+    picks the exact pruned DP or the dense reference (the full matrix assembled, then
+    Algorithm 1 on it); both give the same path and cost. ``while_running`` is host work to
+    do while a dense OpenCL search runs; ``timings`` gets ``opencl_setup_s`` (context, kernel,
+    buffers, and for the dense DP the matrix)."""
     from ..opencl import device_record
     from .dp import OpenCLDp, dp_numpy
+    from .pruned import dp_pruned
 
-    if not use_opencl(settings.use_opencl):
-        return dp_numpy(tc, steps.total), device_record(settings.use_opencl)
+    if settings.dp == "pruned":
+        if tc.opencl:
+            t0 = time.perf_counter()
+            tc.device  # kernels built, features uploaded
+            if timings is not None:
+                timings["opencl_setup_s"] = time.perf_counter() - t0
+        # The host work overlaps the search on a thread: the search waits on the device and on
+        # NumPy, both of which release the GIL.
+        helper = threading.Thread(target=while_running) if while_running is not None else None
+        if helper is not None:
+            helper.start()
+        try:
+            result, stats = dp_pruned(tc, steps.total)
+        finally:
+            if helper is not None:
+                helper.join()
+        return result, device_record(settings.use_opencl), stats.fraction
+    if not tc.opencl:
+        return dp_numpy(tc.dense(), steps.total), device_record(settings.use_opencl), 1.0
     t0 = time.perf_counter()
-    runner = OpenCLDp(tc)
+    runner = OpenCLDp(tc.panels())
     if timings is not None:
         timings["opencl_setup_s"] = time.perf_counter() - t0
-    return runner.run(steps.total, while_running), device_record(settings.use_opencl)
+    return runner.run(steps.total, while_running), device_record(settings.use_opencl), 1.0
 
 
 def table_iv_weight(settings: SynthesizeSettings):
@@ -111,15 +134,17 @@ def cao_joins(db: MotionDatabase, path: np.ndarray, phones: list[str]):
 def synthesize(db: MotionDatabase, utt: Utterance, constraints: dict[int, int], settings: SynthesizeSettings, tc=None) -> dict:
     """Search and post-process. Returns a dict of everything ``motion.h5`` stores, and
     ``timings``: seconds spent choosing the device (the first time in a process), on the
-    transition costs (when ``tc`` is not given), the step costs, the OpenCL set-up, the search
-    and the post-processing."""
+    transition costs (reading the per-node features, when ``tc`` is not given), the step
+    costs, the OpenCL set-up, the search and the post-processing. ``tc`` is a
+    :class:`~facesynth.search.pairs.TransitionCosts` (made from ``db`` when None);
+    ``pairs_fraction`` is the fraction of the dense DP's pair costs the search computed."""
     timings = {}
     t0 = time.perf_counter()
     on_device = use_opencl(settings.use_opencl)
     timings["device_choice_s"] = time.perf_counter() - t0
     t0 = time.perf_counter()
     if tc is None:
-        tc = db.transition_panels(settings) if on_device else db.transition(settings)
+        tc = db.transition_costs(settings, on_device)
         timings["transition_s"] = time.perf_counter() - t0
     t0 = time.perf_counter()
     steps = step_costs(utt.phones, utt.emotions, db.nodes.phone, db.nodes.emotion, constraints, settings)
@@ -129,15 +154,17 @@ def synthesize(db: MotionDatabase, utt: Utterance, constraints: dict[int, int], 
         if constraints:
             raise UsageError("motion-node constraints need the DP search (Eq. 10); drop --constraints or use --search dp.")
         result, device = greedy_search(db, tc, utt, steps, settings)
+        fraction = None
     else:
         # scipy (head motion) is imported while the device searches
-        result, device = search(tc, steps, settings, while_running=import_scipy, timings=timings)
+        result, device, fraction = search(tc, steps, settings, while_running=import_scipy, timings=timings)
     timings["search_s"] = time.perf_counter() - t0 - timings.get("opencl_setup_s", 0.0)
     path = result.path
     for t, node in constraints.items():  # Eq. 10 guarantees this; a failure is a bug
         assert path[t] == node, f"constraint at step {t} not met"
     t0 = time.perf_counter()
     out = {"path": path, "cost": result.cost, "terms": path_terms(path, tc, steps), "device": device[0],
+           "pairs_fraction": fraction,
            "device_reason": device[1], "timings": timings, **render_path(db, utt, path, settings)}
     timings["postprocess_s"] = time.perf_counter() - t0
     return out

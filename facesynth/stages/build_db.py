@@ -6,19 +6,21 @@ Each node keeps phone, viseme (Table VI), emotion, take, frame range, triphone c
 its captured predecessor/successor. The frames of all nodes, with their relative time in
 the node, form the phoneme clusters.
 
-The transition cost (Table I) needs, for every ordered pair (i, j):
+The transition cost (Table I) of any ordered pair (i, j) is computed on demand from small
+per-node features (:mod:`facesynth.search.pairs`); no (N, N) table is stored:
 
-* ``dsc[i, j] = DSC(o_i, pre(o_j))`` (Eq. 6), read here as: time-warp o_i onto
-  pre(o_j)'s duration, blend linearly from warp(o_i) (weight 1 at the start) to pre(o_j)
-  (weight 1 at the end), and integrate the squared second derivative of the blend over
-  time. Both nodes are resampled to ``dsc_samples`` points in PCA space (an orthonormal
-  basis, so distances are marker-space millimetres); time is in capture frames, so DSC is
-  in mm^2 / frame^3. Expanding the square makes all pairs one matrix product.
-  Columns whose node has no predecessor are 0 (Table I rule 4 does not use DSC).
-* ``pgap[i, j]``, ``vgap[i, j]`` (Eq. 8-9): summed per-marker distances between the last
-  frame of o_i and the first frame of o_j, of positions (mm) and velocities (mm/frame).
+* DSC (Eq. 6), read as: time-warp o_i onto pre(o_j)'s duration, blend linearly from
+  warp(o_i) (weight 1 at the start) to pre(o_j) (weight 1 at the end), and integrate the
+  squared second derivative of the blend over time. Both nodes are resampled to
+  ``dsc_samples`` points in PCA space (an orthonormal basis, so distances are marker-space
+  millimetres); time is in capture frames, so DSC is in mm^2 / frame^3. The blend's second
+  differences are ``x_i + y_j`` (:func:`dsc_features`), so each node stores x, y and a scale.
+  A node without predecessor has y = 0 and scale 0 (Table I rule 4 does not use DSC).
+* PGap, VGap (Eq. 8-9): summed per-marker distances between the last frame of o_i and the
+  first frame of o_j, of positions (mm) and velocities (mm/frame): each node stores its
+  first/last positions and velocities (:func:`boundary_states`).
 
-All three are (N, N) float32, row = predecessor candidate i, column = node j.
+The database therefore grows linearly with the number of nodes N.
 """
 
 from __future__ import annotations
@@ -31,10 +33,10 @@ import numpy as np
 from ..config import BuildDbSettings, settings_json
 from ..errors import InputError
 from ..limits import bound, require_memory
-from ..model.motiondb import MotionDatabase, Nodes, PairTerms
+from ..model.motiondb import MotionDatabase, Nodes
 from ..model.pca import PcaFrames, PcaModel
 from ..model.tables import Phones, Takes
-from ..opencl import device_record, use_opencl
+from ..search.pairs import PairFeatures
 from ..phonemes import PAU, viseme
 
 
@@ -93,28 +95,38 @@ def warp_to_samples(sequence: np.ndarray, n: int) -> np.ndarray:
     return sequence[lo] * (1 - w) + sequence[hi] * w
 
 
-def dsc_matrix(coeffs: np.ndarray, nodes: Nodes, samples: int) -> np.ndarray:
-    """All-pairs DSC (Eq. 6): dsc[i, j] = DSC(o_i, pre(o_j)); 0 where o_j has no predecessor."""
+def dsc_features(coeffs: np.ndarray, nodes: Nodes, samples: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The per-node DSC features of Eq. 6: ``DSC(o_i, pre(o_j)) = scale_j * |x_i + y_j|^2``.
+
+    Returns x ((N, (samples - 2) K) float32, second differences of (1 - s) warp(o_i)),
+    y ((N, (samples - 2) K) float32, second differences of s pre(o_j); 0 without predecessor)
+    and scale ((N,) float32, 1 / (frames between samples of pre(o_j))^3; 0 without
+    predecessor), in PCA space (mm) with time in capture frames.
+    """
     n = len(nodes)
     warped = np.stack([warp_to_samples(coeffs[nodes.frames(k)], samples) for k in range(n)])  # (N, S, K)
     s = np.linspace(0.0, 1.0, samples)
     d2 = np.zeros((samples - 2, samples))
     for r in range(samples - 2):
         d2[r, r : r + 3] = (1.0, -2.0, 1.0)
-    x = np.einsum("rs,nsk->nrk", d2 * (1 - s), warped).reshape(n, -1)  # second differences of (1-s) warp(o_i)
+    x = np.einsum("rs,nsk->nrk", d2 * (1 - s), warped).reshape(n, -1)
     has_pre = nodes.pre >= 0
     pre_idx = np.where(has_pre, nodes.pre, 0)
-    y = np.einsum("rs,nsk->nrk", d2 * s, warped[pre_idx]).reshape(n, -1)  # of s * pre(o_j)
+    y = np.einsum("rs,nsk->nrk", d2 * s, warped[pre_idx]).reshape(n, -1)
+    y[~has_pre] = 0.0
     step = (nodes.frame_count[pre_idx] - 1) / (samples - 1)  # frames between samples of pre(o_j)
     scale = np.where(has_pre, 1.0 / np.maximum(step, 1e-3) ** 3, 0.0)
-    out = np.empty((n, n), np.float32)
+    return x.astype(np.float32), y.astype(np.float32), scale.astype(np.float32)
+
+
+def dsc_matrix(coeffs: np.ndarray, nodes: Nodes, samples: int) -> np.ndarray:
+    """All-pairs DSC (Eq. 6) as schema-1 databases stored it, (N, N) float32 (float64 sums,
+    rounded once): dsc[i, j] = DSC(o_i, pre(o_j)); 0 where o_j has no predecessor. Kept as the
+    reference the on-demand values are tested against; N^2 memory."""
+    x, y, scale = (a.astype(np.float64) for a in dsc_features(coeffs, nodes, samples))
     xx = np.einsum("ij,ij->i", x, x)
     yy = np.einsum("ij,ij->i", y, y)
-    block = 2048
-    for a in range(0, n, block):
-        cross = x[a : a + block] @ y.T
-        out[a : a + block] = np.maximum(xx[a : a + block, None] + yy[None, :] + 2.0 * cross, 0.0) * scale[None, :]
-    return out
+    return (np.maximum(xx[:, None] + yy[None, :] + 2.0 * (x @ y.T), 0.0) * scale[None, :]).astype(np.float32)
 
 
 def boundary_states(coeffs: np.ndarray, nodes: Nodes, model: PcaModel) -> tuple[np.ndarray, ...]:
@@ -131,7 +143,9 @@ def boundary_states(coeffs: np.ndarray, nodes: Nodes, model: PcaModel) -> tuple[
 
 
 def pair_gaps_numpy(first_pos, last_pos, first_vel, last_vel) -> tuple[np.ndarray, np.ndarray]:
-    """Reference PGap/VGap (Eq. 8-9), (N, N) float32 each, row i = predecessor."""
+    """PGap/VGap (Eq. 8-9) as schema-1 databases stored them, (N, N) float32 each, row i =
+    predecessor (NumPy's pairwise sums). Kept as the reference the on-demand values are
+    tested against; N^2 memory."""
     n, m3 = first_pos.shape
     pgap = np.empty((n, n), np.float32)
     vgap = np.empty((n, n), np.float32)
@@ -146,57 +160,39 @@ def pair_gaps_numpy(first_pos, last_pos, first_vel, last_vel) -> tuple[np.ndarra
     return pgap, vgap
 
 
-def pair_gaps_opencl(first_pos, last_pos, first_vel, last_vel) -> tuple[np.ndarray, np.ndarray]:
-    """PGap/VGap on OpenCL (``kernels/pair_gaps.cl``), in row blocks below the device's allocation limit."""
-    import pyopencl as cl
-
-    from ..opencl import context, kernel, max_alloc_bytes, queue
-
-    ctx, q = context(), queue()
-    n, m3 = first_pos.shape
-    mf = cl.mem_flags
-    fp_t = cl.Buffer(ctx, mf.READ_ONLY | mf.COPY_HOST_PTR, hostbuf=np.ascontiguousarray(first_pos.T, np.float32))
-    fv_t = cl.Buffer(ctx, mf.READ_ONLY | mf.COPY_HOST_PTR, hostbuf=np.ascontiguousarray(first_vel.T, np.float32))
-    pgap = np.empty((n, n), np.float32)
-    vgap = np.empty((n, n), np.float32)
-    rows = int(max(1, min(n, (min(max_alloc_bytes(), 256 << 20) // (4 * n)))))
-    out_p = cl.Buffer(ctx, mf.WRITE_ONLY, 4 * n * rows)
-    out_v = cl.Buffer(ctx, mf.WRITE_ONLY, 4 * n * rows)
-    gaps_kernel = kernel("pair_gaps", "pair_gaps")
-    for a in range(0, n, rows):
-        b = min(n, a + rows)
-        lp = cl.Buffer(ctx, mf.READ_ONLY | mf.COPY_HOST_PTR, hostbuf=np.ascontiguousarray(last_pos[a:b], np.float32))
-        lv = cl.Buffer(ctx, mf.READ_ONLY | mf.COPY_HOST_PTR, hostbuf=np.ascontiguousarray(last_vel[a:b], np.float32))
-        local = (min(64, n), 1)
-        global_size = ((n + local[0] - 1) // local[0] * local[0], b - a)
-        gaps_kernel(q, global_size, local, lp, lv, fp_t, fv_t, np.int32(n), np.int32(b - a), np.int32(m3), out_p, out_v)
-        cl.enqueue_copy(q, pgap[a:b], out_p, is_blocking=False)
-        cl.enqueue_copy(q, vgap[a:b], out_v, is_blocking=True)
-    return pgap, vgap
+def build(pca: PcaFrames, settings: BuildDbSettings, source: str = "") -> tuple[MotionDatabase, PairFeatures, dict]:
+    """The database and its per-node transition features for a PCA artifact's contents
+    (read from ``source``, named in refusals); returns them with the seconds spent on the DSC
+    features and the boundary states."""
+    coeffs = pca.coefficients
+    nodes = build_nodes(pca.takes, pca.phones, pca.frames.fps)
+    bound(len(nodes), "max_nodes", "the number of motion nodes", source)
+    # four (N, 3M) float32 boundary states and their float64 working copies
+    require_memory(3.0 * 4 * 4 * len(nodes) * 3 * len(pca.marker_names), f"the boundary states of {len(nodes)} motion nodes",
+                   source)
+    timings = {}
+    t0 = time.perf_counter()
+    x, y, scale = dsc_features(coeffs, nodes, settings.dsc_samples)
+    timings["dsc_s"] = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    states = boundary_states(coeffs, nodes, pca.model)
+    timings["boundary_s"] = time.perf_counter() - t0
+    features = PairFeatures(*(np.ascontiguousarray(a, np.float32) for a in states[:2]),
+                            *(np.ascontiguousarray(a, np.float32) for a in states[2:]), x, y, scale,
+                            nodes.viseme, nodes.pre)
+    db = MotionDatabase(pca.takes, pca.phones, pca.marker_names, pca.model, coeffs, pca.frames, nodes)
+    return db, features, timings
 
 
 def run(pca_path: Path, out: Path, settings: BuildDbSettings, overwrite: bool = False) -> dict:
     """Build the database from ``pca_path`` and write ``out`` (a ``motiondb`` artifact); returns
-    a summary with the time of each part in seconds and the device of the pair gaps."""
+    a summary with the time of each part in seconds."""
     if settings.dsc_samples < 3:
         raise InputError("build_db.dsc_samples must be at least 3 (a second derivative needs three samples).")
     pca = PcaFrames.read(pca_path)
-    coeffs = pca.coefficients
-    nodes = build_nodes(pca.takes, pca.phones, pca.frames.fps)
-    bound(len(nodes), "max_nodes", "the number of motion nodes", str(pca_path))
-    # the three (N, N) float32 pair tables and about as much again while they are computed
-    require_memory(6.0 * 4 * len(nodes) ** 2, f"the pair tables of {len(nodes)} motion nodes", str(pca_path))
-    timings = {}
+    db, features, timings = build(pca, settings, str(pca_path))
     t0 = time.perf_counter()
-    dsc = dsc_matrix(coeffs, nodes, settings.dsc_samples)
-    timings["dsc_s"] = time.perf_counter() - t0
-    t0 = time.perf_counter()
-    states = boundary_states(coeffs, nodes, pca.model)
-    gaps = pair_gaps_opencl if use_opencl(settings.use_opencl) else pair_gaps_numpy
-    pgap, vgap = gaps(*states)
-    timings["gaps_s"] = time.perf_counter() - t0
-    device, reason = device_record(settings.use_opencl)
-    db = MotionDatabase(pca.takes, pca.phones, pca.marker_names, pca.model, coeffs, pca.frames, nodes)
-    db.write(out, PairTerms(dsc, pgap, vgap, states, device, reason), config=settings_json(settings), inputs=[pca_path],
-             overwrite=overwrite)
-    return {"nodes": len(nodes), "with_predecessor": int((nodes.pre >= 0).sum()), "device": device, **timings}
+    db.write(out, features, config=settings_json(settings), inputs=[pca_path], overwrite=overwrite)
+    timings["write_s"] = time.perf_counter() - t0
+    nodes = db.nodes
+    return {"nodes": len(nodes), "with_predecessor": int((nodes.pre >= 0).sum()), **timings}

@@ -160,14 +160,13 @@ def prune(db: MotionDatabase, out: Path, remove: list[int], reasons: list[str], 
         raise InputError(f"{db.path}: removing every node would leave an empty database.")
     kept = db.nodes.subset(keep)
     before = db.pruned or Pruned(np.arange(n), np.zeros(0, np.int64), [])
-    pairs = db.read_pairs().subset(keep)
+    features = db.read_features().subset(keep, kept.pre)  # a lost predecessor: rule 4, DSC unused
     lost_pre = (db.nodes.pre[keep] >= 0) & (kept.pre < 0)
-    pairs.dsc[:, lost_pre] = 0.0  # their predecessor is gone: rule 4 applies, DSC unused
     pruned = Pruned(before.original_id[keep],
                     np.concatenate([before.removed_id, before.original_id[np.asarray(remove, np.int64)]]).astype(np.int64),
                     before.reason + reasons)
     cleaned = MotionDatabase(db.takes, db.phones, db.marker_names, db.model, db.coeffs, db.frames, kept, pruned)
-    cleaned.write(out, pairs, config=settings_json(settings), inputs=[db.path], overwrite=overwrite)
+    cleaned.write(out, features, config=settings_json(settings), inputs=[db.path], overwrite=overwrite)
     return {"removed": len(remove), "kept": len(keep), "links_cut": int(lost_pre.sum())}
 
 

@@ -29,7 +29,7 @@ from ..opencl import use_opencl
 from ..phonemes import PAU
 from ..model.motiondb import MotionDatabase
 from ..search.costs import step_costs
-from ..search.dp import dp_numpy, dp_opencl
+from ..search.pruned import backward_pruned, dp_pruned
 from ..search.synthesis import prepare
 
 HEADER = "rank\tnode\temotion\ttake\tcontext\tcontext_correct\ttime_correct_take_frame\tcost\textra_cost"
@@ -93,12 +93,14 @@ def suggest(db_path: Path, phones_path: Path, at_s: float, settings: SynthesizeS
         raise InputError(f"{db_path}: the database has no node of /{phone}/ to suggest.")
     rel = (at_s - utt.starts[c]) / (utt.ends[c] - utt.starts[c])
     prev_p, next_p = triphone(utt.phones, c)
-    tc = db.transition(settings)
+    tc = db.transition_costs(settings, use_opencl(settings.use_opencl))
     obs = step_costs(utt.phones, utt.emotions, db.nodes.phone, db.nodes.emotion, constraints, settings).total
-    run = dp_opencl if use_opencl(settings.use_opencl) else dp_numpy
-    forward = run(tc, obs)
-    backward = run(np.ascontiguousarray(tc.T), obs[::-1].copy())
-    through = forward.phi[c].astype(np.float64) + backward.phi[len(utt) - 1 - c] - obs[c]
+    # The optimum, and every node's best cost up to step c and from step c on: the values the
+    # dense DP forwards and backwards would give, computed exactly without an N x N matrix.
+    forward, _ = dp_pruned(tc, obs)
+    up_to, _ = dp_pruned(tc, obs[: c + 1], keep_last=True)
+    from_here, _ = backward_pruned(tc, obs, c)
+    through = up_to.phi[c].astype(np.float64) + from_here - obs[c]
     out = []
     for j in candidates:
         start, count = int(db.nodes.frame_start[j]), int(db.nodes.frame_count[j])

@@ -101,3 +101,24 @@ def test_host_work_runs_once_while_the_device_searches(opencl_device):
     ref = dp_numpy(tc, obs)
     assert calls == [1]
     assert res.cost == ref.cost and res.path.tolist() == ref.path.tolist()
+
+
+def test_a_misaligned_host_array_is_copied_into_aligned_memory(opencl_device):
+    """NumPy aligns to 16 bytes only; the kernel reads float8s from host memory (USE_HOST_PTR)."""
+    from facesynth.opencl import aligned_empty, host_aligned
+    from facesynth.search.dp import PanelMatrix
+
+    tc, obs = _random(300, 6, seed=21)
+    good = PanelMatrix.from_matrix(tc)
+    assert good.panels.ctypes.data % 4096 == 0
+    raw = aligned_empty(good.panels.size + 16, np.float32)
+    bad = raw[4 : 4 + good.panels.size].reshape(good.panels.shape)  # 16 bytes past a page boundary
+    bad[:] = good.panels
+    assert bad.ctypes.data % 32 == 16
+    good.panels = bad
+    runner = OpenCLDp(good)
+    assert all(host.ctypes.data % 128 == 0 for _, _, _, host in runner.groups)  # what the device reads in place
+    res = runner.run(obs)
+    ref = dp_numpy(tc, obs)
+    assert res.cost == ref.cost and res.path.tolist() == ref.path.tolist()
+    assert host_aligned(bad).ctypes.data % 128 == 0 and np.array_equal(host_aligned(bad), bad)

@@ -2,7 +2,7 @@ import numpy as np
 import pytest
 
 from facesynth.model.motiondb import Nodes
-from facesynth.stages.build_db import build_nodes, dsc_matrix, pair_gaps_numpy, pair_gaps_opencl
+from facesynth.stages.build_db import build_nodes, dsc_features, dsc_matrix, pair_gaps_numpy
 from facesynth.model.tables import Phones, Takes
 
 
@@ -53,17 +53,22 @@ def test_dsc_of_curves_worked_by_hand():
     assert dsc_matrix(coeffs, nodes, samples=3)[:, 0].tolist() == [0.0, 0.0, 0.0]
 
 
-def test_pair_gaps_opencl_matches_numpy_reference(opencl_device):
+def test_pair_gaps_of_the_reference_by_hand():
     rng = np.random.default_rng(0)
-    n, m3 = 300, 3 * 17
+    n, m3 = 30, 3 * 17
     states = [rng.normal(0, 20, (n, m3)).astype(np.float32) for _ in range(4)]
     p_ref, v_ref = pair_gaps_numpy(*states)
-    p_cl, v_cl = pair_gaps_opencl(*states)
-    np.testing.assert_allclose(p_cl, p_ref, rtol=2e-5)
-    np.testing.assert_allclose(v_cl, v_ref, rtol=2e-5)
     # Eq. 8 for one pair by hand: sum over markers of Euclidean distances.
     fp, lp = states[0].reshape(n, -1, 3), states[1].reshape(n, -1, 3)
     assert p_ref[4, 7] == pytest.approx(np.linalg.norm(fp[7] - lp[4], axis=1).sum(), rel=1e-5)
+
+
+def test_dsc_features_expand_the_blend():
+    # DSC(o_0, pre(o_1)) = scale_1 |x_0 + y_1|^2 with the features; the hand-worked value is 1.
+    coeffs, nodes = _two_node_db([0.0, 1.0, 0.0])
+    x, y, scale = dsc_features(coeffs, nodes, samples=3)
+    assert scale.tolist() == [0.0, 1.0, 0.0] and not y[0].any() and not y[2].any()
+    assert float(scale[1] * ((x[0] + y[1]) ** 2).sum()) == pytest.approx(1.0)
 
 
 def test_the_tiny_database_is_consistent(tiny_db):
@@ -72,7 +77,8 @@ def test_the_tiny_database_is_consistent(tiny_db):
     with h5py.File(tiny_db) as f:
         nodes = Nodes.read(f)
         takes = Takes.read(f)
-        assert f["pairs/dsc"].shape == (len(nodes), len(nodes)) and f["pairs/dsc"].dtype == np.float32
+        assert "pairs" not in f  # no N x N table: per-node features only
+        assert f["transition/dsc_out"].shape[0] == len(nodes) and f["boundary/first_pos"].shape[0] == len(nodes)
     for k in range(len(nodes)):
         t = nodes.take[k]
         assert takes.split[t] == "train"
@@ -94,3 +100,20 @@ def test_frames_know_their_node_and_relative_time(tiny_db):
     assert (frame_node[sl] == k).all() and rel[sl][0] == 0.0 and rel[sl][-1] == 1.0
     assert np.all(np.diff(rel[sl]) > 0)
     assert np.isnan(rel[frame_node < 0]).all()
+
+
+def test_a_database_with_pair_tables_says_to_rebuild(tiny_db, tmp_path):
+    """Schema 1 stored (N, N) pair tables; such a file is refused with one sentence."""
+    import shutil
+
+    import h5py
+
+    from facesynth.errors import FacesynthError
+    from facesynth.model.motiondb import MotionDatabase
+
+    old = tmp_path / "old.h5"
+    shutil.copy(tiny_db, old)
+    with h5py.File(old, "a") as f:
+        f.attrs["facesynth_schema"] = 1
+    with pytest.raises(FacesynthError, match=r"schema 1 is not the supported schema 2; rebuild it with .*facesynth build-db"):
+        MotionDatabase.read(old)

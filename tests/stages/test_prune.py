@@ -36,7 +36,8 @@ def test_removing_nodes_keeps_links_and_costs_consistent(tiny_db, tmp_path, conf
     before = tiny_db.read_bytes()
     with h5py.File(tiny_db) as f:
         nodes = Nodes.read(f)
-        pgap = f["pairs/pgap"][()]
+        first_pos = f["boundary/first_pos"][()]
+        dsc_in = f["transition/dsc_in"][()]
     victim = int(np.nonzero((nodes.pre >= 0) & (nodes.suc >= 0))[0][0])  # a node inside a captured run
     s = prune.run(tiny_db, out, config.settings("prune"), str(victim), False, "test", False)
     assert s == {"removed": 1, "kept": len(nodes) - 1, "links_cut": 1, "found": {victim: "test"}}
@@ -46,7 +47,11 @@ def test_removing_nodes_keeps_links_and_costs_consistent(tiny_db, tmp_path, conf
         original = f["pruned/original_id"][()]
         assert f["pruned/removed_id"][()].tolist() == [victim]
         assert [r.decode() for r in f["pruned/reason"][()]] == ["test"]
-        assert np.array_equal(f["pairs/pgap"][()], pgap[np.ix_(original, original)])
+        assert np.array_equal(f["boundary/first_pos"][()], first_pos[original])
+        cut = original.tolist().index(nodes.suc[victim])
+        assert not f["transition/dsc_in"][cut].any() and f["transition/dsc_scale"][cut] == 0.0  # rule 4: DSC unused
+        others = np.array([k for k in range(len(original)) if k != cut])
+        assert np.array_equal(f["transition/dsc_in"][()][others], dsc_in[original[others]])
     assert victim not in original.tolist() and len(kept) == len(nodes) - 1
     successor = original.tolist().index(nodes.suc[victim])
     predecessor = original.tolist().index(nodes.pre[victim])

@@ -123,6 +123,19 @@ def test_numpy_and_opencl_synthesis_write_the_same_motion(tiny_db, tiny_corpus, 
         assert np.array_equal(a["markers"][()], b["markers"][()])
 
 
+@pytest.mark.parametrize("use_opencl", ["true", "false"])
+def test_pruned_and_dense_searches_write_the_same_motion(tiny_db, tiny_corpus, held_out_take, tmp_path, use_opencl):
+    from facesynth.config import Config
+
+    tg = tiny_corpus / "labels" / f"{held_out_take}.TextGrid"
+    costs = [_run(tiny_db, tg, tmp_path / f"{dp}.h5", Config.load(None, (f"synthesize.dp={dp}", f"synthesize.use_opencl={use_opencl}")))["cost"]
+             for dp in ("pruned", "dense")]
+    assert costs[0] == costs[1]
+    with h5py.File(tmp_path / "pruned.h5") as a, h5py.File(tmp_path / "dense.h5") as b:
+        assert np.array_equal(a["path/node"][()], b["path/node"][()])
+        assert np.array_equal(a["markers"][()], b["markers"][()])
+
+
 def test_audio_and_text_are_aligned_on_the_fly_and_emotion_tiers_read(tiny_db, tiny_corpus, config, tmp_path):
     import csv
 

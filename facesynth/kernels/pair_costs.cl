@@ -1,0 +1,157 @@
+// Transition costs of paper Table I computed on demand from per-node boundary features, and
+// the exact pruned min-plus step of Algorithm 1 that uses them.
+//
+//   DSC(i, j)  = scale[j] * sum_d (x[i, d] + y[j, d])^2               (Eq. 6, expanded blend)
+//   PGap(i, j) = sum_k || first_pos[j, k] - last_pos[i, k] ||          (Eq. 8)
+//   VGap(i, j) = sum_k || first_vel[j, k] - last_vel[i, k] ||          (Eq. 9)
+//   TC(i, j)   = 0 if pre[j] == i; alpha1 PNT if pre[j] < 0; else
+//                ((alpha2 DSC + alpha3 PGap) + VGap) + PNT [viseme(i) != viseme(pre(j))]
+//
+// Layout (facesynth.search.pairs.DeviceLayout): x and y are (N, DIMS8 * 8), zero-padded; the
+// boundary states are (N, 3, MQ * 8), the x, y and z coordinates of the markers in planes,
+// zero-padded (a padded marker adds sqrt(0) = 0). Each sum runs in eight lanes (element or
+// marker d goes to lane d % 8, front to back), and the lanes are added as
+// ((l0 + l1) + (l2 + l3)) + ((l4 + l5) + (l6 + l7)); no contraction, correctly rounded sqrt.
+// The NumPy reference (facesynth.search.pairs) does the same operations in the same order, so
+// the values are bit-identical. The host passes alpha1 * PNT already rounded to float32.
+#pragma OPENCL FP_CONTRACT OFF
+
+#ifndef DIMS8
+#error "build with -DDIMS8=<DSC feature length / 8> -DMQ=<markers / 8, rounded up> -DPIVOTS=<pivots>"
+#endif
+
+inline float lanes(const float8 a)
+{
+    return ((a.s0 + a.s1) + (a.s2 + a.s3)) + ((a.s4 + a.s5) + (a.s6 + a.s7));
+}
+
+inline float gap(__global const float *last, __global const float *first)
+{
+    __global const float8 *l = (__global const float8 *)last;
+    __global const float8 *f = (__global const float8 *)first;
+    float8 acc = (float8)(0.0f);
+    for (int q = 0; q < MQ; ++q) {
+        const float8 dx = f[q] - l[q];
+        const float8 dy = f[MQ + q] - l[MQ + q];
+        const float8 dz = f[2 * MQ + q] - l[2 * MQ + q];
+        acc = acc + sqrt(dx * dx + dy * dy + dz * dz);
+    }
+    return lanes(acc);
+}
+
+inline float pair_tc(const int i, const int j,
+                     __global const float *x, __global const float *y, __global const float *scale,
+                     __global const float *last_pos, __global const float *first_pos,
+                     __global const float *last_vel, __global const float *first_vel,
+                     __global const int *vis, __global const int *pre, __global const int *pre_vis,
+                     const float a2, const float a3, const float pnt, const float a1pnt)
+{
+    const int p = pre[j];
+    if (p == i) return 0.0f;
+    if (p < 0) return a1pnt;
+    __global const float8 *xi = (__global const float8 *)(x + (size_t)i * DIMS8 * 8);
+    __global const float8 *yj = (__global const float8 *)(y + (size_t)j * DIMS8 * 8);
+    float8 acc = (float8)(0.0f);
+    for (int d = 0; d < DIMS8; ++d) {
+        const float8 s = xi[d] + yj[d];
+        acc = acc + s * s;
+    }
+    const float dsc = lanes(acc) * scale[j];
+    const size_t stride = (size_t)3 * MQ * 8;
+    const float pg = gap(last_pos + (size_t)i * stride, first_pos + (size_t)j * stride);
+    const float vg = gap(last_vel + (size_t)i * stride, first_vel + (size_t)j * stride);
+    float tc = a2 * dsc;
+    tc = tc + a3 * pg;
+    tc = tc + vg;
+    tc = tc + (vis[i] != pre_vis[j] ? pnt : 0.0f);
+    return tc;
+}
+
+#define PAIR_ARGS x, y, scale, last_pos, first_pos, last_vel, first_vel, vis, pre, pre_vis, a2, a3, pnt, a1pnt
+#define FEATURE_PARAMS __global const float *x, __global const float *y, __global const float *scale, \
+    __global const float *last_pos, __global const float *first_pos, \
+    __global const float *last_vel, __global const float *first_vel, \
+    __global const int *vis, __global const int *pre, __global const int *pre_vis, \
+    const float a2, const float a3, const float pnt, const float a1pnt
+
+// out[r, c] = TC(rows[r], cols[c]); a (n_rows, n_cols) row-major block.
+__kernel void tc_block(FEATURE_PARAMS,
+                       __global const int *rows, __global const int *cols, const int n_rows, const int n_cols,
+                       __global float *out)
+{
+    const int c = get_global_id(0);
+    const int r = get_global_id(1);
+    if (c >= n_cols || r >= n_rows) return;
+    out[(size_t)r * n_cols + c] = pair_tc(rows[r], cols[c], PAIR_ARGS);
+}
+
+// One step of the exact pruned DP for a list of nodes (one work-item each):
+//   forward (backward == 0):  best[c] = min(init[c], min_r (phi[r] + TC(rows[r], cols[c])))
+//   backward (backward == 1): best[c] = min(init[c], min_r (phi[r] + TC(cols[c], rows[r])))
+// rows are sorted by phi ascending. TC >= 0, so the scan stops at the first row with
+// phi >= best; a row whose cheap lower bound (viseme penalty and pivot bounds of PGap and
+// VGap, shrunk by 1e-4 relative and `slack` absolute against rounding) already reaches best
+// is skipped without computing its cost. Pairs of Table I rules 1 and 4 are left to init
+// (the captured link costs 0; rule 4 costs alpha1 PNT from every node). The minimum is the
+// same float32 value as the dense min over all rows; evals[c] counts the pair costs computed.
+// pivots: row_lp/row_lv[i * PIVOTS + q] = mixed-norm distance of node i's last position /
+// velocity from pivot q; col_fp/col_fv likewise for first position / velocity.
+__kernel void pruned_columns(FEATURE_PARAMS,
+                             __global const float *row_lp, __global const float *row_lv,
+                             __global const float *col_fp, __global const float *col_fv, const float slack,
+                             __global const int *rows, __global const float *phi, const int n_rows,
+                             __global const int *cols, __global const float *init, const int n_cols,
+                             const int backward, __global float *best_out, __global int *evals_out)
+{
+    const int c = get_global_id(0);
+    if (c >= n_cols) return;
+    const int me = cols[c];
+    const int me_pre = pre[me];
+    float best = init[c];
+    int evals = 0;
+    float mq_p[PIVOTS], mq_v[PIVOTS];
+    for (int q = 0; q < PIVOTS; ++q) {
+        mq_p[q] = backward ? row_lp[(size_t)me * PIVOTS + q] : col_fp[(size_t)me * PIVOTS + q];
+        mq_v[q] = backward ? row_lv[(size_t)me * PIVOTS + q] : col_fv[(size_t)me * PIVOTS + q];
+    }
+    __global const float *other_p = backward ? col_fp : row_lp;
+    __global const float *other_v = backward ? col_fv : row_lv;
+    for (int r = 0; r < n_rows; ++r) {
+        const float p = phi[r];
+        if (p >= best) break;
+        const int other = rows[r];
+        const int i = backward ? me : other;
+        const int j = backward ? other : me;
+        const int pj = backward ? pre[other] : me_pre;
+        if (pj == i || pj < 0) continue;  // rules 1 and 4 are in init
+        float lp = 0.0f, lv = 0.0f;
+        for (int q = 0; q < PIVOTS; ++q) {
+            const float dp = other_p[(size_t)other * PIVOTS + q] - mq_p[q];
+            const float dv = other_v[(size_t)other * PIVOTS + q] - mq_v[q];
+            const float ap = dp < 0.0f ? -dp : dp;
+            const float av = dv < 0.0f ? -dv : dv;
+            lp = ap > lp ? ap : lp;
+            lv = av > lv ? av : lv;
+        }
+        const float lb = ((vis[i] != pre_vis[j] ? pnt : 0.0f) + a3 * lp + lv) * 0.9999f - slack;
+        if (p + lb >= best) continue;
+        const float v = p + pair_tc(i, j, PAIR_ARGS);
+        best = v < best ? v : best;
+        ++evals;
+    }
+    best_out[c] = best;
+    evals_out[c] = evals;
+}
+
+// The device layout of a boundary state: (n, 3M) interleaved x, y, z per marker ->
+// (n, 3, MQ * 8) coordinate planes, zero-padded (facesynth.search.pairs.DeviceLayout).
+__kernel void to_planes(__global const float *src, const int n, const int m, __global float *dst)
+{
+    const int node = get_global_id(0);
+    if (node >= n) return;
+    __global const float *s = src + (size_t)node * 3 * m;
+    __global float *d = dst + (size_t)node * 3 * MQ * 8;
+    for (int c = 0; c < 3; ++c)
+        for (int k = 0; k < MQ * 8; ++k)
+            d[c * MQ * 8 + k] = k < m ? s[3 * k + c] : 0.0f;
+}

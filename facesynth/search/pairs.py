@@ -1,0 +1,439 @@
+"""Transition costs of paper Table I computed on demand from per-node boundary features.
+
+No (N, N) table is stored: ``build-db`` keeps, per node, what the pair terms of any ordered
+pair (i, j) are made of, and a pair's DSC, PGap and VGap are computed when a search needs it.
+
+* DSC (Eq. 6). With both nodes resampled to S samples (build_db.dsc_samples) and the blend
+  ``(1 - s) warp(o_i) + s pre(o_j)``, the second differences of the blend are
+  ``x_i + y_j`` where ``x_i`` are the second differences of ``(1 - s) warp(o_i)`` and ``y_j``
+  those of ``s pre(o_j)``, both ((S - 2) K,) in PCA space (mm). So
+  ``DSC(i, j) = scale_j * sum_d (x_i[d] + y_j[d])^2`` with ``scale_j`` = 1 / (frames between
+  samples of pre(o_j))^3 (0 when o_j has no predecessor): mm^2/frame^3.
+* PGap, VGap (Eq. 8-9): sums over markers of the distances between o_i's last frame and o_j's
+  first frame, positions (mm) and velocities (mm/frame).
+
+Every sum runs in float32 in eight lanes (term d in lane d % 8, front to back) that are then
+added in a fixed tree, here and in ``kernels/pair_costs.cl``, so both give bit-identical values. Against the stored float32 tables of schema 1 (DSC expanded as
+``|x|^2 + |y|^2 + 2 x.y`` in float64 and rounded once) the float32 sums differ by at most
+``(D + 2) 2^-24`` of the sum of the squares' magnitudes for DSC (D = (S - 2) K terms;
+measured: below 2e-6 relative to the largest DSC of a database) and by at most
+``(M + 2) 2^-24`` of the PGap/VGap sum for M markers (measured: below 2e-6 relative);
+``tests/search/test_pairs.py`` checks both bounds against the schema-1 formulas.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..config import SynthesizeSettings
+
+#: Pivots of the cheap lower and upper bounds (triangle inequality of the mixed norm).
+PIVOTS = 4
+
+
+@dataclass
+class PairFeatures:
+    """Per-node data from which every pair's Table I terms are computed (N nodes, M markers).
+
+    first_pos, last_pos : (N, 3M) float32 mm, markers of the node's first / last frame.
+    first_vel, last_vel : (N, 3M) float32 mm/frame, velocity at the first / last frame.
+    dsc_out : (N, D) float32, x_i: second differences of (1 - s) warp(o_i) (PCA space, mm).
+    dsc_in : (N, D) float32, y_j: second differences of s * pre(o_j) (0 without predecessor).
+    dsc_scale : (N,) float32, 1/frame^3 (0 without predecessor).
+    viseme : (N,) int64 Table VI class; pre : (N,) int64 captured predecessor or -1.
+    pivot_distances : (N, PIVOTS) float32 each: mixed-norm distances (sum over markers of the
+        Euclidean distance) of last_pos, first_pos, last_vel, first_vel from the pivots of
+        :func:`pivot_distances` (mm, mm, mm/frame, mm/frame); computed when None.
+    """
+
+    first_pos: np.ndarray
+    last_pos: np.ndarray
+    first_vel: np.ndarray
+    last_vel: np.ndarray
+    dsc_out: np.ndarray
+    dsc_in: np.ndarray
+    dsc_scale: np.ndarray
+    viseme: np.ndarray
+    pre: np.ndarray
+    pivot_distances: tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray] | None = None
+
+    def __len__(self) -> int:
+        return len(self.pre)
+
+    @property
+    def pre_viseme(self) -> np.ndarray:
+        """(N,) int64: viseme of pre(o_j), -1 without predecessor."""
+        return np.where(self.pre >= 0, self.viseme[np.maximum(self.pre, 0)], -1)
+
+    def subset(self, keep: np.ndarray, pre: np.ndarray) -> "PairFeatures":
+        """The nodes ``keep`` with re-indexed links ``pre``; a node whose predecessor is gone
+        gets DSC features 0 (Table I rule 4 does not use DSC)."""
+        lost = pre < 0
+        dsc_in = self.dsc_in[keep].copy()
+        scale = self.dsc_scale[keep].copy()
+        dsc_in[lost] = 0.0
+        scale[lost] = 0.0
+        pivots = None if self.pivot_distances is None else tuple(d[keep] for d in self.pivot_distances)
+        return PairFeatures(self.first_pos[keep], self.last_pos[keep], self.first_vel[keep], self.last_vel[keep],
+                            self.dsc_out[keep], dsc_in, scale, self.viseme[keep], pre, pivots)
+
+    def layout(self) -> "DeviceLayout":
+        """The padded, lane-ordered copies the pair sums run on (made once)."""
+        if getattr(self, "_layout", None) is None:
+            self._layout = DeviceLayout.of(self)
+        return self._layout
+
+    def terms(self, rows: np.ndarray, cols: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """DSC, PGap and VGap of every (rows[a], cols[b]), each (r, c) float32, summed in eight
+        lanes and then across them (the reference of ``kernels/pair_costs.cl``, bit-identical)."""
+        rows, cols = np.asarray(rows), np.asarray(cols)
+        lay = self.layout()
+        x, y = lay.x[rows], lay.y[cols]  # (r, Q, 8), (c, Q, 8)
+        acc = np.zeros((len(rows), len(cols), 8), np.float32)
+        s = np.empty_like(acc)
+        for q in range(x.shape[1]):
+            np.add(x[:, None, q], y[None, :, q], out=s)
+            s *= s
+            acc += s
+        dsc = _lanes(acc)
+        dsc *= self.dsc_scale[cols][None, :]
+        return (dsc, _gap_lanes(lay.last_pos[rows], lay.first_pos[cols]),
+                _gap_lanes(lay.last_vel[rows], lay.first_vel[cols]))
+
+
+@dataclass
+class DeviceLayout:
+    """The features as the pair sums read them: x, y (N, Q, 8) float32 zero-padded to a
+    multiple of 8; boundary states (N, 3, Mq, 8) float32, coordinate planes with marker k in
+    lane k % 8 of group k // 8, zero-padded."""
+
+    x: np.ndarray
+    y: np.ndarray
+    last_pos: np.ndarray
+    first_pos: np.ndarray
+    last_vel: np.ndarray
+    first_vel: np.ndarray
+
+    @classmethod
+    def of(cls, f: PairFeatures) -> "DeviceLayout":
+        def lanes8(a):
+            n, d = a.shape
+            out = np.zeros((n, -(-d // 8) * 8), np.float32)
+            out[:, :d] = a
+            return out.reshape(n, -1, 8)
+
+        def planes(a):
+            n, m3 = a.shape
+            m = m3 // 3
+            out = np.zeros((n, 3, -(-m // 8) * 8), np.float32)
+            out[:, :, :m] = a.reshape(n, m, 3).transpose(0, 2, 1)
+            return out.reshape(n, 3, -1, 8)
+
+        return cls(lanes8(f.dsc_out), lanes8(f.dsc_in), planes(f.last_pos), planes(f.first_pos), planes(f.last_vel),
+                   planes(f.first_vel))
+
+
+def _lanes(a: np.ndarray) -> np.ndarray:
+    """((l0 + l1) + (l2 + l3)) + ((l4 + l5) + (l6 + l7)) over the last axis (float32)."""
+    return ((a[..., 0] + a[..., 1]) + (a[..., 2] + a[..., 3])) + ((a[..., 4] + a[..., 5]) + (a[..., 6] + a[..., 7]))
+
+
+def _gap_lanes(last: np.ndarray, first: np.ndarray) -> np.ndarray:
+    """sum over markers of || first[b, k] - last[a, k] ||, (r, c) float32, in the lane order of
+    the kernel; last (r, 3, Mq, 8), first (c, 3, Mq, 8)."""
+    acc = np.zeros((len(last), len(first), 8), np.float32)
+    d = np.empty_like(acc)
+    sq = np.empty_like(acc)
+    for q in range(last.shape[2]):
+        np.subtract(first[None, :, 0, q], last[:, None, 0, q], out=sq)
+        sq *= sq
+        for c in (1, 2):
+            np.subtract(first[None, :, c, q], last[:, None, c, q], out=d)
+            d *= d
+            sq += d
+        np.sqrt(sq, out=sq)
+        acc += sq
+    return _lanes(acc)
+
+
+def mixed_norms(a: np.ndarray, pivots: np.ndarray) -> np.ndarray:
+    """sum_k || a[n, k] - pivots[q, k] || over 3-vectors k: (N, Q) float32 (a: (N, 3M), pivots (Q, 3M))."""
+    out = np.empty((len(a), len(pivots)), np.float32)
+    for q, p in enumerate(pivots):
+        d = (a - p[None]).reshape(len(a), -1, 3).astype(np.float64)
+        out[:, q] = np.sqrt((d * d).sum(-1)).sum(-1)
+    return out
+
+
+def _pivots(a: np.ndarray, b: np.ndarray, count: int) -> np.ndarray:
+    """``count`` pivots for the rows of a and b: their mean, then farthest-first picks (deterministic)."""
+    both = np.concatenate([a, b]) if len(b) else a
+    picks = [both.mean(axis=0)]
+    dist = mixed_norms(both, np.array(picks))[:, 0]
+    while len(picks) < count and len(both):
+        k = int(np.argmax(dist))
+        picks.append(both[k].astype(np.float64))
+        dist = np.minimum(dist, mixed_norms(both, both[k : k + 1])[:, 0])
+    return np.array(picks, np.float32)
+
+
+def pivot_distances(f: PairFeatures) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Distances of every node's last/first positions and last/first velocities from
+    :data:`PIVOTS` pivots each ((N, PIVOTS) float32; positions and velocities have their own
+    pivots: the mean, then farthest-first picks). Only bounds use them, so any pivots are
+    valid; ``build-db`` stores them so a search need not compute them."""
+    pos = _pivots(f.last_pos, f.first_pos, PIVOTS)
+    vel = _pivots(f.last_vel, f.first_vel, PIVOTS)
+    return mixed_norms(f.last_pos, pos), mixed_norms(f.first_pos, pos), mixed_norms(f.last_vel, vel), mixed_norms(f.first_vel, vel)
+
+
+@dataclass
+class TransitionCosts:
+    """TC(i, j) of Table I for settings ``s``, computed on demand (rows i = the node before).
+
+    Usable wherever an (N, N) matrix was: ``tc[i, j]``, :meth:`column`, :meth:`values`,
+    :meth:`block`, :meth:`dense`. ``opencl`` chooses the device for blocks (bit-identical).
+    The pivot distances (``row_lp`` ... , (N, PIVOTS) float32) give cheap bounds:
+    ``|row_lp[i, q] - col_fp[j, q]| <= PGap(i, j) <= row_lp[i, q] + col_fp[j, q]`` (triangle
+    inequality of the mixed norm sum_k ||.||), likewise for velocities.
+    """
+
+    f: PairFeatures
+    s: SynthesizeSettings
+    opencl: bool = False
+    _device: object = field(default=None, repr=False)
+
+    def __post_init__(self):
+        f = self.f
+        self.n = len(f)
+        self.pre = f.pre.astype(np.int64)
+        self.pre_viseme = f.pre_viseme
+        self.a1pnt = np.float32(self.s.alpha1 * self.s.pnt)
+        distances = f.pivot_distances if f.pivot_distances is not None else pivot_distances(f)
+        self.row_lp, self.col_fp, self.row_lv, self.col_fv = (np.asarray(d, np.float32) for d in distances)
+        # float32 norms: 1e-6 relative at most, far inside the margins the bounds are used with
+        xn = np.sqrt(np.einsum("ij,ij->i", f.dsc_out, f.dsc_out)).astype(np.float64)
+        yn = np.sqrt(np.einsum("ij,ij->i", f.dsc_in, f.dsc_in)).astype(np.float64)
+        scale = f.dsc_scale.astype(np.float64)
+        # a2 DSC(i, k) <= a2 scale_k (|x_i| + |y_k|)^2 <= dsc_row_max[i] for every k
+        self.dsc_row_max = self.s.alpha2 * (scale.max(initial=0.0) * xn ** 2 + 2 * xn * (scale * yn).max(initial=0.0)
+                                            + (scale * yn ** 2).max(initial=0.0))
+
+        # advantage(r, j) <= reach_row[r] + reach_col[j] (pivot 0), for the cheap first test
+        a3 = self.s.alpha3
+        self.reach_row = self.dsc_row_max + a3 * self.row_lp[:, 0] + self.row_lv[:, 0] + self.s.pnt
+        suc = self._suc
+        via = np.where(suc >= 0, a3 * self.col_fp[np.maximum(suc, 0), 0] + self.col_fv[np.maximum(suc, 0), 0], 0.0)
+        self.reach_col = np.maximum(a3 * self.row_lp[:, 0].astype(np.float64) + self.row_lv[:, 0], via)
+
+    # --- values ----------------------------------------------------------------------------
+    def block(self, rows, cols) -> np.ndarray:
+        """TC[rows][:, cols], (r, c) float32."""
+        rows = np.asarray(rows, np.int64).ravel()
+        cols = np.asarray(cols, np.int64).ravel()
+        if len(rows) == 0 or len(cols) == 0:
+            return np.zeros((len(rows), len(cols)), np.float32)
+        if self.opencl:
+            return self.device.block(rows, cols)
+        return self.block_numpy(rows, cols)
+
+    def block_numpy(self, rows: np.ndarray, cols: np.ndarray) -> np.ndarray:
+        """The NumPy reference of :meth:`block`: Table I's rules on the pair terms, in the
+        order of ``kernels/pair_costs.cl``."""
+        out = np.empty((len(rows), len(cols)), np.float32)
+        step = max(1, (1 << 21) // max(len(cols), 1))
+        s = self.s
+        for a in range(0, len(rows), step):
+            r = rows[a : a + step]
+            dsc, pgap, vgap = self.f.terms(r, cols)
+            t = np.float32(s.alpha2) * dsc
+            t += np.float32(s.alpha3) * pgap
+            t += vgap
+            t += np.float32(s.pnt) * (self.f.viseme[r][:, None] != self.pre_viseme[cols][None, :])
+            pre = self.pre[cols]
+            t[:, pre < 0] = self.a1pnt
+            t[pre[None, :] == r[:, None]] = 0.0
+            out[a : a + step] = t
+        return out
+
+    def column(self, j: int, rows: np.ndarray | None = None) -> np.ndarray:
+        """TC[:, j] ((N,) float32), or TC[rows, j] when ``rows`` is given."""
+        rows = np.arange(self.n) if rows is None else rows
+        return self.block(rows, [j])[:, 0]
+
+    def values(self, i: int, js: np.ndarray) -> np.ndarray:
+        """TC[i, js], (len(js),) float32."""
+        return self.block([i], js)[0]
+
+    def __getitem__(self, ij: tuple[int, int]) -> np.float32:
+        i, j = ij
+        return self.block([int(i)], [int(j)])[0, 0]
+
+    def dense(self) -> np.ndarray:
+        """The full (N, N) float32 matrix (for small databases and the dense reference DP)."""
+        out = np.empty((self.n, self.n), np.float32)
+        cols = np.arange(self.n)
+        step = max(1, (64 << 20) // (4 * max(self.n, 1)))
+        for a in range(0, self.n, step):
+            out[a : a + step] = self.block(np.arange(a, min(self.n, a + step)), cols)
+        return out
+
+    def panels(self):
+        """The full matrix in the panel-major layout of the dense OpenCL DP (a PanelMatrix)."""
+        from .dp import PanelMatrix
+
+        out = PanelMatrix(self.n)
+        cols = np.arange(self.n)
+        step = max(1, (32 << 20) // (4 * max(self.n, 1)))
+        for a in range(0, self.n, step):
+            rows = slice(a, min(self.n, a + step))
+            out.set_rows(rows, self.block(np.arange(rows.start, rows.stop), cols))
+        return out
+
+    # --- bounds ----------------------------------------------------------------------------
+    def upper(self, r: np.ndarray, k: np.ndarray) -> np.ndarray:
+        """Upper bounds of TC(r, k) (broadcast shapes), float64, from the pivots."""
+        pg = np.min(self.row_lp[r] + self.col_fp[k], axis=-1)
+        vg = np.min(self.row_lv[r] + self.col_fv[k], axis=-1)
+        tc = self.dsc_row_max[r] + self.s.alpha3 * pg.astype(np.float64) + vg + self.s.pnt * (self.f.viseme[r] != self.pre_viseme[k])
+        return np.where(self.pre[k] < 0, float(self.a1pnt), np.where(self.pre[k] == r, 0.0, tc))
+
+    def advantage(self, r: np.ndarray, j: np.ndarray) -> np.ndarray:
+        """Upper bounds of max_k (TC(r, k) - TC(j, k)) over every node k, float64 (r, j broadcast):
+        how much more a continuation from r can cost than the same continuation from j.
+
+        k = suc(j) costs 0 from j (rule 1) and at most ``upper(r, k)`` from r; k without a
+        predecessor costs alpha1 PNT from both; k = suc(r) costs 0 from r; every other k
+        differs by at most a2 max DSC(r, .) + alpha3 |LP_r - LP_j| + |LV_r - LV_j| + PNT [viseme
+        differs], the distances bounded through the pivots.
+        """
+        r, j = np.broadcast_arrays(np.asarray(r), np.asarray(j))
+        lp = np.min(self.row_lp[r] + self.row_lp[j], axis=-1).astype(np.float64)
+        lv = np.min(self.row_lv[r] + self.row_lv[j], axis=-1).astype(np.float64)
+        general = self.dsc_row_max[r] + self.s.alpha3 * lp + lv + self.s.pnt * (self.f.viseme[r] != self.f.viseme[j])
+        suc_j = self._suc[j]
+        via_suc = np.where(suc_j >= 0, self.upper(r, np.maximum(suc_j, 0)), 0.0)
+        return np.maximum(np.maximum(general, via_suc), 0.0)
+
+    @property
+    def _suc(self) -> np.ndarray:
+        if not hasattr(self, "_suc_cache"):
+            suc = -np.ones(self.n, np.int64)
+            has = self.pre >= 0
+            suc[self.pre[has]] = np.nonzero(has)[0]
+            self._suc_cache = suc
+        return self._suc_cache
+
+    @property
+    def device(self):
+        """The OpenCL side (features uploaded once)."""
+        if self._device is None:
+            self._device = OpenCLPairs(self)
+        return self._device
+
+
+class OpenCLPairs:
+    """The features on the OpenCL device, and the kernels of ``kernels/pair_costs.cl``.
+
+    Every array is copied into device-owned buffers (COPY_HOST_PTR), so the host arrays'
+    alignment never matters.
+    """
+
+    def __init__(self, tc: TransitionCosts):
+        import pyopencl as cl
+
+        from ..opencl import context, kernel, queue
+
+        self.cl, self.ctx, self.queue, self.tc = cl, context(), queue(), tc
+        f = tc.f
+        dims8, markers = -(-f.dsc_out.shape[1] // 8), f.first_pos.shape[1] // 3
+        defines = dict(DIMS8=dims8, MQ=-(-markers // 8), PIVOTS=PIVOTS)
+        self.block_kernel = kernel("pair_costs", "tc_block", **defines)
+        self.pruned_kernel = kernel("pair_costs", "pruned_columns", **defines)
+        up = self.upload
+        # The lane layout of DeviceLayout, made on the device: no host copy of the features.
+        planes = kernel("pair_costs", "to_planes", **defines)
+
+        def as_planes(a):
+            src = up(a)
+            out = cl.Buffer(self.ctx, cl.mem_flags.READ_WRITE, max(4, 4 * len(a) * 3 * defines["MQ"] * 8))
+            if len(a):
+                planes(self.queue, (len(a),), None, src, np.int32(len(a)), np.int32(markers), out)
+            return out
+
+        def as_lanes(a):
+            if a.shape[1] % 8 == 0:
+                return up(a)
+            padded = np.zeros((len(a), dims8 * 8), np.float32)
+            padded[:, : a.shape[1]] = a
+            return up(padded)
+
+        self.features = [as_lanes(f.dsc_out), as_lanes(f.dsc_in), up(f.dsc_scale), as_planes(f.last_pos),
+                         as_planes(f.first_pos), as_planes(f.last_vel), as_planes(f.first_vel),
+                         up(f.viseme.astype(np.int32)), up(tc.pre.astype(np.int32)),
+                         up(tc.pre_viseme.astype(np.int32)),
+                         np.float32(tc.s.alpha2), np.float32(tc.s.alpha3), np.float32(tc.s.pnt), tc.a1pnt]
+        self.pivots = [up(tc.row_lp), up(tc.row_lv), up(tc.col_fp), up(tc.col_fv)]
+        # Absolute slack of the kernel's cheap lower bound: float32 rounding of the stored pivot
+        # distances and of the computed sums, far below any cost that matters.
+        self.slack = 1e-4 * (tc.s.alpha3 * (float(tc.row_lp.max(initial=0)) + float(tc.col_fp.max(initial=0)))
+                             + float(tc.row_lv.max(initial=0)) + float(tc.col_fv.max(initial=0))) + 1e-3
+
+    def upload(self, a: np.ndarray):
+        """A read-only device copy of ``a`` (float32 or int32, C order)."""
+        a = np.ascontiguousarray(a, np.int32 if a.dtype.kind in "iu" else np.float32)
+        mf = self.cl.mem_flags
+        if a.nbytes == 0:
+            a = np.zeros(1, a.dtype)
+        return self.cl.Buffer(self.ctx, mf.READ_ONLY | mf.COPY_HOST_PTR, hostbuf=a)
+
+    def block(self, rows: np.ndarray, cols: np.ndarray) -> np.ndarray:
+        """TC[rows][:, cols] on the device, (r, c) float32."""
+        cl = self.cl
+        out = np.empty((len(rows), len(cols)), np.float32)
+        step = max(1, (64 << 20) // (4 * len(cols)))
+        cols_buf = self.upload(cols)
+        for a in range(0, len(rows), step):
+            r = rows[a : a + step]
+            buf = cl.Buffer(self.ctx, cl.mem_flags.WRITE_ONLY, 4 * len(r) * len(cols))
+            local = (min(64, len(cols)), 1)
+            size = (-(-len(cols) // local[0]) * local[0], len(r))
+            self.block_kernel(self.queue, size, local, *self.features, self.upload(r), cols_buf,
+                              np.int32(len(r)), np.int32(len(cols)), buf)
+            cl.enqueue_copy(self.queue, out[a : a + len(r)], buf)
+        return out
+
+    def _scratch(self, n: int):
+        """Device buffers for one step (rows, phi, cols, init, best, evals) of n entries, reused."""
+        if getattr(self, "_capacity", 0) < n:
+            cl, mf = self.cl, self.cl.mem_flags
+            self._capacity = max(n, 1024)
+            self._buffers = [cl.Buffer(self.ctx, mf.READ_WRITE, 4 * self._capacity) for _ in range(6)]
+        return self._buffers
+
+    def column_minima(self, rows: np.ndarray, phi: np.ndarray, cols: np.ndarray, init: np.ndarray,
+                      backward: bool = False) -> tuple[np.ndarray, int]:
+        """min(init[c], min_r phi[r] + TC(rows[r], cols[c])) for rows sorted by ``phi`` (float32),
+        or with ``backward`` TC(cols[c], rows[r]); pairs of Table I rules 1 and 4 are left to
+        ``init``. Returns the (c,) float32 minima and the number of pair costs computed."""
+        cl = self.cl
+        n_cols = len(cols)
+        if n_cols == 0:
+            return np.zeros(0, np.float32), 0
+        host = [np.ascontiguousarray(rows, np.int32), np.ascontiguousarray(phi, np.float32),
+                np.ascontiguousarray(cols, np.int32), np.ascontiguousarray(init, np.float32)]
+        rows_buf, phi_buf, cols_buf, init_buf, best_buf, evals_buf = self._scratch(max(len(rows), n_cols))
+        for buf, a in zip((rows_buf, phi_buf, cols_buf, init_buf), host):
+            if len(a):
+                cl.enqueue_copy(self.queue, buf, a, is_blocking=False)
+        best = np.empty(n_cols, np.float32)
+        evals = np.empty(n_cols, np.int32)
+        local = min(64, n_cols)
+        self.pruned_kernel(self.queue, (-(-n_cols // local) * local,), (local,), *self.features, *self.pivots,
+                           np.float32(self.slack), rows_buf, phi_buf, np.int32(len(rows)), cols_buf, init_buf,
+                           np.int32(n_cols), np.int32(bool(backward)), best_buf, evals_buf)
+        cl.enqueue_copy(self.queue, best, best_buf, is_blocking=False)
+        cl.enqueue_copy(self.queue, evals, evals_buf, is_blocking=True)
+        return best, int(evals.astype(np.int64).sum())

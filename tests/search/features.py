@@ -1,0 +1,30 @@
+"""Seeded random per-node transition features for the search tests."""
+
+import numpy as np
+
+from facesynth.search.pairs import PairFeatures
+
+
+def random_features(n: int, seed: int, markers: int = 7, dims: int = 12, duplicates: int = 0) -> PairFeatures:
+    """Seeded random features of ``n`` nodes in captured runs of 1-5, with ``duplicates`` nodes
+    copied from others (so that pair costs tie exactly)."""
+    rng = np.random.default_rng(seed)
+    pre = -np.ones(n, np.int64)
+    k = 0
+    while k < n:
+        run = int(rng.integers(1, 6))
+        pre[k + 1 : k + run] = np.arange(k, min(n, k + run) - 1)
+        k += run
+    arrays = [rng.normal(0, s, (n, 3 * markers)).astype(np.float32) for s in (5, 5, 1, 1)]
+    x = rng.normal(0, 1, (n, dims)).astype(np.float32)
+    y = rng.normal(0, 1, (n, dims)).astype(np.float32)
+    scale = rng.uniform(0.1, 3, n).astype(np.float32)
+    viseme = rng.integers(0, 4, n)
+    for d in range(duplicates):
+        src, dst = int(rng.integers(n)), int(rng.integers(n))
+        for a in arrays + [x]:
+            a[dst] = a[src]
+        viseme[dst] = viseme[src]
+    y[pre < 0] = 0.0
+    scale[pre < 0] = 0.0
+    return PairFeatures(*arrays, x, y, scale, viseme, pre)

@@ -1,0 +1,60 @@
+"""Transition costs computed on demand from per-node features: Table I by hand, the OpenCL
+kernel bit-identical to the NumPy reference, and the bounds the pruned DP relies on."""
+
+import numpy as np
+import pytest
+
+from facesynth.config import Config
+from facesynth.search.pairs import PairFeatures, TransitionCosts
+
+from features import random_features
+
+
+@pytest.fixture(scope="module")
+def s():
+    return Config.load(None, ("synthesize.pnt=10", "synthesize.alpha1=2", "synthesize.alpha2=0.5", "synthesize.alpha3=3")).settings("synthesize")
+
+
+def test_table_i_by_hand(s):
+    # Two markers; node 1 follows node 0 (rule 1), node 2 follows node 1, node 0 has none (rule 4).
+    z = np.zeros((3, 6), np.float32)
+    first_pos, last_pos = z.copy(), z.copy()
+    last_pos[2] = [3, 4, 0, 0, 0, 1]      # |(0,0,0)-(3,4,0)| + |(0,0,0)-(0,0,1)| = 5 + 1
+    x = np.array([[1.0], [0.0], [2.0]], np.float32)
+    y = np.array([[0.0], [0.0], [1.0]], np.float32)
+    f = PairFeatures(first_pos, last_pos, z.copy(), z.copy(), x, y, np.array([0, 0, 2], np.float32),
+                     np.array([1, 1, 2]), np.array([-1, 0, 1]))
+    tc = TransitionCosts(f, s).dense()
+    assert tc[0, 1] == 0.0 and tc[1, 2] == 0.0                       # rule 1
+    assert tc[:, 0].tolist() == [20.0] * 3                           # rule 4: alpha1 PNT
+    # TC(2, 2): DSC = 2 * (2 + 1)^2 = 18, PGap = 6, VGap = 0; viseme(2) = 2 != viseme(pre(2)) = 1
+    assert tc[2, 2] == pytest.approx(0.5 * 18 + 3 * 6 + 0 + 10)
+    # TC(0, 2): DSC = 2 * (1 + 1)^2 = 8, PGap 0; viseme(0) = 1 = viseme(pre(2)): rule 2, no PNT
+    assert tc[0, 2] == pytest.approx(0.5 * 8)
+
+
+@pytest.mark.parametrize("n", [1, 33, 257])
+def test_opencl_is_bit_identical_to_the_reference(s, n, opencl_device):
+    f = random_features(n, seed=n)
+    ref = TransitionCosts(f, s).dense()
+    cl = TransitionCosts(f, s, opencl=True).dense()
+    assert np.array_equal(cl.view(np.uint32), ref.view(np.uint32))
+    rows = np.array([n - 1, 0, n // 2])
+    assert np.array_equal(TransitionCosts(f, s, opencl=True).block(rows, rows[::-1]), ref[np.ix_(rows, rows[::-1])])
+
+
+def test_bounds_hold_on_every_pair(s):
+    n = 120
+    tc = TransitionCosts(random_features(n, seed=5), s)
+    d = tc.dense().astype(np.float64)
+    i, j = np.meshgrid(np.arange(n), np.arange(n), indexing="ij")
+    assert (tc.upper(i, j) >= d - 1e-4).all()
+    true_advantage = (d[:, None, :] - d[None, :, :]).max(axis=-1)  # [r, j] = max_k TC(r, k) - TC(j, k)
+    assert (tc.advantage(i, j) >= true_advantage - 1e-4).all()
+    assert (tc.reach_row[i] + tc.reach_col[j] >= tc.advantage(i, j) - 1e-4).all()
+    # the kernel's cheap lower bound: pivots of the mixed norm
+    lp = np.abs(tc.row_lp[:, None, :] - tc.col_fp[None, :, :]).max(-1)
+    lv = np.abs(tc.row_lv[:, None, :] - tc.col_fv[None, :, :]).max(-1)
+    pgap_vgap = d - s.pnt * (tc.f.viseme[:, None] != tc.pre_viseme[None, :])
+    has = (tc.pre[None, :] >= 0) & (tc.pre[None, :] != np.arange(n)[:, None])
+    assert (s.alpha3 * lp + lv <= pgap_vgap + 1e-3)[has].all()

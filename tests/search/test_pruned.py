@@ -1,0 +1,142 @@
+"""The exact pruned DP against the dense DP: the same cost, path and (on the live states)
+accumulated costs, on random databases with ties, on the tiny preset with constraints and
+emotions, and on hand-made cases where the bounds are tight or useless."""
+
+import numpy as np
+import pytest
+
+from facesynth.config import Config
+from facesynth.search.costs import step_costs
+from facesynth.search.dp import dp_numpy, dp_opencl
+from facesynth.search.pairs import PairFeatures, TransitionCosts
+from facesynth.search.pruned import dp_pruned
+
+from features import random_features
+
+
+def _settings(*overrides):
+    return Config.load(None, overrides).settings("synthesize")
+
+
+def _check(tc: TransitionCosts, obs: np.ndarray):
+    """pruned == dense: cost, path, and phi wherever the pruned DP kept the state."""
+    ref = dp_numpy(tc.dense(), obs)
+    res, stats = dp_pruned(tc, obs)
+    assert res.cost == ref.cost
+    assert res.path.tolist() == ref.path.tolist()
+    live = np.isfinite(res.phi)
+    assert np.array_equal(res.phi[live], ref.phi[live])
+    return res, stats
+
+
+def _random_obs(features: PairFeatures, t: int, seed: int, s) -> np.ndarray:
+    """Observation costs of a random phone string: each node's 'phone' is its viseme here, so
+    the Table II constants separate them; coarse values give many ties."""
+    rng = np.random.default_rng(seed)
+    n = len(features)
+    asked = rng.integers(0, 4, t)
+    obs = np.where(features.viseme[None, :] == asked[:, None], 0.0, s.alpha5 * s.pnt)
+    obs = obs + (rng.random((t, n)) < 0.3) * s.alpha6 * s.pnt  # emotion mismatches
+    obs[rng.random(t) < 0.15] = 0.0  # pauses: nothing separates the nodes
+    return obs.astype(np.float32)
+
+
+@pytest.mark.parametrize("n, t, dup", [(1, 3, 0), (2, 5, 0), (40, 6, 10), (150, 12, 30), (300, 9, 0)])
+def test_random_databases_with_ties(n, t, dup):
+    s = _settings()
+    f = random_features(n, seed=n + t, duplicates=dup)
+    _check(TransitionCosts(f, s), _random_obs(f, t, seed=n, s=s))
+
+
+@pytest.mark.parametrize("n, t", [(64, 8), (300, 14)])
+def test_opencl_pruned_equals_dense(n, t, opencl_device):
+    s = _settings()
+    f = random_features(n, seed=3 * n, duplicates=n // 5)
+    obs = _random_obs(f, t, seed=t, s=s)
+    tc = TransitionCosts(f, s, opencl=True)
+    res, _ = _check(tc, obs)
+    numpy_res, _ = dp_pruned(TransitionCosts(f, s), obs)
+    assert numpy_res.cost == res.cost and numpy_res.path.tolist() == res.path.tolist()
+    cl_dense = dp_opencl(tc.dense(), obs)
+    assert cl_dense.cost == res.cost and cl_dense.path.tolist() == res.path.tolist()
+
+
+def test_all_ties_go_to_the_lowest_index():
+    # Every node a copy of node 0 with no predecessor: every path costs the same.
+    s = _settings()
+    f = random_features(50, seed=1)
+    for a in (f.first_pos, f.last_pos, f.first_vel, f.last_vel, f.dsc_out):
+        a[:] = a[0]
+    f.pre[:] = -1
+    f.dsc_in[:] = 0
+    f.dsc_scale[:] = 0
+    obs = np.zeros((6, 50), np.float32)
+    res, _ = _check(TransitionCosts(f, s), obs)
+    assert res.path.tolist() == [0] * 6
+
+
+@pytest.mark.parametrize("weights", [("synthesize.pnt=1e-6",), ("synthesize.alpha5=0", "synthesize.alpha6=0"),
+                                     ("synthesize.alpha1=0",), ("synthesize.alpha3=0", "synthesize.alpha2=0")])
+def test_weights_that_weaken_the_bounds_stay_exact(weights):
+    s = _settings(*weights)
+    f = random_features(120, seed=9, duplicates=20)
+    _check(TransitionCosts(f, s), _random_obs(f, 10, seed=2, s=s))
+
+
+def test_a_tight_case_kills_other_phones_without_evaluating_them():
+    # Large observation constants: only the asked viseme's nodes are ever evaluated.
+    s = _settings("synthesize.pnt=1000")
+    f = random_features(400, seed=4)
+    obs = _random_obs(f, 10, seed=4, s=s)
+    obs[obs == 0.0] = 0.0
+    _, stats = _check(TransitionCosts(f, s), obs)
+    assert stats.fraction < 0.05
+
+
+@pytest.mark.parametrize("with_emotions, with_constraints", [(False, False), (True, False), (False, True), (True, True)])
+def test_tiny_preset_with_emotions_and_constraints(tiny_db, tiny_corpus, held_out_take, config, with_emotions,
+                                                   with_constraints):
+    from facesynth.model.motiondb import MotionDatabase
+    from facesynth.search.inputs import read_utterance
+
+    db = MotionDatabase.read(tiny_db)
+    s = config.settings("synthesize")
+    tc = db.transition_costs(s, opencl=False)
+    utt = read_utterance(tiny_corpus / "labels" / f"{held_out_take}.TextGrid")
+    if with_emotions:
+        utt.emotions = [("angry", "sad", "happy")[k % 3] for k in range(len(utt))]
+    constraints = {}
+    if with_constraints:
+        for t, p in enumerate(utt.phones):
+            nodes = [j for j, q in enumerate(db.nodes.phone) if q == p]
+            if nodes and len(constraints) < 3:
+                constraints[t] = nodes[len(nodes) // 2]
+        assert constraints
+    steps = step_costs(utt.phones, utt.emotions, db.nodes.phone, db.nodes.emotion, constraints, s)
+    res, stats = _check(tc, steps.total)
+    for t, node in constraints.items():
+        assert res.path[t] == node
+    assert stats.fraction < 0.5
+
+
+@pytest.mark.parametrize("opencl", [False, True])
+def test_backward_values_and_a_kept_last_step_equal_the_dense_dp(opencl):
+    if opencl:
+        from facesynth.opencl import use_opencl
+
+        if not use_opencl(True):
+            pytest.skip("no OpenCL device builds facesynth's kernels")
+    from facesynth.search.pruned import backward_pruned
+
+    s = _settings()
+    f = random_features(150, seed=77, duplicates=30)
+    obs = _random_obs(f, 9, seed=5, s=s)
+    tc = TransitionCosts(f, s, opencl=opencl)
+    dense = tc.dense()
+    back = dp_numpy(np.ascontiguousarray(dense.T), obs[::-1].copy())
+    for stop in (0, 4, 8):
+        beta, _ = backward_pruned(tc, obs, stop)
+        assert np.array_equal(beta, back.phi[len(obs) - 1 - stop])
+    fwd = dp_numpy(dense, obs[:5])
+    res, _ = dp_pruned(tc, obs[:5], keep_last=True)
+    assert np.array_equal(res.phi[-1], fwd.phi[-1])
