@@ -13,9 +13,9 @@ of the animated skin:
   (Kabsch) of those vertices from the rest mesh to the frame. Without head motion the skull
   fit is the identity.
 * **Eyeballs.** A sphere per eye hole: its radius is half the hole's width (a human eye is
-  about as wide as its lid opening); its centre lies on the hole's centre, moved back along
-  the hole's outward normal just far enough that every lid-rim vertex stays outside the
-  sphere, so the lids cover the ball instead of cutting into it. The cornea's axis is the
+  about as wide as its lid opening); its centre is the one that puts the lid rim on the
+  sphere as nearly as possible (:func:`eyeball_centre`), so the ball fills the opening and
+  the lids rest on it. The cornea's axis is the
   face's forward direction (the mean of both holes' normals), iris and pupil are drawn by
   the shader from each vertex's angle to that axis (``eye`` attribute). The ball moves with
   the skull and turns with the gaze when the animation carries one; without gaze data the
@@ -46,8 +46,8 @@ NO_EYE = -2.0
 SKIN = (0.87, 0.70, 0.61)
 LIPS = (0.78, 0.50, 0.48)
 SCLERA = (0.90, 0.88, 0.85)
-TEETH = (0.92, 0.89, 0.80)
-TOOTH_GAP = (0.62, 0.56, 0.50)
+TEETH = (0.86, 0.83, 0.75)
+TOOTH_GAP = (0.66, 0.60, 0.53)
 GUM = (0.70, 0.38, 0.40)
 TONGUE = (0.74, 0.40, 0.41)
 CAVITY = (0.34, 0.12, 0.12)
@@ -276,7 +276,7 @@ def _teeth(width: float, upper: bool) -> _Part:
     edges = edges[edges < half]
     xs, dark = [], []
     for e in np.concatenate([-edges[::-1], edges[1:]]) if len(edges) else []:
-        gap = 0.012 * width
+        gap = 0.009 * width
         xs += [e - gap, e, e + gap]
         dark += [False, True, False]
     xs = np.concatenate([[-half], xs, [half]])
@@ -284,9 +284,9 @@ def _teeth(width: float, upper: bool) -> _Part:
     order = np.argsort(xs, kind="stable")
     xs, dark = xs[order], dark[order]
     depth = 0.30 * width * (xs / half) ** 2                                  # the arch curves back
-    front = (-0.11 if upper else -0.16) * width
+    front = (-0.11 if upper else -0.17) * width
     thick = 0.11 * width
-    top, edge = (0.26 * width, -0.035 * width) if upper else (-0.24 * width, 0.015 * width)
+    top, edge = (0.28 * width, -0.02 * width) if upper else (-0.30 * width, -0.07 * width)
     root = edge + 0.72 * (top - edge)
     z = front - depth
     parts_v, parts_f, parts_c = [], [], []
@@ -402,6 +402,32 @@ class FaceScene:
         return out
 
 
+def eyeball_centre(rim: np.ndarray, hole: Hole, radius: float, iterations: int = 30) -> np.ndarray:
+    """Centre (3,) of a ball of the given radius on which the lid rim (n, 3) lies as nearly as
+    possible (least squares of |p - c| - radius, Gauss-Newton from a centre behind the hole),
+    then moved back until no rim vertex is more than 3 % of the radius inside the ball, so the
+    lids close over the ball instead of the ball showing through them."""
+    q = rim - hole.centre
+    h = q @ hole.normal
+    r2 = float(np.mean(np.sum(q * q, 1) - h * h))
+    c = hole.centre - np.sqrt(max(radius**2 - r2, 0.0)) * hole.normal
+    for _ in range(iterations):
+        d = rim - c
+        dist = np.linalg.norm(d, axis=1)
+        jac = -d / dist[:, None]                                           # d(dist)/dc
+        step = np.linalg.lstsq(jac, -(dist - radius), rcond=None)[0]
+        c = c + step
+        if np.linalg.norm(step) < 1e-6 * radius:
+            break
+    if (c - hole.centre) @ hole.normal > 0:                                # the mirror solution in front
+        c = c - 2 * ((c - hole.centre) @ hole.normal) * hole.normal
+    for _ in range(100):
+        if np.min(np.linalg.norm(rim - c, axis=1)) >= 0.97 * radius:
+            break
+        c = c - 0.01 * radius * hole.normal
+    return c
+
+
 def _half_of_loop(local: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """For a mouth loop in its local frame (n, 3) (x across, y up): whether each vertex is on
     the upper lip's side of the corners, and how far along its half it is (0 at the corners,
@@ -477,11 +503,7 @@ def build_scene(rest: np.ndarray, faces: np.ndarray) -> FaceScene:
         unit, sphere_faces, cosine = eye_sphere()
         for hole in layout.eyes:
             radius = 0.5 * hole.width
-            q = rest[hole.loop] - hole.centre
-            h = q @ hole.normal
-            r2 = np.sum(q * q, 1) - h * h
-            back = float(np.max(np.sqrt(np.maximum(radius**2 - r2, 0.0)) - h)) + 0.02 * radius
-            centre = hole.centre - back * hole.normal
+            centre = eyeball_centre(rest[hole.loop], hole, radius)
             part = _Part(np.asarray(centre + radius * unit @ basis.T), sphere_faces,
                          np.tile(SCLERA, (len(unit), 1)), SPECULAR["eye"], cosine)
             eyes.append((centre, radius, basis, unit, add(part)))

@@ -46,7 +46,7 @@ def face_focus(scene: FaceScene) -> tuple[np.ndarray, float] | None:
     eyes = (layout.eyes[0].centre + layout.eyes[1].centre) / 2
     mouth = layout.mouth.centre
     span = float(eyes[1] - mouth[1])
-    centre = (eyes + mouth) / 2 + np.array([0.0, 0.15 * span, -0.5 * span])
+    centre = (eyes + mouth) / 2 + np.array([0.0, 0.05 * span, -0.5 * span])
     return centre, 1.75 * span
 
 
