@@ -428,7 +428,7 @@ def eyeball_centre(rim: np.ndarray, hole: Hole, radius: float, iterations: int =
     return c
 
 
-def _half_of_loop(local: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def lip_halves(local: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """For a mouth loop in its local frame (n, 3) (x across, y up): whether each vertex is on
     the upper lip's side of the corners, and how far along its half it is (0 at the corners,
     1 in the middle, a sine of the arc position), robust to a closed slit."""
@@ -516,7 +516,7 @@ def build_scene(rest: np.ndarray, faces: np.ndarray) -> FaceScene:
         z_axis /= np.linalg.norm(z_axis)
         b0 = np.stack([x_axis, np.cross(z_axis, x_axis), z_axis], 1)        # columns: x, y up, z out
         local = (rest[hole.loop] - hole.centre) @ b0
-        upper, along = _half_of_loop(local)
+        upper, along = lip_halves(local)
         if skull is None:
             skull = np.nonzero(rest[:, 1] > hole.centre[1] + 1.5 * w)[0]
             skull = skull if len(skull) >= 3 else None
