@@ -23,8 +23,8 @@ class MeshAnimation:
     markers ``bound_markers`` at vertices ``vertex_of`` ((K,) int); fit_rms : residual of the
     marker-to-mesh similarity fit, mesh units; gaze : optional (T, 2, 2) float32 radians, per
     frame (yaw, pitch) of the eye at +x (the subject's left) and of the eye at -x, yaw turning
-    the gaze toward +x and pitch up; None when the driving motion carries no gaze (the
-    renderer's eyes then look straight ahead)."""
+    the gaze toward +x and pitch up; NaN (or None) where the gaze is not known, e.g. from
+    marker motion, and the renderer's eyes then look straight ahead."""
 
     vertices: np.ndarray
     fps: float

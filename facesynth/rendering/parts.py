@@ -371,7 +371,8 @@ class FaceScene:
         """Every vertex (N, 3) float64 for one frame of the skin (V, 3), mesh units.
 
         gaze : optional (2, 2) radians, (yaw, pitch) of the eye at +x (subject's left) and of
-        the eye at -x; yaw turns the gaze toward +x, pitch up. None looks straight ahead."""
+        the eye at -x; yaw turns the gaze toward +x, pitch up. None (or NaN for an eye) looks
+        straight ahead."""
         skin = np.asarray(skin, np.float64)
         out = np.empty((self.n_vertices, 3))
         out[: self.n_skin] = skin

@@ -161,7 +161,10 @@ def run(motion_path: Path, mesh: Path, binding_path: Path, out: Path, settings: 
     names = motion.marker_names
     bound = bind(vertices, faces, binding, names, settings, str(mesh), str(binding_path))
     frames, fit = animate(bound, motion.markers, names, motion.reference, head)
+    # Markers do not record where the eyes look: the gaze track says so (NaN), and the renderer's
+    # eyes then look ahead rather than follow an invented gaze.
+    gaze = np.full((len(frames), 2, 2), np.nan, np.float32)
     MeshAnimation(frames, motion.fps, vertices, faces, motion.markers, names, bound.weights, bound.markers,
-                  bound.vertex_of, fit["fit_rms"]).write(
+                  bound.vertex_of, fit["fit_rms"], gaze).write(
         out, config=settings_json(settings), inputs=[motion_path, mesh, binding_path], overwrite=overwrite)
     return {"frames": len(frames), "vertices": len(vertices), "unreached": bound.unreached, **fit}

@@ -8,7 +8,8 @@ left half is labelled "synthesis", the right half, ``--compare``, "capture").
 The camera orbits the rest mesh (+y up, looking toward +z) by ``render.yaw_deg`` and
 ``render.pitch_deg`` (a three-quarter view by default), fitted once so the view is steady:
 on a face (eyes and mouth found) it frames brow to chin, otherwise the whole mesh.
-The eyes follow the animation's gaze track when it has one and look ahead otherwise.
+The eyes follow the animation's gaze track where it is known and look ahead elsewhere (marker
+motion does not record gaze, so ``deform`` leaves it unknown).
 Several animations render one after another into one video, each with its own audio;
 every clip's audio is cut or padded to its frame count, so the first frame is at audio
 time 0 and picture and sound end together.

@@ -244,3 +244,13 @@ def test_side_by_side_halves_are_labelled(anim):
     assert np.abs(left - right).max() > 100  # "synthesis" is not "capture"
     # the faces themselves are untouched away from the labels: both halves show the same mesh
     assert np.array_equal(frame[120:, :half], frame[120:, half:])
+
+
+def test_gaze_track_round_trips_and_marker_motion_leaves_it_unknown(anim, tmp_path):
+    clip = MeshAnimation.read(anim[0])
+    assert clip.gaze.shape == (len(clip.vertices), 2, 2) and np.isnan(clip.gaze).all()  # markers do not see the eyes
+    clip.gaze = np.zeros_like(clip.gaze)
+    clip.gaze[:, :, 0] = 0.2
+    clip.weights, clip.bound_markers, clip.vertex_of = deform.sparse.csr_matrix((clip.vertices.shape[1], 1)), ["x"], np.array([0])
+    clip.write(tmp_path / "g.h5", config="{}", inputs=[])
+    assert np.array_equal(MeshAnimation.read(tmp_path / "g.h5").gaze, clip.gaze)
