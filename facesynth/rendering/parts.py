@@ -305,14 +305,14 @@ def _teeth(width: float, upper: bool) -> _Part:
     strip([(top, 0.0), (root, 0.0), (edge, 0.0)], [gum, tooth, tooth])          # front
     strip([(edge, 0.0), (edge, -thick)], [tooth, tooth])                         # biting edge
     strip([(edge, -thick), (top, -thick)], [tooth * 0.8, gum])                   # back
-    v, f, c = np.concatenate(parts_v), np.concatenate(parts_f), np.concatenate(parts_c)
-    # Each strip must face away from the arch's inside (behind the teeth, toward the tongue).
+    v, c = np.concatenate(parts_v), np.concatenate(parts_c)
+    # Each strip faces out of the tooth: the front forward, the biting edge toward the other
+    # jaw, the back toward the tongue.
     faces = []
-    for i, (fs, sign) in enumerate(zip(parts_f, (1.0, 1.0, 1.0))):
+    for fs, want in zip(parts_f, ([0.0, 0.0, 1.0], [0.0, -1.0 if upper else 1.0, 0.0], [0.0, 0.0, -1.0])):
         tri = v[fs]
         n = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
-        want = [np.array([0.0, 0.0, 1.0]), np.array([0.0, -1.0 if upper else 1.0, 0.0]), np.array([0.0, 0.0, -1.0])][i]
-        faces.append(fs if np.sum(n @ want) * sign >= 0 else fs[:, ::-1])
+        faces.append(fs if np.sum(n @ np.asarray(want)) >= 0 else fs[:, ::-1])
     return _Part(v, np.concatenate(faces), c, SPECULAR["teeth"])
 
 

@@ -237,9 +237,11 @@ class NumpyRasterizer:
 class OpenCLRasterizer:
     """Rasterizer on the chosen OpenCL device (``kernels/raster.cl``); one instance per scene
     and size. Uses the one-pass 64-bit-atomic z-buffer where the device has
-    ``cl_khr_int64_extended_atomics``, else two 32-bit passes (same result)."""
+    ``cl_khr_int64_extended_atomics`` (unless ``wide_atomics`` is False), else two 32-bit
+    passes (the same result)."""
 
-    def __init__(self, faces: np.ndarray, albedo: np.ndarray, eye: np.ndarray, width: int, height: int, samples: int = 2):
+    def __init__(self, faces: np.ndarray, albedo: np.ndarray, eye: np.ndarray, width: int, height: int, samples: int = 2,
+                 wide_atomics: bool | None = None):
         import pyopencl as cl
 
         from ..opencl import context, kernel, queue
@@ -247,7 +249,8 @@ class OpenCLRasterizer:
         self.ctx, self.q = context(), queue()
         self.width, self.height, self.samples = width, height, samples
         self.n_faces = len(faces)
-        self.wide = all("cl_khr_int64_extended_atomics" in d.extensions for d in self.ctx.devices)
+        has_wide = all("cl_khr_int64_extended_atomics" in d.extensions for d in self.ctx.devices)
+        self.wide = has_wide if wide_atomics is None else bool(wide_atomics) and has_wide
         names = ("raster_keys", "resolve_keys") if self.wide else ("raster_depth", "raster_ids", "resolve_ids")
         self.kernels = {k: kernel("raster", k, SAMPLES=samples) for k in names}
         mf = cl.mem_flags

@@ -1,11 +1,10 @@
 import numpy as np
 import pytest
 
-from facesynth.config import Config
 from facesynth.corpus.face import P, PARAMS, Rig as FaceRig, build_face_model
 from facesynth.errors import InputError
 from facesynth.facerig import load_face_rig
-from facesynth.rendering.parts import lip_halves, classify_holes
+from facesynth.rendering.parts import classify_holes, lip_halves
 from facesynth.stages.deform import animate, bind, mesh_distances, similarity_fit
 
 
