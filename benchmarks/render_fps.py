@@ -10,7 +10,7 @@ gaze sweep, 30 fps. Two figures per rasterizer:
 * ``stage_fps`` (OpenCL only, and NumPy with ``--stage-numpy``): the whole ``render`` stage
   per frame of video, reading the artifact, drawing, MJPEG encoding and muxing the audio.
 
-``realtime`` is fps / 30: above 1 is faster than real time. Wall-clock figures depend on what
+``realtime`` is stage (else draw) fps / 30: above 1 is faster than real time. Wall-clock figures depend on what
 else the machine runs (``load_average_1min`` is recorded), so the CPU time per frame is given
 too, and ``draw_fps_if_cpus_idle``: the frames per second that CPU time allows with every core
 free (the OpenCL path uses all cores, the NumPy path one).
@@ -24,6 +24,7 @@ import argparse
 import json
 import os
 import platform
+import resource
 import tempfile
 import time
 from pathlib import Path
@@ -72,13 +73,18 @@ def draw_fps(clip: MeshAnimation, settings, frames: int) -> tuple[float, float]:
     return frames / (time.perf_counter() - started), (time.process_time() - cpu) / frames * 1e3
 
 
-def stage_fps(clip: MeshAnimation, settings, work: Path) -> float:
-    """The render stage's own frames per second (its ``frames_per_s``) for the clip on disk."""
+def stage_fps(clip: MeshAnimation, settings, work: Path) -> tuple[float, float]:
+    """The render stage's own frames per second (its ``frames_per_s``) for the clip on disk, and
+    its CPU time per frame, ms: this process's threads and the ffmpeg encoder it waits for."""
     anim, wav, avi = work / "bench.anim.h5", work / "bench.wav", work / "bench.avi"
     if not anim.exists():
         clip.write(anim, config="{}", inputs=[], overwrite=True)
         write_wav(wav, np.zeros(int(len(clip.vertices) / FPS * 48000)), 48000)
-    return render.run([anim], [wav], avi, settings, overwrite=True)["frames_per_s"]
+    cpu, children = time.process_time(), resource.getrusage(resource.RUSAGE_CHILDREN)
+    fps = render.run([anim], [wav], avi, settings, overwrite=True)["frames_per_s"]
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    used = time.process_time() - cpu + (after.ru_utime - children.ru_utime) + (after.ru_stime - children.ru_stime)
+    return fps, used / len(clip.vertices) * 1e3
 
 
 def main() -> None:
@@ -105,7 +111,9 @@ def main() -> None:
                      "draw_fps_if_cpus_idle": round(1e3 * (os.cpu_count() or 1) / cpu_ms, 1) if name == "opencl"
                      else round(1e3 / cpu_ms, 2)}
             if name == "opencl" or args.stage_numpy:
-                entry["stage_fps"] = round(stage_fps(clip, settings, Path(tmp)), 2)
+                fps, cpu_ms = stage_fps(clip, settings, Path(tmp))
+                entry.update(stage_fps=round(fps, 2), stage_cpu_ms_per_frame=round(cpu_ms, 2),
+                             stage_fps_if_cpus_idle=round(1e3 * (os.cpu_count() or 1) / cpu_ms, 1))
             entry["realtime"] = round(entry.get("stage_fps", entry["draw_fps"]) / FPS, 2)
             result[name] = entry
     result["load_average_1min"] = round(os.getloadavg()[0], 2)  # other work on the machine meanwhile
