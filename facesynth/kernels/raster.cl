@@ -63,6 +63,18 @@ inline int4 bbox(__global const float4 *screen, __global const int *faces, const
 #ifdef cl_khr_int64_extended_atomics
 #pragma OPENCL EXTENSION cl_khr_int64_extended_atomics : enable
 
+// Narrow [lo, hi] (sample indices) to where edge a->b can pass its test on the row at py:
+// edge_fn(a, b, p) * sg >= 0 is linear in p.x, so it holds on one side of a crossing point.
+inline void span(const float2 a, const float2 b, const float py, const float sg, float *lo, float *hi)
+{
+    const float dy = b.y - a.y;
+    if (dy == 0.0f) return;                          // the test does not depend on x: keep the row
+    const float cross = a.x + (b.x - a.x) * (py - a.y) / dy;   // edge_fn = 0 at p.x = cross
+    const float sample = cross - 0.5f;                         // as a sample index
+    if (dy * sg > 0.0f) { if (sample + 1.0f < *hi) *hi = sample + 1.0f; }   // passes for p.x <= cross
+    else                { if (sample - 1.0f > *lo) *lo = sample - 1.0f; }   // passes for p.x >= cross
+}
+
 // cover() with the corners in registers (the atomics would otherwise make the compiler reload
 // them for every sample): the same operations in the same order, so the same result.
 __kernel void raster_keys(__global const float4 *screen, __global const int *faces, const int n_faces,
@@ -78,7 +90,14 @@ __kernel void raster_keys(__global const float4 *screen, __global const int *fac
     const ulong id = (ulong)(uint)f;
     for (int y = box.y; y <= box.w; ++y) {
         const float py = y + 0.5f;
-        for (int x = box.x; x <= box.z; ++x) {
+        // The row's span where all three edge tests can pass, widened by a sample on each side
+        // against rounding; the exact tests below decide, so the result is that of cover().
+        float lo = (float)box.x, hi = (float)box.z;
+        span(a.xy, b.xy, py, sg, &lo, &hi);
+        span(b.xy, c.xy, py, sg, &lo, &hi);
+        span(c.xy, a.xy, py, sg, &lo, &hi);
+        const int xs = lo > (float)box.x ? (int)lo : box.x, xe = hi < (float)box.z ? (int)hi : box.z;
+        for (int x = xs; x <= xe; ++x) {
             const float2 p = (float2)(x + 0.5f, py);
             const float e0 = edge_fn(b.xy, c.xy, p), e1 = edge_fn(c.xy, a.xy, p), e2 = edge_fn(a.xy, b.xy, p);
             // sign tests of cover(): e * sg >= 0 is e >= 0 for area > 0 and e <= 0 otherwise
