@@ -38,6 +38,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 from scipy import sparse
+from scipy.spatial import cKDTree
 
 #: ``eye`` attribute of every vertex that is not on an eyeball.
 NO_EYE = -2.0
@@ -556,10 +557,9 @@ def build_scene(rest: np.ndarray, faces: np.ndarray) -> FaceScene:
                  "tongue": (add(tongue), tongue.vertices)}
         # Lips a little redder than the skin: within about 4 % of the mouth's width of the
         # inner lip line, fading out over the next 5 %.
-        d = np.min(np.linalg.norm(rest[:, None, :] - rest[hole.loop][None], axis=2), axis=1) if n_skin * n_loop < 5e7 else None
-        if d is not None:
-            t = np.clip(1.0 - (d - 0.10 * w) / (0.08 * w), 0.0, 1.0)[:, None]
-            colour[:n_skin] = colour[:n_skin] * (1 - t) + np.asarray(LIPS) * t
+        d = cKDTree(rest[hole.loop]).query(rest)[0]
+        t = np.clip(1.0 - (d - 0.10 * w) / (0.08 * w), 0.0, 1.0)[:, None]
+        colour[:n_skin] = colour[:n_skin] * (1 - t) + np.asarray(LIPS) * t
     all_v = np.concatenate(verts)
     all_f = np.concatenate(all_faces)
     albedo = np.concatenate([_linear(colour), spec[:, None]], 1).astype(np.float32)

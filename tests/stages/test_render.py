@@ -268,3 +268,24 @@ def test_gaze_track_round_trips_and_marker_motion_leaves_it_unknown(anim, tmp_pa
     clip.weights, clip.bound_markers, clip.vertex_of = sparse.csr_matrix((clip.vertices.shape[1], 1)), ["x"], np.array([0])
     clip.write(tmp_path / "g.h5", config="{}", inputs=[])
     assert np.array_equal(MeshAnimation.read(tmp_path / "g.h5").gaze, clip.gaze)
+
+
+def test_the_command_says_with_v_which_parts_a_plain_mesh_lacks(tmp_path):
+    import trimesh
+    from click.testing import CliRunner
+
+    from facesynth.cli import main
+    from facesynth.formats.audio import write_wav
+
+    sphere = trimesh.creation.icosphere(subdivisions=2, radius=50.0)
+    verts = np.asarray(sphere.vertices, np.float32)
+    frames = np.stack([verts, verts * 1.05])
+    clip = MeshAnimation(frames, 30.0, verts, np.asarray(sphere.faces), np.zeros((2, 1, 3), np.float32), ["m"],
+                         sparse.csr_matrix((len(verts), 1), dtype=np.float32), ["m"], np.array([0]))
+    clip.write(tmp_path / "a.h5", config="{}", inputs=[])
+    write_wav(tmp_path / "a.wav", np.zeros(3200), 48000)
+    result = CliRunner().invoke(main, ["render", str(tmp_path / "a.h5"), "--audio", str(tmp_path / "a.wav"), "-v",
+                                       "--set", "render.width=160", "--set", "render.height=128", "-o", str(tmp_path / "a.avi")])
+    assert result.exit_code == 0, result.output
+    assert "no pair of eye holes found" in result.output and "no mouth hole found" in result.output
+    assert (tmp_path / "a.avi").exists()
