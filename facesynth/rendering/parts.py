@@ -285,7 +285,7 @@ def _teeth(width: float, upper: bool) -> _Part:
     order = np.argsort(xs, kind="stable")
     xs, dark = xs[order], dark[order]
     depth = 0.30 * width * (xs / half) ** 2                                  # the arch curves back
-    front = (-0.11 if upper else -0.17) * width
+    front = (-0.11 if upper else -0.22) * width
     thick = 0.11 * width
     top, edge = (0.28 * width, -0.02 * width) if upper else (-0.30 * width, -0.07 * width)
     root = edge + 0.72 * (top - edge)
@@ -320,8 +320,8 @@ def _teeth(width: float, upper: bool) -> _Part:
 def _tongue(width: float, segments: int = 20, rings: int = 8) -> _Part:
     """The top half of a flattened ellipsoid lying on the mouth's floor behind the lower teeth,
     in the mouth's local frame (as :func:`_teeth`)."""
-    centre = np.array([0.0, -0.17 * width, -0.50 * width])
-    radii = np.array([0.30, 0.09, 0.36]) * width
+    centre = np.array([0.0, -0.17 * width, -0.64 * width])
+    radii = np.array([0.28, 0.09, 0.34]) * width
     theta = np.linspace(0.0, np.pi / 2, rings + 1)[1:]                      # from +y down to the rim
     phi = np.arange(segments) * 2 * np.pi / segments
     unit = np.stack([np.sin(theta)[:, None] * np.cos(phi), np.cos(theta)[:, None] * np.ones_like(phi),
