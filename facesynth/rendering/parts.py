@@ -506,8 +506,10 @@ def build_scene(rest: np.ndarray, faces: np.ndarray) -> FaceScene:
         for hole in layout.eyes:
             radius = 0.5 * hole.width
             centre = eyeball_centre(rest[hole.loop], hole, radius)
+            # The lids shade the ball: the sclera greys away from the cornea.
+            shade = 0.7 + 0.3 * np.clip(cosine / COS_IRIS, 0.0, 1.0)
             part = _Part(np.asarray(centre + radius * unit @ basis.T), sphere_faces,
-                         np.tile(SCLERA, (len(unit), 1)), SPECULAR["eye"], cosine)
+                         np.asarray(SCLERA)[None] * shade[:, None], SPECULAR["eye"], cosine)
             eyes.append((centre, radius, basis, unit, add(part)))
     mouth = None
     if layout.mouth is not None:
