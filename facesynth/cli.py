@@ -508,6 +508,8 @@ def render(ctx: Context, anims, audios, view, compare, output: Path):
     if view:
         settings = dataclasses.replace(settings, view=view)
     s = stage.run(list(anims), list(audios), output, settings, compare, ctx.overwrite)
+    for note in s["notes"]:  # a mesh without eye or mouth holes: expected for plain meshes, so only with -v
+        ctx.detail(f"render: {note}.")
     ctx.say(f"rendered {s['frames']} frames ({s['seconds']:.2f} s of video, {s['frames_per_s']:.1f} frames/s) -> {output}")
 
 

@@ -204,13 +204,20 @@ class DeformSettings:
 
 @dataclass(frozen=True)
 class RenderSettings:
-    """``[render]``: video size (px), frame rate, view, field of view (degrees), compute device."""
+    """``[render]``: video size (px), frame rate, view, camera (field of view, yaw, pitch; degrees),
+    anti-aliasing, compute device."""
 
     width: int = setting("not in the paper: video size", unit="px", ge=16)
     height: int = setting("not in the paper: video size", unit="px", ge=16)
     fps: float = setting("paper VII-B (30 frames/s)", unit="frames/s", gt=0, le=1000)
     view: str = setting("not in the paper: what is drawn", choices=("shaded", "markers", "side-by-side"))
     fov_deg: float = setting("not in the paper: vertical field of view", unit="degrees", gt=0, lt=180)
+    yaw_deg: float = setting("not in the paper: camera turned toward the subject's left (+x); 0 is frontal",
+                             unit="degrees", ge=-90, le=90)
+    pitch_deg: float = setting("not in the paper: camera raised above the face (negative: below)",
+                               unit="degrees", ge=-60, le=60)
+    supersample: int = setting("not in the paper: anti-aliasing, samples per pixel along each axis (1: none)",
+                               ge=1, le=4)
     use_opencl: bool = setting("not in the paper: rasterize on OpenCL (NumPy without a device that builds)")
 
 

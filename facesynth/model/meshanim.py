@@ -21,7 +21,10 @@ class MeshAnimation:
     faces : (F, 3) int (triangles); markers : (T, M, 3) float32 mm, the motion that drove it;
     marker_names : M names; weights : (V, K) sparse Gaussian weights of Eq. 14-15 over the K bound
     markers ``bound_markers`` at vertices ``vertex_of`` ((K,) int); fit_rms : residual of the
-    marker-to-mesh similarity fit, mesh units."""
+    marker-to-mesh similarity fit, mesh units; gaze : optional (T, 2, 2) float32 radians, per
+    frame (yaw, pitch) of the eye at +x (the subject's left) and of the eye at -x, yaw turning
+    the gaze toward +x and pitch up; NaN (or None) where the gaze is not known, e.g. from
+    marker motion, and the renderer's eyes then look straight ahead."""
 
     vertices: np.ndarray
     fps: float
@@ -33,16 +36,18 @@ class MeshAnimation:
     bound_markers: list[str] | None = None
     vertex_of: np.ndarray | None = None
     fit_rms: float = float("nan")
+    gaze: np.ndarray | None = None
 
     KIND = "meshanim"
 
     @classmethod
     def read(cls, path: Path) -> "MeshAnimation":
-        """Vertices, faces and markers (the weights are not read)."""
+        """Vertices, faces, markers and the gaze track if any (the weights are not read)."""
         with open_artifact(path, cls.KIND) as f:
             return cls(read(f, "vertices"), float(attr(f["vertices"], "fps")), read(f, "rest"),
                        read(f, "faces").astype(np.int64), read(f, "markers"), read_strings(f, "marker_names"),
-                       fit_rms=float(f.attrs.get("fit_rms", np.nan)))
+                       fit_rms=float(f.attrs.get("fit_rms", np.nan)),
+                       gaze=read(f, "gaze") if "gaze" in f else None)
 
     def write(self, out: Path, *, config: str, inputs, overwrite: bool = False) -> None:
         """Write a ``meshanim`` artifact (with its deformation weights) to ``out``."""
@@ -62,3 +67,6 @@ class MeshAnimation:
             m.attrs.update(fps=self.fps, units="mm")
             write_strings(g, "marker_names", self.marker_names)
             g.attrs["fit_rms"] = self.fit_rms
+            if self.gaze is not None:
+                gz = g.create_dataset("gaze", data=np.asarray(self.gaze, np.float32))
+                gz.attrs.update(fps=self.fps, units="radians")

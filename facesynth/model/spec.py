@@ -428,6 +428,11 @@ MESHANIM = Kind("meshanim", SCHEMAS["meshanim"], (
     ), attrs=(Attr("shape", "ints", "the matrix's shape (V, B)", shape=("V", "B")),)),
     Dataset("markers", "float32", ("Fo", "M", 3), "the driving marker motion", "mm", (MM, _fps()), finite=False),
     Dataset("marker_names", "str", ("M",), "marker order"),
+    Dataset("gaze", "float32", ("Fo", 2, 2),
+            "per frame (yaw, pitch) of the eye at +x (the subject's left), then of the eye at -x; yaw turns the "
+            "gaze toward +x, pitch up; NaN where the gaze is not known (markers do not record it), and then the "
+            "rendered eyes look ahead",
+            "radians", (_units("radians"), _fps()), finite=False, required=False),
 ), attrs=(Attr("fit_rms", "float", "residual of the marker-to-mesh similarity fit, mesh units"),))
 
 #: Every kind's specification at its current schema.
