@@ -233,6 +233,12 @@ def sample_corpus_cmd(ctx: Context, out_dir: Path, preset: str, seed: int):
 def align(ctx: Context, audio: Path, text: str | None, transcript: Path | None, dict_path: Path | None, output: Path):
     """Forced-align speech to its text; writes a phone TextGrid in the Festival phone set.
 
+    pocketsphinx first; when it fails or places fewer words, a wider beam, then chunks cut at
+    silences, then typical phone durations over the voiced span (align.methods; the one used
+    is printed). Speech aligned as pause for longer than align.max_voiced_pause_s is warned
+    about: the text may lack words. Non-speech marked in the text ([breath], [laugh],
+    <noise>) is aligned as pause.
+
     \b
     Example:
       facesynth align corpus/audio/neutral_s000.wav --text "beautiful he men from began pretty strong" \\
@@ -244,7 +250,11 @@ def align(ctx: Context, audio: Path, text: str | None, transcript: Path | None, 
         raise UsageError("give exactly one of --text or --transcript.")
     summary = stage_align.run(audio, text if transcript is None else stage_align.read_transcript(transcript), output,
                               ctx.config.settings("align"), dict_path, ctx.overwrite)
-    ctx.say(f"aligned {summary['phones']} phones over {summary['seconds']:.2f} s -> {output}")
+    for reason in summary["attempts"]:
+        ctx.detail(f"not used: {reason}")
+    for warning in summary["warnings"]:
+        ctx.say(f"warning: {warning}")
+    ctx.say(f"aligned {summary['phones']} phones over {summary['seconds']:.2f} s ({summary['method']}) -> {output}")
 
 
 @main.command()

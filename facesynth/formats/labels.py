@@ -1,11 +1,13 @@
 """Time-aligned labels: Praat TextGrid (long and short text formats) and .lab files.
 
-``.lab`` covers HTK (``start end label`` in 100 ns units) and Festival/xwaves
+``.lab`` covers HTK (``start end label`` in 100 ns units, or the same three fields in seconds:
+told apart from the values by :func:`lab_time_unit`, which is logged) and Festival/xwaves
 (a header ending in ``#``, then ``end_time colour label`` in seconds).
 """
 
 from __future__ import annotations
 
+import logging
 import re
 from dataclasses import dataclass
 from pathlib import Path
@@ -15,6 +17,7 @@ from ..errors import InputError
 
 _TOKEN = re.compile(r'"((?:[^"]|"")*)"|(<exists>)|([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)')
 _EPS = 1e-6
+log = logging.getLogger(__name__)
 
 
 @dataclass(frozen=True)
@@ -114,16 +117,33 @@ def read_lab(path: Path) -> list[Segment]:
                 end = float(parts[0])
                 segs.append(Segment(prev, end, parts[-1] if len(parts) >= 3 else ""))
                 prev = end
-        else:  # HTK: "start end label" in units of 100 ns
+        else:  # HTK: "start end label" in units of 100 ns, or the same in seconds
+            rows = []
             for number, line in enumerate(lines, 1):
                 if not line or line == ".":
                     continue
                 parts = line.split()
-                segs.append(Segment(int(parts[0]) * 1e-7, int(parts[1]) * 1e-7, parts[2] if len(parts) > 2 else ""))
+                rows.append((float(parts[0]), float(parts[1]), parts[2] if len(parts) > 2 else "", parts[:2]))
+            scale, unit = lab_time_unit([r[3] for r in rows])
+            log.info("%s: .lab times read as %s", path, unit)
+            segs = [Segment(a * scale, b * scale, label) for a, b, label, _ in rows]
     except (ValueError, IndexError):
         raise InputError(f"{path}, line {number}: malformed .lab line {lines[number - 1]!r}; expected HTK "
-                         "'start end label' (100 ns units) or Festival 'end colour label' after a '#' line.") from None
+                         "'start end label' (100 ns units or seconds) or Festival 'end colour label' after a '#' line.") from None
     return segs
+
+
+def lab_time_unit(times: Sequence[Sequence[str]]) -> tuple[float, str]:
+    """The unit of the ``start end`` fields of a ``.lab`` file, from their text: (seconds per
+    unit, a phrase naming it). HTK writes integers in 100 ns units, so an end time is at least
+    10,000 (1 ms) in any real file; seconds are written with a decimal point or are small
+    integers. Any field with a decimal point or exponent, or a largest value below 10,000
+    (2.8 hours if it were seconds), means seconds."""
+    fields = [t for row in times for t in row]
+    integers = all(re.fullmatch(r"[-+]?\d+", t) for t in fields)
+    if integers and fields and max(float(t) for t in fields) >= 1e4:
+        return 1e-7, "HTK 100 ns units (integers of 10,000 and more)"
+    return 1.0, "seconds (" + ("values with a decimal point" if not integers else "small integers") + ")"
 
 
 def write_lab(path: Path, segs: Sequence[Segment]) -> None:
