@@ -109,10 +109,11 @@ MFA_TRANSCRIPTS = {
     "mfa_thoughts": "i have a thousand thoughts about that thing",
 }
 
-#: Words of the transcripts above that neither the CMU dictionary nor pocketsphinx's has: the
-#: pronunciations a user would pass with ``--dict``.
-MFA_EXTRA = {"pooty": [("P", "UW1", "T", "IY0")], "poofy": [("P", "UW1", "F", "IY0")],
-             "puddy": [("P", "AH1", "D", "IY0")], "er": [("ER0",)], "gonna": [("G", "AA1", "N", "AH0")]}
+#: The pronunciations a user would pass with ``--dict``: words of the transcripts above that
+#: pocketsphinx's dictionary lacks, and two it has (``er``, ``gonna``: the user's are added beside).
+MFA_EXTRA = {"aligner": [("AH0", "L", "AY1", "N", "ER0")], "pooty": [("P", "UW1", "T", "IY0")],
+             "poofy": [("P", "UW1", "F", "IY0")], "puddy": [("P", "AH1", "D", "IY0")],
+             "er": [("ER0",)], "gonna": [("G", "AA1", "N", "AH0")]}
 
 
 def fetch(package: str, cache: Path) -> Path:
