@@ -490,8 +490,8 @@ def batch(ctx: Context, script: Path, db_path: Path, output: Path, outputs: str 
 
     \b
     Example:
-      printf 'id,audio,text,emotion\nl1,corpus/audio/neutral_s000.wav,%s,happy\n' \\
-          "beautiful he men from began pretty strong" > script.csv
+      echo id,audio,text,emotion > script.csv
+      echo l1,corpus/audio/neutral_s000.wav,beautiful he men from began pretty strong,happy >> script.csv
       facesynth batch script.csv --db db.h5 -o lines/ --workers 1
     """
     import dataclasses

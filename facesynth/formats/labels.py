@@ -124,9 +124,9 @@ def read_lab(path: Path) -> list[Segment]:
                     continue
                 parts = line.split()
                 rows.append((float(parts[0]), float(parts[1]), parts[2] if len(parts) > 2 else "", parts[:2]))
-            scale, unit = lab_time_unit([r[3] for r in rows])
+            per_s, unit = lab_time_unit([r[3] for r in rows])
             log.info("%s: .lab times read as %s", path, unit)
-            segs = [Segment(a * scale, b * scale, label) for a, b, label, _ in rows]
+            segs = [Segment(a / per_s, b / per_s, label) for a, b, label, _ in rows]
     except (ValueError, IndexError):
         raise InputError(f"{path}, line {number}: malformed .lab line {lines[number - 1]!r}; expected HTK "
                          "'start end label' (100 ns units or seconds) or Festival 'end colour label' after a '#' line.") from None
@@ -134,15 +134,15 @@ def read_lab(path: Path) -> list[Segment]:
 
 
 def lab_time_unit(times: Sequence[Sequence[str]]) -> tuple[float, str]:
-    """The unit of the ``start end`` fields of a ``.lab`` file, from their text: (seconds per
-    unit, a phrase naming it). HTK writes integers in 100 ns units, so an end time is at least
+    """The unit of the ``start end`` fields of a ``.lab`` file, from their text: (units per
+    second, a phrase naming it). HTK writes integers in 100 ns units, so an end time is at least
     10,000 (1 ms) in any real file; seconds are written with a decimal point or are small
     integers. Any field with a decimal point or exponent, or a largest value below 10,000
     (2.8 hours if it were seconds), means seconds."""
     fields = [t for row in times for t in row]
     integers = all(re.fullmatch(r"[-+]?\d+", t) for t in fields)
     if integers and fields and max(float(t) for t in fields) >= 1e4:
-        return 1e-7, "HTK 100 ns units (integers of 10,000 and more)"
+        return 1e7, "HTK 100 ns units (integers of 10,000 and more)"
     return 1.0, "seconds (" + ("values with a decimal point" if not integers else "small integers") + ")"
 
 
