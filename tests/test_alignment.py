@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from facesynth.alignment import (AlignmentFailed, align_robust, longest_voiced_pause, non_speech_marks,
-                                 normalize_text, voice_activity)
+                                 normalize_text, voice_activity, voicing)
 from facesynth.errors import InputError
 from facesynth.formats.audio import read_audio
 from facesynth.formats.labels import Segment
@@ -73,7 +73,7 @@ def test_audio_too_short_for_its_text_is_refused(take, config):
 def test_no_words_and_unknown_words_are_input_errors(take, config):
     samples, rate, _ = take
     with pytest.raises(InputError, match="has no words"):
-        align_robust(samples, rate, "[breath] <noise>", settings=config.settings("align"))
+        align_robust(samples, rate, " ,. ", settings=config.settings("align"))
     with pytest.raises(InputError, match="no pronunciation for 'zorblat'"):
         align_robust(samples, rate, "zorblat", settings=config.settings("align"))
 
@@ -100,3 +100,19 @@ def test_voice_activity_and_the_longest_voiced_pause(config):
     phones = [Segment(0, 0.7, "pau"), Segment(0.7, 1.0, "aa"), Segment(1.0, 2.0, "pau")]
     length, at = longest_voiced_pause(phones, active, hop)
     assert length == pytest.approx(0.2, abs=0.02) and at == pytest.approx(0.5, abs=0.02)
+
+
+def test_a_text_of_non_speech_only_is_one_pause(take, config):
+    samples, rate, _ = take
+    result = align_robust(samples, rate, "[laugh] <breath>", settings=config.settings("align"))
+    assert result.method == "non-speech" and [p.label for p in result.phones] == ["pau"] and not result.words
+
+
+def test_voicing_tells_a_vowel_from_noise(config):
+    settings = config.settings("align")
+    rate = settings.sample_rate
+    t = np.arange(rate // 2) / rate
+    vowel = 0.3 * np.sign(np.sin(2 * np.pi * 150 * t))  # a buzz at 150 Hz
+    noise = 0.3 * np.random.default_rng(0).standard_normal(rate // 2)
+    voiced = voicing(np.concatenate([vowel, noise]).astype(np.float32), settings)
+    assert voiced[5:45].mean() > 0.9 and voiced[55:95].mean() < 0.1
