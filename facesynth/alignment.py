@@ -18,7 +18,12 @@ unstressed AH into the schwa ``ax``; silences become ``pau``.
   audio with typical phone durations, scaled to fill it (falsetto or whispered speech that
   the acoustic model cannot follow at all).
 
-The first that places every word is kept and named in the result. A transcript that does
+The first that places every word is kept and named in the result. The duration model places
+any text, so every result is also checked against the text's typical duration: speech more
+than ``align.max_rate_ratio`` times longer or shorter is warned about. When pocketsphinx places
+the first words and cannot go on (the rest of a line whispered, or trailing off), the rest
+get typical durations over the voice after them, and the method is named
+``pocketsphinx+durations`` (or ``wide-beam+durations``). A transcript that does
 not match the speech shows as long stretches of voice activity labelled ``pau``; the
 longest is measured and reported as a warning above ``align.max_voiced_pause_s``.
 Non-speech marked in the transcript (``[breath]``, ``[laugh]``, ``<noise>``, ``{cough}``)
@@ -186,10 +191,12 @@ def align_robust(samples: np.ndarray, rate: int, text: str, *, settings: AlignSe
     attempts: list[str] = []
     for method in settings.methods:
         try:
+            filled = 0
             if method == "pocketsphinx":
-                phones, word_segs = _pocketsphinx(audio, words, settings, extra, None)
+                phones, word_segs, filled = _pocketsphinx(audio, words, settings, extra, None, prons, active)
             elif method == "wide-beam":
-                phones, word_segs = _pocketsphinx(audio, words, settings, extra, settings.wide_beam)
+                phones, word_segs, filled = _pocketsphinx(audio, words, settings, extra, settings.wide_beam, prons,
+                                                          active)
             elif method == "chunks":
                 phones, word_segs = _chunks(audio, words, active, settings, extra, prons)
             else:
@@ -200,7 +207,15 @@ def align_robust(samples: np.ndarray, rate: int, text: str, *, settings: AlignSe
         phones = _tile(phones, duration)
         # each non-speech mark of the text explains one voiced pause (a laugh is voiced)
         longest, at = longest_voiced_pause(phones, active & voiced, hop, skip=len(marks))
-        result = Alignment(phones, word_segs, method, attempts, longest, at)
+        # words after the last one the search placed, given typical durations: named in the method
+        result = Alignment(phones, word_segs, f"{method}+durations" if filled else method, attempts, longest, at)
+        expected = sum(_typical_duration(p) for w in words for p in prons[w])
+        if not 1 / settings.max_rate_ratio <= voiced_s / expected <= settings.max_rate_ratio:
+            result.warnings.append(
+                f"{where}: the audio has {voiced_s:.2f} s of speech where its text's {n_phones} phones typically "
+                f"take {expected:.2f} s (more than align.max_rate_ratio = {settings.max_rate_ratio:g} times off); "
+                "the text may not be what is said."
+            )
         if longest > settings.max_voiced_pause_s:
             result.warnings.append(
                 f"{where}: {longest:.2f} s of speech at {at:.2f} s is aligned as pause "
@@ -305,13 +320,20 @@ def _pronunciation_table(words: list[str], extra: dict, decoder) -> dict[str, tu
 
 
 def _pocketsphinx(audio: np.ndarray, words: list[str], settings: AlignSettings, extra: dict, beam: float | None,
-                  retry_tail: bool = True) -> tuple[list[Segment], list[Segment]]:
+                  prons: dict | None = None, active: np.ndarray | None = None
+                  ) -> tuple[list[Segment], list[Segment], int]:
     """Forced alignment of ``audio`` (float32 at ``settings.sample_rate``) to ``words``; raises
     :class:`_MethodFailed` when pocketsphinx fails or places fewer words. When the words it
     placed are a prefix (the search stopped short, calling the last words silence), the rest
-    is aligned to the audio after them, and so on while each try places a word."""
+    is aligned to the audio after them, and so on while each try places a word; when a try
+    places none, and ``prons`` and ``active`` (the voice activity of ``audio``'s frames) are
+    given, the rest get typical durations over the voiced frames after the placed words. When
+    the words are placed but their phones cannot be ("Failed to set up sub-word alignment"),
+    each word's phones share its span by typical durations. Returns (phones, words, how many words got durations instead of an acoustic alignment)."""
     decoder = _decoder(settings, extra, beam)
     pcm = (np.clip(audio, -1, 1) * 32767).astype(np.int16).tobytes()
+    frame = 1.0 / settings.frame_rate
+    word_pass = None
     try:
         decoder.set_align_text(" ".join(words))
         for k in range(2):  # first pass: word alignment; second: phone alignment
@@ -319,13 +341,20 @@ def _pocketsphinx(audio: np.ndarray, words: list[str], settings: AlignSettings, 
             decoder.process_raw(pcm, full_utt=True)
             decoder.end_utt()
             if k == 0:
+                word_pass = [(seg.word, seg.start_frame, seg.end_frame + 1) for seg in decoder.seg() or ()]
                 decoder.set_alignment()
         alignment = decoder.get_alignment()
     except RuntimeError as exc:
-        raise _MethodFailed(str(exc)) from None
+        # "Failed to set up sub-word alignment": the words were placed, their phones were not
+        if not word_pass or prons is None:
+            raise _MethodFailed(str(exc)) from None
+        segments, word_segments = _phones_by_duration(word_pass, prons, frame)
+        placed = [w.label for w in word_segments]
+        if placed != words:
+            raise _MethodFailed(f"{exc}; placed {len(placed)} of {len(words)} words") from None
+        return segments, word_segments, len(words)
     if alignment is None:
         raise _MethodFailed("no path")
-    frame = 1.0 / settings.frame_rate
     stressed = pronunciations(words)
     segments: list[Segment] = []
     word_segments: list[Segment] = []
@@ -342,16 +371,41 @@ def _pocketsphinx(audio: np.ndarray, words: list[str], settings: AlignSettings, 
             segments.append(Segment(p.start * frame, (p.start + p.duration) * frame, to_festival(label) or PAU))
     placed = [w.label for w in word_segments]
     if placed == words:
-        return segments, word_segments
+        return segments, word_segments, 0
     rest = words[len(placed):]
-    if placed and placed == words[: len(placed)] and retry_tail:
+    if placed and placed == words[: len(placed)]:
         cut = word_segments[-1].end
-        tail, tail_words = _pocketsphinx(audio[int(round(cut * settings.sample_rate)):], rest, settings, extra, beam,
-                                         retry_tail=True)
+        piece = audio[int(round(cut * settings.sample_rate)):]
+        rest_active = active[int(round(cut / frame)):] if active is not None else None
+        try:
+            tail, tail_words, filled = _pocketsphinx(piece, rest, settings, extra, beam, prons, rest_active)
+        except _MethodFailed:
+            if prons is None or rest_active is None:
+                raise
+            tail, tail_words = _duration_model(rest, prons, rest_active, frame)
+            filled = len(rest)
         kept = [s for s in segments if s.end <= cut + 1e-6]
         return (kept + [Segment(s.start + cut, s.end + cut, s.label) for s in tail],
-                word_segments + [Segment(w.start + cut, w.end + cut, w.label) for w in tail_words])
+                word_segments + [Segment(w.start + cut, w.end + cut, w.label) for w in tail_words], filled)
     raise _MethodFailed(f"placed {len(placed)} of {len(words)} words")
+
+
+def _phones_by_duration(word_pass: list[tuple[str, int, int]], prons: dict, frame: float
+                        ) -> tuple[list[Segment], list[Segment]]:
+    """Phone segments for pocketsphinx's word segmentation ((word, first frame, end frame)),
+    each word's phones sharing its span in proportion to their typical durations."""
+    segments, word_segments = [], []
+    for name, a, b in word_pass:
+        name = re.sub(r"\(\d+\)$", "", name)
+        start, end = a * frame, b * frame
+        if name.startswith("<") or name.startswith("[") or name not in prons or not prons[name]:
+            segments.append(Segment(start, end, PAU))
+            continue
+        word_segments.append(Segment(start, end, name))
+        d = np.array([_typical_duration(p) for p in prons[name]])
+        edges = start + (end - start) * np.concatenate([[0.0], np.cumsum(d)]) / d.sum()
+        segments += [Segment(float(x), float(y), p) for x, y, p in zip(edges[:-1], edges[1:], prons[name])]
+    return segments, word_segments
 
 
 def _runs(active: np.ndarray) -> list[tuple[int, int]]:
@@ -396,7 +450,7 @@ def _chunks(audio: np.ndarray, words: list[str], active: np.ndarray, settings: A
         piece = audio[int(lo * hop * settings.sample_rate): int(hi * hop * settings.sample_rate)]
         for beam in (None, settings.wide_beam):
             try:
-                p, w = _pocketsphinx(piece, mine, settings, extra, beam)
+                p, w, _ = _pocketsphinx(piece, mine, settings, extra, beam)
                 break
             except _MethodFailed as exc:
                 reason = str(exc)

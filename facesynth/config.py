@@ -98,6 +98,8 @@ class AlignSettings:
     min_silence_s: float = setting("not in the paper: silences the chunks method cuts at", unit="s", gt=0)
     max_voiced_pause_s: float = setting("not in the paper: speech aligned as pause above this is a transcript mismatch",
                                         unit="s", gt=0)
+    max_rate_ratio: float = setting("not in the paper: speech this many times longer or shorter than its text's typical "
+                                    "duration is a transcript mismatch", unit="factor", gt=1)
     min_phone_s: float = setting("not in the paper: shortest speech per phone of the text", unit="s", ge=0)
     activity_range_db: float = setting("not in the paper: voice activity, below the loudest frames", unit="dB", gt=0)
     activity_floor_db: float = setting("not in the paper: voice activity, above the noise floor", unit="dB", ge=0)
