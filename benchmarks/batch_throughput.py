@@ -10,8 +10,10 @@ synthesis on the database and the motion output. The databases are built once in
 
 Reported per database and worker count: wall time with and without starting the cluster,
 lines per minute (steady: the cluster already up), the mean seconds per line of each phase
-(align, synthesize, outputs; a worker runs one line at a time, so these are CPU seconds
-of one core), the database load (once per worker), the fixed cost per line (the intercept
+(align, synthesize, outputs: wall seconds inside the worker), the CPU seconds per line
+(the worker process's CPU time, which a busy shared machine does not inflate), the load
+average before and after (other work on the machine slows the wall-clock figures), the
+database load (once per worker), the fixed cost per line (the intercept
 of a least-squares line of per-line seconds against seconds of audio, over the lines
 pocketsphinx aligned at once) and the dispatch cost per line (worker time outside the
 lines' own work).
@@ -105,7 +107,10 @@ def measure(script: Path, db: Path, out: Path, workers: int) -> dict:
         "cluster_start_s": round(up - started, 2), "batch_s": round(s["seconds"], 2), "wall_s": round(wall, 2),
         "lines_per_min": round(60 * s["lines"] / s["seconds"], 1),
         "lines_per_min_with_start": round(60 * s["lines"] / wall, 1),
-        "mean_line_s": round(float(total.mean()), 3), "mean_align_s": round(float(np.mean([r.align_s for r in ok])), 3),
+        "mean_line_s": round(float(total.mean()), 3),
+        "mean_line_cpu_s": round(float(np.mean([r.cpu_s for r in ok])), 3),
+        "mean_line_cpu_s_by_method": {m: round(float(np.mean([r.cpu_s for r in ok if r.method == m])), 3)
+                                      for m in sorted({r.method for r in ok})}, "mean_align_s": round(float(np.mean([r.align_s for r in ok])), 3),
         "mean_synthesize_s": round(float(np.mean([r.synthesize_s for r in ok])), 3),
         "mean_outputs_s": round(float(np.mean([r.outputs_s for r in ok])), 3),
         "db_load_s_per_worker": round(float(sum(r.load_s for r in ok)) / workers, 2),
@@ -127,7 +132,8 @@ def main() -> None:
     parser.add_argument("--work", type=Path, default=Path("out/bench-batch"))
     parser.add_argument("--out", type=Path, default=None)
     args = parser.parse_args()
-    result = {"machine": {"cores": os.cpu_count(), "processor": platform.processor() or platform.machine()},
+    result = {"machine": {"cores": os.cpu_count(), "processor": platform.processor() or platform.machine(),
+                          "load_average_at_start": [round(x, 2) for x in os.getloadavg()]},
               "lines": args.lines, "runs": {}}
     for preset in args.presets.split(","):
         folder = args.work / preset
@@ -139,6 +145,7 @@ def main() -> None:
         for workers in (int(w) for w in args.workers.split(",")):
             runs[f"{workers}_workers"] = measure(script, db, folder / f"lines-{workers}", workers)
             print(json.dumps({preset: {f"{workers}_workers": runs[f"{workers}_workers"]}}), flush=True)
+    result["machine"]["load_average_at_end"] = [round(x, 2) for x in os.getloadavg()]
     text = json.dumps(result, indent=2)
     print(text)
     if args.out:

@@ -210,7 +210,9 @@ def align_robust(samples: np.ndarray, rate: int, text: str, *, settings: AlignSe
         # words after the last one the search placed, given typical durations: named in the method
         result = Alignment(phones, word_segs, f"{method}+durations" if filled else method, attempts, longest, at)
         expected = sum(_typical_duration(p) for w in words for p in prons[w])
-        if not 1 / settings.max_rate_ratio <= voiced_s / expected <= settings.max_rate_ratio:
+        # a marked non-speech event may add up to max_voiced_pause_s of sound
+        allowed = settings.max_rate_ratio * expected + len(marks) * settings.max_voiced_pause_s
+        if not expected / settings.max_rate_ratio <= voiced_s <= allowed:
             result.warnings.append(
                 f"{where}: the audio has {voiced_s:.2f} s of speech where its text's {n_phones} phones typically "
                 f"take {expected:.2f} s (more than align.max_rate_ratio = {settings.max_rate_ratio:g} times off); "

@@ -65,7 +65,9 @@ class Job:
 @dataclass
 class LineResult:
     """The outcome of one line, one row of the summary. ``status``: ``ok``, ``skipped`` (up to
-    date from an earlier run) or ``failed`` (``reason`` says why). Times in seconds."""
+    date from an earlier run) or ``failed`` (``reason`` says why). Times in seconds: wall time
+    of each phase, ``total_s`` of the whole line, ``cpu_s`` the CPU time of the worker process
+    for the line (all its threads), ``load_s`` reading the database (once per worker)."""
 
     id: str
     row: int
@@ -78,6 +80,7 @@ class LineResult:
     synthesize_s: float = 0.0
     outputs_s: float = 0.0
     total_s: float = 0.0
+    cpu_s: float = 0.0
     load_s: float = 0.0
     outputs: list[str] = field(default_factory=list)
     warnings: list[str] = field(default_factory=list)
@@ -159,8 +162,6 @@ def _write_json(path: Path, data: dict) -> None:
 
 def _check_inputs(line: Line, job: Job) -> str:
     """The line's emotion name (default neutral); raises InputError for a bad row."""
-    if line.problem:
-        raise InputError(line.problem)
     if line.audio is None:
         raise InputError("no audio file given in the 'audio' column.")
     for name, p in (("audio", line.audio), ("alignment", line.alignment), ("emotions", line.emotions),
@@ -181,14 +182,16 @@ def _check_inputs(line: Line, job: Job) -> str:
 def run_line(line: Line, job: Job) -> LineResult:
     """Do one line; never raises for a problem of the line's inputs (the result says why it
     failed). A bug still raises, so the runner records its traceback."""
-    started = time.perf_counter()
+    started, cpu = time.perf_counter(), time.process_time()
     result = LineResult(line.id, line.row, "failed", worker=f"pid {os.getpid()}")
+    old = key = None
     try:
+        if line.problem:
+            raise InputError(line.problem)
+        old = _read_manifest(manifest_path(job, line.id))
         emotion = _check_inputs(line, job)
         key = input_key(line, job)
         outputs = output_paths(job, line.id)
-        manifest = manifest_path(job, line.id)
-        old = _read_manifest(manifest)
         if not job.redo and old is not None and old.get("inputs") == key and old.get("status") == "ok" \
                 and all(p.exists() for p in outputs.values()):
             recorded = old.get("result", {})
@@ -196,7 +199,7 @@ def run_line(line: Line, job: Job) -> LineResult:
                 if name in recorded:
                     setattr(result, name, recorded[name])
             result.status, result.outputs = "skipped", sorted(p.name for p in outputs.values())
-            result.total_s = time.perf_counter() - started
+            result.total_s, result.cpu_s = time.perf_counter() - started, time.process_time() - cpu
             return result
         made_here = set(old.get("outputs", [])) if old is not None else set()
         for p in list(outputs.values()) + [job.out_dir / f"{line.id}.TextGrid"]:
@@ -205,9 +208,21 @@ def run_line(line: Line, job: Job) -> LineResult:
         _do_line(line, job, emotion, key, outputs, result)
         result.status = "ok"
     except FacesynthError as exc:
-        result.status, result.reason = "failed", str(exc)
-    result.total_s = time.perf_counter() - started
+        if not line.problem:  # a line with a duplicated id must not touch the first one's files
+            stale = old if old is not None and old.get("inputs") != key else None
+            _remove_partial(job, line.id, result.outputs, stale)
+        result.status, result.reason, result.outputs = "failed", str(exc), []
+    result.total_s, result.cpu_s = time.perf_counter() - started, time.process_time() - cpu
     return result
+
+
+def _remove_partial(job: Job, line_id: str, written: list[str], stale: dict | None) -> None:
+    """After a line failed: remove what this attempt wrote, and the outputs and manifest of an
+    earlier run from other inputs (``stale``), so the folder never shows outputs that do not
+    belong to the script's line."""
+    names = set(written) | (set(stale.get("outputs", [])) | {f"{line_id}.json"} if stale is not None else set())
+    for name in names:
+        (job.out_dir / name).unlink(missing_ok=True)
 
 
 def _read_manifest(path: Path) -> dict | None:
@@ -240,10 +255,7 @@ def _do_line(line: Line, job: Job, emotion: str, key: dict, outputs: dict[str, P
         segments, result.method, result.warnings = aligned.phones, aligned.method, list(aligned.warnings)
         if aligned.mismatch:
             raise InputError("the transcript does not match the speech: " + "; ".join(aligned.warnings))
-        grid = job.out_dir / f"{line.id}.TextGrid"
-        with atomic_path(grid, overwrite=True) as tmp:
-            write_textgrid(tmp, {"phones": segments, "words": aligned.words}, segments[-1].end)
-        result.outputs.append(grid.name)
+        aligned_words = aligned.words
     result.phones = sum(s.label != PAU for s in segments)
     result.align_s = time.perf_counter() - t0
 
@@ -260,6 +272,11 @@ def _do_line(line: Line, job: Job, emotion: str, key: dict, outputs: dict[str, P
     result.synthesize_s = time.perf_counter() - t0 - result.load_s
 
     t0 = time.perf_counter()
+    if line.alignment is None:
+        grid = job.out_dir / f"{line.id}.TextGrid"
+        with atomic_path(grid, overwrite=True) as tmp:
+            write_textgrid(tmp, {"phones": segments, "words": aligned_words}, segments[-1].end)
+        result.outputs.append(grid.name)
     records = [{"path": str(job.db), "kind": "motiondb", "sha256": job.db_sha256}]
     records += [{"path": str(p), "kind": None, "sha256": key[name]}
                 for name, p in (("audio", line.audio), ("alignment", line.alignment), ("emotions", line.emotions),
@@ -267,13 +284,14 @@ def _do_line(line: Line, job: Job, emotion: str, key: dict, outputs: dict[str, P
     motion_path = outputs.get("motion") or job.out_dir / f"{line.id}.motion.h5.part-{os.getpid()}"
     keep_motion = "motion" in outputs
     motion.write(motion_path, config=settings_json(job.synthesize), records=records, overwrite=True)
+    if keep_motion:
+        result.outputs.append(motion_path.name)
     try:
         if set(job.outputs) & {"anim", "avi"}:
             _mesh_outputs(line, job, motion, motion_path, outputs, result)
     finally:
         if not keep_motion:
             motion_path.unlink(missing_ok=True)
-    result.outputs += [p.name for p in outputs.values()]
     result.outputs_s = time.perf_counter() - t0
     _write_json(manifest_path(job, line.id), {
         "id": line.id, "status": "ok", "inputs": key, "outputs": sorted(result.outputs),
@@ -297,9 +315,12 @@ def _mesh_outputs(line: Line, job: Job, motion, motion_path: Path, outputs: dict
     anim_path = outputs.get("anim") or job.out_dir / f"{line.id}.anim.h5.part-{os.getpid()}"
     anim.write(anim_path, config=settings_json(job.deform), inputs=[motion_path, job.mesh, job.binding],
                overwrite=True)
+    if "anim" in outputs:
+        result.outputs.append(anim_path.name)
     try:
         if "avi" in outputs:
             render([anim_path], [line.audio], outputs["avi"], job.render, None, overwrite=True)
+            result.outputs.append(outputs["avi"].name)
     finally:
         if "anim" not in outputs:
             anim_path.unlink(missing_ok=True)

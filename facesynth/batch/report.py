@@ -11,7 +11,7 @@ from ..artifacts import atomic_path
 from .line import LineResult
 
 COLUMNS = ("id", "row", "status", "reason", "method", "phones", "audio_s", "align_s", "synthesize_s", "outputs_s",
-           "load_s", "total_s", "outputs", "warnings")
+           "load_s", "total_s", "cpu_s", "outputs", "warnings")
 
 
 def rows(results: list[LineResult]) -> list[dict]:
@@ -19,7 +19,7 @@ def rows(results: list[LineResult]) -> list[dict]:
     out = []
     for r in results:
         row = {c: getattr(r, c) for c in COLUMNS}
-        for c in ("audio_s", "align_s", "synthesize_s", "outputs_s", "load_s", "total_s"):
+        for c in ("audio_s", "align_s", "synthesize_s", "outputs_s", "load_s", "total_s", "cpu_s"):
             row[c] = f"{row[c]:.3f}"
         row["outputs"] = ";".join(r.outputs)
         row["warnings"] = " ".join(r.warnings)

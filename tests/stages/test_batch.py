@@ -88,6 +88,11 @@ def test_lines_fail_alone_with_their_reason_and_a_rerun_skips_what_is_done(tiny_
     assert (third["ok"], third["skipped"]) == (1, 0)
     assert json.loads((out / "aligned.json").read_text())["inputs"]["emotion"] == "angry"
 
+    broken = _write(tmp_path / "script.csv", [("id", "audio", "text"), ("aligned", str(tmp_path / "gone.wav"), "x")])
+    fourth = batch.run(broken, tiny_db, out, *_settings(config), client=client)
+    assert fourth["failed"] == 1  # and the outputs of the earlier inputs are gone, not left looking current
+    assert not any((out / f"aligned{suffix}").exists() for suffix in (".motion.h5", ".TextGrid", ".json"))
+
 
 def test_anim_and_video_outputs(tiny_corpus, tiny_db, takes, config, client, tmp_path):
     row = takes["neutral_s001"]
