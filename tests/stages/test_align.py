@@ -75,3 +75,19 @@ def lexicon_arpabet(word):
     from facesynth.phonemes import cmudict
 
     return cmudict()[word][0]
+
+
+def test_align_command_names_the_method_and_warns_of_a_partial_transcript(tiny_corpus, tmp_path):
+    import csv
+
+    from click.testing import CliRunner
+
+    from facesynth.cli import main
+
+    row = next(r for r in csv.DictReader(open(tiny_corpus / "manifest.csv")) if r["take"] == "neutral_s001")
+    wav = str(tiny_corpus / row["audio"])
+    r = CliRunner().invoke(main, ["align", wav, "--text", row["transcript"], "-o", str(tmp_path / "a.TextGrid")])
+    assert r.exit_code == 0 and "(pocketsphinx) ->" in r.output and "warning" not in r.output
+    first = row["transcript"].split()[0]
+    r = CliRunner().invoke(main, ["align", wav, "--text", f"[breath] {first}", "-o", str(tmp_path / "b.TextGrid")])
+    assert r.exit_code == 0 and "warning: " in r.output and "Traceback" not in r.output
