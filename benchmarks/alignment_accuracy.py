@@ -23,7 +23,8 @@ cannot be fetched is reported as skipped with the reason.
 Boundaries are compared between segments matched by label (the reference phones mapped to
 the Festival set, matched in order with :class:`difflib.SequenceMatcher`): the start and the end
 of every matched non-pause phone (or word). Errors are absolute differences in milliseconds;
-the report gives their count, mean and 95th percentile, the methods used (see
+the report gives their count, mean, median and 95th percentile (and per recording), the
+methods used (see
 :func:`facesynth.alignment.align_robust`), failures with their reasons, and warnings.
 
     python benchmarks/alignment_accuracy.py [--preset tiny] [--sources sample,praatio,mfa] [--out FILE]
@@ -174,15 +175,22 @@ def run_item(item: dict, settings, report: dict) -> None:
         return
     report["methods"][result.method] = report["methods"].get(result.method, 0) + 1
     report["warnings"] += [{"item": item["name"], "warning": w} for w in result.warnings]
+    errors = []
     if "phones" in item:
-        report["errors_ms"] += matched_errors(result.phones, festival(item["phones"]))
+        errors += matched_errors(result.phones, festival(item["phones"]))
     if "words" in item:
-        report["errors_ms"] += matched_errors(words(result.words), words(item["words"]))
+        errors += matched_errors(words(result.words), words(item["words"]))
+    if errors:
+        report["errors_ms"] += errors
+        report["per_recording"][item["name"]] = {"method": result.method, "boundaries": len(errors),
+                                                 "mean_ms": round(float(np.mean(errors)), 1),
+                                                 "median_ms": round(float(np.median(errors)), 1)}
 
 
 def summary(report: dict) -> dict:
     e = np.array(report.pop("errors_ms"))
     report.update(boundaries=int(len(e)), mean_ms=round(float(e.mean()), 1) if len(e) else None,
+                  median_ms=round(float(np.median(e)), 1) if len(e) else None,
                   p95_ms=round(float(np.percentile(e, 95)), 1) if len(e) else None)
     return report
 
@@ -261,7 +269,8 @@ def main() -> None:
         except (OSError, subprocess.SubprocessError, StopIteration, KeyError) as exc:
             result[source] = {"skipped": f"{type(exc).__name__}: {exc}"}
             continue
-        report = {"recordings": len(items), "failures": [], "methods": {}, "warnings": [], "errors_ms": []}
+        report = {"recordings": len(items), "failures": [], "methods": {}, "warnings": [], "errors_ms": [],
+                  "per_recording": {}}
         started = time.perf_counter()
         for item in items:
             run_item(item, settings, report)

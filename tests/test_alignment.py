@@ -62,13 +62,21 @@ def test_a_transcript_lacking_words_is_flagged(take, config):
     assert result.mismatch and result.voiced_pause_s > config.settings("align").max_voiced_pause_s
     assert all(w.startswith("x.wav: ") for w in result.warnings)
     assert any("the transcript may lack words" in w for w in result.warnings)
-    assert any("the text may not be what is said" in w for w in result.warnings)
+
+
+def test_a_wrong_text_timed_by_durations_is_flagged(take, config):
+    samples, rate, text = take
+    settings = dataclasses.replace(config.settings("align"), methods=("duration",))
+    assert not align_robust(samples, rate, text, settings=settings).mismatch
+    result = align_robust(samples, rate, "the", settings=settings, where="x.wav")
+    assert result.mismatch and "x.wav: the audio has" in result.warnings[0]
+    assert "the text may not be what is said" in result.warnings[0]
     assert not align_robust(samples, rate, text, settings=config.settings("align")).mismatch
 
 
 def test_audio_too_short_for_its_text_is_refused(take, config):
     samples, rate, text = take
-    with pytest.raises(AlignmentFailed, match=r"x.wav: the audio has .* too short for its text's \d+ phones"):
+    with pytest.raises(AlignmentFailed, match=r"x.wav: the audio lasts 0.25 s, too short for its text's \d+ phones"):
         align_robust(samples[: rate // 4], rate, text, settings=config.settings("align"), where="x.wav")
 
 
