@@ -15,7 +15,7 @@ lines per minute (steady: the cluster already up), the mean seconds per line of 
 average before and after (other work on the machine slows the wall-clock figures), the
 database load (once per worker), the fixed cost per line (the intercept
 of a least-squares line of per-line seconds against seconds of audio, over the lines
-pocketsphinx aligned at once) and the dispatch cost per line (worker time outside the
+pocketsphinx aligned at once; the same for CPU seconds) and the dispatch cost per line (worker time outside the
 lines' own work).
 
     python benchmarks/batch_throughput.py [--lines 1000] [--presets small,paper] [--workers 1,2]
@@ -97,6 +97,9 @@ def measure(script: Path, db: Path, out: Path, workers: int) -> dict:
     first = np.array([r.method == "pocketsphinx" for r in ok])
     slope, intercept = (np.polyfit(audio[first], total[first], 1) if first.sum() > 2
                         else (float("nan"), float("nan")))
+    cpu = np.array([r.cpu_s for r in ok])
+    cpu_slope, cpu_intercept = (np.polyfit(audio[first], cpu[first], 1) if first.sum() > 2
+                                else (float("nan"), float("nan")))
     inside = float(sum(r.total_s for r in s["results"]))
     methods: dict[str, int] = {}
     for r in ok:
@@ -116,6 +119,8 @@ def measure(script: Path, db: Path, out: Path, workers: int) -> dict:
         "db_load_s_per_worker": round(float(sum(r.load_s for r in ok)) / workers, 2),
         "mean_audio_s": round(float(audio.mean()), 2),
         "fixed_cost_per_line_s": round(float(intercept), 3), "cost_per_audio_second_s": round(float(slope), 3),
+        "fixed_cpu_per_line_s": round(float(cpu_intercept), 3), "cpu_per_audio_second_s": round(float(cpu_slope), 3),
+        "median_line_cpu_s": round(float(np.median(cpu)), 3),
         # worker time per line outside the line's own work: task dispatch, results, summary
         "dispatch_per_line_s": round((s["seconds"] * workers - inside) / s["lines"], 3),
         "mean_line_s_by_method": {m: round(float(np.mean([r.total_s - r.load_s for r in ok if r.method == m])), 3)
