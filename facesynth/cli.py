@@ -40,7 +40,7 @@ class PipelineGroup(click.Group):
     order of the README and docs/pipeline.md), then any others alphabetically."""
 
     order = ("sample-corpus", "align", "ingest", "normalize", "pca", "build-db", "db", "check", "prune", "isomap",
-             "synthesize", "suggest", "deform", "render", "capture", "evaluate", "tune", "devices")
+             "synthesize", "suggest", "deform", "render", "batch", "capture", "evaluate", "tune", "devices")
 
     def list_commands(self, ctx):
         listed = [name for name in self.order if name in self.commands]
@@ -108,6 +108,7 @@ READS: dict[str, tuple[str, ...]] = {
     "suggest": ("synthesize", "ingest"),
     "deform": ("deform",),
     "render": ("render",),
+    "batch": ("batch", "synthesize", "ingest", "align", "deform", "render"),
     "evaluate": ("evaluate", "synthesize", "normalize"),
     "capture": ("normalize", "synthesize"),
     "tune": ("tune", "synthesize", "evaluate", "normalize"),
@@ -291,6 +292,12 @@ def sample_corpus_cmd(ctx: Context, out_dir: Path, preset: str, seed: int):
 def align(ctx: Context, audio: Path, text: str | None, transcript: Path | None, dict_path: Path | None, output: Path):
     """Forced-align speech to its text; writes a phone TextGrid in the Festival phone set.
 
+    pocketsphinx first; when it fails or places fewer words, a wider beam, then chunks cut at
+    silences, then typical phone durations over the voiced span (align.methods; the one used
+    is printed). Speech aligned as pause for longer than align.max_voiced_pause_s is warned
+    about: the text may lack words. Non-speech marked in the text ([breath], [laugh],
+    <noise>) is aligned as pause.
+
     \b
     Example:
       facesynth align corpus/audio/neutral_s000.wav --text "beautiful he men from began pretty strong" \\
@@ -302,7 +309,11 @@ def align(ctx: Context, audio: Path, text: str | None, transcript: Path | None, 
         raise UsageError("give exactly one of --text or --transcript.")
     summary = stage_align.run(audio, text if transcript is None else stage_align.read_transcript(transcript), output,
                               ctx.config.settings("align"), dict_path, ctx.overwrite)
-    ctx.say(f"aligned {summary['phones']} phones over {summary['seconds']:.2f} s -> {output}")
+    for reason in summary["attempts"]:
+        ctx.detail(f"not used: {reason}")
+    for warning in summary["warnings"]:
+        ctx.say(f"warning: {warning}")
+    ctx.say(f"aligned {summary['phones']} phones over {summary['seconds']:.2f} s ({summary['method']}) -> {output}")
 
 
 @main.command()
@@ -511,6 +522,69 @@ def render(ctx: Context, anims, audios, view, compare, output: Path):
     for note in s["notes"]:  # a mesh without eye or mouth holes: expected for plain meshes, so only with -v
         ctx.detail(f"render: {note}.")
     ctx.say(f"rendered {s['frames']} frames ({s['seconds']:.2f} s of video, {s['frames_per_s']:.1f} frames/s) -> {output}")
+
+
+@main.command()
+@click.argument("script", type=EXISTING)
+@click.option("--db", "db_path", type=EXISTING, required=True, help="The motion database (db.h5).")
+@click.option("-o", "--output", type=PATH, required=True, help="Output folder (per-line files and the summary).")
+@click.option("--outputs", default=None, metavar="KINDS",
+              help="Comma-separated: motion, anim, avi (default: batch.outputs).")
+@click.option("--mesh", type=EXISTING, default=None, help="Face mesh for anim and avi (.obj or .ply).")
+@click.option("--binding", type=EXISTING, default=None, help="CSV 'marker,vertex' binding, for anim and avi.")
+@click.option("--scheduler", default=None, metavar="ADDRESS", help="An existing Dask scheduler (tcp://host:8786).")
+@click.option("--workers", type=click.IntRange(min=1), default=None,
+              help="Local worker processes (default: batch.workers, 0 = one per core).")
+@stage
+def batch(ctx: Context, script: Path, db_path: Path, output: Path, outputs: str | None, mesh, binding,
+          scheduler: str | None, workers: int | None):
+    """Synthesize every line of a dialogue script on Dask, with a summary of what failed.
+
+    SCRIPT is a CSV with columns id, audio, text (or alignment: a TextGrid or .lab), and
+    optionally emotion (or emotions: a per-phone emotion file) and constraints; paths are
+    relative to its folder. Each line is aligned (when no alignment is given), synthesized and
+    written to OUTPUT as ID.motion.h5 (ID.anim.h5, ID.avi as asked), ID.TextGrid and ID.json
+    (its manifest); a rerun skips lines whose outputs exist and whose inputs did not change.
+    OUTPUT/summary.csv and summary.html list every line's status, alignment method, phone
+    count, timings and the reason of each failure. Exit status 1 when any line failed.
+
+    \b
+    Example:
+      echo id,audio,text,emotion > script.csv
+      echo l1,corpus/audio/neutral_s000.wav,beautiful he men from began pretty strong,happy >> script.csv
+      facesynth batch script.csv --db db.h5 -o lines/ --workers 1
+    """
+    import dataclasses
+
+    from .stages import batch as stage
+
+    settings = ctx.config.settings("batch")
+    if outputs is not None:
+        kinds = tuple(k.strip() for k in outputs.split(",") if k.strip())
+        unknown = [k for k in kinds if k not in ("motion", "anim", "avi")]
+        if unknown or not kinds:
+            raise click.BadParameter(f"{outputs!r}: give a comma-separated list of motion, anim, avi.",
+                                     param_hint="--outputs")
+        settings = dataclasses.replace(settings, outputs=kinds)
+    if workers is not None:
+        settings = dataclasses.replace(settings, workers=workers)
+
+    def on_result(r):
+        if r.status == "failed":
+            ctx.detail(f"{r.id}: failed: {r.reason}")
+        else:
+            ctx.detail(f"{r.id}: {r.status} ({r.method}, {r.phones} phones, {r.total_s:.2f} s)")
+
+    s = stage.run(script, db_path, output, settings, ctx.config.settings("synthesize"), ctx.config.settings("ingest"),
+                  ctx.config.settings("align"), ctx.config.settings("deform"), ctx.config.settings("render"),
+                  mesh=mesh, binding=binding, scheduler=scheduler, overwrite=ctx.overwrite, on_result=on_result)
+    skipped = f", {s['skipped']} up to date" if s["skipped"] else ""
+    ctx.say(f"{s['ok']} of {s['lines']} lines done{skipped}, {s['failed']} failed in {s['seconds']:.1f} s; "
+            f"summary: {s['html']}")
+    if s["failed"]:
+        first = next(r for r in s["results"] if r.status == "failed")
+        raise FacesynthError(f"{s['failed']} of {s['lines']} lines failed (first: {first.id}: {first.reason.rstrip('.')}); "
+                             f"every reason is in {s['csv']}.")
 
 
 @main.command()

@@ -87,10 +87,23 @@ class IngestSettings:
 
 @dataclass(frozen=True)
 class AlignSettings:
-    """``[align]``: pocketsphinx's front end (frame rate, frames/s) and model sample rate (Hz)."""
+    """``[align]``: pocketsphinx's front end (frame rate, frames/s) and model sample rate (Hz); the
+    fallback methods, voice activity and the transcript-mismatch check (:mod:`facesynth.alignment`)."""
 
     frame_rate: int = setting("pocketsphinx's acoustic front end (its default)", unit="frames/s", ge=1)
     sample_rate: int = setting("pocketsphinx's English acoustic model", unit="Hz", ge=8000)
+    methods: tuple[str, ...] = setting("not in the paper: alignment methods tried in order until one places every word",
+                                       choices=("pocketsphinx", "wide-beam", "chunks", "duration"), min_items=1)
+    wide_beam: float = setting("not in the paper: pocketsphinx beam of the wide-beam method (its default 1e-48)",
+                               gt=0, lt=1)
+    min_silence_s: float = setting("not in the paper: silences the chunks method cuts at", unit="s", gt=0)
+    max_voiced_pause_s: float = setting("not in the paper: speech aligned as pause above this is a transcript mismatch",
+                                        unit="s", gt=0)
+    max_rate_ratio: float = setting("not in the paper: speech this many times longer or shorter than its text's typical "
+                                    "duration is a transcript mismatch", unit="factor", gt=1)
+    min_phone_s: float = setting("not in the paper: shortest speech per phone of the text", unit="s", ge=0)
+    activity_range_db: float = setting("not in the paper: voice activity, below the loudest frames", unit="dB", gt=0)
+    activity_floor_db: float = setting("not in the paper: voice activity, above the noise floor", unit="dB", ge=0)
 
 
 @dataclass(frozen=True)
@@ -238,6 +251,15 @@ class LimitsSettings:
     max_dataset_mb: float = setting("not in the paper: largest dataset an artifact may declare", unit="MB", gt=0)
 
 
+@dataclass(frozen=True)
+class BatchSettings:
+    """``[batch]``: what each line of ``facesynth batch`` writes and how many Dask workers run them."""
+
+    outputs: tuple[str, ...] = setting("not in the paper: per-line outputs", choices=("motion", "anim", "avi"),
+                                       min_items=1)
+    workers: int = setting("not in the paper: local Dask worker processes; 0: one per core", unit="processes", ge=0)
+
+
 SECTIONS: dict[str, type] = {
     "ingest": IngestSettings,
     "align": AlignSettings,
@@ -252,6 +274,7 @@ SECTIONS: dict[str, type] = {
     "deform": DeformSettings,
     "render": RenderSettings,
     "limits": LimitsSettings,
+    "batch": BatchSettings,
 }
 
 S = TypeVar("S")

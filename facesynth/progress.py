@@ -9,7 +9,7 @@ from __future__ import annotations
 import logging
 import os
 import sys
-from typing import Iterable, Iterator, TypeVar
+from typing import Callable, Iterable, Iterator, TypeVar
 
 import click
 
@@ -21,10 +21,13 @@ def _interactive() -> bool:
             and not os.environ.get("CI"))
 
 
-def progress(iterable: Iterable[T], label: str, length: int | None = None) -> Iterator[T]:
-    """Iterate over ``iterable``, drawing a progress bar on stderr when it is a terminal."""
+def progress(iterable: Iterable[T], label: str, length: int | None = None,
+             show: Callable[[T | None], str | None] | None = None) -> Iterator[T]:
+    """Iterate over ``iterable``, drawing a progress bar on stderr when it is a terminal (with
+    the estimated time left when ``length`` is known). ``show`` gives the text after the bar
+    for the item just taken (e.g. "12 done, 1 failed")."""
     if not _interactive():
         yield from iterable
         return
-    with click.progressbar(iterable, length=length, label=label, file=sys.stderr) as bar:
+    with click.progressbar(iterable, length=length, label=label, file=sys.stderr, item_show_func=show) as bar:
         yield from bar

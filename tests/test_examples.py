@@ -68,7 +68,7 @@ HELP = {" ".join(path) or "facesynth": examples(help_text(path)) for path, _ in 
 def outputs(line: str) -> list[str]:
     """The files and folders an example line writes (relative to the folder it runs in)."""
     words = shlex.split(line)
-    out = [words[i + 1] for i, w in enumerate(words[:-1]) if w in OUTPUT_OPTIONS or w == ">"]
+    out = [words[i + 1] for i, w in enumerate(words[:-1]) if w in OUTPUT_OPTIONS or w in (">", ">>")]
     if words[:2] == ["facesynth", "sample-corpus"]:
         out.append(words[2])
     return [w.rstrip("/") for w in out]
@@ -76,13 +76,15 @@ def outputs(line: str) -> list[str]:
 
 def run_line(line: str, folder: Path) -> None:
     """Run one example line in ``folder``: ``facesynth ARGS [> FILE]`` through click's CliRunner,
-    or ``echo TEXT > FILE``; anything else is an error, so examples stay within what runs here."""
+    or ``echo TEXT > FILE`` (``>> FILE`` appends); anything else is an error, so examples stay
+    within what runs here."""
     words = shlex.split(line)
-    target = None
-    if len(words) >= 2 and words[-2] == ">":
-        words, target = words[:-2], folder / words[-1]
+    target, append = None, False
+    if len(words) >= 2 and words[-2] in (">", ">>"):
+        words, target, append = words[:-2], folder / words[-1], words[-2] == ">>"
     if words[0] == "echo" and target is not None:
-        target.write_text(" ".join(words[1:]) + "\n")
+        with open(target, "a" if append else "w") as fh:
+            fh.write(" ".join(words[1:]) + "\n")
         return
     assert words[0] == "facesynth", f"an example line this test cannot run: {line!r}"
     cwd = os.getcwd()

@@ -1,12 +1,14 @@
 """Time-aligned labels: Praat TextGrid (long and short text formats) and .lab files.
 
-``.lab`` covers HTK (``start end label`` in 100 ns units; an HTS full-context label
+``.lab`` covers HTK (``start end label`` in 100 ns units, or the same three fields in seconds:
+told apart from the values by :func:`lab_time_unit`, which is logged; an HTS full-context label
 ``p1^p2-p3+p4=p5...`` stands for its centre phone p3) and Festival/xwaves
 (a header ending in ``#``, then ``end_time colour label`` in seconds).
 """
 
 from __future__ import annotations
 
+import logging
 import math
 import re
 from dataclasses import dataclass
@@ -20,6 +22,7 @@ _TOKEN = re.compile(r'"((?:[^"]|"")*)"|(<exists>)|([-+]?(?:\d+\.?\d*|\.\d+)(?:[e
 _EPS = 1e-6
 #: The centre phone of an HTS full-context label, ``p1^p2-p3+p4=p5@...``.
 _HTS_CENTRE = re.compile(r"^[^\^\s]*\^[^-\s]*-([^+\s]+)\+[^=\s]*=")
+log = logging.getLogger(__name__)
 
 
 @dataclass(frozen=True)
@@ -130,18 +133,35 @@ def read_lab(path: Path) -> list[Segment]:
                 end = float(parts[0])
                 segs.append(Segment(prev, end, parts[-1] if len(parts) >= 3 else ""))
                 prev = end
-        else:  # HTK: "start end label" in units of 100 ns
+        else:  # HTK: "start end label" in units of 100 ns, or the same in seconds
+            rows = []
             for number, line in enumerate(lines, 1):
                 if not line or line == ".":
                     continue
                 parts = line.split()
                 label = parts[2] if len(parts) > 2 else ""
                 full = _HTS_CENTRE.match(label)  # HTS full-context label: the centre phone
-                segs.append(Segment(int(parts[0]) * 1e-7, int(parts[1]) * 1e-7, full.group(1) if full else label))
+                rows.append((float(parts[0]), float(parts[1]), full.group(1) if full else label, parts[:2]))
+            per_s, unit = lab_time_unit([r[3] for r in rows])
+            log.info("%s: .lab times read as %s", path, unit)
+            segs = [Segment(a / per_s, b / per_s, label) for a, b, label, _ in rows]
     except (ValueError, IndexError):
         raise InputError(f"{path}, line {number}: malformed .lab line {lines[number - 1]!r}; expected HTK "
-                         "'start end label' (100 ns units) or Festival 'end colour label' after a '#' line.") from None
+                         "'start end label' (100 ns units or seconds) or Festival 'end colour label' after a '#' line.") from None
     return segs
+
+
+def lab_time_unit(times: Sequence[Sequence[str]]) -> tuple[float, str]:
+    """The unit of the ``start end`` fields of a ``.lab`` file, from their text: (units per
+    second, a phrase naming it). HTK writes integers in 100 ns units, so an end time is at least
+    10,000 (1 ms) in any real file; seconds are written with a decimal point or are small
+    integers. Any field with a decimal point or exponent, or a largest value below 10,000
+    (2.8 hours if it were seconds), means seconds."""
+    fields = [t for row in times for t in row]
+    integers = all(re.fullmatch(r"[-+]?\d+", t) for t in fields)
+    if integers and fields and max(float(t) for t in fields) >= 1e4:
+        return 1e7, "HTK 100 ns units (integers of 10,000 and more)"
+    return 1.0, "seconds (" + ("values with a decimal point" if not integers else "small integers") + ")"
 
 
 def write_lab(path: Path, segs: Sequence[Segment]) -> None:

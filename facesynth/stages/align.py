@@ -1,12 +1,13 @@
 """``facesynth align``: phone-level forced alignment of speech to its text (see
-:mod:`facesynth.alignment`), written as a TextGrid with phone and word tiers."""
+:mod:`facesynth.alignment`: pocketsphinx with fallbacks), written as a TextGrid with phone
+and word tiers."""
 
 from __future__ import annotations
 
 from pathlib import Path
 
-from ..alignment import align_words, read_pronunciations
-from ..artifacts import atomic_path
+from ..alignment import align_robust, read_pronunciations
+from ..artifacts import atomic_path, check_output
 from ..config import AlignSettings
 from ..errors import InputError
 from ..formats.audio import read_audio
@@ -17,14 +18,18 @@ from ..phonemes import PAU
 def run(audio_path: Path, text: str, out: Path, settings: AlignSettings, dict_path: Path | None = None,
         overwrite: bool = False) -> dict:
     """Align ``text`` to the speech of ``audio_path`` and write ``out`` (a TextGrid with phone and
-    word tiers); returns the number of phones and the duration (s).
-    """
+    word tiers). Returns the number of phones, the duration (s), the method that placed the
+    words, why earlier methods were not used (``attempts``) and ``warnings`` (a transcript that
+    seems to lack words)."""
+    check_output(out, overwrite)
     samples, rate = read_audio(audio_path)
     extra = read_pronunciations(dict_path) if dict_path else {}
-    segments, words = align_words(samples, rate, text, extra=extra, settings=settings, where=str(audio_path))
+    result = align_robust(samples, rate, text, extra=extra, settings=settings, where=str(audio_path))
+    segments = result.phones
     with atomic_path(out, overwrite) as tmp:
-        write_textgrid(tmp, {"phones": segments, "words": words}, segments[-1].end)
-    return {"phones": sum(s.label != PAU for s in segments), "seconds": segments[-1].end}
+        write_textgrid(tmp, {"phones": segments, "words": result.words}, segments[-1].end)
+    return {"phones": sum(s.label != PAU for s in segments), "seconds": segments[-1].end, "method": result.method,
+            "attempts": result.attempts, "warnings": result.warnings}
 
 
 def read_transcript(path: Path) -> str:

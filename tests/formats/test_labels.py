@@ -72,3 +72,21 @@ def test_a_malformed_lab_line_is_named_by_its_number(tmp_path):
     path.write_text("0 1000000 pau\n1000000 2000000 aa\n2000000 oops b\n")
     with pytest.raises(InputError, match=r"x\.lab, line 3: malformed \.lab line '2000000 oops b'"):
         read_lab(path)
+
+
+def test_lab_times_in_seconds_or_htk_units_are_told_apart_and_logged(tmp_path, caplog):
+    import logging
+
+    from facesynth.formats.labels import lab_time_unit
+
+    seconds, htk, whole = tmp_path / "s.lab", tmp_path / "h.lab", tmp_path / "w.lab"
+    seconds.write_text("0 0.25 pau\n0.25 0.4 m\n0.4 1.0 aa\n")
+    htk.write_text("0 2500000 pau\n2500000 4000000 m\n4000000 10000000 aa\n")
+    whole.write_text("0 1 pau\n1 2 aa\n")
+    with caplog.at_level(logging.INFO, logger="facesynth"):
+        assert read_lab(seconds) == read_lab(htk) == [Segment(0.0, 0.25, "pau"), Segment(0.25, 0.4, "m"),
+                                                      Segment(0.4, 1.0, "aa")]
+        assert read_lab(whole) == [Segment(0.0, 1.0, "pau"), Segment(1.0, 2.0, "aa")]
+    assert "s.lab: .lab times read as seconds" in caplog.text and "h.lab: .lab times read as HTK 100 ns" in caplog.text
+    assert lab_time_unit([("0", "9999")])[0] == 1.0 and lab_time_unit([("0", "10000")])[0] == 1e7
+    assert lab_time_unit([("0", "1e5")])[0] == 1.0

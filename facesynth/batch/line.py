@@ -1,0 +1,326 @@
+"""One line of a batch, done in a Dask worker process: align (when no alignment is given),
+synthesize, write the asked outputs, record a manifest.
+
+State kept per worker process (never shipped with a task): the motion database and its
+transition costs, read once per database file (:func:`database`), the mesh bound to the
+markers (:func:`bound_mesh`) and, through :mod:`facesynth.opencl`, the OpenCL context. The
+caches are keyed by the file's path, size and modification time (and the settings), so a
+database rebuilt between two batches on a long-lived cluster is read again.
+
+Outputs of line ``ID`` in the batch folder: ``ID.motion.h5``, ``ID.anim.h5``, ``ID.avi`` (as
+asked), ``ID.TextGrid`` (the alignment, when the line was aligned) and ``ID.json``, the
+manifest written last: the sha256 of every input, the settings and the outputs. A rerun
+skips a line whose manifest matches its inputs and whose outputs all exist. Every file is
+written to a temporary name in the folder and renamed into place, so a killed worker
+leaves no half-written output, and no manifest for a line it did not finish.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from .. import __version__
+from ..alignment import AlignmentFailed, align_robust
+from ..artifacts import atomic_path, sha256_of
+from ..config import (AlignSettings, DeformSettings, IngestSettings, RenderSettings, SynthesizeSettings,
+                      settings_json)
+from ..errors import FacesynthError, InputError
+from ..formats.audio import read_audio
+from ..formats.labels import Segment, read_phone_segments, write_textgrid
+from ..phonemes import PAU, map_phones
+from .script import Line
+
+#: Output kinds and the file each writes, by line id.
+SUFFIXES = {"motion": ".motion.h5", "anim": ".anim.h5", "avi": ".avi"}
+
+
+@dataclass(frozen=True)
+class Job:
+    """What every line of one batch shares: inputs by path, settings, and what to write.
+
+    ``db_sha256`` is the database's sha256, computed once by the client; ``mesh`` and
+    ``binding`` are needed for the ``anim`` and ``avi`` outputs; ``redo`` (``--overwrite``)
+    redoes lines whose manifest matches.
+    """
+
+    db: Path
+    db_sha256: str
+    out_dir: Path
+    outputs: tuple[str, ...]
+    synthesize: SynthesizeSettings
+    ingest: IngestSettings
+    align: AlignSettings
+    deform: DeformSettings
+    render: RenderSettings
+    mesh: Path | None = None
+    binding: Path | None = None
+    redo: bool = False
+
+
+@dataclass
+class LineResult:
+    """The outcome of one line, one row of the summary. ``status``: ``ok``, ``skipped`` (up to
+    date from an earlier run) or ``failed`` (``reason`` says why). Times in seconds: wall time
+    of each phase, ``total_s`` of the whole line, ``cpu_s`` the CPU time of the worker process
+    for the line (all its threads), ``load_s`` reading the database (once per worker)."""
+
+    id: str
+    row: int
+    status: str
+    reason: str = ""
+    method: str = ""
+    phones: int = 0
+    audio_s: float = 0.0
+    align_s: float = 0.0
+    synthesize_s: float = 0.0
+    outputs_s: float = 0.0
+    total_s: float = 0.0
+    cpu_s: float = 0.0
+    load_s: float = 0.0
+    outputs: list[str] = field(default_factory=list)
+    warnings: list[str] = field(default_factory=list)
+    worker: str = ""
+
+
+_CACHE: dict = {}
+
+
+def _file_key(path: Path) -> tuple:
+    st = os.stat(path)
+    return (str(Path(path).resolve()), st.st_size, st.st_mtime_ns)
+
+
+def database(path: Path, settings: SynthesizeSettings):
+    """(MotionDatabase, transition costs for ``settings``), read once per worker process and file
+    version; returns the seconds spent loading (0 when cached) as a third item."""
+    from ..model.motiondb import MotionDatabase
+    from ..opencl import use_opencl
+
+    key = ("db", _file_key(path), settings_json(settings))
+    if key not in _CACHE:
+        started = time.perf_counter()
+        for old in [k for k in _CACHE if k[0] == "db"]:  # one database per worker at a time
+            del _CACHE[old]
+        db = MotionDatabase.read(path)
+        tc = db.transition_panels(settings) if use_opencl(settings.use_opencl) else db.transition(settings)
+        _CACHE[key] = (db, tc, time.perf_counter() - started)
+        return _CACHE[key]
+    db, tc, _ = _CACHE[key]
+    return db, tc, 0.0
+
+
+def bound_mesh(mesh: Path, binding: Path, marker_names: list[str], settings: DeformSettings):
+    """The mesh bound to the markers (Eq. 14 weights), computed once per worker process."""
+    from ..formats.mesh import read_binding, read_mesh
+    from ..stages.deform import bind
+
+    key = ("mesh", _file_key(mesh), _file_key(binding), tuple(marker_names), settings_json(settings))
+    if key not in _CACHE:
+        vertices, faces = read_mesh(mesh)
+        _CACHE[key] = bind(vertices, faces, read_binding(binding), marker_names, settings, str(mesh), str(binding))
+    return _CACHE[key]
+
+
+def _text_sha(text: str | None) -> str:
+    return hashlib.sha256((text or "").encode("utf-8")).hexdigest()
+
+
+def input_key(line: Line, job: Job) -> dict:
+    """Everything a line's outputs depend on: the sha256 of each input file, the text, the
+    emotion, the settings, the outputs asked and the facesynth version."""
+    files = {"audio": line.audio, "alignment": line.alignment, "emotions": line.emotions,
+             "constraints": line.constraints}
+    if set(job.outputs) & {"anim", "avi"}:
+        files.update(mesh=job.mesh, binding=job.binding)
+    key = {name: sha256_of(p) for name, p in files.items() if p is not None}
+    key.update(db=job.db_sha256, text=_text_sha(line.text) if line.alignment is None else "", emotion=line.emotion or "",
+               outputs=sorted(job.outputs), version=__version__,
+               settings={"synthesize": settings_json(job.synthesize), "ingest": settings_json(job.ingest),
+                         "align": settings_json(job.align) if line.alignment is None else "",
+                         "deform": settings_json(job.deform) if set(job.outputs) & {"anim", "avi"} else "",
+                         "render": settings_json(job.render) if "avi" in job.outputs else ""})
+    return key
+
+
+def manifest_path(job: Job, line_id: str) -> Path:
+    return job.out_dir / f"{line_id}.json"
+
+
+def output_paths(job: Job, line_id: str) -> dict[str, Path]:
+    return {kind: job.out_dir / f"{line_id}{SUFFIXES[kind]}" for kind in job.outputs}
+
+
+def _write_json(path: Path, data: dict) -> None:
+    with atomic_path(path, overwrite=True) as tmp:
+        tmp.write_text(json.dumps(data, indent=1, sort_keys=True) + "\n", encoding="utf-8")
+
+
+def _check_inputs(line: Line, job: Job) -> str:
+    """The line's emotion name (default neutral); raises InputError for a bad row."""
+    if line.audio is None:
+        raise InputError("no audio file given in the 'audio' column.")
+    for name, p in (("audio", line.audio), ("alignment", line.alignment), ("emotions", line.emotions),
+                    ("constraints", line.constraints)):
+        if p is not None and not p.is_file():
+            raise InputError(f"{name} file {p} not found; check the path (relative to the script's folder).")
+    if line.alignment is None and not (line.text or "").strip():
+        raise InputError("the text is empty and no alignment is given; give what is said.")
+    if line.emotion and line.emotions:
+        raise InputError("both an emotion and an emotions file are given; give one.")
+    name = (line.emotion or "neutral").strip().lower()
+    name = dict(job.ingest.emotion_aliases).get(name, name)
+    if name not in job.ingest.emotions:
+        raise InputError(f"unknown emotion {line.emotion!r}; use one of {', '.join(job.ingest.emotions)}.")
+    return name
+
+
+def run_line(line: Line, job: Job) -> LineResult:
+    """Do one line; never raises for a problem of the line's inputs (the result says why it
+    failed). A bug still raises, so the runner records its traceback."""
+    started, cpu = time.perf_counter(), time.process_time()
+    result = LineResult(line.id, line.row, "failed", worker=f"pid {os.getpid()}")
+    old = key = None
+    try:
+        if line.problem:
+            raise InputError(line.problem)
+        old = _read_manifest(manifest_path(job, line.id))
+        emotion = _check_inputs(line, job)
+        key = input_key(line, job)
+        outputs = output_paths(job, line.id)
+        if not job.redo and old is not None and old.get("inputs") == key and old.get("status") == "ok" \
+                and all(p.exists() for p in outputs.values()):
+            recorded = old.get("result", {})
+            for name in ("method", "phones", "audio_s", "warnings"):
+                if name in recorded:
+                    setattr(result, name, recorded[name])
+            result.status, result.outputs = "skipped", sorted(p.name for p in outputs.values())
+            result.total_s, result.cpu_s = time.perf_counter() - started, time.process_time() - cpu
+            return result
+        made_here = set(old.get("outputs", [])) if old is not None else set()
+        for p in list(outputs.values()) + [job.out_dir / f"{line.id}.TextGrid"]:
+            if p.exists() and p.name not in made_here and not job.redo:
+                raise InputError(f"{p} exists and was not written by this batch; remove it or pass --overwrite.")
+        _do_line(line, job, emotion, key, outputs, result)
+        result.status = "ok"
+    except FacesynthError as exc:
+        if not line.problem:  # a line with a duplicated id must not touch the first one's files
+            stale = old if old is not None and old.get("inputs") != key else None
+            _remove_partial(job, line.id, result.outputs, stale)
+        result.status, result.reason, result.outputs = "failed", str(exc), []
+    result.total_s, result.cpu_s = time.perf_counter() - started, time.process_time() - cpu
+    return result
+
+
+def _remove_partial(job: Job, line_id: str, written: list[str], stale: dict | None) -> None:
+    """After a line failed: remove what this attempt wrote, and the outputs and manifest of an
+    earlier run from other inputs (``stale``), so the folder never shows outputs that do not
+    belong to the script's line."""
+    names = set(written) | (set(stale.get("outputs", [])) | {f"{line_id}.json"} if stale is not None else set())
+    for name in names:
+        (job.out_dir / name).unlink(missing_ok=True)
+
+
+def _read_manifest(path: Path) -> dict | None:
+    try:
+        return json.loads(path.read_text("utf-8"))
+    except (OSError, ValueError):
+        return None
+
+
+def _do_line(line: Line, job: Job, emotion: str, key: dict, outputs: dict[str, Path], result: LineResult) -> None:
+    from ..search.inputs import apply_emotions, read_constraints, utterance
+    from ..search.synthesis import as_motion, synthesize
+
+    t0 = time.perf_counter()
+    samples, rate = read_audio(line.audio)
+    result.audio_s = len(samples) / rate
+    if line.alignment is not None:
+        segments = read_phone_segments(line.alignment, job.ingest.phone_tiers)
+        labels = map_phones([s.label for s in segments], str(line.alignment), [s.start for s in segments])
+        segments = [Segment(s.start, s.end, label) for s, label in zip(segments, labels)]
+        result.method = "given"
+        if segments[-1].end > result.audio_s + job.ingest.max_audio_mismatch_s:
+            raise InputError(f"the alignment {line.alignment} ends at {segments[-1].end:.2f} s, after the audio "
+                             f"({result.audio_s:.2f} s); give the alignment of this audio.")
+    else:
+        try:
+            aligned = align_robust(samples, rate, line.text, settings=job.align, where=str(line.audio))
+        except AlignmentFailed as exc:
+            raise InputError(str(exc)) from None
+        segments, result.method, result.warnings = aligned.phones, aligned.method, list(aligned.warnings)
+        if aligned.mismatch:
+            raise InputError("the transcript does not match the speech: " + "; ".join(aligned.warnings))
+        aligned_words = aligned.words
+    result.phones = sum(s.label != PAU for s in segments)
+    result.align_s = time.perf_counter() - t0
+
+    t0 = time.perf_counter()
+    db, tc, result.load_s = database(job.db, job.synthesize)
+    utt = utterance([s.label for s in segments], [s.start for s in segments], [s.end for s in segments])
+    if line.emotions is not None:
+        apply_emotions(utt, line.emotions, job.ingest.emotions, job.ingest.emotion_aliases)
+    else:
+        utt.emotions = [emotion] * len(utt)
+    constraints = read_constraints(line.constraints, utt, db.nodes.phone) if line.constraints else {}
+    res = synthesize(db, utt, constraints, job.synthesize, tc=tc)
+    motion = as_motion(db, utt, res, job.synthesize)
+    result.synthesize_s = time.perf_counter() - t0 - result.load_s
+
+    t0 = time.perf_counter()
+    if line.alignment is None:
+        grid = job.out_dir / f"{line.id}.TextGrid"
+        with atomic_path(grid, overwrite=True) as tmp:
+            write_textgrid(tmp, {"phones": segments, "words": aligned_words}, segments[-1].end)
+        result.outputs.append(grid.name)
+    records = [{"path": str(job.db), "kind": "motiondb", "sha256": job.db_sha256}]
+    records += [{"path": str(p), "kind": None, "sha256": key[name]}
+                for name, p in (("audio", line.audio), ("alignment", line.alignment), ("emotions", line.emotions),
+                                ("constraints", line.constraints)) if p is not None]
+    motion_path = outputs.get("motion") or job.out_dir / f"{line.id}.motion.h5.part-{os.getpid()}"
+    keep_motion = "motion" in outputs
+    motion.write(motion_path, config=settings_json(job.synthesize), records=records, overwrite=True)
+    if keep_motion:
+        result.outputs.append(motion_path.name)
+    try:
+        if set(job.outputs) & {"anim", "avi"}:
+            _mesh_outputs(line, job, motion, motion_path, outputs, result)
+    finally:
+        if not keep_motion:
+            motion_path.unlink(missing_ok=True)
+    result.outputs_s = time.perf_counter() - t0
+    _write_json(manifest_path(job, line.id), {
+        "id": line.id, "status": "ok", "inputs": key, "outputs": sorted(result.outputs),
+        "result": {"method": result.method, "phones": result.phones, "audio_s": result.audio_s,
+                   "warnings": result.warnings}})
+
+
+def _mesh_outputs(line: Line, job: Job, motion, motion_path: Path, outputs: dict[str, Path], result: LineResult) -> None:
+    """The mesh animation (Eq. 14-15) and its video with the line's audio."""
+    from ..model.meshanim import MeshAnimation
+    from ..stages.deform import animate
+    from ..stages.render import run as render
+
+    if job.mesh is None or job.binding is None:
+        raise InputError("the anim and avi outputs need --mesh and --binding.")
+    bound = bound_mesh(job.mesh, job.binding, motion.marker_names, job.deform)
+    head = motion.head(motion_path) if job.deform.apply_head_motion else None
+    frames, fit = animate(bound, motion.markers, motion.marker_names, motion.reference, head)
+    anim = MeshAnimation(frames, motion.fps, bound.rest, bound.faces, motion.markers, motion.marker_names,
+                         bound.weights, bound.markers, bound.vertex_of, fit["fit_rms"])
+    anim_path = outputs.get("anim") or job.out_dir / f"{line.id}.anim.h5.part-{os.getpid()}"
+    anim.write(anim_path, config=settings_json(job.deform), inputs=[motion_path, job.mesh, job.binding],
+               overwrite=True)
+    if "anim" in outputs:
+        result.outputs.append(anim_path.name)
+    try:
+        if "avi" in outputs:
+            render([anim_path], [line.audio], outputs["avi"], job.render, None, overwrite=True)
+            result.outputs.append(outputs["avi"].name)
+    finally:
+        if "anim" not in outputs:
+            anim_path.unlink(missing_ok=True)

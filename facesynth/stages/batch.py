@@ -1,0 +1,77 @@
+"""``facesynth batch``: a script of dialogue lines -> per-line motion (and mesh animation,
+video) on Dask, with a summary of every line (see :mod:`facesynth.batch`).
+
+The script is checked first: a file without the required columns is refused before any work
+(and before a cluster is started). Each line then runs as one task; the summary
+(``summary.csv``, ``summary.html``) lists status, the alignment method, phone count, timings
+and the reason of every failure.
+"""
+
+from __future__ import annotations
+
+import time
+from pathlib import Path
+from typing import Callable
+
+from ..artifacts import check_output_folder, open_artifact, sha256_of
+from ..config import (AlignSettings, BatchSettings, DeformSettings, IngestSettings, RenderSettings,
+                      SynthesizeSettings)
+from ..errors import InputError, UsageError
+from ..batch.line import Job, LineResult
+from ..batch.report import write_summary
+from ..batch.runner import dask_client, run_lines
+from ..batch.script import read_script
+from ..progress import progress
+
+
+def prepare(script: Path, db: Path, out_dir: Path, settings: BatchSettings, synthesize: SynthesizeSettings,
+            ingest: IngestSettings, align: AlignSettings, deform: DeformSettings, render: RenderSettings, *,
+            mesh: Path | None = None, binding: Path | None = None, overwrite: bool = False):
+    """Check the request and read the script; returns (lines, Job). Creates ``out_dir``."""
+    if set(settings.outputs) & {"anim", "avi"} and (mesh is None or binding is None):
+        raise UsageError("the anim and avi outputs need --mesh and --binding (e.g. corpus/face.obj and corpus/markers.csv).")
+    if "avi" in settings.outputs and abs(render.fps - synthesize.output_fps) > 1e-6:
+        raise InputError(f"render.fps ({render.fps:g}) differs from synthesize.output_fps ({synthesize.output_fps:g}); "
+                         "set one to the other for the avi output.")
+    lines = read_script(script)
+    open_artifact(db, "motiondb").close()
+    check_output_folder(out_dir, "the batch outputs")
+    out_dir.mkdir(parents=True, exist_ok=True)
+    job = Job(db.resolve(), sha256_of(db), out_dir.resolve(), tuple(settings.outputs), synthesize, ingest, align,
+              deform, render, mesh.resolve() if mesh else None, binding.resolve() if binding else None, overwrite)
+    return lines, job
+
+
+def run(script: Path, db: Path, out_dir: Path, settings: BatchSettings, synthesize: SynthesizeSettings,
+        ingest: IngestSettings, align: AlignSettings, deform: DeformSettings, render: RenderSettings, *,
+        mesh: Path | None = None, binding: Path | None = None, scheduler: str | None = None, overwrite: bool = False,
+        on_result: Callable[[LineResult], None] | None = None, client=None) -> dict:
+    """Run every line of ``script`` and write the summary into ``out_dir``. ``client``: an open
+    ``distributed.Client`` to use instead of creating one (tests, notebooks). Returns counts
+    by status, the results, the summary paths and the wall time (s)."""
+    lines, job = prepare(script, db, out_dir, settings, synthesize, ingest, align, deform, render, mesh=mesh,
+                         binding=binding, overwrite=overwrite)
+    started = time.perf_counter()
+    counts = {"ok": 0, "skipped": 0, "failed": 0}
+
+    def show(_) -> str:
+        return f"{counts['ok'] + counts['skipped']} done, {counts['failed']} failed"
+
+    def gather(active) -> list[LineResult]:
+        results = []
+        for result in progress(run_lines(lines, job, active), "lines", length=len(lines), show=show):
+            counts[result.status] += 1
+            results.append(result)
+            if on_result is not None:
+                on_result(result)
+        return sorted(results, key=lambda r: r.row)
+
+    if client is not None:
+        results = gather(client)
+    else:
+        with dask_client(scheduler, settings.workers) as new_client:
+            results = gather(new_client)
+    csv_path, html_path = write_summary(job.out_dir, results, f"facesynth batch {script.name}")
+    counts = {s: sum(r.status == s for r in results) for s in ("ok", "skipped", "failed")}
+    return {**counts, "lines": len(results), "results": results, "csv": csv_path, "html": html_path,
+            "seconds": time.perf_counter() - started}

@@ -1,0 +1,123 @@
+"""facesynth batch on a real Dask LocalCluster of two worker processes and the tiny corpus."""
+
+import csv
+import dataclasses
+import json
+
+import pytest
+from click.testing import CliRunner
+
+pytest.importorskip("distributed", reason="facesynth batch needs dask[distributed] (pip install 'dask[distributed]')")
+
+from facesynth.cli import main  # noqa: E402
+from facesynth.stages import batch  # noqa: E402
+
+
+@pytest.fixture(scope="module")
+def client():
+    from distributed import Client, LocalCluster
+
+    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0") as cluster, \
+            Client(cluster) as c:
+        yield c
+
+
+@pytest.fixture(scope="module")
+def takes(tiny_corpus):
+    return {r["take"]: r for r in csv.DictReader(open(tiny_corpus / "manifest.csv"))}
+
+
+def _settings(config, **batch_values):
+    names = ("batch", "synthesize", "ingest", "align", "deform", "render")
+    values = [config.settings(n) for n in names]
+    values[0] = dataclasses.replace(values[0], **batch_values)
+    return values
+
+
+def _write(path, rows):
+    with open(path, "w", newline="") as fh:
+        csv.writer(fh).writerows(rows)
+    return path
+
+
+def test_lines_fail_alone_with_their_reason_and_a_rerun_skips_what_is_done(tiny_corpus, tiny_db, takes, config,
+                                                                         client, tmp_path):
+    a, b, c = (takes[t] for t in ("neutral_s001", "happy_s002", "sad_s003"))
+    audio = lambda row: str(tiny_corpus / row["audio"])  # noqa: E731
+    script = _write(tmp_path / "script.csv", [
+        ("id", "audio", "text", "alignment", "emotion"),
+        ("aligned", audio(a), a["transcript"], "", "happy"),
+        ("given", audio(b), "", str(tiny_corpus / b["alignment"]), "sad"),
+        ("no_audio", str(tmp_path / "missing.wav"), "hello", "", ""),
+        ("empty", audio(c), "", "", ""),
+        ("moody", audio(c), c["transcript"], "", "furious"),
+        ("aligned", audio(c), c["transcript"], "", ""),
+        ("partial", audio(c), c["transcript"].split()[0], "", ""),
+        ("too_short", audio(c), " ".join([c["transcript"]] * 8), "", ""),
+    ])
+    out = tmp_path / "out"
+    s = batch.run(script, tiny_db, out, *_settings(config), client=client)
+    status = {(r.id, r.row): (r.status, r.reason) for r in s["results"]}
+    assert (s["ok"], s["failed"], s["skipped"]) == (2, 6, 0)
+    assert status[("aligned", 2)][0] == status[("given", 3)][0] == "ok"
+    assert "missing.wav not found" in status[("no_audio", 4)][1]
+    assert "the text is empty" in status[("empty", 5)][1]
+    assert "unknown emotion 'furious'" in status[("moody", 6)][1]
+    assert "id 'aligned' is already used by row 2" in status[("aligned", 7)][1]
+    assert "the transcript does not match the speech" in status[("partial", 8)][1]
+    assert "too short for its text" in status[("too_short", 9)][1]
+    for name in ("aligned.motion.h5", "aligned.TextGrid", "aligned.json", "given.motion.h5", "given.json"):
+        assert (out / name).exists(), name
+    assert not (out / "given.TextGrid").exists() and not (out / "partial.motion.h5").exists()
+    summary = list(csv.DictReader(open(out / "summary.csv")))
+    assert [r["id"] for r in summary] == ["aligned", "given", "no_audio", "empty", "moody", "aligned", "partial",
+                                          "too_short"]
+    assert summary[0]["method"] == "pocketsphinx" and summary[1]["method"] == "given" and int(summary[0]["phones"]) > 5
+    assert "furious" in (out / "summary.html").read_text()
+    manifest = json.loads((out / "aligned.json").read_text())
+    assert manifest["status"] == "ok" and len(manifest["inputs"]["audio"]) == 64
+
+    before = (out / "aligned.motion.h5").stat().st_mtime_ns
+    again = batch.run(script, tiny_db, out, *_settings(config), client=client)
+    assert (again["ok"], again["skipped"], again["failed"]) == (0, 2, 6)
+    assert (out / "aligned.motion.h5").stat().st_mtime_ns == before
+
+    changed = _write(tmp_path / "script.csv", [("id", "audio", "text", "emotion"),
+                                               ("aligned", audio(a), a["transcript"], "angry")])
+    third = batch.run(changed, tiny_db, out, *_settings(config), client=client)
+    assert (third["ok"], third["skipped"]) == (1, 0)
+    assert json.loads((out / "aligned.json").read_text())["inputs"]["emotion"] == "angry"
+
+    broken = _write(tmp_path / "script.csv", [("id", "audio", "text"), ("aligned", str(tmp_path / "gone.wav"), "x")])
+    fourth = batch.run(broken, tiny_db, out, *_settings(config), client=client)
+    assert fourth["failed"] == 1  # and the outputs of the earlier inputs are gone, not left looking current
+    assert not any((out / f"aligned{suffix}").exists() for suffix in (".motion.h5", ".TextGrid", ".json"))
+
+
+def test_anim_and_video_outputs(tiny_corpus, tiny_db, takes, config, client, tmp_path):
+    row = takes["neutral_s001"]
+    script = _write(tmp_path / "s.csv", [("id", "audio", "alignment"),
+                                         ("one", str(tiny_corpus / row["audio"]), str(tiny_corpus / row["alignment"]))])
+    settings = _settings(config, outputs=("anim", "avi"))
+    settings[5] = dataclasses.replace(settings[5], width=64, height=48)
+    s = batch.run(script, tiny_db, tmp_path / "out", *settings, mesh=tiny_corpus / "face.obj",
+                  binding=tiny_corpus / "markers.csv", client=client)
+    assert s["ok"] == 1, s["results"][0].reason
+    assert (tmp_path / "out" / "one.avi").stat().st_size > 0 and (tmp_path / "out" / "one.anim.h5").exists()
+    assert not (tmp_path / "out" / "one.motion.h5").exists()
+    assert not list((tmp_path / "out").glob("*.part-*")) and not list((tmp_path / "out").glob("*.tmp-*"))
+
+
+def test_command_exit_status_and_a_malformed_script(tiny_corpus, tiny_db, takes, tmp_path):
+    bad = _write(tmp_path / "bad.csv", [("name", "audio"), ("x", "y.wav")])
+    r = CliRunner().invoke(main, ["batch", str(bad), "--db", str(tiny_db), "-o", str(tmp_path / "o")])
+    assert r.exit_code == 1 and r.output.count("\n") == 1 and "lacks the column(s) id, text (or alignment)" in r.output
+    assert not (tmp_path / "o").exists()
+    row = takes["neutral_s001"]
+    script = _write(tmp_path / "s.csv", [("id", "audio", "alignment"),
+                                         ("ok", str(tiny_corpus / row["audio"]), str(tiny_corpus / row["alignment"])),
+                                         ("bad", str(tmp_path / "none.wav"), str(tiny_corpus / row["alignment"]))])
+    r = CliRunner().invoke(main, ["batch", str(script), "--db", str(tiny_db), "-o", str(tmp_path / "o"),
+                                  "--workers", "2"])
+    assert r.exit_code == 1 and "1 of 2 lines failed (first: bad: audio file" in r.output
+    assert "Traceback" not in r.output and (tmp_path / "o" / "ok.motion.h5").exists()
