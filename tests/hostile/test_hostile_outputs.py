@@ -232,13 +232,13 @@ def test_compression_bomb_is_refused_before_reading(tiny_artifacts, tmp_path):
     assert time.perf_counter() - started < 5
 
 
-def test_negative_costs_in_the_pair_tables_are_refused(tiny_db, tiny_corpus, held_out_take, tmp_path):
+def test_negative_distances_in_the_transition_features_are_refused(tiny_db, tiny_corpus, held_out_take, tmp_path):
     db = _copy(tiny_db, tmp_path / "db.h5")
     with h5py.File(db, "r+") as f:
-        f["pairs/pgap"][3, 5] = -2960.0
+        f["transition/pivot_last_pos"][3, 0] = -2960.0
     r = _run("synthesize", db, "--phonemes", tiny_corpus / "labels" / f"{held_out_take}.TextGrid",
              "-o", tmp_path / "m.h5", "--set", "synthesize.use_opencl=false")
-    _one_error(r, 1, "db.h5: /pairs/pgap: holds -2960, below the smallest allowed value 0")
+    _one_error(r, 1, "db.h5: /transition/pivot_last_pos: holds -2960, below the smallest allowed value 0")
     assert not (tmp_path / "m.h5").exists()
 
 
