@@ -20,7 +20,8 @@ Not one dominance blend, but a small articulatory model with separate, coupled a
   contact, ``mouthClose`` is solved on the rig (linear in the weights) so that the inner-lip
   line of the lower lip meets the upper lip whatever the jaw, the emotion or the other lip
   shapes do; the drive's excess beyond contact becomes lip press. The jaw keeps its own
-  trajectory through the closure.
+  trajectory through the closure. The closure moves the lower lip no faster than
+  :data:`MAX_LIP_SPEED_MM_S`: from a wide-open vowel it starts earlier and releases later.
 * **Left/right asymmetry**: every sided channel (``_L``/``_R``) gets a per-take gain and a
   per-token jitter on each side.
 
@@ -104,9 +105,6 @@ VISEME_TARGETS: dict[str, dict[str, float]] = {
     "g": _t(jawOpen=0.16, lowerDown=0.1), "ng": _t(jawOpen=0.15), "hh": _t(jawOpen=0.2, lowerDown=0.15),
     PAU: _t(jawOpen=0.02),
 }
-#: Weak phones (unstressed reduced vowels, alveolars, velars) take less of their target:
-#: the amount by which their own target counts against the neighbours' is smaller.
-_SIDED = frozenset({"press", "stretch", "upperUp", "lowerDown", "spread"})
 
 
 @dataclass(frozen=True)

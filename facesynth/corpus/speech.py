@@ -18,7 +18,6 @@ import numpy as np
 from scipy.signal import butter, lfilter, sosfilt
 
 from ..phonemes import PAU, VOWELS, pronunciations, to_festival
-from .expression import EMOTIONS
 
 
 @dataclass(frozen=True)
@@ -39,6 +38,7 @@ class EmotionStyle:
     blink_duration: float
 
 
+#: One style per emotion of :data:`facesynth.corpus.expression.EMOTIONS`.
 STYLES = {
     "neutral": EmotionStyle(1.00, 1.00, 1.00, 195.0, 25.0, 1.0, 1.0, 1.0),
     "happy": EmotionStyle(0.93, 1.05, 1.08, 235.0, 45.0, 1.1, 1.2, 0.9),

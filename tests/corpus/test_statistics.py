@@ -2,7 +2,6 @@
 
 from pathlib import Path
 
-import numpy as np
 import pytest
 
 from facesynth.corpus.statistics import COMPARED_SHAPES, MOUTH_SHAPES, curve_statistics, read_live_link_face, resample

@@ -1,7 +1,6 @@
 """The fitted Cohen-Massaro model recovers a dominance blend it could have made."""
 
 import numpy as np
-import pytest
 
 from facesynth.motion.dominance import DominanceModel, fit_dominance, token_weights
 
