@@ -271,22 +271,29 @@ def voicing(audio: np.ndarray, settings: AlignSettings, threshold: float = 0.5) 
     return peak > threshold * np.maximum(r[:, 0], 1e-12)
 
 
-def longest_voiced_pause(phones: list[Segment], active: np.ndarray, hop: float, skip: int = 0) -> tuple[float, float]:
-    """The longest run of active frames (``active`` (n_frames,) bool, ``hop`` s a frame) inside a
-    ``pau`` segment of ``phones``: (its length in s, its start in s); (0, 0) when none. The
-    ``skip`` longest pauses' runs are left out (non-speech the transcript marks)."""
+def longest_voiced_pause(phones: list[Segment], active: np.ndarray, hop: float, skip: int = 0,
+                         bridge_s: float = 0.2) -> tuple[float, float]:
+    """The longest stretch of active frames (``active`` (n_frames,) bool, ``hop`` s a frame) inside
+    a ``pau`` segment of ``phones``: (its length in s, its start in s); (0, 0) when none. Runs
+    less than ``bridge_s`` apart are one stretch (the unvoiced consonants and closures inside
+    speech). The ``skip`` longest pauses' stretches are left out (non-speech the transcript marks)."""
+    gap = int(round(bridge_s / hop))
     found = []
     for s in phones:
         if s.label != PAU:
             continue
         a, b = int(np.ceil(s.start / hop)), int(np.floor(s.end / hop))
-        inside = active[a:b]
-        if not inside.any():
+        runs = _runs(active[a:b])
+        if not runs:
             continue
-        edges = np.diff(np.concatenate([[0], inside.astype(np.int8), [0]]))
-        starts, ends = np.nonzero(edges == 1)[0], np.nonzero(edges == -1)[0]
-        k = int(np.argmax(ends - starts))
-        found.append(((ends[k] - starts[k]) * hop, (a + starts[k]) * hop))
+        merged = [list(runs[0])]
+        for start, stop in runs[1:]:
+            if start - merged[-1][1] < gap:
+                merged[-1][1] = stop
+            else:
+                merged.append([start, stop])
+        start, stop = max(merged, key=lambda r: r[1] - r[0])
+        found.append(((stop - start) * hop, (a + start) * hop))
     found.sort(key=lambda x: -x[0])
     best, at = found[skip] if len(found) > skip else (0.0, 0.0)
     return round(best, 3), round(at, 3)
