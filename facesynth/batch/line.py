@@ -107,7 +107,7 @@ def database(path: Path, settings: SynthesizeSettings):
         for old in [k for k in _CACHE if k[0] == "db"]:  # one database per worker at a time
             del _CACHE[old]
         db = MotionDatabase.read(path)
-        tc = db.transition_panels(settings) if use_opencl(settings.use_opencl) else db.transition(settings)
+        tc = db.transition_costs(settings, use_opencl(settings.use_opencl))
         _CACHE[key] = (db, tc, time.perf_counter() - started)
         return _CACHE[key]
     db, tc, _ = _CACHE[key]

@@ -57,7 +57,7 @@ class MeshAnimation:
             g.create_dataset("rest", data=self.rest.astype(np.float32))
             g.create_dataset("faces", data=self.faces.astype(np.int32))
             w = stamp(g.create_group("weights"), "csr-matrix")
-            w.create_dataset("data", data=self.weights.data)
+            w.create_dataset("data", data=self.weights.data.astype(np.float32))
             w.create_dataset("indices", data=self.weights.indices)
             w.create_dataset("indptr", data=self.weights.indptr)
             w.attrs["shape"] = self.weights.shape

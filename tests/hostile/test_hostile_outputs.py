@@ -268,7 +268,7 @@ def test_memory_is_estimated_before_heavy_work(tiny_artifacts, tmp_path, monkeyp
     monkeypatch.setattr(limits, "mem_available", lambda: 100 << 20)
     monkeypatch.setattr(build_db, "build_nodes", lambda *a: type("Nodes", (), {"__len__": lambda self: 10_000})())
     _one_error(_run("build-db", tiny_artifacts["pca"], "-o", tmp_path / "db.h5"), 1,
-               "pca.h5: the pair tables of 10000 motion nodes needs about 2.4 GB of memory but 104.9 MB is available")
+               "pca.h5: the boundary states of 10000 motion nodes needs about 131.0 MB of memory but 104.9 MB is available")
 
 
 # --- each input read once ---------------------------------------------------------------
@@ -298,9 +298,9 @@ def test_a_database_replaced_while_synthesize_runs_is_not_mixed(tiny_db, tmp_pat
     d = MotionDatabase.read(db)
     replaced = tmp_path / "other.h5"
     with h5py.File(_copy(tiny_db, replaced), "r+") as f:
-        f["pairs/pgap"][...] = 1e6
+        f["boundary/first_pos"][...] = 1e6
     os.replace(replaced, db)  # another process replaces the file between the reads
     tc = d.transition(Config.load().settings("synthesize"))
-    assert np.isfinite(tc).all() and tc.max() < 1e6  # still the validated snapshot's terms
+    assert np.isfinite(tc).all() and tc.max() < 1e5  # still the validated snapshot's features
     with pytest.raises(InputError, match="was replaced while this command ran"):
         artifacts.input_record(db)
