@@ -67,6 +67,57 @@ inline float pair_tc(const int i, const int j,
     return tc;
 }
 
+// pair_tc for rule 2/3 pairs, abandoned as soon as a lower bound of TC reaches `limit`: the
+// viseme penalty, then PGap and VGap in lane partial sums (all non-negative, so a partial sum
+// never exceeds the full one), shrunk by 1e-4 relative and `slack` absolute against rounding.
+// Returns INFINITY when abandoned, else exactly pair_tc's value (the same sums in the same
+// order; the three sums are independent, so computing DSC last changes nothing).
+inline float pair_tc_below(const int i, const int j, const float limit, const float slack,
+                           __global const float *x, __global const float *y, __global const float *scale,
+                           __global const float *last_pos, __global const float *first_pos,
+                           __global const float *last_vel, __global const float *first_vel,
+                           __global const int *vis, __global const int *pre, __global const int *pre_vis,
+                           const float a2, const float a3, const float pnt, const float a1pnt)
+{
+    const float pen = vis[i] != pre_vis[j] ? pnt : 0.0f;
+    const size_t stride = (size_t)3 * MQ * 8;
+    __global const float8 *l = (__global const float8 *)(last_pos + (size_t)i * stride);
+    __global const float8 *f = (__global const float8 *)(first_pos + (size_t)j * stride);
+    float8 acc = (float8)(0.0f);
+    for (int q = 0; q < MQ; ++q) {
+        const float8 dx = f[q] - l[q];
+        const float8 dy = f[MQ + q] - l[MQ + q];
+        const float8 dz = f[2 * MQ + q] - l[2 * MQ + q];
+        acc = acc + sqrt(dx * dx + dy * dy + dz * dz);
+        if ((q & 3) == 3 && (pen + a3 * lanes(acc)) * 0.9999f - slack >= limit) return INFINITY;
+    }
+    const float pg = lanes(acc);
+    l = (__global const float8 *)(last_vel + (size_t)i * stride);
+    f = (__global const float8 *)(first_vel + (size_t)j * stride);
+    acc = (float8)(0.0f);
+    for (int q = 0; q < MQ; ++q) {
+        const float8 dx = f[q] - l[q];
+        const float8 dy = f[MQ + q] - l[MQ + q];
+        const float8 dz = f[2 * MQ + q] - l[2 * MQ + q];
+        acc = acc + sqrt(dx * dx + dy * dy + dz * dz);
+    }
+    const float vg = lanes(acc);
+    if ((pen + a3 * pg + vg) * 0.9999f - slack >= limit) return INFINITY;
+    __global const float8 *xi = (__global const float8 *)(x + (size_t)i * DIMS8 * 8);
+    __global const float8 *yj = (__global const float8 *)(y + (size_t)j * DIMS8 * 8);
+    acc = (float8)(0.0f);
+    for (int d = 0; d < DIMS8; ++d) {
+        const float8 s = xi[d] + yj[d];
+        acc = acc + s * s;
+    }
+    const float dsc = lanes(acc) * scale[j];
+    float tc = a2 * dsc;
+    tc = tc + a3 * pg;
+    tc = tc + vg;
+    tc = tc + pen;
+    return tc;
+}
+
 #define PAIR_ARGS x, y, scale, last_pos, first_pos, last_vel, first_vel, vis, pre, pre_vis, a2, a3, pnt, a1pnt
 #define FEATURE_PARAMS __global const float *x, __global const float *y, __global const float *scale, \
     __global const float *last_pos, __global const float *first_pos, \
@@ -135,7 +186,8 @@ __kernel void pruned_columns(FEATURE_PARAMS,
         }
         const float lb = ((vis[i] != pre_vis[j] ? pnt : 0.0f) + a3 * lp + lv) * 0.9999f - slack;
         if (p + lb >= best) continue;
-        const float v = p + pair_tc(i, j, PAIR_ARGS);
+        // best - p rounds by at most 2^-24 best (costs are >= 0); the limit allows for that
+        const float v = p + pair_tc_below(i, j, (best - p) + best * 2.4e-7f, slack, PAIR_ARGS);
         best = v < best ? v : best;
         ++evals;
     }
