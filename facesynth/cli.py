@@ -803,7 +803,8 @@ def expression_analyze(ctx: Context, model: Path, motion: Path):
 
     \b
     Example:
-      facesynth expression analyze expr.h5 motion.h5
+      facesynth expression fit normalized.h5 -o expr.h5
+      facesynth expression analyze expr.h5 motion.h5 > styles.csv
     """
     from .stages import expression as stage
 
@@ -822,9 +823,15 @@ def expression_analyze(ctx: Context, model: Path, motion: Path):
 def expression_restyle(ctx: Context, model: Path, motion: Path, to, emotions, intensity: float, output: Path):
     """Re-synthesize marker motion (captured or synthesized) in another expression (Eq. 7).
 
+    Frames outside every --emotions span keep their own expression. The output is a motion
+    artifact: deform, render and evaluate take it as they take a synthesis.
+
     \b
     Example:
+      facesynth expression fit normalized.h5 -o expr.h5
       facesynth expression restyle expr.h5 motion.h5 --to happy --intensity 0.6 -o happy.h5
+      echo "0.5 1.5 angry" > spans.txt
+      facesynth expression restyle expr.h5 motion.h5 --emotions spans.txt --intensity 1 -o angry.h5
     """
     from .stages import expression as stage
 
@@ -846,9 +853,16 @@ def expression_restyle(ctx: Context, model: Path, motion: Path, to, emotions, in
 def head_motion(ctx: Context, db: Path, audio: Path, corpus_path: Path, output: Path):
     """Head motion for new speech from captured segments matched by pitch (Chuang & Bregler 2005 §5).
 
+    The training takes' audio comes from the corpus artifact (ingest stores every take's
+    samples); pitch is pYIN's (librosa). An utterance without voiced speech gets the rest pose
+    and a warning.
+
     \b
     Example:
       facesynth head-motion db.h5 --corpus corpus.h5 --audio corpus/audio/neutral_s016.wav -o head.h5
+      facesynth synthesize db.h5 --phonemes corpus/labels/neutral_s016.TextGrid --head-motion head.h5 -o moving.h5
+      facesynth deform moving.h5 --mesh corpus/face.obj --binding corpus/markers.csv \\
+          --set deform.apply_head_motion=true -o moving_anim.h5
     """
     from .stages import head_motion as stage
 

@@ -273,6 +273,8 @@ class ExpressionSettings:
     tolerance: float = setting("Eq. 4-6 fit: stop when an iteration lowers the error by less than this fraction",
                                unit="fraction", ge=0, lt=1)
     analyze_iterations: int = setting("Eq. 5-6 ('iterate over these two equations until convergence')", ge=1)
+    analyze_init: str = setting("§3.3 (mean_content: the mean content vector, as the paper); best_style: the fitted "
+                                "style that explains each frame best", choices=("mean_content", "best_style"))
     transition_s: float = setting("not in the paper: Gaussian sigma easing the style between emotion spans",
                                   unit="s", ge=0)
     style_smoothing_s: float = setting("not in the paper (its §7 notes per-frame jitter): Gaussian sigma smoothing "

@@ -135,12 +135,13 @@ def _affine_weights(A: np.ndarray, y: np.ndarray) -> np.ndarray:
     return np.einsum("tij,tj->ti", np.linalg.pinv(kkt), rhs)[:, :S]
 
 
-def analyze(model: BilinearModel, coeffs: np.ndarray, *, iterations: int) -> tuple[np.ndarray, np.ndarray]:
+def analyze(model: BilinearModel, coeffs: np.ndarray, *, iterations: int, init: str = "mean_content"
+            ) -> tuple[np.ndarray, np.ndarray]:
     """Each frame's style and content vectors (§3.3, Eq. 5-6).
 
     coeffs : (T, K) PCA coefficients. Returns style (T, I) and content (T, J).
 
-    Eq. 5 and 6 alternate from the mean training content vector. Eq. 5 solves the style as
+    Eq. 5 and 6 alternate from ``init`` (see below). Eq. 5 solves the style as
     an affine combination of the fitted style vectors (weights summing to one): solved freely,
     a frame's style and content trade off (any e -> k e, c -> c / k, and with K PCA components
     close to I + J the content absorbs the style), so the style found is not comparable with
@@ -148,8 +149,18 @@ def analyze(model: BilinearModel, coeffs: np.ndarray, *, iterations: int) -> tup
     span it is on their scale, and a frame of a fitted emotion analyses to about its vector.
     """
     T = len(coeffs)
-    c = np.broadcast_to(model.content_mean, (T, len(model.content_mean))).copy()
+    # init "mean_content": the paper's start (the mean training content vector); "best_style":
+    # the fitted style that explains the frame best with its own content (Eq. 6 per style),
+    # which finds exact bilinear frames exactly where the paper's start may settle elsewhere
+    best_err = np.full(T, np.inf)
     e = np.zeros((T, model.styles.shape[1]))
+    c = np.broadcast_to(model.content_mean, (T, len(model.content_mean))).copy()
+    for style in (model.styles if init == "best_style" else ()):
+        es = np.broadcast_to(style, (T, len(style)))
+        cs = _solve_rows(_content_matrix(model.W, es), coeffs)
+        err = np.sum((synthesize(model, es, cs) - coeffs) ** 2, axis=1)
+        better = err < best_err
+        best_err[better], e[better], c[better] = err[better], style, cs[better]
     for _ in range(iterations):
         w = _affine_weights(np.einsum("tki,si->tks", _style_matrix(model.W, c), model.styles), coeffs)   # Eq. 5
         e = w @ model.styles
@@ -163,12 +174,13 @@ def synthesize(model: BilinearModel, style: np.ndarray, content: np.ndarray) -> 
 
 
 def restyle(model: BilinearModel, frames: np.ndarray, target: np.ndarray, alpha: np.ndarray, *,
-            iterations: int, smooth_frames: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
+            iterations: int, smooth_frames: float = 0.0, init: str = "mean_content") -> tuple[np.ndarray, np.ndarray]:
     """Frames in another expression (Eq. 7).
 
     frames : (T, M, 3) mm (rows with NaN are returned unchanged). target : (T, I) the target
     style vector of each frame. alpha : (T,) intensity in [0, 1] (0 leaves the frame as it is).
     smooth_frames : Gaussian sigma (frames) smoothing the analysed style over time; 0: per frame.
+    init : where the analysis starts (:func:`analyze`).
     Returns the restyled frames (T, M, 3) float32 mm and each frame's analysed style (T, I).
     """
     out = frames.astype(np.float32).copy()
@@ -177,7 +189,7 @@ def restyle(model: BilinearModel, frames: np.ndarray, target: np.ndarray, alpha:
     if not ok.any():
         return out, styles
     y = model.coefficients(frames[ok])
-    e, c = analyze(model, y, iterations=iterations)
+    e, c = analyze(model, y, iterations=iterations, init=init)
     if smooth_frames > 0 and len(e) > 1:
         # the per-frame style jitters (the paper's §7 notes it); a smoothed style, with the
         # content solved again for it (Eq. 6), keeps the blend of Eq. 7 steady
@@ -198,14 +210,13 @@ def warp_take(markers: np.ndarray, fps: float, src_phones: tuple[np.ndarray, np.
     """Time-warp a take onto another's timeline phone by phone (linear within each phone).
 
     markers : (F, M, 3) the take's frames at ``fps``. src_phones, ref_phones : (starts, ends)
-    in s of the same phone sequence in the take and in the reference. ref_times : (T,) s on
+    in s of the same (spoken) phone sequence in the take and in the reference; what lies
+    between consecutive phones (a pause in one take only) is warped linearly. ref_times : (T,) s on
     the reference timeline. Returns (T, M, 3): the take at the corresponding times (linear
     interpolation between frames).
     """
-    rs, re_ = ref_phones
-    ss, se = src_phones
-    knots_ref = np.concatenate([rs, re_[-1:]])
-    knots_src = np.concatenate([ss, se[-1:]])
+    knots_ref = np.column_stack(ref_phones).ravel()    # start, end of every phone: pauses between them
+    knots_src = np.column_stack(src_phones).ravel()    # may differ and are warped linearly
     t_src = np.interp(ref_times, knots_ref, knots_src)
     pos = np.clip(t_src * fps, 0, len(markers) - 1)
     lo = np.floor(pos).astype(int)

@@ -2,8 +2,8 @@
 Bregler (2005) §3 on marker motion (the math is :mod:`facesynth.expression.bilinear`).
 
 fit: the takes of each sentence in every emotion are time-warped phone by phone onto one
-timeline (the neutral take's when there is one), so that frame c is the same speech in every
-emotion; the aligned frames are projected on their PCA (Eq. 1) and factored by Eq. 4-6.
+timeline (the neutral take's when there is one; pauses placed differently are warped over), so
+that frame c is the same speech in every emotion; the aligned frames are projected on their PCA (Eq. 1) and factored by Eq. 4-6.
 """
 
 from __future__ import annotations
@@ -20,6 +20,7 @@ from ..expression import bilinear
 from ..model.expression import ExpressionModel
 from ..model.frames import NormalizedFrames
 from ..model.motion import Motion
+from ..phonemes import PAU
 
 log = logging.getLogger(__name__)
 
@@ -28,8 +29,15 @@ def aligned_data(norm: NormalizedFrames, splits, frame_step: int) -> tuple[np.nd
     """Every sentence's takes warped onto one timeline.
 
     Returns X (S, C, M, 3) mm (style, aligned frame), the S emotions, the sentences used and
-    notes on the sentences skipped (not in every emotion, or a different phone sequence).
+    notes on the sentences skipped (not in every emotion, or different spoken phones).
     """
+    blocks, emotions, used, notes = aligned_blocks(norm, splits, frame_step)
+    return np.concatenate(blocks, axis=1), emotions, used, notes
+
+
+def aligned_blocks(norm: NormalizedFrames, splits, frame_step: int
+                   ) -> tuple[list[np.ndarray], list[str], list[str], list[str]]:
+    """As :func:`aligned_data`, one (S, n, M, 3) block per sentence used."""
     takes, phones, fr = norm.takes, norm.phones, norm.frames
     use = [i for i in range(len(takes)) if takes.split[i] in splits]
     if not use:
@@ -38,7 +46,8 @@ def aligned_data(norm: NormalizedFrames, splits, frame_step: int) -> tuple[np.nd
     by_sentence: dict[str, dict[str, int]] = {}
     for i in use:
         by_sentence.setdefault(takes.sentence[i], {})[takes.emotion[i]] = i
-    rows_of = {i: np.nonzero(phones.take == i)[0] for i in use}
+    spoken = np.array([p != PAU for p in phones.phone])
+    rows_of = {i: np.nonzero((phones.take == i) & spoken)[0] for i in use}
     blocks, used, notes = [], [], []
     for sentence, takes_of in sorted(by_sentence.items()):
         missing = [e for e in emotions if e not in takes_of]
@@ -48,7 +57,7 @@ def aligned_data(norm: NormalizedFrames, splits, frame_step: int) -> tuple[np.nd
         seqs = {e: [phones.phone[r] for r in rows_of[takes_of[e]]] for e in emotions}
         ref = takes_of[emotions[0]]
         if any(seqs[e] != seqs[emotions[0]] for e in emotions):
-            notes.append(f"sentence {sentence}: the phone sequences differ between emotions")
+            notes.append(f"sentence {sentence}: the spoken phones differ between emotions")
             continue
         rr = rows_of[ref]
         t0, t1 = float(phones.start[rr[0]]), float(phones.end[rr[-1]])
@@ -66,7 +75,7 @@ def aligned_data(norm: NormalizedFrames, splits, frame_step: int) -> tuple[np.nd
     if not blocks:
         raise InputError("no sentence has takes in every emotion with the same phones ("
                          + "; ".join(notes[:3]) + "); the bilinear fit needs the same sentences in each emotion.")
-    return np.concatenate(blocks, axis=1), emotions, used, notes
+    return blocks, emotions, used, notes
 
 
 def fit_model(X: np.ndarray, emotions: list[str], settings: ExpressionSettings) -> bilinear.BilinearModel:
@@ -115,7 +124,8 @@ def analyze(model_path: Path, motion_path: Path, settings: ExpressionSettings) -
     _check_markers(motion.marker_names, names, motion_path, model_path)
     m = motion.markers
     ok = np.isfinite(m.reshape(len(m), -1)).all(axis=1)
-    e, c = bilinear.analyze(model, model.coefficients(m[ok]), iterations=settings.analyze_iterations)
+    e, c = bilinear.analyze(model, model.coefficients(m[ok]), iterations=settings.analyze_iterations,
+                            init=settings.analyze_init)
     nearest = nearest_emotion(model, e)
     header = ["time_s", "emotion"] + [f"e{i}" for i in range(e.shape[1])] + [f"c{j}" for j in range(c.shape[1])]
     lines = [",".join(header)]
@@ -173,7 +183,7 @@ def restyle(model_path: Path, motion_path: Path, out: Path, settings: Expression
         target, alpha = targets(model, model_path, len(frames), fps, to, intensity, emotions_path, ingest,
                                 settings.transition_s)
         results.append(bilinear.restyle(model, frames, target, alpha, iterations=settings.analyze_iterations,
-                                        smooth_frames=settings.style_smoothing_s * fps))
+                                        smooth_frames=settings.style_smoothing_s * fps, init=settings.analyze_init))
     (markers, styles), (capture, _) = results
     head_r, head_t = motion.head_rotation, motion.head_translation
     if head_r is None:

@@ -53,15 +53,22 @@ def head_poses(channels: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return Rotation.from_rotvec(np.radians(channels[:, :3])).as_matrix(), channels[:, 3:].copy()
 
 
-def library(db: MotionDatabase, corpus: Corpus, db_path: Path, corpus_path: Path, s: HeadMotionSettings,
-            splits=("train",)) -> list[headsynth.LibraryTake]:
-    """The database's takes in ``splits`` with their cleaned pitch (from the corpus audio),
-    segments and head motion relative to the take's mean pose."""
+def database_head(db: MotionDatabase, db_path: Path) -> np.ndarray:
+    """(F, 6) every frame's head pose relative to its take's mean; refuses a database whose
+    head never moves (nothing to reuse)."""
     rot, trans = db.head_relative_to_take
     channels = head_channels(rot, trans)
     if channels[:, :3].std(axis=0).max() < STILL_DEG and channels[:, 3:].std(axis=0).max() < STILL_MM:
         raise InputError(f"{db_path}: the database has no head motion (every frame has the same head pose); "
                          "build it from a capture whose rigid head markers move, or leave the head still.")
+    return channels
+
+
+def library(db: MotionDatabase, corpus: Corpus, db_path: Path, corpus_path: Path, s: HeadMotionSettings,
+            splits=("train",)) -> list[headsynth.LibraryTake]:
+    """The database's takes in ``splits`` with their cleaned pitch (from the corpus audio),
+    segments and head motion relative to the take's mean pose."""
+    channels = database_head(db, db_path)
     out = []
     for i, name in enumerate(db.takes.name):
         if db.takes.split[i] not in splits:
@@ -116,10 +123,12 @@ def run(db_path: Path, corpus_path: Path, audio_path: Path, out: Path, settings:
     if samples.ndim > 1:
         samples = samples.mean(axis=1)
     db = MotionDatabase.read(db_path)
-    corpus = Corpus.read(corpus_path)
+    database_head(db, db_path)
     t0 = time.perf_counter()
-    lib = library(db, corpus, db_path, corpus_path, settings)
     p = clean_pitch(samples, rate, settings)
+    lib: list[headsynth.LibraryTake] = []
+    if P.segments(p, settings.hop_s, len(samples) / rate):     # no voiced speech: rest, no library needed
+        lib = library(db, Corpus.read(corpus_path), db_path, corpus_path, settings)
     pitch_s = time.perf_counter() - t0
     res, warnings = synthesize(lib, p, len(samples) / rate, settings)
     rotation, translation = head_poses(res.head)
