@@ -758,7 +758,7 @@ def db_show(ctx: Context, db_path: Path, phoneme: str | None, node: int | None):
 
 @main.group()
 def expression():
-    """The bilinear style/content expression model (Chuang & Bregler 2005 §3, Eq. 4-7).
+    """The bilinear style/content expression model of Chuang & Bregler 2005, section 3.
 
     The paper factors 2D video shape and texture; facesynth factors 3D marker motion, so
     restyled motion goes through deform, retarget and render unchanged.
@@ -799,7 +799,7 @@ def expression_fit(ctx: Context, normalized: Path, output: Path):
 @click.argument("motion", type=EXISTING)
 @stage(writes=False)
 def expression_analyze(ctx: Context, model: Path, motion: Path):
-    """Print each frame's style vector, nearest emotion and content vector as CSV (Eq. 5-6).
+    """Print each frame's style vector, nearest emotion and content vector as CSV (equations 5 and 6).
 
     \b
     Example:
@@ -821,7 +821,7 @@ def expression_analyze(ctx: Context, model: Path, motion: Path):
 @click.option("-o", "--output", type=PATH, required=True, help="Output motion.h5.")
 @stage
 def expression_restyle(ctx: Context, model: Path, motion: Path, to, emotions, intensity: float, output: Path):
-    """Re-synthesize marker motion (captured or synthesized) in another expression (Eq. 7).
+    """Re-synthesize marker motion (captured or synthesized) in another expression (equation 7).
 
     Frames outside every --emotions span keep their own expression. The output is a motion
     artifact: deform, render and evaluate take it as they take a synthesis.
