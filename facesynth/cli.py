@@ -40,7 +40,7 @@ class PipelineGroup(click.Group):
     order of the README and docs/pipeline.md), then any others alphabetically."""
 
     order = ("sample-corpus", "align", "ingest", "normalize", "pca", "build-db", "db", "check", "prune", "isomap",
-             "synthesize", "suggest", "deform", "render", "batch", "capture", "evaluate", "tune", "devices")
+             "synthesize", "suggest", "expression", "head-motion", "deform", "render", "batch", "capture", "evaluate", "tune", "devices")
 
     def list_commands(self, ctx):
         listed = [name for name in self.order if name in self.commands]
@@ -118,6 +118,10 @@ READS: dict[str, tuple[str, ...]] = {
     "prune": ("prune",),
     "devices": (),
     "check": (),
+    "expression fit": ("expression",),
+    "expression analyze": ("expression",),
+    "expression restyle": ("expression", "ingest"),
+    "head-motion": ("head_motion",),
 }
 # Every command reads the input bounds (facesynth.limits).
 READS = {name: sections + ("limits",) for name, sections in READS.items()}
@@ -402,9 +406,12 @@ def build_db(ctx: Context, pca_path: Path, output: Path):
 @click.option("--emotions", type=EXISTING, default=None, help="Emotion spans: 'start_s end_s emotion' lines, or a TextGrid tier 'emotions'.")
 @click.option("--constraints", type=EXISTING, default=None, help="Motion-node constraints: 'INDEX NODE' or 'TIMEs NODE' lines.")
 @click.option("--search", type=click.Choice(choices("synthesize", "search")), default=None, help="Search (default: synthesize.search).")
+@click.option("--head-motion", "head_motion_path", type=EXISTING, default=None,
+              help="Head motion from `facesynth head-motion` to put on the output instead of the source takes'.")
 @click.option("-o", "--output", type=PATH, required=True, help="Output motion.h5.")
 @stage
-def synthesize(ctx: Context, db: Path, phonemes, audio, text, emotions, constraints, search, output: Path):
+def synthesize(ctx: Context, db: Path, phonemes, audio, text, emotions, constraints, search, head_motion_path,
+               output: Path):
     """Synthesize expressive marker motion for a new utterance (paper VI, Algorithm 1).
 
     \b
@@ -422,7 +429,7 @@ def synthesize(ctx: Context, db: Path, phonemes, audio, text, emotions, constrai
         settings = dataclasses.replace(settings, search=search)
     s = stage.run(db, output, settings, ctx.config.settings("ingest"), ctx.config.settings("align"),
                   phones_path=phonemes, emotions_path=emotions, constraints_path=constraints, audio=audio, text=text,
-                  overwrite=ctx.overwrite)
+                  head_motion_path=head_motion_path, overwrite=ctx.overwrite)
     for phone, how in s["unseen"].items():
         ctx.say(f"warning: the database has no node of /{phone}/; it will be covered by {how}.")
     phases = [("read database", "load_s"), ("device choice", "device_choice_s"), ("transition costs", "transition_s"), ("step costs", "steps_s"),
@@ -747,6 +754,123 @@ def db_show(ctx: Context, db_path: Path, phoneme: str | None, node: int | None):
     from .model.motiondb import MotionDatabase, describe
 
     _echo_lines(describe(MotionDatabase.read(db_path), phoneme, node))
+
+
+@main.group()
+def expression():
+    """The bilinear style/content expression model of Chuang & Bregler 2005, section 3.
+
+    The paper factors 2D video shape and texture; facesynth factors 3D marker motion, so
+    restyled motion goes through deform, retarget and render unchanged.
+
+    \b
+    Example:
+      facesynth expression fit normalized.h5 -o expr.h5
+    """
+
+
+@expression.command("fit")
+@click.argument("normalized", type=EXISTING)
+@click.option("-o", "--output", type=PATH, required=True, help="Output expr.h5.")
+@stage
+def expression_fit(ctx: Context, normalized: Path, output: Path):
+    """Fit the bilinear model on the takes of each sentence in every emotion, aligned phone by phone.
+
+    The error of each alternating least-squares iteration is printed with -v.
+
+    \b
+    Example:
+      facesynth expression fit normalized.h5 -o expr.h5
+    """
+    from .stages import expression as stage
+
+    s = stage.fit(normalized, output, ctx.config.settings("expression"), ctx.overwrite)
+    for note in s["skipped"]:
+        ctx.detail(f"skipped {note}.")
+    for n, err in enumerate(s["errors"], 1):
+        ctx.detail(f"iteration {n}: mean squared error {err:.6g} mm^2")
+    ctx.say(f"fitted {', '.join(s['emotions'])} on {s['sentences']} sentences ({s['frames']} aligned frames, "
+            f"{s['components']} components, content size {s['content_dim']}); error {s['errors'][-1]:.4g} mm^2 "
+            f"after {len(s['errors'])} iterations -> {output}")
+
+
+@expression.command("analyze")
+@click.argument("model", type=EXISTING)
+@click.argument("motion", type=EXISTING)
+@stage(writes=False)
+def expression_analyze(ctx: Context, model: Path, motion: Path):
+    """Print each frame's style vector, nearest emotion and content vector as CSV (equations 5 and 6).
+
+    \b
+    Example:
+      facesynth expression fit normalized.h5 -o expr.h5
+      facesynth expression analyze expr.h5 motion.h5 > styles.csv
+    """
+    from .stages import expression as stage
+
+    _echo_lines(stage.analyze(model, motion, ctx.config.settings("expression")))
+
+
+@expression.command("restyle")
+@click.argument("model", type=EXISTING)
+@click.argument("motion", type=EXISTING)
+@click.option("--to", "to", default=None, help="The target emotion (one the model was fitted with).")
+@click.option("--emotions", type=EXISTING, default=None,
+              help="Emotion spans over time instead of --to: 'start_s end_s emotion' lines, or a TextGrid tier 'emotions'.")
+@click.option("--intensity", type=float, default=1.0, show_default=True, help="Eq. 7 blend, 0 (unchanged) to 1.")
+@click.option("-o", "--output", type=PATH, required=True, help="Output motion.h5.")
+@stage
+def expression_restyle(ctx: Context, model: Path, motion: Path, to, emotions, intensity: float, output: Path):
+    """Re-synthesize marker motion (captured or synthesized) in another expression (equation 7).
+
+    Frames outside every --emotions span keep their own expression. The output is a motion
+    artifact: deform, render and evaluate take it as they take a synthesis.
+
+    \b
+    Example:
+      facesynth expression fit normalized.h5 -o expr.h5
+      facesynth expression restyle expr.h5 motion.h5 --to happy --intensity 0.6 -o happy.h5
+      echo "0.5 1.5 angry" > spans.txt
+      facesynth expression restyle expr.h5 motion.h5 --emotions spans.txt --intensity 1 -o angry.h5
+    """
+    from .stages import expression as stage
+
+    if (to is None) == (emotions is None):
+        raise UsageError("give exactly one of --to or --emotions.")
+    s = stage.restyle(model, motion, output, ctx.config.settings("expression"), ctx.config.settings("ingest"), to=to,
+                      intensity=intensity, emotions_path=emotions, overwrite=ctx.overwrite)
+    ctx.say(f"restyled {s['frames']} frames (mostly {s['from']} before) to {to or emotions} at intensity {intensity:g}; "
+            f"RMS marker change {s['change_mm']:.2f} mm -> {output}")
+
+
+@main.command("head-motion")
+@click.argument("db", type=EXISTING)
+@click.option("--audio", type=EXISTING, required=True, help="The speech (WAV) to move the head to.")
+@click.option("--corpus", "corpus_path", type=EXISTING, required=True,
+              help="The corpus artifact (ingest's) the database was built from: it holds every take's audio.")
+@click.option("-o", "--output", type=PATH, required=True, help="Output head.h5.")
+@stage
+def head_motion(ctx: Context, db: Path, audio: Path, corpus_path: Path, output: Path):
+    """Head motion for new speech from captured segments matched by pitch (Chuang & Bregler 2005 §5).
+
+    The training takes' audio comes from the corpus artifact (ingest stores every take's
+    samples); pitch is pYIN's (librosa). An utterance without voiced speech gets the rest pose
+    and a warning.
+
+    \b
+    Example:
+      facesynth head-motion db.h5 --corpus corpus.h5 --audio corpus/audio/neutral_s016.wav -o head.h5
+      facesynth synthesize db.h5 --phonemes corpus/labels/neutral_s016.TextGrid --head-motion head.h5 -o moving.h5
+      facesynth deform moving.h5 --mesh corpus/face.obj --binding corpus/markers.csv \\
+          --set deform.apply_head_motion=true -o moving_anim.h5
+    """
+    from .stages import head_motion as stage
+
+    s = stage.run(db, corpus_path, audio, output, ctx.config.settings("head_motion"), ctx.overwrite)
+    for warning in s["warnings"]:
+        ctx.say(f"warning: {warning}")
+    ctx.say(f"head motion for {s['seconds']:.2f} s from {s['segments']} pitch segments ({s['consecutive']} joins "
+            f"kept consecutive), pitch of {s['library_takes']} takes in {s['pitch_s']:.1f} s -> {output}")
 
 
 @main.command()

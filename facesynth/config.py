@@ -260,6 +260,49 @@ class BatchSettings:
     workers: int = setting("not in the paper: local Dask worker processes; 0: one per core", unit="processes", ge=0)
 
 
+@dataclass(frozen=True)
+class ExpressionSettings:
+    """``[expression]``: the bilinear style/content model (Chuang & Bregler 2005 §3, Eq. 4-7)."""
+
+    splits: tuple[str, ...] = setting("not in the paper: the takes fitted (held-out takes stay out)",
+                                      choices=("train", "val", "test"), min_items=1)
+    components: int = setting("Eq. 1 (PCA of the facial vector); not given in the paper", unit="components", ge=1)
+    content_dim: int = setting("Eq. 4 (content vector size); not given in the paper", ge=1)
+    frame_step: int = setting("not in the paper: every n-th aligned frame is fitted", unit="frames", ge=1)
+    max_iterations: int = setting("Eq. 4-6 fit: 'iterate until convergence'", ge=1)
+    tolerance: float = setting("Eq. 4-6 fit: stop when an iteration lowers the error by less than this fraction",
+                               unit="fraction", ge=0, lt=1)
+    analyze_iterations: int = setting("Eq. 5-6 ('iterate over these two equations until convergence')", ge=1)
+    analyze_init: str = setting("§3.3 (mean_content: the mean content vector, as the paper); best_style: the fitted "
+                                "style that explains each frame best", choices=("mean_content", "best_style"))
+    transition_s: float = setting("not in the paper: Gaussian sigma easing the style between emotion spans",
+                                  unit="s", ge=0)
+    style_smoothing_s: float = setting("not in the paper (its §7 notes per-frame jitter): Gaussian sigma smoothing "
+                                       "the analysed style over time; 0: per frame as in the paper", unit="s", ge=0)
+
+
+@dataclass(frozen=True)
+class HeadMotionSettings:
+    """``[head_motion]``: pitch-driven head motion (Chuang & Bregler 2005 §5, Eq. 10-15)."""
+
+    pitch_min_hz: float = setting("§5.1 'normal human range' (pYIN search range)", unit="Hz", gt=0)
+    pitch_max_hz: float = setting("§5.1 'normal human range' (pYIN search range)", unit="Hz", gt=0)
+    hop_s: float = setting("not in the paper: pitch frame hop", unit="s", gt=0, le=0.1)
+    pitch_resolution: float = setting("not in the paper: pYIN pitch-bin width (librosa's default 0.1; coarser is faster)",
+                                      unit="semitones", gt=0, le=1)
+    max_gap_s: float = setting("§5.1 'interpolate ... very short periods of missing data'", unit="s", ge=0)
+    min_voiced_s: float = setting("not in the paper: voiced runs shorter than this are pitch-tracker noise", unit="s", ge=0)
+    top_sentences: int = setting("§5.2 M (top sentences by phrase features); not given in the paper", ge=1)
+    top_segments: int = setting("§5.2 K (candidates per segment); not given in the paper", ge=1)
+    b: float = setting("Eq. 12 (b = 0.05, weight of the geometric distance G_d)", ge=0, le=1)
+    c: float = setting("Eq. 12 (c = 0.3, weight of the pitch distance P_d)", ge=0, le=1)
+    omega_h: float = setting("Eq. 15 (omega_1, set equal to omega_2 in the paper)", ge=0)
+    omega_r: float = setting("Eq. 15 (omega_2)", ge=0)
+    breath_s: float = setting("§5.4 subsentence breaks 'where the speaker takes a breath' (unvoiced pause)", unit="s", gt=0)
+    join_smooth_s: float = setting("§5.4 'end positions ... are smoothed' (Gaussian sigma at joins)", unit="s", ge=0)
+    fps: float = setting("not in the paper: rate of the written head motion (the output rate)", unit="frames/s", gt=0, le=1000)
+
+
 SECTIONS: dict[str, type] = {
     "ingest": IngestSettings,
     "align": AlignSettings,
@@ -275,6 +318,8 @@ SECTIONS: dict[str, type] = {
     "render": RenderSettings,
     "limits": LimitsSettings,
     "batch": BatchSettings,
+    "expression": ExpressionSettings,
+    "head_motion": HeadMotionSettings,
 }
 
 S = TypeVar("S")

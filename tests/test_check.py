@@ -27,7 +27,7 @@ DOC = Path(__file__).resolve().parents[1] / "docs" / "file-format.md"
 @pytest.fixture(scope="module")
 def written(tiny_corpus, tiny_artifacts, tiny_db, held_out_take, config, tmp_path_factory) -> dict[str, Path]:
     """One file of every kind (and variant), each written by its stage from the tiny corpus."""
-    from facesynth.stages import capture, deform, isomap, prune, synthesize
+    from facesynth.stages import capture, deform, expression, head_motion, isomap, prune, synthesize
 
     d = tmp_path_factory.mktemp("check")
     out = {**tiny_artifacts, "motiondb": tiny_db, "pruned": d / "pruned.h5", "isomap": d / "isomap.h5",
@@ -40,6 +40,12 @@ def written(tiny_corpus, tiny_artifacts, tiny_db, held_out_take, config, tmp_pat
         synthesize.run(out["pruned"], out[name], settings, config.settings("ingest"), config.settings("align"), phones_path=tg)
     capture.run(tiny_db, tiny_artifacts["corpus"], held_out_take, out["capture"], config.settings("normalize"), 30.0)
     deform.run(out["motion"], tiny_corpus / "face.obj", tiny_corpus / "markers.csv", out["meshanim"], config.settings("deform"))
+    out["expression"], out["restyle"], out["headmotion"] = d / "expr.h5", d / "restyle.h5", d / "head.h5"
+    expression.fit(tiny_artifacts["normalized"], out["expression"], config.settings("expression"))
+    expression.restyle(out["expression"], out["capture"], out["restyle"], config.settings("expression"),
+                       config.settings("ingest"), to="happy", intensity=0.5, emotions_path=None)
+    head_motion.run(tiny_db, tiny_artifacts["corpus"], tiny_corpus / "audio" / f"{held_out_take}.wav", out["headmotion"],
+                    config.settings("head_motion"))
     return out
 
 
@@ -84,7 +90,7 @@ def test_the_specification_covers_every_kind_at_its_schema():
 
 
 @pytest.mark.parametrize("name", ["corpus", "normalized", "pca", "motiondb", "pruned", "isomap", "motion", "greedy",
-                                  "capture", "meshanim"])
+                                  "capture", "meshanim", "expression", "restyle", "headmotion"])
 def test_every_kind_written_by_its_stage_checks_clean(written, name):
     report = check.check_file(written[name])
     assert report.problems == []
@@ -172,7 +178,7 @@ DAMAGES = {
                        "`facesynth ingest`."),
     "an unknown kind": ("pca", lambda f: f.attrs.__setitem__("facesynth_kind", "keyshapes"),
                         "/: unknown kind 'keyshapes'; facesynth writes corpus, normalized, pca, motiondb, isomap, "
-                        "motion, meshanim."),
+                        "motion, meshanim, expression, headmotion."),
     "a capture without its take": ("capture", lambda f: f.attrs.__delitem__("take"),
                                    "/: missing attribute 'take' (str: the captured take)."),
 }

@@ -100,8 +100,9 @@ class Motion:
     def write(self, out: Path, *, config: str, inputs=(), records=None, overwrite: bool = False) -> None:
         """Write a ``motion`` artifact to ``out`` (provenance from ``inputs`` or precomputed ``records``)."""
         with write_artifact(out, self.KIND, config=config, inputs=inputs, records=records, overwrite=overwrite) as g:
+            if self.source != "synthesis":
+                g.attrs["source"] = self.source
             if self.source == "capture":
-                g.attrs["source"] = "capture"
                 g.attrs["take"] = self.take
             m = g.create_dataset("markers", data=self.markers)
             m.attrs.update(units="mm", fps=self.fps)

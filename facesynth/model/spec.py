@@ -47,6 +47,14 @@ SYMBOLS: dict[str, str] = {
     "n": "frames of one phoneme cluster",
     "ti": "Delaunay triangles of one cluster's Isomap",
     "tp": "Delaunay triangles of one cluster's PCA map",
+    "E": "emotions (styles) of a bilinear expression model",
+    "Kb": "PCA components of a bilinear expression model",
+    "J": "content dimension of a bilinear expression model",
+    "It": "iterations of the bilinear fit",
+    "Sq": "sentences a bilinear expression model was fitted on",
+    "Fh": "frames of a synthesized head motion",
+    "Pf": "pitch frames of a synthesized head motion",
+    "G": "pitch segments of a synthesized head motion",
 }
 
 #: The largest magnitude of any float in an artifact where numbers must be finite (mm, s, costs,
@@ -368,7 +376,8 @@ MOTION = Kind("motion", SCHEMAS["motion"], (
     "Marker motion in the head frame, with the head motion beside it. `facesynth synthesize` writes the "
     "`synthesis` variant (with the search path and per-frame provenance); `facesynth capture` writes a "
     "captured take as the `capture` variant (root attribute `source = \"capture\"`, no `coefficients`, "
-    "`path` or `provenance`), whose markers keep NaN where a gap was too long to fill."), (
+    "`path` or `provenance`), whose markers keep NaN where a gap was too long to fill; `facesynth expression "
+    "restyle` writes the `restyle` variant (`source = \"restyle\"`, likewise without them)."), (
     Dataset("markers", "float32", ("Fo", "M", 3), "the motion at the output rate, head frame", "mm",
             (MM, _fps("output rate, frames/s")), finite="synthesis"),
     Dataset("markers_capture", "float32", ("F", "M", 3), "the motion at the capture rate, before down-sampling", "mm",
@@ -407,10 +416,11 @@ MOTION = Kind("motion", SCHEMAS["motion"], (
         Dataset("step", "int64", ("F",), "input phone (row of `path`)"),
         Dataset("smoothed", "bool", ("F",), "frame changed by Eq. 16 smoothing (or Cao's blending)"),
     ), attrs=(_fps("capture rate, frames/s"), Attr("meaning", "str", "what the values are")), required="synthesis"),
-), attrs=(Attr("source", "str", "`capture` for a captured take; absent for a synthesis", choices=("capture",),
-               required=False),
+), attrs=(Attr("source", "str", "`capture` for a captured take, `restyle` for a motion in another expression; "
+                         "absent for a synthesis", choices=("capture", "restyle"), required=False),
           Attr("take", "str", "the captured take", required="capture")),
-    variant_attr="source", variants=("synthesis", "capture"), writers=("facesynth synthesize", "facesynth capture"))
+    variant_attr="source", variants=("synthesis", "capture", "restyle"),
+    writers=("facesynth synthesize", "facesynth capture", "facesynth expression restyle"))
 
 MESHANIM = Kind("meshanim", SCHEMAS["meshanim"], (
     "The face mesh moved by marker motion (paper VII-A), with the deformation weights of Eq. 14-15. "
@@ -436,7 +446,43 @@ MESHANIM = Kind("meshanim", SCHEMAS["meshanim"], (
 ), attrs=(Attr("fit_rms", "float", "residual of the marker-to-mesh similarity fit, mesh units"),))
 
 #: Every kind's specification at its current schema.
-KINDS: dict[str, Kind] = {k.name: k for k in (CORPUS, NORMALIZED, PCA, MOTIONDB, ISOMAP, MOTION, MESHANIM)}
+EXPRESSION = Kind("expression", SCHEMAS["expression"], (
+    "A bilinear style/content model of marker frames (Chuang & Bregler 2005, §3, Eq. 4): "
+    "`y[k] = styles[s] . W[k] . content` over the PCA coefficients `y` of the normalized markers "
+    "(the paper factors 2D video shape and texture; facesynth factors 3D markers)."), (
+    Dataset("marker_names", "str", ("M",), "marker order"),
+    Dataset("mean", "float32", ("M", 3), "mean marker frame of the fitted data", "mm", (MM,)),
+    Dataset("basis", "float32", ("Kb", "M", 3), "orthonormal PCA modes (Eq. 1) the model's coefficients are in"),
+    Dataset("emotions", "str", ("E",), "the fitted emotions, one per style vector"),
+    Dataset("styles", "float64", ("E", "E"), "style (expression) vector of each emotion (Eq. 4's e_s)"),
+    Dataset("W", "float64", ("Kb", "E", "J"), "bilinear basis (Eq. 4's W_k)"),
+    Dataset("content_mean", "float64", ("J",), "mean training content vector (Eq. 5's initial guess)"),
+    Dataset("errors", "float64", ("It",), "mean squared error after each alternating least-squares iteration",
+            "mm^2", (_units("mm^2"),)),
+    Dataset("sentences", "str", ("Sq",), "sentences whose takes were aligned across emotions and fitted"),
+), attrs=(Attr("aligned_frames", "int", "content frames (aligned across emotions) the model was fitted on", ge=1),))
+
+HEADMOTION = Kind("headmotion", SCHEMAS["headmotion"], (
+    "Head motion chosen from captured segments by the pitch of new speech (Chuang & Bregler 2005, §5), "
+    "with the cleaned pitch and the chosen segments; `facesynth synthesize --head-motion` puts it on a motion."), (
+    Dataset("rotation", "float32", ("Fh", 3, 3), "head pose relative to rest: `x -> rotation @ x + translation`",
+            None, (_fps(), _HEAD_CONVENTION)),
+    Dataset("translation", "float32", ("Fh", 3), "see `rotation`", "mm", (MM, _fps())),
+    Dataset("pitch", "float32", ("Pf",), "cleaned pitch, NaN where unvoiced", "Hz", (_units("Hz"), _fps("pitch frames/s")),
+            finite=False),
+    Group("segments", "pitch-segments", "the input's segments (voiced onset to the next) and the captured segment chosen for each", (
+        Dataset("start", "float64", ("G",), "segment start in the input", "s", (SECONDS,)),
+        Dataset("end", "float64", ("G",), "segment end in the input", "s", (SECONDS,)),
+        Dataset("take", "str", ("G",), "the captured take of the chosen segment"),
+        Dataset("index", "int64", ("G",), "the chosen segment's position in its take", ge=0),
+        Dataset("cost", "float64", ("G",), "Eq. 12 distance of the chosen segment (the trellis node cost)"),
+        Dataset("take_start", "float64", ("G",), "chosen segment's start in its take", "s", (SECONDS,)),
+        Dataset("take_end", "float64", ("G",), "chosen segment's end in its take", "s", (SECONDS,)),
+    )),
+))
+
+KINDS: dict[str, Kind] = {k.name: k for k in (CORPUS, NORMALIZED, PCA, MOTIONDB, ISOMAP, MOTION, MESHANIM, EXPRESSION,
+                                              HEADMOTION)}
 
 BLOCKS: tuple[Block, ...] = (TABLES, HEAD_FRAMES, PCA_MODEL)
 

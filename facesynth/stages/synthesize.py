@@ -7,10 +7,13 @@ from __future__ import annotations
 import time
 from pathlib import Path
 
+import numpy as np
+
 from ..artifacts import check_output, input_records_in_background
 from ..config import AlignSettings, IngestSettings, SynthesizeSettings, settings_json
 from ..errors import UsageError
 from ..limits import require_memory
+from ..model.headmotion import HeadMotion
 from ..model.motiondb import MotionDatabase
 from ..search.synthesis import as_motion, prepare, synthesize, unseen_phones
 
@@ -24,16 +27,20 @@ def memory_estimate(nodes: int, phones: int) -> float:
 def run(db_path: Path, out: Path, settings: SynthesizeSettings, ingest_settings: IngestSettings,
         align_settings: AlignSettings, *,
         phones_path: Path | None = None, emotions_path: Path | None = None, constraints_path: Path | None = None,
-        audio: Path | None = None, text: str | None = None, overwrite: bool = False) -> dict:
+        audio: Path | None = None, text: str | None = None, head_motion_path: Path | None = None,
+        overwrite: bool = False) -> dict:
     """Synthesize the utterance (phones from ``phones_path``, or ``audio`` aligned to ``text``)
     with its emotions and constraints, and write ``out`` (a ``motion`` artifact). The summary's
     ``*_s`` entries are the seconds of each phase: ``load_s`` (database tables), those of
     :func:`~facesynth.search.synthesis.synthesize`, ``hash_wait_s`` (waiting for the inputs'
-    sha256, computed on another thread from the start) and ``write_s``."""
+    sha256, computed on another thread from the start) and ``write_s``. ``head_motion_path`` (a
+    ``headmotion`` artifact, see ``facesynth head-motion``) replaces the head motion the
+    search's source frames carry."""
     if settings.search == "greedy" and constraints_path is not None:
         raise UsageError("motion-node constraints need the DP search (Eq. 10); drop --constraints or use --search dp.")
     check_output(out, overwrite)
-    inputs = [p for p in (db_path, phones_path, emotions_path, constraints_path, audio) if p is not None]
+    inputs = [p for p in (db_path, phones_path, emotions_path, constraints_path, audio, head_motion_path) if p is not None]
+    head = HeadMotion.read(head_motion_path) if head_motion_path is not None else None
     t0 = time.perf_counter()
     db = MotionDatabase.read(db_path)
     load_s = time.perf_counter() - t0
@@ -49,7 +56,10 @@ def run(db_path: Path, out: Path, settings: SynthesizeSettings, ingest_settings:
     input_records = records()
     hash_wait_s = time.perf_counter() - t0
     t0 = time.perf_counter()
-    as_motion(db, utt, res, settings).write(out, config=settings_json(settings), records=input_records,
+    motion = as_motion(db, utt, res, settings)
+    if head is not None:
+        motion.head_rotation, motion.head_translation = head.at(np.arange(len(motion.markers)) / motion.fps)
+    motion.write(out, config=settings_json(settings), records=input_records,
                                             overwrite=overwrite)
     write_s = time.perf_counter() - t0
     return {"phones": len(utt), "cost": res["cost"], "joins": res["non_captured_joins"], "device": res["device"],
