@@ -181,6 +181,36 @@ def sentence_rows(raw: dict) -> list[dict]:
              "baseline_err_mm2": b["err_mm2"]} for a, b in zip(dp, base)]
 
 
+def method_figures(raws: list[dict]) -> list[dict]:
+    """Per seed, ``facesynth evaluate``'s figures of every method and reference with their
+    bootstrap intervals over that seed's sentences (and the paired DP - baseline differences),
+    as its metrics.json has them; [] for seeds evaluated without them."""
+    out = []
+    for r in raws:
+        ev = r["evaluate"]
+        figures = {m: v["figures"] for m, v in ev.items() if isinstance(v, dict) and "figures" in v}
+        if figures:
+            out.append({"seed": r["seed"], "sentences": ev["dp"]["overall"]["sentences"], "figures": figures,
+                        "skipped": ev.get("figures_meta", {}).get("skipped", {})})
+    return out
+
+
+def method_tables(methods: list[dict]) -> list[str]:
+    """Markdown lines: for each seed, methods x figures with intervals and the paired differences."""
+    from facesynth.stages.evaluate import figure_rows
+
+    lines = []
+    for entry in methods:
+        keys, labels, rows, diffs = figure_rows({m: {"figures": f} for m, f in entry["figures"].items()})
+        head = ["| method | " + " | ".join(labels) + " |", "|---|" + "---|" * len(labels)]
+        lines += ["", f"Seed {entry['seed']}, {entry['sentences']} held-out sentences:", "", *head,
+                  *("| " + " | ".join(r) + " |" for r in rows), "",
+                  "Paired differences, DP minus each baseline (an interval that excludes 0 decides):", "",
+                  head[0].replace("| method |", "| difference |"), head[1], *("| " + " | ".join(r) + " |" for r in diffs)]
+        lines += [f"", *(f"*{m} not run:* {why}." for m, why in entry["skipped"].items())]
+    return lines
+
+
 def seed_timings(raw: dict) -> dict:
     """Seconds (wall, this host) of one seed's commands and searches: each stage command
     including interpreter start-up, and the median search time per search method."""
@@ -211,6 +241,7 @@ def aggregate(raws: list[dict]) -> dict:
     speed = {k: {"per_seed": [t[k] for t in timings], **summarize([t[k] for t in timings])} for k in timings[0]}
     rows = [row for r in raws for row in sentence_rows(r)]
     return {"seeds": [r["seed"] for r in raws], "quality": quality, "sentences": bootstrap_sentences(rows),
+            "methods": method_figures(raws),
             "tune": [{"seed": r["seed"], **r["tune"], "test_before": r["evaluate"]["dp"]["overall"]["err_mm2"],
                       "test_after": r["evaluate_tuned"]["dp"]["overall"]["err_mm2"]} for r in raws],
             "seed_timings_s": speed}
@@ -334,8 +365,8 @@ def run_seed(fs: str, work: Path, preset: str, seed: int, tune_evaluations: int)
     folder.mkdir(parents=True, exist_ok=True)
     seconds: dict[str, float] = {}
     build_chain(fs, folder, preset, seed, seconds)
-    seconds["evaluate"], _ = run([fs, "evaluate", "db_clean.h5", "--heldout", "corpus.h5", "-o", "evaluate",
-                                  "--overwrite", "-q"], folder)
+    seconds["evaluate"], _ = run([fs, "evaluate", "db_clean.h5", "--heldout", "corpus.h5", "--truth", "corpus",
+                                  "-o", "evaluate", "--overwrite", "-q"], folder)
     py = sys.executable
     _, out = run([py, str(BENCH / "prune_auto.py"), "--db", "db.h5", "--truth", "corpus/contamination.csv"], folder)
     prune = json.loads(out)
@@ -458,6 +489,19 @@ def markdown(results: dict) -> str:
     ]
     for key, label in (("dp_rms_mm", "DP"), ("baseline_rms_mm", "baseline"), ("difference_mm", "baseline minus DP")):
         lines.append(f"| {label} | {b[key]['value']:.3f} | {b[key]['ci'][0]:.3f} – {b[key]['ci'][1]:.3f} |")
+    if results.get("methods"):
+        lines += [
+            "",
+            "## Methods against baselines, with intervals",
+            "",
+            "`facesynth evaluate --truth` on each seed's held-out sentences: errors against the clean ground truth "
+            "and the noisy capture (both in the database's normalized head frame), velocity error, mouth-opening "
+            "Pearson r, /p b m/ closure and its onset against the truth's, the second difference at joins and away "
+            "from them, and the fraction of frames a classifier trained on captured training frames recognises as "
+            "the asked emotion. Value [bootstrap 95% interval over sentences]; `capture` and `clean` are "
+            "references (the noisy capture and the clean truth themselves), not methods.",
+            *method_tables(results["methods"]),
+        ]
     lines += [
         "",
         "## Tuning",

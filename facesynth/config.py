@@ -187,13 +187,16 @@ class SynthesizeSettings:
 @dataclass(frozen=True)
 class EvaluateSettings:
     """``[evaluate]``: which takes, the lip markers and closure threshold (mm), the plotted marker,
-    the fitting effort of the Cohen-Massaro baseline."""
+    the fitting effort of the Cohen-Massaro baseline, the bootstrap and the emotion classifier."""
 
     split: str = setting("paper VIII (test sentences); val: the tuning sentences", choices=("test", "val"))
     lip_markers: tuple[str, ...] = setting("not in the paper: upper and lower inner-lip markers", min_items=2, max_items=2)
     closure_mm: float = setting("not in the paper: bilabial closure", unit="mm", gt=0)
     plot_marker: str = setting("paper Figs. 15-16 (marker #79)")
     dominance_iterations: int = setting("not in the paper: L-BFGS-B iterations fitting the Cohen-Massaro baseline", ge=1)
+    bootstrap_resamples: int = setting("not in the paper: resamples of the sentences for every 95% interval", ge=100)
+    classifier_frames: int = setting("not in the paper: training frames of the emotion classifier", unit="frames", ge=100)
+    seed: int = setting("not in the paper: seeds the bootstrap and the classifier's frame sample", ge=0)
 
 
 @dataclass(frozen=True)

@@ -1,37 +1,70 @@
-"""Synthesized motion against captured ground truth (paper VI-D, VIII).
+"""Synthesized motion against ground truth (paper VI-D, VIII), with fair baselines and
+bootstrap intervals.
 
 Every held-out take of the corpus (``evaluate.split``) is synthesized from its own phone
-timing and emotion, with no constraints, and compared at the capture rate with its
-capture, normalized with the database's own reference frame (Eq. 1-2) so both are in the
-same head frame. Numbers, per method (``dp`` and ``baseline``), per emotion and overall:
+timing and emotion, with no constraints, and compared at the capture rate with
 
-* ``err_mm2``: Eq. 13, the mean over frames and markers of the squared marker distance;
-  ``total_err_mm2``: Eq. 12, its sum over sentences; ``rms_mm``: the root of Eq. 13;
-* ``velocity_rms_mm_s``: the same for marker velocities;
-* lip closure on /p b m/: the fraction of bilabials whose lip gap gets below
-  ``closure_mm`` within the phone (the capture's own fraction beside it), and the mean of
-  the smallest gap;
-* ``emotion_agreement``: the fraction of spoken phones whose node has the asked emotion;
-* ``non_captured_joins``: joins of nodes that were not captured together.
+* its **capture** (noisy markers), normalized with the database's own reference frame
+  (Eq. 1-2), so both are in the same head frame: ``err_mm2`` (Eq. 13), ``total_err_mm2``
+  (Eq. 12), ``rms_mm``, ``velocity_rms_mm_s``;
+* where the corpus has it (the sample corpus's ``groundtruth/<take>.c3d``, given as the
+  ``truth`` folder), its **clean ground truth**: markers without noise, gaps or head motion,
+  in the rig's head frame, moved into the database's normalized head frame by one rigid
+  transform fitted on the rigid (head-pose) markers of ``markers.csv`` against the
+  database's reference (:func:`facesynth.baselines.fit_rigid`). Against it:
+  ``rms_clean_mm``, ``velocity_rms_clean_mm_s``, the mouth-opening Pearson r (inner-lip gap
+  of ``lip_markers``), and lip-closure timing.
 
-Baselines, each given the same phone timing (and emotions):
+Methods, each given the same phone timing (and emotions):
 
+* ``dp``: the paper's search; ``greedy``: Cao et al.'s greedy search (``synthesize.search =
+  greedy``) on the same database and cost terms;
 * ``baseline``: the per-phoneme mean pose (mean PCA frame of all the database's frames of
   that phone) placed at each phone's centre and interpolated linearly, the rest pose in pauses;
-* ``baseline_emotion``: the same with the mean pose per (phone, emotion), the phone's mean
-  where the database has no node of that phone in that emotion;
-* ``dominance``: a Cohen-Massaro coarticulation model (:mod:`facesynth.motion.dominance`)
-  fitted on the database's training takes (targets, dominance magnitudes and rates per phone);
-* ``dominance_emotion``: the same per (phone, emotion), given each phone's emotion.
+  ``baseline_emotion``: the same with the mean pose per (phone, emotion);
+* ``dominance`` / ``dominance_emotion``: a Cohen-Massaro coarticulation model
+  (:mod:`facesynth.motion.dominance`) fitted on the database's training takes, per phone /
+  per (phone, emotion);
+* ``openfacefx``: the external text-driven system (:mod:`facesynth.baselines`), its ARKit
+  curves through the corpus's face rig to the markers (only with the ``truth`` folder, which
+  holds ``markers.csv``, and when openfacefx is installed; otherwise the report says why not);
+* references, not methods: ``capture`` (the normalized noisy capture itself, scored against
+  the clean truth) and ``clean`` (the clean truth itself: its closure, join and emotion figures
+  are what a perfect method would get).
+
+Figures (:data:`FIGURES`), each with a bootstrap 95% interval over sentences
+(:mod:`facesynth.bootstrap`), and for every baseline the paired difference ``dp - baseline``:
+
+* lip closure as **timing**: for each /p b m/ token, the first frame inside the phone where
+  the inner-lip gap gets below ``closure_mm`` (its onset, s after the phone's start) or none;
+  ``closure_rate`` is the fraction of tokens closed, ``closure_delay_ms`` the mean absolute
+  difference of onsets from the clean truth's over tokens both close. The rates at 0.5x, 1x,
+  2x and 4x ``closure_mm`` are in the JSON (``closure_sweep``) to show where methods separate;
+* **join smoothness**: the 99th percentile of the second difference |x[f+1] - 2 x[f] + x[f-1]|
+  (mm/frame^2, every marker) at the two frames around each join: the non-captured joins of
+  ``dp`` and ``greedy``, the phone boundaries of the other methods and of the clean capture;
+  beside it the same percentile at the frames away from joins (``interior_d2_p99``), since the
+  noise a method copies from the capture raises both: a pop is a join value well above the
+  method's own interior value, and above the clean capture's;
+* **emotion recognisability**: a logistic regression on the database's PCA coefficients
+  (standardized), trained on captured frames of the training takes with their node's emotion
+  (:class:`EmotionClassifier`), applied to every frame of each method's output; the accuracy is
+  the fraction of frames classified as the emotion asked for. On the held-out capture it is
+  the recognisability of real motion.
+* ``emotion_agreement``: the fraction of spoken phones whose node has the asked emotion;
+  ``non_captured_joins``: joins of nodes that were not captured together (search methods).
 """
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
+from .baselines import fit_rigid, openfacefx_arkit, openfacefx_missing, rig_markers
+from .bootstrap import interval, paired_difference, resamples
 from .config import EvaluateSettings, NormalizeSettings, SynthesizeSettings
 from .errors import InputError
 from .model.corpus import Corpus
@@ -49,15 +82,28 @@ from .search.synthesis import synthesize
 BILABIALS = ("p", "b", "m")
 
 
+#: Multiples of ``closure_mm`` at which the closure rate is also reported (``closure_sweep``).
+CLOSURE_SWEEP = (0.5, 1.0, 2.0, 4.0)
+#: The percentile of the second difference at joins (join smoothness).
+JOIN_PERCENTILE = 99.0
+#: The search methods (their joins are the non-captured ones) and the references.
+SEARCHES = ("dp", "greedy")
+REFERENCES = ("capture", "clean")
+
+
 @dataclass
 class Sentence:
     """A held-out take: its utterance (phones, times, emotion) and its normalized capture,
-    truth : (T, M, 3) float32 mm in the head frame at the capture rate."""
+    truth : (T, M, 3) float32 mm in the head frame at the capture rate. With a truth folder:
+    clean : (T, M, 3) float32 mm, the clean markers in the same normalized head frame, and
+    to_reference : (R (3, 3), t (3,) mm) taking the rig's head frame there (x @ R + t)."""
 
     take: str
     emotion: str
     utterance: Utterance
     truth: np.ndarray
+    clean: np.ndarray | None = None
+    to_reference: tuple[np.ndarray, np.ndarray] | None = None
 
 
 def normalized_take(raw: np.ndarray, db: MotionDatabase, settings: NormalizeSettings):
@@ -72,8 +118,60 @@ def normalized_take(raw: np.ndarray, db: MotionDatabase, settings: NormalizeSett
     return rigid_align(raw, db.reference.astype(np.float64), origin, rigid)
 
 
-def heldout(corpus_path: Path, db: MotionDatabase, split: str, normalize_settings: NormalizeSettings) -> list[Sentence]:
-    """The corpus's takes of ``split`` with their phones and normalized capture."""
+@dataclass
+class TruthFolder:
+    """A corpus folder with clean ground truth (the sample corpus's layout): ``groundtruth/<take>.c3d``
+    clean markers in the rig's head frame, ``markers.csv`` the marker-to-vertex binding with its
+    ``rigid`` column. rigid : names of the head-pose markers the frame transform is fitted on."""
+
+    folder: Path
+    binding: dict[str, int]
+    rigid: list[str]
+
+    @classmethod
+    def open(cls, folder: Path, names: list[str], normalize_settings: NormalizeSettings) -> "TruthFolder":
+        """Check the folder (one sentence naming what is missing) and read its binding."""
+        from .formats.mesh import read_binding, read_rigid_markers
+
+        folder = Path(folder)
+        if not (folder / "groundtruth").is_dir() or not (folder / "markers.csv").exists():
+            raise InputError(f"{folder}: not a corpus folder with ground truth (it needs groundtruth/ and markers.csv); "
+                             "pass the folder facesynth sample-corpus wrote.")
+        binding = read_binding(folder / "markers.csv")
+        missing = [n for n in names if n not in binding]
+        if missing:
+            raise InputError(f"{folder / 'markers.csv'}: marker {missing[0]!r} of the database is not bound; "
+                             "pass the truth folder of the corpus the database was built from.")
+        rigid = read_rigid_markers(folder / "markers.csv") or list(normalize_settings.rigid_markers) or list(names)
+        return cls(folder, binding, [n for n in rigid if n in names])
+
+    def clean(self, take: str, names: list[str], reference: np.ndarray) -> tuple[np.ndarray, tuple[np.ndarray, np.ndarray]]:
+        """A take's clean markers (T, M, 3) float32 mm in the normalized head frame of ``reference``
+        (M, 3), and the transform (R, t) from the rig's head frame (fitted on the rigid markers'
+        mean position over the take against the reference: the clean head does not move)."""
+        from .formats.mocap import read_c3d
+
+        path = self.folder / "groundtruth" / f"{take}.c3d"
+        if not path.exists():
+            raise InputError(f"{path}: no clean ground truth for take {take!r}; pass the truth folder of this corpus.")
+        take_markers = read_c3d(path)
+        where = {n: i for i, n in enumerate(take_markers.names)}
+        if any(n not in where for n in names):
+            raise InputError(f"{path}: marker {next(n for n in names if n not in where)!r} is missing; regenerate the corpus.")
+        clean = take_markers.positions[:, [where[n] for n in names]].astype(np.float64)
+        rigid = [names.index(n) for n in self.rigid]
+        r, t = fit_rigid(np.nanmean(clean[:, rigid], axis=0), reference[rigid].astype(np.float64))
+        return (clean @ r + t).astype(np.float32), (r, t)
+
+    def vertices(self, names: list[str]) -> np.ndarray:
+        """(M,) the rig vertices of the markers ``names``."""
+        return np.array([self.binding[n] for n in names])
+
+
+def heldout(corpus_path: Path, db: MotionDatabase, split: str, normalize_settings: NormalizeSettings,
+            truth: TruthFolder | None = None) -> list[Sentence]:
+    """The corpus's takes of ``split`` with their phones and normalized capture (and, with
+    ``truth``, their clean markers in the same frame)."""
     corpus = Corpus.read(corpus_path, audio=False)
     corpus.check_markers(db.marker_names, corpus_path)
     takes, phones = corpus.takes, corpus.phones
@@ -83,10 +181,13 @@ def heldout(corpus_path: Path, db: MotionDatabase, split: str, normalize_setting
         raise InputError(f"{corpus_path}: no take has split '{split}'; mark held-out takes in the manifest's split column.")
     out = []
     for i in rows:
-        truth, _, _ = normalized_take(corpus.markers[takes.frames(i)], db, normalize_settings)
+        captured, _, _ = normalized_take(corpus.markers[takes.frames(i)], db, normalize_settings)
         seg = np.nonzero(phones.take == i)[0]
         utt = utterance([phones.phone[r] for r in seg], phones.start[seg], phones.end[seg], [phone_emotion[r] for r in seg])
-        out.append(Sentence(takes.name[i], takes.emotion[i], utt, truth.astype(np.float32)))
+        s = Sentence(takes.name[i], takes.emotion[i], utt, captured.astype(np.float32))
+        if truth is not None:
+            s.clean, s.to_reference = truth.clean(takes.name[i], db.marker_names, db.reference)
+        out.append(s)
     return out
 
 
@@ -128,10 +229,127 @@ def dominance_baseline(db: MotionDatabase, model: DominanceModel, utt: Utterance
     return db.model.reconstruct(model.predict(labels, utt.starts, utt.ends, total, db.fps))
 
 
+def openfacefx_baseline(db: MotionDatabase, utt: Utterance, rig, vertices: np.ndarray,
+                        to_reference: tuple[np.ndarray, np.ndarray]) -> np.ndarray:
+    """openfacefx from the utterance's phone timing, through the rig to the markers (``vertices``)
+    and into the normalized head frame with ``to_reference`` (R, t): (T, M, 3) float32 mm."""
+    total = frame_ranges(utt.starts, utt.ends, db.fps)[-1][1]
+    arkit = openfacefx_arkit(utt.phones, utt.starts, utt.ends, total, db.fps, rig.arkit_names)
+    r, t = to_reference
+    return (rig_markers(rig, arkit, vertices) @ r + t).astype(np.float32)
+
+
 def lip_gaps(markers: np.ndarray, names: list[str], lip_markers: tuple[str, ...]) -> np.ndarray:
     """Per frame, the distance (mm) between the two ``lip_markers`` of marker frames (T, M, 3) mm."""
     i, j = (names.index(n) for n in lip_markers)
     return np.linalg.norm(markers[:, i] - markers[:, j], axis=1)
+
+
+def bilabial_frames(utt: Utterance, fps: float, n: int) -> list[tuple[int, int]]:
+    """Frames [a, b) (within the first ``n``) of each /p b m/ token of the utterance, at least one frame each."""
+    out = []
+    for a, b, p in zip(utt.starts, utt.ends, utt.phones):
+        if p in BILABIALS:
+            fa = int(round(a * fps))
+            fb = min(max(int(round(b * fps)), fa + 1), n)
+            if fb > fa:
+                out.append((fa, fb))
+    return out
+
+
+def closure_onsets(gap: np.ndarray, tokens: list[tuple[int, int]], fps: float, threshold_mm: float) -> np.ndarray:
+    """Closure timing: per token (frames [a, b)), the time (s) from the phone's first frame to the
+    first frame whose lip gap ``gap`` (T,) mm is below ``threshold_mm``; NaN when it never is.
+    (B,) float64."""
+    out = np.full(len(tokens), np.nan)
+    for k, (a, b) in enumerate(tokens):
+        below = np.nonzero(gap[a:b] < threshold_mm)[0]
+        if len(below):
+            out[k] = below[0] / fps
+    return out
+
+
+def second_differences(markers: np.ndarray, joins: np.ndarray) -> np.ndarray:
+    """|x[f+1] - 2 x[f] + x[f-1]| (mm/frame^2) of every marker at the two frames f = j-1, j around
+    each join j (the first frame after it) of ``markers`` (T, M, 3) mm; (n,) float64, flat."""
+    x = markers.astype(np.float64)
+    frames = np.unique(np.concatenate([np.asarray(joins) - 1, np.asarray(joins)]).astype(int)) if len(joins) else np.zeros(0, int)
+    frames = frames[(frames >= 1) & (frames <= len(x) - 2)]
+    d2 = x[frames + 1] - 2 * x[frames] + x[frames - 1]
+    values = np.linalg.norm(d2, axis=2).ravel()
+    return values[np.isfinite(values)]
+
+
+def away_from(n: int, joins: np.ndarray) -> np.ndarray:
+    """The frames 1..n-2 that are not within one frame of a join (the interior frames whose
+    second difference measures the motion itself, noise included): (K,) int64."""
+    keep = np.ones(n, bool)
+    keep[[0, n - 1]] = False
+    for j in np.asarray(joins, int):
+        keep[max(0, j - 1):j + 1] = False
+    return np.nonzero(keep)[0]
+
+
+def interior_second_differences(markers: np.ndarray, joins: np.ndarray) -> np.ndarray:
+    """|x[f+1] - 2 x[f] + x[f-1]| (mm/frame^2) of every marker at the frames :func:`away_from`
+    the joins: the level a join's value is compared with. (n,) float64, flat."""
+    x = markers.astype(np.float64)
+    if len(x) < 3:
+        return np.zeros(0)
+    f = away_from(len(x), joins)
+    values = np.linalg.norm(x[f + 1] - 2 * x[f] + x[f - 1], axis=2).ravel()
+    return values[np.isfinite(values)]
+
+
+def phone_boundaries(utt: Utterance, fps: float) -> np.ndarray:
+    """The first frame of every spoken phone that follows a spoken phone: (J,) int64."""
+    ranges = frame_ranges(utt.starts, utt.ends, fps)
+    return np.array([ranges[t + 1][0] for t in range(len(ranges) - 1)
+                     if utt.phones[t] != PAU and utt.phones[t + 1] != PAU], np.int64)
+
+
+def search_joins(db: MotionDatabase, utt: Utterance, path: np.ndarray) -> np.ndarray:
+    """The first frame after each non-captured join of a search's node ``path``: (J,) int64."""
+    ranges = frame_ranges(utt.starts, utt.ends, db.fps)
+    return np.array([ranges[t + 1][0] for t in range(len(path) - 1)
+                     if utt.phones[t] != PAU and utt.phones[t + 1] != PAU and db.nodes.pre[path[t + 1]] != path[t]], np.int64)
+
+
+def frame_emotions(utt: Utterance, fps: float, n: int) -> np.ndarray:
+    """The asked emotion of each of the first ``n`` frames (its phone's): (n,) str."""
+    out = np.full(n, utt.emotions[0], dtype=object)
+    for (a, b), e in zip(frame_ranges(utt.starts, utt.ends, fps), utt.emotions):
+        out[a:min(b, n)] = e
+    return out
+
+
+class EmotionClassifier:
+    """Per-frame emotion from a face pose: standardized PCA coefficients of the database's model
+    -> multinomial logistic regression, trained on at most ``frames`` captured frames of the
+    database's (training) takes, each labelled with its node's emotion."""
+
+    def __init__(self, db: MotionDatabase, frames: int, seed: int):
+        from sklearn.linear_model import LogisticRegression
+        from sklearn.pipeline import make_pipeline
+        from sklearn.preprocessing import StandardScaler
+
+        nodes = db.nodes
+        rows = np.concatenate([np.arange(nodes.frame_start[k], nodes.frame_start[k] + nodes.frame_count[k]) for k in range(len(nodes.phone))])
+        labels = np.concatenate([[nodes.emotion[k]] * int(nodes.frame_count[k]) for k in range(len(nodes.phone))])
+        rows, keep = np.unique(rows, return_index=True)  # overlapping nodes share frames
+        labels = labels[keep]
+        if len(rows) > frames:
+            pick = np.sort(np.random.default_rng(seed).choice(len(rows), frames, replace=False))
+            rows, labels = rows[pick], labels[pick]
+        self.model = db.model
+        self.emotions = sorted(set(labels.tolist()))
+        self.pipeline = make_pipeline(StandardScaler(), LogisticRegression(max_iter=2000))
+        self.pipeline.fit(db.coeffs[rows].astype(np.float64), labels)
+
+    def predict(self, markers: np.ndarray) -> np.ndarray:
+        """The emotion of each frame of ``markers`` (T, M, 3) mm in the normalized head frame: (T,) str."""
+        coeffs = self.model.project(markers).astype(np.float64)
+        return self.pipeline.predict(np.nan_to_num(coeffs))
 
 
 def sentence_metrics(syn: np.ndarray, truth: np.ndarray, utt: Utterance, fps: float, names: list[str],
@@ -147,11 +365,9 @@ def sentence_metrics(syn: np.ndarray, truth: np.ndarray, utt: Utterance, fps: fl
     gaps_syn = lip_gaps(syn, names, settings.lip_markers)
     gaps_true = lip_gaps(truth, names, settings.lip_markers)
     closures = []
-    for a, b, p in zip(utt.starts, utt.ends, utt.phones):
-        if p in BILABIALS:
-            fa, fb = int(round(a * fps)), min(int(round(b * fps)) + 1, n)
-            if fb > fa and not np.isnan(gaps_true[fa:fb]).all():
-                closures.append((gaps_syn[fa:fb].min(), np.nanmin(gaps_true[fa:fb])))
+    for fa, fb in bilabial_frames(utt, fps, n):
+        if not np.isnan(gaps_true[fa:fb]).all():
+            closures.append((gaps_syn[fa:fb].min(), np.nanmin(gaps_true[fa:fb])))
     closures = np.array(closures).reshape(-1, 2)
     return {
         "frames": n, "err_mm2": err, "rms_mm": float(np.sqrt(err)),
@@ -160,6 +376,31 @@ def sentence_metrics(syn: np.ndarray, truth: np.ndarray, utt: Utterance, fps: fl
         "lip_closure_rate": float((closures[:, 0] < settings.closure_mm).mean()) if len(closures) else None,
         "lip_closure_rate_capture": float((closures[:, 1] < settings.closure_mm).mean()) if len(closures) else None,
         "min_lip_gap_mm": float(closures[:, 0].mean()) if len(closures) else None,
+    }
+
+
+def clean_metrics(syn: np.ndarray, clean: np.ndarray, utt: Utterance, fps: float, names: list[str],
+                  settings: EvaluateSettings) -> dict:
+    """Metrics of one sentence against its clean truth (both (T, M, 3) mm in the normalized head
+    frame at ``fps``): ``err_clean_mm2`` (Eq. 13), ``velocity_ms_clean`` (mean squared velocity
+    error, mm^2/s^2), ``mouth_r`` (Pearson r of the inner-lip gaps), and per /p b m/ token the
+    closure onsets of the method and of the truth (``_onsets``, ``_onsets_clean``: (B,) s, NaN =
+    no closure; ``_sweep``: the method's closure flags at each :data:`CLOSURE_SWEEP` multiple)."""
+    n = min(len(syn), len(clean))
+    syn, clean = syn[:n].astype(np.float64), clean[:n].astype(np.float64)
+    vel = (np.diff(syn, axis=0) - np.diff(clean, axis=0)) * fps
+    gap_syn, gap_clean = lip_gaps(syn, names, settings.lip_markers), lip_gaps(clean, names, settings.lip_markers)
+    seen = np.isfinite(gap_syn) & np.isfinite(gap_clean)  # the noisy capture may keep a long gap
+    a, b = gap_syn[seen], gap_clean[seen]
+    r = float(np.corrcoef(a, b)[0, 1]) if len(a) > 2 and a.std() > 0 and b.std() > 0 else float("nan")
+    tokens = bilabial_frames(utt, fps, n)
+    return {
+        "err_clean_mm2": float(np.nanmean(np.sum((syn - clean) ** 2, axis=2))),
+        "velocity_ms_clean": float(np.nanmean(np.sum(vel**2, axis=2))),
+        "mouth_r": r,
+        "_onsets": closure_onsets(gap_syn, tokens, fps, settings.closure_mm),
+        "_onsets_clean": closure_onsets(gap_clean, tokens, fps, settings.closure_mm),
+        "_sweep": np.array([np.isfinite(closure_onsets(gap_syn, tokens, fps, k * settings.closure_mm)) for k in CLOSURE_SWEEP]).reshape(len(CLOSURE_SWEEP), len(tokens)),
     }
 
 
@@ -182,48 +423,191 @@ def aggregate(rows: list[dict]) -> dict:
     return out
 
 
+def _weighted_root(key: str):
+    def stat(rows: list[dict], idx: np.ndarray) -> float:
+        w = np.array([rows[i]["frames"] for i in idx], float)
+        return float(np.sqrt(np.sum(w * np.array([rows[i][key] for i in idx])) / np.sum(w)))
+    return stat
+
+
+def _mean_r(rows, idx):
+    values = np.array([rows[i]["mouth_r"] for i in idx], float)
+    return float(np.nanmean(values)) if np.isfinite(values).any() else float("nan")
+
+
+def _closure_rate(rows, idx):
+    onsets = np.concatenate([rows[i]["_onsets"] for i in idx])
+    return float(np.isfinite(onsets).mean()) if len(onsets) else float("nan")
+
+
+def _closure_delay(rows, idx):
+    a = np.concatenate([rows[i]["_onsets"] for i in idx])
+    b = np.concatenate([rows[i]["_onsets_clean"] for i in idx])
+    both = np.isfinite(a) & np.isfinite(b)
+    return float(1000.0 * np.abs(a[both] - b[both]).mean()) if both.any() else float("nan")
+
+
+def _join_p99(rows, idx):
+    values = np.concatenate([rows[i]["_d2"] for i in idx])
+    return float(np.percentile(values, JOIN_PERCENTILE)) if len(values) else float("nan")
+
+
+def _interior_p99(rows, idx):
+    values = np.concatenate([rows[i]["_d2_interior"] for i in idx])
+    return float(np.percentile(values, JOIN_PERCENTILE)) if len(values) else float("nan")
+
+
+def _emotion_accuracy(rows, idx):
+    return float(sum(rows[i]["emotion_correct"] for i in idx) / max(1, sum(rows[i]["frames"] for i in idx)))
+
+
+#: key -> (label, statistic over the sentences ``idx`` of a method's rows, needs the clean truth,
+#: lower is better).
+FIGURES = {
+    "rms_clean_mm": ("RMS vs clean truth (mm)", _weighted_root("err_clean_mm2"), True, True),
+    "rms_mm": ("RMS vs noisy capture (mm)", _weighted_root("err_mm2"), False, True),
+    "velocity_rms_clean_mm_s": ("velocity RMS error vs clean (mm/s)", _weighted_root("velocity_ms_clean"), True, True),
+    "mouth_r": ("mouth-opening Pearson r", _mean_r, True, False),
+    "closure_rate": ("/p b m/ closed within the phone", _closure_rate, True, False),
+    "closure_delay_ms": ("|closure onset - truth's| (ms)", _closure_delay, True, True),
+    "join_d2_p99": ("join 2nd difference, 99th pct (mm/frame²)", _join_p99, False, True),
+    "interior_d2_p99": ("2nd difference away from joins, 99th pct (mm/frame²)", _interior_p99, False, True),
+    "emotion_accuracy": ("emotion recognised (frames)", _emotion_accuracy, False, False),
+}
+
+
+def figures(per_method: dict[str, list[dict]], settings: EvaluateSettings, with_clean: bool) -> dict:
+    """Every :data:`FIGURES` entry per method with its bootstrap interval, the paired difference
+    ``dp - method`` for every other method, and the closure sweep. Rows of all methods are the
+    same sentences in the same order."""
+    n = len(per_method["dp"])
+    index = resamples(n, settings.bootstrap_resamples, settings.seed)
+    out: dict = {}
+    for method, rows in per_method.items():
+        entry = {}
+        for key, (_, stat, clean, _) in FIGURES.items():
+            if (clean and not with_clean) or any(_needed(key) not in r for r in rows):
+                continue
+            entry[key] = interval(lambda idx, stat=stat, rows=rows: stat(rows, idx), n, index)
+            if method != "dp" and method not in REFERENCES and key in out.get("dp", {}):
+                dp_rows = per_method["dp"]
+                entry[f"dp_minus.{key}"] = paired_difference(lambda idx, s=stat: s(dp_rows, idx),
+                                                             lambda idx, s=stat, r=rows: s(r, idx), n, index)
+        if with_clean and all("_sweep" in r for r in rows):
+            sweep = np.concatenate([r["_sweep"] for r in rows], axis=1)
+            entry["closure_sweep"] = {f"{k * settings.closure_mm:g}": (float(sweep[j].mean()) if sweep.shape[1] else None)
+                                      for j, k in enumerate(CLOSURE_SWEEP)}
+        out[method] = entry
+    return out
+
+
+def _needed(key: str) -> str:
+    """The per-sentence field a figure is computed from."""
+    return {"rms_clean_mm": "err_clean_mm2", "rms_mm": "err_mm2", "velocity_rms_clean_mm_s": "velocity_ms_clean",
+            "mouth_r": "mouth_r", "closure_rate": "_onsets", "closure_delay_ms": "_onsets",
+            "join_d2_p99": "_d2", "interior_d2_p99": "_d2_interior", "emotion_accuracy": "emotion_correct"}[key]
+
+
+def method_outputs(db: MotionDatabase, s: Sentence, synth: SynthesizeSettings, tc, baselines: tuple[str, ...],
+                   dominance: dict, settings: EvaluateSettings, rig=None, vertices=None) -> tuple[dict, dict]:
+    """Every method's markers (T, M, 3) mm at the capture rate for one sentence, and per method
+    its extra fields (search methods: path, joins)."""
+    outputs, extra = {}, {}
+    for method in ("dp",) + tuple(b for b in baselines if b == "greedy"):
+        res = synthesize(db, s.utterance, {}, synth if method == "dp" else dataclasses.replace(synth, search="greedy"), tc=tc)
+        spoken = [k for k, p in enumerate(s.utterance.phones) if p != PAU]
+        outputs[method] = res["markers_capture"]
+        extra[method] = {"emotion_agreement": float(np.mean([db.nodes.emotion[res["path"][k]] == s.utterance.emotions[k] for k in spoken])),
+                         "non_captured_joins": res["non_captured_joins"], "joins": search_joins(db, s.utterance, res["path"])}
+    for method in baselines:
+        if method.startswith("dominance"):
+            by = method == "dominance_emotion"
+            outputs[method] = dominance_baseline(db, dominance[by], s.utterance, by_emotion=by)
+        elif method.startswith("baseline"):
+            outputs[method] = baseline(db, s.utterance, by_emotion=(method == "baseline_emotion"))
+        elif method == "openfacefx":
+            outputs[method] = openfacefx_baseline(db, s.utterance, rig, vertices, s.to_reference)
+    return outputs, extra
+
+
 def evaluate(db_path: Path, corpus: Path, settings: EvaluateSettings, synth: SynthesizeSettings,
              normalize_settings: NormalizeSettings, sentences: list[Sentence] | None = None,
-             db: MotionDatabase | None = None, tc=None, with_baseline: bool = True) -> tuple[dict, list[dict]]:
+             db: MotionDatabase | None = None, tc=None, with_baseline: bool = True,
+             truth: Path | None = None) -> tuple[dict, list[dict]]:
     """Returns (metrics per method, per-sentence records with the curves to plot).
-    ``with_baseline=False`` skips the baseline, which does not depend on the search
-    settings (tune leaves it out of its many evaluations)."""
+
+    ``with_baseline=False`` evaluates the DP alone against the noisy capture (tune leaves the
+    baselines and figures out of its many evaluations). ``truth``: a corpus folder with clean
+    ground truth (:class:`TruthFolder`), which adds the clean-truth figures, the ``openfacefx``
+    baseline and the ``capture`` / ``clean`` references. Metrics per method: ``overall``,
+    ``per_emotion``, ``per_sentence`` as before, and ``figures`` (with intervals); under
+    ``"_figures"`` the table's meta (labels, skipped baselines and why)."""
     db = db or MotionDatabase.read(db_path)
     for name in tuple(settings.lip_markers) + (settings.plot_marker,):
         if name not in db.marker_names:
             raise InputError(f"evaluate: marker {name!r} is not in the database; set evaluate.lip_markers / evaluate.plot_marker to markers it has.")
-    sentences = sentences if sentences is not None else heldout(corpus, db, settings.split, normalize_settings)
+    folder = TruthFolder.open(truth, db.marker_names, normalize_settings) if truth is not None else None
+    sentences = sentences if sentences is not None else heldout(corpus, db, settings.split, normalize_settings, folder)
+    with_clean = folder is not None and all(s.clean is not None for s in sentences)
     if tc is None:
         tc = db.transition_costs(synth, use_opencl(synth.use_opencl))
-    baselines = ("baseline", "baseline_emotion", "dominance", "dominance_emotion") if with_baseline else ()
-    per_method: dict[str, list[dict]] = {"dp": [], **{b: [] for b in baselines}}
+    skipped = {}
+    baselines: tuple[str, ...] = ()
+    rig = vertices = None
+    if with_baseline:
+        baselines = ("greedy", "baseline", "baseline_emotion", "dominance", "dominance_emotion")
+        missing = "it needs the clean truth folder (--truth), which holds the rig's marker binding" if not with_clean else openfacefx_missing()
+        if missing is None:
+            from .facerig import load_face_rig
+
+            rig, vertices = load_face_rig(), folder.vertices(db.marker_names)
+            baselines += ("openfacefx",)
+        else:
+            skipped["openfacefx"] = missing
+    references = (REFERENCES if with_clean else ("capture",)) if with_baseline else ()
+    per_method: dict[str, list[dict]] = {m: [] for m in ("dp",) + baselines + references}
     dominance = {by: fit_dominance(training_sentences(db, by_emotion=by), db.fps, settings.dominance_iterations)
                  for by in (False, True)} if with_baseline else {}
+    classifier = EmotionClassifier(db, settings.classifier_frames, settings.seed) if with_baseline else None
+    k = db.marker_names.index(settings.plot_marker)
     records = []
     for s in progress(sentences, "evaluate"):
-        res = synthesize(db, s.utterance, {}, synth, tc=tc)
-        spoken = [k for k, p in enumerate(s.utterance.phones) if p != PAU]
-        agreement = float(np.mean([db.nodes.emotion[res["path"][k]] == s.utterance.emotions[k] for k in spoken]))
-        m_dp = sentence_metrics(res["markers_capture"], s.truth, s.utterance, db.fps, db.marker_names, settings)
-        m_dp.update(emotion_agreement=agreement, non_captured_joins=res["non_captured_joins"], take=s.take, emotion=s.emotion)
-        per_method["dp"].append(m_dp)
-        k = db.marker_names.index(settings.plot_marker)
-        record = {"take": s.take, "emotion": s.emotion, "fps": db.fps, "truth": s.truth[:, k], "dp": res["markers_capture"][:, k]}
-        for method in baselines:
-            if method.startswith("dominance"):
-                by = method == "dominance_emotion"
-                base = dominance_baseline(db, dominance[by], s.utterance, by_emotion=by)
-            else:
-                base = baseline(db, s.utterance, by_emotion=(method == "baseline_emotion"))
-            m_base = sentence_metrics(base, s.truth, s.utterance, db.fps, db.marker_names, settings)
-            m_base.update(take=s.take, emotion=s.emotion)
-            per_method[method].append(m_base)
-            record[method] = base[:, k]
+        outputs, extra = method_outputs(db, s, synth, tc, baselines, dominance, settings, rig, vertices)
+        if "capture" in references:
+            outputs["capture"] = s.truth
+        if "clean" in references:
+            outputs["clean"] = s.clean
+        record = {"take": s.take, "emotion": s.emotion, "fps": db.fps, "truth": (s.clean if with_clean else s.truth)[:, k]}
+        boundaries = phone_boundaries(s.utterance, db.fps)
+        for method, markers in outputs.items():
+            m = sentence_metrics(markers, s.truth, s.utterance, db.fps, db.marker_names, settings)
+            m.update(take=s.take, emotion=s.emotion)
+            m.update({key: v for key, v in extra.get(method, {}).items() if key != "joins"})
+            if with_baseline:
+                n = m["frames"]
+                if with_clean:
+                    m.update(clean_metrics(markers, s.clean, s.utterance, db.fps, db.marker_names, settings))
+                joins = extra[method]["joins"] if method in SEARCHES else boundaries
+                m["_d2"] = second_differences(markers[:n], joins)
+                m["_d2_interior"] = interior_second_differences(markers[:n], joins)
+                asked = frame_emotions(s.utterance, db.fps, n)
+                m["emotion_correct"] = int(np.sum(classifier.predict(markers[:n]) == asked))
+            per_method[method].append(m)
+            if method not in REFERENCES:
+                record[method] = markers[:, k]
         records.append(record)
     metrics = {}
     for method, rows in per_method.items():
         emotions = sorted({r["emotion"] for r in rows})
+        public = [{key: v for key, v in r.items() if not key.startswith("_")} for r in rows]
         metrics[method] = {"overall": aggregate(rows),
                            "per_emotion": {e: aggregate([r for r in rows if r["emotion"] == e]) for e in emotions},
-                           "per_sentence": rows}
+                           "per_sentence": public}
+    if with_baseline:
+        for method, entry in figures(per_method, settings, with_clean).items():
+            metrics[method]["figures"] = entry
+        metrics["_figures"] = {"labels": {key: label for key, (label, _, _, _) in FIGURES.items()},
+                               "lower_is_better": {key: lower for key, (_, _, _, lower) in FIGURES.items()},
+                               "clean_truth": with_clean, "skipped": skipped,
+                               "classifier_emotions": classifier.emotions}
     return metrics, records

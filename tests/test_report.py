@@ -94,3 +94,16 @@ def test_markdown_has_every_section():
     assert "| RMS marker error, DP (default weights) | mm | 1.100 |" in text
     assert "| 14 | 0.060 | 0.070 | 0.86 | 20.0 | 0.600 | 10.0 |" in text
     assert "3.50 times (median 3.80) the read floor" in text
+
+
+def test_method_tables_carry_the_figures_with_intervals():
+    cell = {"value": 1.5, "low": 1.2, "high": 1.9}
+    ev = metrics(1.0, 2.0)
+    ev["dp"]["figures"] = {"rms_clean_mm": cell}
+    ev["baseline"]["figures"] = {"rms_clean_mm": cell, "dp_minus.rms_clean_mm": {"value": -0.5, "low": -0.7, "high": -0.3}}
+    ev["figures_meta"] = {"skipped": {"openfacefx": "not installed"}}
+    methods = report.method_figures([{"seed": 0, "evaluate": ev}])
+    assert methods[0]["figures"]["baseline"]["dp_minus.rms_clean_mm"]["value"] == -0.5
+    text = "\n".join(report.method_tables(methods))
+    assert "| dp | 1.500 [1.200, 1.900] |" in text and "| dp − baseline | -0.500 [-0.700, -0.300] |" in text
+    assert "openfacefx not run" in text

@@ -1,5 +1,6 @@
 """``facesynth evaluate``: synthesized motion against captured ground truth (paper VI-D, VIII),
-written as ``metrics.json``, plots and an HTML report (the metrics: :mod:`facesynth.evaluation`)."""
+written as ``metrics.json``, plots, an HTML report and a Markdown table ``table.md`` (the
+metrics, baselines and intervals: :mod:`facesynth.evaluation`)."""
 
 from __future__ import annotations
 
@@ -12,7 +13,7 @@ import numpy as np
 from ..artifacts import atomic_folder, check_output_folder
 from ..config import EvaluateSettings, NormalizeSettings, SynthesizeSettings
 from ..errors import OutputExistsError
-from ..evaluation import evaluate
+from ..evaluation import FIGURES, REFERENCES, evaluate
 
 
 def plot(records: list[dict], folder: Path, marker: str) -> list[str]:
@@ -25,14 +26,15 @@ def plot(records: list[dict], folder: Path, marker: str) -> list[str]:
     names = []
     for r in records:
         fig, axes = plt.subplots(2, 1, figsize=(9, 5.5), sharex=True)
-        n = min(len(r["truth"]), len(r["dp"]), len(r["baseline"]))
+        curves = [c for c in (("truth", "--", "ground truth"), ("dp", "-", "synthesized (DP)"), ("baseline", ":", "per-phone mean"),
+                              ("dominance", "-.", "Cohen-Massaro (fitted)"), ("openfacefx", (0, (1, 3)), "openfacefx")) if c[0] in r]
+        n = min(len(r[key]) for key, _, _ in curves)
         t = np.arange(n) / r["fps"]
-        for key, style, label in (("truth", "--", "ground truth"), ("dp", "-", "synthesized (DP)"), ("baseline", ":", "per-phone mean"),
-                                  ("dominance", "-.", "Cohen-Massaro (fitted)")):
+        for key, style, label in curves:
             y = r[key][:n].astype(np.float64)
-            axes[0].plot(t, y[:, 1], style, label=label, lw=1.4)
+            axes[0].plot(t, y[:, 1], linestyle=style, label=label, lw=1.4)
             speed = np.linalg.norm(np.gradient(y, axis=0), axis=1) * r["fps"]
-            axes[1].plot(t, speed, style, label=label, lw=1.4)
+            axes[1].plot(t, speed, linestyle=style, label=label, lw=1.4)
         axes[0].set_ylabel(f"{marker} height (mm)")
         axes[1].set_ylabel(f"{marker} speed (mm/s)")
         axes[1].set_xlabel("time (s)")
@@ -46,9 +48,55 @@ def plot(records: list[dict], folder: Path, marker: str) -> list[str]:
     return names
 
 
+def _cell(f: dict | None, decimals: int = 3) -> str:
+    """A figure with its interval: '1.234 [1.100, 1.400]'; '—' when undefined."""
+    if not f or f.get("value") is None:
+        return "—"
+    if f.get("low") is None:
+        return f"{f['value']:.{decimals}f}"
+    return f"{f['value']:.{decimals}f} [{f['low']:.{decimals}f}, {f['high']:.{decimals}f}]"
+
+
+def figure_rows(metrics: dict) -> tuple[list[str], list[str], list[list[str]], list[list[str]]]:
+    """The table of figures: (figure keys shown, their labels, a row of cells per method with
+    intervals, a row per baseline of paired differences dp - baseline). Methods in ``metrics``
+    order; references (capture, clean) last."""
+    methods = [m for m in metrics if "figures" in metrics[m]]
+    methods = [m for m in methods if m not in REFERENCES] + [m for m in methods if m in REFERENCES]
+    keys = [k for k in FIGURES if any(k in metrics[m]["figures"] for m in methods)]
+    labels = [FIGURES[k][0] for k in keys]
+    rows = [[m] + [_cell(metrics[m]["figures"].get(k)) for k in keys] for m in methods]
+    diffs = [[f"dp − {m}"] + [_cell(metrics[m]["figures"].get(f"dp_minus.{k}")) for k in keys]
+             for m in methods if m != "dp" and m not in REFERENCES]
+    return keys, labels, rows, diffs
+
+
+def markdown_table(metrics: dict, meta: dict) -> str:
+    """The figures as Markdown: methods x figures with bootstrap 95% intervals, then the paired
+    differences DP - baseline (an interval that excludes 0 decides)."""
+    keys, labels, rows, diffs = figure_rows(metrics)
+    if not keys:
+        return ""
+    head = "| method | " + " | ".join(labels) + " |\n|---|" + "---|" * len(labels) + "\n"
+    body = "".join("| " + " | ".join(r) + " |\n" for r in rows)
+    dbody = "".join("| " + " | ".join(r) + " |\n" for r in diffs)
+    skipped = "".join(f"\n*{m} not run:* {why}.\n" for m, why in meta.get("skipped", {}).items())
+    return (f"Held-out sentences: {meta['sentences']} (split '{meta['split']}'); value [bootstrap 95% interval over "
+            f"sentences, {meta['bootstrap_resamples']} resamples]. Closure threshold {meta['closure_mm']:g} mm.\n\n"
+            + head + body + "\nPaired differences (DP minus each baseline, same resamples):\n\n" + head.replace("| method |", "| difference |")
+            + dbody + skipped)
+
+
 def write_report(folder: Path, metrics: dict, images: list[str], meta: dict) -> None:
-    """Write ``metrics.json`` and ``index.html`` (tables per method and emotion, the plots) to ``folder``."""
-    (folder / "metrics.json").write_text(json.dumps({**metrics, "meta": meta}, indent=2, sort_keys=True), encoding="utf-8")
+    """Write ``metrics.json``, ``table.md`` and ``index.html`` (the table of figures with
+    intervals, tables per method and emotion, the plots) to ``folder``."""
+    extra = metrics.get("_figures", {})
+    meta = {**meta, "skipped": extra.get("skipped", {})}
+    methods = {m: v for m, v in metrics.items() if not m.startswith("_")}
+    (folder / "metrics.json").write_text(json.dumps({**methods, "figures_meta": extra, "meta": meta}, indent=2, sort_keys=True),
+                                         encoding="utf-8")
+    (folder / "table.md").write_text(markdown_table(methods, meta), encoding="utf-8")
+    metrics = methods
     keys = [("rms_mm", "RMS error (mm)"), ("err_mm2", "Eq. 13 error (mm²)"), ("total_err_mm2", "Eq. 12 total (mm²)"),
             ("velocity_rms_mm_s", "velocity RMS error (mm/s)"), ("lip_closure_rate", "bilabials closed"),
             ("lip_closure_rate_capture", "bilabials closed in the capture"), ("min_lip_gap_mm", "mean smallest lip gap on /p b m/ (mm)"),
@@ -71,7 +119,18 @@ def write_report(folder: Path, metrics: dict, images: list[str], meta: dict) -> 
              f"<p>Database {html.escape(meta['db'])}; ground truth {html.escape(meta['heldout'])} (split '{meta['split']}'). "
              "Baselines: <i>baseline</i>, the per-phoneme mean pose, linearly interpolated; <i>baseline_emotion</i>, the mean "
              "pose per (phone, emotion); <i>dominance</i>, a Cohen-Massaro coarticulation model fitted on the training takes; <i>dominance_emotion</i>, the same "
-             "per (phone, emotion).</p><h2>Overall</h2>", table(lambda m: m["overall"])]
+             "per (phone, emotion); <i>greedy</i>, Cao et al.'s greedy search on the same database; <i>openfacefx</i>, the external "
+             "text-driven lip-sync from the same phone timing through the face rig to the markers. References: <i>capture</i>, the "
+             "normalized noisy capture; <i>clean</i>, the clean ground truth itself.</p>"]
+    shown, labels, rows, diffs = figure_rows(metrics)
+    if shown:
+        head = "<tr><th></th>" + "".join(f"<th>{html.escape(label)}</th>" for label in labels) + "</tr>"
+        parts += ["<h2>Figures with bootstrap 95% intervals over sentences</h2>",
+                  "<table>" + head + "".join("<tr>" + "".join(f"<td>{html.escape(c)}</td>" for c in r) + "</tr>" for r in rows) + "</table>",
+                  "<p>Paired differences, DP minus each baseline (same resamples; an interval that excludes 0 decides):</p>",
+                  "<table>" + head + "".join("<tr>" + "".join(f"<td>{html.escape(c)}</td>" for c in r) + "</tr>" for r in diffs) + "</table>"]
+        parts += [f"<p><i>{html.escape(m)}</i> not run: {html.escape(why)}.</p>" for m, why in meta["skipped"].items()]
+    parts += ["<h2>Overall (against the noisy capture)</h2>", table(lambda m: m["overall"])]
     emotions = sorted(next(iter(metrics.values()))["per_emotion"])
     for e in emotions:
         parts += [f"<h2>{html.escape(e)}</h2>", table(lambda m, e=e: m["per_emotion"][e])]
@@ -91,15 +150,18 @@ def check_report_folder(out_dir: Path, overwrite: bool) -> None:
 
 
 def run(db_path: Path, corpus: Path, out_dir: Path, settings: EvaluateSettings, synth: SynthesizeSettings,
-        normalize_settings: NormalizeSettings, overwrite: bool = False) -> dict:
+        normalize_settings: NormalizeSettings, overwrite: bool = False, truth: Path | None = None) -> dict:
     """Evaluate the database on the corpus's held-out takes and write the report to ``out_dir``;
-    returns the overall metrics per method.
+    returns the overall metrics per method (with ``figures`` where computed). ``truth``: the
+    corpus folder with clean ground truth (``groundtruth/``, ``markers.csv``).
     """
     check_report_folder(out_dir, overwrite)
-    metrics, records = evaluate(db_path, corpus, settings, synth, normalize_settings)
+    metrics, records = evaluate(db_path, corpus, settings, synth, normalize_settings, truth=truth)
     with atomic_folder(out_dir, "the report", overwrite) as tmp:
         images = plot(records, tmp, settings.plot_marker)
         meta = {"db": str(db_path), "heldout": str(corpus), "split": settings.split, "sentences": len(records),
-                "plot_marker": settings.plot_marker, "closure_mm": settings.closure_mm}
+                "plot_marker": settings.plot_marker, "closure_mm": settings.closure_mm, "truth": None if truth is None else str(truth),
+                "bootstrap_resamples": settings.bootstrap_resamples}
         write_report(tmp, metrics, images, meta)
-    return {m: v["overall"] for m, v in metrics.items()}
+    return {m: {**v["overall"], **({"figures": v["figures"]} if "figures" in v else {})}
+            for m, v in metrics.items() if not m.startswith("_")}
