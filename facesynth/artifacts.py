@@ -36,6 +36,8 @@ SCHEMAS: dict[str, int] = {
     "isomap": 1,
     "motion": 1,
     "meshanim": 1,
+    "curves": 1,
+    "keyshapes": 1,
 }
 
 #: Which stage makes each kind (used in messages that say what to do).
@@ -47,6 +49,8 @@ PRODUCERS: dict[str, str] = {
     "isomap": "facesynth isomap",
     "motion": "facesynth synthesize",
     "meshanim": "facesynth deform",
+    "curves": "facesynth solve",
+    "keyshapes": "facesynth keyshapes",
 }
 
 STR = h5py.string_dtype("utf-8")

@@ -170,9 +170,9 @@ DAMAGES = {
     "a wrong schema": ("corpus", lambda f: f.attrs.__setitem__("facesynth_schema", 2),
                        "/: 'corpus' schema 2 is not the supported schema 1; rebuild it with this version's "
                        "`facesynth ingest`."),
-    "an unknown kind": ("pca", lambda f: f.attrs.__setitem__("facesynth_kind", "keyshapes"),
-                        "/: unknown kind 'keyshapes'; facesynth writes corpus, normalized, pca, motiondb, isomap, "
-                        "motion, meshanim."),
+    "an unknown kind": ("pca", lambda f: f.attrs.__setitem__("facesynth_kind", "wireframe"),
+                        "/: unknown kind 'wireframe'; facesynth writes corpus, normalized, pca, motiondb, isomap, "
+                        "motion, meshanim, curves, keyshapes."),
     "a capture without its take": ("capture", lambda f: f.attrs.__delitem__("take"),
                                    "/: missing attribute 'take' (str: the captured take)."),
 }
