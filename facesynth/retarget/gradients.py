@@ -48,19 +48,35 @@ def _polar(f: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _exp(rotvec: np.ndarray) -> np.ndarray:
-    """(..., 3, 3) rotation matrices of rotation vectors (Rodrigues)."""
-    theta = np.linalg.norm(rotvec, axis=-1)
-    small = theta < 1e-8
+    """(..., 3, 3) rotation matrices of rotation vectors r (Rodrigues, written out:
+    ``cos t I + sin t / t [r]x + (1 - cos t) / t^2 r r^T`` with t = |r|)."""
+    theta2 = (rotvec**2).sum(-1)
+    theta = np.sqrt(theta2)
+    small = theta < 1e-4
     safe = np.where(small, 1.0, theta)
-    k = rotvec / safe[..., None]
-    a = np.where(small, 1.0, np.sin(theta) / safe)[..., None, None]
-    b = np.where(small, 0.5, (1 - np.cos(theta)) / np.where(small, 1.0, safe**2))[..., None, None]
+    c = np.cos(theta)
+    a = np.where(small, 1.0 - theta2 / 6.0, np.sin(theta) / safe)
+    b = np.where(small, 0.5 - theta2 / 24.0, (1.0 - c) / np.where(small, 1.0, theta2))
     x, y, z = rotvec[..., 0], rotvec[..., 1], rotvec[..., 2]
-    zero = np.zeros_like(x)
-    kx = np.stack([np.stack([zero, -z, y], -1), np.stack([z, zero, -x], -1), np.stack([-y, x, zero], -1)], -2)
-    del k
-    eye = np.eye(3, dtype=rotvec.dtype)
-    return eye + a * kx + b * (kx @ kx)
+    out = np.empty(rotvec.shape[:-1] + (3, 3), rotvec.dtype)
+    out[..., 0, 0] = c + b * x * x
+    out[..., 1, 1] = c + b * y * y
+    out[..., 2, 2] = c + b * z * z
+    bxy, bxz, byz = b * x * y, b * x * z, b * y * z
+    out[..., 0, 1] = bxy - a * z
+    out[..., 1, 0] = bxy + a * z
+    out[..., 0, 2] = bxz + a * y
+    out[..., 2, 0] = bxz - a * y
+    out[..., 1, 2] = byz - a * x
+    out[..., 2, 1] = byz + a * x
+    return out
+
+
+def _apply(r: np.ndarray, e: np.ndarray) -> np.ndarray:
+    """(..., 3, n) products of (..., 3, 3) by (..., 3, n), written out (numpy's batched matmul is
+    slow on 3 x 3 blocks)."""
+    return r[..., :, 0, None] * e[..., None, 0, :] + r[..., :, 1, None] * e[..., None, 1, :] + \
+        r[..., :, 2, None] * e[..., None, 2, :]
 
 
 class GradientBlender:
@@ -82,8 +98,9 @@ class GradientBlender:
         grads = _frames(ex, self.faces) @ inv  # (K, F, 3, 3)
         rotvec, stretch = _polar(grads)
         self.log_r = rotvec.reshape(len(ex), -1).astype(np.float32)  # (K, 3F)
-        self.stretch = (stretch - np.eye(3)).reshape(len(ex), -1).astype(np.float32)  # (K, 9F)
         self.rest_edges = rest_frames[:, :, :2].astype(np.float32)  # (F, 3, 2)
+        # (S_k - I) E per example: the blended stretch applied to the rest edges is one product.
+        self.stretch_edges = ((stretch - np.eye(3)) @ rest_frames[:, :, :2]).reshape(len(ex), -1).astype(np.float32)
         n_f, n_v = len(self.faces), len(self.rest)
         rows = np.repeat(np.arange(2 * n_f), 2)
         f0, f1, f2 = self.faces.T
@@ -103,7 +120,16 @@ class GradientBlender:
         return (self.rest.astype(np.float32) + (a @ self.offsets).reshape(len(a), -1, 3))
 
     def blend(self, alpha: np.ndarray, chunk: int = 64) -> np.ndarray:
-        """(T, V, 3) float32 deformation-gradient blend for alpha (T, K), ``chunk`` frames at a time."""
+        """(T, V, 3) float32 deformation-gradient blend for alpha (T, K), ``chunk`` frames at a time.
+
+        Runs with one BLAS thread: SuperLU's back-substitution calls BLAS on small supernodes, where
+        waking threads costs more than the work (6 times slower on a busy two-core machine)."""
+        from threadpoolctl import threadpool_limits
+
+        with threadpool_limits(1):
+            return self._blend(alpha, chunk)
+
+    def _blend(self, alpha: np.ndarray, chunk: int) -> np.ndarray:
         a = np.asarray(alpha, np.float32)
         out = np.empty((len(a), len(self.rest), 3), np.float32)
         n_f = len(self.faces)
@@ -111,8 +137,8 @@ class GradientBlender:
             w = a[start:start + chunk]
             c = len(w)
             rot = _exp((w @ self.log_r).reshape(c, n_f, 3))
-            stretch = (w @ self.stretch).reshape(c, n_f, 3, 3) + np.eye(3, dtype=np.float32)
-            target = (rot @ stretch) @ self.rest_edges  # (c, F, 3, 2): blended edges
+            stretched = (w @ self.stretch_edges).reshape(c, n_f, 3, 2) + self.rest_edges  # S E
+            target = _apply(rot, stretched)  # (c, F, 3, 2): blended edges R S E
             target = np.swapaxes(target, -1, -2).reshape(c, 2 * n_f, 3)  # rows 2f, 2f+1 as in self.edges
             lin = self.linear(w)
             rhs = np.concatenate([self.edges_t @ target[i] for i in range(c)], axis=1)  # (V, 3c)
