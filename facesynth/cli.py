@@ -579,7 +579,7 @@ def retarget(ctx: Context, motion: Path, keyshapes_path: Path, rig, binding, key
     \b
     Example:
       facesynth keyshapes db.h5 --count 7 -o keyshapes.h5
-      facesynth retarget motion.h5 --keyshapes keyshapes.h5 --mesh retargeted_anim.h5 -o retargeted.h5
+      facesynth retarget motion.h5 --keyshapes keyshapes.h5 --blend linear --mesh retargeted_anim.h5 -o retargeted.h5
     """
     import dataclasses
 

@@ -107,8 +107,11 @@ def run(motion_path: Path, keyshapes_path: Path, out: Path, settings: RetargetSe
                "residual_rms_mm": float(np.sqrt(np.nanmean(curves.residual**2)))}
     anim = None
     if mesh_out is not None:
-        blender = GradientBlender(rig.neutral, rig.faces, meshes_k, settings.anchor)
-        vertices = blender.blend(result.alpha) if settings.blend == "gradient" else blender.linear(result.alpha)
+        if settings.blend == "gradient":
+            vertices = GradientBlender(rig.neutral, rig.faces, meshes_k, settings.anchor).blend(result.alpha)
+        else:  # linear: rest + sum_k alpha_k (G_k - rest), no factorization needed
+            offsets = (meshes_k - rig.neutral).reshape(len(meshes_k), -1)
+            vertices = rig.neutral + (result.alpha @ offsets).reshape(len(result.alpha), -1, 3)
         anim = rig_animation(vertices, motion.fps, rig, motion.marker_names, motion.reference, str(motion_path))
     curves.write(out, config=settings_json(settings), inputs=inputs, overwrite=overwrite)
     if anim is not None:
