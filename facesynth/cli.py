@@ -542,7 +542,7 @@ def keyshapes(ctx: Context, db: Path, method, count, sheet, output: Path):
 @click.option("-o", "--output", type=PATH, required=True, help="Output curves.h5.")
 @stage
 def solve(ctx: Context, motion: Path, rig, binding, output: Path):
-    """Solve the rig's blendshape weights (0..1) that best explain the markers, frame by frame.
+    """Solve the rig's blendshape weights, between 0 and 1, that best explain the markers, frame by frame.
 
     A direct facial solve with a small temporal smoothness term; the reference for retarget.
 
@@ -572,7 +572,7 @@ def solve(ctx: Context, motion: Path, rig, binding, output: Path):
 @click.option("-o", "--output", type=PATH, required=True, help="Output curves.h5.")
 @stage
 def retarget(ctx: Context, motion: Path, keyshapes_path: Path, rig, binding, keymorphs, emotion, blend, mesh_out, output: Path):
-    """Retarget marker motion onto a rig through key-shapes and keymorphs (Chuang & Bregler Eq. 9).
+    """Retarget marker motion onto a rig through key-shapes and keymorphs, as Chuang and Bregler do.
 
     Writes the rig's weight curves, and with --mesh the mesh blended from the keymorph meshes.
 
