@@ -38,6 +38,8 @@ SCHEMAS: dict[str, int] = {
     "meshanim": 1,
     "expression": 1,
     "headmotion": 1,
+    "curves": 1,
+    "keyshapes": 1,
 }
 
 #: Which stage makes each kind (used in messages that say what to do).
@@ -51,6 +53,8 @@ PRODUCERS: dict[str, str] = {
     "meshanim": "facesynth deform",
     "expression": "facesynth expression fit",
     "headmotion": "facesynth head-motion",
+    "curves": "facesynth solve",
+    "keyshapes": "facesynth keyshapes",
 }
 
 STR = h5py.string_dtype("utf-8")

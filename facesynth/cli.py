@@ -40,7 +40,8 @@ class PipelineGroup(click.Group):
     order of the README and docs/pipeline.md), then any others alphabetically."""
 
     order = ("sample-corpus", "align", "ingest", "normalize", "pca", "build-db", "db", "check", "prune", "isomap",
-             "synthesize", "suggest", "expression", "head-motion", "deform", "render", "batch", "capture", "evaluate", "tune", "devices")
+             "synthesize", "suggest", "expression", "head-motion", "deform", "keyshapes", "solve", "retarget", "rig-mesh",
+             "render", "batch", "capture", "evaluate", "tune", "devices")
 
     def list_commands(self, ctx):
         listed = [name for name in self.order if name in self.commands]
@@ -107,6 +108,10 @@ READS: dict[str, tuple[str, ...]] = {
     "synthesize": ("synthesize", "ingest", "align"),
     "suggest": ("synthesize", "ingest"),
     "deform": ("deform",),
+    "keyshapes": ("keyshapes",),
+    "solve": ("solve",),
+    "retarget": ("retarget", "keyshapes"),
+    "rig-mesh": (),
     "render": ("render",),
     "batch": ("batch", "synthesize", "ingest", "align", "deform", "render"),
     "evaluate": ("evaluate", "synthesize", "normalize"),
@@ -502,6 +507,119 @@ def deform(ctx: Context, motion: Path, mesh: Path, binding: Path, output: Path):
     if s["unreached"]:  # eyes, teeth, the back of the head: expected, so only with -v
         ctx.detail(f"{s['unreached']} vertices are farther than deform.distance_threshold from every marker and stay at rest.")
     ctx.say(f"deformed {s['vertices']} vertices over {s['frames']} frames (marker fit RMS {s['fit_rms']:.3g} mesh units) -> {output}")
+
+
+_RIG_HELP = "A user's rig: a folder with neutral.obj and one OBJ per shape, or a .gltf/.glb with morph targets (default: the built-in ICT-FaceKit rig)."
+_BINDING_HELP = "With --rig: CSV 'marker,vertex' placing the motion's markers on the rig's vertices."
+
+
+@main.command()
+@click.argument("db", type=EXISTING)
+@click.option("--method", type=click.Choice(choices("keyshapes", "method")), default=None,
+              help="pca: principal-axis extremes (Chuang & Bregler); affinity: affinity propagation + merging (Huang et al.). Default: keyshapes.method.")
+@click.option("--count", type=click.IntRange(0, 200), default=None,
+              help="Key-shapes per emotion; 0: the error knee (affinity) or 20 (pca). Default: keyshapes.count.")
+@click.option("--sheet", type=PATH, default=None, help="Also write a contact sheet (.png) of the keymorphs on the rig.")
+@click.option("-o", "--output", type=PATH, required=True, help="Output keyshapes.h5.")
+@stage
+def keyshapes(ctx: Context, db: Path, method, count, sheet, output: Path):
+    """Choose key-shapes per emotion from the database's training takes, with their keymorphs on the rig.
+
+    Frames are non-negative combinations of their emotion's key-shapes (Chuang & Bregler Eq. 8);
+    the reconstruction error per key-shape count is stored beside them.
+
+    \b
+    Example:
+      facesynth keyshapes db.h5 --method pca --count 7 -o keyshapes.h5
+    """
+    import dataclasses
+
+    from .stages import keyshapes as stage
+
+    settings = ctx.config.settings("keyshapes")
+    settings = dataclasses.replace(settings, **{k: v for k, v in (("method", method), ("count", count)) if v is not None})
+    s = stage.run(db, output, settings, sheet, ctx.overwrite)
+    per = ", ".join(f"{e} {v['count']} ({v['rms_mm']:.2f} mm)" for e, v in s["emotions"].items())
+    ctx.say(f"key-shapes by {s['method']}: {per} -> {output}" + (f" (sheet {sheet})" if sheet else ""))
+
+
+@main.command()
+@click.argument("motion", type=EXISTING)
+@click.option("--rig", type=PATH, default=None, help=_RIG_HELP)
+@click.option("--binding", type=EXISTING, default=None, help=_BINDING_HELP)
+@click.option("-o", "--output", type=PATH, required=True, help="Output curves.h5.")
+@stage
+def solve(ctx: Context, motion: Path, rig, binding, output: Path):
+    """Solve the rig's blendshape weights, between 0 and 1, that best explain the markers, frame by frame.
+
+    A direct facial solve with a small temporal smoothness term; the reference for retarget.
+
+    \b
+    Example:
+      facesynth solve motion.h5 -o solved.h5
+      facesynth rig-mesh solved.h5 -o solved_anim.h5
+    """
+    from .stages import solve as stage
+
+    s = stage.run(motion, output, ctx.config.settings("solve"), rig, binding, ctx.overwrite)
+    ctx.say(f"solved {s['shapes']} shapes of rig {s['rig']} over {s['frames']} frames ({s['iterations']} iterations, "
+            f"marker residual RMS {s['residual_rms']:.3g} rig units) -> {output}")
+
+
+@main.command()
+@click.argument("motion", type=EXISTING)
+@click.option("--keyshapes", "keyshapes_path", type=EXISTING, required=True, help="Key-shapes (facesynth keyshapes).")
+@click.option("--rig", type=PATH, default=None, help=_RIG_HELP)
+@click.option("--binding", type=EXISTING, default=None, help=_BINDING_HELP)
+@click.option("--keymorphs", type=PATH, default=None,
+              help="Artist keymorphs: a folder of <keyshape>.obj, or a CSV with a 'keyshape' column and one column per rig shape.")
+@click.option("--emotion", default=None, help="Use this emotion's keymorphs alone (default: blend emotions frame by frame).")
+@click.option("--blend", type=click.Choice(choices("retarget", "blend")), default=None,
+              help="Mesh blending for --mesh: linear or gradient (deformation gradients). Default: retarget.blend.")
+@click.option("--mesh", "mesh_out", type=PATH, default=None, help="Also write the rig mesh animation (anim.h5) blended from the keymorphs.")
+@click.option("-o", "--output", type=PATH, required=True, help="Output curves.h5.")
+@stage
+def retarget(ctx: Context, motion: Path, keyshapes_path: Path, rig, binding, keymorphs, emotion, blend, mesh_out, output: Path):
+    """Retarget marker motion onto a rig through key-shapes and keymorphs, as Chuang and Bregler do.
+
+    Writes the rig's weight curves, and with --mesh the mesh blended from the keymorph meshes.
+
+    \b
+    Example:
+      facesynth keyshapes db.h5 --count 7 -o keyshapes.h5
+      facesynth retarget motion.h5 --keyshapes keyshapes.h5 --blend linear --mesh retargeted_anim.h5 -o retargeted.h5
+    """
+    import dataclasses
+
+    from .stages import retarget as stage
+
+    settings = ctx.config.settings("retarget")
+    if blend:
+        settings = dataclasses.replace(settings, blend=blend)
+    s = stage.run(motion, keyshapes_path, output, settings, ctx.config.settings("keyshapes"), rig, binding, keymorphs,
+                  mesh_out, emotion, ctx.overwrite)
+    ctx.say(f"retargeted {s['frames']} frames through {s['keyshapes']} key-shapes onto rig {s['rig']} (key-shape fit RMS "
+            f"{s['residual_rms_mm']:.3g} mm) -> {output}" + (f", {s['blend']} mesh -> {mesh_out}" if mesh_out else ""))
+
+
+@main.command("rig-mesh")
+@click.argument("curves", type=EXISTING)
+@click.option("--rig", type=PATH, default=None, help=_RIG_HELP)
+@click.option("--binding", type=EXISTING, default=None, help=_BINDING_HELP)
+@click.option("-o", "--output", type=PATH, required=True, help="Output anim.h5.")
+@stage
+def rig_mesh(ctx: Context, curves: Path, rig, binding, output: Path):
+    """Pose the rig with weight curves (solve, retarget) into a mesh animation for render.
+
+    \b
+    Example:
+      facesynth solve motion.h5 -o solved.h5
+      facesynth rig-mesh solved.h5 -o solved_anim.h5
+    """
+    from .stages import rig_mesh as stage
+
+    s = stage.run(curves, output, rig, binding, ctx.overwrite)
+    ctx.say(f"posed rig {s['rig']} ({s['vertices']} vertices) over {s['frames']} frames -> {output}")
 
 
 @main.command()

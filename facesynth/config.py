@@ -306,6 +306,49 @@ class HeadMotionSettings:
     fps: float = setting("not in the paper: rate of the written head motion (the output rate)", unit="frames/s", gt=0, le=1000)
 
 
+@dataclass(frozen=True)
+class KeyshapesSettings:
+    """``[keyshapes]``: key-shape selection per emotion (Chuang & Bregler 2005 §4.1, Huang et al. §5.2),
+    the NNLS weights (Eq. 8) and the keymorph fit on the built-in rig."""
+
+    method: str = setting("Chuang & Bregler §4.1 (pca) or Huang et al. §5.2 (affinity)", choices=("pca", "affinity"))
+    count: int = setting("Chuang & Bregler §6 (about 20 per emotion); 0: the error knee (affinity) or 20 (pca)", ge=0,
+                         le=200)
+    duplicate_mm: float = setting("Chuang & Bregler §4.1 (near-duplicate threshold): RMS per marker", unit="mm", ge=0)
+    affinity_frames: int = setting("not in the papers: frames sampled for affinity propagation (memory grows with "
+                                   "its square)", ge=10, le=20000)
+    curve_frames: int = setting("not in the papers: frames sampled for the reconstruction-error curve", ge=10)
+    keymorph_ridge: float = setting("not in the papers: tie-break between rig shapes in the keymorph fit, relative to "
+                                    "a shape's squared norm", ge=0)
+    seed: int = setting("not in the papers: frame sampling", ge=0)
+
+
+@dataclass(frozen=True)
+class SolveSettings:
+    """``[solve]``: the direct facial solve, rig weights in [0, 1] per frame (a production facial solve)."""
+
+    smooth: float = setting("not in the papers: weight of the frame-to-frame change, relative to a shape's squared "
+                            "norm", ge=0)
+    ridge: float = setting("not in the papers: weight of the squared weights, relative to a shape's squared norm", ge=0)
+    iterations: int = setting("not in the papers: most iterations of the projected-gradient solve", ge=1, le=100000)
+    tolerance: float = setting("not in the papers: stop when no weight moves by more than this in one iteration",
+                               unit="weight", gt=0)
+
+
+@dataclass(frozen=True)
+class RetargetSettings:
+    """``[retarget]``: key-shape retargeting (Chuang & Bregler Eq. 9) and mesh blending (Huang et al. §3)."""
+
+    blend: str = setting("Huang et al. §3 (deformation gradients) or linear keymorph blending",
+                         choices=("linear", "gradient"))
+    emotion_scale_mm: float = setting("not in the papers: per-frame emotion weights are exp(-(r_e / scale)^2) of each "
+                                      "emotion's NNLS residual r_e, normalized", unit="mm", gt=0)
+    emotion_smooth_s: float = setting("not in the papers: moving-average window of the emotion weights", unit="s",
+                                      ge=0)
+    anchor: float = setting("Sumner et al. 2005 (soft constraint): pull toward the linear blend, relative to the "
+                            "mean squared edge", gt=0)
+
+
 SECTIONS: dict[str, type] = {
     "ingest": IngestSettings,
     "align": AlignSettings,
@@ -318,6 +361,9 @@ SECTIONS: dict[str, type] = {
     "evaluate": EvaluateSettings,
     "tune": TuneSettings,
     "deform": DeformSettings,
+    "keyshapes": KeyshapesSettings,
+    "solve": SolveSettings,
+    "retarget": RetargetSettings,
     "render": RenderSettings,
     "limits": LimitsSettings,
     "batch": BatchSettings,

@@ -108,3 +108,18 @@ def load_face_rig() -> FaceRig:
     for array in (neutral, deltas, faces, landmarks, arkit_to_rig, *loops.values()):
         array.setflags(write=False)
     return FaceRig(neutral, faces, shape_names, deltas, landmarks, loops, arkit_names, arkit_to_rig)
+
+
+#: The name ``curves`` and ``keyshapes`` artifacts give the built-in rig.
+BUILTIN_RIG_NAME = "ict-facekit"
+
+
+@lru_cache(maxsize=1)
+def builtin_rig_sha256() -> str:
+    """Hex sha256 identifying the built-in rig: of its two data files' bytes, in order."""
+    import hashlib
+
+    digest = hashlib.sha256()
+    for name in ("data/ict_face.npz", "data/ict_face_arkit.tsv"):
+        digest.update(resources.files("facesynth").joinpath(name).read_bytes())
+    return digest.hexdigest()

@@ -27,11 +27,13 @@ DOC = Path(__file__).resolve().parents[1] / "docs" / "file-format.md"
 @pytest.fixture(scope="module")
 def written(tiny_corpus, tiny_artifacts, tiny_db, held_out_take, config, tmp_path_factory) -> dict[str, Path]:
     """One file of every kind (and variant), each written by its stage from the tiny corpus."""
-    from facesynth.stages import capture, deform, expression, head_motion, isomap, prune, synthesize
+    from facesynth.stages import capture, deform, expression, head_motion, isomap, keyshapes, prune, retarget, rig_mesh, solve, synthesize
 
     d = tmp_path_factory.mktemp("check")
     out = {**tiny_artifacts, "motiondb": tiny_db, "pruned": d / "pruned.h5", "isomap": d / "isomap.h5",
-           "motion": d / "motion.h5", "greedy": d / "greedy.h5", "capture": d / "capture.h5", "meshanim": d / "anim.h5"}
+           "motion": d / "motion.h5", "greedy": d / "greedy.h5", "capture": d / "capture.h5", "meshanim": d / "anim.h5",
+           "keyshapes": d / "keyshapes.h5", "curves": d / "solved.h5", "retargeted": d / "retargeted.h5",
+           "rig_mesh": d / "rig_anim.h5"}
     prune.run(tiny_db, out["pruned"], config.settings("prune"), "3,5", False, "test", False)
     isomap.run(out["pruned"], out["isomap"], config.settings("isomap"))
     tg = tiny_corpus / "labels" / f"{held_out_take}.TextGrid"
@@ -46,6 +48,12 @@ def written(tiny_corpus, tiny_artifacts, tiny_db, held_out_take, config, tmp_pat
                        config.settings("ingest"), to="happy", intensity=0.5, emotions_path=None)
     head_motion.run(tiny_db, tiny_artifacts["corpus"], tiny_corpus / "audio" / f"{held_out_take}.wav", out["headmotion"],
                     config.settings("head_motion"))
+    ks = dataclasses.replace(config.settings("keyshapes"), count=3, curve_frames=200)
+    keyshapes.run(tiny_db, out["keyshapes"], ks)
+    solve.run(out["capture"], out["curves"], config.settings("solve"))
+    retarget.run(out["motion"], out["keyshapes"], out["retargeted"], dataclasses.replace(config.settings("retarget"), blend="linear"),
+                 ks, mesh_out=d / "retargeted_anim.h5")
+    rig_mesh.run(out["curves"], out["rig_mesh"])
     return out
 
 
@@ -90,7 +98,8 @@ def test_the_specification_covers_every_kind_at_its_schema():
 
 
 @pytest.mark.parametrize("name", ["corpus", "normalized", "pca", "motiondb", "pruned", "isomap", "motion", "greedy",
-                                  "capture", "meshanim", "expression", "restyle", "headmotion"])
+                                  "capture", "meshanim", "expression", "restyle", "headmotion", "keyshapes", "curves",
+                                  "retargeted", "rig_mesh"])
 def test_every_kind_written_by_its_stage_checks_clean(written, name):
     report = check.check_file(written[name])
     assert report.problems == []
@@ -99,14 +108,14 @@ def test_every_kind_written_by_its_stage_checks_clean(written, name):
 
 def _written_keys(f: h5py.File, kind: spec.Kind) -> dict[str, set[str]]:
     """Every key of ``f`` (a pattern group's members under its pattern name) and its attributes."""
-    patterns = {k.rsplit("/", 1)[0] for k, e in spec.walk(kind.root) if isinstance(e, spec.Group) and e.pattern}
+    patterns = {k.rsplit("/", 1)[0]: e.name for k, e in spec.walk(kind.root) if isinstance(e, spec.Group) and e.pattern}
     out = {"": set(f.attrs)}
 
     def visit(name, obj):
         parts = name.split("/")
         for i in range(1, len(parts)):
             if "/".join(parts[:i]) in patterns:
-                parts[i] = "<phone>"
+                parts[i] = patterns["/".join(parts[:i])]
         out.setdefault("/".join(parts), set()).update(obj.attrs)
 
     f.visititems(visit)
@@ -176,9 +185,9 @@ DAMAGES = {
     "a wrong schema": ("corpus", lambda f: f.attrs.__setitem__("facesynth_schema", 2),
                        "/: 'corpus' schema 2 is not the supported schema 1; rebuild it with this version's "
                        "`facesynth ingest`."),
-    "an unknown kind": ("pca", lambda f: f.attrs.__setitem__("facesynth_kind", "keyshapes"),
-                        "/: unknown kind 'keyshapes'; facesynth writes corpus, normalized, pca, motiondb, isomap, "
-                        "motion, meshanim, expression, headmotion."),
+    "an unknown kind": ("pca", lambda f: f.attrs.__setitem__("facesynth_kind", "wireframe"),
+                        "/: unknown kind 'wireframe'; facesynth writes corpus, normalized, pca, motiondb, isomap, "
+                        "motion, meshanim, expression, headmotion, curves, keyshapes."),
     "a capture without its take": ("capture", lambda f: f.attrs.__delitem__("take"),
                                    "/: missing attribute 'take' (str: the captured take)."),
 }

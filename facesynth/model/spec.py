@@ -47,7 +47,7 @@ SYMBOLS: dict[str, str] = {
     "n": "frames of one phoneme cluster",
     "ti": "Delaunay triangles of one cluster's Isomap",
     "tp": "Delaunay triangles of one cluster's PCA map",
-    "E": "emotions (styles) of a bilinear expression model",
+    "Es": "emotions (styles) of a bilinear expression model",
     "Kb": "PCA components of a bilinear expression model",
     "J": "content dimension of a bilinear expression model",
     "It": "iterations of the bilinear fit",
@@ -55,6 +55,10 @@ SYMBOLS: dict[str, str] = {
     "Fh": "frames of a synthesized head motion",
     "Pf": "pitch frames of a synthesized head motion",
     "G": "pitch segments of a synthesized head motion",
+    "E": "shapes of a blendshape rig",
+    "L": "emotions with key-shapes",
+    "k": "key-shapes of one emotion",
+    "c": "points of one emotion's reconstruction-error curve",
 }
 
 #: The largest magnitude of any float in an artifact where numbers must be finite (mm, s, costs,
@@ -445,6 +449,57 @@ MESHANIM = Kind("meshanim", SCHEMAS["meshanim"], (
             "radians", (_units("radians"), _fps()), finite=False, required=False),
 ), attrs=(Attr("fit_rms", "float", "residual of the marker-to-mesh similarity fit, mesh units"),))
 
+_WEIGHT = _units("weight")
+
+CURVES = Kind("curves", SCHEMAS["curves"], (
+    "Blendshape weight curves of one rig: `facesynth solve` writes a direct facial solve of marker motion "
+    "(`source = \"solve\"`), `facesynth retarget` key-shape weights applied to keymorphs (Chuang & Bregler "
+    "Eq. 9, `source = \"retarget\"`); a take's true weights are `truth`, weights read from a user's file "
+    "`import`. Weights are in [0, 1]; shape names are the rig's own (ICT-FaceKit spelling for the built-in rig)."), (
+    Dataset("weights", "float32", ("Fo", "E"), "per-frame rig weights, in [0, 1]", "weight",
+            (_WEIGHT, _fps()), ge=0),
+    Dataset("shape_names", "str", ("E",), "the rig's shape names, column order of `weights`"),
+    Dataset("head_rotation", "float32", ("Fo", 3, 3), "head pose carried from the motion: "
+            "`x -> head_rotation @ x + head_translation`", None, (_fps(), _HEAD_CONVENTION), required=False),
+    Dataset("head_translation", "float32", ("Fo", 3), "see `head_rotation`", "mm", (MM, _fps()), required=False),
+    Dataset("emotion", "str", ("Fo",), "per-frame emotion", required=False),
+    Dataset("intensity", "float32", ("Fo",), "per-frame emotion intensity in [0, 1]", required=False, ge=0),
+    Dataset("residual", "float32", ("Fo",), "per-frame RMS marker residual of the fit, NaN where a frame had "
+            "no markers", "mm", (MM,), finite=False, required=False),
+), attrs=(Attr("rig_name", "str", "the rig (`ict-facekit` for the built-in rig)"),
+          Attr("rig_sha256", "str", "sha256 of the rig's data (package data, a user's rig folder or glTF)"),
+          Attr("source", "str", "what made the weights", choices=("solve", "retarget", "truth", "import")),
+          Attr("method", "str", "how, in words (e.g. `linear`, `deformation-gradient`), or empty")),
+    writers=("facesynth solve", "facesynth retarget"))
+
+KEYSHAPES = Kind("keyshapes", SCHEMAS["keyshapes"], (
+    "Key-shapes chosen from a motion database, per emotion (Chuang & Bregler 2005 §4.1 PCA extremes, or "
+    "Huang et al. §5.2 affinity propagation with merging to the error knee), with their keymorphs fitted on "
+    "the built-in rig. A frame is a non-negative combination of its emotion's key-shapes (Eq. 8), solved "
+    "with the settings in `solver`."), (
+    Dataset("marker_names", "str", ("M",), "marker order"),
+    Dataset("reference", "float32", ("M", 3), "the database's rest pose", "mm", (MM,)),
+    Dataset("emotion_names", "str", ("L",), "the emotions, names of the groups under `emotions/`"),
+    Dataset("rig_shape_names", "str", ("E",), "the keymorphs' rig shape names", required=False),
+    Group("emotions", "keyshape-emotions", "one group per emotion", (
+        Group("<emotion>", "keyshape-set", "the key-shapes of one emotion", (
+            Dataset("markers", "float32", ("k", "M", 3), "key-shape marker poses, head frame", "mm", (MM,)),
+            Dataset("coefficients", "float32", ("k", "K"), "their PCA coordinates in the database's model", "mm", (MM,)),
+            Dataset("source_frame", "int64", ("k",), "the database frame each was taken from", ge=0),
+            Dataset("names", "str", ("k",), "key-shape names; keymorph files and CSV rows are matched by them"),
+            Dataset("keymorphs", "float32", ("k", "E"), "each key-shape's rig weights on the built-in rig, in [0, 1]",
+                    "weight", (_WEIGHT,), required=False, ge=0),
+            Dataset("counts", "int64", ("c",), "key-shape counts of the reconstruction-error curve", ge=1),
+            Dataset("errors", "float32", ("c",), "NNLS reconstruction RMS of the emotion's frames with that many "
+                    "key-shapes (Eq. 8)", "mm", (MM,)),
+        ), attrs=(Attr("rms", "float", "reconstruction RMS with all the key-shapes, mm", ge=0),), local=("k", "c")),
+    )),
+), attrs=(Attr("method", "str", "how the key-shapes were chosen", choices=("pca", "affinity")),
+          Attr("requested_count", "int", "key-shapes asked for per emotion (0: chosen at the knee)", ge=0),
+          Attr("solver", "json", "settings of the non-negative weights solve"),
+          Attr("rig_name", "str", "the rig the keymorphs were fitted on", required=False),
+          Attr("rig_sha256", "str", "sha256 of that rig's data", required=False)))
+
 #: Every kind's specification at its current schema.
 EXPRESSION = Kind("expression", SCHEMAS["expression"], (
     "A bilinear style/content model of marker frames (Chuang & Bregler 2005, §3, Eq. 4): "
@@ -453,9 +508,9 @@ EXPRESSION = Kind("expression", SCHEMAS["expression"], (
     Dataset("marker_names", "str", ("M",), "marker order"),
     Dataset("mean", "float32", ("M", 3), "mean marker frame of the fitted data", "mm", (MM,)),
     Dataset("basis", "float32", ("Kb", "M", 3), "orthonormal PCA modes (Eq. 1) the model's coefficients are in"),
-    Dataset("emotions", "str", ("E",), "the fitted emotions, one per style vector"),
-    Dataset("styles", "float64", ("E", "E"), "style (expression) vector of each emotion (Eq. 4's e_s)"),
-    Dataset("W", "float64", ("Kb", "E", "J"), "bilinear basis (Eq. 4's W_k)"),
+    Dataset("emotions", "str", ("Es",), "the fitted emotions, one per style vector"),
+    Dataset("styles", "float64", ("Es", "Es"), "style (expression) vector of each emotion (Eq. 4's e_s)"),
+    Dataset("W", "float64", ("Kb", "Es", "J"), "bilinear basis (Eq. 4's W_k)"),
     Dataset("content_mean", "float64", ("J",), "mean training content vector (Eq. 5's initial guess)"),
     Dataset("errors", "float64", ("It",), "mean squared error after each alternating least-squares iteration",
             "mm^2", (_units("mm^2"),)),
@@ -482,7 +537,7 @@ HEADMOTION = Kind("headmotion", SCHEMAS["headmotion"], (
 ))
 
 KINDS: dict[str, Kind] = {k.name: k for k in (CORPUS, NORMALIZED, PCA, MOTIONDB, ISOMAP, MOTION, MESHANIM, EXPRESSION,
-                                              HEADMOTION)}
+                                              HEADMOTION, CURVES, KEYSHAPES)}
 
 BLOCKS: tuple[Block, ...] = (TABLES, HEAD_FRAMES, PCA_MODEL)
 

@@ -1,0 +1,233 @@
+"""Retargeting onto the built-in rig, scored on the virtual actress (issue 17).
+
+    .venv/bin/python benchmarks/retarget_accuracy.py --corpus out/corpus --corpus-h5 out/corpus.h5 \
+        --db out/db.h5 [--takes 6] [--counts 7,14,20,30] > benchmarks/retarget_accuracy.json
+
+For held-out (``test``) takes, captured through ``facesynth capture``'s core at 30 frames/s,
+against the truth (``groundtruth/<take>_truth.csv``, down-sampled alike; truth mesh =
+rig.evaluate(truth rig weights)):
+
+* ``weights``: RMS error of the 52 ARKit weights and mean per-shape Pearson correlation (over
+  the shapes that move in the take) of the direct solve and of linear key-shape retargeting;
+* ``mesh_mm``: mean full-mesh vertex error (11,248 vertices, mm) of Gaussian ``deform`` (Eq.
+  14-15 on the rig's neutral mesh), the direct solve, linear key-shape retargeting and
+  deformation-gradient retargeting;
+* ``lip_closure_mm``: the mean lip gap on the final mesh at the centre of every /p b m/ (truth
+  beside it), and the fraction under 1 mm;
+* rows for both selection methods and key-shape counts; every number with a bootstrap 95%
+  confidence interval over takes.
+
+``synthesized``: the same held-out sentences synthesized by the DP search (no truth there):
+marker residual of the solve and of the key-shape fit, lip closure on /p b m/ for each
+method, and the RMS difference between the solve's and retargeting's ARKit weights.
+
+``speed``: the whole retargeting of a 10-second clip (300 frames at 30 frames/s; NNLS in every
+emotion, blend, and the deformation-gradient mesh of all 11,248 vertices) after the one-time
+work (polar decompositions and the sparse factorization), timed separately.
+"""
+
+from __future__ import annotations
+
+import argparse
+import dataclasses
+import json
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+
+from facesynth.config import Config
+from facesynth.corpus.markers import build_marker_set
+from facesynth.corpus.truth import read_truth
+from facesynth.facerig import load_face_rig
+from facesynth.formats.mesh import read_binding, read_mesh
+from facesynth.model.corpus import Corpus
+from facesynth.model.motion import Motion
+from facesynth.model.motiondb import MotionDatabase
+from facesynth.motion.postprocess import downsample
+from facesynth.retarget.gradients import GradientBlender
+from facesynth.stages import capture, deform, keyshapes, retarget, solve, synthesize
+
+BILABIALS = ("p", "b", "m")
+
+
+def boot(values, seed: int = 0, n: int = 2000) -> dict:
+    v = np.asarray(values, float)
+    rng = np.random.default_rng(seed)
+    means = v[rng.integers(0, len(v), (n, len(v)))].mean(1)
+    return {"mean": float(v.mean()), "ci95": [float(np.percentile(means, 2.5)), float(np.percentile(means, 97.5))]}
+
+
+def lip_gap(vertices: np.ndarray, upper: np.ndarray, lower: np.ndarray) -> np.ndarray:
+    """(T,) smallest distance (mm) between the upper and lower central lip surfaces."""
+    a, b = vertices[:, upper], vertices[:, lower]
+    return np.sqrt(((a[:, :, None] - b[:, None]) ** 2).sum(-1)).min(axis=(1, 2))
+
+
+def bilabial_frames(corpus: Corpus, take: str, fps: float, n: int) -> np.ndarray:
+    i = corpus.takes.name.index(take)
+    rows = np.flatnonzero(corpus.phones.take == i)
+    centres = [(corpus.phones.start[r] + corpus.phones.end[r]) / 2 for r in rows if corpus.phones.phone[r] in BILABIALS]
+    return np.array([f for f in (int(round(c * fps)) for c in centres) if f < n], int)
+
+
+def weight_scores(rig, est: np.ndarray, truth: np.ndarray) -> tuple[float, float]:
+    a, t = rig.to_arkit(est), rig.to_arkit(truth)
+    rms = float(np.sqrt(((a - t) ** 2).mean()))
+    moving = [j for j in range(a.shape[1]) if t[:, j].std() > 1e-3 and a[:, j].std() > 1e-9]
+    corr = float(np.mean([np.corrcoef(a[:, j], t[:, j])[0, 1] for j in moving])) if moving else float("nan")
+    return rms, corr
+
+
+def main(argv: list[str]) -> int:
+    p = argparse.ArgumentParser()
+    p.add_argument("--corpus", type=Path, required=True)
+    p.add_argument("--corpus-h5", type=Path, required=True)
+    p.add_argument("--db", type=Path, required=True)
+    p.add_argument("--takes", type=int, default=6)
+    p.add_argument("--counts", default="7,14,20,30")
+    p.add_argument("--methods", default="pca,affinity")
+    p.add_argument("--no-speed", action="store_true", help="leave out the speed measurement")
+    args = p.parse_args(argv)
+    config = Config.load()
+    rig = load_face_rig()
+    ms = build_marker_set(rig)
+    corpus = Corpus.read(args.corpus_h5, audio=False)
+    db = MotionDatabase.read(args.db)
+    tests = [n for n, s in zip(db.takes.name, db.takes.split) if s == "test"][: args.takes]
+    tmp = Path(tempfile.mkdtemp())
+    fps = 30.0
+    mesh_v, mesh_f = read_mesh(args.corpus / "face.obj")
+    binding = read_binding(args.corpus / "markers.csv")
+    dset = config.settings("deform")
+    bound = None
+    takes = {}
+    for take in tests:
+        cap = tmp / f"{take}.h5"
+        capture.run(args.db, args.corpus_h5, take, cap, config.settings("normalize"), fps)
+        motion = Motion.read(cap)
+        truth = read_truth(args.corpus / "groundtruth" / f"{take}_truth.csv")
+        tw = downsample(truth.rig_weights, db.fps, fps)
+        n = min(len(tw), len(motion.markers))
+        if bound is None:
+            bound = deform.bind(mesh_v, mesh_f, binding, motion.marker_names, dset, "face.obj", "markers.csv")
+        gauss, _ = deform.animate(bound, motion.markers[:n], motion.marker_names, motion.reference, None)
+        syn = tmp / f"{take}_syn.h5"
+        synthesize.run(args.db, syn, config.settings("synthesize"), config.settings("ingest"), config.settings("align"),
+                       phones_path=args.corpus / "labels" / f"{take}.TextGrid")
+        takes[take] = {"motion": motion, "truth": tw[:n], "n": n, "gauss": gauss,
+                       "bilabial": bilabial_frames(corpus, take, fps, n), "synth": Motion.read(syn)}
+        print(f"captured {take}", file=sys.stderr)
+
+    from facesynth.retarget.rig import builtin_rig
+
+    target = builtin_rig()
+    ssolve = config.settings("solve")
+    result = {"takes": tests, "fps": fps, "vertices": int(len(rig.neutral)), "rows": [], "baselines": {}}
+    per = {k: [] for k in ("solve_rms", "solve_corr", "solve_mesh", "deform_mesh", "truth_gap", "solve_gap", "deform_gap",
+                           "syn_solve_resid", "syn_solve_gap")}
+    solved = {}
+    for take, d in takes.items():
+        w, _, _ = solve.solve(d["motion"], target, ssolve, take)
+        w = w[: d["n"]]
+        solved[take] = w
+        rms, corr = weight_scores(rig, w, d["truth"])
+        tv, sv = rig.evaluate(d["truth"]), rig.evaluate(w)
+        per["solve_rms"].append(rms)
+        per["solve_corr"].append(corr)
+        per["solve_mesh"].append(float(np.sqrt(((sv - tv) ** 2).sum(-1)).mean()))
+        per["deform_mesh"].append(float(np.sqrt(((d["gauss"] - tv) ** 2).sum(-1)).mean()))
+        b = d["bilabial"]
+        per["truth_gap"].append(float(lip_gap(tv[b], ms.lip_upper, ms.lip_lower).mean()))
+        per["solve_gap"].append(float(lip_gap(sv[b], ms.lip_upper, ms.lip_lower).mean()))
+        per["deform_gap"].append(float(lip_gap(d["gauss"][b], ms.lip_upper, ms.lip_lower).mean()))
+        ws, rs, _ = solve.solve(d["synth"], target, ssolve, take)
+        d["synth_solve"] = ws
+        per["syn_solve_resid"].append(float(np.sqrt(np.nanmean(rs**2))))
+        sb = bilabial_frames(corpus, take, fps, len(ws))
+        per["syn_solve_gap"].append(float(lip_gap(rig.evaluate(ws[sb]), ms.lip_upper, ms.lip_lower).mean()))
+    result["baselines"] = {k: boot(v) for k, v in per.items()}
+    print("baselines done", file=sys.stderr)
+
+    kss = config.settings("keyshapes")
+    rset = config.settings("retarget")
+    for method in args.methods.split(","):
+        for count in [int(c) for c in args.counts.split(",")]:
+            t0 = time.perf_counter()
+            ks = keyshapes.build(db, dataclasses.replace(kss, method=method, count=count), method, count, str(args.db))
+            select_s = time.perf_counter() - t0
+            weights_k, meshes_k = retarget.keymorphs(ks, target, None, kss.keymorph_ridge, "keyshapes")
+            t0 = time.perf_counter()
+            blender = GradientBlender(target.neutral, target.faces, meshes_k, rset.anchor)
+            factor_s = time.perf_counter() - t0
+            rows = {k: [] for k in ("rms", "corr", "lin_mesh", "grad_mesh", "lin_gap", "grad_gap", "fit_mm",
+                                    "syn_fit_mm", "syn_lin_gap", "syn_grad_gap", "syn_vs_solve_rms")}
+            for take, d in takes.items():
+                r = retarget.retarget(d["motion"], ks, rset, None, take)
+                alpha = r.alpha[: d["n"]]
+                w = np.clip(alpha @ weights_k, 0, 1)
+                rms, corr = weight_scores(rig, w, d["truth"])
+                tv = rig.evaluate(d["truth"])
+                lin = blender.linear(alpha)
+                grad = blender.blend(alpha)
+                b = d["bilabial"]
+                rows["rms"].append(rms)
+                rows["corr"].append(corr)
+                rows["lin_mesh"].append(float(np.sqrt(((lin - tv) ** 2).sum(-1)).mean()))
+                rows["grad_mesh"].append(float(np.sqrt(((grad - tv) ** 2).sum(-1)).mean()))
+                rows["lin_gap"].append(float(lip_gap(lin[b], ms.lip_upper, ms.lip_lower).mean()))
+                rows["grad_gap"].append(float(lip_gap(grad[b], ms.lip_upper, ms.lip_lower).mean()))
+                dom = r.emotion_weights.argmax(1)
+                rows["fit_mm"].append(float(np.sqrt(np.mean(r.residual[np.arange(len(dom)), dom] ** 2))))
+                rs = retarget.retarget(d["synth"], ks, rset, None, take)
+                dom = rs.emotion_weights.argmax(1)
+                rows["syn_fit_mm"].append(float(np.sqrt(np.mean(rs.residual[np.arange(len(dom)), dom] ** 2))))
+                sb = bilabial_frames(corpus, take, fps, len(rs.alpha))
+                rows["syn_lin_gap"].append(float(lip_gap(blender.linear(rs.alpha[sb]), ms.lip_upper, ms.lip_lower).mean()))
+                rows["syn_grad_gap"].append(float(lip_gap(blender.blend(rs.alpha[sb]), ms.lip_upper, ms.lip_lower).mean()))
+                ws = np.clip(rs.alpha @ weights_k, 0, 1)
+                rows["syn_vs_solve_rms"].append(float(np.sqrt(((rig.to_arkit(ws) - rig.to_arkit(d["synth_solve"])) ** 2).mean())))
+            result["rows"].append({"method": method, "count": count,
+                                   "keyshapes": {e: k.count for e, k in ks.emotions.items()},
+                                   "reconstruction_rms_mm": {e: float(k.rms) for e, k in ks.emotions.items()},
+                                   "select_s": select_s, "factorize_s": factor_s,
+                                   **{k: boot(v) for k, v in rows.items()}})
+            print(f"{method} {count} done", file=sys.stderr)
+
+    result["load_average"] = list(__import__("os").getloadavg())
+    if args.no_speed:
+        json.dump(result, sys.stdout, indent=1)
+        print()
+        return 0
+    # Speed: a 10-second clip, after the one-time work.
+    take = tests[0]
+    motion = takes[take]["motion"]
+    reps = int(np.ceil(300 / len(motion.markers)))
+    clip = dataclasses.replace(motion, markers=np.concatenate([motion.markers] * reps)[:300])
+    ks = keyshapes.build(db, dataclasses.replace(kss, method="pca", count=20), "pca", 20, str(args.db))
+    weights_k, meshes_k = retarget.keymorphs(ks, target, None, kss.keymorph_ridge, "keyshapes")
+    t0 = time.perf_counter()
+    blender = GradientBlender(target.neutral, target.faces, meshes_k, rset.anchor)
+    once = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    r = retarget.retarget(clip, ks, rset, None, take)
+    t1 = time.perf_counter()
+    lin = blender.linear(r.alpha)
+    t2 = time.perf_counter()
+    grad = blender.blend(r.alpha)
+    t3 = time.perf_counter()
+    w, _, it = solve.solve(clip, target, ssolve, take)
+    t4 = time.perf_counter()
+    result["speed"] = {"frames": 300, "keyshapes": int(r.alpha.shape[1]), "one_time_s": once, "nnls_and_blend_s": t1 - t0,
+                       "linear_mesh_s": t2 - t1, "gradient_mesh_s": t3 - t2,
+                       "retarget_total_gradient_s": t3 - t0, "retarget_total_linear_s": t2 - t0,
+                       "direct_solve_s": t4 - t3, "direct_solve_iterations": it}
+    json.dump(result, sys.stdout, indent=1)
+    print()
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
