@@ -260,6 +260,15 @@ class BatchSettings:
     workers: int = setting("not in the paper: local Dask worker processes; 0: one per core", unit="processes", ge=0)
 
 
+@dataclass(frozen=True)
+class ExportSettings:
+    """``[export]``: ``facesynth export``'s defaults (the other formats keep the animation's rate
+    unless ``--fps``)."""
+
+    arkit_fps: float = setting("not in the paper: Live Link Face records at 60 frames/s", unit="frames/s",
+                               gt=0, le=1000)
+
+
 SECTIONS: dict[str, type] = {
     "ingest": IngestSettings,
     "align": AlignSettings,
@@ -275,6 +284,7 @@ SECTIONS: dict[str, type] = {
     "render": RenderSettings,
     "limits": LimitsSettings,
     "batch": BatchSettings,
+    "export": ExportSettings,
 }
 
 S = TypeVar("S")
