@@ -22,6 +22,13 @@ from pathlib import Path
 import numpy as np
 
 
+def available() -> bool:
+    """Whether usd-core (``pip install facesynth[usd]``) is installed."""
+    import importlib.util
+
+    return importlib.util.find_spec("pxr") is not None
+
+
 def _stage(path: Path, fps: float, n_frames: int):
     from pxr import Usd, UsdGeom
 

@@ -65,6 +65,12 @@ def run(artifact: Path, fmt: str, output: Path, settings: ExportSettings, *, fps
     """Export ``artifact`` as ``fmt`` to ``output``; returns a summary (frames, fps, seconds, files)."""
     if fmt not in FORMATS:
         raise UsageError(f"unknown format {fmt!r}; choose one of {', '.join(FORMATS)}.")
+    if fmt in ("usd", "usda"):
+        from ..exports import usd
+
+        if not usd.available():
+            raise InputError(f"{fmt} export needs Pixar's usd-core, which is not installed; "
+                             "run `pip install 'facesynth[usd]'` (or `pip install usd-core`).")
     if audio is not None and fmt not in ("gltf", "glb"):
         raise UsageError("--audio goes with gltf and glb (the other formats carry no audio reference).")
     if fmt == "obj-seq":
