@@ -32,9 +32,9 @@ import numpy as np
 from .animation import Exportable
 
 #: Largest number of principal components kept for a mesh animation or marker motion.
-MAX_COMPONENTS = 48
+MAX_COMPONENTS = 96
 #: Fraction of the variance of the offsets from the rest pose the kept components explain.
-KEEP_VARIANCE = 0.9999
+KEEP_VARIANCE = 0.999999
 
 #: The vendored three.js files (package data) and the ids of the page's script blocks.
 THREE_FILES = {"three-core": "three.core.js", "three-module": "three.module.js", "three-orbit": "three.OrbitControls.js"}
