@@ -549,6 +549,7 @@ def export(ctx: Context, artifact: Path, fmt: str, fps: float | None, head_motio
 
     \b
     Example:
+      facesynth export motion.h5 --format c3d -o motion.c3d
       facesynth export anim.h5 --format obj-seq -o anim_obj
     """
     from .stages import export as stage
