@@ -203,7 +203,7 @@ def test_gltf_round_trip_and_validator(made, tmp_path, fmt):
 # --- USD ---------------------------------------------------------------------------------------
 
 def test_usd_blendshapes_from_curves(made, tmp_path):
-    pxr = pytest.importorskip("pxr", reason="usd-core is not installed (pip install 'facesynth[usd]')")
+    pytest.importorskip("pxr", reason="usd-core is not installed (pip install 'facesynth[usd]')")
     from pxr import Usd, UsdGeom, UsdSkel
 
     out = tmp_path / "face.usd"
@@ -222,7 +222,6 @@ def test_usd_blendshapes_from_curves(made, tmp_path):
     assert list(query.GetBlendShapeOrder()) == list(rig.shape_names)
     for frame in (0, c.n_frames // 2, c.n_frames - 1):
         assert np.abs(np.array(query.ComputeBlendShapeWeights(frame)) - c.weights[frame]).max() < 1e-7
-    assert pxr is not None
 
 
 def test_usda_time_sampled_points_from_mesh_animation(made, tmp_path):
@@ -299,7 +298,6 @@ def test_existing_output_needs_overwrite(made, tmp_path):
 
 
 def test_mesh_with_another_vertex_count_is_refused(made, tmp_path):
-    rig = load_face_rig()
     small = tmp_path / "small.obj"
     v, f = read_mesh(made["mesh"])
     keep = f[(f < len(v) - 10).all(axis=1)]
@@ -309,6 +307,5 @@ def test_mesh_with_another_vertex_count_is_refused(made, tmp_path):
     out = tmp_path / "seq"
     line = refused("export", made["anim"], "--format", "obj-seq", "--mesh", small, "-o", out, says="vertices")
     assert str(small) in line and not out.exists()
-    assert len(rig.neutral) > 0
     # the mesh the animation was made on is accepted
     ok("export", made["anim"], "--format", "obj-seq", "--mesh", made["mesh"], "-o", out)
