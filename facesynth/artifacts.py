@@ -431,6 +431,22 @@ def damaged(path: Path, kind: str, where: str, exc: BaseException) -> ArtifactEr
                          f"make it again with `{PRODUCERS.get(kind, 'facesynth')}`.")
 
 
+def artifact_kind(path: Path) -> str | None:
+    """The ``facesynth_kind`` of the artifact at ``path`` (e.g. 'motion', 'meshanim', 'curves'),
+    or None when the file is missing, no HDF5 file or no facesynth artifact. Only peeks at the
+    root attribute: read the artifact itself with :func:`open_artifact`."""
+    path = Path(path)
+    try:
+        if not path.is_file() or not h5py.is_hdf5(path):
+            return None
+        with h5py.File(path, "r") as f:
+            found = f.attrs.get("facesynth_kind")
+    except (OSError, RuntimeError, KeyError, ValueError):
+        return None
+    found = found.decode("utf-8", "replace") if isinstance(found, bytes) else found
+    return found if isinstance(found, str) and found in SCHEMAS else None
+
+
 def open_artifact(path: Path, kind: str) -> h5py.File:
     """Open an artifact for reading after checking it: the one place every reader goes through.
 

@@ -41,7 +41,7 @@ class PipelineGroup(click.Group):
 
     order = ("sample-corpus", "align", "ingest", "normalize", "pca", "build-db", "db", "check", "prune", "isomap",
              "synthesize", "suggest", "expression", "head-motion", "deform", "keyshapes", "solve", "retarget", "rig-mesh",
-             "render", "batch", "capture", "evaluate", "tune", "devices")
+             "render", "export", "player", "batch", "capture", "evaluate", "tune", "devices")
 
     def list_commands(self, ctx):
         listed = [name for name in self.order if name in self.commands]
@@ -127,6 +127,8 @@ READS: dict[str, tuple[str, ...]] = {
     "expression analyze": ("expression",),
     "expression restyle": ("expression", "ingest"),
     "head-motion": ("head_motion",),
+    "export": ("export",),
+    "player": (),
 }
 # Every command reads the input bounds (facesynth.limits).
 READS = {name: sections + ("limits",) for name, sections in READS.items()}
@@ -188,6 +190,8 @@ def _check_outputs(command: str, kwargs: dict, overwrite: bool) -> None:
     from .artifacts import check_output, check_output_folder
 
     folders = FOLDER_OUTPUTS.get(command, ())
+    if command == "export" and kwargs.get("fmt") == "obj-seq":  # the one format that writes a folder
+        folders = {"output": "the OBJ sequence"}
     for name in ("output", "out_dir", "images"):
         value = kwargs.get(name)
         if value is None:
@@ -647,6 +651,64 @@ def render(ctx: Context, anims, audios, view, compare, output: Path):
     for note in s["notes"]:  # a mesh without eye or mouth holes: expected for plain meshes, so only with -v
         ctx.detail(f"render: {note}.")
     ctx.say(f"rendered {s['frames']} frames ({s['seconds']:.2f} s of video, {s['frames_per_s']:.1f} frames/s) -> {output}")
+
+
+@main.command()
+@click.argument("artifact", type=EXISTING)
+@click.option("--format", "fmt", type=click.Choice(("arkit-csv", "gltf", "glb", "usd", "usda", "c3d", "obj-seq")),
+              required=True, help="What to write (units and axes: docs/exports.md).")
+@click.option("--fps", type=float, default=None,
+              help="Frame rate of the output (default: export.arkit_fps for arkit-csv, else the animation's).")
+@click.option("--head-motion", is_flag=True, help="Put the head motion in (Head* columns, node or xform animation).")
+@click.option("--audio", type=EXISTING, default=None, help="WAV copied beside a gltf/glb and named in it.")
+@click.option("--mesh", type=EXISTING, default=None,
+              help="Mesh (.obj/.ply) whose faces to write, with the animation's vertex count.")
+@click.option("-o", "--output", type=PATH, required=True, help="Output file (a folder for obj-seq).")
+@stage
+def export(ctx: Context, artifact: Path, fmt: str, fps: float | None, head_motion: bool, audio: Path | None,
+           mesh: Path | None, output: Path):
+    """Write a motion, mesh animation or rig curves for another tool.
+
+    arkit-csv (Unreal Live Link, MetaHuman) and gltf/glb need rig curves (`facesynth solve`);
+    usd/usda and obj-seq a mesh (mesh animation or curves); c3d markers (motion or mesh animation).
+
+    \b
+    Example:
+      facesynth export motion.h5 --format c3d -o motion.c3d
+      facesynth export anim.h5 --format obj-seq -o anim_obj
+    """
+    from .stages import export as stage
+
+    s = stage.run(artifact, fmt, output, ctx.config.settings("export"), fps=fps, head_motion=head_motion, audio=audio,
+                  mesh=mesh, overwrite=ctx.overwrite)
+    extra = f" (+ {s['files'][1].name})" if fmt in ("gltf", "glb") and len(s["files"]) > 1 else ""
+    what = f"{len(s['files'])} files" if fmt == "obj-seq" else fmt
+    ctx.say(f"exported {s['frames']} frames ({s['seconds']:.2f} s at {s['fps']:g} frames/s) of the {s['kind']} "
+            f"as {what} -> {output}{extra}")
+
+
+@main.command()
+@click.argument("artifact", type=EXISTING)
+@click.option("--audio", type=EXISTING, default=None, help="WAV played with the animation (embedded in the page).")
+@click.option("--motion", type=EXISTING, default=None,
+              help="The synthesized motion a mesh animation or curves came from: its phones, emotion and provenance.")
+@click.option("-o", "--output", type=PATH, required=True, help="Output .html.")
+@stage
+def player(ctx: Context, artifact: Path, audio: Path | None, motion: Path | None, output: Path):
+    """Write one self-contained HTML page that plays the animation in 3D with its audio.
+
+    Orbit with the mouse, play/pause and scrub; the timeline shows each phone, its emotion and
+    (for synthesized motion) the take and database node it came from. No network is needed to view it.
+
+    \b
+    Example:
+      facesynth player anim.h5 --motion motion.h5 --audio corpus/audio/neutral_s016.wav -o player.html
+    """
+    from .stages import player as stage
+
+    s = stage.run(artifact, output, audio=audio, motion=motion, overwrite=ctx.overwrite)
+    ctx.say(f"player of {s['frames']} frames ({s['seconds']:.2f} s at {s['fps']:g} frames/s, "
+            f"{s['phones']} phones) -> {output} ({s['bytes'] / 1e6:.1f} MB)")
 
 
 @main.command()

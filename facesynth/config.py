@@ -349,6 +349,15 @@ class RetargetSettings:
                             "mean squared edge", gt=0)
 
 
+@dataclass(frozen=True)
+class ExportSettings:
+    """``[export]``: ``facesynth export``'s defaults (the other formats keep the animation's rate
+    unless ``--fps``)."""
+
+    arkit_fps: float = setting("not in the paper: Live Link Face records at 60 frames/s", unit="frames/s",
+                               gt=0, le=1000)
+
+
 SECTIONS: dict[str, type] = {
     "ingest": IngestSettings,
     "align": AlignSettings,
@@ -369,6 +378,7 @@ SECTIONS: dict[str, type] = {
     "batch": BatchSettings,
     "expression": ExpressionSettings,
     "head_motion": HeadMotionSettings,
+    "export": ExportSettings,
 }
 
 S = TypeVar("S")

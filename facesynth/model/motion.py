@@ -91,6 +91,28 @@ class Motion:
                        read(f, "head_rotation") if has_head else None, read(f, "head_translation") if has_head else None,
                        source=str(f.attrs.get("source", "synthesis")), take=str(f.attrs.get("take", "")))
 
+    @staticmethod
+    def read_search(path: Path) -> tuple[SearchPath | None, Provenance | None]:
+        """The search path and per-frame provenance of a synthesized motion; (None, None) for a
+        captured take (which has neither)."""
+        with open_artifact(path, Motion.KIND) as f:
+            if "path" not in f or "provenance" not in f:
+                return None, None
+            p, v = f["path"], f["provenance"]
+            costs = {k[len("cost_"):]: read(f, f"path/{k}") for k in p if k.startswith("cost_")}
+            search = SearchPath(read(f, "path/node").astype(np.int64), read_strings(f, "path/phone"),
+                                read_strings(f, "path/emotion"), read_strings(f, "path/node_phone"),
+                                read_strings(f, "path/node_emotion"), read(f, "path/start"), read(f, "path/end"), costs,
+                                float(p.attrs.get("total_cost", np.nan)), int(p.attrs.get("non_captured_joins", 0)),
+                                str(p.attrs.get("search", "")), str(p.attrs.get("device", "")),
+                                str(p.attrs.get("device_reason", "")))
+            provenance = Provenance(read(f, "provenance/node").astype(np.int64),
+                                    read(f, "provenance/take").astype(np.int64), read_strings(f, "provenance/take_names"),
+                                    read(f, "provenance/source_frame").astype(np.int64),
+                                    read(f, "provenance/step").astype(np.int64),
+                                    read(f, "provenance/smoothed").astype(bool), float(attr(v, "fps")))
+            return search, provenance
+
     def head(self, path: Path) -> tuple[np.ndarray, np.ndarray]:
         """(rotations, translations) at the output rate; a clear error when there is none."""
         if self.head_rotation is None:

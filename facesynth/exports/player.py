@@ -1,0 +1,134 @@
+"""The web player: one self-contained HTML page that plays an animation in 3D with its audio.
+
+The page holds everything it needs (no network at view time): three.js (vendored from the npm
+package ``three``, MIT, in ``facesynth/data/three.*.js`` with ``three.LICENSE``) as base64 text
+loaded through blob URLs, the mesh, the animation and the audio (16-bit mono WAV, base64).
+
+The animation is stored as morph targets, compact and exact where it can be:
+
+* rig curves: the rig's own shapes (55 targets) and the curves' weights per frame;
+* a mesh animation: its principal components (the frames' offsets from the rest mesh, at most
+  :data:`MAX_COMPONENTS`, enough to keep :data:`KEEP_VARIANCE` of the motion's variance) and
+  each frame's coefficients;
+* marker motion: the same for the markers, drawn as points.
+
+Targets are quantized to int16 with one scale per target (error at most half a step: the
+largest offset / 65534). The page shows the frame count and duration, play/pause, a scrub bar,
+the phones with their emotion on a timeline under the view and, for synthesized motion, the take
+and database node each phone came from. Head motion is not played (the face stays in its head
+frame, as the renderer draws it).
+"""
+
+from __future__ import annotations
+
+import base64
+import io
+import json
+from importlib import resources
+from pathlib import Path
+
+import numpy as np
+
+from .animation import Exportable
+
+#: Largest number of principal components kept for a mesh animation or marker motion.
+MAX_COMPONENTS = 96
+#: Fraction of the variance of the offsets from the rest pose the kept components explain.
+KEEP_VARIANCE = 0.999999
+
+#: The vendored three.js files (package data) and the ids of the page's script blocks.
+THREE_FILES = {"three-core": "three.core.js", "three-module": "three.module.js", "three-orbit": "three.OrbitControls.js"}
+
+
+def _b64(array: np.ndarray) -> str:
+    return base64.b64encode(np.ascontiguousarray(array).tobytes()).decode("ascii")
+
+
+def quantize(targets: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(K, N) float targets -> (K, N) int16 and (K,) float64 scales with ``targets ~ q * scale``."""
+    t = np.asarray(targets, np.float64)
+    peak = np.abs(t).max(axis=1) if t.size else np.zeros(len(t))
+    scale = np.where(peak > 0, peak / 32767.0, 1.0)
+    return np.round(t / scale[:, None]).astype(np.int16), scale
+
+
+def principal_targets(frames: np.ndarray, rest: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Morph targets for an animation without a rig: frames (T, P, 3) and rest (P, 3) mm ->
+    targets (K, P * 3) and weights (T, K), the principal components of the offsets from rest
+    (K at most :data:`MAX_COMPONENTS`, enough for :data:`KEEP_VARIANCE` of their variance)."""
+    d = (np.asarray(frames, np.float64) - np.asarray(rest, np.float64)[None]).reshape(len(frames), -1)
+    d = np.nan_to_num(d)
+    gram = d @ d.T  # (T, T): the frames' offsets span at most T directions
+    values, vectors = np.linalg.eigh(gram)
+    order = np.argsort(values)[::-1]
+    values, vectors = np.clip(values[order], 0, None), vectors[:, order]
+    total = values.sum()
+    if total <= 0:
+        return np.zeros((0, d.shape[1])), np.zeros((len(frames), 0))
+    k = int(np.searchsorted(np.cumsum(values) / total, KEEP_VARIANCE) + 1)
+    k = max(1, min(k, MAX_COMPONENTS, int((values > total * 1e-12).sum())))
+    basis = (vectors[:, :k].T @ d) / np.sqrt(values[:k])[:, None]  # (k, P*3) orthonormal rows
+    return basis, d @ basis.T
+
+
+def payload(anim: Exportable, audio: Path | None = None) -> dict:
+    """The page's data: rest pose, faces, quantized targets, per-frame weights, the timeline
+    (phones, or emotion runs without phones) and the audio as a data URI."""
+    if anim.weights is not None:
+        rest = anim.rest
+        targets = anim.rig.deltas.reshape(len(anim.rig.deltas), -1)
+        weights = anim.weights
+        names = list(anim.rig.shape_names)
+        faces = anim.faces
+    else:
+        frames = anim.vertices if anim.vertices is not None else anim.markers
+        rest = anim.rest if anim.rest is not None else np.nanmean(anim.markers, axis=0)
+        targets, weights = principal_targets(frames, rest)
+        names = [f"pc{k + 1}" for k in range(len(targets))]
+        faces = anim.faces
+    q, scale = quantize(targets)
+    data = {
+        "kind": anim.kind, "source": Path(anim.path).name, "fps": anim.fps, "frames": anim.n_frames,
+        "duration": anim.duration_s, "rest": _b64(np.asarray(rest, np.float32)), "vertices": int(len(rest)),
+        "faces": _b64(np.asarray(faces, np.uint32)) if faces is not None else "",
+        "targets": [_b64(row) for row in q], "scales": [float(s) for s in scale], "target_names": names,
+        "weights": _b64(np.asarray(weights, np.float32)),
+        "phones": [{"phone": p.phone, "emotion": p.emotion, "start": p.start, "end": p.end, "node": p.node, "take": p.take}
+                   for p in anim.phones],
+        "emotion_runs": _runs(anim.emotion, anim.fps) if not anim.phones and anim.emotion else [],
+        "audio": "",
+    }
+    if audio is not None:
+        import soundfile as sf
+
+        from ..formats.audio import read_audio
+
+        samples, rate = read_audio(audio)
+        buffer = io.BytesIO()
+        sf.write(buffer, np.clip(samples, -1.0, 1.0), rate, format="WAV", subtype="PCM_16")
+        data["audio"] = "data:audio/wav;base64," + base64.b64encode(buffer.getvalue()).decode("ascii")
+    return data
+
+
+def _runs(emotion: list[str], fps: float) -> list[dict]:
+    """Runs of one emotion: [{emotion, start, end}] in seconds."""
+    runs, start = [], 0
+    for i in range(1, len(emotion) + 1):
+        if i == len(emotion) or emotion[i] != emotion[start]:
+            runs.append({"emotion": emotion[start], "start": start / fps, "end": i / fps})
+            start = i
+    return runs
+
+
+def page(data: dict) -> str:
+    """The player page for ``data`` (:func:`payload`): the template with the data and three.js in."""
+    root = resources.files("facesynth").joinpath("data")
+    html = root.joinpath("player.html").read_text(encoding="utf-8")
+    scripts = "\n".join(
+        f'<script type="text/plain" id="{sid}">{base64.b64encode(root.joinpath(name).read_bytes()).decode("ascii")}</script>'
+        for sid, name in THREE_FILES.items())
+    license_text = root.joinpath("three.LICENSE").read_text(encoding="utf-8").replace("--", "- -")
+    blob = json.dumps(data, separators=(",", ":")).replace("</", "<\\/")
+    return (html.replace("<!--THREE_LICENSE-->", f"<!--\nthree.js (npm package 'three'):\n{license_text}\n-->")
+            .replace("<!--THREE-->", scripts)
+            .replace("<!--DATA-->", f'<script type="application/json" id="anim">{blob}</script>'))

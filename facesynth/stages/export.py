@@ -1,0 +1,164 @@
+"""``facesynth export``: a motion, mesh animation or rig curves -> a file another tool reads.
+
+Formats (units and axes per format in ``docs/exports.md``):
+
+* ``arkit-csv``: Live Link Face CSV (Unreal Live Link, MetaHuman) from rig curves, at
+  ``export.arkit_fps`` (60 frames/s, the app's rate) unless ``--fps``;
+* ``gltf`` / ``glb``: the rig mesh with its morph targets and one weights animation, from curves;
+* ``usd`` / ``usda``: a mesh with time-sampled points (mesh animation) or UsdSkel blendshapes
+  driven by a SkelAnimation (curves);
+* ``c3d``: the markers (motion, mesh animation), mm, labelled, at the animation's rate;
+* ``obj-seq``: a folder of OBJs, one per frame (``frame_000001.obj`` ...), from a mesh animation
+  or curves.
+
+A format that cannot carry what the artifact holds says what to run first; nothing is written
+then. Outputs are written under a temporary name and published whole (a folder is renamed into
+place), never replacing an existing output without ``--overwrite``.
+"""
+
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+
+import numpy as np
+
+from ..artifacts import atomic_folder, atomic_path, check_output, publish, temporary_path
+from ..config import ExportSettings
+from ..errors import InputError, UsageError
+from ..exports import livelink
+from ..exports.animation import Exportable, load, use_mesh
+
+FORMATS = ("arkit-csv", "gltf", "glb", "usd", "usda", "c3d", "obj-seq")
+
+
+def audio_path(output: Path) -> Path:
+    """Where the WAV beside a glTF output goes: the output's name with ``.wav``."""
+    return Path(output).with_suffix(".wav")
+
+
+def check(anim: Exportable, fmt: str, head_motion: bool) -> None:
+    """Refuse, with what to run first, a format that cannot carry ``anim``."""
+    p = anim.path
+    if fmt in ("arkit-csv", "gltf", "glb") and anim.weights is None:
+        what = "marker motion" if anim.kind == "motion" else "a mesh animation"
+        todo = ("run `facesynth solve` on the motion first and export its curves" if anim.kind == "motion" else
+                "run `facesynth solve` on the motion it was deformed from and export those curves "
+                "(a morph target per frame is no rig)")
+        extra = "" if fmt == "arkit-csv" else f"; or export {what} as usd or obj-seq"
+        raise InputError(f"{p}: {fmt} carries rig blendshape weights, and {what} has none; {todo}{extra}.")
+    if fmt in ("usd", "usda", "obj-seq") and not anim.has_mesh:
+        raise InputError(f"{p}: {fmt} carries a mesh, and marker motion has none; run `facesynth deform` (or "
+                         "`facesynth solve`) first, or export the markers as c3d.")
+    if fmt == "c3d" and anim.markers is None:
+        raise InputError(f"{p}: c3d carries markers, and rig curves have none; export the motion the curves were "
+                         "solved from.")
+    if head_motion and anim.head_rotation is None:
+        why = ("a mesh animation holds head motion only inside its vertices (deform.apply_head_motion)"
+               if anim.kind == "meshanim" else "it has no head motion")
+        raise InputError(f"{p}: --head-motion asks for head motion, but {why}; export without --head-motion.")
+
+
+def run(artifact: Path, fmt: str, output: Path, settings: ExportSettings, *, fps: float | None = None,
+        head_motion: bool = False, audio: Path | None = None, mesh: Path | None = None,
+        overwrite: bool = False) -> dict:
+    """Export ``artifact`` as ``fmt`` to ``output``; returns a summary (frames, fps, seconds, files)."""
+    if fmt not in FORMATS:
+        raise UsageError(f"unknown format {fmt!r}; choose one of {', '.join(FORMATS)}.")
+    if fmt in ("usd", "usda"):
+        from ..exports import usd
+
+        if not usd.available():
+            raise InputError(f"{fmt} export needs Pixar's usd-core, which is not installed; "
+                             "run `pip install 'facesynth[usd]'` (or `pip install usd-core`).")
+    if audio is not None and fmt not in ("gltf", "glb"):
+        raise UsageError("--audio goes with gltf and glb (the other formats carry no audio reference).")
+    if fmt == "obj-seq":
+        from ..artifacts import check_output_folder
+
+        check_output_folder(output, "the OBJ sequence", overwrite)
+    else:
+        check_output(output, overwrite)
+    if audio is not None:
+        check_output(audio_path(output), overwrite)
+        from ..formats.audio import read_audio
+
+        read_audio(audio)  # a WAV that cannot be read is refused before anything is written
+    anim = load(artifact)
+    if mesh is not None:
+        anim = use_mesh(anim, mesh)
+    check(anim, fmt, head_motion)
+    rate = fps if fps is not None else (settings.arkit_fps if fmt == "arkit-csv" else anim.fps)
+    if not (np.isfinite(rate) and 0 < rate <= 1000):
+        raise UsageError(f"--fps {rate:g} is not a frame rate; give a number of frames per second in (0, 1000].")
+    anim = anim.resampled(rate)
+    files = [output]
+    if fmt == "arkit-csv":
+        head = livelink.head_angles(anim.head_rotation) if head_motion else None
+        eyes = livelink.eye_angles(anim.gaze) if anim.gaze is not None else None
+        with atomic_path(output, overwrite) as tmp:
+            livelink.write(tmp, anim.rig.arkit_names, anim.rig.to_arkit(anim.weights), anim.fps, head, eyes)
+    elif fmt in ("gltf", "glb"):
+        from ..exports import gltf
+
+        wav = audio_path(output) if audio is not None else None
+        doc, data = gltf.build(anim.rest, anim.faces, anim.rig.deltas, anim.rig.shape_names, anim.times, anim.weights,
+                               anim.head_rotation if head_motion else None,
+                               anim.head_translation if head_motion else None,
+                               wav.name if wav is not None else None, name=Path(output).stem)
+        if wav is not None:
+            with atomic_path(wav, overwrite) as tmp:
+                shutil.copyfile(audio, tmp)
+            files.append(wav)
+        try:
+            with atomic_path(output, overwrite) as tmp:
+                gltf.write(tmp, doc, data, binary=fmt == "glb")
+        except BaseException:
+            if wav is not None:
+                wav.unlink(missing_ok=True)
+            raise
+    elif fmt in ("usd", "usda"):
+        from ..exports import usd
+
+        head = (anim.head_rotation, anim.head_translation) if head_motion else (None, None)
+        with _named_temporary(output, overwrite) as tmp:
+            if anim.weights is not None:
+                usd.write_blendshapes(tmp, anim.rest, anim.faces, anim.rig.deltas, anim.rig.shape_names, anim.weights,
+                                      anim.fps, *head)
+            else:
+                usd.write_points(tmp, anim.rest, anim.faces, anim.mesh_frames, anim.n_frames, anim.fps, *head)
+    elif fmt == "c3d":
+        from ..formats.mocap import MarkerTake, write_c3d
+
+        markers = anim.with_head(anim.markers) if head_motion else anim.markers
+        with atomic_path(output, overwrite) as tmp:
+            write_c3d(tmp, MarkerTake(np.asarray(markers, np.float32), list(anim.marker_names), anim.fps))
+    else:
+        from ..exports.objseq import write_sequence
+
+        with atomic_folder(output, "the OBJ sequence", overwrite) as tmp:
+            files = write_sequence(tmp, anim, head_motion)
+            files = [output / f.name for f in files]
+    return {"frames": anim.n_frames, "fps": anim.fps, "seconds": anim.duration_s, "files": files, "kind": anim.kind}
+
+
+class _named_temporary:
+    """A temporary file with the output's own name (libraries such as USD pick the format by the
+    extension) inside a temporary folder beside the output, published at the output on success."""
+
+    def __init__(self, output: Path, overwrite: bool):
+        self.output, self.overwrite = Path(output), overwrite
+        self.folder = temporary_path(self.output)
+
+    def __enter__(self) -> Path:
+        if self.folder.exists():
+            shutil.rmtree(self.folder)
+        self.folder.mkdir()
+        return self.folder / self.output.name
+
+    def __exit__(self, exc_type, exc, tb) -> None:
+        try:
+            if exc_type is None:
+                publish(self.folder / self.output.name, self.output, self.overwrite)
+        finally:
+            shutil.rmtree(self.folder, ignore_errors=True)

@@ -1,0 +1,121 @@
+"""``facesynth player`` as a person uses it: the page opened in headless Chromium (where the
+Debian package is installed) loads without errors, shows the artifact's frame count and
+duration, moves the mesh when scrubbed, lists each phone with its emotion and provenance, and
+needs no network."""
+
+import html
+import re
+import shutil
+import subprocess
+
+import numpy as np
+import pytest
+from click.testing import CliRunner
+from PIL import Image
+
+from facesynth.cli import main
+from facesynth.config import Config
+from facesynth.exports import player
+from facesynth.exports.animation import load
+from facesynth.model.meshanim import MeshAnimation
+from facesynth.model.motion import Motion
+from facesynth.stages import deform, synthesize
+
+CHROMIUM = shutil.which("chromium")
+needs_chromium = pytest.mark.skipif(CHROMIUM is None, reason="headless Chromium (Debian package 'chromium') is not installed")
+
+
+@pytest.fixture(scope="module")
+def page(tiny_db, tiny_corpus, held_out_take, tmp_path_factory):
+    config = Config.load()
+    d = tmp_path_factory.mktemp("player")
+    synthesize.run(tiny_db, d / "m.h5", config.settings("synthesize"), config.settings("ingest"),
+                   config.settings("align"), phones_path=tiny_corpus / "labels" / f"{held_out_take}.TextGrid")
+    deform.run(d / "m.h5", tiny_corpus / "face.obj", tiny_corpus / "markers.csv", d / "a.h5", config.settings("deform"))
+    audio = tiny_corpus / "audio" / f"{held_out_take}.wav"
+    r = CliRunner().invoke(main, ["player", str(d / "a.h5"), "--motion", str(d / "m.h5"), "--audio", str(audio),
+                                  "-o", str(d / "player.html")])
+    assert r.exit_code == 0, r.output
+    return d
+
+
+def _chromium(tmp_path, url, *args, timeout=180):
+    profile = tmp_path / "profile"
+    cmd = [CHROMIUM, "--headless", "--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
+           "--disable-background-networking", "--disable-component-update", "--disable-sync", "--no-first-run",
+           "--enable-logging=stderr", "--v=0", "--virtual-time-budget=30000", f"--user-data-dir={profile}", *args, url]
+    return subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
+
+
+def _body(dom: str) -> dict:
+    tag = re.search(r"<body([^>]*)>", dom).group(1)
+    return {k: html.unescape(v) for k, v in re.findall(r'data-([a-z-]+)="([^"]*)"', tag)}
+
+
+def test_page_is_self_contained_and_compact(page):
+    text = (page / "player.html").read_text()
+    assert not re.search(r"""(src|href)\s*=\s*["']?(https?:)?//""", text)  # nothing fetched at view time
+    assert "three.js" in text and "MIT License" in text  # the vendored library's license travels with it
+    assert text.count('id="three-') == 3 and 'id="anim"' in text and "data:audio/wav;base64," in text
+    a = MeshAnimation.read(page / "a.h5")
+    assert len(text) < 0.5 * a.vertices.nbytes + 8e6  # principal components, not every frame's vertices
+
+
+def test_principal_targets_reproduce_the_mesh_animation(page):
+    anim = load(page / "a.h5")
+    basis, weights = player.principal_targets(anim.vertices, anim.rest)
+    q, scale = player.quantize(basis)
+    again = anim.rest.reshape(-1) + weights @ (q * scale[:, None])
+    err = np.abs(again.reshape(anim.vertices.shape) - anim.vertices).max()
+    assert err < 0.05  # mm, at most MAX_COMPONENTS components and int16 targets
+
+
+@needs_chromium
+def test_player_in_headless_chromium(page, tmp_path):
+    url = (page / "player.html").as_uri()
+    a = MeshAnimation.read(page / "a.h5")
+    anim = load(page / "a.h5")
+    basis, weights = player.principal_targets(anim.vertices, anim.rest)
+
+    seen = {}
+    for t in (0.0, 0.5 * a.vertices.shape[0] / a.fps):
+        r = _chromium(tmp_path, f"{url}#t={t:.4f}", "--dump-dom")
+        body = _body(r.stdout)
+        assert body.get("ready") == "1", r.stderr[-3000:]
+        assert body["errors"] == "0", re.search(r'<pre id="errors">(.*?)</pre>', r.stdout, re.S).group(1)
+        assert "Uncaught" not in r.stderr
+        # the frame count and duration shown are the artifact's
+        assert int(body["frames"]) == len(a.vertices)
+        assert float(body["duration"]) == pytest.approx(len(a.vertices) / a.fps, abs=1e-5)
+        assert f'<span id="frames">{len(a.vertices)}</span>' in r.stdout
+        assert f'<span id="duration">{len(a.vertices) / a.fps:.3f}</span>' in r.stdout
+        frame = int(body["frame"])
+        assert frame == min(len(a.vertices) - 1, int(np.floor(t * a.fps + 1e-6)))
+        # the mesh the page poses at that time is the artifact's frame (mean vertex, mm)
+        mean = np.array([float(v) for v in body["mean"].split()])
+        assert np.abs(mean - a.vertices[frame].mean(axis=0)).max() < 0.05
+        seen[t] = (mean, r.stdout)
+    (m0, dom), (m1, _) = seen.values()
+    assert np.abs(m0 - m1).max() > 1e-3  # scrubbing moved the mesh
+
+    # the timeline: every phone with its emotion, and the take and node it came from
+    search, provenance = Motion.read_search(page / "m.h5")
+    phones = re.findall(r'<div class="phone"[^>]*data-take="([^"]*)" data-node="(-?\d+)"[^>]*>([^<]*)<small>([^<]*)</small>', dom)
+    assert [p[2] for p in phones] == search.phone and [p[3] for p in phones] == search.emotion
+    assert [int(p[1]) for p in phones] == [int(n) for n in search.node]
+    for (take, _, phone, _), step in zip(phones, range(len(phones))):
+        taken = provenance.take[(provenance.step == step) & (provenance.take >= 0)]
+        # the take most of the phone's frames came from; none for a pause regenerated as silence
+        assert take == (provenance.take_names[int(np.bincount(taken).argmax())] if len(taken) else ""), phone
+
+    # screenshots at two times: a face is drawn, and it differs where the mouth moves
+    shots = []
+    for t in seen:
+        shot = tmp_path / f"player_{t:.2f}.png"
+        _chromium(tmp_path, f"{url}#t={t:.4f}", f"--screenshot={shot}", "--window-size=900,800")
+        assert shot.exists()
+        shots.append(np.asarray(Image.open(shot).convert("L")).astype(int))
+    view = slice(0, int(0.7 * 800) - 10)
+    assert shots[0][view].std() > 10  # something is drawn in the 3D view
+    assert np.abs(shots[0][view] - shots[1][view]).max() > 30 and (np.abs(shots[0][view] - shots[1][view]) > 10).sum() > 50
+    assert weights.shape[0] == len(a.vertices) and basis.shape[0] >= 1
