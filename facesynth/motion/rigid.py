@@ -69,3 +69,19 @@ def rigid_align(frames: np.ndarray, reference: np.ndarray, origin: int, rigid: n
         r[flip] = v[flip] @ np.swapaxes(u[flip], 1, 2)
     normalized = np.einsum("tmi,tij->tmj", x, r)  # rows: x_i R, so as columns x = R @ normalized
     return normalized, r, translations
+
+
+def similarity_fit(source: np.ndarray, target: np.ndarray) -> tuple[float, np.ndarray, np.ndarray, float]:
+    """Umeyama: scale s, rotation R, translation t minimizing ||s R source + t - target||.
+    Returns (s, R, t, RMS residual in target units)."""
+    mu_s, mu_t = source.mean(0), target.mean(0)
+    a, b = source - mu_s, target - mu_t
+    u, sing, vt = np.linalg.svd(b.T @ a)
+    d = np.ones(3)
+    if np.linalg.det(u @ vt) < 0:
+        d[2] = -1.0
+    r = u @ np.diag(d) @ vt
+    s = float((sing * d).sum() / (a**2).sum())
+    t = mu_t - s * r @ mu_s
+    residual = float(np.sqrt(np.mean(np.sum((s * a @ r.T - b) ** 2, axis=1))))
+    return s, r, t, residual

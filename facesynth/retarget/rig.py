@@ -23,6 +23,7 @@ import numpy as np
 from ..errors import InputError
 from ..facerig import BUILTIN_RIG_NAME, builtin_rig_sha256, load_face_rig
 from ..formats.mesh import read_binding, read_mesh
+from ..motion.rigid import similarity_fit
 
 
 @dataclass(frozen=True)
@@ -212,19 +213,6 @@ def _read_gltf(path: Path):
     return path.stem, digest, neutral, faces, names, deltas
 
 
-def similarity_fit(source: np.ndarray, target: np.ndarray) -> tuple[float, np.ndarray, np.ndarray]:
-    """Umeyama: (s, R, t) minimizing ``|s R source + t - target|`` for (K, 3) point sets."""
-    mu_s, mu_t = source.mean(0), target.mean(0)
-    a, b = source - mu_s, target - mu_t
-    u, sing, vt = np.linalg.svd(b.T @ a)
-    d = np.ones(3)
-    if np.linalg.det(u @ vt) < 0:
-        d[2] = -1.0
-    r = u @ np.diag(d) @ vt
-    s = float((sing * d).sum() / (a**2).sum())
-    return s, r, mu_t - s * r @ mu_s
-
-
 @dataclass(frozen=True)
 class MarkerMap:
     """How the motion's markers sit on a rig.
@@ -248,7 +236,7 @@ class MarkerMap:
 def marker_map(rig: TargetRig, marker_names: list[str], reference: np.ndarray, where: str) -> MarkerMap:
     """Bind the motion's markers to ``rig`` (see :class:`MarkerMap`); ``where`` names the motion in errors."""
     cols, verts = rig.bound(marker_names, where)
-    s, r, _ = similarity_fit(np.asarray(reference, np.float64)[cols], rig.neutral[verts])
+    s, r, _, _ = similarity_fit(np.asarray(reference, np.float64)[cols], rig.neutral[verts])
     return MarkerMap(cols, verts, s, r)
 
 

@@ -35,6 +35,7 @@ from ..errors import InputError
 from ..formats.mesh import read_binding, read_mesh
 from ..model.meshanim import MeshAnimation
 from ..model.motion import Motion
+from ..motion.rigid import similarity_fit
 
 
 def edge_graph(vertices: np.ndarray, faces: np.ndarray) -> sparse.csr_matrix:
@@ -78,22 +79,6 @@ def deformation_weights(vertices: np.ndarray, faces: np.ndarray, sources: np.nda
     w = sparse.csr_matrix(((vals / total[rows]).astype(np.float32), (rows, cols)), shape=(len(vertices), len(sources)))
     w.sort_indices()
     return w
-
-
-def similarity_fit(source: np.ndarray, target: np.ndarray) -> tuple[float, np.ndarray, np.ndarray, float]:
-    """Umeyama: scale s, rotation R, translation t minimizing ||s R source + t - target||.
-    Returns (s, R, t, RMS residual in target units)."""
-    mu_s, mu_t = source.mean(0), target.mean(0)
-    a, b = source - mu_s, target - mu_t
-    u, sing, vt = np.linalg.svd(b.T @ a)
-    d = np.ones(3)
-    if np.linalg.det(u @ vt) < 0:
-        d[2] = -1.0
-    r = u @ np.diag(d) @ vt
-    s = float((sing * d).sum() / (a**2).sum())
-    t = mu_t - s * r @ mu_s
-    residual = float(np.sqrt(np.mean(np.sum((s * a @ r.T - b) ** 2, axis=1))))
-    return s, r, t, residual
 
 
 @dataclass
