@@ -355,7 +355,10 @@ def normalize(ctx: Context, corpus: Path, output: Path):
                    "PCA will project those frames from the visible markers.")
     gaps = (f"; {len(s['long_gaps'])} gaps too long to fill are left for PCA to project (-v lists them)"
             if s["long_gaps"] else "")
-    ctx.say(f"normalized {s['frames']} frames (origin marker {s['origin_marker']}){gaps} -> {output}")
+    for warning in s["warnings"]:
+        ctx.say(f"warning: {warning}")
+    ctx.detail("head pose fitted on " + ", ".join(f"{n} (weight {w:.2f})" for n, w in zip(s["rigid_markers"], s["rigid_weights"])))
+    ctx.say(f"normalized {s['frames']} frames (head pose on {len(s['rigid_markers'])} rigid markers){gaps} -> {output}")
 
 
 @main.command()
