@@ -248,12 +248,15 @@ class TransitionCosts:
         for a in range(0, len(rows), step):
             r = rows[a : a + step]
             dsc, pgap, vgap = self.f.terms(r, cols)
+            pre = self.pre[cols]
+            rule4 = np.float32(s.alpha3) * pgap[:, pre < 0]  # rule 4: (alpha3 PGap + VGap) + alpha1 PNT
+            rule4 += vgap[:, pre < 0]
+            rule4 += self.a1pnt
             t = np.float32(s.alpha2) * dsc
             t += np.float32(s.alpha3) * pgap
             t += vgap
             t += np.float32(s.pnt) * (self.f.viseme[r][:, None] != self.pre_viseme[cols][None, :])
-            pre = self.pre[cols]
-            t[:, pre < 0] = self.a1pnt
+            t[:, pre < 0] = rule4
             t[pre[None, :] == r[:, None]] = 0.0
             out[a : a + step] = t
         return out
@@ -297,15 +300,17 @@ class TransitionCosts:
         """Upper bounds of TC(r, k) (broadcast shapes), float64, from the pivots."""
         pg = np.min(self.row_lp[r] + self.col_fp[k], axis=-1)
         vg = np.min(self.row_lv[r] + self.col_fv[k], axis=-1)
-        tc = self.dsc_row_max[r] + self.s.alpha3 * pg.astype(np.float64) + vg + self.s.pnt * (self.f.viseme[r] != self.pre_viseme[k])
-        return np.where(self.pre[k] < 0, float(self.a1pnt), np.where(self.pre[k] == r, 0.0, tc))
+        pvc = self.s.alpha3 * pg.astype(np.float64) + vg
+        tc = self.dsc_row_max[r] + pvc + self.s.pnt * (self.f.viseme[r] != self.pre_viseme[k])
+        return np.where(self.pre[k] < 0, float(self.a1pnt) + pvc, np.where(self.pre[k] == r, 0.0, tc))
 
     def advantage(self, r: np.ndarray, j: np.ndarray) -> np.ndarray:
         """Upper bounds of max_k (TC(r, k) - TC(j, k)) over every node k, float64 (r, j broadcast):
         how much more a continuation from r can cost than the same continuation from j.
 
         k = suc(j) costs 0 from j (rule 1) and at most ``upper(r, k)`` from r; k without a
-        predecessor costs alpha1 PNT from both; k = suc(r) costs 0 from r; every other k
+        predecessor costs alpha1 PNT + PVC from both, so differs by at most alpha3 |LP_r - LP_j|
+        + |LV_r - LV_j| (within the general bound); k = suc(r) costs 0 from r; every other k
         differs by at most a2 max DSC(r, .) + alpha3 |LP_r - LP_j| + |LV_r - LV_j| + PNT [viseme
         differs], the distances bounded through the pivots.
         """

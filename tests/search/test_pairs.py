@@ -26,7 +26,7 @@ def test_table_i_by_hand(s):
                      np.array([1, 1, 2]), np.array([-1, 0, 1]))
     tc = TransitionCosts(f, s).dense()
     assert tc[0, 1] == 0.0 and tc[1, 2] == 0.0                       # rule 1
-    assert tc[:, 0].tolist() == [20.0] * 3                           # rule 4: alpha1 PNT
+    assert tc[:, 0].tolist() == [20.0, 20.0, 20.0 + 3 * 6]           # rule 4: alpha1 PNT + alpha3 PGap + VGap
     # TC(2, 2): DSC = 2 * (2 + 1)^2 = 18, PGap = 6, VGap = 0; viseme(2) = 2 != viseme(pre(2)) = 1
     assert tc[2, 2] == pytest.approx(0.5 * 18 + 3 * 6 + 0 + 10)
     # TC(0, 2): DSC = 2 * (1 + 1)^2 = 8, PGap 0; viseme(0) = 1 = viseme(pre(2)): rule 2, no PNT
