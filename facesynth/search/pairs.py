@@ -28,6 +28,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..config import SynthesizeSettings
+from ..motion.postprocess import end_slope_weights
 
 #: Pivots of the cheap lower and upper bounds (triangle inequality of the mixed norm).
 PIVOTS = 4
@@ -187,6 +188,37 @@ def pivot_distances(f: PairFeatures) -> tuple[np.ndarray, np.ndarray, np.ndarray
     pos = _pivots(f.last_pos, f.first_pos, PIVOTS)
     vel = _pivots(f.last_vel, f.first_vel, PIVOTS)
     return mixed_norms(f.last_pos, pos), mixed_norms(f.first_pos, pos), mixed_norms(f.last_vel, vel), mixed_norms(f.first_vel, vel)
+
+
+def boundary_states(coeffs: np.ndarray, nodes, model, fit_frames: int = 2) -> tuple[np.ndarray, ...]:
+    """First/last frame positions (mm) and velocities (mm/frame) in marker space, each (N, 3M)
+    float32, of the motion nodes ``nodes`` (a :class:`~facesynth.model.motiondb.Nodes`) over the
+    PCA coefficients ``coeffs`` ((F, K) mm) of ``model`` (a :class:`~facesynth.model.pca.PcaModel`).
+
+    The velocities are the slopes at the node's ends of a least-squares polynomial
+    (:func:`facesynth.motion.postprocess.end_slope_weights`: a Savitzky-Golay derivative
+    taken at the end point) through the node's first/last ``fit_frames`` frames (fewer in a
+    shorter node); ``fit_frames = 2`` is the one-frame finite difference. A single frame's
+    difference is mostly marker noise; a fit over several frames measures the motion.
+    """
+    first = coeffs[nodes.frame_start].astype(np.float64)
+    last = coeffs[nodes.frame_start + nodes.frame_count - 1].astype(np.float64)
+    to_markers = lambda c: model.reconstruct(c).reshape(len(c), -1)  # noqa: E731
+    first_pos, last_pos = to_markers(first), to_markers(last)
+    first_d = np.zeros_like(first)
+    last_d = np.zeros_like(last)
+    lengths = np.minimum(nodes.frame_count, max(fit_frames, 2))
+    for length in np.unique(lengths):
+        k = np.nonzero(lengths == length)[0]
+        w = end_slope_weights(int(length))  # (L,): slope at frame 0 of frames 0..L-1
+        head = nodes.frame_start[k][:, None] + np.arange(length)[None, :]
+        tail = (nodes.frame_start[k] + nodes.frame_count[k] - 1)[:, None] - np.arange(length)[None, :]
+        first_d[k] = np.einsum("l,nlk->nk", w, coeffs[head].astype(np.float64))
+        last_d[k] = -np.einsum("l,nlk->nk", w, coeffs[tail].astype(np.float64))  # time runs backwards there
+    zero = to_markers(np.zeros((1, coeffs.shape[1])))
+    first_vel = (to_markers(first_d) - zero).astype(np.float32)  # the linear part only: velocities
+    last_vel = (to_markers(last_d) - zero).astype(np.float32)
+    return first_pos.astype(np.float32), last_pos.astype(np.float32), first_vel, last_vel
 
 
 @dataclass

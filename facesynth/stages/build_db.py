@@ -38,8 +38,7 @@ from ..limits import bound, require_memory
 from ..model.motiondb import MotionDatabase, Nodes
 from ..model.pca import PcaFrames, PcaModel
 from ..model.tables import Phones, Takes
-from ..motion.postprocess import end_slope_weights
-from ..search.pairs import PairFeatures
+from ..search.pairs import PairFeatures, boundary_states
 from ..phonemes import PAU, viseme
 
 
@@ -130,35 +129,6 @@ def dsc_matrix(coeffs: np.ndarray, nodes: Nodes, samples: int) -> np.ndarray:
     xx = np.einsum("ij,ij->i", x, x)
     yy = np.einsum("ij,ij->i", y, y)
     return (np.maximum(xx[:, None] + yy[None, :] + 2.0 * (x @ y.T), 0.0) * scale[None, :]).astype(np.float32)
-
-
-def boundary_states(coeffs: np.ndarray, nodes: Nodes, model: PcaModel, fit_frames: int = 2) -> tuple[np.ndarray, ...]:
-    """First/last frame positions (mm) and velocities (mm/frame) in marker space, each (N, 3M) float32.
-
-    The velocities are the slopes at the node's ends of a least-squares polynomial
-    (:func:`facesynth.motion.postprocess.end_slope_weights`: a Savitzky-Golay derivative
-    taken at the end point) through the node's first/last ``fit_frames`` frames (fewer in a
-    shorter node); ``fit_frames = 2`` is the one-frame finite difference. A single frame's
-    difference is mostly marker noise; a fit over several frames measures the motion.
-    """
-    first = coeffs[nodes.frame_start].astype(np.float64)
-    last = coeffs[nodes.frame_start + nodes.frame_count - 1].astype(np.float64)
-    to_markers = lambda c: model.reconstruct(c).reshape(len(c), -1)  # noqa: E731
-    first_pos, last_pos = to_markers(first), to_markers(last)
-    first_d = np.zeros_like(first)
-    last_d = np.zeros_like(last)
-    lengths = np.minimum(nodes.frame_count, max(fit_frames, 2))
-    for length in np.unique(lengths):
-        k = np.nonzero(lengths == length)[0]
-        w = end_slope_weights(int(length))  # (L,): slope at frame 0 of frames 0..L-1
-        head = nodes.frame_start[k][:, None] + np.arange(length)[None, :]
-        tail = (nodes.frame_start[k] + nodes.frame_count[k] - 1)[:, None] - np.arange(length)[None, :]
-        first_d[k] = np.einsum("l,nlk->nk", w, coeffs[head].astype(np.float64))
-        last_d[k] = -np.einsum("l,nlk->nk", w, coeffs[tail].astype(np.float64))  # time runs backwards there
-    zero = to_markers(np.zeros((1, coeffs.shape[1])))
-    first_vel = (to_markers(first_d) - zero).astype(np.float32)  # the linear part only: velocities
-    last_vel = (to_markers(last_d) - zero).astype(np.float32)
-    return first_pos.astype(np.float32), last_pos.astype(np.float32), first_vel, last_vel
 
 
 def pair_gaps_numpy(first_pos, last_pos, first_vel, last_vel) -> tuple[np.ndarray, np.ndarray]:
