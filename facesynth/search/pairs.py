@@ -474,3 +474,73 @@ class OpenCLPairs:
         cl.enqueue_copy(self.queue, best, best_buf, is_blocking=False)
         cl.enqueue_copy(self.queue, evals, evals_buf, is_blocking=True)
         return best, int(evals.astype(np.int64).sum())
+
+
+class PairTerms:
+    """The weight-free pair terms of every ordered pair, kept for a search that tries many
+    weights on one database (``tune``): DSC, PGap and VGap as (N, N) float32 each (row i = the
+    node before), 12 N^2 bytes. :meth:`costs` assembles Table I for settings ``s`` from them
+    with :func:`facesynth.search.costs.transition_matrix`, the same float32 operations as
+    :meth:`TransitionCosts.block_numpy`, so the matrix is bit-identical to the on-demand one."""
+
+    def __init__(self, f: PairFeatures, like: "PairTerms | None" = None):
+        """The tables of ``f``; with ``like`` (the tables of features that differ from ``f`` in
+        the boundary velocities only) DSC and PGap are shared and only VGap is computed."""
+        n = len(f)
+        self.f = f
+        cols = np.arange(n)
+        step = max(1, (1 << 21) // max(n, 1))
+        if like is not None:
+            self.dsc, self.pgap = like.dsc, like.pgap
+            self.vgap = np.empty((n, n), np.float32)
+            lay = f.layout()
+            for a in range(0, n, step):
+                rows = np.arange(a, min(n, a + step))
+                self.vgap[rows] = _gap_lanes(lay.last_vel[rows], lay.first_vel[cols])
+            return
+        self.dsc, self.pgap, self.vgap = (np.empty((n, n), np.float32) for _ in range(3))
+        for a in range(0, n, step):
+            rows = np.arange(a, min(n, a + step))
+            self.dsc[rows], self.pgap[rows], self.vgap[rows] = f.terms(rows, cols)
+
+    @staticmethod
+    def bytes_for(n: int) -> int:
+        """Memory the three (n, n) float32 tables take."""
+        return 12 * n * n
+
+    def costs(self, s: SynthesizeSettings) -> "DenseCosts":
+        """TC of Table I for settings ``s`` as a :class:`DenseCosts`."""
+        from .costs import transition_matrix
+
+        return DenseCosts(transition_matrix(self.dsc, self.pgap, self.vgap, self.f.viseme, self.f.pre.astype(np.int64), s))
+
+
+@dataclass
+class DenseCosts:
+    """A full (N, N) float32 TC matrix usable where a :class:`TransitionCosts` is (NumPy only):
+    ``tc[i, j]``, :meth:`block`, :meth:`column`, :meth:`values`, :meth:`dense`."""
+
+    matrix: np.ndarray
+    opencl: bool = False
+
+    def __post_init__(self):
+        self.n = len(self.matrix)
+
+    def block(self, rows, cols) -> np.ndarray:
+        """TC[rows][:, cols], (r, c) float32."""
+        return self.matrix[np.ix_(np.asarray(rows, np.int64).ravel(), np.asarray(cols, np.int64).ravel())]
+
+    def column(self, j: int, rows: np.ndarray | None = None) -> np.ndarray:
+        """TC[:, j], or TC[rows, j]."""
+        return self.matrix[:, j] if rows is None else self.matrix[rows, j]
+
+    def values(self, i: int, js: np.ndarray) -> np.ndarray:
+        """TC[i, js]."""
+        return self.matrix[i, js]
+
+    def __getitem__(self, ij: tuple[int, int]) -> np.float32:
+        return self.matrix[int(ij[0]), int(ij[1])]
+
+    def dense(self) -> np.ndarray:
+        """The (N, N) matrix itself."""
+        return self.matrix

@@ -15,9 +15,13 @@ score is the mean per-sentence error (mm^2). The search runs in three parts:
 3. **Smoothing window** (``synthesize.smoothing_half_window``): only post-processing
    changes, so the searched paths of the best weights are re-rendered, not searched again.
 
-Reuse: the sentences, their capture and the per-node features are read once; the transition
-features of each boundary-fit length are computed once; searched paths are cached per
-(weights, fit length) and re-rendered for other windows; every setting is evaluated once.
+Reuse: the sentences, their capture and the per-node features are read once. The pair terms
+(DSC, PGap, VGap of every ordered pair) do not depend on the weights: when their three
+(N, N) float32 tables fit in a quarter of the free memory they are computed once (VGap once
+more per boundary-fit length) and each weight setting only sums them (Table I, bit-identical
+to the on-demand costs) for the dense DP, which gives the pruned DP's path and cost; else
+each setting runs the pruned DP. Searched paths are cached per (weights, fit length) and
+re-rendered for other windows; every setting is evaluated once.
 
 Safety: the start settings are the first evaluation and a candidate replaces the best only if
 it is strictly better on the validation takes, so the written settings are never worse there
@@ -42,7 +46,8 @@ from ..errors import InputError
 from ..evaluation import heldout
 from ..model.motiondb import MotionDatabase
 from ..opencl import use_opencl
-from ..search.pairs import TransitionCosts, boundary_states
+from ..limits import mem_available
+from ..search.pairs import PairTerms, TransitionCosts, boundary_states
 from ..search.synthesis import render_path, synthesize
 
 ALPHAS = ("alpha1", "alpha2", "alpha3", "alpha4", "alpha5", "alpha6")
@@ -90,6 +95,10 @@ class Objective:
     def __init__(self, db: MotionDatabase, synth: SynthesizeSettings, opencl: bool):
         self.db, self.synth, self.opencl = db, synth, opencl
         self.features = {}
+        self.terms = {}
+        # the weight-free pair terms as tables when they fit in a quarter of the free memory
+        free = mem_available()
+        self.tables = PairTerms.bytes_for(len(db.nodes)) < (free if free is not None else 2 << 30) / 4
         self.base_features = db.read_features()
         self.paths: dict[tuple, list[np.ndarray]] = {}
         self.scores: dict[tuple, tuple[float, np.ndarray]] = {}
@@ -115,7 +124,13 @@ class Objective:
             for k, (sentence, path) in enumerate(zip(sentences, self.paths[path_key])):
                 out[k] = sentence_error(render_path(self.db, sentence.utterance, path, s)["markers_capture"], sentence.truth)
         else:
-            tc = TransitionCosts(self.features_for(fit), s, self.opencl)
+            if self.tables:  # the pair terms once per fit length; per weights only the sums (bit-identical)
+                if fit not in self.terms:  # DSC and PGap do not depend on the fit: shared
+                    self.terms[fit] = PairTerms(self.features_for(fit), next(iter(self.terms.values()), None))
+                tc = self.terms[fit].costs(s)
+                s = dataclasses.replace(s, dp="dense", use_opencl=False)  # the same path and cost as the pruned DP
+            else:
+                tc = TransitionCosts(self.features_for(fit), s, self.opencl)
             paths = []
             for k, sentence in enumerate(sentences):
                 res = synthesize(self.db, sentence.utterance, {}, s, tc=tc)
