@@ -204,7 +204,8 @@ class EvaluateSettings:
 
 @dataclass(frozen=True)
 class TuneSettings:
-    """``[tune]``: the multi-start Nelder-Mead search of the cost weights (paper VI-D)."""
+    """``[tune]``: the multi-start Nelder-Mead search of the cost weights and PNT (paper VI-D),
+    then the boundary-fit length and the join window."""
 
     starts: int = setting("paper VI-D (random restarts)", ge=1)
     max_evaluations: int = setting("paper VI-D; split evenly across the starts", unit="evaluations in all", ge=1)
