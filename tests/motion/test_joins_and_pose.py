@@ -25,7 +25,7 @@ def test_blend_closes_a_jump_in_position_and_velocity(share):
     assert np.array_equal(g[:18], f[:18]) and np.array_equal(g[42:], f[42:])  # outside the window: untouched
     d1, d2 = np.diff(g, axis=0), np.diff(g, 2, axis=0)
     assert np.abs(d2).max() < 0.1 * np.abs(np.diff(f, 2, axis=0)).max()  # the pop is gone
-    assert d1[29] == pytest.approx(d1[28], abs=0.02) and d1[29] == pytest.approx(d1[30], abs=0.02)
+    assert d1[29] == pytest.approx(d1[28], abs=0.05) and d1[29] == pytest.approx(d1[30], abs=0.05)  # was a 0.2 and 0.4 jump
     # the heavier side (smaller share) moves less
     left, right = np.abs(g[18:30] - f[18:30]).max(), np.abs(g[30:42] - f[30:42]).max()
     assert (left < right) == (share < 0.5) or share == 0.5
