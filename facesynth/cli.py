@@ -116,7 +116,7 @@ READS: dict[str, tuple[str, ...]] = {
     "batch": ("batch", "synthesize", "ingest", "align", "deform", "render"),
     "evaluate": ("evaluate", "synthesize", "normalize"),
     "capture": ("normalize", "synthesize"),
-    "tune": ("tune", "synthesize", "evaluate", "normalize"),
+    "tune": ("tune", "synthesize", "build_db", "normalize"),
     "isomap build": ("isomap",),
     "isomap pick": (),
     "db show": (),
@@ -368,7 +368,10 @@ def normalize(ctx: Context, corpus: Path, output: Path):
                    "PCA will project those frames from the visible markers.")
     gaps = (f"; {len(s['long_gaps'])} gaps too long to fill are left for PCA to project (-v lists them)"
             if s["long_gaps"] else "")
-    ctx.say(f"normalized {s['frames']} frames (origin marker {s['origin_marker']}){gaps} -> {output}")
+    for warning in s["warnings"]:
+        ctx.say(f"warning: {warning}")
+    ctx.detail("head pose fitted on " + ", ".join(f"{n} (weight {w:.2f})" for n, w in zip(s["rigid_markers"], s["rigid_weights"])))
+    ctx.say(f"normalized {s['frames']} frames (head pose on {len(s['rigid_markers'])} rigid markers){gaps} -> {output}")
 
 
 @main.command()
@@ -832,26 +835,49 @@ def capture(ctx: Context, corpus: Path, db_path: Path, take: str, output: Path):
 @click.option("-o", "--output", type=PATH, required=True, help="Output TOML with the tuned [synthesize] weights.")
 @stage
 def tune(ctx: Context, db: Path, validation: Path, output: Path):
-    """Tune alpha1..alpha6 by cross-validation on the validation sentences (paper VI-D).
+    """Tune the cost weights (alpha1..alpha6, PNT), the join smoothing window and the
+    boundary-fit length by cross-validation on the validation sentences (paper VI-D).
 
-    The example asks for a quick run of 12 evaluations from 3 starts; the default budget is
-    tune.max_evaluations = 60 from tune.starts = 6.
+    One progress bar shows the evaluations with the best validation error so far (a line every
+    few evaluations when stderr is not a terminal). Settings worse on the validation sentences
+    than the start are never written: if nothing beats the start, the start is written with a
+    warning. The example asks for a quick run of 12 weight evaluations from 3 starts; the
+    default budget is tune.max_evaluations = 60 from tune.starts = 6.
 
     \b
     Example:
       facesynth tune db.h5 --validation corpus.h5 -o tuned.toml --set tune.max_evaluations=12 --set tune.starts=3
       facesynth synthesize db.h5 --phonemes corpus/labels/neutral_s016.TextGrid --config tuned.toml -o tuned.h5
     """
+    from .progress import Overall
     from .stages import tune as stage
 
-    s = stage.run(db, validation, output, ctx.config.settings("tune"), ctx.config.settings("synthesize"),
-                  ctx.config.settings("evaluate"), ctx.config.settings("normalize"), ctx.overwrite,
-                  progress_fn=lambda n, err: ctx.detail(f"evaluation {n}: validation error {err:.4f} mm^2"))
+    bar = None
+
+    def show(done: int, total: int, err: float, best: float) -> None:
+        nonlocal bar
+        if bar is None:
+            bar = Overall(total, "tune", ctx.say)
+        bar.step(f"best {best:.4f} mm^2 (last {err:.4f})")
+
+    try:
+        s = stage.run(db, validation, output, ctx.config.settings("tune"), ctx.config.settings("synthesize"),
+                      ctx.config.settings("build_db"), ctx.config.settings("normalize"), ctx.overwrite, progress_fn=show)
+    finally:
+        if bar is not None:
+            bar.close()
+    for warning in s["warnings"]:
+        ctx.say(f"warning: {warning}")
     ctx.say(f"{s['evaluations']} evaluations in {s['seconds']:.1f} s on {s['validation_sentences']} validation sentences: "
             f"error {s['validation_err_before']:.4f} -> {s['validation_err_after']:.4f} mm^2")
     if "test_err_before" in s:
-        ctx.say(f"on {s['test_sentences']} test sentences not used for tuning: {s['test_err_before']:.4f} -> {s['test_err_after']:.4f} mm^2")
-    ctx.say("weights: " + ", ".join(f"{k}={v:.4g}" for k, v in s["alphas"].items()) + f" -> {output}")
+        (lb, hb), (la, ha) = s["test_ci_before"], s["test_ci_after"]
+        ctx.say(f"on {s['test_sentences']} test sentences not used for tuning: {s['test_err_before']:.4f} [{lb:.4f}, {hb:.4f}] -> "
+                f"{s['test_err_after']:.4f} [{la:.4f}, {ha:.4f}] mm^2 (bootstrap 95%)")
+    ctx.say("weights: " + ", ".join(f"{k}={v:.4g}" for k, v in s["weights"].items())
+            + f"; smoothing_half_window={s['smoothing_half_window']}, boundary_fit_frames={s['boundary_fit_frames']} -> {output}")
+    if s["boundary_fit_changed"]:
+        ctx.say(f"the boundary-fit length changed: run build-db (and prune) again with --config {output} for it to take effect.")
 
 
 @main.group(cls=DefaultGroup)

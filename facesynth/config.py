@@ -128,9 +128,11 @@ class PcaSettings:
 
 @dataclass(frozen=True)
 class BuildDbSettings:
-    """``[build_db]``: DSC time-warp samples (Eq. 6)."""
+    """``[build_db]``: DSC time-warp samples (Eq. 6), the boundary-velocity fit (Eq. 9)."""
 
     dsc_samples: int = setting("Eq. 6 (time-warp before the blend)", unit="samples", ge=3)
+    boundary_fit_frames: int = setting("not in the paper: Eq. 9's velocities as end slopes of a local polynomial fit; "
+                                       "2: one-frame differences", unit="frames at the capture rate", ge=2, le=60)
 
 
 @dataclass(frozen=True)
@@ -173,7 +175,10 @@ class SynthesizeSettings:
     alpha5: float = setting("Table II", ge=0)
     alpha6: float = setting("Eq. 5", ge=0)
     huge_penalty: float = setting("Eq. 10 (HugePenalty)", unit="cost", gt=0)
-    smoothing_half_window: int = setting("Eq. 16 (s = 3)", unit="frames at the capture rate", ge=0)
+    join_smoothing: str = setting("paper VII-B, Eq. 16 (eq16, free-ended); not in the paper: a displacement blend "
+                                  "continuous in position and velocity (blend)", choices=("blend", "eq16"))
+    smoothing_half_window: int = setting("Eq. 16 (s = 3); the blend's reach on each side of a join",
+                                         unit="frames at the capture rate", ge=0, le=600)
     smoothing_lambda: float = setting("Eq. 16 (weight of the smoothness term)", ge=0)
     weight_high: float = setting("Table IV (2)", gt=0)
     weight_low: float = setting("Table IV (0.5)", gt=0)
@@ -181,7 +186,8 @@ class SynthesizeSettings:
     high_phones: tuple[str, ...] = setting("Table IV", choices=_SPOKEN_PHONES)
     low_phones: tuple[str, ...] = setting("Table IV", choices=_SPOKEN_PHONES)
     output_fps: float = setting("paper VII-B (30 frames/s)", unit="frames/s", gt=0, le=1000)
-    silence_interpolation: str = setting("paper VII-B (linear)", choices=("linear", "cubic", "cosine"))
+    silence_interpolation: str = setting("paper VII-B (linear); hermite: velocities matched on both sides",
+                                         choices=("linear", "cubic", "cosine", "hermite"))
 
 
 @dataclass(frozen=True)
@@ -201,7 +207,8 @@ class EvaluateSettings:
 
 @dataclass(frozen=True)
 class TuneSettings:
-    """``[tune]``: the multi-start Nelder-Mead search of the cost weights (paper VI-D)."""
+    """``[tune]``: the multi-start Nelder-Mead search of the cost weights and PNT (paper VI-D),
+    then the boundary-fit length and the join window."""
 
     starts: int = setting("paper VI-D (random restarts)", ge=1)
     max_evaluations: int = setting("paper VI-D; split evenly across the starts", unit="evaluations in all", ge=1)

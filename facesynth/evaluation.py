@@ -71,7 +71,7 @@ from .model.corpus import Corpus
 from .model.motiondb import MotionDatabase
 from .motion.dominance import DominanceModel, emotion_labels, fit_dominance, training_sentences
 from .motion.postprocess import frame_ranges
-from .motion.rigid import fill_gaps, rigid_align
+from .motion.rigid import fill_gaps, head_pose, rigid_indices
 from .opencl import use_opencl
 from .phonemes import PAU, viseme
 from .progress import progress
@@ -106,16 +106,16 @@ class Sentence:
     to_reference: tuple[np.ndarray, np.ndarray] | None = None
 
 
-def normalized_take(raw: np.ndarray, db: MotionDatabase, settings: NormalizeSettings):
+def normalized_take(raw: np.ndarray, db: MotionDatabase, settings: NormalizeSettings, corpus_rigid=()):
     """One take's captured markers (T, M, 3) mm, gaps filled and aligned to the database's
-    reference frame (Eq. 1-2). Returns markers (T, M, 3), rotations (T, 3, 3), translations (T, 3) mm."""
+    reference frame as ``normalize`` does (weighted Procrustes on the rigid markers:
+    the settings', else ``corpus_rigid``, else all). Returns markers (T, M, 3), rotations (T, 3, 3), translations (T, 3) mm."""
     names = db.marker_names
-    origin = int(np.argmin(np.linalg.norm(db.reference, axis=1)))
-    rigid = np.array([names.index(n) for n in settings.rigid_markers]) if settings.rigid_markers else np.arange(len(names))
+    rigid, _ = rigid_indices(names, settings.rigid_markers, [n for n in corpus_rigid if n in names])
     raw = raw.astype(np.float64)
     for m in range(raw.shape[1]):
         raw[:, m], _ = fill_gaps(raw[:, m], settings.max_gap_frames)
-    return rigid_align(raw, db.reference.astype(np.float64), origin, rigid)
+    return head_pose(raw, db.reference.astype(np.float64), rigid)[:3]
 
 
 @dataclass
@@ -181,7 +181,7 @@ def heldout(corpus_path: Path, db: MotionDatabase, split: str, normalize_setting
         raise InputError(f"{corpus_path}: no take has split '{split}'; mark held-out takes in the manifest's split column.")
     out = []
     for i in rows:
-        captured, _, _ = normalized_take(corpus.markers[takes.frames(i)], db, normalize_settings)
+        captured, _, _ = normalized_take(corpus.markers[takes.frames(i)], db, normalize_settings, corpus.rigid_markers)
         seg = np.nonzero(phones.take == i)[0]
         utt = utterance([phones.phone[r] for r in seg], phones.start[seg], phones.end[seg], [phone_emotion[r] for r in seg])
         s = Sentence(takes.name[i], takes.emotion[i], utt, captured.astype(np.float32))

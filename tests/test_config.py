@@ -17,7 +17,9 @@ def test_defaults_hold_the_paper_values():
     assert c.settings("pca").n_components == 25
     assert c.settings("isomap").n_neighbors == 12
     s = c.settings("synthesize")
-    assert s.smoothing_half_window == 3 and s.weight_high == 2.0 and s.weight_low == 0.5
+    assert s.weight_high == 2.0 and s.weight_low == 0.5
+    # the paper's Eq. 16 window is s = 3; the default join blend reaches 6 frames (50 ms) each side
+    assert s.join_smoothing == "blend" and s.smoothing_half_window == 6
     assert "p" in s.high_phones and "k" in s.low_phones
 
 

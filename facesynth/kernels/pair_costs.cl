@@ -4,8 +4,7 @@
 //   DSC(i, j)  = scale[j] * sum_d (x[i, d] + y[j, d])^2               (Eq. 6, expanded blend)
 //   PGap(i, j) = sum_k || first_pos[j, k] - last_pos[i, k] ||          (Eq. 8)
 //   VGap(i, j) = sum_k || first_vel[j, k] - last_vel[i, k] ||          (Eq. 9)
-//   TC(i, j)   = 0 if pre[j] == i; alpha1 PNT if pre[j] < 0; else
-//                ((alpha2 DSC + alpha3 PGap) + VGap) + PNT [viseme(i) != viseme(pre(j))]
+//   TC(i, j)   = 0 if pre[j] == i; (alpha3 PGap + VGap) + alpha1 PNT if pre[j] < 0; else ((alpha2 DSC + alpha3 PGap) + VGap) + PNT [viseme(i) != viseme(pre(j))]
 //
 // Layout (facesynth.search.pairs.DeviceLayout): x and y are (N, DIMS8 * 8), zero-padded; the
 // boundary states are (N, 3, MQ * 8), the x, y and z coordinates of the markers in planes,
@@ -48,7 +47,6 @@ inline float pair_tc(const int i, const int j,
 {
     const int p = pre[j];
     if (p == i) return 0.0f;
-    if (p < 0) return a1pnt;
     __global const float8 *xi = (__global const float8 *)(x + (size_t)i * DIMS8 * 8);
     __global const float8 *yj = (__global const float8 *)(y + (size_t)j * DIMS8 * 8);
     float8 acc = (float8)(0.0f);
@@ -63,6 +61,11 @@ inline float pair_tc(const int i, const int j,
     float tc = a2 * dsc;
     tc = tc + a3 * pg;
     tc = tc + vg;
+    if (p < 0) {  // rule 4: (alpha3 PGap + VGap) + alpha1 PNT
+        float r4 = a3 * pg;
+        r4 = r4 + vg;
+        return r4 + a1pnt;
+    }
     tc = tc + (vis[i] != pre_vis[j] ? pnt : 0.0f);
     return tc;
 }
@@ -142,8 +145,8 @@ __kernel void tc_block(FEATURE_PARAMS,
 // rows are sorted by phi ascending. TC >= 0, so the scan stops at the first row with
 // phi >= best; a row whose cheap lower bound (viseme penalty and pivot bounds of PGap and
 // VGap, shrunk by 1e-4 relative and `slack` absolute against rounding) already reaches best
-// is skipped without computing its cost. Pairs of Table I rules 1 and 4 are left to init
-// (the captured link costs 0; rule 4 costs alpha1 PNT from every node). The minimum is the
+// is skipped without computing its cost (rule 4: alpha1 PNT instead of the viseme penalty).
+// Pairs of Table I rule 1 are left to init (the captured link costs 0). The minimum is the
 // same float32 value as the dense min over all rows; evals[c] counts the pair costs computed.
 // pivots: row_lp/row_lv[i * PIVOTS + q] = mixed-norm distance of node i's last position /
 // velocity from pivot q; col_fp/col_fv likewise for first position / velocity.
@@ -174,7 +177,7 @@ __kernel void pruned_columns(FEATURE_PARAMS,
         const int i = backward ? me : other;
         const int j = backward ? other : me;
         const int pj = backward ? pre[other] : me_pre;
-        if (pj == i || pj < 0) continue;  // rules 1 and 4 are in init
+        if (pj == i) continue;  // rule 1 is in init
         float lp = 0.0f, lv = 0.0f;
         for (int q = 0; q < PIVOTS; ++q) {
             const float dp = other_p[(size_t)other * PIVOTS + q] - mq_p[q];
@@ -184,7 +187,8 @@ __kernel void pruned_columns(FEATURE_PARAMS,
             lp = ap > lp ? ap : lp;
             lv = av > lv ? av : lv;
         }
-        const float lb = ((vis[i] != pre_vis[j] ? pnt : 0.0f) + a3 * lp + lv) * 0.9999f - slack;
+        const float penalty = pj < 0 ? a1pnt : (vis[i] != pre_vis[j] ? pnt : 0.0f);
+        const float lb = (penalty + a3 * lp + lv) * 0.9999f - slack;
         if (p + lb >= best) continue;
         // best - p rounds by at most 2^-24 best (costs are >= 0); the limit allows for that
         const float v = p + pair_tc_below(i, j, (best - p) + best * 2.4e-7f, slack, PAIR_ARGS);

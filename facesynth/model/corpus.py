@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
@@ -21,6 +21,9 @@ class Corpus:
     fps : capture rate, frames/s.
     audio : (S,) float32 samples of all takes at ``sample_rate`` Hz; take i's are
         ``audio[audio_start[i] : audio_start[i] + audio_count[i]]``.
+    rigid_markers : the markers that move only with the head (the binding's ``rigid`` column,
+        :func:`facesynth.formats.mesh.read_rigid_markers`), the set ``normalize`` fits the head
+        pose on; [] when the corpus names none.
     """
 
     takes: Takes
@@ -32,6 +35,7 @@ class Corpus:
     audio_start: np.ndarray
     audio_count: np.ndarray
     sample_rate: int
+    rigid_markers: list[str] = field(default_factory=list)
 
     KIND = "corpus"
 
@@ -41,8 +45,10 @@ class Corpus:
         with open_artifact(path, cls.KIND) as f:
             takes, phones, names = read_tables(f)
             samples = read(f, "audio/samples") if audio else np.zeros(0, np.float32)
+            flags = read(f, "rigid") if "rigid" in f else np.zeros(len(names), bool)
             return cls(takes, phones, names, read(f, "markers"), float(attr(f["markers"], "fps")), samples,
-                       read(f, "audio/start"), read(f, "audio/count"), int(attr(f["audio"], "sample_rate")))
+                       read(f, "audio/start"), read(f, "audio/count"), int(attr(f["audio"], "sample_rate")),
+                       [n for n, r in zip(names, flags) if r])
 
     def write(self, path: Path, *, config: str, inputs, overwrite: bool = False) -> None:
         """Write the corpus to ``path`` (an atomic, stamped ``corpus`` artifact)."""
@@ -52,6 +58,8 @@ class Corpus:
             d.attrs["units"] = "mm"
             d.attrs["fps"] = self.fps
             write_tables(f, self.takes, self.phones, self.marker_names)
+            rigid = set(self.rigid_markers)
+            f.create_dataset("rigid", data=np.array([n in rigid for n in self.marker_names], bool))
             a = stamp(f.create_group("audio"), "audio")
             a.create_dataset("samples", data=self.audio.astype(np.float32))
             a.create_dataset("start", data=self.audio_start.astype(np.int64))

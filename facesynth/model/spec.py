@@ -274,6 +274,8 @@ PCA_MODEL = Block("pca-model", "The PCA model of marker frames (Eq. 11); a frame
 CORPUS = Kind("corpus", SCHEMAS["corpus"], "The ingested capture (paper III): every take concatenated.", (
     Dataset("markers", "float32", ("F", "M", 3), "raw capture, head motion in; NaN where a marker was not seen",
             "mm", (MM, _fps()), finite=False),
+    Dataset("rigid", "bool", ("M",), "true: the marker moves only with the head (the binding's `rigid` column), "
+            "the set `normalize` fits the head pose on; all false when the corpus names none", required=False),
     TABLES,
     Group("audio", "audio", "all takes' audio, mono, concatenated", (
         Dataset("samples", "float32", ("S",), "samples of every take, one after another"),

@@ -14,6 +14,14 @@ Choices where the paper is vague:
 * Pauses at the start or end of the utterance have a non-silence boundary on one side
   only; the other side is the database's neutral closed-mouth rest pose, so the face
   settles to rest in silence.
+* Eq. 16 with free ends leaves the window's edges discontinuous and follows the jump at the
+  join, so joins pop. The default join smoothing (``join_smoothing = "blend"``,
+  :func:`blend_join`) instead adds to each side a smooth displacement that closes the gap in
+  position and velocity at the join and fades out (value, slope and curvature 0) at the
+  window's edges: the frames keep their captured shape, and position and velocity are
+  continuous everywhere. Table IV's weights share the correction: the heavier side moves less.
+* Pauses are regenerated between the frames around them; ``silence_interpolation =
+  "hermite"`` matches the velocities on both sides too (a cubic Hermite).
 * Down-sampling takes every (capture rate / output rate)-th frame, or interpolates when the
   ratio is not whole; no low-pass filter, so brief lip closures survive.
 """
@@ -37,6 +45,19 @@ class Concatenated:
     source_frame: np.ndarray
     step: np.ndarray
     smoothed: np.ndarray  # (F,) bool, frame changed by join smoothing
+
+
+def end_slope_weights(length: int) -> np.ndarray:
+    """Weights w ((length,) float64) with ``w @ y[0:length]`` = the slope at frame 0 (units of y
+    per frame) of the least-squares polynomial through samples y[0..length-1]: degree 1 for
+    up to 3 samples, else degree 2 (a Savitzky-Golay derivative evaluated at the end point).
+    length 2 gives the finite difference y[1] - y[0]."""
+    if length < 2:
+        raise ValueError("a slope needs at least two samples")
+    x = np.arange(length, dtype=np.float64)
+    degree = 1 if length <= 3 else 2
+    vandermonde = x[:, None] ** np.arange(degree + 1)[None, :]
+    return np.linalg.pinv(vandermonde)[1]
 
 
 def frame_ranges(starts: np.ndarray, ends: np.ndarray, fps: float) -> list[tuple[int, int]]:
@@ -72,12 +93,60 @@ def smooth_join(f: np.ndarray, w_left: float, w_right: float, lam: float) -> np.
     return np.linalg.solve(system, weights[:, None] * f)
 
 
+def _quintic_fade(n: int) -> np.ndarray:
+    """h(u) = 10u^3 - 15u^4 + 6u^5 at u = k / n, k = 1..n: (n,) from near 0 to 1, with value,
+    slope and curvature 0 at u = 0 and slope and curvature 0 at u = 1."""
+    u = np.arange(1, n + 1) / n
+    return u ** 3 * (10 - 15 * u + 6 * u * u)
+
+
+def _ramp_to(n: int, value: np.ndarray, slope: np.ndarray) -> np.ndarray:
+    """(n, K): a displacement over n frames that starts flat at 0 (value, slope and curvature 0
+    before frame 0) and ends at frame n - 1 with ``value`` and ``slope`` (per frame), K = len(value).
+    The quintic Hermite through (0, 0, 0) and (value, slope * n, 0) in the unit interval."""
+    u = (np.arange(1, n + 1) / n)[:, None]
+    h_value = u ** 3 * (10 - 15 * u + 6 * u * u)  # 0 -> 1, flat at both ends
+    h_slope = u ** 3 * (-4 + 7 * u - 3 * u * u)  # 0 -> 0, slope 1 at u = 1
+    return h_value * value[None] + h_slope * (slope * n)[None]
+
+
+def blend_join(out: np.ndarray, a: int, join: int, b: int, share_left: float, fit_frames: int = 4) -> None:
+    """Make ``out`` ((F, K), in place) continuous in position and velocity across the join at
+    frame ``join`` (first frame of the right side), changing frames [a, join) and [join, b).
+
+    Each side's velocity at the join is the end slope of a local fit over up to ``fit_frames``
+    of its frames (:func:`end_slope_weights`). The left side extrapolated half a frame forward
+    and the right side half a frame back disagree by D in position and V in velocity; the left
+    side gets a displacement reaching ``share_left * (D, V)`` at the join, the right side one
+    reaching ``-(1 - share_left) * (D, V)``, each fading to 0 with zero slope and curvature at
+    the window's edge (:func:`_ramp_to`), so nothing jumps there either.
+    """
+    n_left, n_right = join - a, b - join
+    if n_left < 2 or n_right < 2:
+        return
+    wl = end_slope_weights(min(fit_frames, n_left))
+    wr = end_slope_weights(min(fit_frames, n_right))
+    v_left = -(wl @ out[join - len(wl) : join][::-1])  # slope backwards in time from join - 1, negated
+    v_right = wr @ out[join : join + len(wr)]
+    gap = (out[join] - 0.5 * v_right) - (out[join - 1] + 0.5 * v_left)  # position mismatch at join - 1/2
+    dv = v_right - v_left
+    share_right = 1.0 - share_left
+    # left: reaches share_left * (gap, dv) half a frame after its last frame
+    left = _ramp_to(n_left, share_left * (gap - 0.5 * dv), share_left * dv)
+    # right: reaches -share_right * (gap, dv) at the join; built backwards in time, so its slope flips
+    right = _ramp_to(n_right, share_right * (gap + 0.5 * dv), -share_right * dv)[::-1]
+    out[a:join] += left
+    out[join:b] -= right
+
+
 def concatenate(path: np.ndarray, phones: list[str], starts: np.ndarray, ends: np.ndarray,
                 node_start: np.ndarray, node_count: np.ndarray, node_pre: np.ndarray, node_phone: list[str],
                 coeffs: np.ndarray, rest: np.ndarray, fps: float, *, half_window: int, lam: float,
-                weight_of, interpolation: str = "linear", joins=None) -> Concatenated:
+                weight_of, interpolation: str = "linear", joins=None, method: str = "blend") -> Concatenated:
     """The whole VII-B chain up to (not including) Eq. 11. ``weight_of(phone)`` gives Table IV's
-    factor. ``joins(out, ranges)``, if given, replaces Eq. 16 smoothing (e.g. Cao's blending
+    factor. ``method``: "blend" (:func:`blend_join` over ``half_window`` frames each side,
+    at most the phone's own frames) or "eq16" (:func:`smooth_join` over 2 ``half_window``
+    frames, free-ended). ``joins(out, ranges)``, if given, replaces both (e.g. Cao's blending
     and low-pass, :mod:`facesynth.motion.cao`) and returns the mask of frames it changed."""
     ranges = frame_ranges(starts, ends, fps)
     total = ranges[-1][1]
@@ -101,7 +170,10 @@ def concatenate(path: np.ndarray, phones: list[str], starts: np.ndarray, ends: n
             continue
         w_left = weight_of(node_phone[path[t]])
         w_right = weight_of(node_phone[path[t + 1]])
-        out[a:b] = smooth_join(out[a:b], w_left, w_right, lam)
+        if method == "blend":
+            blend_join(out, a, join, b, w_right / (w_left + w_right))  # the heavier side moves less
+        else:
+            out[a:b] = smooth_join(out[a:b], w_left, w_right, lam)
         smoothed[a:b] = True
     if joins is not None:
         smoothed = joins(out, ranges)
@@ -110,7 +182,12 @@ def concatenate(path: np.ndarray, phones: list[str], starts: np.ndarray, ends: n
             continue
         left = out[a - 1] if a > 0 else rest
         right = out[b] if b < total else rest
-        out[a:b] = interpolate(left, right, b - a, interpolation)
+        if interpolation == "hermite":
+            v_left = out[a - 1] - out[a - 2] if a > 1 else np.zeros_like(rest)
+            v_right = out[b + 1] - out[b] if b + 1 < total else np.zeros_like(rest)
+            out[a:b] = hermite(left, right, v_left, v_right, b - a)
+        else:
+            out[a:b] = interpolate(left, right, b - a, interpolation)
         node[a:b] = -1
         source[a:b] = -1
     return Concatenated(out.astype(np.float32), node, source, step, smoothed)
@@ -124,6 +201,16 @@ def interpolate(left: np.ndarray, right: np.ndarray, n: int, kind: str) -> np.nd
     elif kind == "cubic":
         u = u * u * (3 - 2 * u)  # smoothstep: zero velocity at both ends
     return left[None] * (1 - u[:, None]) + right[None] * u[:, None]
+
+
+def hermite(left: np.ndarray, right: np.ndarray, v_left: np.ndarray, v_right: np.ndarray, n: int) -> np.ndarray:
+    """n frames (n, K) strictly between two boundary frames (K,), a cubic Hermite that leaves
+    ``left`` with velocity ``v_left`` and reaches ``right`` with ``v_right`` (per frame)."""
+    span = n + 1
+    u = (np.arange(1, n + 1) / span)[:, None]
+    h00, h10 = 2 * u ** 3 - 3 * u ** 2 + 1, u ** 3 - 2 * u ** 2 + u
+    h01, h11 = -2 * u ** 3 + 3 * u ** 2, u ** 3 - u ** 2
+    return h00 * left[None] + h10 * span * v_left[None] + h01 * right[None] + h11 * span * v_right[None]
 
 
 def downsample(frames: np.ndarray, fps_in: float, fps_out: float) -> np.ndarray:

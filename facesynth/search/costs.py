@@ -36,15 +36,19 @@ def transition_rows(rows: slice, dsc: np.ndarray, pgap: np.ndarray, vgap: np.nda
 
     Rule 1: pre(o_j) = o_i -> 0. Rule 2: viseme(o_i) = viseme(pre(o_j)) ->
     alpha2 DSC + PVC. Rule 3: otherwise alpha2 DSC + PVC + PNT. Rule 4: pre(o_j) = NIL ->
-    alpha1 PNT. PVC = alpha3 PGap + VGap (Eq. 7).
+    alpha1 PNT + PVC (the paper: alpha1 PNT alone, so a join into the first phone of a
+    captured phrase had no continuity check at all). PVC = alpha3 PGap + VGap (Eq. 7).
     """
     has_pre = pre >= 0
     pre_viseme = np.where(has_pre, node_viseme[np.maximum(pre, 0)], -1)
+    rule4 = np.float32(s.alpha3) * pgap[:, ~has_pre]  # rule 4: (alpha3 PGap + VGap) + alpha1 PNT
+    rule4 += vgap[:, ~has_pre]
+    rule4 += np.float32(s.alpha1 * s.pnt)
     t = np.float32(s.alpha2) * dsc
     t += np.float32(s.alpha3) * pgap
     t += vgap
     t += np.float32(s.pnt) * (node_viseme[rows, None] != pre_viseme[None, :])
-    t[:, ~has_pre] = np.float32(s.alpha1 * s.pnt)
+    t[:, ~has_pre] = rule4
     captured = np.nonzero(has_pre & (pre >= rows.start) & (pre < rows.stop))[0]
     t[pre[captured] - rows.start, captured] = 0.0
     return t.astype(np.float32, copy=False)
@@ -76,9 +80,12 @@ def transition_panel_rows(panels: np.ndarray, rows: slice, dsc: np.ndarray, pgap
     np.multiply(pgap, np.float32(s.alpha3), out=term)
     total += term
     total += vgap
+    rule4 = np.float32(s.alpha3) * pgap[:, ~has_pre]
+    rule4 += vgap[:, ~has_pre]
+    rule4 += np.float32(s.alpha1 * s.pnt)
     np.take(penalty, node_viseme[rows], axis=0, out=term)
     total += term
-    total[:, ~has_pre] = np.float32(s.alpha1 * s.pnt)
+    total[:, ~has_pre] = rule4
     captured = np.nonzero(has_pre & (pre >= rows.start) & (pre < rows.stop))[0]
     total[pre[captured] - rows.start, captured] = 0.0
     full = n // width

@@ -28,6 +28,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..config import SynthesizeSettings
+from ..motion.postprocess import end_slope_weights
 
 #: Pivots of the cheap lower and upper bounds (triangle inequality of the mixed norm).
 PIVOTS = 4
@@ -189,6 +190,37 @@ def pivot_distances(f: PairFeatures) -> tuple[np.ndarray, np.ndarray, np.ndarray
     return mixed_norms(f.last_pos, pos), mixed_norms(f.first_pos, pos), mixed_norms(f.last_vel, vel), mixed_norms(f.first_vel, vel)
 
 
+def boundary_states(coeffs: np.ndarray, nodes, model, fit_frames: int = 2) -> tuple[np.ndarray, ...]:
+    """First/last frame positions (mm) and velocities (mm/frame) in marker space, each (N, 3M)
+    float32, of the motion nodes ``nodes`` (a :class:`~facesynth.model.motiondb.Nodes`) over the
+    PCA coefficients ``coeffs`` ((F, K) mm) of ``model`` (a :class:`~facesynth.model.pca.PcaModel`).
+
+    The velocities are the slopes at the node's ends of a least-squares polynomial
+    (:func:`facesynth.motion.postprocess.end_slope_weights`: a Savitzky-Golay derivative
+    taken at the end point) through the node's first/last ``fit_frames`` frames (fewer in a
+    shorter node); ``fit_frames = 2`` is the one-frame finite difference. A single frame's
+    difference is mostly marker noise; a fit over several frames measures the motion.
+    """
+    first = coeffs[nodes.frame_start].astype(np.float64)
+    last = coeffs[nodes.frame_start + nodes.frame_count - 1].astype(np.float64)
+    to_markers = lambda c: model.reconstruct(c).reshape(len(c), -1)  # noqa: E731
+    first_pos, last_pos = to_markers(first), to_markers(last)
+    first_d = np.zeros_like(first)
+    last_d = np.zeros_like(last)
+    lengths = np.minimum(nodes.frame_count, max(fit_frames, 2))
+    for length in np.unique(lengths):
+        k = np.nonzero(lengths == length)[0]
+        w = end_slope_weights(int(length))  # (L,): slope at frame 0 of frames 0..L-1
+        head = nodes.frame_start[k][:, None] + np.arange(length)[None, :]
+        tail = (nodes.frame_start[k] + nodes.frame_count[k] - 1)[:, None] - np.arange(length)[None, :]
+        first_d[k] = np.einsum("l,nlk->nk", w, coeffs[head].astype(np.float64))
+        last_d[k] = -np.einsum("l,nlk->nk", w, coeffs[tail].astype(np.float64))  # time runs backwards there
+    zero = to_markers(np.zeros((1, coeffs.shape[1])))
+    first_vel = (to_markers(first_d) - zero).astype(np.float32)  # the linear part only: velocities
+    last_vel = (to_markers(last_d) - zero).astype(np.float32)
+    return first_pos.astype(np.float32), last_pos.astype(np.float32), first_vel, last_vel
+
+
 @dataclass
 class TransitionCosts:
     """TC(i, j) of Table I for settings ``s``, computed on demand (rows i = the node before).
@@ -248,12 +280,15 @@ class TransitionCosts:
         for a in range(0, len(rows), step):
             r = rows[a : a + step]
             dsc, pgap, vgap = self.f.terms(r, cols)
+            pre = self.pre[cols]
+            rule4 = np.float32(s.alpha3) * pgap[:, pre < 0]  # rule 4: (alpha3 PGap + VGap) + alpha1 PNT
+            rule4 += vgap[:, pre < 0]
+            rule4 += self.a1pnt
             t = np.float32(s.alpha2) * dsc
             t += np.float32(s.alpha3) * pgap
             t += vgap
             t += np.float32(s.pnt) * (self.f.viseme[r][:, None] != self.pre_viseme[cols][None, :])
-            pre = self.pre[cols]
-            t[:, pre < 0] = self.a1pnt
+            t[:, pre < 0] = rule4
             t[pre[None, :] == r[:, None]] = 0.0
             out[a : a + step] = t
         return out
@@ -297,15 +332,17 @@ class TransitionCosts:
         """Upper bounds of TC(r, k) (broadcast shapes), float64, from the pivots."""
         pg = np.min(self.row_lp[r] + self.col_fp[k], axis=-1)
         vg = np.min(self.row_lv[r] + self.col_fv[k], axis=-1)
-        tc = self.dsc_row_max[r] + self.s.alpha3 * pg.astype(np.float64) + vg + self.s.pnt * (self.f.viseme[r] != self.pre_viseme[k])
-        return np.where(self.pre[k] < 0, float(self.a1pnt), np.where(self.pre[k] == r, 0.0, tc))
+        pvc = self.s.alpha3 * pg.astype(np.float64) + vg
+        tc = self.dsc_row_max[r] + pvc + self.s.pnt * (self.f.viseme[r] != self.pre_viseme[k])
+        return np.where(self.pre[k] < 0, float(self.a1pnt) + pvc, np.where(self.pre[k] == r, 0.0, tc))
 
     def advantage(self, r: np.ndarray, j: np.ndarray) -> np.ndarray:
         """Upper bounds of max_k (TC(r, k) - TC(j, k)) over every node k, float64 (r, j broadcast):
         how much more a continuation from r can cost than the same continuation from j.
 
         k = suc(j) costs 0 from j (rule 1) and at most ``upper(r, k)`` from r; k without a
-        predecessor costs alpha1 PNT from both; k = suc(r) costs 0 from r; every other k
+        predecessor costs alpha1 PNT + PVC from both, so differs by at most alpha3 |LP_r - LP_j|
+        + |LV_r - LV_j| (within the general bound); k = suc(r) costs 0 from r; every other k
         differs by at most a2 max DSC(r, .) + alpha3 |LP_r - LP_j| + |LV_r - LV_j| + PNT [viseme
         differs], the distances bounded through the pivots.
         """
@@ -437,3 +474,73 @@ class OpenCLPairs:
         cl.enqueue_copy(self.queue, best, best_buf, is_blocking=False)
         cl.enqueue_copy(self.queue, evals, evals_buf, is_blocking=True)
         return best, int(evals.astype(np.int64).sum())
+
+
+class PairTerms:
+    """The weight-free pair terms of every ordered pair, kept for a search that tries many
+    weights on one database (``tune``): DSC, PGap and VGap as (N, N) float32 each (row i = the
+    node before), 12 N^2 bytes. :meth:`costs` assembles Table I for settings ``s`` from them
+    with :func:`facesynth.search.costs.transition_matrix`, the same float32 operations as
+    :meth:`TransitionCosts.block_numpy`, so the matrix is bit-identical to the on-demand one."""
+
+    def __init__(self, f: PairFeatures, like: "PairTerms | None" = None):
+        """The tables of ``f``; with ``like`` (the tables of features that differ from ``f`` in
+        the boundary velocities only) DSC and PGap are shared and only VGap is computed."""
+        n = len(f)
+        self.f = f
+        cols = np.arange(n)
+        step = max(1, (1 << 21) // max(n, 1))
+        if like is not None:
+            self.dsc, self.pgap = like.dsc, like.pgap
+            self.vgap = np.empty((n, n), np.float32)
+            lay = f.layout()
+            for a in range(0, n, step):
+                rows = np.arange(a, min(n, a + step))
+                self.vgap[rows] = _gap_lanes(lay.last_vel[rows], lay.first_vel[cols])
+            return
+        self.dsc, self.pgap, self.vgap = (np.empty((n, n), np.float32) for _ in range(3))
+        for a in range(0, n, step):
+            rows = np.arange(a, min(n, a + step))
+            self.dsc[rows], self.pgap[rows], self.vgap[rows] = f.terms(rows, cols)
+
+    @staticmethod
+    def bytes_for(n: int) -> int:
+        """Memory the three (n, n) float32 tables take."""
+        return 12 * n * n
+
+    def costs(self, s: SynthesizeSettings) -> "DenseCosts":
+        """TC of Table I for settings ``s`` as a :class:`DenseCosts`."""
+        from .costs import transition_matrix
+
+        return DenseCosts(transition_matrix(self.dsc, self.pgap, self.vgap, self.f.viseme, self.f.pre.astype(np.int64), s))
+
+
+@dataclass
+class DenseCosts:
+    """A full (N, N) float32 TC matrix usable where a :class:`TransitionCosts` is (NumPy only):
+    ``tc[i, j]``, :meth:`block`, :meth:`column`, :meth:`values`, :meth:`dense`."""
+
+    matrix: np.ndarray
+    opencl: bool = False
+
+    def __post_init__(self):
+        self.n = len(self.matrix)
+
+    def block(self, rows, cols) -> np.ndarray:
+        """TC[rows][:, cols], (r, c) float32."""
+        return self.matrix[np.ix_(np.asarray(rows, np.int64).ravel(), np.asarray(cols, np.int64).ravel())]
+
+    def column(self, j: int, rows: np.ndarray | None = None) -> np.ndarray:
+        """TC[:, j], or TC[rows, j]."""
+        return self.matrix[:, j] if rows is None else self.matrix[rows, j]
+
+    def values(self, i: int, js: np.ndarray) -> np.ndarray:
+        """TC[i, js]."""
+        return self.matrix[i, js]
+
+    def __getitem__(self, ij: tuple[int, int]) -> np.float32:
+        return self.matrix[int(ij[0]), int(ij[1])]
+
+    def dense(self) -> np.ndarray:
+        """The (N, N) matrix itself."""
+        return self.matrix

@@ -4,9 +4,9 @@ rule them out and no (N, N) matrix anywhere.
 
 Per step t, with ``phi_{t-1}`` exact on the live states (dead states are +inf):
 
-1. **Rules 1 and 4 for free.** A node without a captured predecessor costs alpha1 PNT from
-   every row (Table I rule 4), so its value is ``(min phi_{t-1} + alpha1 PNT) + obs``; a node
-   whose captured predecessor is live starts from ``phi_{t-1}(pre(j))`` (rule 1, cost 0).
+1. **Rule 1 for free.** A node whose captured predecessor is live starts from
+   ``phi_{t-1}(pre(j))`` (rule 1, cost 0). A node without a captured predecessor (rule 4:
+   alpha1 PNT + PVC) is searched like any other, its scan bounded below by alpha1 PNT.
 2. **Dominance before evaluation.** Every cost term is non-negative, so
    ``phi_t(j) >= min phi_{t-1} + obs_t(j)``; a state j is useless if some state r has
    ``phi_t(r) + TC(r, k) < phi_t(j) + TC(j, k)`` for every next node k, i.e. if
@@ -144,16 +144,14 @@ def dp_pruned(tc: TransitionCosts, obs: np.ndarray, keep_last: bool = False) -> 
         prev = phi[t - 1]
         order = live[np.argsort(prev[live], kind="stable")]
         m = prev[order[0]]
-        # Upper bounds: exact for rule 4, phi(pre) + obs for rule 1; lower bound m + obs.
+        # Upper bounds: phi(pre) + obs for rule 1 (none for rule 4); lower bound m + obs.
         upper = np.full(n, np.inf, np.float32)
-        rule4 = (m + tc.a1pnt) + obs[t]
-        upper[no_pre] = rule4[no_pre]
-        pre_val = prev[np.maximum(tc.pre, 0)]
+        pre_val = np.where(with_pre, prev[np.maximum(tc.pre, 0)], np.float32(np.inf)).astype(np.float32)
         upper[with_pre] = (pre_val + obs[t])[with_pre]
-        lower = m.astype(np.float64) + obs[t]
+        lower = m.astype(np.float64) + obs[t] + np.where(no_pre, float(tc.a1pnt), 0.0)
         rows_sorted, phi_sorted = order.astype(np.int32), prev[order]
         # Probes: a few columns evaluated first, so the references have tight values.
-        candidates = np.nonzero(with_pre)[0]
+        candidates = all_nodes
         if len(candidates) > 4 * PROBES:  # the few smallest lower bounds, without sorting all N
             candidates = candidates[np.argpartition(lower[candidates], 4 * PROBES - 1)[: 4 * PROBES]]
         probes = candidates[np.lexsort((candidates, upper[candidates], lower[candidates]))[:PROBES]]
@@ -163,12 +161,11 @@ def dp_pruned(tc: TransitionCosts, obs: np.ndarray, keep_last: bool = False) -> 
         phi[t, probes] = upper[probes]
         refs, ref_upper = _references(all_nodes, upper)
         killed = (np.zeros(n, bool) if last and keep_last else _dominated(tc, all_nodes, lower, refs, ref_upper, last))
-        cols = np.nonzero(~killed & with_pre)[0]
+        cols = np.nonzero(~killed)[0]
         cols = cols[np.isinf(phi[t, cols])]  # the probes are done
         stats.columns.append(len(cols) + len(probes))
         best, evals = minima(rows_sorted, phi_sorted, cols.astype(np.int32), pre_val[cols])
         stats.pairs += evals
-        phi[t, no_pre & ~killed] = rule4[no_pre & ~killed]
         phi[t, cols] = best + obs[t, cols]
         phi[t, probes[killed[probes]]] = np.inf
         live = np.nonzero(np.isfinite(phi[t]))[0]
@@ -208,14 +205,11 @@ def backward_pruned(tc: TransitionCosts, obs: np.ndarray, stop: int = 0) -> tupl
     minima = tc.device.column_minima if tc.opencl else (lambda *a, **k: _column_minima_numpy(tc, *a, **k))
     beta = obs[-1].copy()
     suc = tc._suc
-    no_pre = tc.pre < 0
     nodes = np.arange(n, dtype=np.int32)
     for t in range(t_count - 2, stop - 1, -1):
         order = np.argsort(beta, kind="stable")
-        # rule 1: k = suc(i) costs 0; rule 4: every k without predecessor costs alpha1 PNT
-        rule4 = (beta[no_pre].min() + tc.a1pnt) if no_pre.any() else np.float32(np.inf)
-        init = np.where(suc >= 0, beta[np.maximum(suc, 0)], np.float32(np.inf))
-        init = np.minimum(init, rule4).astype(np.float32)
+        # rule 1: k = suc(i) costs 0; every other k (rule 4 too) is scanned
+        init = np.where(suc >= 0, beta[np.maximum(suc, 0)], np.float32(np.inf)).astype(np.float32)
         best, evals = minima(order.astype(np.int32), beta[order], nodes, init, backward=True)
         stats.pairs += evals
         beta = best + obs[t]

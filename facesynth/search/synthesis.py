@@ -177,7 +177,7 @@ def render_path(db: MotionDatabase, utt: Utterance, path: np.ndarray, settings: 
         path, utt.phones, utt.starts, utt.ends, db.nodes.frame_start, db.nodes.frame_count, db.nodes.pre,
         db.nodes.phone, db.coeffs, rest, db.fps, half_window=settings.smoothing_half_window,
         lam=settings.smoothing_lambda, weight_of=table_iv_weight(settings), interpolation=settings.silence_interpolation,
-        joins=cao_joins(db, path, utt.phones) if settings.postprocess == "cao" else None,
+        joins=cao_joins(db, path, utt.phones) if settings.postprocess == "cao" else None, method=settings.join_smoothing,
     )
     markers = db.model.reconstruct(cat.coeffs)
     joins = sum(1 for t in range(len(path) - 1)

@@ -17,8 +17,10 @@ per-node features (:mod:`facesynth.search.pairs`); no (N, N) table is stored:
   differences are ``x_i + y_j`` (:func:`dsc_features`), so each node stores x, y and a scale.
   A node without predecessor has y = 0 and scale 0 (Table I rule 4 does not use DSC).
 * PGap, VGap (Eq. 8-9): summed per-marker distances between the last frame of o_i and the
-  first frame of o_j, of positions (mm) and velocities (mm/frame): each node stores its
-  first/last positions and velocities (:func:`boundary_states`).
+  first frame of o_j, of positions (mm) and velocities (mm/frame: the distance a marker
+  moves in one capture frame, 1/fps s): each node stores its first/last positions and
+  velocities (:func:`boundary_states`); the velocities are end-point slopes of a local
+  polynomial fit over ``build_db.boundary_fit_frames`` frames, not one-frame differences.
 
 The database therefore grows linearly with the number of nodes N.
 """
@@ -36,7 +38,7 @@ from ..limits import bound, require_memory
 from ..model.motiondb import MotionDatabase, Nodes
 from ..model.pca import PcaFrames, PcaModel
 from ..model.tables import Phones, Takes
-from ..search.pairs import PairFeatures
+from ..search.pairs import PairFeatures, boundary_states
 from ..phonemes import PAU, viseme
 
 
@@ -129,19 +131,6 @@ def dsc_matrix(coeffs: np.ndarray, nodes: Nodes, samples: int) -> np.ndarray:
     return (np.maximum(xx[:, None] + yy[None, :] + 2.0 * (x @ y.T), 0.0) * scale[None, :]).astype(np.float32)
 
 
-def boundary_states(coeffs: np.ndarray, nodes: Nodes, model: PcaModel) -> tuple[np.ndarray, ...]:
-    """First/last frame positions (mm) and velocities (mm/frame) in marker space, each (N, 3M) float32."""
-    first = coeffs[nodes.frame_start]
-    second = coeffs[nodes.frame_start + 1]
-    last = coeffs[nodes.frame_start + nodes.frame_count - 1]
-    before_last = coeffs[nodes.frame_start + nodes.frame_count - 2]
-    to_markers = lambda c: model.reconstruct(c).reshape(len(c), -1)  # noqa: E731
-    first_pos, last_pos = to_markers(first), to_markers(last)
-    first_vel = (to_markers(second) - first_pos).astype(np.float32)
-    last_vel = (last_pos - to_markers(before_last)).astype(np.float32)
-    return first_pos, last_pos, first_vel, last_vel
-
-
 def pair_gaps_numpy(first_pos, last_pos, first_vel, last_vel) -> tuple[np.ndarray, np.ndarray]:
     """PGap/VGap (Eq. 8-9) as schema-1 databases stored them, (N, N) float32 each, row i =
     predecessor (NumPy's pairwise sums). Kept as the reference the on-demand values are
@@ -175,7 +164,7 @@ def build(pca: PcaFrames, settings: BuildDbSettings, source: str = "") -> tuple[
     x, y, scale = dsc_features(coeffs, nodes, settings.dsc_samples)
     timings["dsc_s"] = time.perf_counter() - t0
     t0 = time.perf_counter()
-    states = boundary_states(coeffs, nodes, pca.model)
+    states = boundary_states(coeffs, nodes, pca.model, settings.boundary_fit_frames)
     timings["boundary_s"] = time.perf_counter() - t0
     features = PairFeatures(*(np.ascontiguousarray(a, np.float32) for a in states[:2]),
                             *(np.ascontiguousarray(a, np.float32) for a in states[2:]), x, y, scale,

@@ -26,7 +26,8 @@ def run(db_path: Path, corpus_path: Path, take: str, out: Path, normalize_settin
     corpus = Corpus.read(corpus_path, audio=False)
     corpus.check_markers(db.marker_names, corpus_path)
     i = corpus.take_index(take, corpus_path)
-    markers, rotations, translations = normalized_take(corpus.markers[corpus.takes.frames(i)], db, normalize_settings)
+    markers, rotations, translations = normalized_take(corpus.markers[corpus.takes.frames(i)], db, normalize_settings,
+                                                       corpus.rigid_markers)
     rel_r, rel_t = relative_to_take(rotations, translations, [slice(0, len(markers))])
     motion = Motion(downsample(markers.astype(np.float32), db.fps, output_fps), output_fps, markers.astype(np.float32),
                     db.fps, db.marker_names, db.reference, downsample(rel_r, db.fps, output_fps),

@@ -10,6 +10,10 @@ tier (``ingest.emotion_tiers``): then every phone has the emotion of the interva
 its centre (labels as in the manifest, aliases allowed; an empty interval keeps the
 manifest's). The per-phone emotion is what ``build-db`` gives each motion node and what
 ``evaluate`` asks the search for.
+
+Rigid markers: when a binding ``markers.csv`` with a ``rigid`` column lies next to the
+manifest (the sample corpus writes one), the markers it marks are recorded in the corpus
+(``rigid``) as the set ``normalize`` fits the head pose on.
 """
 
 from __future__ import annotations
@@ -24,6 +28,7 @@ from ..config import AlignSettings, IngestSettings, settings_json
 from ..errors import InputError
 from ..formats.audio import read_audio, resample
 from ..formats.labels import Segment, check_segments, read_phone_segments, read_textgrid
+from ..formats.mesh import read_rigid_markers
 from ..formats.mocap import read_mocap
 from ..phonemes import map_phones
 from ..progress import progress
@@ -192,9 +197,11 @@ def run(manifest: Path, out: Path, settings: IngestSettings, align_settings: Ali
     rate = audio[0][1]
     samples = [resample(s, r, rate) for s, r in audio]
     audio_start = np.cumsum([0] + [len(s) for s in samples[:-1]])
+    binding = manifest.parent / "markers.csv"
+    rigid = [n for n in read_rigid_markers(binding) if n in names] if binding.is_file() else []
     Corpus(takes, phones, names, markers, fps, np.concatenate(samples).astype(np.float32), audio_start,
-           np.array([len(s) for s in samples], np.int64), rate).write(
+           np.array([len(s) for s in samples], np.int64), rate, rigid).write(
         out, config=settings_json(settings), inputs=[manifest], overwrite=overwrite)
     missing = float(np.isnan(markers).any(axis=2).mean())
     return {"takes": len(takes), "frames": int(markers.shape[0]), "markers": len(names), "phones": len(phones),
-            "fps": fps, "missing_fraction": missing}
+            "fps": fps, "missing_fraction": missing, "rigid_markers": rigid}

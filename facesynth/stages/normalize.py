@@ -3,6 +3,13 @@
 Short gaps are filled; every frame is rigidly aligned onto a neutral closed-mouth reference
 frame (:mod:`facesynth.motion.rigid`); the per-frame rigid transform is kept, so
 ``captured = R_i @ normalized + t_i`` for every marker.
+
+Where the paper translates by one marker and rotates on all of them, translation and rotation
+are fitted together by weighted Procrustes on the rigid markers only (those that move with
+the head, not with speech: ``normalize.rigid_markers``, else the set the corpus marks rigid,
+else every marker with a warning), each weighted by the inverse of its residual, so neither
+one noisy marker nor jaw opening leaks into the head pose. The origin marker only places the
+reference: it is at 0 in the reference frame.
 """
 
 from __future__ import annotations
@@ -16,7 +23,7 @@ from ..errors import InputError
 from ..model.corpus import Corpus
 from ..model.frames import HeadFrames, NormalizedFrames
 from ..model.tables import Phones, Takes
-from ..motion.rigid import fill_gaps, rigid_align
+from ..motion.rigid import fill_gaps, head_pose, rigid_indices
 
 
 def choose_origin(reference_frames: np.ndarray, names: list[str], settings: NormalizeSettings) -> int:
@@ -57,20 +64,23 @@ def reference_frame(markers: np.ndarray, takes: Takes, phones: Phones, fps: floa
 
 
 def build_reference(candidates: np.ndarray, origin: int, rigid: np.ndarray) -> np.ndarray:
-    """Generalized Procrustes mean of the candidate frames (origin marker at 0)."""
-    reference = candidates[0] - candidates[0, origin]
+    """Generalized Procrustes mean (M, 3) mm of the candidate frames (C, M, 3), fitted on the
+    rigid markers, shifted so the origin marker is at 0."""
+    reference = candidates[0]
     if np.isnan(reference).any():
-        reference = np.where(np.isnan(reference), np.nanmean(candidates - candidates[:, origin : origin + 1], axis=0), reference)
+        reference = np.where(np.isnan(reference), np.nanmean(candidates, axis=0), reference)
     for _ in range(3):
-        aligned, _, _ = rigid_align(candidates, reference, origin, rigid)
+        aligned, _, _, _ = head_pose(candidates, reference, rigid)
         reference = np.nanmean(aligned, axis=0)
-    return reference
+    return reference - reference[origin]
 
 
 def normalize(markers: np.ndarray, names: list[str], takes: Takes, phones: Phones, fps: float,
-              settings: NormalizeSettings):
-    """Fill gaps, then remove head motion. Returns (normalized, rotations, translations,
-    reference, origin index, list of unfilled gaps (take, marker, start_s, length_s))."""
+              settings: NormalizeSettings, corpus_rigid=()):
+    """Fill gaps, then remove head motion, fitted on the rigid markers (the settings', else
+    ``corpus_rigid``, else all). Returns (normalized, rotations, translations, reference,
+    origin index, list of unfilled gaps (take, marker, start_s, length_s), rigid marker
+    indices, their weights, a warning or "")."""
     filled = markers.astype(np.float64).copy()
     long_gaps = []
     for i in range(len(takes)):
@@ -79,13 +89,12 @@ def normalize(markers: np.ndarray, names: list[str], takes: Takes, phones: Phone
             track, runs = fill_gaps(filled[sl, m], settings.max_gap_frames)
             filled[sl, m] = track
             long_gaps += [(takes.name[i], names[m], s / fps, n / fps) for s, n in runs]
-    if settings.rigid_markers:
-        unknown = [n for n in settings.rigid_markers if n not in names]
-        if unknown:
-            raise InputError(f"normalize.rigid_markers names unknown markers {unknown}; use names from the corpus.")
-        rigid = np.array([names.index(n) for n in settings.rigid_markers])
-    else:
-        rigid = np.arange(len(names))
+    unknown = [n for n in settings.rigid_markers if n not in names]
+    if unknown:
+        raise InputError(f"normalize.rigid_markers names unknown markers {unknown}; use names from the corpus.")
+    rigid, warning = rigid_indices(names, settings.rigid_markers, [n for n in corpus_rigid if n in names])
+    if len(rigid) < 3:
+        raise InputError(f"normalize.rigid_markers names {len(rigid)} markers; a head pose needs at least 3 that do not lie on a line.")
     candidates = reference_frame(filled, takes, phones, fps, settings)
     origin = choose_origin(candidates, names, settings)
     if np.isnan(filled[:, origin]).any():
@@ -93,18 +102,20 @@ def normalize(markers: np.ndarray, names: list[str], takes: Takes, phones: Phone
         take = next(takes.name[i] for i in range(len(takes)) if takes.frames(i).start <= bad < takes.frames(i).stop)
         raise InputError(f"take {take!r}: the origin marker {names[origin]!r} has a gap too long to fill; choose another with --set normalize.origin_marker=NAME.")
     reference = build_reference(candidates, origin, rigid)
-    normalized, rotations, translations = rigid_align(filled, reference, origin, rigid)
-    return normalized.astype(np.float32), rotations, translations, reference, origin, long_gaps
+    normalized, rotations, translations, weights = head_pose(filled, reference, rigid)
+    return normalized.astype(np.float32), rotations, translations, reference, origin, long_gaps, rigid, weights, warning
 
 
 def run(corpus_path: Path, out: Path, settings: NormalizeSettings, overwrite: bool = False) -> dict:
     """Normalize ``corpus_path`` and write ``out`` (a ``normalized`` artifact); returns a summary."""
     corpus = Corpus.read(corpus_path, audio=False)
     names = corpus.marker_names
-    normalized, rotations, translations, reference, origin, long_gaps = normalize(
-        corpus.markers, names, corpus.takes, corpus.phones, corpus.fps, settings)
+    normalized, rotations, translations, reference, origin, long_gaps, rigid, weights, warning = normalize(
+        corpus.markers, names, corpus.takes, corpus.phones, corpus.fps, settings, corpus.rigid_markers)
     frames = HeadFrames(normalized, reference.astype(np.float32), rotations.astype(np.float32),
                         translations.astype(np.float32), corpus.fps, names[origin])
     NormalizedFrames(corpus.takes, corpus.phones, names, frames).write(
         out, config=settings_json(settings), inputs=[corpus_path], overwrite=overwrite)
-    return {"frames": len(normalized), "origin_marker": names[origin], "long_gaps": long_gaps}
+    return {"frames": len(normalized), "origin_marker": names[origin], "long_gaps": long_gaps,
+            "rigid_markers": [names[k] for k in rigid], "rigid_weights": [float(w) for w in weights],
+            "warnings": [warning] if warning else []}

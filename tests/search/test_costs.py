@@ -22,7 +22,8 @@ def test_transition_rules_of_table_i(s):
     assert tc[0, 1] == 0.0 and tc[1, 2] == 0.0                         # rule 1: captured
     assert tc[3, 1] == pytest.approx(0.5 * 2 + 3 * 1 + 0.25)           # rule 2: same viseme as pre(o_1) = /p/
     assert tc[2, 1] == pytest.approx(0.5 * 2 + 3 * 1 + 0.25 + 10)      # rule 3: /aa/ vs /p/ adds PNT
-    assert tc[:, 3].tolist() == [20.0] * 4 and tc[:, 0].tolist() == [20.0] * 4  # rule 4: alpha1 * PNT
+    # rule 4: alpha1 * PNT + PVC (no DSC, no viseme penalty)
+    assert tc[:, 3].tolist() == [23.25] * 4 and tc[:, 0].tolist() == [23.25] * 4
 
 
 def test_observation_emotion_and_blocking(s):
@@ -69,7 +70,8 @@ def test_matrices_of_the_real_database_match_the_schema_1_reference(tiny_db, tin
     pca = PcaFrames.read(tiny_artifacts["pca"])
     nodes = build_nodes(pca.takes, pca.phones, pca.frames.fps)
     dsc = dsc_matrix(pca.coefficients, nodes, config.settings("build_db").dsc_samples)
-    pgap, vgap = pair_gaps_numpy(*(a.astype(np.float32) for a in boundary_states(pca.coefficients, nodes, pca.model)))
+    states = boundary_states(pca.coefficients, nodes, pca.model, config.settings("build_db").boundary_fit_frames)
+    pgap, vgap = pair_gaps_numpy(*(a.astype(np.float32) for a in states))
     ref = transition_matrix(dsc, pgap, vgap, db.nodes.viseme, db.nodes.pre, s)
     tc, panels = db.transition(s), db.transition_panels(s).panels
     # The documented bound (facesynth.search.pairs): (terms + 2) 2^-24 of each sum.

@@ -26,7 +26,7 @@ def test_table_i_by_hand(s):
                      np.array([1, 1, 2]), np.array([-1, 0, 1]))
     tc = TransitionCosts(f, s).dense()
     assert tc[0, 1] == 0.0 and tc[1, 2] == 0.0                       # rule 1
-    assert tc[:, 0].tolist() == [20.0] * 3                           # rule 4: alpha1 PNT
+    assert tc[:, 0].tolist() == [20.0, 20.0, 20.0 + 3 * 6]           # rule 4: alpha1 PNT + alpha3 PGap + VGap
     # TC(2, 2): DSC = 2 * (2 + 1)^2 = 18, PGap = 6, VGap = 0; viseme(2) = 2 != viseme(pre(2)) = 1
     assert tc[2, 2] == pytest.approx(0.5 * 18 + 3 * 6 + 0 + 10)
     # TC(0, 2): DSC = 2 * (1 + 1)^2 = 8, PGap 0; viseme(0) = 1 = viseme(pre(2)): rule 2, no PNT
@@ -58,3 +58,21 @@ def test_bounds_hold_on_every_pair(s):
     pgap_vgap = d - s.pnt * (tc.f.viseme[:, None] != tc.pre_viseme[None, :])
     has = (tc.pre[None, :] >= 0) & (tc.pre[None, :] != np.arange(n)[:, None])
     assert (s.alpha3 * lp + lv <= pgap_vgap + 1e-3)[has].all()
+
+
+def test_pair_tables_give_the_on_demand_costs_bit_for_bit(s):
+    from facesynth.search.pairs import DenseCosts, PairTerms
+
+    f = random_features(97, 3, markers=5, dims=6)
+    terms = PairTerms(f)
+    dense = terms.costs(s)
+    assert isinstance(dense, DenseCosts)
+    reference = TransitionCosts(f, s).dense()
+    assert np.array_equal(dense.dense().view(np.uint32), reference.view(np.uint32))
+    # other velocities: DSC and PGap shared, VGap recomputed, still bit-identical
+    g = PairFeatures(f.first_pos, f.last_pos, f.first_vel * 2, f.last_vel[::-1].copy(), f.dsc_out, f.dsc_in, f.dsc_scale,
+                     f.viseme, f.pre)
+    again = PairTerms(g, like=terms)
+    assert again.dsc is terms.dsc and again.pgap is terms.pgap
+    assert np.array_equal(again.costs(s).dense().view(np.uint32), TransitionCosts(g, s).dense().view(np.uint32))
+    assert dense[3, 4] == reference[3, 4] and np.array_equal(dense.block([1, 2], [5, 0]), reference[np.ix_([1, 2], [5, 0])])

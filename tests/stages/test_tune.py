@@ -1,4 +1,4 @@
-"""``facesynth tune``: the search vector, the Nelder-Mead search on the tiny corpus and its report."""
+"""``facesynth tune``: the search vector, the search on the tiny corpus and its report."""
 
 import csv
 import dataclasses
@@ -17,7 +17,7 @@ BUDGET = ("tune.max_evaluations=6", "tune.starts=1")
 
 def _settings(*overrides):
     c = Config.load(None, BUDGET + overrides)
-    return c.settings("tune"), c.settings("synthesize"), c.settings("evaluate"), c.settings("normalize")
+    return c.settings("tune"), c.settings("synthesize"), c.settings("build_db"), c.settings("normalize")
 
 
 def _splits(tiny_corpus):
@@ -30,20 +30,20 @@ def _splits(tiny_corpus):
 
 def test_vector_is_logs_and_a_logit():
     s = dataclasses.replace(Config.load().settings("synthesize"), alpha1=1.0, alpha2=np.e, alpha3=0.5,
-                            alpha4=0.75, alpha5=np.e**2, alpha6=4.0)
+                            alpha4=0.75, alpha5=np.e**2, alpha6=4.0, pnt=np.e**3)
     v = tune.to_vector(s)
-    # log 1, log e, log 0.5, logit 0.75 = log(0.75 / 0.25) = log 3, log e^2, log 4
-    np.testing.assert_allclose(v, [0.0, 1.0, np.log(0.5), np.log(3.0), 2.0, np.log(4.0)], rtol=0, atol=1e-12)
+    # log 1, log e, log 0.5, logit 0.75 = log(0.75 / 0.25) = log 3, log e^2, log 4, log e^3
+    np.testing.assert_allclose(v, [0.0, 1.0, np.log(0.5), np.log(3.0), 2.0, np.log(4.0), 3.0], rtol=0, atol=1e-12)
 
 
-def test_round_trip_keeps_every_alpha_and_the_other_settings():
+def test_round_trip_keeps_every_weight_and_the_other_settings():
     s = dataclasses.replace(Config.load().settings("synthesize"), alpha1=1.75, alpha2=0.00123, alpha3=0.856,
                             alpha4=0.552, alpha5=9.37, alpha6=1.54, pnt=123.0, search="greedy")
     back = tune.from_vector(tune.to_vector(s), s)
-    for name in tune.ALPHAS:
+    for name in tune.WEIGHTS:
         assert getattr(back, name) == pytest.approx(getattr(s, name), rel=1e-12), name
-    # only the alphas move: PNT sets their scale and is not tuned
-    assert dataclasses.replace(back, **{n: getattr(s, n) for n in tune.ALPHAS}) == s
+    # only the weights move (PNT among them: it balances the penalties against PGap, VGap, DSC)
+    assert dataclasses.replace(back, **{n: getattr(s, n) for n in tune.WEIGHTS}) == s
 
 
 @pytest.mark.parametrize("logit", [-800.0, -40.0, -5.0, 0.0, 5.0, 37.0, 40.0])
@@ -59,9 +59,9 @@ def test_alpha4_stays_inside_zero_one_for_any_search_vector(logit):
 def test_a_moved_vector_moves_the_alphas_as_logs():
     s = Config.load().settings("synthesize")
     v = tune.to_vector(s)
-    moved = tune.from_vector(v + np.log(2.0) * np.array([1, 0, -1, 0, 0, 1]), s)
+    moved = tune.from_vector(v + np.log(2.0) * np.array([1, 0, -1, 0, 0, 1, 1]), s)
     assert moved.alpha1 == pytest.approx(2 * s.alpha1) and moved.alpha3 == pytest.approx(s.alpha3 / 2)
-    assert moved.alpha6 == pytest.approx(2 * s.alpha6)
+    assert moved.alpha6 == pytest.approx(2 * s.alpha6) and moved.pnt == pytest.approx(2 * s.pnt)
     assert (moved.alpha2, moved.alpha4, moved.alpha5) == pytest.approx((s.alpha2, s.alpha4, s.alpha5))
 
 
@@ -74,7 +74,8 @@ def tuned(tiny_db, tiny_artifacts, tmp_path_factory):
     settings = _settings()
     calls = []
     out = tmp_path_factory.mktemp("tune") / "tuned.toml"
-    summary = tune.run(tiny_db, tiny_artifacts["corpus"], out, *settings, progress_fn=lambda n, e: calls.append((n, e)))
+    summary = tune.run(tiny_db, tiny_artifacts["corpus"], out, *settings,
+                       progress_fn=lambda n, total, e, best: calls.append((n, total, e, best)))
     return summary, calls, out
 
 
@@ -82,96 +83,145 @@ def test_tuned_validation_error_is_never_above_the_start(tuned):
     summary, calls, _ = tuned
     assert summary["validation_sentences"] == 4 and summary["test_sentences"] == 4
     assert 0 < summary["validation_err_after"] <= summary["validation_err_before"]
-    # the first evaluation is the current weights; the reported best is the least of every evaluation
-    assert calls[0][1] == summary["validation_err_before"]
-    assert summary["validation_err_after"] == min(e for _, e in calls)
-    assert [n for n, _ in calls] == list(range(1, summary["evaluations"] + 1))
-    assert summary["evaluations"] <= 6  # tune.max_evaluations, shared by the starts
+    # the first evaluation is the start; the reported best is the least of every evaluation
+    assert calls[0][2] == summary["validation_err_before"]
+    assert summary["validation_err_after"] == min(c[2] for c in calls)
+    assert [c[0] for c in calls] == list(range(1, summary["evaluations"] + 1))
+    # one overall count: the weight budget plus the fit lengths and windows, the best so far with it
+    budget = 6 + len(tune.FIT_LENGTHS) - 1 + len(tune.WINDOWS) - 1
+    assert {c[1] for c in calls} == {budget} and summary["evaluations"] <= budget
+    assert [c[3] for c in calls] == list(np.minimum.accumulate([c[2] for c in calls]))
 
 
 def test_written_toml_loads_back_and_reproduces_the_weights(tuned):
     summary, _, out = tuned
     text = out.read_text(encoding="utf-8")
     assert f"{summary['validation_err_before']:.4f} -> {summary['validation_err_after']:.4f}" in text
-    assert f"{summary['test_err_before']:.4f} -> {summary['test_err_after']:.4f}" in text
+    assert f"{summary['test_err_before']:.4f} [" in text and f"-> {summary['test_err_after']:.4f} [" in text
     loaded = Config.load(out)
-    assert {k: getattr(loaded.settings("synthesize"), k) for k in tune.ALPHAS} == summary["alphas"]  # exact: repr
-    # only the alphas are written: every other setting, PNT included, stays at its default
+    assert {k: getattr(loaded.settings("synthesize"), k) for k in tune.WEIGHTS} == summary["weights"]  # exact: repr
+    assert loaded.settings("synthesize").smoothing_half_window == summary["smoothing_half_window"]
+    assert loaded.settings("build_db").boundary_fit_frames == summary["boundary_fit_frames"]
+    # only those are written: every other setting stays at its default
     default = Config.load().settings("synthesize")
-    assert dataclasses.replace(loaded.settings("synthesize"), **{k: getattr(default, k) for k in tune.ALPHAS}) == default
+    moved = {k: getattr(default, k) for k in tune.WEIGHTS + ("smoothing_half_window",)}
+    assert dataclasses.replace(loaded.settings("synthesize"), **moved) == default
 
 
 def test_test_error_is_the_error_on_the_test_takes(tuned, tiny_db, tiny_artifacts):
     summary, _, out = tuned
-    _, synth, ev, norm = _settings()
+    _, synth, build, norm = _settings()
+    ev = Config.load().settings("evaluate")
     test_ev = dataclasses.replace(ev, split="test")
     before, _ = evaluation.evaluate(tiny_db, tiny_artifacts["corpus"], test_ev, synth, norm, with_baseline=False)
-    after, _ = evaluation.evaluate(tiny_db, tiny_artifacts["corpus"], test_ev, Config.load(out).settings("synthesize"),
-                                   norm, with_baseline=False)
     assert summary["test_err_before"] == pytest.approx(before["dp"]["overall"]["err_mm2"], rel=1e-9)
-    assert summary["test_err_after"] == pytest.approx(after["dp"]["overall"]["err_mm2"], rel=1e-9)
+    lo, hi = summary["test_ci_before"]
+    assert lo <= summary["test_err_before"] <= hi
+    if summary["boundary_fit_frames"] == build.boundary_fit_frames:  # the database's features are the tuned ones
+        after, _ = evaluation.evaluate(tiny_db, tiny_artifacts["corpus"], test_ev, Config.load(out).settings("synthesize"),
+                                       norm, with_baseline=False)
+        assert summary["test_err_after"] == pytest.approx(after["dp"]["overall"]["err_mm2"], rel=1e-9)
     val_ev = dataclasses.replace(ev, split="val")
     on_val, _ = evaluation.evaluate(tiny_db, tiny_artifacts["corpus"], val_ev, synth, norm, with_baseline=False)
     assert summary["validation_err_before"] == pytest.approx(on_val["dp"]["overall"]["err_mm2"], rel=1e-9)
     assert summary["test_err_before"] != pytest.approx(summary["validation_err_before"])  # two different sets
 
 
+def _spy_synthesize(monkeypatch, seen):
+    real = tune.synthesize
+
+    def spy(db, utt, constraints, settings, tc=None):
+        seen.append((utt, settings))
+        return real(db, utt, constraints, settings, tc=tc)
+
+    monkeypatch.setattr(tune, "synthesize", spy)
+
+
 def test_the_search_sees_validation_takes_only(tiny_db, tiny_artifacts, tiny_corpus, monkeypatch):
     splits = _splits(tiny_corpus)
+    t, synth, build, norm = _settings()
     seen = []
-    real = evaluation.evaluate
+    _spy_synthesize(monkeypatch, seen)
+    real_heldout = tune.heldout
+    takes_of = {}
 
-    def spy(*args, sentences=None, **kwargs):
-        seen.append({s.take for s in sentences})
-        return real(*args, sentences=sentences, **kwargs)
+    def heldout(corpus, db, split, settings):
+        out = real_heldout(corpus, db, split, settings)
+        for s in out:
+            takes_of[id(s.utterance)] = (split, s.take)
+        return out
 
-    monkeypatch.setattr(tune, "evaluate", spy)
-    summary = tune.tune(tiny_db, tiny_artifacts["corpus"], *_settings(), progress_fn=None)
+    monkeypatch.setattr(tune, "heldout", heldout)
+    summary = tune.tune(tiny_db, tiny_artifacts["corpus"], t, synth, build, norm, progress_fn=None)
     assert splits["val"] and splits["test"] and not splits["val"] & splits["test"]
-    # every search evaluation, then the test error before and after: the test takes only twice, at the end
-    assert seen[:-2] == [splits["val"]] * summary["evaluations"]
-    assert seen[-2:] == [splits["test"]] * 2
+    splits_seen = [takes_of[id(utt)][0] for utt, _ in seen]
+    # every searched path is of a validation take until the end, then the test takes: before and after
+    first_test = splits_seen.index("test")
+    assert set(splits_seen[:first_test]) == {"val"} and set(splits_seen[first_test:]) == {"test"}
+    assert {takes_of[id(utt)][1] for utt, _ in seen[:first_test]} == splits["val"]
+    assert {takes_of[id(utt)][1] for utt, _ in seen[first_test:]} == splits["test"]
+    assert summary["evaluations"] >= 1
 
 
 def test_same_seed_same_result_with_random_starts(tiny_db, tiny_artifacts, monkeypatch):
-    real = evaluation.evaluate
-
     def run(seed):
-        tried = []
-
-        def spy(db_path, corpus, settings, synth, *args, **kwargs):
-            tried.append(tuple(getattr(synth, k) for k in tune.ALPHAS))
-            return real(db_path, corpus, settings, synth, *args, **kwargs)
-
-        monkeypatch.setattr(tune, "evaluate", spy)
+        seen = []
+        _spy_synthesize(monkeypatch, seen)
         summary = tune.tune(tiny_db, tiny_artifacts["corpus"],
                             *_settings("tune.starts=2", "tune.max_evaluations=8", f"tune.seed={seed}"))
         summary.pop("seconds")
+        tried = []
+        for _, s in seen:
+            w = tuple(getattr(s, k) for k in tune.WEIGHTS)
+            if not tried or tried[-1] != w:
+                tried.append(w)
         return summary, tried
 
     (first, tried_first), (again, tried_again), (_, tried_other) = run(3), run(3), run(4)
     assert first == again and tried_first == tried_again
-    assert first["evaluations"] <= 8
     # the first start is the current weights whatever the seed; the second is drawn from the seed
-    current = tuple(getattr(_settings()[1], k) for k in tune.ALPHAS)
+    current = tuple(getattr(_settings()[1], k) for k in tune.WEIGHTS)
     assert tried_first[0] == tried_other[0] == pytest.approx(current, rel=1e-12)
     assert set(tried_first) != set(tried_other)
 
 
-@pytest.mark.parametrize("name", tune.ALPHAS)
+def test_nothing_better_writes_the_start_with_a_warning(tiny_db, tiny_artifacts, tmp_path, monkeypatch):
+    """A search that finds nothing better (here: every candidate but the start scores worse)
+    writes the start settings and says so."""
+    real = tune.Objective.errors
+    calls = {"n": 0}
+
+    def worse(self, s, fit, sentences, tag):
+        out = real(self, s, fit, sentences, tag)
+        calls["n"] += 1
+        return out if (tag == "test" or calls["n"] == 1) else out + 100.0
+
+    monkeypatch.setattr(tune.Objective, "errors", worse)
+    out = tmp_path / "tuned.toml"
+    t, synth, build, norm = _settings()
+    summary = tune.run(tiny_db, tiny_artifacts["corpus"], out, t, synth, build, norm)
+    assert not summary["improved"] and summary["warnings"]
+    assert summary["validation_err_after"] == summary["validation_err_before"]
+    loaded = Config.load(out)
+    assert {k: getattr(loaded.settings("synthesize"), k) for k in tune.WEIGHTS} == pytest.approx(
+        {k: getattr(synth, k) for k in tune.WEIGHTS}, rel=1e-12)
+    assert "# warning: no setting tried beat the start" in out.read_text(encoding="utf-8")
+
+
+@pytest.mark.parametrize("name", tune.WEIGHTS)
 def test_non_positive_alphas_are_refused_by_name(tiny_db, tiny_artifacts, name):
-    t, synth, ev, norm = _settings()
+    t, synth, build, norm = _settings()
     zero = dataclasses.replace(synth, **{name: 0.0})
     with pytest.raises(InputError, match=rf"synthesize\.{name} must be positive to tune it \(got 0\.0\)"):
-        tune.tune(tiny_db, tiny_artifacts["corpus"], t, zero, ev, norm)
+        tune.tune(tiny_db, tiny_artifacts["corpus"], t, zero, build, norm)
 
 
 def test_refusal_comes_before_any_file_is_read(tmp_path):
-    t, synth, ev, norm = _settings()
+    t, synth, build, norm = _settings()
     negative = dataclasses.replace(synth, alpha2=-1.0)
     # the database does not exist: the settings are checked first
     with pytest.raises(InputError, match=r"synthesize\.alpha2 must be positive"):
-        tune.tune(tmp_path / "missing.h5", tmp_path / "missing_corpus.h5", t, negative, ev, norm)
+        tune.tune(tmp_path / "missing.h5", tmp_path / "missing_corpus.h5", t, negative, build, norm)
 
 
 def test_existing_output_is_kept_without_overwrite(tiny_db, tiny_artifacts, tmp_path):
