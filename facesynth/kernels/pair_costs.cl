@@ -82,7 +82,8 @@ inline float pair_tc_below(const int i, const int j, const float limit, const fl
                            __global const int *vis, __global const int *pre, __global const int *pre_vis,
                            const float a2, const float a3, const float pnt, const float a1pnt)
 {
-    const float pen = vis[i] != pre_vis[j] ? pnt : 0.0f;
+    const bool rule4 = pre[j] < 0;  // (alpha3 PGap + VGap) + alpha1 PNT, no DSC
+    const float pen = rule4 ? a1pnt : (vis[i] != pre_vis[j] ? pnt : 0.0f);
     const size_t stride = (size_t)3 * MQ * 8;
     __global const float8 *l = (__global const float8 *)(last_pos + (size_t)i * stride);
     __global const float8 *f = (__global const float8 *)(first_pos + (size_t)j * stride);
@@ -106,6 +107,11 @@ inline float pair_tc_below(const int i, const int j, const float limit, const fl
     }
     const float vg = lanes(acc);
     if ((pen + a3 * pg + vg) * 0.9999f - slack >= limit) return INFINITY;
+    if (rule4) {  // the same float32 operations as pair_tc
+        float r4 = a3 * pg;
+        r4 = r4 + vg;
+        return r4 + a1pnt;
+    }
     __global const float8 *xi = (__global const float8 *)(x + (size_t)i * DIMS8 * 8);
     __global const float8 *yj = (__global const float8 *)(y + (size_t)j * DIMS8 * 8);
     acc = (float8)(0.0f);
