@@ -111,7 +111,7 @@ class NormalizeSettings:
     """``[normalize]``: origin and rigid markers, gap filling, the reference frame of Eq. 1-2."""
 
     origin_marker: str = setting("paper III ('a specific marker'); empty: the marker nearest the centroid")
-    rigid_markers: tuple[str, ...] = setting("Eq. 1-2; empty: all markers, as in the paper")
+    rigid_markers: tuple[str, ...] = setting("Eq. 1-2; empty: the corpus's rigid markers, else all markers as in the paper")
     max_gap_frames: int = setting("not in the paper: gap filling", unit="frames", ge=0)
     reference_take: str = setting("Eq. 1-2 reference frame; empty: leading silences of neutral takes")
     reference_frame: int = setting("Eq. 1-2 reference frame; -1: automatic", unit="frame index", ge=-1)
@@ -185,6 +185,8 @@ class SynthesizeSettings:
     weight_intermediate: float = setting("Table IV (1.0)", gt=0)
     high_phones: tuple[str, ...] = setting("Table IV", choices=_SPOKEN_PHONES)
     low_phones: tuple[str, ...] = setting("Table IV", choices=_SPOKEN_PHONES)
+    pinned_phones: tuple[str, ...] = setting("not in the paper: phones the join blend leaves unchanged against "
+                                             "an unpinned neighbour (lip closures stay closed)", choices=_SPOKEN_PHONES)
     output_fps: float = setting("paper VII-B (30 frames/s)", unit="frames/s", gt=0, le=1000)
     silence_interpolation: str = setting("paper VII-B (linear); hermite: velocities matched on both sides",
                                          choices=("linear", "cubic", "cosine", "hermite"))

@@ -142,9 +142,11 @@ def blend_join(out: np.ndarray, a: int, join: int, b: int, share_left: float, fi
 def concatenate(path: np.ndarray, phones: list[str], starts: np.ndarray, ends: np.ndarray,
                 node_start: np.ndarray, node_count: np.ndarray, node_pre: np.ndarray, node_phone: list[str],
                 coeffs: np.ndarray, rest: np.ndarray, fps: float, *, half_window: int, lam: float,
-                weight_of, interpolation: str = "linear", joins=None, method: str = "blend") -> Concatenated:
+                weight_of, interpolation: str = "linear", joins=None, method: str = "blend",
+                pinned: frozenset[str] = frozenset()) -> Concatenated:
     """The whole VII-B chain up to (not including) Eq. 11. ``weight_of(phone)`` gives Table IV's
-    factor. ``method``: "blend" (:func:`blend_join` over ``half_window`` frames each side,
+    factor. With the blend, a phone of ``pinned`` keeps its frames at a join with an unpinned
+    phone: the other side takes the whole correction (a captured lip closure stays closed). ``method``: "blend" (:func:`blend_join` over ``half_window`` frames each side,
     at most the phone's own frames) or "eq16" (:func:`smooth_join` over 2 ``half_window``
     frames, free-ended). ``joins(out, ranges)``, if given, replaces both (e.g. Cao's blending
     and low-pass, :mod:`facesynth.motion.cao`) and returns the mask of frames it changed."""
@@ -171,7 +173,11 @@ def concatenate(path: np.ndarray, phones: list[str], starts: np.ndarray, ends: n
         w_left = weight_of(node_phone[path[t]])
         w_right = weight_of(node_phone[path[t + 1]])
         if method == "blend":
-            blend_join(out, a, join, b, w_right / (w_left + w_right))  # the heavier side moves less
+            share_left = w_right / (w_left + w_right)  # the heavier side moves less
+            left_pinned, right_pinned = node_phone[path[t]] in pinned, node_phone[path[t + 1]] in pinned
+            if left_pinned != right_pinned:
+                share_left = 0.0 if left_pinned else 1.0
+            blend_join(out, a, join, b, share_left)
         else:
             out[a:b] = smooth_join(out[a:b], w_left, w_right, lam)
         smoothed[a:b] = True

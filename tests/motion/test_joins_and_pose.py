@@ -76,3 +76,23 @@ def test_rigid_set_falls_back_to_every_marker_with_a_warning():
     assert idx.tolist() == [0, 2, 3] and warning == ""
     idx, warning = rigid_indices(names, (), [])
     assert idx.tolist() == [0, 1, 2, 3] and "rigid" in warning
+
+
+def _two_phone_join(pinned):
+    """Two 30-frame phones joined by non-captured nodes with a jump: /m/ (pinned by default) then /aa/."""
+    from facesynth.motion.postprocess import concatenate
+
+    coeffs = np.concatenate([np.linspace(0.0, 0.3, 30), 5.0 + np.linspace(0.0, 0.9, 30)])[:, None]
+    return concatenate(np.array([0, 1]), ["m", "aa"], np.array([0.0, 0.25]), np.array([0.25, 0.5]),
+                       np.array([0, 30]), np.array([30, 30]), np.array([-1, -1]), ["m", "aa"], coeffs,
+                       np.zeros(1), 120.0, half_window=12, lam=1.0, weight_of=lambda p: 2.0 if p == "m" else 1.0,
+                       method="blend", pinned=pinned).coeffs[:, 0]
+
+
+def test_a_pinned_phone_keeps_its_frames_and_the_other_side_closes_the_gap():
+    free, pinned = _two_phone_join(frozenset()), _two_phone_join(frozenset({"m"}))
+    captured_m = np.linspace(0.0, 0.3, 30)
+    assert np.abs(free[:30] - captured_m).max() > 0.5  # Table IV's share moves the /m/ a third of the gap
+    assert np.array_equal(pinned[:30], captured_m.astype(np.float32))  # pinned: untouched
+    assert np.abs(np.diff(pinned, 2)).max() < 0.5 * np.abs(np.diff(free, 2)).max() + 0.2  # still no pop
+    assert abs(np.diff(pinned)[29] - np.diff(pinned)[28]) < 0.05
