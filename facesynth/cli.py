@@ -833,9 +833,11 @@ def batch(ctx: Context, script: Path, db_path: Path, output: Path, outputs: str 
 @click.option("--heldout", type=EXISTING, required=True, help="The corpus.h5 holding the held-out takes.")
 @click.option("--truth", type=PATH, default=None,
               help="The corpus folder with clean ground truth (groundtruth/, markers.csv): adds errors against it and openfacefx.")
+@click.option("--trajectory", type=EXISTING, default=None,
+              help="A trajectory model trained on DB (facesynth train-trajectory): adds the trajectory method.")
 @click.option("-o", "--output", type=PATH, required=True, help="Report folder (metrics.json, table.md, index.html, plots).")
 @stage
-def evaluate(ctx: Context, db: Path, heldout: Path, truth: Path | None, output: Path):
+def evaluate(ctx: Context, db: Path, heldout: Path, truth: Path | None, trajectory: Path | None, output: Path):
     """Synthesize every held-out sentence and compare it with its capture and baselines.
 
     The measures: Eq. 12-13 of the paper against the capture and (with --truth) the clean
@@ -849,7 +851,8 @@ def evaluate(ctx: Context, db: Path, heldout: Path, truth: Path | None, output: 
     from .stages import evaluate as stage
 
     s = stage.run(db, heldout, output, ctx.config.settings("evaluate"), ctx.config.settings("synthesize"),
-                  ctx.config.settings("normalize"), ctx.overwrite, truth=truth)
+                  ctx.config.settings("normalize"), ctx.overwrite, truth=truth, trajectory=trajectory,
+                  trajectory_settings=ctx.config.settings("trajectory"))
     for method, m in s.items():
         f = m.get("figures", {})
         clean = f" (clean truth {f['rms_clean_mm']['value']:.3f} mm)" if f.get("rms_clean_mm", {}).get("value") is not None else ""

@@ -13,7 +13,8 @@ the counts; a model is a few tens of kilobytes.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+import json
+from dataclasses import dataclass, field
 from functools import cached_property
 from pathlib import Path
 
@@ -44,6 +45,7 @@ class TrajectoryModel:
     sampling : one of :data:`SAMPLINGS`; min_tokens : tokens a pair needed; variance_floor :
         the floor's fraction of each weight's overall variance; fit_rms : RMS per marker (mm) of
         the training frames' NNLS reconstruction with the joint key-shapes.
+    inputs : the file's provenance records ({path, kind, sha256}), as read (empty for a new model).
     """
 
     marker_names: list[str]
@@ -67,6 +69,7 @@ class TrajectoryModel:
     min_tokens: int
     variance_floor: float
     fit_rms: float
+    inputs: list[dict] = field(default_factory=list)
 
     KIND = "trajectory"
 
@@ -99,7 +102,7 @@ class TrajectoryModel:
                        read(f, "samples"), read_strings(f, "pair_phone"), read_strings(f, "pair_emotion"),
                        read(f, "pair_means"), read(f, "pair_variances"), read(f, "pair_tokens"),
                        read(f, "pair_samples"), float(attr(f, "fps")), sampling, int(attr(f, "min_tokens")),
-                       float(attr(f, "variance_floor")), float(attr(f, "fit_rms")))
+                       float(attr(f, "variance_floor")), float(attr(f, "fit_rms")), _records(f))
 
     def write(self, out: Path, *, config: str, inputs, overwrite: bool = False) -> None:
         """Write a ``trajectory`` artifact to ``out``."""
@@ -124,3 +127,12 @@ class TrajectoryModel:
                                  ).attrs["units"] = "weight"
             g.create_dataset("pair_tokens", data=np.asarray(self.pair_tokens, np.int64))
             g.create_dataset("pair_samples", data=np.asarray(self.pair_samples, np.int64))
+
+
+def _records(f) -> list[dict]:
+    """The ``inputs`` records of an open artifact; [] when they cannot be parsed."""
+    try:
+        records = json.loads(str(attr(f, "inputs")))
+    except ValueError:
+        return []
+    return [r for r in records if isinstance(r, dict)] if isinstance(records, list) else []
