@@ -80,13 +80,16 @@ class TrajectoryModel:
 
     @cached_property
     def deltas(self) -> np.ndarray:
-        """(K, 3M) float64 mm: each key-shape minus the reference, flattened (the back-projection basis)."""
-        return (self.keyshapes.astype(np.float64) - self.reference.astype(np.float64)).reshape(self.count, -1)
+        """(K, 3M) float32 mm: each key-shape minus the reference, flattened (the back-projection basis;
+        float32 like the stored poses, whose precision it keeps)."""
+        return (self.keyshapes.astype(np.float64) - self.reference.astype(np.float64)).reshape(self.count, -1
+                                                                                              ).astype(np.float32)
 
     def markers(self, weights: np.ndarray) -> np.ndarray:
         """Marker frames (T, M, 3) float32 mm of key-shape weights (T, K)."""
-        flat = np.asarray(weights, np.float64) @ self.deltas
-        return (flat.reshape(len(flat), -1, 3) + self.reference.astype(np.float64)).astype(np.float32)
+        flat = np.asarray(weights, np.float32) @ self.deltas
+        flat += self.reference.reshape(-1)
+        return flat.reshape(len(flat), -1, 3)
 
     @classmethod
     def read(cls, path: Path) -> "TrajectoryModel":

@@ -183,41 +183,44 @@ def frame_targets(model, phones: list[str], emotions: list[str], starts: np.ndar
             raise InputError(f"{where}: phone {t + 1} /{p}/ at {a:.3f} s has no duration (end {b:.3f} s); "
                              "give every phone an end after its start.")
     ranges = frame_ranges(np.asarray(starts, float), np.asarray(ends, float), fps)
-    total = ranges[-1][1]
     index = {p: i for i, p in enumerate(model.phones)}
     pair_index = {(p, e): i for i, (p, e) in enumerate(zip(model.pair_phone, model.pair_emotion))}
-    k = model.count
-    means, variances = np.zeros((total, k)), np.ones((total, k))
-    cache: dict[tuple[str, str], tuple[np.ndarray, np.ndarray, str]] = {}
+    # each phone -> a row of the stacked table: the pairs, then the phones, then pooled visemes
+    row_of: dict[tuple[str, str], int] = {}
+    pooled_rows: list[tuple[np.ndarray, np.ndarray]] = []
+    labels: list[str] = [f"{p}|{e}" for p, e in zip(model.pair_phone, model.pair_emotion)] + list(model.phones)
     fallbacks: dict[str, str] = {}
-    used = []
-    for (a, b), p, e in zip(ranges, phones, emotions):
+    rows = []
+    for p, e in zip(phones, emotions):
         key = (p, e)
-        if key not in cache:
+        if key not in row_of:
             if key in pair_index:
-                i = pair_index[key]
-                cache[key] = (model.pair_means[i].astype(np.float64), model.pair_variances[i].astype(np.float64), f"{p}|{e}")
+                row_of[key] = pair_index[key]
             elif p in index:
-                i = index[p]
-                cache[key] = (model.means[i].astype(np.float64), model.variances[i].astype(np.float64), p)
+                row_of[key] = len(model.pair_phone) + index[p]
             else:
                 group = [q for q in VISEME_GROUPS[viseme(p)] if q in index]
                 if not group:
                     raise InputError(f"{where}: phone /{p}/ is not in the trajectory model and neither is any phone of "
                                      f"its viseme class ({' '.join(VISEME_GROUPS[viseme(p)])}); train the model on "
                                      "takes that have one of them.")
-                rows = [index[q] for q in group]
-                mean, var = pooled(model.means[rows].astype(np.float64), model.variances[rows].astype(np.float64),
-                                   model.samples[rows])
-                cache[key] = (mean, var, "viseme:" + " ".join(group))
                 if p not in fallbacks:
                     fallbacks[p] = " ".join(group)
                     log.warning("%s: phone /%s/ is not in the trajectory model; using the pooled Gaussian of its "
                                 "viseme class (%s).", where, p, " ".join(group))
-        mean, var, label = cache[key]
-        means[a:b], variances[a:b] = mean, var
-        used.append(label)
-    return FrameTargets(means, variances, ranges, used, fallbacks)
+                members = [index[q] for q in group]
+                pooled_rows.append(pooled(model.means[members].astype(np.float64),
+                                          model.variances[members].astype(np.float64), model.samples[members]))
+                labels.append("viseme:" + " ".join(group))
+                row_of[key] = len(labels) - 1
+        rows.append(row_of[key])
+    means = np.concatenate([model.pair_means, model.means] + [m[None] for m, _ in pooled_rows]).astype(np.float64)
+    variances = np.concatenate([model.pair_variances, model.variances] + [v[None] for _, v in pooled_rows]
+                               ).astype(np.float64)
+    rows = np.asarray(rows, np.int64)
+    per_frame = np.repeat(rows, [b - a for a, b in ranges])
+    used = [labels[r] for r in rows]
+    return FrameTargets(means[per_frame], variances[per_frame], ranges, used, fallbacks)
 
 
 def duration_weights(ranges: list[tuple[int, int]], total: int, normalize: bool = True) -> np.ndarray:
