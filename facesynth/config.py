@@ -227,6 +227,8 @@ class RenderSettings:
     height: int = setting("not in the paper: video size", unit="px", ge=16)
     fps: float = setting("paper VII-B (30 frames/s)", unit="frames/s", gt=0, le=1000)
     view: str = setting("not in the paper: what is drawn", choices=("shaded", "markers", "side-by-side"))
+    labels: tuple[str, ...] = setting("not in the paper: the side-by-side view's labels, left (the animation) and "
+                                      "right (--compare)", min_items=2, max_items=2)
     fov_deg: float = setting("not in the paper: vertical field of view", unit="degrees", gt=0, lt=180)
     yaw_deg: float = setting("not in the paper: camera turned toward the subject's left (+x); 0 is frontal",
                              unit="degrees", ge=-90, le=90)
