@@ -303,9 +303,15 @@ def synthesize_path(model, phones: list[str], emotions: list[str], starts: np.nd
     steps = np.zeros(total)
     if total > 1:
         steps[1:] = lam * ((x[1:] - x[:-1]) ** 2).sum(1)
-    data = np.array([per_frame[a:b].sum() for a, b in targets.ranges])
-    smooth = np.array([steps[a:b].sum() for a, b in targets.ranges])
+    data, smooth = per_phone(per_frame, targets.ranges), per_phone(steps, targets.ranges)
     return Path(x, fps, targets, data, smooth, float(per_frame.sum() + steps.sum()), lam)
+
+
+def per_phone(values: np.ndarray, ranges: list[tuple[int, int]]) -> np.ndarray:
+    """(U,) the sums of per-frame ``values`` (T,) over each phone's frames [a, b) (0 for none)."""
+    cumulative = np.concatenate([[0.0], np.cumsum(values)])
+    edges = np.asarray(ranges, np.int64).reshape(-1, 2)
+    return cumulative[edges[:, 1]] - cumulative[edges[:, 0]]
 
 
 def resample(weights: np.ndarray, fps_in: float, n_out: int, fps_out: float) -> np.ndarray:
