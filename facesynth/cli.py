@@ -581,7 +581,7 @@ def keyshapes(ctx: Context, db: Path, method, count, sheet, output: Path):
 @click.option("-o", "--output", type=PATH, required=True, help="Output traj.h5.")
 @stage
 def train_trajectory(ctx: Context, db: Path, keyshapes_path: Path, output: Path):
-    """Train the compact key-shape trajectory model (Huang et al. §5.4) on the database's training takes.
+    """Train the compact key-shape trajectory model (Huang, Chen & Chuang §5.4) on the training takes.
 
     Per phone, and per (phone, emotion) with enough tokens, the mean and diagonal covariance of
     the frames' non-negative weights over every emotion's key-shapes, joined; the model file
