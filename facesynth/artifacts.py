@@ -40,6 +40,7 @@ SCHEMAS: dict[str, int] = {
     "headmotion": 1,
     "curves": 1,
     "keyshapes": 1,
+    "trajectory": 1,
 }
 
 #: Which stage makes each kind (used in messages that say what to do).
@@ -55,6 +56,7 @@ PRODUCERS: dict[str, str] = {
     "headmotion": "facesynth head-motion",
     "curves": "facesynth solve",
     "keyshapes": "facesynth keyshapes",
+    "trajectory": "facesynth train-trajectory",
 }
 
 STR = h5py.string_dtype("utf-8")

@@ -40,7 +40,7 @@ class PipelineGroup(click.Group):
     order of the README and docs/pipeline.md), then any others alphabetically."""
 
     order = ("sample-corpus", "align", "ingest", "normalize", "pca", "build-db", "db", "check", "prune", "isomap",
-             "synthesize", "suggest", "expression", "head-motion", "deform", "keyshapes", "solve", "retarget", "rig-mesh",
+             "synthesize", "suggest", "expression", "head-motion", "deform", "keyshapes", "train-trajectory", "solve", "retarget", "rig-mesh",
              "render", "export", "player", "batch", "capture", "evaluate", "tune", "devices")
 
     def list_commands(self, ctx):
@@ -105,16 +105,17 @@ READS: dict[str, tuple[str, ...]] = {
     "normalize": ("normalize",),
     "pca": ("pca",),
     "build-db": ("build_db",),
-    "synthesize": ("synthesize", "ingest", "align"),
+    "synthesize": ("synthesize", "ingest", "align", "trajectory"),
     "suggest": ("synthesize", "ingest"),
     "deform": ("deform",),
     "keyshapes": ("keyshapes",),
+    "train-trajectory": ("trajectory",),
     "solve": ("solve",),
     "retarget": ("retarget", "keyshapes"),
     "rig-mesh": (),
     "render": ("render",),
     "batch": ("batch", "synthesize", "ingest", "align", "deform", "render"),
-    "evaluate": ("evaluate", "synthesize", "normalize"),
+    "evaluate": ("evaluate", "synthesize", "normalize", "trajectory"),
     "capture": ("normalize", "synthesize"),
     "tune": ("tune", "synthesize", "build_db", "normalize"),
     "isomap build": ("isomap",),
@@ -411,7 +412,10 @@ def build_db(ctx: Context, pca_path: Path, output: Path):
 
 
 @main.command()
-@click.argument("db", type=EXISTING)
+@click.argument("db", metavar="DB|MODEL", type=EXISTING)
+@click.option("--method", type=click.Choice(("dp", "trajectory")), default="dp", show_default=True,
+              help="dp: search the motion database (DB); trajectory: the compact key-shape model (MODEL, from "
+                   "facesynth train-trajectory; Huang et al. Eq. 6-7).")
 @click.option("--phonemes", type=EXISTING, default=None, help="The utterance's phone timing (TextGrid or .lab).")
 @click.option("--audio", type=EXISTING, default=None, help="Speech to align on the fly (with --text).")
 @click.option("--text", default=None, help="What --audio says.")
@@ -422,9 +426,13 @@ def build_db(ctx: Context, pca_path: Path, output: Path):
               help="Head motion from `facesynth head-motion` to put on the output instead of the source takes'.")
 @click.option("-o", "--output", type=PATH, required=True, help="Output motion.h5.")
 @stage
-def synthesize(ctx: Context, db: Path, phonemes, audio, text, emotions, constraints, search, head_motion_path,
+def synthesize(ctx: Context, db: Path, method, phonemes, audio, text, emotions, constraints, search, head_motion_path,
                output: Path):
     """Synthesize expressive marker motion for a new utterance (paper VI, Algorithm 1).
+
+    With --method trajectory the first argument is a trajectory model (facesynth
+    train-trajectory) and the motion is the smooth path of Huang et al. Eq. 6-7 through the
+    phones' Gaussians, back-projected from key-shape weights to markers.
 
     \b
     Example:
@@ -435,6 +443,26 @@ def synthesize(ctx: Context, db: Path, phonemes, audio, text, emotions, constrai
     import dataclasses
 
     from .stages import synthesize as stage
+
+    if method == "trajectory":
+        if constraints is not None:
+            raise UsageError("--constraints pick motion nodes, and the trajectory method has none; drop --constraints "
+                             "or use --method dp.")
+        if search is not None:
+            raise UsageError("--search chooses how the motion database is searched; the trajectory method does not "
+                             "search; drop --search or use --method dp.")
+        s = stage.run_trajectory(db, output, ctx.config.settings("trajectory"),
+                                 ctx.config.settings("synthesize").output_fps, ctx.config.settings("ingest"),
+                                 ctx.config.settings("align"), phones_path=phonemes, emotions_path=emotions, audio=audio,
+                                 text=text, head_motion_path=head_motion_path, overwrite=ctx.overwrite)
+        for phone, group in s["fallbacks"].items():
+            ctx.say(f"warning: the trajectory model has no Gaussian of /{phone}/; it uses the pooled Gaussian of its "
+                    f"viseme class ({group}).")
+        ctx.detail(f"phases: read model {s['load_s']:.4f} s, solve and back-projection {s['solve_s']:.4f} s, "
+                   f"write {s['write_s']:.3f} s; lambda {s['lambda']:g} per frame")
+        ctx.say(f"synthesized {s['phones']} phones, {s['frames']} frames by the trajectory method, "
+                f"Eq. 6 energy {s['energy']:.2f} -> {output}")
+        return
 
     settings = ctx.config.settings("synthesize")
     if search:
@@ -548,6 +576,32 @@ def keyshapes(ctx: Context, db: Path, method, count, sheet, output: Path):
     s = stage.run(db, output, settings, sheet, ctx.overwrite)
     per = ", ".join(f"{e} {v['count']} ({v['rms_mm']:.2f} mm)" for e, v in s["emotions"].items())
     ctx.say(f"key-shapes by {s['method']}: {per} -> {output}" + (f" (sheet {sheet})" if sheet else ""))
+
+
+@main.command("train-trajectory")
+@click.argument("db", type=EXISTING)
+@click.option("--keyshapes", "keyshapes_path", type=EXISTING, required=True, help="Key-shapes (facesynth keyshapes).")
+@click.option("-o", "--output", type=PATH, required=True, help="Output traj.h5.")
+@stage
+def train_trajectory(ctx: Context, db: Path, keyshapes_path: Path, output: Path):
+    """Train the compact key-shape trajectory model (Huang, Chen & Chuang §5.4) on the training takes.
+
+    Per phone, and per (phone, emotion) with enough tokens, the mean and diagonal covariance of
+    the frames' non-negative weights over every emotion's key-shapes, joined; the model file
+    alone then drives `facesynth synthesize --method trajectory`.
+
+    \b
+    Example:
+      facesynth keyshapes db.h5 --method pca --count 7 -o keyshapes.h5
+      facesynth train-trajectory db.h5 --keyshapes keyshapes.h5 -o traj.h5
+      facesynth synthesize --method trajectory traj.h5 --phonemes corpus/labels/sad_s017.TextGrid -o traj_motion.h5
+    """
+    from .stages import train_trajectory as stage
+
+    s = stage.run(db, keyshapes_path, output, ctx.config.settings("trajectory"), ctx.overwrite)
+    ctx.detail(f"{s['samples']} training frames, weights and Gaussians in {s['train_s']:.2f} s")
+    ctx.say(f"trajectory model: {s['phones']} phones and {s['pairs']} (phone, emotion) Gaussians over {s['keyshapes']} "
+            f"key-shapes (fit RMS {s['fit_rms_mm']:.2f} mm per marker), {s['bytes']} bytes -> {output}")
 
 
 @main.command()
@@ -782,9 +836,11 @@ def batch(ctx: Context, script: Path, db_path: Path, output: Path, outputs: str 
 @click.option("--heldout", type=EXISTING, required=True, help="The corpus.h5 holding the held-out takes.")
 @click.option("--truth", type=PATH, default=None,
               help="The corpus folder with clean ground truth (groundtruth/, markers.csv): adds errors against it and openfacefx.")
+@click.option("--trajectory", type=EXISTING, default=None,
+              help="A trajectory model trained on DB (facesynth train-trajectory): adds the trajectory method.")
 @click.option("-o", "--output", type=PATH, required=True, help="Report folder (metrics.json, table.md, index.html, plots).")
 @stage
-def evaluate(ctx: Context, db: Path, heldout: Path, truth: Path | None, output: Path):
+def evaluate(ctx: Context, db: Path, heldout: Path, truth: Path | None, trajectory: Path | None, output: Path):
     """Synthesize every held-out sentence and compare it with its capture and baselines.
 
     The measures: Eq. 12-13 of the paper against the capture and (with --truth) the clean
@@ -798,7 +854,8 @@ def evaluate(ctx: Context, db: Path, heldout: Path, truth: Path | None, output: 
     from .stages import evaluate as stage
 
     s = stage.run(db, heldout, output, ctx.config.settings("evaluate"), ctx.config.settings("synthesize"),
-                  ctx.config.settings("normalize"), ctx.overwrite, truth=truth)
+                  ctx.config.settings("normalize"), ctx.overwrite, truth=truth, trajectory=trajectory,
+                  trajectory_settings=ctx.config.settings("trajectory"))
     for method, m in s.items():
         f = m.get("figures", {})
         clean = f" (clean truth {f['rms_clean_mm']['value']:.3f} mm)" if f.get("rms_clean_mm", {}).get("value") is not None else ""

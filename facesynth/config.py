@@ -236,6 +236,8 @@ class RenderSettings:
     height: int = setting("not in the paper: video size", unit="px", ge=16)
     fps: float = setting("paper VII-B (30 frames/s)", unit="frames/s", gt=0, le=1000)
     view: str = setting("not in the paper: what is drawn", choices=("shaded", "markers", "side-by-side"))
+    labels: tuple[str, ...] = setting("not in the paper: the side-by-side view's labels, left (the animation) and "
+                                      "right (--compare)", min_items=2, max_items=2)
     fov_deg: float = setting("not in the paper: vertical field of view", unit="degrees", gt=0, lt=180)
     yaw_deg: float = setting("not in the paper: camera turned toward the subject's left (+x); 0 is frontal",
                              unit="degrees", ge=-90, le=90)
@@ -333,6 +335,25 @@ class KeyshapesSettings:
 
 
 @dataclass(frozen=True)
+class TrajectorySettings:
+    """``[trajectory]``: the compact key-shape trajectory model (Huang et al. §5.4): per phone (and per
+    (phone, emotion)) Gaussians of key-shape weights, and the smooth path of Eq. 6-7 through them."""
+
+    frames: str = setting("Huang §5.4 (span: every frame tagged with the phone); centre: each token's centre frame",
+                          choices=("span", "centre"))
+    min_tokens: int = setting("not in the paper: training tokens a (phone, emotion) model needs, else the phone's "
+                              "model is used", unit="tokens", ge=1)
+    variance_floor: float = setting("not in the paper: each variance is at least this fraction of that key-shape "
+                                    "weight's variance over all training frames", gt=0, le=1)
+    smoothness: float = setting("Huang §5.4, Eq. 6 (lambda = 10), per frame at smoothness_fps", ge=0)
+    smoothness_fps: float = setting("Huang §5.4 (18000 frames of 10 minutes of video: 30 frames/s); at another solve "
+                                    "rate lambda is scaled by (fps / smoothness_fps)^2", unit="frames/s", gt=0, le=1000)
+    fps: float = setting("not in the paper: the rate Eq. 7 is solved at; 0: the model's capture rate",
+                         unit="frames/s", ge=0, le=1000)
+    duration_normalization: bool = setting("Huang §5.4, Eq. 6 (D: each frame's data term times 1 - D_ph / T)")
+
+
+@dataclass(frozen=True)
 class SolveSettings:
     """``[solve]``: the direct facial solve, rig weights in [0, 1] per frame (a production facial solve)."""
 
@@ -380,6 +401,7 @@ SECTIONS: dict[str, type] = {
     "tune": TuneSettings,
     "deform": DeformSettings,
     "keyshapes": KeyshapesSettings,
+    "trajectory": TrajectorySettings,
     "solve": SolveSettings,
     "retarget": RetargetSettings,
     "render": RenderSettings,

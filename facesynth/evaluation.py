@@ -25,6 +25,10 @@ Methods, each given the same phone timing (and emotions):
 * ``dominance`` / ``dominance_emotion``: a Cohen-Massaro coarticulation model
   (:mod:`facesynth.motion.dominance`) fitted on the database's training takes, per phone /
   per (phone, emotion);
+* ``trajectory``: Huang et al.'s compact key-shape trajectory model (:mod:`facesynth.motion.trajectory`),
+  when a model trained on the same database is given (``facesynth evaluate --trajectory``): the
+  smooth path of Eq. 6-7 through per-(phone, emotion) Gaussians of key-shape weights, scored at
+  phone boundaries like the other non-search methods;
 * ``openfacefx``: the external text-driven system (:mod:`facesynth.baselines`), its ARKit
   curves through the corpus's face rig to the markers (only with the ``truth`` folder, which
   holds ``markers.csv``, and when openfacefx is installed; otherwise the report says why not);
@@ -65,13 +69,14 @@ import numpy as np
 
 from .baselines import fit_rigid, openfacefx_arkit, openfacefx_missing, rig_markers
 from .bootstrap import interval, paired_difference, resamples
-from .config import EvaluateSettings, NormalizeSettings, SynthesizeSettings
+from .config import EvaluateSettings, NormalizeSettings, SynthesizeSettings, TrajectorySettings
 from .errors import InputError
 from .model.corpus import Corpus
 from .model.motiondb import MotionDatabase
 from .motion.dominance import DominanceModel, emotion_labels, fit_dominance, training_sentences
 from .motion.postprocess import frame_ranges
 from .motion.rigid import fill_gaps, head_pose, rigid_indices
+from .motion.trajectory import synthesize_motion
 from .opencl import use_opencl
 from .phonemes import PAU, viseme
 from .progress import progress
@@ -509,9 +514,11 @@ def _needed(key: str) -> str:
 
 
 def method_outputs(db: MotionDatabase, s: Sentence, synth: SynthesizeSettings, tc, baselines: tuple[str, ...],
-                   dominance: dict, settings: EvaluateSettings, rig=None, vertices=None) -> tuple[dict, dict]:
+                   dominance: dict, settings: EvaluateSettings, rig=None, vertices=None,
+                   trajectory: tuple | None = None) -> tuple[dict, dict]:
     """Every method's markers (T, M, 3) mm at the capture rate for one sentence, and per method
-    its extra fields (search methods: path, joins)."""
+    its extra fields (search methods: path, joins). ``trajectory``: (TrajectoryModel,
+    TrajectorySettings) to add the trajectory method."""
     outputs, extra = {}, {}
     for method in ("dp",) + tuple(b for b in baselines if b == "greedy"):
         res = synthesize(db, s.utterance, {}, synth if method == "dp" else dataclasses.replace(synth, search="greedy"), tc=tc)
@@ -527,13 +534,17 @@ def method_outputs(db: MotionDatabase, s: Sentence, synth: SynthesizeSettings, t
             outputs[method] = baseline(db, s.utterance, by_emotion=(method == "baseline_emotion"))
         elif method == "openfacefx":
             outputs[method] = openfacefx_baseline(db, s.utterance, rig, vertices, s.to_reference)
+    if trajectory is not None:
+        motion, _ = synthesize_motion(trajectory[0], s.utterance, trajectory[1], synth.output_fps, s.take)
+        outputs["trajectory"] = motion.markers_capture
     return outputs, extra
 
 
 def evaluate(db_path: Path, corpus: Path, settings: EvaluateSettings, synth: SynthesizeSettings,
              normalize_settings: NormalizeSettings, sentences: list[Sentence] | None = None,
              db: MotionDatabase | None = None, tc=None, with_baseline: bool = True,
-             truth: Path | None = None) -> tuple[dict, list[dict]]:
+             truth: Path | None = None, trajectory=None,
+             trajectory_settings: TrajectorySettings | None = None) -> tuple[dict, list[dict]]:
     """Returns (metrics per method, per-sentence records with the curves to plot).
 
     ``with_baseline=False`` evaluates the DP alone against the noisy capture (tune leaves the
@@ -541,7 +552,9 @@ def evaluate(db_path: Path, corpus: Path, settings: EvaluateSettings, synth: Syn
     ground truth (:class:`TruthFolder`), which adds the clean-truth figures, the ``openfacefx``
     baseline and the ``capture`` / ``clean`` references. Metrics per method: ``overall``,
     ``per_emotion``, ``per_sentence`` as before, and ``figures`` (with intervals); under
-    ``"_figures"`` the table's meta (labels, skipped baselines and why)."""
+    ``"_figures"`` the table's meta (labels, skipped baselines and why). ``trajectory``: a
+    TrajectoryModel trained on ``db`` (with ``trajectory_settings``) adds the ``trajectory`` method
+    (only with the baselines)."""
     db = db or MotionDatabase.read(db_path)
     for name in tuple(settings.lip_markers) + (settings.plot_marker,):
         if name not in db.marker_names:
@@ -564,6 +577,13 @@ def evaluate(db_path: Path, corpus: Path, settings: EvaluateSettings, synth: Syn
             baselines += ("openfacefx",)
         else:
             skipped["openfacefx"] = missing
+        if trajectory is not None:
+            if trajectory.fps != db.fps or list(trajectory.marker_names) != list(db.marker_names):
+                raise InputError("evaluate: the trajectory model's markers or capture rate are not the database's; "
+                                 "train it on this database with `facesynth train-trajectory`.")
+            baselines += ("trajectory",)
+        else:
+            skipped["trajectory"] = "give a model trained on this database with --trajectory (facesynth train-trajectory)"
     references = (REFERENCES if with_clean else ("capture",)) if with_baseline else ()
     per_method: dict[str, list[dict]] = {m: [] for m in ("dp",) + baselines + references}
     dominance = {by: fit_dominance(training_sentences(db, by_emotion=by), db.fps, settings.dominance_iterations)
@@ -572,7 +592,8 @@ def evaluate(db_path: Path, corpus: Path, settings: EvaluateSettings, synth: Syn
     k = db.marker_names.index(settings.plot_marker)
     records = []
     for s in progress(sentences, "evaluate"):
-        outputs, extra = method_outputs(db, s, synth, tc, baselines, dominance, settings, rig, vertices)
+        outputs, extra = method_outputs(db, s, synth, tc, baselines, dominance, settings, rig, vertices,
+                                        (trajectory, trajectory_settings) if "trajectory" in baselines else None)
         if "capture" in references:
             outputs["capture"] = s.truth
         if "clean" in references:

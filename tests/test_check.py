@@ -27,7 +27,8 @@ DOC = Path(__file__).resolve().parents[1] / "docs" / "file-format.md"
 @pytest.fixture(scope="module")
 def written(tiny_corpus, tiny_artifacts, tiny_db, held_out_take, config, tmp_path_factory) -> dict[str, Path]:
     """One file of every kind (and variant), each written by its stage from the tiny corpus."""
-    from facesynth.stages import capture, deform, expression, head_motion, isomap, keyshapes, prune, retarget, rig_mesh, solve, synthesize
+    from facesynth.stages import (capture, deform, expression, head_motion, isomap, keyshapes, prune, retarget, rig_mesh,
+                                  solve, synthesize, train_trajectory)
 
     d = tmp_path_factory.mktemp("check")
     out = {**tiny_artifacts, "motiondb": tiny_db, "pruned": d / "pruned.h5", "isomap": d / "isomap.h5",
@@ -54,6 +55,10 @@ def written(tiny_corpus, tiny_artifacts, tiny_db, held_out_take, config, tmp_pat
     retarget.run(out["motion"], out["keyshapes"], out["retargeted"], dataclasses.replace(config.settings("retarget"), blend="linear"),
                  ks, mesh_out=d / "retargeted_anim.h5")
     rig_mesh.run(out["curves"], out["rig_mesh"])
+    out["trajectory"], out["trajectory_motion"] = d / "traj.h5", d / "traj_motion.h5"
+    train_trajectory.run(tiny_db, out["keyshapes"], out["trajectory"], config.settings("trajectory"))
+    synthesize.run_trajectory(out["trajectory"], out["trajectory_motion"], config.settings("trajectory"), 30.0,
+                              config.settings("ingest"), config.settings("align"), phones_path=tg)
     return out
 
 
@@ -99,7 +104,7 @@ def test_the_specification_covers_every_kind_at_its_schema():
 
 @pytest.mark.parametrize("name", ["corpus", "normalized", "pca", "motiondb", "pruned", "isomap", "motion", "greedy",
                                   "capture", "meshanim", "expression", "restyle", "headmotion", "keyshapes", "curves",
-                                  "retargeted", "rig_mesh"])
+                                  "retargeted", "rig_mesh", "trajectory", "trajectory_motion"])
 def test_every_kind_written_by_its_stage_checks_clean(written, name):
     report = check.check_file(written[name])
     assert report.problems == []
@@ -187,7 +192,7 @@ DAMAGES = {
                        "`facesynth ingest`."),
     "an unknown kind": ("pca", lambda f: f.attrs.__setitem__("facesynth_kind", "wireframe"),
                         "/: unknown kind 'wireframe'; facesynth writes corpus, normalized, pca, motiondb, isomap, "
-                        "motion, meshanim, expression, headmotion, curves, keyshapes."),
+                        "motion, meshanim, expression, headmotion, curves, keyshapes, trajectory."),
     "a capture without its take": ("capture", lambda f: f.attrs.__delitem__("take"),
                                    "/: missing attribute 'take' (str: the captured take)."),
 }

@@ -62,7 +62,9 @@ class Motion:
         pose relative to the source take's mean (x -> head_rotation @ x + head_translation).
     coefficients : (F, K) float32 PCA coefficients at ``capture_fps`` (synthesis only).
     path, provenance : the search and where each frame came from (synthesis only).
-    source : "synthesis" or "capture"; take : the captured take (capture only).
+    source : "synthesis", "capture", "restyle" or "trajectory"; take : the captured take (capture only).
+    keyshape_weights : (F, Kt) float32 key-shape weights at ``capture_fps``, keyshape_names : Kt
+        names (trajectory synthesis only: the path of Eq. 7 the markers were back-projected from).
     """
 
     markers: np.ndarray
@@ -78,6 +80,8 @@ class Motion:
     provenance: Provenance | None = None
     source: str = "synthesis"
     take: str = ""
+    keyshape_weights: np.ndarray | None = None
+    keyshape_names: list[str] | None = None
 
     KIND = "motion"
 
@@ -133,6 +137,10 @@ class Motion:
             if self.coefficients is not None:
                 c = g.create_dataset("coefficients", data=self.coefficients)
                 c.attrs["fps"] = self.capture_fps
+            if self.keyshape_weights is not None:
+                w = g.create_dataset("keyshape_weights", data=np.asarray(self.keyshape_weights, np.float32))
+                w.attrs.update(units="weight", fps=self.capture_fps)
+                write_strings(g, "keyshape_names", self.keyshape_names)
             write_strings(g, "marker_names", self.marker_names)
             r = g.create_dataset("reference", data=self.reference)
             r.attrs["units"] = "mm"

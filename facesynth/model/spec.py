@@ -59,6 +59,9 @@ SYMBOLS: dict[str, str] = {
     "L": "emotions with key-shapes",
     "k": "key-shapes of one emotion",
     "c": "points of one emotion's reconstruction-error curve",
+    "Kt": "key-shapes of a trajectory model (every emotion's, joined)",
+    "Ph": "phones with a Gaussian in a trajectory model",
+    "Pe": "(phone, emotion) pairs with a Gaussian of their own in a trajectory model",
 }
 
 #: The largest magnitude of any float in an artifact where numbers must be finite (mm, s, costs,
@@ -383,13 +386,21 @@ MOTION = Kind("motion", SCHEMAS["motion"], (
     "`synthesis` variant (with the search path and per-frame provenance); `facesynth capture` writes a "
     "captured take as the `capture` variant (root attribute `source = \"capture\"`, no `coefficients`, "
     "`path` or `provenance`), whose markers keep NaN where a gap was too long to fill; `facesynth expression "
-    "restyle` writes the `restyle` variant (`source = \"restyle\"`, likewise without them)."), (
+    "restyle` writes the `restyle` variant (`source = \"restyle\"`, likewise without them); `facesynth synthesize "
+    "--method trajectory` writes the `trajectory` variant (`source = \"trajectory\"`: no `coefficients`; "
+    "`keyshape_weights`, the path of Huang et al. Eq. 7; `path/node` and the provenance's node, take and source "
+    "frame are -1, `path/node_phone` and `node_emotion` name the Gaussian used, `cost_oc` and `cost_tc` hold "
+    "Eq. 6's data and smoothness terms per phone, `cost_emp` and `cost_block` zero; the head does not move)."), (
     Dataset("markers", "float32", ("Fo", "M", 3), "the motion at the output rate, head frame", "mm",
             (MM, _fps("output rate, frames/s")), finite="synthesis"),
     Dataset("markers_capture", "float32", ("F", "M", 3), "the motion at the capture rate, before down-sampling", "mm",
             (MM, _fps("capture rate, frames/s")), finite="synthesis"),
     Dataset("coefficients", "float32", ("F", "K"), "the concatenated, smoothed PCA frames", "mm",
             (_fps("capture rate, frames/s"),), required="synthesis"),
+    Dataset("keyshape_weights", "float32", ("F", "Kt"), "key-shape weights of the trajectory (Huang et al. Eq. 7), "
+            "interpolated to the capture rate", "weight", (_units("weight"), _fps("capture rate, frames/s")), ge=0,
+            required="trajectory"),
+    Dataset("keyshape_names", "str", ("Kt",), "the key-shapes, column order of `keyshape_weights`", required="trajectory"),
     Dataset("marker_names", "str", ("M",), "marker order"),
     Dataset("reference", "float32", ("M", 3), "rest pose", "mm", (MM,)),
     Dataset("head_rotation", "float32", ("Fo", 3, 3),
@@ -409,9 +420,9 @@ MOTION = Kind("motion", SCHEMAS["motion"], (
         Dataset("cost_oc", "float32", ("U",), "observation cost of Eq. 4"),
         Dataset("cost_emp", "float32", ("U",), "emotion mismatch penalty of Eq. 4"),
         Dataset("cost_block", "float32", ("U",), "blocking penalty of Eq. 10"),
-    ), attrs=(Attr("total_cost", "float", "Eq. 4 along the path"),
+    ), attrs=(Attr("total_cost", "float", "Eq. 4 along the path (trajectory: Eq. 6 of Huang et al.)"),
               Attr("non_captured_joins", "int", "joins without a captured predecessor/successor link", ge=0),
-              Attr("search", "str", "the search that chose the path (`dp` or `greedy`)"),
+              Attr("search", "str", "the search that chose the path (`dp`, `greedy` or `trajectory`)"),
               Attr("device", "str", "where the search ran"),
               Attr("device_reason", "str", "why that device (the OpenCL choice, or why NumPy)")), required="synthesis"),
     Group("provenance", "provenance", "where each capture-rate frame came from", (
@@ -422,10 +433,11 @@ MOTION = Kind("motion", SCHEMAS["motion"], (
         Dataset("step", "int64", ("F",), "input phone (row of `path`)"),
         Dataset("smoothed", "bool", ("F",), "frame changed by Eq. 16 smoothing (or Cao's blending)"),
     ), attrs=(_fps("capture rate, frames/s"), Attr("meaning", "str", "what the values are")), required="synthesis"),
-), attrs=(Attr("source", "str", "`capture` for a captured take, `restyle` for a motion in another expression; "
-                         "absent for a synthesis", choices=("capture", "restyle"), required=False),
+), attrs=(Attr("source", "str", "`capture` for a captured take, `restyle` for a motion in another expression, "
+                         "`trajectory` for the trajectory method; absent for a synthesis by search",
+                         choices=("capture", "restyle", "trajectory"), required=False),
           Attr("take", "str", "the captured take", required="capture")),
-    variant_attr="source", variants=("synthesis", "capture", "restyle"),
+    variant_attr="source", variants=("synthesis", "capture", "restyle", "trajectory"),
     writers=("facesynth synthesize", "facesynth capture", "facesynth expression restyle"))
 
 MESHANIM = Kind("meshanim", SCHEMAS["meshanim"], (
@@ -502,6 +514,39 @@ KEYSHAPES = Kind("keyshapes", SCHEMAS["keyshapes"], (
           Attr("rig_name", "str", "the rig the keymorphs were fitted on", required=False),
           Attr("rig_sha256", "str", "sha256 of that rig's data", required=False)))
 
+TRAJECTORY = Kind("trajectory", SCHEMAS["trajectory"], (
+    "The compact key-shape trajectory model (Huang et al. §5.4): per phone, and per (phone, emotion) with at "
+    "least `min_tokens` training tokens, the mean and diagonal covariance of the frames' non-negative "
+    "weights over one joint key-shape set (every emotion's key-shapes of a `keyshapes` artifact), with the "
+    "key-shapes and the rest pose, so that `facesynth synthesize --method trajectory` needs this file alone. "
+    "A frame with weights w is `reference + sum_k w[k] (keyshapes[k] - reference)`."), (
+    Dataset("marker_names", "str", ("M",), "marker order"),
+    Dataset("reference", "float32", ("M", 3), "rest pose (all weights zero), head frame", "mm", (MM,)),
+    Dataset("keyshapes", "float32", ("Kt", "M", 3), "the joint key-shapes' marker poses, head frame", "mm", (MM,)),
+    Dataset("keyshape_names", "str", ("Kt",), "key-shape names (those of the `keyshapes` artifact)"),
+    Dataset("keyshape_emotion", "str", ("Kt",), "the emotion each key-shape was chosen for"),
+    Dataset("phones", "str", ("Ph",), "phones with a Gaussian (Festival names, `pau` included)"),
+    Dataset("means", "float32", ("Ph", "Kt"), "mean key-shape weights per phone", "weight", (_WEIGHT,)),
+    Dataset("variances", "float32", ("Ph", "Kt"), "variance of each weight per phone (floored, see "
+            "`variance_floor`)", "weight", (_WEIGHT,), ge=0),
+    Dataset("tokens", "int64", ("Ph",), "training tokens of each phone", ge=1),
+    Dataset("samples", "int64", ("Ph",), "training frames that fed each phone's Gaussian", ge=1),
+    Dataset("pair_phone", "str", ("Pe",), "phone of each (phone, emotion) Gaussian"),
+    Dataset("pair_emotion", "str", ("Pe",), "emotion of each (phone, emotion) Gaussian"),
+    Dataset("pair_means", "float32", ("Pe", "Kt"), "mean key-shape weights per (phone, emotion)", "weight", (_WEIGHT,)),
+    Dataset("pair_variances", "float32", ("Pe", "Kt"), "variance of each weight per (phone, emotion)", "weight",
+            (_WEIGHT,), ge=0),
+    Dataset("pair_tokens", "int64", ("Pe",), "training tokens of each pair", ge=1),
+    Dataset("pair_samples", "int64", ("Pe",), "training frames that fed each pair's Gaussian", ge=1),
+), attrs=(_fps("capture rate of the training frames, frames/s"),
+          Attr("sampling", "str", "which frames fed the Gaussians: every frame of a phone, or each token's centre",
+               choices=("span", "centre")),
+          Attr("min_tokens", "int", "tokens a (phone, emotion) pair needed for its own Gaussian", ge=1),
+          Attr("variance_floor", "float", "each variance is at least this fraction of that weight's variance over "
+               "all training frames", gt=0),
+          Attr("fit_rms", "float", "RMS per marker (mm) of the training frames' reconstruction from the weights", ge=0),
+          Attr("covariance", "str", "the covariance's form", choices=("diagonal",))))
+
 #: Every kind's specification at its current schema.
 EXPRESSION = Kind("expression", SCHEMAS["expression"], (
     "A bilinear style/content model of marker frames (Chuang & Bregler 2005, §3, Eq. 4): "
@@ -539,7 +584,7 @@ HEADMOTION = Kind("headmotion", SCHEMAS["headmotion"], (
 ))
 
 KINDS: dict[str, Kind] = {k.name: k for k in (CORPUS, NORMALIZED, PCA, MOTIONDB, ISOMAP, MOTION, MESHANIM, EXPRESSION,
-                                              HEADMOTION, CURVES, KEYSHAPES)}
+                                              HEADMOTION, CURVES, KEYSHAPES, TRAJECTORY)}
 
 BLOCKS: tuple[Block, ...] = (TABLES, HEAD_FRAMES, PCA_MODEL)
 

@@ -191,11 +191,12 @@ def render_path(db: MotionDatabase, utt: Utterance, path: np.ndarray, settings: 
             "head_translation": downsample(head_t, db.fps, settings.output_fps)}
 
 
-def prepare(db: MotionDatabase, phones_path: Path | None, emotions_path: Path | None, constraints_path: Path | None,
+def prepare(db: MotionDatabase | None, phones_path: Path | None, emotions_path: Path | None, constraints_path: Path | None,
             ingest_settings: IngestSettings, audio: Path | None = None, text: str | None = None,
             align_settings: AlignSettings | None = None) -> tuple[Utterance, dict[int, int]]:
     """The utterance (phones read from ``phones_path``, or ``audio`` aligned to ``text`` with
-    ``align_settings``, which that needs) with its emotions, and its constraints by phone index."""
+    ``align_settings``, which that needs) with its emotions, and its constraints by phone index
+    (``db`` is needed only for constraints)."""
     if phones_path is not None and (audio is not None or text is not None):
         raise UsageError("give the utterance's phones with --phonemes or with --audio and --text, not both.")
     if phones_path is not None:

@@ -10,10 +10,11 @@ from pathlib import Path
 
 import numpy as np
 
-from ..artifacts import atomic_folder, check_output_folder
-from ..config import EvaluateSettings, NormalizeSettings, SynthesizeSettings
-from ..errors import OutputExistsError
+from ..artifacts import atomic_folder, check_output_folder, sha256_of
+from ..config import EvaluateSettings, NormalizeSettings, SynthesizeSettings, TrajectorySettings
+from ..errors import InputError, OutputExistsError
 from ..evaluation import FIGURES, REFERENCES, evaluate
+from ..model.trajectory import TrajectoryModel
 
 
 def plot(records: list[dict], folder: Path, marker: str) -> list[str]:
@@ -119,7 +120,9 @@ def write_report(folder: Path, metrics: dict, images: list[str], meta: dict) -> 
              f"<p>Database {html.escape(meta['db'])}; ground truth {html.escape(meta['heldout'])} (split '{meta['split']}'). "
              "Baselines: <i>baseline</i>, the per-phoneme mean pose, linearly interpolated; <i>baseline_emotion</i>, the mean "
              "pose per (phone, emotion); <i>dominance</i>, a Cohen-Massaro coarticulation model fitted on the training takes; <i>dominance_emotion</i>, the same "
-             "per (phone, emotion); <i>greedy</i>, Cao et al.'s greedy search on the same database; <i>openfacefx</i>, the external "
+             "per (phone, emotion); <i>greedy</i>, Cao et al.'s greedy search on the same database; <i>trajectory</i>, Huang et "
+             "al.'s smooth path through per-(phone, emotion) Gaussians of key-shape weights (Eq. 6-7), trained on the same "
+             "takes; <i>openfacefx</i>, the external "
              "text-driven lip-sync from the same phone timing through the face rig to the markers. References: <i>capture</i>, the "
              "normalized noisy capture; <i>clean</i>, the clean ground truth itself.</p>"]
     shown, labels, rows, diffs = figure_rows(metrics)
@@ -149,17 +152,36 @@ def check_report_folder(out_dir: Path, overwrite: bool) -> None:
         raise OutputExistsError(f"{out_dir}: {what}; pass --overwrite to write the report into it or choose another folder.")
 
 
+def trained_on(model: TrajectoryModel, model_path: Path, db_path: Path) -> None:
+    """Refuse a trajectory model whose recorded training database is not ``db_path`` (by sha256):
+    the methods must learn from the same takes, and the held-out ones must stay unseen."""
+    dbs = [r for r in model.inputs if r.get("kind") == "motiondb"]
+    if not any(r.get("sha256") == sha256_of(db_path) for r in dbs):
+        was = f" ({dbs[0].get('path')})" if dbs else ""
+        raise InputError(f"{model_path}: was trained on another database{was}, not {db_path}; train it on {db_path} "
+                         "with `facesynth train-trajectory` so that every method learns from the same takes.")
+
+
 def run(db_path: Path, corpus: Path, out_dir: Path, settings: EvaluateSettings, synth: SynthesizeSettings,
-        normalize_settings: NormalizeSettings, overwrite: bool = False, truth: Path | None = None) -> dict:
+        normalize_settings: NormalizeSettings, overwrite: bool = False, truth: Path | None = None,
+        trajectory: Path | None = None, trajectory_settings: TrajectorySettings | None = None) -> dict:
     """Evaluate the database on the corpus's held-out takes and write the report to ``out_dir``;
     returns the overall metrics per method (with ``figures`` where computed). ``truth``: the
-    corpus folder with clean ground truth (``groundtruth/``, ``markers.csv``).
+    corpus folder with clean ground truth (``groundtruth/``, ``markers.csv``). ``trajectory``: a
+    trajectory model trained on ``db_path`` (``facesynth train-trajectory``), synthesized with
+    ``trajectory_settings``, adds the trajectory method.
     """
     check_report_folder(out_dir, overwrite)
-    metrics, records = evaluate(db_path, corpus, settings, synth, normalize_settings, truth=truth)
+    model = None
+    if trajectory is not None:
+        model = TrajectoryModel.read(trajectory)
+        trained_on(model, trajectory, db_path)
+    metrics, records = evaluate(db_path, corpus, settings, synth, normalize_settings, truth=truth, trajectory=model,
+                                trajectory_settings=trajectory_settings)
     with atomic_folder(out_dir, "the report", overwrite) as tmp:
         images = plot(records, tmp, settings.plot_marker)
         meta = {"db": str(db_path), "heldout": str(corpus), "split": settings.split, "sentences": len(records),
+                "trajectory": None if trajectory is None else str(trajectory),
                 "plot_marker": settings.plot_marker, "closure_mm": settings.closure_mm, "truth": None if truth is None else str(truth),
                 "bootstrap_resamples": settings.bootstrap_resamples}
         write_report(tmp, metrics, images, meta)

@@ -4,7 +4,7 @@ Views: ``shaded`` (the face, smooth-shaded and anti-aliased, with eyeballs, mout
 teeth and tongue where the mesh has eye and mouth holes; :mod:`facesynth.rendering`, on
 OpenCL with a NumPy reference), ``markers`` (the paper's marker mode: the markers as
 dots) and ``side-by-side`` (the animation beside a second one, e.g. ground truth: the
-left half is labelled "synthesis", the right half, ``--compare``, "capture").
+left half is labelled "synthesis", the right half, ``--compare``, "capture", or as ``render.labels`` says).
 The camera orbits the rest mesh (+y up, looking toward +z) by ``render.yaw_deg`` and
 ``render.pitch_deg`` (a three-quarter view by default), fitted once so the view is steady:
 on a face (eyes and mouth found) it frames brow to chin, otherwise the whole mesh.
@@ -84,9 +84,6 @@ def clip_audio(audio_path: Path, n_frames: int, fps: float, rate: int, anim_path
     return np.pad(samples, (0, max(0, need - len(samples))))[:need]
 
 
-SIDE_BY_SIDE_LABELS = ("synthesis", "capture")  # left: the animation rendered; right: --compare
-
-
 def label_mask(text: str, scale: int = 2) -> np.ndarray:
     """A (h, w) float mask in [0, 1] of ``text`` in Pillow's default bitmap font, enlarged
     ``scale`` times (nearest neighbour, so the same on every machine)."""
@@ -154,7 +151,7 @@ def render_frames(clip: MeshAnimation, settings: RenderSettings, compare: MeshAn
             yield shaded.frame(clip.vertices[t], t)
         return
     other = ShadedView(compare, settings, width)
-    masks = [label_mask(text) for text in SIDE_BY_SIDE_LABELS]
+    masks = [label_mask(text) for text in settings.labels]  # left: the animation rendered; right: --compare
     for t in range(len(clip.vertices)):
         u = min(t, len(compare.vertices) - 1)
         left, right = shaded.frame(clip.vertices[t], t), other.frame(compare.vertices[u], u)

@@ -1,5 +1,7 @@
 """``facesynth synthesize``: expressive speech motion from the motion-node database
-(paper VI and VII-B; the search and post-processing are :mod:`facesynth.search.synthesis`).
+(paper VI and VII-B; the search and post-processing are :mod:`facesynth.search.synthesis`), or,
+with ``--method trajectory``, from a compact trajectory model (Huang et al. §5.4;
+:mod:`facesynth.motion.trajectory`).
 """
 
 from __future__ import annotations
@@ -10,11 +12,13 @@ from pathlib import Path
 import numpy as np
 
 from ..artifacts import check_output, input_records_in_background
-from ..config import AlignSettings, IngestSettings, SynthesizeSettings, settings_json
+from ..config import AlignSettings, IngestSettings, SynthesizeSettings, TrajectorySettings, settings_json
 from ..errors import UsageError
 from ..limits import require_memory
 from ..model.headmotion import HeadMotion
 from ..model.motiondb import MotionDatabase
+from ..model.trajectory import TrajectoryModel
+from ..motion.trajectory import synthesize_motion
 from ..search.synthesis import as_motion, prepare, synthesize, unseen_phones
 
 
@@ -65,3 +69,30 @@ def run(db_path: Path, out: Path, settings: SynthesizeSettings, ingest_settings:
     return {"phones": len(utt), "cost": res["cost"], "joins": res["non_captured_joins"], "device": res["device"],
             "unseen": unseen_phones(utt, db), "frames": len(res["markers"]), "load_s": load_s, **res["timings"],
             "hash_wait_s": hash_wait_s, "write_s": write_s}
+
+
+def run_trajectory(model_path: Path, out: Path, settings: TrajectorySettings, output_fps: float,
+                   ingest_settings: IngestSettings, align_settings: AlignSettings, *,
+                   phones_path: Path | None = None, emotions_path: Path | None = None, audio: Path | None = None,
+                   text: str | None = None, head_motion_path: Path | None = None, overwrite: bool = False) -> dict:
+    """Synthesize the utterance from the trajectory model at ``model_path`` (Huang et al. Eq. 6-7)
+    and write ``out``, a ``motion`` artifact with ``source = "trajectory"``, markers at
+    ``output_fps``. The summary's ``solve_s`` is the path's solve and back-projection, ``fallbacks``
+    the unseen phones and the viseme class that covered each."""
+    check_output(out, overwrite)
+    inputs = [p for p in (model_path, phones_path, emotions_path, audio, head_motion_path) if p is not None]
+    head = HeadMotion.read(head_motion_path) if head_motion_path is not None else None
+    t0 = time.perf_counter()
+    model = TrajectoryModel.read(model_path)
+    load_s = time.perf_counter() - t0
+    utt, _ = prepare(None, phones_path, emotions_path, None, ingest_settings, audio, text, align_settings)
+    t0 = time.perf_counter()
+    motion, path = synthesize_motion(model, utt, settings, output_fps, str(phones_path or audio))
+    solve_s = time.perf_counter() - t0
+    if head is not None:
+        motion.head_rotation, motion.head_translation = head.at(np.arange(len(motion.markers)) / motion.fps)
+    t0 = time.perf_counter()
+    motion.write(out, config=settings_json(settings), inputs=inputs, overwrite=overwrite)
+    return {"phones": len(utt), "frames": len(motion.markers), "energy": path.energy, "lambda": path.lam,
+            "fallbacks": path.targets.fallbacks, "load_s": load_s, "solve_s": solve_s,
+            "write_s": time.perf_counter() - t0}
