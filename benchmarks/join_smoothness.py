@@ -16,7 +16,6 @@ capture, with bootstrap 95% intervals over sentences.
 from __future__ import annotations
 
 import argparse
-import inspect
 import json
 import time
 from pathlib import Path
@@ -50,7 +49,6 @@ def measure(db_path: Path, corpus_path: Path, clean_dir: Path, split: str, overr
     corpus = Corpus.read(corpus_path, audio=False)
     sentences = heldout(corpus_path, db, split, norm)
     tc = db.transition_costs(synth, False)
-    with_rigid = "corpus_rigid" in inspect.signature(normalized_take).parameters
     at_joins, clean_d2, rows = [], [], []
     t0 = time.perf_counter()
     for s in sentences:
@@ -66,8 +64,7 @@ def measure(db_path: Path, corpus_path: Path, clean_dir: Path, split: str, overr
             at_joins.append(d2[f - 2 : f].ravel() if f >= 2 else d2[f - 1 : f].ravel())
         raw = read_mocap(clean_dir / f"{s.take}.c3d")
         order = [raw.names.index(n) for n in db.marker_names]
-        args = (raw.positions[:, order], db, norm) + ((corpus.rigid_markers,) if with_rigid else ())
-        clean = normalized_take(*args)[0]
+        clean = normalized_take(raw.positions[:, order], db, norm, corpus.rigid_markers)[0]
         clean_d2.append(second_differences(clean).ravel())
         n = min(len(x), len(s.truth), len(clean))
         rows.append((float(np.nanmean(np.sum((x[:n] - s.truth[:n]) ** 2, axis=2))),
