@@ -103,20 +103,18 @@ def _polar(f: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     _, det0 = _cofactors(x)
     ok = det0 > 1e-9 * np.abs(x).max(0) ** 3
     x[:, ~ok] = np.eye(3).reshape(9, 1)  # placeholders; these go through the SVD
-    active = np.arange(x.shape[1])
+    moved = np.zeros(x.shape[1])
     for _ in range(60):
-        sub = x[:, active]
-        cof, det = _cofactors(sub)
+        cof, det = _cofactors(x)
         gam = np.abs(det) ** (-1.0 / 3.0)
-        new = 0.5 * (gam * sub + cof / (gam * det))
-        moved = np.abs(new - sub).max(0)
-        x[:, active] = new
-        active = active[moved > 1e-15]
-        if not len(active):
+        new = 0.5 * (gam * x + cof / (gam * det))
+        moved = np.abs(new - x).max(0)
+        x = new
+        if moved.max(initial=0.0) <= 1e-15:
             break
-    ok[active] = False  # did not converge (not seen on meshes; the SVD is the fallback)
+    ok &= moved <= 1e-12  # not converged (not seen on meshes): the SVD is the fallback
     r = x.T.reshape(-1, 3, 3)
-    s = np.einsum("nji,njk->nik", r, fm)
+    s = np.swapaxes(r, 1, 2) @ fm
     stretch = 0.5 * (s + np.swapaxes(s, 1, 2))
     ok &= r[:, 0, 0] + r[:, 1, 1] + r[:, 2, 2] > 1.0 + 2.0 * np.cos(_LOG_CLOSED_MAX)
     rotvec = np.empty((len(fm), 3))
@@ -197,14 +195,14 @@ class GradientBlender:
         self.offsets = (ex - self.rest).reshape(n_k, -1).astype(np.float32)  # (K, 3V)
         rest_frames = _frames(self.rest, self.faces)  # (F, 3, 3)
         inv = np.linalg.inv(rest_frames)
-        grads = np.einsum("kfij,fjl->kfil", _frames(ex, self.faces), inv)  # (K, F, 3, 3)
-        rotvec, stretch = _polar(grads)
         rest_edges = rest_frames[:, :, :2]  # (F, 3, 2): columns e1, e2
         # Per triangle f, the 9 numbers blended linearly in alpha: log R (3) and (S - I) e1, (S - I) e2.
         coef = np.empty((n_f, 9, n_k), np.float32)
-        coef[:, :3] = rotvec.transpose(1, 2, 0)
-        se = np.einsum("kfij,fjl->flik", stretch - np.eye(3), rest_edges)  # (F, 2 edges, 3, K)
-        coef[:, 3:] = se.reshape(n_f, 6, n_k)
+        for k in range(n_k):  # one example at a time: its arrays stay small
+            rotvec, stretch = _polar(_frames(ex[k], self.faces) @ inv)
+            coef[:, :3, k] = rotvec
+            stretch[:, [0, 1, 2], [0, 1, 2]] -= 1.0
+            coef[:, 3:, k] = np.swapaxes(stretch @ rest_edges, 1, 2).reshape(n_f, 6)
         base = np.zeros((n_f, 9), np.float32)
         base[:, 3:] = rest_edges.transpose(0, 2, 1).reshape(n_f, 6)
         rows = np.repeat(np.arange(2 * n_f), 2)

@@ -25,6 +25,27 @@ def test_nnls_on_the_gram_factor_matches_scipy_on_the_full_system():
     np.testing.assert_allclose(rms, np.sqrt(((frames - w @ shapes) ** 2).sum(1) / 20))
 
 
+def test_batched_block_pivoting_nnls_matches_scipy_frame_by_frame():
+    # Many frames, key-shapes that overlap (a near-duplicate pair) and sparse true mixtures: the
+    # batched solver must land on scipy's minimizer for every frame.
+    from facesynth.retarget.solve import nnls_gram
+
+    rng = np.random.default_rng(10)
+    shapes = rng.normal(size=(25, 90)) + 1.0
+    shapes[7] = shapes[3] + rng.normal(scale=1e-3, size=90)
+    mix = rng.uniform(0, 1, (300, 25)) * (rng.uniform(size=(300, 25)) < 0.2)
+    frames = mix @ shapes + rng.normal(scale=0.5, size=(300, 90))
+    frames[:50] = rng.normal(scale=3.0, size=(50, 90))  # frames far from the cone: many zeros
+    w = nnls_gram(shapes @ shapes.T, frames @ shapes.T)
+    ref = np.array([nnls(shapes.T, f, maxiter=2000)[0] for f in frames])
+    assert (w >= 0).all()
+    obj = ((frames - w @ shapes) ** 2).sum(1)
+    ref_obj = ((frames - ref @ shapes) ** 2).sum(1)
+    np.testing.assert_allclose(obj, ref_obj, rtol=1e-9, atol=1e-9)
+    keep = np.setdiff1d(np.arange(25), [3, 7])  # the near-duplicate pair may split its weight differently
+    np.testing.assert_allclose(w[:, keep], ref[:, keep], atol=1e-6)
+
+
 def test_nnls_recovers_non_negative_mixtures_and_skips_missing_coordinates():
     rng = np.random.default_rng(1)
     shapes = rng.normal(size=(4, 30))
