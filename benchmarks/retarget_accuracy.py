@@ -1,7 +1,7 @@
 """Retargeting onto the built-in rig, scored on the virtual actress (issue 17).
 
     .venv/bin/python benchmarks/retarget_accuracy.py --corpus out/corpus --corpus-h5 out/corpus.h5 \
-        --db out/db.h5 [--takes 6] [--counts 7,14,20,30] > benchmarks/retarget_accuracy.json
+        --db out/db.h5 [--takes 0] [--counts 7,14,20,30] --no-speed > benchmarks/retarget_accuracy.json
 
 For held-out (``test``) takes, captured through ``facesynth capture``'s core at 30 frames/s,
 against the truth (``groundtruth/<take>_truth.csv``, down-sampled alike; truth mesh =
@@ -12,10 +12,12 @@ rig.evaluate(truth rig weights)):
 * ``mesh_mm``: mean full-mesh vertex error (11,248 vertices, mm) of Gaussian ``deform`` (Eq.
   14-15 on the rig's neutral mesh), the direct solve, linear key-shape retargeting and
   deformation-gradient retargeting;
-* ``lip_closure_mm``: the mean lip gap on the final mesh at the centre of every /p b m/ (truth
-  beside it), and the fraction under 1 mm;
+* lip closure: ``*_gap`` the mean lip gap (mm) on the final mesh at the centre of every /p b m/
+  (truth beside it), ``*_closed`` the fraction of them under 1 mm;
 * rows for both selection methods and key-shape counts; every number with a bootstrap 95%
-  confidence interval over takes.
+  confidence interval over takes (``--takes 0``: every test take of the corpus), and paired
+  differences per take (``diff_*``: the first method minus the second, so intervals that
+  exclude 0 say which is better on these takes).
 
 ``synthesized``: the same held-out sentences synthesized by the DP search (no truth there):
 marker residual of the solve and of the key-shape fit, lip closure on /p b m/ for each
@@ -73,6 +75,11 @@ def bilabial_frames(corpus: Corpus, take: str, fps: float, n: int) -> np.ndarray
     return np.array([f for f in (int(round(c * fps)) for c in centres) if f < n], int)
 
 
+def closed(vertices: np.ndarray, ms) -> float:
+    """Fraction of frames whose lips are closer than 1 mm."""
+    return float((lip_gap(vertices, ms.lip_upper, ms.lip_lower) < 1.0).mean()) if len(vertices) else float("nan")
+
+
 def weight_scores(rig, est: np.ndarray, truth: np.ndarray) -> tuple[float, float]:
     a, t = rig.to_arkit(est), rig.to_arkit(truth)
     rms = float(np.sqrt(((a - t) ** 2).mean()))
@@ -86,7 +93,7 @@ def main(argv: list[str]) -> int:
     p.add_argument("--corpus", type=Path, required=True)
     p.add_argument("--corpus-h5", type=Path, required=True)
     p.add_argument("--db", type=Path, required=True)
-    p.add_argument("--takes", type=int, default=6)
+    p.add_argument("--takes", type=int, default=0, help="held-out takes to score (0: all)")
     p.add_argument("--counts", default="7,14,20,30")
     p.add_argument("--methods", default="pca,affinity")
     p.add_argument("--no-speed", action="store_true", help="leave out the speed measurement")
@@ -96,7 +103,7 @@ def main(argv: list[str]) -> int:
     ms = build_marker_set(rig)
     corpus = Corpus.read(args.corpus_h5, audio=False)
     db = MotionDatabase.read(args.db)
-    tests = [n for n, s in zip(db.takes.name, db.takes.split) if s == "test"][: args.takes]
+    tests = [n for n, s in zip(db.takes.name, db.takes.split) if s == "test"][: args.takes or None]
     tmp = Path(tempfile.mkdtemp())
     fps = 30.0
     mesh_v, mesh_f = read_mesh(args.corpus / "face.obj")
@@ -127,7 +134,7 @@ def main(argv: list[str]) -> int:
     ssolve = config.settings("solve")
     result = {"takes": tests, "fps": fps, "vertices": int(len(rig.neutral)), "rows": [], "baselines": {}}
     per = {k: [] for k in ("solve_rms", "solve_corr", "solve_mesh", "deform_mesh", "truth_gap", "solve_gap", "deform_gap",
-                           "syn_solve_resid", "syn_solve_gap")}
+                           "truth_closed", "solve_closed", "deform_closed", "syn_solve_resid", "syn_solve_gap")}
     solved = {}
     for take, d in takes.items():
         w, _, _ = solve.solve(d["motion"], target, ssolve, take)
@@ -143,12 +150,16 @@ def main(argv: list[str]) -> int:
         per["truth_gap"].append(float(lip_gap(tv[b], ms.lip_upper, ms.lip_lower).mean()))
         per["solve_gap"].append(float(lip_gap(sv[b], ms.lip_upper, ms.lip_lower).mean()))
         per["deform_gap"].append(float(lip_gap(d["gauss"][b], ms.lip_upper, ms.lip_lower).mean()))
+        per["truth_closed"].append(closed(tv[b], ms))
+        per["solve_closed"].append(closed(sv[b], ms))
+        per["deform_closed"].append(closed(d["gauss"][b], ms))
         ws, rs, _ = solve.solve(d["synth"], target, ssolve, take)
         d["synth_solve"] = ws
         per["syn_solve_resid"].append(float(np.sqrt(np.nanmean(rs**2))))
         sb = bilabial_frames(corpus, take, fps, len(ws))
         per["syn_solve_gap"].append(float(lip_gap(rig.evaluate(ws[sb]), ms.lip_upper, ms.lip_lower).mean()))
     result["baselines"] = {k: boot(v) for k, v in per.items()}
+    result["baselines"]["diff_solve_vs_deform_mesh"] = boot(np.subtract(per["solve_mesh"], per["deform_mesh"]))
     print("baselines done", file=sys.stderr)
 
     kss = config.settings("keyshapes")
@@ -162,8 +173,8 @@ def main(argv: list[str]) -> int:
             t0 = time.perf_counter()
             blender = GradientBlender(target.neutral, target.faces, meshes_k, rset.anchor)
             factor_s = time.perf_counter() - t0
-            rows = {k: [] for k in ("rms", "corr", "lin_mesh", "grad_mesh", "lin_gap", "grad_gap", "fit_mm",
-                                    "syn_fit_mm", "syn_lin_gap", "syn_grad_gap", "syn_vs_solve_rms")}
+            rows = {k: [] for k in ("rms", "corr", "lin_mesh", "grad_mesh", "lin_gap", "grad_gap", "lin_closed",
+                                    "grad_closed", "fit_mm", "syn_fit_mm", "syn_lin_gap", "syn_grad_gap", "syn_vs_solve_rms")}
             for take, d in takes.items():
                 r = retarget.retarget(d["motion"], ks, rset, None, take)
                 alpha = r.alpha[: d["n"]]
@@ -179,6 +190,8 @@ def main(argv: list[str]) -> int:
                 rows["grad_mesh"].append(float(np.sqrt(((grad - tv) ** 2).sum(-1)).mean()))
                 rows["lin_gap"].append(float(lip_gap(lin[b], ms.lip_upper, ms.lip_lower).mean()))
                 rows["grad_gap"].append(float(lip_gap(grad[b], ms.lip_upper, ms.lip_lower).mean()))
+                rows["lin_closed"].append(closed(lin[b], ms))
+                rows["grad_closed"].append(closed(grad[b], ms))
                 dom = r.emotion_weights.argmax(1)
                 rows["fit_mm"].append(float(np.sqrt(np.mean(r.residual[np.arange(len(dom)), dom] ** 2))))
                 rs = retarget.retarget(d["synth"], ks, rset, None, take)
@@ -193,8 +206,13 @@ def main(argv: list[str]) -> int:
                                    "keyshapes": {e: k.count for e, k in ks.emotions.items()},
                                    "reconstruction_rms_mm": {e: float(k.rms) for e, k in ks.emotions.items()},
                                    "select_s": select_s, "factorize_s": factor_s,
-                                   **{k: boot(v) for k, v in rows.items()}})
-            print(f"{method} {count} done", file=sys.stderr)
+                                   **{k: boot(v) for k, v in rows.items()},
+                                   "diff_rms_vs_solve": boot(np.subtract(rows["rms"], per["solve_rms"])),
+                                   "diff_corr_vs_solve": boot(np.subtract(rows["corr"], per["solve_corr"])),
+                                   "diff_lin_vs_solve_mesh": boot(np.subtract(rows["lin_mesh"], per["solve_mesh"])),
+                                   "diff_grad_vs_lin_mesh": boot(np.subtract(rows["grad_mesh"], rows["lin_mesh"])),
+                                   "diff_grad_vs_lin_gap": boot(np.subtract(rows["grad_gap"], rows["lin_gap"]))})
+            print(f"{method} {count} done", file=sys.stderr, flush=True)
 
     result["load_average"] = list(__import__("os").getloadavg())
     if args.no_speed:
