@@ -25,7 +25,8 @@ def test_nnls_on_the_gram_factor_matches_scipy_on_the_full_system():
     np.testing.assert_allclose(rms, np.sqrt(((frames - w @ shapes) ** 2).sum(1) / 20))
 
 
-def test_batched_block_pivoting_nnls_matches_scipy_frame_by_frame():
+@pytest.mark.parametrize("stragglers", [0, 8])  # 0: block pivoting to the end, no scipy finish
+def test_batched_block_pivoting_nnls_matches_scipy_frame_by_frame(stragglers):
     # Many frames, key-shapes that overlap (a near-duplicate pair) and sparse true mixtures: the
     # batched solver must land on scipy's minimizer for every frame.
     from facesynth.retarget.solve import nnls_gram
@@ -36,7 +37,7 @@ def test_batched_block_pivoting_nnls_matches_scipy_frame_by_frame():
     mix = rng.uniform(0, 1, (300, 25)) * (rng.uniform(size=(300, 25)) < 0.2)
     frames = mix @ shapes + rng.normal(scale=0.5, size=(300, 90))
     frames[:50] = rng.normal(scale=3.0, size=(50, 90))  # frames far from the cone: many zeros
-    w = nnls_gram(shapes @ shapes.T, frames @ shapes.T)
+    w = nnls_gram(shapes @ shapes.T, frames @ shapes.T, stragglers=stragglers)
     ref = np.array([nnls(shapes.T, f, maxiter=2000)[0] for f in frames])
     assert (w >= 0).all()
     obj = ((frames - w @ shapes) ** 2).sum(1)
