@@ -22,13 +22,14 @@ with it written out frame by frame):
 * one-time: the polar decompositions by a written-out Newton iteration on 3 x 3 blocks and a
   closed-form log map (:func:`_polar`) rather than an SVD and scipy's rotation conversions per
   matrix; the normal matrix, symmetric positive definite, factorized by SuperLU with a minimum
-  degree ordering of ``A + A^T`` in symmetric mode (half the fill of the default COLAMD, and
-  a back-substitution about 3 times faster);
-* per clip: the triangles in blocks, all frames at once: one matrix product gives every frame's
-  blended rotation vectors and stretched rest edges of a block, Rodrigues' formula rotates the
+  degree ordering of ``A + A^T`` in symmetric mode (half the fill of the default COLAMD and
+  fewer operations per back-substitution);
+* per clip: the triangles in blocks, a quarter of the frames at a time: one matrix product gives
+  every frame's blended rotation vectors and stretched rest edges of a block, Rodrigues' formula rotates the
   edges without forming matrices, and the edges are summed onto the vertices by a sparse
-  product into the right-hand side of all frames; the back-substitutions then run a few frames
-  at a time (24 right-hand sides stay in cache; SuperLU's solve is slower on hundreds at once).
+  product into the right-hand sides; the back-substitutions run 8 frames at a time (24
+  right-hand sides stay in cache; SuperLU's solve is slower on hundreds at once), in a second
+  thread for one group of frames while the next group's right-hand sides are built.
 """
 
 from __future__ import annotations
@@ -245,13 +246,29 @@ class GradientBlender:
             return self._blend(np.asarray(alpha, np.float32))
 
     def _blend(self, a: np.ndarray) -> np.ndarray:
+        from concurrent.futures import ThreadPoolExecutor
+
         n_t, n_v = len(a), len(self.rest)
         used = np.flatnonzero(a.any(0))  # key-shapes no frame uses (weight exactly 0) add nothing
+        out = np.empty((n_t, n_v, 3), np.float32)
+        # Frames in a few groups: while one group's back-substitutions run in a second thread
+        # (SuperLU releases the GIL), the next group's right-hand side is built.
+        step = self.SOLVE_FRAMES
+        group = max(step, -(-n_t // (4 * step)) * step)
+        with ThreadPoolExecutor(1) as pool:
+            pending = [pool.submit(self._solve, self._rhs(a[lo:lo + group], used), out[lo:lo + group])
+                       for lo in range(0, n_t, group)]
+            for job in pending:
+                job.result()
+        return out
+
+    def _rhs(self, a: np.ndarray, used: np.ndarray) -> np.ndarray:
+        """(V, 3, T) float64 right-hand sides of frames ``a`` (T, K): ``E^T (R S E) + anchor * linear``."""
+        n_t, n_v = len(a), len(self.rest)
         a_t = np.ascontiguousarray(a[:, used].T)  # (K', T)
-        # Right-hand side of all frames, column i * T + t: coordinate i of frame t.
-        rhs = np.empty((n_v, 3 * n_t))
-        lin = self.linear(a)  # (T, V, 3)
-        rhs.reshape(n_v, 3, n_t)[:] = self.anchor * lin.transpose(1, 2, 0)
+        rhs = np.empty((n_v, 3, n_t))
+        rhs[:] = self.anchor * self.linear(a).transpose(1, 2, 0)
+        flat = rhs.reshape(n_v, 3 * n_t)  # column i * T + t: coordinate i of frame t
         for coef, base, verts, scatter in self._blocks:
             n_b = len(base)
             c = coef if len(used) == coef.shape[1] else coef[:, used]
@@ -261,12 +278,15 @@ class GradientBlender:
             # moves the whole mesh (the anchor is all that holds a translation).
             target = np.empty((n_b, 2, 3, n_t))
             _rotate_edges(g, target)
-            rhs[verts] += scatter @ target.reshape(2 * n_b, 3 * n_t)
-        out = np.empty((n_t, n_v, 3), np.float32)
-        cube = rhs.reshape(n_v, 3, n_t)
+            flat[verts] += scatter @ target.reshape(2 * n_b, 3 * n_t)
+        return rhs
+
+    def _solve(self, rhs: np.ndarray, out: np.ndarray) -> None:
+        """Back-substitutions of (V, 3, T) right-hand sides, ``SOLVE_FRAMES`` frames at a time, into
+        ``out`` (T, V, 3)."""
+        n_v, _, n_t = rhs.shape
         step = self.SOLVE_FRAMES
         for start in range(0, n_t, step):
             stop = min(start + step, n_t)
-            chunk = np.asfortranarray(cube[:, :, start:stop].reshape(n_v, -1))
+            chunk = np.asfortranarray(rhs[:, :, start:stop].reshape(n_v, -1))
             out[start:stop] = self.factor.solve(chunk).reshape(n_v, 3, -1).transpose(2, 0, 1)
-        return out
