@@ -9,7 +9,8 @@
 * :func:`solve_curves`: the direct facial solve, all frames at once: weights in [0, 1] minimizing
   the marker misfit plus ``smooth`` times the squared frame-to-frame change plus ``ridge`` times
   the squared weights, by accelerated projected gradient (FISTA with restart) on the whole (T, E)
-  array; missing markers (NaN) drop out of their frame's misfit.
+  array, the misfit's gradient through the E x E Gram matrix of the rig's shapes; missing markers
+  (NaN) drop out of their frame's misfit.
 """
 
 from __future__ import annotations
@@ -189,10 +190,18 @@ def _solve_curves(frames: np.ndarray, basis: np.ndarray, *, smooth: float, ridge
     step = 1.0 / lip
     w = np.zeros((t_count, len(a)))
     y, theta, prev_obj = w.copy(), 1.0, np.inf
+    # Frames with every marker seen take the misfit's gradient through the E x E Gram matrix,
+    # ``y (A A^T) - D A^T`` (D/E times less work per iteration); frames with missing markers
+    # through their masked residual.
+    whole = seen.all(1)
+    partial = np.flatnonzero(~whole)
+    gram, da = a @ a.T, d @ a.T
     it = 0
     for it in range(1, iterations + 1):
-        r = (y @ a - d) * mask
-        grad = r @ a.T + lam_r * y
+        grad = y @ gram - da + lam_r * y
+        if len(partial):
+            yp = y[partial]
+            grad[partial] = ((yp @ a - d[partial]) * mask[partial]) @ a.T + lam_r * yp
         if t_count > 1 and lam_s > 0:
             diff = np.diff(y, axis=0)
             grad[1:] += lam_s * diff
