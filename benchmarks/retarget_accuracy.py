@@ -60,16 +60,25 @@ BILABIALS = ("p", "b", "m")
 
 
 def boot(values, seed: int = 0, n: int = 2000) -> dict:
+    """Mean over takes and its bootstrap 95% interval; takes without a value (NaN: e.g. no /p b m/
+    in the sentence) are left out, and ``n`` says how many counted."""
     v = np.asarray(values, float)
+    v = v[np.isfinite(v)]
     rng = np.random.default_rng(seed)
     means = v[rng.integers(0, len(v), (n, len(v)))].mean(1)
-    return {"mean": float(v.mean()), "ci95": [float(np.percentile(means, 2.5)), float(np.percentile(means, 97.5))]}
+    return {"mean": float(v.mean()), "ci95": [float(np.percentile(means, 2.5)), float(np.percentile(means, 97.5))],
+            "n": int(len(v))}
 
 
 def lip_gap(vertices: np.ndarray, upper: np.ndarray, lower: np.ndarray) -> np.ndarray:
     """(T,) smallest distance (mm) between the upper and lower central lip surfaces."""
     a, b = vertices[:, upper], vertices[:, lower]
     return np.sqrt(((a[:, :, None] - b[:, None]) ** 2).sum(-1)).min(axis=(1, 2))
+
+
+def mean_gap(vertices: np.ndarray, ms) -> float:
+    """Mean lip gap (mm) over the frames given; NaN for none (a sentence without /p b m/)."""
+    return float(lip_gap(vertices, ms.lip_upper, ms.lip_lower).mean()) if len(vertices) else float("nan")
 
 
 def bilabial_frames(corpus: Corpus, take: str, fps: float, n: int) -> np.ndarray:
@@ -163,9 +172,9 @@ def main(argv: list[str]) -> int:
         per["solve_mesh"].append(float(np.sqrt(((sv - tv) ** 2).sum(-1)).mean()))
         per["deform_mesh"].append(float(np.sqrt(((d["gauss"] - tv) ** 2).sum(-1)).mean()))
         b = d["bilabial"]
-        per["truth_gap"].append(float(lip_gap(tv[b], ms.lip_upper, ms.lip_lower).mean()))
-        per["solve_gap"].append(float(lip_gap(sv[b], ms.lip_upper, ms.lip_lower).mean()))
-        per["deform_gap"].append(float(lip_gap(d["gauss"][b], ms.lip_upper, ms.lip_lower).mean()))
+        per["truth_gap"].append(mean_gap(tv[b], ms))
+        per["solve_gap"].append(mean_gap(sv[b], ms))
+        per["deform_gap"].append(mean_gap(d["gauss"][b], ms))
         per["truth_closed"].append(closed(tv[b], ms))
         per["solve_closed"].append(closed(sv[b], ms))
         per["deform_closed"].append(closed(d["gauss"][b], ms))
@@ -173,7 +182,7 @@ def main(argv: list[str]) -> int:
         d["synth_solve"] = ws
         per["syn_solve_resid"].append(float(np.sqrt(np.nanmean(rs**2))))
         sb = bilabial_frames(d["corpus"], d["take"], fps, len(ws))
-        per["syn_solve_gap"].append(float(lip_gap(rig.evaluate(ws[sb]), ms.lip_upper, ms.lip_lower).mean()))
+        per["syn_solve_gap"].append(mean_gap(rig.evaluate(ws[sb]), ms))
     result["baselines"] = {k: boot(v) for k, v in per.items()}
     result["baselines"]["diff_solve_vs_deform_mesh"] = boot(np.subtract(per["solve_mesh"], per["deform_mesh"]))
     print("baselines done", file=sys.stderr, flush=True)
@@ -212,8 +221,8 @@ def main(argv: list[str]) -> int:
                     rows["corr"].append(corr)
                     rows["lin_mesh"].append(float(np.sqrt(((lin - tv) ** 2).sum(-1)).mean()))
                     rows["grad_mesh"].append(float(np.sqrt(((grad - tv) ** 2).sum(-1)).mean()))
-                    rows["lin_gap"].append(float(lip_gap(lin[b], ms.lip_upper, ms.lip_lower).mean()))
-                    rows["grad_gap"].append(float(lip_gap(grad[b], ms.lip_upper, ms.lip_lower).mean()))
+                    rows["lin_gap"].append(mean_gap(lin[b], ms))
+                    rows["grad_gap"].append(mean_gap(grad[b], ms))
                     rows["lin_closed"].append(closed(lin[b], ms))
                     rows["grad_closed"].append(closed(grad[b], ms))
                     dom = r.emotion_weights.argmax(1)
@@ -222,8 +231,8 @@ def main(argv: list[str]) -> int:
                     dom = rs.emotion_weights.argmax(1)
                     rows["syn_fit_mm"].append(float(np.sqrt(np.mean(rs.residual[np.arange(len(dom)), dom] ** 2))))
                     sb = bilabial_frames(d["corpus"], d["take"], fps, len(rs.alpha))
-                    rows["syn_lin_gap"].append(float(lip_gap(blender.linear(rs.alpha[sb]), ms.lip_upper, ms.lip_lower).mean()))
-                    rows["syn_grad_gap"].append(float(lip_gap(blender.blend(rs.alpha[sb]), ms.lip_upper, ms.lip_lower).mean()))
+                    rows["syn_lin_gap"].append(mean_gap(blender.linear(rs.alpha[sb]), ms))
+                    rows["syn_grad_gap"].append(mean_gap(blender.blend(rs.alpha[sb]), ms))
                     ws = np.clip(rs.alpha @ weights_k, 0, 1)
                     rows["syn_vs_solve_rms"].append(float(np.sqrt(((rig.to_arkit(ws) - rig.to_arkit(d["synth_solve"])) ** 2).mean())))
             result["rows"].append({"method": method, "count": count, "keyshapes": counts,

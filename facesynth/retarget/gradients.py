@@ -233,7 +233,7 @@ class GradientBlender:
 
         a = np.asarray(alpha, np.float32)
         with threadpool_limits(1):
-            return self.rest.astype(np.float32) + (a @ self.offsets).reshape(len(a), -1, 3)
+            return self.rest.astype(np.float32) + (a @ self.offsets).reshape(len(a), len(self.rest), 3)
 
     def blend(self, alpha: np.ndarray) -> np.ndarray:
         """(T, V, 3) float32 deformation-gradient blend for alpha (T, K).
