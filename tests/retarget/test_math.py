@@ -253,3 +253,4 @@ def test_blocked_gradient_blend_matches_the_frame_by_frame_formulation():
     blender = GradientBlender(rest, faces, examples, anchor=1e-3, block=13)  # blocks of odd size
     np.testing.assert_allclose(blender.blend(alpha), _reference_blend(rest, faces, examples, 1e-3, alpha), atol=2e-6)
     np.testing.assert_allclose(blender.linear(alpha), rest + np.tensordot(alpha, examples - rest, 1), atol=1e-5)
+    assert blender.blend(alpha[:0]).shape == blender.linear(alpha[:0]).shape == (0, len(rest), 3)
