@@ -159,7 +159,8 @@ def main(argv: list[str]) -> int:
 
     target = builtin_rig()
     ssolve = config.settings("solve")
-    result = {"corpora": {f"c{i}": str(c) for i, c in enumerate(args.corpus)}, "takes": list(takes), "fps": fps, "vertices": int(len(rig.neutral)), "rows": [], "baselines": {}}
+    result = {"corpora": {f"c{i}": str(c) for i, c in enumerate(args.corpus)}, "takes": list(takes), "fps": fps,
+              "vertices": int(len(rig.neutral)), "rows": [], "baselines": {}}
     per = {k: [] for k in ("solve_rms", "solve_corr", "solve_mesh", "deform_mesh", "truth_gap", "solve_gap", "deform_gap",
                            "truth_closed", "solve_closed", "deform_closed", "syn_solve_resid", "syn_solve_gap")}
     for key, d in takes.items():

@@ -3,7 +3,8 @@
 * :func:`nnls_weights`: frames as non-negative combinations of key-shapes (Chuang & Bregler
   Eq. 8, Huang Eq. 5), every frame solved exactly on the key-shapes' K x K Gram matrix instead of
   the D x K system (the same minimizer, D/K times less work), all frames at once by block
-  principal pivoting (:func:`nnls_gram`, about 30 times faster than scipy's NNLS frame by frame).
+  principal pivoting (:func:`nnls_gram`; 3 to 4 times less CPU than scipy's NNLS frame by frame
+  for 7 to 30 key-shapes and 300 frames).
 * :func:`fit_rig_weights`: rig weights in [0, 1] that best reproduce target displacements at some
   vertices (keymorph fitting), exactly with ``scipy.optimize.lsq_linear``.
 * :func:`solve_curves`: the direct facial solve, all frames at once: weights in [0, 1] minimizing
