@@ -251,6 +251,7 @@ def test_blocked_gradient_blend_matches_the_frame_by_frame_formulation():
     alpha[:, 3] = 0.0  # a key-shape no frame uses
     alpha[4] = 0.0
     blender = GradientBlender(rest, faces, examples, anchor=1e-3, block=13)  # blocks of odd size
+    blender.GROUP_FRAMES = 16  # two groups of frames, back-substitutions of 8, 8 and 3 frames
     np.testing.assert_allclose(blender.blend(alpha), _reference_blend(rest, faces, examples, 1e-3, alpha), atol=2e-6)
     np.testing.assert_allclose(blender.linear(alpha), rest + np.tensordot(alpha, examples - rest, 1), atol=1e-5)
     assert blender.blend(alpha[:0]).shape == blender.linear(alpha[:0]).shape == (0, len(rest), 3)
