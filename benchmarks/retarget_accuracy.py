@@ -1,7 +1,12 @@
 """Retargeting onto the built-in rig, scored on the virtual actress (issue 17).
 
     .venv/bin/python benchmarks/retarget_accuracy.py --corpus out/corpus --corpus-h5 out/corpus.h5 \
-        --db out/db.h5 [--takes 6] [--counts 7,14,20,30] > benchmarks/retarget_accuracy.json
+        --db out/db.h5 [--corpus ... --corpus-h5 ... --db ... (more corpora)] [--takes 0] \
+        [--counts 7,14,20,30] > benchmarks/retarget_accuracy.json
+
+Several corpora (e.g. sample corpora of other seeds) pool their held-out takes; key-shapes and
+keymorphs of each come from its own database. Runs about 7 minutes per small-preset corpus on
+a busy two-core machine.
 
 For held-out (``test``) takes, captured through ``facesynth capture``'s core at 30 frames/s,
 against the truth (``groundtruth/<take>_truth.csv``, down-sampled alike; truth mesh =
@@ -12,18 +17,18 @@ rig.evaluate(truth rig weights)):
 * ``mesh_mm``: mean full-mesh vertex error (11,248 vertices, mm) of Gaussian ``deform`` (Eq.
   14-15 on the rig's neutral mesh), the direct solve, linear key-shape retargeting and
   deformation-gradient retargeting;
-* ``lip_closure_mm``: the mean lip gap on the final mesh at the centre of every /p b m/ (truth
-  beside it), and the fraction under 1 mm;
+* lip closure: ``*_gap`` the mean lip gap (mm) on the final mesh at the centre of every /p b m/
+  (truth beside it), ``*_closed`` the fraction of them under 1 mm;
 * rows for both selection methods and key-shape counts; every number with a bootstrap 95%
-  confidence interval over takes.
+  confidence interval over takes (``--takes 0``: every test take of each corpus), and paired
+  differences per take (``diff_*``: the first method minus the second, so intervals that
+  exclude 0 say which is better on these takes).
 
 ``synthesized``: the same held-out sentences synthesized by the DP search (no truth there):
 marker residual of the solve and of the key-shape fit, lip closure on /p b m/ for each
 method, and the RMS difference between the solve's and retargeting's ARKit weights.
 
-``speed``: the whole retargeting of a 10-second clip (300 frames at 30 frames/s; NNLS in every
-emotion, blend, and the deformation-gradient mesh of all 11,248 vertices) after the one-time
-work (polar decompositions and the sparse factorization), timed separately.
+Speed is measured by ``benchmarks/retarget_speed.py``.
 """
 
 from __future__ import annotations
@@ -31,6 +36,7 @@ from __future__ import annotations
 import argparse
 import dataclasses
 import json
+import os
 import sys
 import tempfile
 import time
@@ -54,10 +60,14 @@ BILABIALS = ("p", "b", "m")
 
 
 def boot(values, seed: int = 0, n: int = 2000) -> dict:
+    """Mean over takes and its bootstrap 95% interval; takes without a value (NaN: e.g. no /p b m/
+    in the sentence) are left out, and ``n`` says how many counted."""
     v = np.asarray(values, float)
+    v = v[np.isfinite(v)]
     rng = np.random.default_rng(seed)
     means = v[rng.integers(0, len(v), (n, len(v)))].mean(1)
-    return {"mean": float(v.mean()), "ci95": [float(np.percentile(means, 2.5)), float(np.percentile(means, 97.5))]}
+    return {"mean": float(v.mean()), "ci95": [float(np.percentile(means, 2.5)), float(np.percentile(means, 97.5))],
+            "n": int(len(v))}
 
 
 def lip_gap(vertices: np.ndarray, upper: np.ndarray, lower: np.ndarray) -> np.ndarray:
@@ -66,11 +76,21 @@ def lip_gap(vertices: np.ndarray, upper: np.ndarray, lower: np.ndarray) -> np.nd
     return np.sqrt(((a[:, :, None] - b[:, None]) ** 2).sum(-1)).min(axis=(1, 2))
 
 
+def mean_gap(vertices: np.ndarray, ms) -> float:
+    """Mean lip gap (mm) over the frames given; NaN for none (a sentence without /p b m/)."""
+    return float(lip_gap(vertices, ms.lip_upper, ms.lip_lower).mean()) if len(vertices) else float("nan")
+
+
 def bilabial_frames(corpus: Corpus, take: str, fps: float, n: int) -> np.ndarray:
     i = corpus.takes.name.index(take)
     rows = np.flatnonzero(corpus.phones.take == i)
     centres = [(corpus.phones.start[r] + corpus.phones.end[r]) / 2 for r in rows if corpus.phones.phone[r] in BILABIALS]
     return np.array([f for f in (int(round(c * fps)) for c in centres) if f < n], int)
+
+
+def closed(vertices: np.ndarray, ms) -> float:
+    """Fraction of frames whose lips are closer than 1 mm."""
+    return float((lip_gap(vertices, ms.lip_upper, ms.lip_lower) < 1.0).mean()) if len(vertices) else float("nan")
 
 
 def weight_scores(rig, est: np.ndarray, truth: np.ndarray) -> tuple[float, float]:
@@ -81,58 +101,71 @@ def weight_scores(rig, est: np.ndarray, truth: np.ndarray) -> tuple[float, float
     return rms, corr
 
 
-def main(argv: list[str]) -> int:
-    p = argparse.ArgumentParser()
-    p.add_argument("--corpus", type=Path, required=True)
-    p.add_argument("--corpus-h5", type=Path, required=True)
-    p.add_argument("--db", type=Path, required=True)
-    p.add_argument("--takes", type=int, default=6)
-    p.add_argument("--counts", default="7,14,20,30")
-    p.add_argument("--methods", default="pca,affinity")
-    p.add_argument("--no-speed", action="store_true", help="leave out the speed measurement")
-    args = p.parse_args(argv)
-    config = Config.load()
-    rig = load_face_rig()
-    ms = build_marker_set(rig)
-    corpus = Corpus.read(args.corpus_h5, audio=False)
-    db = MotionDatabase.read(args.db)
-    tests = [n for n, s in zip(db.takes.name, db.takes.split) if s == "test"][: args.takes]
-    tmp = Path(tempfile.mkdtemp())
-    fps = 30.0
-    mesh_v, mesh_f = read_mesh(args.corpus / "face.obj")
-    binding = read_binding(args.corpus / "markers.csv")
+def load_takes(label: str, corpus_dir: Path, corpus_h5: Path, db_path: Path, limit: int, config, tmp: Path,
+               fps: float) -> dict:
+    """Held-out takes of one corpus, captured at ``fps``, with their truth, Gaussian deform and
+    DP synthesis; keyed ``<label>/<take>``."""
+    corpus = Corpus.read(corpus_h5, audio=False)
+    db = MotionDatabase.read(db_path)
+    tests = [n for n, s in zip(db.takes.name, db.takes.split) if s == "test"][: limit or None]
+    mesh_v, mesh_f = read_mesh(corpus_dir / "face.obj")
+    binding = read_binding(corpus_dir / "markers.csv")
     dset = config.settings("deform")
     bound = None
     takes = {}
     for take in tests:
-        cap = tmp / f"{take}.h5"
-        capture.run(args.db, args.corpus_h5, take, cap, config.settings("normalize"), fps)
+        key = f"{label}/{take}"
+        cap = tmp / f"{label}_{take}.h5"
+        capture.run(db_path, corpus_h5, take, cap, config.settings("normalize"), fps)
         motion = Motion.read(cap)
-        truth = read_truth(args.corpus / "groundtruth" / f"{take}_truth.csv")
+        truth = read_truth(corpus_dir / "groundtruth" / f"{take}_truth.csv")
         tw = downsample(truth.rig_weights, db.fps, fps)
         n = min(len(tw), len(motion.markers))
         if bound is None:
             bound = deform.bind(mesh_v, mesh_f, binding, motion.marker_names, dset, "face.obj", "markers.csv")
         gauss, _ = deform.animate(bound, motion.markers[:n], motion.marker_names, motion.reference, None)
-        syn = tmp / f"{take}_syn.h5"
-        synthesize.run(args.db, syn, config.settings("synthesize"), config.settings("ingest"), config.settings("align"),
-                       phones_path=args.corpus / "labels" / f"{take}.TextGrid")
-        takes[take] = {"motion": motion, "truth": tw[:n], "n": n, "gauss": gauss,
-                       "bilabial": bilabial_frames(corpus, take, fps, n), "synth": Motion.read(syn)}
-        print(f"captured {take}", file=sys.stderr)
+        syn = tmp / f"{label}_{take}_syn.h5"
+        synthesize.run(db_path, syn, config.settings("synthesize"), config.settings("ingest"), config.settings("align"),
+                       phones_path=corpus_dir / "labels" / f"{take}.TextGrid")
+        takes[key] = {"take": take, "db": db, "db_path": db_path, "motion": motion, "truth": tw[:n], "n": n,
+                      "gauss": gauss, "bilabial": bilabial_frames(corpus, take, fps, n), "synth": Motion.read(syn),
+                      "corpus": corpus}
+        print(f"captured {key}", file=sys.stderr, flush=True)
+    return takes
+
+
+def main(argv: list[str]) -> int:
+    p = argparse.ArgumentParser()
+    p.add_argument("--corpus", type=Path, action="append", required=True, help="corpus folder (repeatable)")
+    p.add_argument("--corpus-h5", type=Path, action="append", required=True, help="its ingested corpus.h5")
+    p.add_argument("--db", type=Path, action="append", required=True, help="its motion database")
+    p.add_argument("--takes", type=int, default=0, help="held-out takes per corpus to score (0: all)")
+    p.add_argument("--counts", default="7,14,20,30")
+    p.add_argument("--methods", default="pca,affinity")
+    args = p.parse_args(argv)
+    if not len(args.corpus) == len(args.corpus_h5) == len(args.db):
+        p.error("give --corpus, --corpus-h5 and --db once per corpus")
+    config = Config.load()
+    rig = load_face_rig()
+    ms = build_marker_set(rig)
+    tmp = Path(tempfile.mkdtemp())
+    fps = 30.0
+    started = time.perf_counter()
+    takes = {}
+    for i, (corpus_dir, corpus_h5, db_path) in enumerate(zip(args.corpus, args.corpus_h5, args.db)):
+        takes.update(load_takes(f"c{i}", corpus_dir, corpus_h5, db_path, args.takes, config, tmp, fps))
 
     from facesynth.retarget.rig import builtin_rig
 
     target = builtin_rig()
     ssolve = config.settings("solve")
-    result = {"takes": tests, "fps": fps, "vertices": int(len(rig.neutral)), "rows": [], "baselines": {}}
+    result = {"corpora": {f"c{i}": str(c) for i, c in enumerate(args.corpus)}, "takes": list(takes), "fps": fps,
+              "vertices": int(len(rig.neutral)), "rows": [], "baselines": {}}
     per = {k: [] for k in ("solve_rms", "solve_corr", "solve_mesh", "deform_mesh", "truth_gap", "solve_gap", "deform_gap",
-                           "syn_solve_resid", "syn_solve_gap")}
-    solved = {}
-    for take, d in takes.items():
-        w, _, _ = solve.solve(d["motion"], target, ssolve, take)
+                           "truth_closed", "solve_closed", "deform_closed", "syn_solve_resid", "syn_solve_gap")}
+    for key, d in takes.items():
+        w, _, _ = solve.solve(d["motion"], target, ssolve, key)
         w = w[: d["n"]]
-        solved[take] = w
         rms, corr = weight_scores(rig, w, d["truth"])
         tv, sv = rig.evaluate(d["truth"]), rig.evaluate(w)
         per["solve_rms"].append(rms)
@@ -140,90 +173,81 @@ def main(argv: list[str]) -> int:
         per["solve_mesh"].append(float(np.sqrt(((sv - tv) ** 2).sum(-1)).mean()))
         per["deform_mesh"].append(float(np.sqrt(((d["gauss"] - tv) ** 2).sum(-1)).mean()))
         b = d["bilabial"]
-        per["truth_gap"].append(float(lip_gap(tv[b], ms.lip_upper, ms.lip_lower).mean()))
-        per["solve_gap"].append(float(lip_gap(sv[b], ms.lip_upper, ms.lip_lower).mean()))
-        per["deform_gap"].append(float(lip_gap(d["gauss"][b], ms.lip_upper, ms.lip_lower).mean()))
-        ws, rs, _ = solve.solve(d["synth"], target, ssolve, take)
+        per["truth_gap"].append(mean_gap(tv[b], ms))
+        per["solve_gap"].append(mean_gap(sv[b], ms))
+        per["deform_gap"].append(mean_gap(d["gauss"][b], ms))
+        per["truth_closed"].append(closed(tv[b], ms))
+        per["solve_closed"].append(closed(sv[b], ms))
+        per["deform_closed"].append(closed(d["gauss"][b], ms))
+        ws, rs, _ = solve.solve(d["synth"], target, ssolve, key)
         d["synth_solve"] = ws
         per["syn_solve_resid"].append(float(np.sqrt(np.nanmean(rs**2))))
-        sb = bilabial_frames(corpus, take, fps, len(ws))
-        per["syn_solve_gap"].append(float(lip_gap(rig.evaluate(ws[sb]), ms.lip_upper, ms.lip_lower).mean()))
+        sb = bilabial_frames(d["corpus"], d["take"], fps, len(ws))
+        per["syn_solve_gap"].append(mean_gap(rig.evaluate(ws[sb]), ms))
     result["baselines"] = {k: boot(v) for k, v in per.items()}
-    print("baselines done", file=sys.stderr)
+    result["baselines"]["diff_solve_vs_deform_mesh"] = boot(np.subtract(per["solve_mesh"], per["deform_mesh"]))
+    print("baselines done", file=sys.stderr, flush=True)
 
     kss = config.settings("keyshapes")
     rset = config.settings("retarget")
     for method in args.methods.split(","):
         for count in [int(c) for c in args.counts.split(",")]:
-            t0 = time.perf_counter()
-            ks = keyshapes.build(db, dataclasses.replace(kss, method=method, count=count), method, count, str(args.db))
-            select_s = time.perf_counter() - t0
-            weights_k, meshes_k = retarget.keymorphs(ks, target, None, kss.keymorph_ridge, "keyshapes")
-            t0 = time.perf_counter()
-            blender = GradientBlender(target.neutral, target.faces, meshes_k, rset.anchor)
-            factor_s = time.perf_counter() - t0
-            rows = {k: [] for k in ("rms", "corr", "lin_mesh", "grad_mesh", "lin_gap", "grad_gap", "fit_mm",
-                                    "syn_fit_mm", "syn_lin_gap", "syn_grad_gap", "syn_vs_solve_rms")}
-            for take, d in takes.items():
-                r = retarget.retarget(d["motion"], ks, rset, None, take)
-                alpha = r.alpha[: d["n"]]
-                w = np.clip(alpha @ weights_k, 0, 1)
-                rms, corr = weight_scores(rig, w, d["truth"])
-                tv = rig.evaluate(d["truth"])
-                lin = blender.linear(alpha)
-                grad = blender.blend(alpha)
-                b = d["bilabial"]
-                rows["rms"].append(rms)
-                rows["corr"].append(corr)
-                rows["lin_mesh"].append(float(np.sqrt(((lin - tv) ** 2).sum(-1)).mean()))
-                rows["grad_mesh"].append(float(np.sqrt(((grad - tv) ** 2).sum(-1)).mean()))
-                rows["lin_gap"].append(float(lip_gap(lin[b], ms.lip_upper, ms.lip_lower).mean()))
-                rows["grad_gap"].append(float(lip_gap(grad[b], ms.lip_upper, ms.lip_lower).mean()))
-                dom = r.emotion_weights.argmax(1)
-                rows["fit_mm"].append(float(np.sqrt(np.mean(r.residual[np.arange(len(dom)), dom] ** 2))))
-                rs = retarget.retarget(d["synth"], ks, rset, None, take)
-                dom = rs.emotion_weights.argmax(1)
-                rows["syn_fit_mm"].append(float(np.sqrt(np.mean(rs.residual[np.arange(len(dom)), dom] ** 2))))
-                sb = bilabial_frames(corpus, take, fps, len(rs.alpha))
-                rows["syn_lin_gap"].append(float(lip_gap(blender.linear(rs.alpha[sb]), ms.lip_upper, ms.lip_lower).mean()))
-                rows["syn_grad_gap"].append(float(lip_gap(blender.blend(rs.alpha[sb]), ms.lip_upper, ms.lip_lower).mean()))
-                ws = np.clip(rs.alpha @ weights_k, 0, 1)
-                rows["syn_vs_solve_rms"].append(float(np.sqrt(((rig.to_arkit(ws) - rig.to_arkit(d["synth_solve"])) ** 2).mean())))
-            result["rows"].append({"method": method, "count": count,
-                                   "keyshapes": {e: k.count for e, k in ks.emotions.items()},
-                                   "reconstruction_rms_mm": {e: float(k.rms) for e, k in ks.emotions.items()},
-                                   "select_s": select_s, "factorize_s": factor_s,
-                                   **{k: boot(v) for k, v in rows.items()}})
-            print(f"{method} {count} done", file=sys.stderr)
+            rows = {k: [] for k in ("rms", "corr", "lin_mesh", "grad_mesh", "lin_gap", "grad_gap", "lin_closed",
+                                    "grad_closed", "fit_mm", "syn_fit_mm", "syn_lin_gap", "syn_grad_gap", "syn_vs_solve_rms")}
+            counts, recon, select_s, factor_s = {}, {}, [], []
+            for db_path in args.db:  # key-shapes and keymorphs from each corpus's own database
+                mine = {key: d for key, d in takes.items() if d["db_path"] == db_path}
+                if not mine:
+                    continue
+                db = next(iter(mine.values()))["db"]
+                t0 = time.perf_counter()
+                ks = keyshapes.build(db, dataclasses.replace(kss, method=method, count=count), method, count, str(db_path))
+                select_s.append(time.perf_counter() - t0)
+                weights_k, meshes_k = retarget.keymorphs(ks, target, None, kss.keymorph_ridge, "keyshapes")
+                t0 = time.perf_counter()
+                blender = GradientBlender(target.neutral, target.faces, meshes_k, rset.anchor)
+                factor_s.append(time.perf_counter() - t0)
+                counts[str(db_path)] = {e: k.count for e, k in ks.emotions.items()}
+                recon[str(db_path)] = {e: float(k.rms) for e, k in ks.emotions.items()}
+                for key, d in mine.items():
+                    r = retarget.retarget(d["motion"], ks, rset, None, key)
+                    alpha = r.alpha[: d["n"]]
+                    w = np.clip(alpha @ weights_k, 0, 1)
+                    rms, corr = weight_scores(rig, w, d["truth"])
+                    tv = rig.evaluate(d["truth"])
+                    lin = blender.linear(alpha)
+                    grad = blender.blend(alpha)
+                    b = d["bilabial"]
+                    rows["rms"].append(rms)
+                    rows["corr"].append(corr)
+                    rows["lin_mesh"].append(float(np.sqrt(((lin - tv) ** 2).sum(-1)).mean()))
+                    rows["grad_mesh"].append(float(np.sqrt(((grad - tv) ** 2).sum(-1)).mean()))
+                    rows["lin_gap"].append(mean_gap(lin[b], ms))
+                    rows["grad_gap"].append(mean_gap(grad[b], ms))
+                    rows["lin_closed"].append(closed(lin[b], ms))
+                    rows["grad_closed"].append(closed(grad[b], ms))
+                    dom = r.emotion_weights.argmax(1)
+                    rows["fit_mm"].append(float(np.sqrt(np.mean(r.residual[np.arange(len(dom)), dom] ** 2))))
+                    rs = retarget.retarget(d["synth"], ks, rset, None, key)
+                    dom = rs.emotion_weights.argmax(1)
+                    rows["syn_fit_mm"].append(float(np.sqrt(np.mean(rs.residual[np.arange(len(dom)), dom] ** 2))))
+                    sb = bilabial_frames(d["corpus"], d["take"], fps, len(rs.alpha))
+                    rows["syn_lin_gap"].append(mean_gap(blender.linear(rs.alpha[sb]), ms))
+                    rows["syn_grad_gap"].append(mean_gap(blender.blend(rs.alpha[sb]), ms))
+                    ws = np.clip(rs.alpha @ weights_k, 0, 1)
+                    rows["syn_vs_solve_rms"].append(float(np.sqrt(((rig.to_arkit(ws) - rig.to_arkit(d["synth_solve"])) ** 2).mean())))
+            result["rows"].append({"method": method, "count": count, "keyshapes": counts,
+                                   "reconstruction_rms_mm": recon, "select_s": select_s, "factorize_s": factor_s,
+                                   **{k: boot(v) for k, v in rows.items()},
+                                   "diff_rms_vs_solve": boot(np.subtract(rows["rms"], per["solve_rms"])),
+                                   "diff_corr_vs_solve": boot(np.subtract(rows["corr"], per["solve_corr"])),
+                                   "diff_lin_vs_solve_mesh": boot(np.subtract(rows["lin_mesh"], per["solve_mesh"])),
+                                   "diff_grad_vs_lin_mesh": boot(np.subtract(rows["grad_mesh"], rows["lin_mesh"])),
+                                   "diff_grad_vs_lin_gap": boot(np.subtract(rows["grad_gap"], rows["lin_gap"]))})
+            print(f"{method} {count} done", file=sys.stderr, flush=True)
 
-    result["load_average"] = list(__import__("os").getloadavg())
-    if args.no_speed:
-        json.dump(result, sys.stdout, indent=1)
-        print()
-        return 0
-    # Speed: a 10-second clip, after the one-time work.
-    take = tests[0]
-    motion = takes[take]["motion"]
-    reps = int(np.ceil(300 / len(motion.markers)))
-    clip = dataclasses.replace(motion, markers=np.concatenate([motion.markers] * reps)[:300])
-    ks = keyshapes.build(db, dataclasses.replace(kss, method="pca", count=20), "pca", 20, str(args.db))
-    weights_k, meshes_k = retarget.keymorphs(ks, target, None, kss.keymorph_ridge, "keyshapes")
-    t0 = time.perf_counter()
-    blender = GradientBlender(target.neutral, target.faces, meshes_k, rset.anchor)
-    once = time.perf_counter() - t0
-    t0 = time.perf_counter()
-    r = retarget.retarget(clip, ks, rset, None, take)
-    t1 = time.perf_counter()
-    lin = blender.linear(r.alpha)
-    t2 = time.perf_counter()
-    grad = blender.blend(r.alpha)
-    t3 = time.perf_counter()
-    w, _, it = solve.solve(clip, target, ssolve, take)
-    t4 = time.perf_counter()
-    result["speed"] = {"frames": 300, "keyshapes": int(r.alpha.shape[1]), "one_time_s": once, "nnls_and_blend_s": t1 - t0,
-                       "linear_mesh_s": t2 - t1, "gradient_mesh_s": t3 - t2,
-                       "retarget_total_gradient_s": t3 - t0, "retarget_total_linear_s": t2 - t0,
-                       "direct_solve_s": t4 - t3, "direct_solve_iterations": it}
+    result["runtime_s"] = time.perf_counter() - started
+    result["load_average"] = list(os.getloadavg())
     json.dump(result, sys.stdout, indent=1)
     print()
     return 0

@@ -69,7 +69,8 @@ def build(db: MotionDatabase, settings: KeyshapesSettings, method: str, count: i
         emotions[emotion] = EmotionKeyShapes(
             key.astype(np.float32) + db.reference, db.coeffs[rows[sel.frames]].astype(np.float32), rows[sel.frames],
             names, keymorphs.astype(np.float32), sel.counts, sel.errors, float(sel.errors[-1]))
-    solver = {"solver": "scipy.optimize.nnls on the Cholesky factor of the key-shapes' Gram matrix",
+    solver = {"solver": "block principal pivoting on the key-shapes' Gram matrix "
+                        "(scipy.optimize.nnls where markers are missing)",
               "frames": "displacements from reference, mm", "keymorph_fit": "scipy.optimize.lsq_linear bvls, bounds [0, 1]",
               "keymorph_ridge": settings.keymorph_ridge}
     return KeyShapes(emotions, list(db.marker_names), db.reference, method, count, solver, rig.name, rig.sha256,

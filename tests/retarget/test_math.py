@@ -25,6 +25,28 @@ def test_nnls_on_the_gram_factor_matches_scipy_on_the_full_system():
     np.testing.assert_allclose(rms, np.sqrt(((frames - w @ shapes) ** 2).sum(1) / 20))
 
 
+@pytest.mark.parametrize("stragglers", [0, 8])  # 0: block pivoting to the end, no scipy finish
+def test_batched_block_pivoting_nnls_matches_scipy_frame_by_frame(stragglers):
+    # Many frames, key-shapes that overlap (a near-duplicate pair) and sparse true mixtures: the
+    # batched solver must land on scipy's minimizer for every frame.
+    from facesynth.retarget.solve import nnls_gram
+
+    rng = np.random.default_rng(10)
+    shapes = rng.normal(size=(25, 90)) + 1.0
+    shapes[7] = shapes[3] + rng.normal(scale=1e-3, size=90)
+    mix = rng.uniform(0, 1, (300, 25)) * (rng.uniform(size=(300, 25)) < 0.2)
+    frames = mix @ shapes + rng.normal(scale=0.5, size=(300, 90))
+    frames[:50] = rng.normal(scale=3.0, size=(50, 90))  # frames far from the cone: many zeros
+    w = nnls_gram(shapes @ shapes.T, frames @ shapes.T, stragglers=stragglers)
+    ref = np.array([nnls(shapes.T, f, maxiter=2000)[0] for f in frames])
+    assert (w >= 0).all()
+    obj = ((frames - w @ shapes) ** 2).sum(1)
+    ref_obj = ((frames - ref @ shapes) ** 2).sum(1)
+    np.testing.assert_allclose(obj, ref_obj, rtol=1e-9, atol=1e-9)
+    keep = np.setdiff1d(np.arange(25), [3, 7])  # the near-duplicate pair may split its weight differently
+    np.testing.assert_allclose(w[:, keep], ref[:, keep], atol=1e-6)
+
+
 def test_nnls_recovers_non_negative_mixtures_and_skips_missing_coordinates():
     rng = np.random.default_rng(1)
     shapes = rng.normal(size=(4, 30))
@@ -152,3 +174,84 @@ def test_gradient_blending_keeps_lengths_where_linear_blending_shrinks_a_rotatio
     assert length(rest) == pytest.approx(6.0)
     assert length(lin) == pytest.approx(6.0 * np.cos(np.pi / 4), rel=1e-3)
     assert length(grad) == pytest.approx(6.0, rel=5e-3)  # the small pull toward the linear blend costs ~0.2%
+
+
+def test_newton_polar_decomposition_matches_the_svd_route():
+    from facesynth.retarget.gradients import _polar, _polar_svd
+    from scipy.spatial.transform import Rotation
+
+    rng = np.random.default_rng(7)
+    n = 400
+    rot = Rotation.from_rotvec(rng.normal(size=(n, 3)) * rng.uniform(0, 1.2, (n, 1))).as_matrix()
+    rot[:5] = Rotation.from_rotvec(rng.normal(size=(5, 3)) * 1e-7).as_matrix()  # tiny rotations
+    rot[5:10] = Rotation.from_rotvec(np.eye(3)[rng.integers(0, 3, 5)] * 3.0).as_matrix()  # near pi
+    q = Rotation.random(n, random_state=8).as_matrix()
+    stretch = q @ (rng.uniform(0.3, 3.0, (n, 3))[:, :, None] * np.swapaxes(q, 1, 2))
+    f = rot @ stretch
+    f[10] = np.diag([1.0, 1.0, -0.5])  # inverted
+    f[11] = np.diag([1.0, 1.0, 0.0])  # collapsed
+    rv, s = _polar(f.reshape(20, 20, 3, 3))
+    ref_rv, ref_s = _polar_svd(f)
+    np.testing.assert_allclose(rv.reshape(-1, 3), ref_rv, atol=1e-10)
+    np.testing.assert_allclose(s.reshape(-1, 3, 3), ref_s, atol=1e-10)
+    np.testing.assert_allclose(rv.reshape(-1, 3)[12:], Rotation.from_matrix(rot[12:]).as_rotvec(), atol=1e-10)
+
+
+def _grid(n: int = 7):
+    """An n x n grid of vertices 1 mm apart in the z = 0 plane, two triangles per cell."""
+    xs, ys = np.meshgrid(np.arange(n, dtype=float), np.arange(n, dtype=float))
+    rest = np.stack([xs.ravel(), ys.ravel(), np.zeros(n * n)], 1)
+    faces = []
+    for i in range(n - 1):
+        for j in range(n - 1):
+            a, b, c, d = i * n + j, i * n + j + 1, (i + 1) * n + j, (i + 1) * n + j + 1
+            faces += [(a, b, d), (a, d, c)]
+    return rest, np.array(faces)
+
+
+def _reference_blend(rest, faces, examples, anchor, alpha):
+    """The formulation of the module docstring written out frame by frame: SVD polar factors,
+    scipy's rotations, one sparse solve per frame (float64 throughout)."""
+    from scipy import sparse
+    from scipy.sparse.linalg import spsolve
+    from scipy.spatial.transform import Rotation
+
+    from facesynth.retarget.gradients import _frames, _polar_svd
+
+    rf = _frames(rest, faces)
+    grads = _frames(examples, faces) @ np.linalg.inv(rf)
+    rv, s = _polar_svd(grads.reshape(-1, 3, 3))
+    rv, s = rv.reshape(len(examples), -1, 3), s.reshape(len(examples), -1, 3, 3)
+    n_f, n_v = len(faces), len(rest)
+    e = sparse.lil_matrix((2 * n_f, n_v))
+    for f, (a, b, c) in enumerate(faces):
+        e[2 * f, a], e[2 * f, b], e[2 * f + 1, a], e[2 * f + 1, c] = -1, 1, -1, 1
+    e = e.tocsr()
+    lam = anchor * float((rf[:, :, :2] ** 2).sum(1).mean())
+    normal = (e.T @ e + lam * sparse.identity(n_v)).tocsc()
+    out = []
+    for w in alpha:
+        rot = Rotation.from_rotvec(np.tensordot(w, rv, 1)).as_matrix()
+        stretch = np.eye(3) + np.tensordot(w, s - np.eye(3), 1)
+        target = (rot @ stretch @ rf[:, :, :2]).transpose(0, 2, 1).reshape(2 * n_f, 3)
+        lin = rest + np.tensordot(w, examples - rest, 1)
+        out.append(spsolve(normal, e.T @ target + lam * lin))
+    return np.array(out)
+
+
+def test_blocked_gradient_blend_matches_the_frame_by_frame_formulation():
+    from scipy.spatial.transform import Rotation
+
+    rest, faces = _grid()
+    rng = np.random.default_rng(9)
+    bend = Rotation.from_rotvec([0, -1.2, 0]).apply(rest - [3, 0, 0]) + [3, 0, 0]
+    examples = np.stack([rest + rng.normal(scale=0.2, size=rest.shape), bend,
+                         rest * [1.3, 0.8, 1.0], rest + rng.normal(scale=0.1, size=rest.shape)])
+    alpha = rng.uniform(0, 1, (19, 4))  # more frames than one back-substitution takes
+    alpha[:, 3] = 0.0  # a key-shape no frame uses
+    alpha[4] = 0.0
+    blender = GradientBlender(rest, faces, examples, anchor=1e-3, block=13)  # blocks of odd size
+    blender.GROUP_FRAMES = 16  # two groups of frames, back-substitutions of 8, 8 and 3 frames
+    np.testing.assert_allclose(blender.blend(alpha), _reference_blend(rest, faces, examples, 1e-3, alpha), atol=2e-6)
+    np.testing.assert_allclose(blender.linear(alpha), rest + np.tensordot(alpha, examples - rest, 1), atol=1e-5)
+    assert blender.blend(alpha[:0]).shape == blender.linear(alpha[:0]).shape == (0, len(rest), 3)
