@@ -31,6 +31,10 @@ from ..config import SynthesizeSettings
 
 #: Pivots of the cheap lower and upper bounds (triangle inequality of the mixed norm).
 PIVOTS = 4
+#: Work-group size of ``pruned_columns``, the same at every launch: PoCL compiles a kernel
+#: once per work-group size, so a size that followed the column count (min(64, columns))
+#: cost a compile at the first launch of every new size, about 1 s in a fresh process.
+LOCAL_SIZE = 16
 
 
 @dataclass
@@ -349,7 +353,7 @@ class OpenCLPairs:
         self.cl, self.ctx, self.queue, self.tc = cl, context(), queue(), tc
         f = tc.f
         dims8, markers = -(-f.dsc_out.shape[1] // 8), f.first_pos.shape[1] // 3
-        defines = dict(DIMS8=dims8, MQ=-(-markers // 8), PIVOTS=PIVOTS)
+        defines = dict(DIMS8=dims8, MQ=-(-markers // 8), PIVOTS=tc.row_lp.shape[1])
         self.block_kernel = kernel("pair_costs", "tc_block", **defines)
         self.pruned_kernel = kernel("pair_costs", "pruned_columns", **defines)
         up = self.upload
@@ -398,7 +402,7 @@ class OpenCLPairs:
         for a in range(0, len(rows), step):
             r = rows[a : a + step]
             buf = cl.Buffer(self.ctx, cl.mem_flags.WRITE_ONLY, 4 * len(r) * len(cols))
-            local = (min(64, len(cols)), 1)
+            local = (LOCAL_SIZE, 1)
             size = (-(-len(cols) // local[0]) * local[0], len(r))
             self.block_kernel(self.queue, size, local, *self.features, self.upload(r), cols_buf,
                               np.int32(len(r)), np.int32(len(cols)), buf)
@@ -430,7 +434,7 @@ class OpenCLPairs:
                 cl.enqueue_copy(self.queue, buf, a, is_blocking=False)
         best = np.empty(n_cols, np.float32)
         evals = np.empty(n_cols, np.int32)
-        local = min(64, n_cols)
+        local = LOCAL_SIZE
         self.pruned_kernel(self.queue, (-(-n_cols // local) * local,), (local,), *self.features, *self.pivots,
                            np.float32(self.slack), rows_buf, phi_buf, np.int32(len(rows)), cols_buf, init_buf,
                            np.int32(n_cols), np.int32(bool(backward)), best_buf, evals_buf)

@@ -27,7 +27,7 @@ Per step t, with ``phi_{t-1}`` exact on the live states (dead states are +inf):
 Every kill is strict by a margin of 1e-4 relative plus 1e-3 absolute, far above float32
 rounding, so a state that ties on the dense DP's optimal paths is never removed; ties then
 resolve as in the dense DP (lowest index, in the final argmin and in the backtracking, which
-recomputes TC along the path over the live rows). Weights that weaken the bounds (a zero
+recomputes TC along the path over the rows that can attain the minimum, on the host). Weights that weaken the bounds (a zero
 PNT, say) leave more states alive: slower, never inexact.
 """
 
@@ -181,12 +181,21 @@ def dp_pruned(tc: TransitionCosts, obs: np.ndarray, keep_last: bool = False) -> 
     path = np.empty(t_count, np.int64)
     path[-1] = int(np.argmin(phi[-1]))
     for t in range(t_count - 1, 0, -1):
-        rows = np.nonzero(np.isfinite(phi[t - 1]))[0]
-        values = np.full(n, np.inf, np.float32)
-        values[rows] = phi[t - 1, rows] + tc.column(int(path[t]), rows)
-        stats.pairs += len(rows)
-        path[t - 1] = int(np.argmin(values))
+        path[t - 1] = _argmin_predecessor(tc, phi[t - 1], int(path[t]), phi[t, path[t]], stats)
     return DpResult(float(phi[-1, path[-1]]), path, phi), stats
+
+
+def _argmin_predecessor(tc: TransitionCosts, prev: np.ndarray, j: int, target: np.float32, stats: PruneStats) -> int:
+    """argmin_i (prev[i] + TC(i, j)), lowest index on ties (``prev``: (N,) float32 phi of the
+    step before, +inf on pruned states; ``target`` = phi_t(j)). Only rows with ``prev[i] <=
+    target`` can attain the minimum: it is at most phi_t(j) (obs >= 0 and rounding is
+    monotone) and every other row's value is at least its ``prev`` (TC >= 0), strictly above.
+    So few rows are left, and their costs are computed on the host (bit-identical to the
+    kernel), without a device round trip per step."""
+    rows = np.nonzero(prev <= target)[0]
+    stats.pairs += len(rows)
+    values = prev[rows] + tc.block_numpy(rows, np.array([j]))[:, 0]
+    return int(rows[np.argmin(values)])
 
 
 def _after(tc: TransitionCosts, live: np.ndarray, values: np.ndarray, last: bool) -> np.ndarray:
