@@ -145,11 +145,15 @@ __kernel void tc_block(FEATURE_PARAMS,
 // is skipped without computing its cost. Pairs of Table I rules 1 and 4 are left to init
 // (the captured link costs 0; rule 4 costs alpha1 PNT from every node). The minimum is the
 // same float32 value as the dense min over all rows; evals[c] counts the pair costs computed.
-// pivots: row_lp/row_lv[i * PIVOTS + q] = mixed-norm distance of node i's last position /
-// velocity from pivot q; col_fp/col_fv likewise for first position / velocity.
+// What the scan needs of each row comes gathered in row order by the host, so the scan reads
+// it front to back: row_p/row_v[r * PIVOTS + q] = pivot distances of rows[r] (forward: of
+// its last position / velocity; backward: of its first), row_vis[r] = its viseme (forward)
+// or its predecessor's viseme (backward), row_pre[r] = its predecessor (backward only).
+// col_p/col_v[c * PIVOTS + q] = those of cols[c] (forward: first; backward: last).
 __kernel void pruned_columns(FEATURE_PARAMS,
-                             __global const float *row_lp, __global const float *row_lv,
-                             __global const float *col_fp, __global const float *col_fv, const float slack,
+                             __global const float *row_p, __global const float *row_v,
+                             __global const int *row_vis, __global const int *row_pre,
+                             __global const float *col_p, __global const float *col_v, const float slack,
                              __global const int *rows, __global const float *phi, const int n_rows,
                              __global const int *cols, __global const float *init, const int n_cols,
                              const int backward, __global float *best_out, __global int *evals_out)
@@ -158,34 +162,33 @@ __kernel void pruned_columns(FEATURE_PARAMS,
     if (c >= n_cols) return;
     const int me = cols[c];
     const int me_pre = pre[me];
+    const int me_vis = backward ? vis[me] : pre_vis[me];
     float best = init[c];
     int evals = 0;
     float mq_p[PIVOTS], mq_v[PIVOTS];
     for (int q = 0; q < PIVOTS; ++q) {
-        mq_p[q] = backward ? row_lp[(size_t)me * PIVOTS + q] : col_fp[(size_t)me * PIVOTS + q];
-        mq_v[q] = backward ? row_lv[(size_t)me * PIVOTS + q] : col_fv[(size_t)me * PIVOTS + q];
+        mq_p[q] = col_p[(size_t)c * PIVOTS + q];
+        mq_v[q] = col_v[(size_t)c * PIVOTS + q];
     }
-    __global const float *other_p = backward ? col_fp : row_lp;
-    __global const float *other_v = backward ? col_fv : row_lv;
     for (int r = 0; r < n_rows; ++r) {
         const float p = phi[r];
         if (p >= best) break;
         const int other = rows[r];
         const int i = backward ? me : other;
-        const int j = backward ? other : me;
-        const int pj = backward ? pre[other] : me_pre;
+        const int pj = backward ? row_pre[r] : me_pre;
         if (pj == i || pj < 0) continue;  // rules 1 and 4 are in init
         float lp = 0.0f, lv = 0.0f;
         for (int q = 0; q < PIVOTS; ++q) {
-            const float dp = other_p[(size_t)other * PIVOTS + q] - mq_p[q];
-            const float dv = other_v[(size_t)other * PIVOTS + q] - mq_v[q];
+            const float dp = row_p[(size_t)r * PIVOTS + q] - mq_p[q];
+            const float dv = row_v[(size_t)r * PIVOTS + q] - mq_v[q];
             const float ap = dp < 0.0f ? -dp : dp;
             const float av = dv < 0.0f ? -dv : dv;
             lp = ap > lp ? ap : lp;
             lv = av > lv ? av : lv;
         }
-        const float lb = ((vis[i] != pre_vis[j] ? pnt : 0.0f) + a3 * lp + lv) * 0.9999f - slack;
+        const float lb = ((row_vis[r] != me_vis ? pnt : 0.0f) + a3 * lp + lv) * 0.9999f - slack;
         if (p + lb >= best) continue;
+        const int j = backward ? other : me;
         // best - p rounds by at most 2^-24 best (costs are >= 0); the limit allows for that
         const float v = p + pair_tc_below(i, j, (best - p) + best * 2.4e-7f, slack, PAIR_ARGS);
         best = v < best ? v : best;

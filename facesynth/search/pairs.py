@@ -165,9 +165,12 @@ def _gap_lanes(last: np.ndarray, first: np.ndarray) -> np.ndarray:
 def mixed_norms(a: np.ndarray, pivots: np.ndarray) -> np.ndarray:
     """sum_k || a[n, k] - pivots[q, k] || over 3-vectors k: (N, Q) float32 (a: (N, 3M), pivots (Q, 3M))."""
     out = np.empty((len(a), len(pivots)), np.float32)
-    for q, p in enumerate(pivots):
-        d = (a - p[None]).reshape(len(a), -1, 3).astype(np.float64)
-        out[:, q] = np.sqrt((d * d).sum(-1)).sum(-1)
+    a = np.asarray(a, np.float32)
+    step = 4096
+    for q, p in enumerate(np.asarray(pivots, np.float32)):
+        for s in range(0, len(a), step):  # float32 differences and norms, float64 sums: 1e-6 relative
+            d = (a[s : s + step] - p[None]).reshape(min(step, len(a) - s), -1, 3)
+            out[s : s + step, q] = np.sqrt(np.einsum("nmk,nmk->nm", d, d)).sum(-1, dtype=np.float64)
     return out
 
 
@@ -379,7 +382,6 @@ class OpenCLPairs:
                          up(f.viseme.astype(np.int32)), up(tc.pre.astype(np.int32)),
                          up(tc.pre_viseme.astype(np.int32)),
                          np.float32(tc.s.alpha2), np.float32(tc.s.alpha3), np.float32(tc.s.pnt), tc.a1pnt]
-        self.pivots = [up(tc.row_lp), up(tc.row_lv), up(tc.col_fp), up(tc.col_fv)]
         # Absolute slack of the kernel's cheap lower bound: float32 rounding of the stored pivot
         # distances and of the computed sums, far below any cost that matters.
         self.slack = 1e-4 * (tc.s.alpha3 * (float(tc.row_lp.max(initial=0)) + float(tc.col_fp.max(initial=0)))
@@ -410,11 +412,15 @@ class OpenCLPairs:
         return out
 
     def _scratch(self, n: int):
-        """Device buffers for one step (rows, phi, cols, init, best, evals) of n entries, reused."""
+        """Device buffers for one step, reused: rows, phi, cols, init, best, evals, row and
+        column visemes / predecessors (n entries each), then the gathered pivot distances of
+        rows and columns (n * pivots entries each)."""
         if getattr(self, "_capacity", 0) < n:
             cl, mf = self.cl, self.cl.mem_flags
             self._capacity = max(n, 1024)
-            self._buffers = [cl.Buffer(self.ctx, mf.READ_WRITE, 4 * self._capacity) for _ in range(6)]
+            pivots = self.tc.row_lp.shape[1]
+            self._buffers = ([cl.Buffer(self.ctx, mf.READ_WRITE, 4 * self._capacity) for _ in range(8)]
+                             + [cl.Buffer(self.ctx, mf.READ_WRITE, 4 * self._capacity * pivots) for _ in range(4)])
         return self._buffers
 
     def column_minima(self, rows: np.ndarray, phi: np.ndarray, cols: np.ndarray, init: np.ndarray,
@@ -426,16 +432,31 @@ class OpenCLPairs:
         n_cols = len(cols)
         if n_cols == 0:
             return np.zeros(0, np.float32), 0
-        host = [np.ascontiguousarray(rows, np.int32), np.ascontiguousarray(phi, np.float32),
-                np.ascontiguousarray(cols, np.int32), np.ascontiguousarray(init, np.float32)]
-        rows_buf, phi_buf, cols_buf, init_buf, best_buf, evals_buf = self._scratch(max(len(rows), n_cols))
-        for buf, a in zip((rows_buf, phi_buf, cols_buf, init_buf), host):
+        tc = self.tc
+        rows = np.asarray(rows, np.int64)
+        cols = np.asarray(cols, np.int64)
+        # what the scan reads of each row, gathered in row order (the kernel's comment)
+        if backward:
+            row_p, row_v, col_p, col_v = tc.col_fp[rows], tc.col_fv[rows], tc.row_lp[cols], tc.row_lv[cols]
+            row_vis, row_pre = tc.pre_viseme[rows], tc.pre[rows]
+        else:
+            row_p, row_v, col_p, col_v = tc.row_lp[rows], tc.row_lv[rows], tc.col_fp[cols], tc.col_fv[cols]
+            row_vis, row_pre = tc.f.viseme[rows], np.zeros(0, np.int32)
+        host = [rows.astype(np.int32), np.ascontiguousarray(phi, np.float32), cols.astype(np.int32),
+                np.ascontiguousarray(init, np.float32), row_vis.astype(np.int32), row_pre.astype(np.int32),
+                np.ascontiguousarray(row_p, np.float32), np.ascontiguousarray(row_v, np.float32),
+                np.ascontiguousarray(col_p, np.float32), np.ascontiguousarray(col_v, np.float32)]
+        (rows_buf, phi_buf, cols_buf, init_buf, best_buf, evals_buf, vis_buf, pre_buf,
+         row_p_buf, row_v_buf, col_p_buf, col_v_buf) = self._scratch(max(len(rows), n_cols))
+        for buf, a in zip((rows_buf, phi_buf, cols_buf, init_buf, vis_buf, pre_buf, row_p_buf, row_v_buf,
+                           col_p_buf, col_v_buf), host):
             if len(a):
                 cl.enqueue_copy(self.queue, buf, a, is_blocking=False)
         best = np.empty(n_cols, np.float32)
         evals = np.empty(n_cols, np.int32)
         local = LOCAL_SIZE
-        self.pruned_kernel(self.queue, (-(-n_cols // local) * local,), (local,), *self.features, *self.pivots,
+        self.pruned_kernel(self.queue, (-(-n_cols // local) * local,), (local,), *self.features,
+                           row_p_buf, row_v_buf, vis_buf, pre_buf, col_p_buf, col_v_buf,
                            np.float32(self.slack), rows_buf, phi_buf, np.int32(len(rows)), cols_buf, init_buf,
                            np.int32(n_cols), np.int32(bool(backward)), best_buf, evals_buf)
         cl.enqueue_copy(self.queue, best, best_buf, is_blocking=False)
