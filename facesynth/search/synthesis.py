@@ -20,7 +20,7 @@ from ..config import AlignSettings, IngestSettings, SynthesizeSettings
 from ..errors import UsageError
 from ..model.motion import Motion, Provenance, SearchPath
 from ..model.motiondb import MotionDatabase, Nodes
-from ..motion.head import follow_sources, import_scipy
+from ..motion.head import follow_sources
 from ..motion.postprocess import concatenate, downsample
 from ..opencl import use_opencl
 from ..phonemes import PAU, viseme
@@ -156,8 +156,7 @@ def synthesize(db: MotionDatabase, utt: Utterance, constraints: dict[int, int], 
         result, device = greedy_search(db, tc, utt, steps, settings)
         fraction = None
     else:
-        # scipy (head motion) is imported while the device searches
-        result, device, fraction = search(tc, steps, settings, while_running=import_scipy, timings=timings)
+        result, device, fraction = search(tc, steps, settings, timings=timings)
     timings["search_s"] = time.perf_counter() - t0 - timings.get("opencl_setup_s", 0.0)
     path = result.path
     for t, node in constraints.items():  # Eq. 10 guarantees this; a failure is a bug
