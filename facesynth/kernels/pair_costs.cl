@@ -139,40 +139,55 @@ __kernel void tc_block(FEATURE_PARAMS,
 // One step of the exact pruned DP for a list of nodes (one work-item each):
 //   forward (backward == 0):  best[c] = min(init[c], min_r (phi[r] + TC(rows[r], cols[c])))
 //   backward (backward == 1): best[c] = min(init[c], min_r (phi[r] + TC(cols[c], rows[r])))
-// rows are sorted by phi ascending. TC >= 0, so the scan stops at the first row with
-// phi >= best; a row whose cheap lower bound (viseme penalty and pivot bounds of PGap and
-// VGap, shrunk by 1e-4 relative and `slack` absolute against rounding) already reaches best
-// is skipped without computing its cost. Pairs of Table I rules 1 and 4 are left to init
-// (the captured link costs 0; rule 4 costs alpha1 PNT from every node). The minimum is the
-// same float32 value as the dense min over all rows; evals[c] counts the pair costs computed.
-// What the scan needs of each row comes gathered in row order by the host, so the scan reads
-// it front to back: row_p/row_v[r * PIVOTS + q] = pivot distances of rows[r] (forward: of
-// its last position / velocity; backward: of its first), row_vis[r] = its viseme (forward)
-// or its predecessor's viseme (backward), row_pre[r] = its predecessor (backward only).
+// Pairs of Table I rules 1 and 4 are left to init (the captured link costs 0; rule 4 costs
+// alpha1 PNT from every node). The minimum is the same float32 value as the dense min over
+// all rows (only rows whose lower bound reaches the current best are skipped, and best only
+// takes computed values); evals[c] counts the pair costs computed.
+//
+// The rows come in groups of rows close in pivot space (facesynth.search.pairs.row_groups):
+// group g is rows[group_start[g] .. group_start[g + 1]), sorted by phi ascending inside, the
+// groups by their smallest phi. Per group the host gives the range [lo, hi] of each pivot
+// distance over its rows and the set of row visemes (a bit mask; all bits when a viseme is
+// past 31). Since | d(x, p) - d(y, p) | >= the distance from d(y, p) to any range holding
+// d(x, p), a group's lower bound of phi + TC over its rows is its smallest phi plus the
+// viseme penalty unless the column's viseme is in the set, plus alpha3 and 1 times the
+// largest pivot-range distances of the positions and velocities. Every bound is shrunk by
+// 1e-4 relative and `slack` absolute against rounding. The scan: first the group of the
+// smallest bound (to get a good best early), then the groups in order, stopping at the first
+// whose smallest phi reaches best and skipping any whose bound does; inside a group the scan
+// stops when phi plus the group's TC bound reaches best, and skips a row whose own pivot
+// bound does.
+//
+// What the scan needs of each row comes gathered in row order by the host, so it is read
+// front to back: row_p/row_v[r * PIVOTS + q] = pivot distances of rows[r] (forward: of its
+// last position / velocity; backward: of its first), row_vis[r] = its viseme (forward) or
+// its predecessor's viseme (backward), row_pre[r] = its predecessor (backward only).
 // col_p/col_v[c * PIVOTS + q] = those of cols[c] (forward: first; backward: last).
-__kernel void pruned_columns(FEATURE_PARAMS,
-                             __global const float *row_p, __global const float *row_v,
-                             __global const int *row_vis, __global const int *row_pre,
-                             __global const float *col_p, __global const float *col_v, const float slack,
-                             __global const int *rows, __global const float *phi, const int n_rows,
-                             __global const int *cols, __global const float *init, const int n_cols,
-                             const int backward, __global float *best_out, __global int *evals_out)
+// group_lo/hi_p/v[g * PIVOTS + q]: the ranges; group_vis[g]: the viseme set.
+#ifndef MAX_GROUPS
+#define MAX_GROUPS 256
+#endif
+
+inline float range_gap(const float x, const float lo, const float hi)
 {
-    const int c = get_global_id(0);
-    if (c >= n_cols) return;
-    const int me = cols[c];
-    const int me_pre = pre[me];
-    const int me_vis = backward ? vis[me] : pre_vis[me];
-    float best = init[c];
-    int evals = 0;
-    float mq_p[PIVOTS], mq_v[PIVOTS];
-    for (int q = 0; q < PIVOTS; ++q) {
-        mq_p[q] = col_p[(size_t)c * PIVOTS + q];
-        mq_v[q] = col_v[(size_t)c * PIVOTS + q];
-    }
-    for (int r = 0; r < n_rows; ++r) {
+    return x < lo ? lo - x : (x > hi ? x - hi : 0.0f);
+}
+
+inline float scan_group(const int g, const float gap, float best, int *evals, const int me, const int me_pre,
+                        const int me_vis, const float *mq_p, const float *mq_v, const float slack, const int backward,
+                        __global const float *row_p, __global const float *row_v,
+                        __global const int *row_vis, __global const int *row_pre,
+                        __global const int *rows, __global const float *phi, __global const int *group_start,
+                        __global const float *x, __global const float *y, __global const float *scale,
+                        __global const float *last_pos, __global const float *first_pos,
+                        __global const float *last_vel, __global const float *first_vel,
+                        __global const int *vis, __global const int *pre, __global const int *pre_vis,
+                        const float a2, const float a3, const float pnt, const float a1pnt)
+{
+    const int end = group_start[g + 1];
+    for (int r = group_start[g]; r < end; ++r) {
         const float p = phi[r];
-        if (p >= best) break;
+        if (p + gap >= best) break;
         const int other = rows[r];
         const int i = backward ? me : other;
         const int pj = backward ? row_pre[r] : me_pre;
@@ -192,7 +207,61 @@ __kernel void pruned_columns(FEATURE_PARAMS,
         // best - p rounds by at most 2^-24 best (costs are >= 0); the limit allows for that
         const float v = p + pair_tc_below(i, j, (best - p) + best * 2.4e-7f, slack, PAIR_ARGS);
         best = v < best ? v : best;
-        ++evals;
+        ++*evals;
+    }
+    return best;
+}
+
+__kernel void pruned_columns(FEATURE_PARAMS,
+                             __global const float *row_p, __global const float *row_v,
+                             __global const int *row_vis, __global const int *row_pre,
+                             __global const float *col_p, __global const float *col_v, const float slack,
+                             __global const int *rows, __global const float *phi,
+                             __global const int *group_start, const int n_groups,
+                             __global const float *group_lo_p, __global const float *group_hi_p,
+                             __global const float *group_lo_v, __global const float *group_hi_v,
+                             __global const uint *group_vis,
+                             __global const int *cols, __global const float *init, const int n_cols,
+                             const int backward, __global float *best_out, __global int *evals_out)
+{
+    const int c = get_global_id(0);
+    if (c >= n_cols) return;
+    const int me = cols[c];
+    const int me_pre = pre[me];
+    const int me_vis = backward ? vis[me] : pre_vis[me];
+    const uint me_bit = (me_vis >= 0 && me_vis < 32) ? (1u << me_vis) : 0u;
+    float best = init[c];
+    int evals = 0;
+    float mq_p[PIVOTS], mq_v[PIVOTS];
+    for (int q = 0; q < PIVOTS; ++q) {
+        mq_p[q] = col_p[(size_t)c * PIVOTS + q];
+        mq_v[q] = col_v[(size_t)c * PIVOTS + q];
+    }
+    // the groups' TC lower bounds (without phi), and the group of the smallest phi + bound
+    float gap[MAX_GROUPS];
+    int first = -1;
+    float first_lb = INFINITY;
+    for (int g = 0; g < n_groups; ++g) {
+        float lp = 0.0f, lv = 0.0f;
+        for (int q = 0; q < PIVOTS; ++q) {
+            const float ap = range_gap(mq_p[q], group_lo_p[(size_t)g * PIVOTS + q], group_hi_p[(size_t)g * PIVOTS + q]);
+            const float av = range_gap(mq_v[q], group_lo_v[(size_t)g * PIVOTS + q], group_hi_v[(size_t)g * PIVOTS + q]);
+            lp = ap > lp ? ap : lp;
+            lv = av > lv ? av : lv;
+        }
+        gap[g] = (((group_vis[g] & me_bit) ? 0.0f : pnt) + a3 * lp + lv) * 0.9999f - slack;
+        const float lb = phi[group_start[g]] + gap[g];
+        if (lb < first_lb) { first_lb = lb; first = g; }
+    }
+    if (first >= 0 && first_lb < best)
+        best = scan_group(first, gap[first], best, &evals, me, me_pre, me_vis, mq_p, mq_v, slack, backward,
+                          row_p, row_v, row_vis, row_pre, rows, phi, group_start, PAIR_ARGS);
+    for (int g = 0; g < n_groups; ++g) {
+        const float p0 = phi[group_start[g]];
+        if (p0 >= best) break;  // groups come by their smallest phi; TC >= 0
+        if (g == first || p0 + gap[g] >= best) continue;
+        best = scan_group(g, gap[g], best, &evals, me, me_pre, me_vis, mq_p, mq_v, slack, backward,
+                          row_p, row_v, row_vis, row_pre, rows, phi, group_start, PAIR_ARGS);
     }
     best_out[c] = best;
     evals_out[c] = evals;

@@ -196,6 +196,47 @@ def pivot_distances(f: PairFeatures) -> tuple[np.ndarray, np.ndarray, np.ndarray
     return mixed_norms(f.last_pos, pos), mixed_norms(f.first_pos, pos), mixed_norms(f.last_vel, vel), mixed_norms(f.first_vel, vel)
 
 
+#: Most row groups per pruned step (``MAX_GROUPS`` of ``kernels/pair_costs.cl``).
+MAX_GROUPS = 256
+#: Fewest rows per group: smaller groups bound tighter, but each costs its own bound per column.
+MIN_GROUP = 16
+
+
+def row_groups(rows: np.ndarray, phi: np.ndarray, points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Groups of rows close together in ``points`` ((n, d) float32, e.g. each row's pivot
+    distances) for the pruned scan: k-d splits at the median of the widest coordinate until a
+    group has at most max(MIN_GROUP, n / MAX_GROUPS) rows. ``rows`` must be sorted by ``phi``.
+
+    Returns ``order`` ((n,) indices into rows: the groups one after the other, numbered by
+    their smallest phi, rows by phi inside; a stable sort, so ties keep their order) and
+    ``start`` ((groups + 1,) int32 offsets into ``order``). Any grouping is valid: the
+    kernel's bounds hold for whatever rows a group holds; close rows make them tight.
+    """
+    n = len(rows)
+    size = max(MIN_GROUP, -(-n // MAX_GROUPS))
+    label = np.zeros(n, np.int64)
+    todo, count = [np.arange(n)], 0
+    while todo:
+        idx = todo.pop()
+        if len(idx) <= size:
+            label[idx] = count
+            count += 1
+            continue
+        sub = points[idx]
+        dim = int(np.argmax(sub.max(axis=0) - sub.min(axis=0)))
+        split = np.argpartition(sub[:, dim], len(idx) // 2)
+        todo += [idx[split[len(idx) // 2 :]], idx[split[: len(idx) // 2]]]
+    # number the groups by their smallest phi: rows are phi-sorted, so by their first row
+    first = np.full(count, n, np.int64)
+    np.minimum.at(first, label, np.arange(n))
+    rank = np.empty(count, np.int64)
+    rank[np.argsort(first, kind="stable")] = np.arange(count)
+    label = rank[label]
+    order = np.argsort(label, kind="stable")
+    start = np.searchsorted(label[order], np.arange(count + 1)).astype(np.int32)
+    return order, start
+
+
 @dataclass
 class TransitionCosts:
     """TC(i, j) of Table I for settings ``s``, computed on demand (rows i = the node before).
@@ -316,7 +357,7 @@ class TransitionCosts:
         differs by at most a2 max DSC(r, .) + alpha3 |LP_r - LP_j| + |LV_r - LV_j| + PNT [viseme
         differs], the distances bounded through the pivots.
         """
-        r, j = np.broadcast_arrays(np.asarray(r), np.asarray(j))
+        r, j = np.asarray(r), np.asarray(j)  # broadcast by the operations: a scalar r is read once
         lp = np.min(self.row_lp[r] + self.row_lp[j], axis=-1).astype(np.float64)
         lv = np.min(self.row_lv[r] + self.row_lv[j], axis=-1).astype(np.float64)
         general = self.dsc_row_max[r] + self.s.alpha3 * lp + lv + self.s.pnt * (self.f.viseme[r] != self.f.viseme[j])
@@ -357,6 +398,7 @@ class OpenCLPairs:
         f = tc.f
         dims8, markers = -(-f.dsc_out.shape[1] // 8), f.first_pos.shape[1] // 3
         defines = dict(DIMS8=dims8, MQ=-(-markers // 8), PIVOTS=tc.row_lp.shape[1])
+        defines["MAX_GROUPS"] = MAX_GROUPS
         self.block_kernel = kernel("pair_costs", "tc_block", **defines)
         self.pruned_kernel = kernel("pair_costs", "pruned_columns", **defines)
         up = self.upload
@@ -411,16 +453,50 @@ class OpenCLPairs:
             cl.enqueue_copy(self.queue, out[a : a + len(r)], buf)
         return out
 
+    def _rows(self, rows: np.ndarray, phi: np.ndarray, backward: bool) -> list[np.ndarray]:
+        """What ``pruned_columns`` reads of the rows (its comment), grouped by :func:`row_groups`:
+        rows, phi, visemes, predecessors, pivot distances (positions, velocities), group
+        starts, pivot ranges (lo/hi of positions, lo/hi of velocities) and viseme sets.
+        The same rows come twice per step (probes, then the other columns): made once."""
+        key = (backward, len(rows), rows.tobytes(), phi.tobytes())
+        if getattr(self, "_rows_key", None) == key:
+            return self._rows_data
+        tc = self.tc
+        rows = np.asarray(rows, np.int64)
+        if backward:
+            row_p, row_v, row_vis, row_pre = tc.col_fp[rows], tc.col_fv[rows], tc.pre_viseme[rows], tc.pre[rows]
+        else:
+            row_p, row_v, row_vis, row_pre = tc.row_lp[rows], tc.row_lv[rows], tc.f.viseme[rows], tc.pre[rows]
+        order, start = row_groups(rows, phi, np.concatenate([tc.s.alpha3 * row_p, row_v], axis=1))
+        rows, phi, row_p, row_v, row_vis, row_pre = (a[order] for a in (rows, phi, row_p, row_v, row_vis, row_pre))
+        lo_p, hi_p = np.minimum.reduceat(row_p, start[:-1]), np.maximum.reduceat(row_p, start[:-1])
+        lo_v, hi_v = np.minimum.reduceat(row_v, start[:-1]), np.maximum.reduceat(row_v, start[:-1])
+        bits = np.where((row_vis >= 0) & (row_vis < 32), np.left_shift(1, np.clip(row_vis, 0, 31)).astype(np.uint32),
+                        np.where(row_vis >= 32, np.uint32(0xFFFFFFFF), np.uint32(0)))
+        group_vis = np.bitwise_or.reduceat(bits, start[:-1]).astype(np.uint32)
+        f32 = lambda a: np.ascontiguousarray(a, np.float32)  # noqa: E731
+        self._rows_key = key
+        self._rows_data = [rows.astype(np.int32), f32(phi), row_vis.astype(np.int32), row_pre.astype(np.int32),
+                           f32(row_p), f32(row_v), start, f32(lo_p), f32(hi_p), f32(lo_v), f32(hi_v), group_vis]
+        return self._rows_data
+
+    def _cols(self, cols: np.ndarray, init: np.ndarray, backward: bool) -> list[np.ndarray]:
+        """What ``pruned_columns`` reads of the columns: cols, init, pivot distances."""
+        tc = self.tc
+        cols = np.asarray(cols, np.int64)
+        col_p, col_v = (tc.row_lp[cols], tc.row_lv[cols]) if backward else (tc.col_fp[cols], tc.col_fv[cols])
+        return [cols.astype(np.int32), np.ascontiguousarray(init, np.float32),
+                np.ascontiguousarray(col_p, np.float32), np.ascontiguousarray(col_v, np.float32)]
+
     def _scratch(self, n: int):
-        """Device buffers for one step, reused: rows, phi, cols, init, best, evals, row and
-        column visemes / predecessors (n entries each), then the gathered pivot distances of
-        rows and columns (n * pivots entries each)."""
+        """Device buffers for one step, reused, in the order of :meth:`_rows` and :meth:`_cols`,
+        then best and evals: n entries (times the pivots for pivot distances and ranges)."""
         if getattr(self, "_capacity", 0) < n:
             cl, mf = self.cl, self.cl.mem_flags
             self._capacity = max(n, 1024)
             pivots = self.tc.row_lp.shape[1]
-            self._buffers = ([cl.Buffer(self.ctx, mf.READ_WRITE, 4 * self._capacity) for _ in range(8)]
-                             + [cl.Buffer(self.ctx, mf.READ_WRITE, 4 * self._capacity * pivots) for _ in range(4)])
+            sizes = [1, 1, 1, 1, pivots, pivots, 1, pivots, pivots, pivots, pivots, 1, 1, 1, pivots, pivots, 1, 1]
+            self._buffers = [cl.Buffer(self.ctx, mf.READ_WRITE, 4 * (self._capacity + 1) * k) for k in sizes]
         return self._buffers
 
     def column_minima(self, rows: np.ndarray, phi: np.ndarray, cols: np.ndarray, init: np.ndarray,
@@ -432,32 +508,20 @@ class OpenCLPairs:
         n_cols = len(cols)
         if n_cols == 0:
             return np.zeros(0, np.float32), 0
-        tc = self.tc
-        rows = np.asarray(rows, np.int64)
-        cols = np.asarray(cols, np.int64)
-        # what the scan reads of each row, gathered in row order (the kernel's comment)
-        if backward:
-            row_p, row_v, col_p, col_v = tc.col_fp[rows], tc.col_fv[rows], tc.row_lp[cols], tc.row_lv[cols]
-            row_vis, row_pre = tc.pre_viseme[rows], tc.pre[rows]
-        else:
-            row_p, row_v, col_p, col_v = tc.row_lp[rows], tc.row_lv[rows], tc.col_fp[cols], tc.col_fv[cols]
-            row_vis, row_pre = tc.f.viseme[rows], np.zeros(0, np.int32)
-        host = [rows.astype(np.int32), np.ascontiguousarray(phi, np.float32), cols.astype(np.int32),
-                np.ascontiguousarray(init, np.float32), row_vis.astype(np.int32), row_pre.astype(np.int32),
-                np.ascontiguousarray(row_p, np.float32), np.ascontiguousarray(row_v, np.float32),
-                np.ascontiguousarray(col_p, np.float32), np.ascontiguousarray(col_v, np.float32)]
-        (rows_buf, phi_buf, cols_buf, init_buf, best_buf, evals_buf, vis_buf, pre_buf,
-         row_p_buf, row_v_buf, col_p_buf, col_v_buf) = self._scratch(max(len(rows), n_cols))
-        for buf, a in zip((rows_buf, phi_buf, cols_buf, init_buf, vis_buf, pre_buf, row_p_buf, row_v_buf,
-                           col_p_buf, col_v_buf), host):
+        host = self._rows(rows, phi, backward) + self._cols(cols, init, backward)
+        buffers = self._scratch(max(len(rows), n_cols))
+        for buf, a in zip(buffers, host):
             if len(a):
                 cl.enqueue_copy(self.queue, buf, a, is_blocking=False)
+        (rows_buf, phi_buf, row_vis_buf, row_pre_buf, row_p_buf, row_v_buf, start_buf, lo_p_buf, hi_p_buf,
+         lo_v_buf, hi_v_buf, group_vis_buf, cols_buf, init_buf, col_p_buf, col_v_buf, best_buf, evals_buf) = buffers
         best = np.empty(n_cols, np.float32)
         evals = np.empty(n_cols, np.int32)
         local = LOCAL_SIZE
         self.pruned_kernel(self.queue, (-(-n_cols // local) * local,), (local,), *self.features,
-                           row_p_buf, row_v_buf, vis_buf, pre_buf, col_p_buf, col_v_buf,
-                           np.float32(self.slack), rows_buf, phi_buf, np.int32(len(rows)), cols_buf, init_buf,
+                           row_p_buf, row_v_buf, row_vis_buf, row_pre_buf, col_p_buf, col_v_buf,
+                           np.float32(self.slack), rows_buf, phi_buf, start_buf, np.int32(len(host[6]) - 1),
+                           lo_p_buf, hi_p_buf, lo_v_buf, hi_v_buf, group_vis_buf, cols_buf, init_buf,
                            np.int32(n_cols), np.int32(bool(backward)), best_buf, evals_buf)
         cl.enqueue_copy(self.queue, best, best_buf, is_blocking=False)
         cl.enqueue_copy(self.queue, evals, evals_buf, is_blocking=True)
