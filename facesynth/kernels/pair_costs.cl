@@ -152,11 +152,11 @@ __kernel void tc_block(FEATURE_PARAMS,
 // d(x, p), a group's lower bound of phi + TC over its rows is its smallest phi plus the
 // viseme penalty unless the column's viseme is in the set, plus alpha3 and 1 times the
 // largest pivot-range distances of the positions and velocities. Every bound is shrunk by
-// 1e-4 relative and `slack` absolute against rounding. The scan: first the group of the
-// smallest bound (to get a good best early), then the groups in order, stopping at the first
-// whose smallest phi reaches best and skipping any whose bound does; inside a group the scan
-// stops when phi plus the group's TC bound reaches best, and skips a row whose own pivot
-// bound does.
+// 1e-4 relative and `slack` absolute against rounding. The scan: first the one row of the
+// smallest phi plus its own pivot bound (a seed, to get a good best early), then the groups
+// in order, stopping at the first whose smallest phi reaches best and skipping any whose
+// bound does; inside a group the scan stops when phi plus the group's TC bound reaches best,
+// and skips a row whose own pivot bound does.
 //
 // What the scan needs of each row comes gathered in row order by the host, so it is read
 // front to back: row_p/row_v[r * PIVOTS + q] = pivot distances of rows[r] (forward: of its
@@ -237,11 +237,12 @@ __kernel void pruned_columns(FEATURE_PARAMS,
         mq_p[q] = col_p[(size_t)c * PIVOTS + q];
         mq_v[q] = col_v[(size_t)c * PIVOTS + q];
     }
-    // the groups' TC lower bounds (without phi), and the group of the smallest phi + bound
+    // the groups' TC lower bounds (without phi), for the groups that can matter: those whose
+    // smallest phi is below best (the groups come by their smallest phi; TC >= 0)
     float gap[MAX_GROUPS];
-    int first = -1;
-    float first_lb = INFINITY;
-    for (int g = 0; g < n_groups; ++g) {
+    int reach = 0;
+    while (reach < n_groups && phi[group_start[reach]] < best) ++reach;
+    for (int g = 0; g < reach; ++g) {
         float lp = 0.0f, lv = 0.0f;
         for (int q = 0; q < PIVOTS; ++q) {
             const float ap = range_gap(mq_p[q], group_lo_p[(size_t)g * PIVOTS + q], group_hi_p[(size_t)g * PIVOTS + q]);
@@ -250,16 +251,47 @@ __kernel void pruned_columns(FEATURE_PARAMS,
             lv = av > lv ? av : lv;
         }
         gap[g] = (((group_vis[g] & me_bit) ? 0.0f : pnt) + a3 * lp + lv) * 0.9999f - slack;
-        const float lb = phi[group_start[g]] + gap[g];
-        if (lb < first_lb) { first_lb = lb; first = g; }
     }
-    if (first >= 0 && first_lb < best)
-        best = scan_group(first, gap[first], best, &evals, me, me_pre, me_vis, mq_p, mq_v, slack, backward,
-                          row_p, row_v, row_vis, row_pre, rows, phi, group_start, PAIR_ARGS);
-    for (int g = 0; g < n_groups; ++g) {
+    // seed: the row of the smallest phi + its own bound is computed first, so that best is
+    // near its final value before the scan (the scan then computes it again: one pair)
+    int seed = -1;
+    float seed_lb = best;
+    for (int g = 0; g < reach; ++g) {
         const float p0 = phi[group_start[g]];
-        if (p0 >= best) break;  // groups come by their smallest phi; TC >= 0
-        if (g == first || p0 + gap[g] >= best) continue;
+        if (p0 >= seed_lb) break;
+        if (p0 + gap[g] >= seed_lb) continue;
+        const int end = group_start[g + 1];
+        for (int r = group_start[g]; r < end; ++r) {
+            const float p = phi[r];
+            if (p + gap[g] >= seed_lb) break;
+            const int i = backward ? me : rows[r];
+            const int pj = backward ? row_pre[r] : me_pre;
+            if (pj == i || pj < 0) continue;
+            float lp = 0.0f, lv = 0.0f;
+            for (int q = 0; q < PIVOTS; ++q) {
+                const float dp = row_p[(size_t)r * PIVOTS + q] - mq_p[q];
+                const float dv = row_v[(size_t)r * PIVOTS + q] - mq_v[q];
+                const float ap = dp < 0.0f ? -dp : dp;
+                const float av = dv < 0.0f ? -dv : dv;
+                lp = ap > lp ? ap : lp;
+                lv = av > lv ? av : lv;
+            }
+            const float lb = p + ((row_vis[r] != me_vis ? pnt : 0.0f) + a3 * lp + lv) * 0.9999f - slack;
+            if (lb < seed_lb) { seed_lb = lb; seed = r; }
+        }
+    }
+    if (seed >= 0) {
+        const int i = backward ? me : rows[seed];
+        const int j = backward ? rows[seed] : me;
+        const float p = phi[seed];
+        const float v = p + pair_tc_below(i, j, (best - p) + best * 2.4e-7f, slack, PAIR_ARGS);
+        best = v < best ? v : best;
+        ++evals;
+    }
+    for (int g = 0; g < reach; ++g) {
+        const float p0 = phi[group_start[g]];
+        if (p0 >= best) break;
+        if (p0 + gap[g] >= best) continue;
         best = scan_group(g, gap[g], best, &evals, me, me_pre, me_vis, mq_p, mq_v, slack, backward,
                           row_p, row_v, row_vis, row_pre, rows, phi, group_start, PAIR_ARGS);
     }

@@ -29,8 +29,11 @@ import numpy as np
 
 from ..config import SynthesizeSettings
 
-#: Pivots of the cheap lower and upper bounds (triangle inequality of the mixed norm).
-PIVOTS = 4
+#: Pivots of the cheap lower and upper bounds (triangle inequality of the mixed norm) that
+#: ``build-db`` stores; a search uses as many as the database holds. More pivots give tighter
+#: bounds for more work per bound: on 100,000 nodes, 16 computed 2.5x fewer pair costs than 4
+#: (benchmarks/scale_search.py).
+PIVOTS = 16
 #: Work-group size of ``pruned_columns``, the same at every launch: PoCL compiles a kernel
 #: once per work-group size, so a size that followed the column count (min(64, columns))
 #: cost a compile at the first launch of every new size, about 1 s in a fresh process.
@@ -213,19 +216,26 @@ def row_groups(rows: np.ndarray, phi: np.ndarray, points: np.ndarray) -> tuple[n
     kernel's bounds hold for whatever rows a group holds; close rows make them tight.
     """
     n = len(rows)
+    if n == 0:
+        return np.zeros(0, np.int64), np.zeros(1, np.int32)
     size = max(MIN_GROUP, -(-n // MAX_GROUPS))
-    label = np.zeros(n, np.int64)
-    todo, count = [np.arange(n)], 0
-    while todo:
-        idx = todo.pop()
-        if len(idx) <= size:
-            label[idx] = count
-            count += 1
-            continue
-        sub = points[idx]
-        dim = int(np.argmax(sub.max(axis=0) - sub.min(axis=0)))
-        split = np.argpartition(sub[:, dim], len(idx) // 2)
-        todo += [idx[split[len(idx) // 2 :]], idx[split[: len(idx) // 2]]]
+    # level by level: every group larger than size is split at its median of its widest
+    # coordinate, all groups of a level at once (a stable sort within groups)
+    order, starts = np.arange(n), np.array([0, n])
+    while True:
+        lengths = np.diff(starts)
+        split = lengths > size
+        if not split.any():
+            break
+        seg = np.repeat(np.arange(len(lengths)), lengths)
+        pts = points[order]
+        widest = np.argmax(np.maximum.reduceat(pts, starts[:-1]) - np.minimum.reduceat(pts, starts[:-1]), axis=1)
+        key = np.where(split[seg], pts[np.arange(n), widest[seg]], 0.0)
+        order = order[np.lexsort((key, seg))]
+        starts = np.unique(np.concatenate([starts, (starts[:-1] + lengths // 2)[split]]))
+    count = len(starts) - 1
+    label = np.empty(n, np.int64)
+    label[order] = np.repeat(np.arange(count), np.diff(starts))
     # number the groups by their smallest phi: rows are phi-sorted, so by their first row
     first = np.full(count, n, np.int64)
     np.minimum.at(first, label, np.arange(n))
@@ -469,11 +479,16 @@ class OpenCLPairs:
             row_p, row_v, row_vis, row_pre = tc.row_lp[rows], tc.row_lv[rows], tc.f.viseme[rows], tc.pre[rows]
         order, start = row_groups(rows, phi, np.concatenate([tc.s.alpha3 * row_p, row_v], axis=1))
         rows, phi, row_p, row_v, row_vis, row_pre = (a[order] for a in (rows, phi, row_p, row_v, row_vis, row_pre))
-        lo_p, hi_p = np.minimum.reduceat(row_p, start[:-1]), np.maximum.reduceat(row_p, start[:-1])
-        lo_v, hi_v = np.minimum.reduceat(row_v, start[:-1]), np.maximum.reduceat(row_v, start[:-1])
+        heads = start[:-1]
         bits = np.where((row_vis >= 0) & (row_vis < 32), np.left_shift(1, np.clip(row_vis, 0, 31)).astype(np.uint32),
                         np.where(row_vis >= 32, np.uint32(0xFFFFFFFF), np.uint32(0)))
-        group_vis = np.bitwise_or.reduceat(bits, start[:-1]).astype(np.uint32)
+        if len(heads):
+            lo_p, hi_p = np.minimum.reduceat(row_p, heads), np.maximum.reduceat(row_p, heads)
+            lo_v, hi_v = np.minimum.reduceat(row_v, heads), np.maximum.reduceat(row_v, heads)
+            group_vis = np.bitwise_or.reduceat(bits, heads).astype(np.uint32)
+        else:
+            lo_p = hi_p = lo_v = hi_v = np.zeros((0, row_p.shape[1]), np.float32)
+            group_vis = np.zeros(0, np.uint32)
         f32 = lambda a: np.ascontiguousarray(a, np.float32)  # noqa: E731
         self._rows_key = key
         self._rows_data = [rows.astype(np.int32), f32(phi), row_vis.astype(np.int32), row_pre.astype(np.int32),
