@@ -68,7 +68,7 @@ inline float pair_tc(const int i, const int j,
 }
 
 // pair_tc for rule 2/3 pairs, abandoned as soon as a lower bound of TC reaches `limit`: the
-// viseme penalty, then PGap and VGap in lane partial sums (all non-negative, so a partial sum
+// viseme penalty, then PGap and then VGap in lane partial sums (all non-negative, so a partial sum
 // never exceeds the full one), shrunk by 1e-4 relative and `slack` absolute against rounding.
 // Returns INFINITY when abandoned, else exactly pair_tc's value (the same sums in the same
 // order; the three sums are independent, so computing DSC last changes nothing).
@@ -92,6 +92,7 @@ inline float pair_tc_below(const int i, const int j, const float limit, const fl
         if ((q & 3) == 3 && (pen + a3 * lanes(acc)) * 0.9999f - slack >= limit) return INFINITY;
     }
     const float pg = lanes(acc);
+    const float known = pen + a3 * pg;
     l = (__global const float8 *)(last_vel + (size_t)i * stride);
     f = (__global const float8 *)(first_vel + (size_t)j * stride);
     acc = (float8)(0.0f);
@@ -100,6 +101,7 @@ inline float pair_tc_below(const int i, const int j, const float limit, const fl
         const float8 dy = f[MQ + q] - l[MQ + q];
         const float8 dz = f[2 * MQ + q] - l[2 * MQ + q];
         acc = acc + sqrt(dx * dx + dy * dy + dz * dz);
+        if ((q & 3) == 3 && (known + lanes(acc)) * 0.9999f - slack >= limit) return INFINITY;
     }
     const float vg = lanes(acc);
     if ((pen + a3 * pg + vg) * 0.9999f - slack >= limit) return INFINITY;

@@ -182,7 +182,10 @@ def render_path(db: MotionDatabase, utt: Utterance, path: np.ndarray, settings: 
     joins = sum(1 for t in range(len(path) - 1)
                 if utt.phones[t] != PAU and utt.phones[t + 1] != PAU and db.nodes.pre[path[t + 1]] != path[t])
     take = np.where(cat.node >= 0, db.nodes.take[np.maximum(cat.node, 0)], -1)
-    head_r, head_t = follow_sources(cat.source_frame, *db.head_relative_to_take)
+    # the head motion of the source frames only, relative to their takes
+    used = np.unique(cat.source_frame[cat.source_frame >= 0])
+    sources = np.where(cat.source_frame >= 0, np.searchsorted(used, cat.source_frame), -1)
+    head_r, head_t = follow_sources(sources, *db.head_relative(used))
     return {"concatenated": cat, "markers_capture": markers, "markers": downsample(markers, db.fps, settings.output_fps),
             "non_captured_joins": joins, "take": take,
             "head_rotation": downsample(head_r, db.fps, settings.output_fps),
