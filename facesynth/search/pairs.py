@@ -495,6 +495,13 @@ class OpenCLPairs:
                            f32(row_p), f32(row_v), start, f32(lo_p), f32(hi_p), f32(lo_v), f32(hi_v), group_vis]
         return self._rows_data
 
+    @property
+    def _changing(self) -> tuple[int, ...]:
+        """Argument indices of ``pruned_columns`` that change between calls: the group count,
+        the column count and the direction."""
+        first = len(self.features) + 10  # n_groups
+        return first, first + 8, first + 9
+
     def _cols(self, cols: np.ndarray, init: np.ndarray, backward: bool) -> list[np.ndarray]:
         """What ``pruned_columns`` reads of the columns: cols, init, pivot distances."""
         tc = self.tc
@@ -533,11 +540,20 @@ class OpenCLPairs:
         best = np.empty(n_cols, np.float32)
         evals = np.empty(n_cols, np.int32)
         local = LOCAL_SIZE
-        self.pruned_kernel(self.queue, (-(-n_cols // local) * local,), (local,), *self.features,
-                           row_p_buf, row_v_buf, row_vis_buf, row_pre_buf, col_p_buf, col_v_buf,
-                           np.float32(self.slack), rows_buf, phi_buf, start_buf, np.int32(len(host[6]) - 1),
-                           lo_p_buf, hi_p_buf, lo_v_buf, hi_v_buf, group_vis_buf, cols_buf, init_buf,
-                           np.int32(n_cols), np.int32(bool(backward)), best_buf, evals_buf)
+        args = [*self.features, row_p_buf, row_v_buf, row_vis_buf, row_pre_buf, col_p_buf, col_v_buf,
+                np.float32(self.slack), rows_buf, phi_buf, start_buf, np.int32(len(host[6]) - 1),
+                lo_p_buf, hi_p_buf, lo_v_buf, hi_v_buf, group_vis_buf, cols_buf, init_buf,
+                np.int32(n_cols), np.int32(bool(backward)), best_buf, evals_buf]
+        # the buffers stay the same between calls: all arguments are set once, then only those
+        # that change (setting some 40 arguments per launch cost about 3 ms)
+        kernel = self.pruned_kernel
+        if getattr(self, "_args_for", None) is not buffers:
+            kernel.set_args(*args)
+            self._args_for = buffers
+        else:
+            for index in self._changing:
+                kernel.set_arg(index, args[index])
+        self.cl.enqueue_nd_range_kernel(self.queue, kernel, (-(-n_cols // local) * local,), (local,))
         cl.enqueue_copy(self.queue, best, best_buf, is_blocking=False)
         cl.enqueue_copy(self.queue, evals, evals_buf, is_blocking=True)
         return best, int(evals.astype(np.int64).sum())
