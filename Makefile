@@ -20,6 +20,7 @@ $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
 	$(BIN)/python -m pip install --quiet --quiet -e '.[test]'
+	$(BIN)/python -m compileall -q facesynth  # an editable install leaves this to the first run
 	touch $@
 
 test: $(STAMP)

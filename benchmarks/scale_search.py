@@ -220,7 +220,9 @@ def main() -> None:
     ap.add_argument("--out", type=Path, default=None, help="folder for scale.json and scale.md")
     args = ap.parse_args()
     sys.path.insert(0, str(HERE))
-    from dp_table_v import PHRASES, phrase_phones, write_phrase
+    from dp_table_v import PHRASES, byte_compile, phrase_phones, write_phrase
+
+    byte_compile()
 
     args.work.mkdir(parents=True, exist_ok=True)
     pca = args.pca or paper_pca(args.work)

@@ -29,7 +29,7 @@ import sys
 import time
 from pathlib import Path
 
-from dp_table_v import PHRASES, build_paper_db, phrase_phones, read_floor, write_phrase
+from dp_table_v import PHRASES, build_paper_db, byte_compile, phrase_phones, read_floor, write_phrase
 
 import numpy as np
 from facesynth.opencl import device_name
@@ -69,6 +69,7 @@ def main() -> None:
     args = ap.parse_args()
     if args.db is None and not args.build_paper:
         ap.error("give --db or --build-paper")
+    byte_compile()
     db_path = args.db or build_paper_db(args.work)
     args.work.mkdir(parents=True, exist_ok=True)
     phrase, out = args.work / f"phrase{PHONES}.TextGrid", args.work / f"m{PHONES}_startup.h5"

@@ -204,12 +204,17 @@ def value_problem(snapshot: Snapshot, key: str, data: np.ndarray) -> str | None:
     if e is None:
         return None
     data = np.asarray(data)
+    # One pass each for the minimum and the maximum, no temporaries: a NaN makes both NaN and
+    # an infinity is one of them, so finite extremes mean every value is finite.
+    low = high = None
+    if data.dtype.kind in "fiu" and data.size:
+        low, high = data.min(), data.max()
     if data.dtype.kind == "f" and data.size:
         if applies(e.finite, snapshot.variant):
-            bad = int(data.size - np.count_nonzero(np.isfinite(data)))
-            if bad:
+            if not (np.isfinite(low) and np.isfinite(high)):
+                bad = int(data.size - np.count_nonzero(np.isfinite(data)))
                 return f"{bad} non-finite value{'s' if bad > 1 else ''} (NaN or infinity) where every number must be finite"
-            largest = float(np.abs(data).max())
+            largest = max(abs(float(low)), abs(float(high)))
             if largest > MAX_FLOAT:
                 return f"holds a magnitude of {largest:g}, beyond the largest an artifact holds ({MAX_FLOAT:g})"
         else:  # NaN marks a missing sample here; an infinity is never a measurement
@@ -217,20 +222,18 @@ def value_problem(snapshot: Snapshot, key: str, data: np.ndarray) -> str | None:
             if bad:
                 return f"{bad} infinite value{'s' if bad > 1 else ''} where only finite numbers or NaN (missing) belong"
     if data.dtype.kind in "iu" and data.size:
-        extreme = max(abs(int(data.min())), abs(int(data.max())))
+        extreme = max(abs(int(low)), abs(int(high)))
         if extreme > MAX_INT:
             return f"holds {extreme}, beyond the largest integer an artifact holds (2^53)"
     if data.dtype.kind in "fiu" and data.size:
         if e.ge is not None:
-            low = data.min().item()
             if low < e.ge:  # NaN compares False: only where NaN is allowed
-                return f"holds {low:g}, below the smallest allowed value {e.ge:g}"
+                return f"holds {low.item():g}, below the smallest allowed value {e.ge:g}"
         factor, symbol, offset = parse_size(e.below) if e.below is not None else (1, None, 0)
         if symbol is not None and symbol in snapshot.sizes:
             limit = factor * snapshot.sizes[symbol] + offset
-            high = data.max().item()
             if high >= limit:
-                return f"holds {high}, but its values must stay below {e.below} = {limit}"
+                return f"holds {high.item()}, but its values must stay below {e.below} = {limit}"
     return None
 
 

@@ -71,7 +71,7 @@ inline float pair_tc(const int i, const int j,
 }
 
 // pair_tc for rule 2/3 pairs, abandoned as soon as a lower bound of TC reaches `limit`: the
-// viseme penalty, then PGap and VGap in lane partial sums (all non-negative, so a partial sum
+// viseme penalty, then PGap and then VGap in lane partial sums (all non-negative, so a partial sum
 // never exceeds the full one), shrunk by 1e-4 relative and `slack` absolute against rounding.
 // Returns INFINITY when abandoned, else exactly pair_tc's value (the same sums in the same
 // order; the three sums are independent, so computing DSC last changes nothing).
@@ -96,6 +96,7 @@ inline float pair_tc_below(const int i, const int j, const float limit, const fl
         if ((q & 3) == 3 && (pen + a3 * lanes(acc)) * 0.9999f - slack >= limit) return INFINITY;
     }
     const float pg = lanes(acc);
+    const float known = pen + a3 * pg;
     l = (__global const float8 *)(last_vel + (size_t)i * stride);
     f = (__global const float8 *)(first_vel + (size_t)j * stride);
     acc = (float8)(0.0f);
@@ -104,6 +105,7 @@ inline float pair_tc_below(const int i, const int j, const float limit, const fl
         const float8 dy = f[MQ + q] - l[MQ + q];
         const float8 dz = f[2 * MQ + q] - l[2 * MQ + q];
         acc = acc + sqrt(dx * dx + dy * dy + dz * dz);
+        if ((q & 3) == 3 && (known + lanes(acc)) * 0.9999f - slack >= limit) return INFINITY;
     }
     const float vg = lanes(acc);
     if ((pen + a3 * pg + vg) * 0.9999f - slack >= limit) return INFINITY;
@@ -148,18 +150,89 @@ __kernel void tc_block(FEATURE_PARAMS,
 // One step of the exact pruned DP for a list of nodes (one work-item each):
 //   forward (backward == 0):  best[c] = min(init[c], min_r (phi[r] + TC(rows[r], cols[c])))
 //   backward (backward == 1): best[c] = min(init[c], min_r (phi[r] + TC(cols[c], rows[r])))
-// rows are sorted by phi ascending. TC >= 0, so the scan stops at the first row with
-// phi >= best; a row whose cheap lower bound (viseme penalty and pivot bounds of PGap and
-// VGap, shrunk by 1e-4 relative and `slack` absolute against rounding) already reaches best
-// is skipped without computing its cost (rule 4: alpha1 PNT instead of the viseme penalty).
-// Pairs of Table I rule 1 are left to init (the captured link costs 0). The minimum is the
-// same float32 value as the dense min over all rows; evals[c] counts the pair costs computed.
-// pivots: row_lp/row_lv[i * PIVOTS + q] = mixed-norm distance of node i's last position /
-// velocity from pivot q; col_fp/col_fv likewise for first position / velocity.
+// Pairs of Table I rule 1 are left to init (the captured link costs 0); a rule-4 pair (no
+// captured predecessor) is bounded below by alpha1 PNT instead of the viseme penalty. The minimum is the same float32 value as the dense min over
+// all rows (only rows whose lower bound reaches the current best are skipped, and best only
+// takes computed values); evals[c] counts the pair costs computed.
+//
+// The rows come in groups of rows close in pivot space (facesynth.search.pairs.row_groups):
+// group g is rows[group_start[g] .. group_start[g + 1]), sorted by phi ascending inside, the
+// groups by their smallest phi. Per group the host gives the range [lo, hi] of each pivot
+// distance over its rows and the set of row visemes (a bit mask; all bits when a viseme is
+// past 31). Since | d(x, p) - d(y, p) | >= the distance from d(y, p) to any range holding
+// d(x, p), a group's lower bound of phi + TC over its rows is its smallest phi plus the
+// viseme penalty unless the column's viseme is in the set, plus alpha3 and 1 times the
+// largest pivot-range distances of the positions and velocities. Every bound is shrunk by
+// 1e-4 relative and `slack` absolute against rounding. The scan: first the one row of the
+// smallest phi plus its own pivot bound (a seed, to get a good best early), then the groups
+// in order, stopping at the first whose smallest phi reaches best and skipping any whose
+// bound does; inside a group the scan stops when phi plus the group's TC bound reaches best,
+// and skips a row whose own pivot bound does.
+//
+// What the scan needs of each row comes gathered in row order by the host, so it is read
+// front to back: row_p/row_v[r * PIVOTS + q] = pivot distances of rows[r] (forward: of its
+// last position / velocity; backward: of its first), row_vis[r] = its viseme (forward) or
+// its predecessor's viseme (backward), row_pre[r] = its predecessor (backward only).
+// col_p/col_v[c * PIVOTS + q] = those of cols[c] (forward: first; backward: last).
+// group_lo/hi_p/v[g * PIVOTS + q]: the ranges; group_vis[g]: the viseme set.
+#ifndef MAX_GROUPS
+#define MAX_GROUPS 256
+#endif
+
+inline float range_gap(const float x, const float lo, const float hi)
+{
+    return x < lo ? lo - x : (x > hi ? x - hi : 0.0f);
+}
+
+inline float scan_group(const int g, const float gap, float best, int *evals, const int me, const int me_pre,
+                        const int me_vis, const float *mq_p, const float *mq_v, const float slack, const int backward,
+                        __global const float *row_p, __global const float *row_v,
+                        __global const int *row_vis, __global const int *row_pre,
+                        __global const int *rows, __global const float *phi, __global const int *group_start,
+                        __global const float *x, __global const float *y, __global const float *scale,
+                        __global const float *last_pos, __global const float *first_pos,
+                        __global const float *last_vel, __global const float *first_vel,
+                        __global const int *vis, __global const int *pre, __global const int *pre_vis,
+                        const float a2, const float a3, const float pnt, const float a1pnt)
+{
+    const int end = group_start[g + 1];
+    for (int r = group_start[g]; r < end; ++r) {
+        const float p = phi[r];
+        if (p + gap >= best) break;
+        const int other = rows[r];
+        const int i = backward ? me : other;
+        const int pj = backward ? row_pre[r] : me_pre;
+        if (pj == i) continue;  // rule 1 is in init
+        float lp = 0.0f, lv = 0.0f;
+        for (int q = 0; q < PIVOTS; ++q) {
+            const float dp = row_p[(size_t)r * PIVOTS + q] - mq_p[q];
+            const float dv = row_v[(size_t)r * PIVOTS + q] - mq_v[q];
+            const float ap = dp < 0.0f ? -dp : dp;
+            const float av = dv < 0.0f ? -dv : dv;
+            lp = ap > lp ? ap : lp;
+            lv = av > lv ? av : lv;
+        }
+        const float pen = pj < 0 ? a1pnt : (row_vis[r] != me_vis ? pnt : 0.0f);  // rule 4: alpha1 PNT
+        const float lb = (pen + a3 * lp + lv) * 0.9999f - slack;
+        if (p + lb >= best) continue;
+        const int j = backward ? other : me;
+        // best - p rounds by at most 2^-24 best (costs are >= 0); the limit allows for that
+        const float v = p + pair_tc_below(i, j, (best - p) + best * 2.4e-7f, slack, PAIR_ARGS);
+        best = v < best ? v : best;
+        ++*evals;
+    }
+    return best;
+}
+
 __kernel void pruned_columns(FEATURE_PARAMS,
-                             __global const float *row_lp, __global const float *row_lv,
-                             __global const float *col_fp, __global const float *col_fv, const float slack,
-                             __global const int *rows, __global const float *phi, const int n_rows,
+                             __global const float *row_p, __global const float *row_v,
+                             __global const int *row_vis, __global const int *row_pre,
+                             __global const float *col_p, __global const float *col_v, const float slack,
+                             __global const int *rows, __global const float *phi,
+                             __global const int *group_start, const int n_groups,
+                             __global const float *group_lo_p, __global const float *group_hi_p,
+                             __global const float *group_lo_v, __global const float *group_hi_v,
+                             __global const uint *group_vis,
                              __global const int *cols, __global const float *init, const int n_cols,
                              const int backward, __global float *best_out, __global int *evals_out)
 {
@@ -167,39 +240,77 @@ __kernel void pruned_columns(FEATURE_PARAMS,
     if (c >= n_cols) return;
     const int me = cols[c];
     const int me_pre = pre[me];
+    const int me_vis = backward ? vis[me] : pre_vis[me];
+    const uint me_bit = (me_vis >= 0 && me_vis < 32) ? (1u << me_vis) : 0u;
     float best = init[c];
     int evals = 0;
     float mq_p[PIVOTS], mq_v[PIVOTS];
     for (int q = 0; q < PIVOTS; ++q) {
-        mq_p[q] = backward ? row_lp[(size_t)me * PIVOTS + q] : col_fp[(size_t)me * PIVOTS + q];
-        mq_v[q] = backward ? row_lv[(size_t)me * PIVOTS + q] : col_fv[(size_t)me * PIVOTS + q];
+        mq_p[q] = col_p[(size_t)c * PIVOTS + q];
+        mq_v[q] = col_v[(size_t)c * PIVOTS + q];
     }
-    __global const float *other_p = backward ? col_fp : row_lp;
-    __global const float *other_v = backward ? col_fv : row_lv;
-    for (int r = 0; r < n_rows; ++r) {
-        const float p = phi[r];
-        if (p >= best) break;
-        const int other = rows[r];
-        const int i = backward ? me : other;
-        const int j = backward ? other : me;
-        const int pj = backward ? pre[other] : me_pre;
-        if (pj == i) continue;  // rule 1 is in init
+    // the groups' TC lower bounds (without phi), for the groups that can matter: those whose
+    // smallest phi is below best (the groups come by their smallest phi; TC >= 0)
+    float gap[MAX_GROUPS];
+    int reach = 0;
+    while (reach < n_groups && phi[group_start[reach]] < best) ++reach;
+    for (int g = 0; g < reach; ++g) {
         float lp = 0.0f, lv = 0.0f;
         for (int q = 0; q < PIVOTS; ++q) {
-            const float dp = other_p[(size_t)other * PIVOTS + q] - mq_p[q];
-            const float dv = other_v[(size_t)other * PIVOTS + q] - mq_v[q];
-            const float ap = dp < 0.0f ? -dp : dp;
-            const float av = dv < 0.0f ? -dv : dv;
+            const float ap = range_gap(mq_p[q], group_lo_p[(size_t)g * PIVOTS + q], group_hi_p[(size_t)g * PIVOTS + q]);
+            const float av = range_gap(mq_v[q], group_lo_v[(size_t)g * PIVOTS + q], group_hi_v[(size_t)g * PIVOTS + q]);
             lp = ap > lp ? ap : lp;
             lv = av > lv ? av : lv;
         }
-        const float penalty = pj < 0 ? a1pnt : (vis[i] != pre_vis[j] ? pnt : 0.0f);
-        const float lb = (penalty + a3 * lp + lv) * 0.9999f - slack;
-        if (p + lb >= best) continue;
-        // best - p rounds by at most 2^-24 best (costs are >= 0); the limit allows for that
+        // rule 4 (no captured predecessor: alpha1 PNT instead of the viseme penalty): forward, the
+        // column's own; backward, any row's, so the smaller of the two bounds the group
+        const float vpen = (group_vis[g] & me_bit) ? 0.0f : pnt;
+        const float gpen = backward ? (a1pnt < vpen ? a1pnt : vpen) : (me_pre < 0 ? a1pnt : vpen);
+        gap[g] = (gpen + a3 * lp + lv) * 0.9999f - slack;
+    }
+    // seed: the row of the smallest phi + its own bound is computed first, so that best is
+    // near its final value before the scan (the scan then computes it again: one pair)
+    int seed = -1;
+    float seed_lb = best;
+    for (int g = 0; g < reach; ++g) {
+        const float p0 = phi[group_start[g]];
+        if (p0 >= seed_lb) break;
+        if (p0 + gap[g] >= seed_lb) continue;
+        const int end = group_start[g + 1];
+        for (int r = group_start[g]; r < end; ++r) {
+            const float p = phi[r];
+            if (p + gap[g] >= seed_lb) break;
+            const int i = backward ? me : rows[r];
+            const int pj = backward ? row_pre[r] : me_pre;
+            if (pj == i) continue;
+            float lp = 0.0f, lv = 0.0f;
+            for (int q = 0; q < PIVOTS; ++q) {
+                const float dp = row_p[(size_t)r * PIVOTS + q] - mq_p[q];
+                const float dv = row_v[(size_t)r * PIVOTS + q] - mq_v[q];
+                const float ap = dp < 0.0f ? -dp : dp;
+                const float av = dv < 0.0f ? -dv : dv;
+                lp = ap > lp ? ap : lp;
+                lv = av > lv ? av : lv;
+            }
+            const float pen = pj < 0 ? a1pnt : (row_vis[r] != me_vis ? pnt : 0.0f);
+            const float lb = p + (pen + a3 * lp + lv) * 0.9999f - slack;
+            if (lb < seed_lb) { seed_lb = lb; seed = r; }
+        }
+    }
+    if (seed >= 0) {
+        const int i = backward ? me : rows[seed];
+        const int j = backward ? rows[seed] : me;
+        const float p = phi[seed];
         const float v = p + pair_tc_below(i, j, (best - p) + best * 2.4e-7f, slack, PAIR_ARGS);
         best = v < best ? v : best;
         ++evals;
+    }
+    for (int g = 0; g < reach; ++g) {
+        const float p0 = phi[group_start[g]];
+        if (p0 >= best) break;
+        if (p0 + gap[g] >= best) continue;
+        best = scan_group(g, gap[g], best, &evals, me, me_pre, me_vis, mq_p, mq_v, slack, backward,
+                          row_p, row_v, row_vis, row_pre, rows, phi, group_start, PAIR_ARGS);
     }
     best_out[c] = best;
     evals_out[c] = evals;

@@ -170,6 +170,24 @@ class MotionDatabase:
         return relative_to_take(self.frames.head_rotation, self.frames.head_translation,
                                 [self.takes.frames(i) for i in range(len(self.takes))])
 
+    def head_relative(self, frames: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """:attr:`head_relative_to_take` of the frames ``frames`` only ((n,) int indices):
+        (n, 3, 3) rotations and (n, 3) mm, the same values, computed for their takes alone."""
+        frames = np.asarray(frames, np.int64)
+        starts = np.asarray(self.takes.frame_start, np.int64)
+        by_start = np.argsort(starts, kind="stable")
+        take = by_start[np.searchsorted(starts[by_start], frames, side="right") - 1]
+        rot, trans = np.empty((len(frames), 3, 3)), np.empty((len(frames), 3))
+        from ..motion.head import relative_to_take
+
+        for t in np.unique(take):
+            sl = self.takes.frames(int(t))
+            r, tr = relative_to_take(self.frames.head_rotation[sl], self.frames.head_translation[sl],
+                                     [slice(0, sl.stop - sl.start)])
+            sel = take == t
+            rot[sel], trans[sel] = r[frames[sel] - sl.start], tr[frames[sel] - sl.start]
+        return rot, trans
+
     @classmethod
     def read(cls, path: Path, *, markers: bool = False) -> "MotionDatabase":
         """Everything but the transition features; the normalized markers only if ``markers``."""
@@ -191,6 +209,13 @@ class MotionDatabase:
         except BaseException:
             f.close()
             raise
+
+    def feature_bytes(self) -> int:
+        """Bytes of the per-node transition features :meth:`read_features` returns (from the
+        datasets' shapes; nothing is read)."""
+        with self._opened() as f:
+            keys = [f"boundary/{k}" for k in BOUNDARY_KEYS] + [f"transition/{k}" for k in DSC_KEYS + PIVOT_KEYS]
+            return int(sum(f[k].size * f[k].dtype.itemsize for k in keys))
 
     def read_features(self):
         """The per-node transition features (a :class:`~facesynth.search.pairs.PairFeatures`)."""

@@ -30,8 +30,15 @@ import numpy as np
 from ..config import SynthesizeSettings
 from ..motion.postprocess import end_slope_weights
 
-#: Pivots of the cheap lower and upper bounds (triangle inequality of the mixed norm).
-PIVOTS = 4
+#: Pivots of the cheap lower and upper bounds (triangle inequality of the mixed norm) that
+#: ``build-db`` stores; a search uses as many as the database holds. More pivots give tighter
+#: bounds for more work per bound: on 100,000 nodes, 16 computed 2.5x fewer pair costs than 4
+#: (benchmarks/scale_search.py).
+PIVOTS = 16
+#: Work-group size of ``pruned_columns``, the same at every launch: PoCL compiles a kernel
+#: once per work-group size, so a size that followed the column count (min(64, columns))
+#: cost a compile at the first launch of every new size, about 1 s in a fresh process.
+LOCAL_SIZE = 16
 
 
 @dataclass
@@ -162,9 +169,12 @@ def _gap_lanes(last: np.ndarray, first: np.ndarray) -> np.ndarray:
 def mixed_norms(a: np.ndarray, pivots: np.ndarray) -> np.ndarray:
     """sum_k || a[n, k] - pivots[q, k] || over 3-vectors k: (N, Q) float32 (a: (N, 3M), pivots (Q, 3M))."""
     out = np.empty((len(a), len(pivots)), np.float32)
-    for q, p in enumerate(pivots):
-        d = (a - p[None]).reshape(len(a), -1, 3).astype(np.float64)
-        out[:, q] = np.sqrt((d * d).sum(-1)).sum(-1)
+    a = np.asarray(a, np.float32)
+    step = 4096
+    for q, p in enumerate(np.asarray(pivots, np.float32)):
+        for s in range(0, len(a), step):  # float32 differences and norms, float64 sums: 1e-6 relative
+            d = (a[s : s + step] - p[None]).reshape(min(step, len(a) - s), -1, 3)
+            out[s : s + step, q] = np.sqrt(np.einsum("nmk,nmk->nm", d, d)).sum(-1, dtype=np.float64)
     return out
 
 
@@ -219,6 +229,54 @@ def boundary_states(coeffs: np.ndarray, nodes, model, fit_frames: int = 2) -> tu
     first_vel = (to_markers(first_d) - zero).astype(np.float32)  # the linear part only: velocities
     last_vel = (to_markers(last_d) - zero).astype(np.float32)
     return first_pos.astype(np.float32), last_pos.astype(np.float32), first_vel, last_vel
+
+
+#: Most row groups per pruned step (``MAX_GROUPS`` of ``kernels/pair_costs.cl``).
+MAX_GROUPS = 256
+#: Fewest rows per group: smaller groups bound tighter, but each costs its own bound per column.
+MIN_GROUP = 16
+
+
+def row_groups(rows: np.ndarray, phi: np.ndarray, points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Groups of rows close together in ``points`` ((n, d) float32, e.g. each row's pivot
+    distances) for the pruned scan: k-d splits at the median of the widest coordinate until a
+    group has at most max(MIN_GROUP, n / MAX_GROUPS) rows. ``rows`` must be sorted by ``phi``.
+
+    Returns ``order`` ((n,) indices into rows: the groups one after the other, numbered by
+    their smallest phi, rows by phi inside; a stable sort, so ties keep their order) and
+    ``start`` ((groups + 1,) int32 offsets into ``order``). Any grouping is valid: the
+    kernel's bounds hold for whatever rows a group holds; close rows make them tight.
+    """
+    n = len(rows)
+    if n == 0:
+        return np.zeros(0, np.int64), np.zeros(1, np.int32)
+    size = max(MIN_GROUP, -(-n // MAX_GROUPS))
+    # level by level: every group larger than size is split at its median of its widest
+    # coordinate, all groups of a level at once (a stable sort within groups)
+    order, starts = np.arange(n), np.array([0, n])
+    while True:
+        lengths = np.diff(starts)
+        split = lengths > size
+        if not split.any():
+            break
+        seg = np.repeat(np.arange(len(lengths)), lengths)
+        pts = points[order]
+        widest = np.argmax(np.maximum.reduceat(pts, starts[:-1]) - np.minimum.reduceat(pts, starts[:-1]), axis=1)
+        key = np.where(split[seg], pts[np.arange(n), widest[seg]], 0.0)
+        order = order[np.lexsort((key, seg))]
+        starts = np.unique(np.concatenate([starts, (starts[:-1] + lengths // 2)[split]]))
+    count = len(starts) - 1
+    label = np.empty(n, np.int64)
+    label[order] = np.repeat(np.arange(count), np.diff(starts))
+    # number the groups by their smallest phi: rows are phi-sorted, so by their first row
+    first = np.full(count, n, np.int64)
+    np.minimum.at(first, label, np.arange(n))
+    rank = np.empty(count, np.int64)
+    rank[np.argsort(first, kind="stable")] = np.arange(count)
+    label = rank[label]
+    order = np.argsort(label, kind="stable")
+    start = np.searchsorted(label[order], np.arange(count + 1)).astype(np.int32)
+    return order, start
 
 
 @dataclass
@@ -346,7 +404,7 @@ class TransitionCosts:
         differs by at most a2 max DSC(r, .) + alpha3 |LP_r - LP_j| + |LV_r - LV_j| + PNT [viseme
         differs], the distances bounded through the pivots.
         """
-        r, j = np.broadcast_arrays(np.asarray(r), np.asarray(j))
+        r, j = np.asarray(r), np.asarray(j)  # broadcast by the operations: a scalar r is read once
         lp = np.min(self.row_lp[r] + self.row_lp[j], axis=-1).astype(np.float64)
         lv = np.min(self.row_lv[r] + self.row_lv[j], axis=-1).astype(np.float64)
         general = self.dsc_row_max[r] + self.s.alpha3 * lp + lv + self.s.pnt * (self.f.viseme[r] != self.f.viseme[j])
@@ -386,7 +444,8 @@ class OpenCLPairs:
         self.cl, self.ctx, self.queue, self.tc = cl, context(), queue(), tc
         f = tc.f
         dims8, markers = -(-f.dsc_out.shape[1] // 8), f.first_pos.shape[1] // 3
-        defines = dict(DIMS8=dims8, MQ=-(-markers // 8), PIVOTS=PIVOTS)
+        defines = dict(DIMS8=dims8, MQ=-(-markers // 8), PIVOTS=tc.row_lp.shape[1])
+        defines["MAX_GROUPS"] = MAX_GROUPS
         self.block_kernel = kernel("pair_costs", "tc_block", **defines)
         self.pruned_kernel = kernel("pair_costs", "pruned_columns", **defines)
         up = self.upload
@@ -412,7 +471,6 @@ class OpenCLPairs:
                          up(f.viseme.astype(np.int32)), up(tc.pre.astype(np.int32)),
                          up(tc.pre_viseme.astype(np.int32)),
                          np.float32(tc.s.alpha2), np.float32(tc.s.alpha3), np.float32(tc.s.pnt), tc.a1pnt]
-        self.pivots = [up(tc.row_lp), up(tc.row_lv), up(tc.col_fp), up(tc.col_fv)]
         # Absolute slack of the kernel's cheap lower bound: float32 rounding of the stored pivot
         # distances and of the computed sums, far below any cost that matters.
         self.slack = 1e-4 * (tc.s.alpha3 * (float(tc.row_lp.max(initial=0)) + float(tc.col_fp.max(initial=0)))
@@ -435,19 +493,69 @@ class OpenCLPairs:
         for a in range(0, len(rows), step):
             r = rows[a : a + step]
             buf = cl.Buffer(self.ctx, cl.mem_flags.WRITE_ONLY, 4 * len(r) * len(cols))
-            local = (min(64, len(cols)), 1)
+            local = (LOCAL_SIZE, 1)
             size = (-(-len(cols) // local[0]) * local[0], len(r))
             self.block_kernel(self.queue, size, local, *self.features, self.upload(r), cols_buf,
                               np.int32(len(r)), np.int32(len(cols)), buf)
             cl.enqueue_copy(self.queue, out[a : a + len(r)], buf)
         return out
 
+    def _rows(self, rows: np.ndarray, phi: np.ndarray, backward: bool) -> list[np.ndarray]:
+        """What ``pruned_columns`` reads of the rows (its comment), grouped by :func:`row_groups`:
+        rows, phi, visemes, predecessors, pivot distances (positions, velocities), group
+        starts, pivot ranges (lo/hi of positions, lo/hi of velocities) and viseme sets.
+        The same rows come twice per step (probes, then the other columns): made once."""
+        key = (backward, len(rows), rows.tobytes(), phi.tobytes())
+        if getattr(self, "_rows_key", None) == key:
+            return self._rows_data
+        tc = self.tc
+        rows = np.asarray(rows, np.int64)
+        if backward:
+            row_p, row_v, row_vis, row_pre = tc.col_fp[rows], tc.col_fv[rows], tc.pre_viseme[rows], tc.pre[rows]
+        else:
+            row_p, row_v, row_vis, row_pre = tc.row_lp[rows], tc.row_lv[rows], tc.f.viseme[rows], tc.pre[rows]
+        order, start = row_groups(rows, phi, np.concatenate([tc.s.alpha3 * row_p, row_v], axis=1))
+        rows, phi, row_p, row_v, row_vis, row_pre = (a[order] for a in (rows, phi, row_p, row_v, row_vis, row_pre))
+        heads = start[:-1]
+        bits = np.where((row_vis >= 0) & (row_vis < 32), np.left_shift(1, np.clip(row_vis, 0, 31)).astype(np.uint32),
+                        np.where(row_vis >= 32, np.uint32(0xFFFFFFFF), np.uint32(0)))
+        if len(heads):
+            lo_p, hi_p = np.minimum.reduceat(row_p, heads), np.maximum.reduceat(row_p, heads)
+            lo_v, hi_v = np.minimum.reduceat(row_v, heads), np.maximum.reduceat(row_v, heads)
+            group_vis = np.bitwise_or.reduceat(bits, heads).astype(np.uint32)
+        else:
+            lo_p = hi_p = lo_v = hi_v = np.zeros((0, row_p.shape[1]), np.float32)
+            group_vis = np.zeros(0, np.uint32)
+        f32 = lambda a: np.ascontiguousarray(a, np.float32)  # noqa: E731
+        self._rows_key = key
+        self._rows_data = [rows.astype(np.int32), f32(phi), row_vis.astype(np.int32), row_pre.astype(np.int32),
+                           f32(row_p), f32(row_v), start, f32(lo_p), f32(hi_p), f32(lo_v), f32(hi_v), group_vis]
+        return self._rows_data
+
+    @property
+    def _changing(self) -> tuple[int, ...]:
+        """Argument indices of ``pruned_columns`` that change between calls: the group count,
+        the column count and the direction."""
+        first = len(self.features) + 10  # n_groups
+        return first, first + 8, first + 9
+
+    def _cols(self, cols: np.ndarray, init: np.ndarray, backward: bool) -> list[np.ndarray]:
+        """What ``pruned_columns`` reads of the columns: cols, init, pivot distances."""
+        tc = self.tc
+        cols = np.asarray(cols, np.int64)
+        col_p, col_v = (tc.row_lp[cols], tc.row_lv[cols]) if backward else (tc.col_fp[cols], tc.col_fv[cols])
+        return [cols.astype(np.int32), np.ascontiguousarray(init, np.float32),
+                np.ascontiguousarray(col_p, np.float32), np.ascontiguousarray(col_v, np.float32)]
+
     def _scratch(self, n: int):
-        """Device buffers for one step (rows, phi, cols, init, best, evals) of n entries, reused."""
+        """Device buffers for one step, reused, in the order of :meth:`_rows` and :meth:`_cols`,
+        then best and evals: n entries (times the pivots for pivot distances and ranges)."""
         if getattr(self, "_capacity", 0) < n:
             cl, mf = self.cl, self.cl.mem_flags
             self._capacity = max(n, 1024)
-            self._buffers = [cl.Buffer(self.ctx, mf.READ_WRITE, 4 * self._capacity) for _ in range(6)]
+            pivots = self.tc.row_lp.shape[1]
+            sizes = [1, 1, 1, 1, pivots, pivots, 1, pivots, pivots, pivots, pivots, 1, 1, 1, pivots, pivots, 1, 1]
+            self._buffers = [cl.Buffer(self.ctx, mf.READ_WRITE, 4 * (self._capacity + 1) * k) for k in sizes]
         return self._buffers
 
     def column_minima(self, rows: np.ndarray, phi: np.ndarray, cols: np.ndarray, init: np.ndarray,
@@ -459,18 +567,30 @@ class OpenCLPairs:
         n_cols = len(cols)
         if n_cols == 0:
             return np.zeros(0, np.float32), 0
-        host = [np.ascontiguousarray(rows, np.int32), np.ascontiguousarray(phi, np.float32),
-                np.ascontiguousarray(cols, np.int32), np.ascontiguousarray(init, np.float32)]
-        rows_buf, phi_buf, cols_buf, init_buf, best_buf, evals_buf = self._scratch(max(len(rows), n_cols))
-        for buf, a in zip((rows_buf, phi_buf, cols_buf, init_buf), host):
+        host = self._rows(rows, phi, backward) + self._cols(cols, init, backward)
+        buffers = self._scratch(max(len(rows), n_cols))
+        for buf, a in zip(buffers, host):
             if len(a):
                 cl.enqueue_copy(self.queue, buf, a, is_blocking=False)
+        (rows_buf, phi_buf, row_vis_buf, row_pre_buf, row_p_buf, row_v_buf, start_buf, lo_p_buf, hi_p_buf,
+         lo_v_buf, hi_v_buf, group_vis_buf, cols_buf, init_buf, col_p_buf, col_v_buf, best_buf, evals_buf) = buffers
         best = np.empty(n_cols, np.float32)
         evals = np.empty(n_cols, np.int32)
-        local = min(64, n_cols)
-        self.pruned_kernel(self.queue, (-(-n_cols // local) * local,), (local,), *self.features, *self.pivots,
-                           np.float32(self.slack), rows_buf, phi_buf, np.int32(len(rows)), cols_buf, init_buf,
-                           np.int32(n_cols), np.int32(bool(backward)), best_buf, evals_buf)
+        local = LOCAL_SIZE
+        args = [*self.features, row_p_buf, row_v_buf, row_vis_buf, row_pre_buf, col_p_buf, col_v_buf,
+                np.float32(self.slack), rows_buf, phi_buf, start_buf, np.int32(len(host[6]) - 1),
+                lo_p_buf, hi_p_buf, lo_v_buf, hi_v_buf, group_vis_buf, cols_buf, init_buf,
+                np.int32(n_cols), np.int32(bool(backward)), best_buf, evals_buf]
+        # the buffers stay the same between calls: all arguments are set once, then only those
+        # that change (setting some 40 arguments per launch cost about 3 ms)
+        kernel = self.pruned_kernel
+        if getattr(self, "_args_for", None) is not buffers:
+            kernel.set_args(*args)
+            self._args_for = buffers
+        else:
+            for index in self._changing:
+                kernel.set_arg(index, args[index])
+        self.cl.enqueue_nd_range_kernel(self.queue, kernel, (-(-n_cols // local) * local,), (local,))
         cl.enqueue_copy(self.queue, best, best_buf, is_blocking=False)
         cl.enqueue_copy(self.queue, evals, evals_buf, is_blocking=True)
         return best, int(evals.astype(np.int64).sum())

@@ -27,7 +27,7 @@ Per step t, with ``phi_{t-1}`` exact on the live states (dead states are +inf):
 Every kill is strict by a margin of 1e-4 relative plus 1e-3 absolute, far above float32
 rounding, so a state that ties on the dense DP's optimal paths is never removed; ties then
 resolve as in the dense DP (lowest index, in the final argmin and in the backtracking, which
-recomputes TC along the path over the live rows). Weights that weaken the bounds (a zero
+recomputes TC along the path over the rows that can attain the minimum, on the host). Weights that weaken the bounds (a zero
 PNT, say) leave more states alive: slower, never inexact.
 """
 
@@ -83,10 +83,16 @@ def _dominated(tc: TransitionCosts, cand: np.ndarray, lower: np.ndarray, refs: n
     bound = float(np.min(ref_upper + tc.reach_row[refs]))
     killed = lower - tc.reach_col[cand] > bound + _margin(lower, bound)
     open_ = np.nonzero(~killed)[0]
-    if len(open_):
-        j = cand[open_]
-        best = (ref_upper[:, None] + tc.advantage(refs[:, None], j[None, :])).min(axis=0)
-        killed[open_] = lower[open_] > best + _margin(lower[open_], best)
+    # One reference at a time, smallest upper bound first, each on the states still open: the
+    # same kills as against the minimum over the references (b + margin(lower, b) grows with
+    # b >= 0), with most states settled by the first reference.
+    for k in np.argsort(ref_upper, kind="stable"):
+        if not len(open_):
+            break
+        bound = ref_upper[k] + tc.advantage(refs[k], cand[open_])
+        dead = lower[open_] > bound + _margin(lower[open_], bound)
+        killed[open_[dead]] = True
+        open_ = open_[~dead]
     return killed
 
 
@@ -178,12 +184,21 @@ def dp_pruned(tc: TransitionCosts, obs: np.ndarray, keep_last: bool = False) -> 
     path = np.empty(t_count, np.int64)
     path[-1] = int(np.argmin(phi[-1]))
     for t in range(t_count - 1, 0, -1):
-        rows = np.nonzero(np.isfinite(phi[t - 1]))[0]
-        values = np.full(n, np.inf, np.float32)
-        values[rows] = phi[t - 1, rows] + tc.column(int(path[t]), rows)
-        stats.pairs += len(rows)
-        path[t - 1] = int(np.argmin(values))
+        path[t - 1] = _argmin_predecessor(tc, phi[t - 1], int(path[t]), phi[t, path[t]], stats)
     return DpResult(float(phi[-1, path[-1]]), path, phi), stats
+
+
+def _argmin_predecessor(tc: TransitionCosts, prev: np.ndarray, j: int, target: np.float32, stats: PruneStats) -> int:
+    """argmin_i (prev[i] + TC(i, j)), lowest index on ties (``prev``: (N,) float32 phi of the
+    step before, +inf on pruned states; ``target`` = phi_t(j)). Only rows with ``prev[i] <=
+    target`` can attain the minimum: it is at most phi_t(j) (obs >= 0 and rounding is
+    monotone) and every other row's value is at least its ``prev`` (TC >= 0), strictly above.
+    So few rows are left, and their costs are computed on the host (bit-identical to the
+    kernel), without a device round trip per step."""
+    rows = np.nonzero(prev <= target)[0]
+    stats.pairs += len(rows)
+    values = prev[rows] + tc.block_numpy(rows, np.array([j]))[:, 0]
+    return int(rows[np.argmin(values)])
 
 
 def _after(tc: TransitionCosts, live: np.ndarray, values: np.ndarray, last: bool) -> np.ndarray:

@@ -20,7 +20,7 @@ from ..config import AlignSettings, IngestSettings, SynthesizeSettings
 from ..errors import UsageError
 from ..model.motion import Motion, Provenance, SearchPath
 from ..model.motiondb import MotionDatabase, Nodes
-from ..motion.head import follow_sources, import_scipy
+from ..motion.head import follow_sources
 from ..motion.postprocess import concatenate, downsample
 from ..opencl import use_opencl
 from ..phonemes import PAU, viseme
@@ -156,8 +156,7 @@ def synthesize(db: MotionDatabase, utt: Utterance, constraints: dict[int, int], 
         result, device = greedy_search(db, tc, utt, steps, settings)
         fraction = None
     else:
-        # scipy (head motion) is imported while the device searches
-        result, device, fraction = search(tc, steps, settings, while_running=import_scipy, timings=timings)
+        result, device, fraction = search(tc, steps, settings, timings=timings)
     timings["search_s"] = time.perf_counter() - t0 - timings.get("opencl_setup_s", 0.0)
     path = result.path
     for t, node in constraints.items():  # Eq. 10 guarantees this; a failure is a bug
@@ -184,7 +183,10 @@ def render_path(db: MotionDatabase, utt: Utterance, path: np.ndarray, settings: 
     joins = sum(1 for t in range(len(path) - 1)
                 if utt.phones[t] != PAU and utt.phones[t + 1] != PAU and db.nodes.pre[path[t + 1]] != path[t])
     take = np.where(cat.node >= 0, db.nodes.take[np.maximum(cat.node, 0)], -1)
-    head_r, head_t = follow_sources(cat.source_frame, *db.head_relative_to_take)
+    # the head motion of the source frames only, relative to their takes
+    used = np.unique(cat.source_frame[cat.source_frame >= 0])
+    sources = np.where(cat.source_frame >= 0, np.searchsorted(used, cat.source_frame), -1)
+    head_r, head_t = follow_sources(sources, *db.head_relative(used))
     return {"concatenated": cat, "markers_capture": markers, "markers": downsample(markers, db.fps, settings.output_fps),
             "non_captured_joins": joins, "take": take,
             "head_rotation": downsample(head_r, db.fps, settings.output_fps),

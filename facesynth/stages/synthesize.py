@@ -22,9 +22,14 @@ from ..motion.trajectory import synthesize_motion
 from ..search.synthesis import as_motion, prepare, synthesize, unseen_phones
 
 
-def memory_estimate(nodes: int, phones: int) -> float:
-    """Bytes the dense search needs: the (N, N) float32 transition matrix (twice, while it is
-    assembled panel-major) and per phone a row of float64 costs and int32 backpointers."""
+def memory_estimate(nodes: int, phones: int, dp: str = "dense", feature_bytes: int = 0) -> float:
+    """Bytes the search needs. The dense DP (``dp = "dense"``): the (N, N) float32 transition
+    matrix (twice, while it is assembled panel-major) and per phone a row of float64 costs and
+    int32 backpointers. The pruned DP: the per-node transition features (``feature_bytes``)
+    three times (read, on the device, in the device's layout) and per phone and node the
+    float32 observation costs, accumulated costs and their step's work arrays (12 bytes)."""
+    if dp == "pruned":
+        return 3.0 * feature_bytes + 12.0 * phones * nodes
     return 2.0 * 4 * nodes * nodes + 12.0 * phones * nodes
 
 
@@ -53,7 +58,7 @@ def run(db_path: Path, out: Path, settings: SynthesizeSettings, ingest_settings:
     records = input_records_in_background(inputs)
     utt, constraints = prepare(db, phones_path, emotions_path, constraints_path, ingest_settings, audio, text,
                                align_settings)
-    require_memory(memory_estimate(len(db.nodes), len(utt)), f"the search over {len(db.nodes)} motion nodes for "
+    require_memory(memory_estimate(len(db.nodes), len(utt), settings.dp, db.feature_bytes()), f"the search over {len(db.nodes)} motion nodes for "
                    f"{len(utt)} phones", str(db_path))
     res = synthesize(db, utt, constraints, settings)
     t0 = time.perf_counter()

@@ -25,6 +25,42 @@ def test_sources_are_followed_and_pauses_slerped():
     np.testing.assert_allclose(t[:, 0], [0, 3, 6, 9])
 
 
+def _scipy_follow_sources(source_frame, rotations, translations, smooth_frames):
+    """The scipy formulation follow_sources replaces (Slerp, gaussian_filter1d on rotation vectors)."""
+    from scipy.ndimage import gaussian_filter1d
+    from scipy.spatial.transform import Slerp
+
+    have = np.nonzero(source_frame >= 0)[0]
+    frames = np.arange(len(source_frame))
+    known = Rotation.from_matrix(rotations[source_frame[have]])
+    if len(have) == 1:
+        rot = Rotation.from_matrix(np.repeat(known.as_matrix(), len(frames), axis=0))
+    else:
+        rot = Slerp(have, known)(np.clip(frames, have[0], have[-1]))
+    trans = np.stack([np.interp(frames, have, translations[source_frame[have], a]) for a in range(3)], 1)
+    if smooth_frames > 0 and len(frames) > 1:
+        rot = Rotation.from_rotvec(gaussian_filter1d(rot.as_rotvec(), smooth_frames, axis=0, mode="nearest"))
+        trans = gaussian_filter1d(trans, smooth_frames, axis=0, mode="nearest")
+    return rot.as_matrix(), trans
+
+
+@pytest.mark.parametrize("spread", [0.001, 0.05, 1.5])
+def test_follow_sources_equals_scipy(spread):
+    rng = np.random.default_rng(int(spread * 1000))
+    rotations = Rotation.from_rotvec(rng.normal(0, spread, (40, 3))).as_matrix()
+    translations = rng.normal(0, 5, (40, 3))
+    for trial in range(10):
+        source = rng.integers(-1, 40, int(rng.integers(2, 60)))
+        source[0] = int(rng.integers(0, 40))
+        if trial == 0:
+            source[1:] = -1  # one known frame
+        for smooth in (0.0, 3.0):
+            r, t = follow_sources(source, rotations, translations, smooth)
+            r_ref, t_ref = _scipy_follow_sources(source, rotations, translations, smooth)
+            np.testing.assert_allclose(r, r_ref, atol=1e-12)
+            np.testing.assert_allclose(t, t_ref, atol=1e-12)
+
+
 def test_apply_moves_vertices_rigidly_through_the_marker_frame():
     rng = np.random.default_rng(1)
     verts = rng.normal(0, 5, (30, 3))

@@ -140,3 +140,51 @@ def test_backward_values_and_a_kept_last_step_equal_the_dense_dp(opencl):
     fwd = dp_numpy(dense, obs[:5])
     res, _ = dp_pruned(tc, obs[:5], keep_last=True)
     assert np.array_equal(res.phi[-1], fwd.phi[-1])
+
+
+def _clustered(n: int, seed: int) -> PairFeatures:
+    """Random features whose boundary states sit in a few tight clusters far apart (copies of
+    a few poses with small noise, as replicated takes are), so row groups are tight and whole
+    groups are skipped; duplicates make exact ties."""
+    f = random_features(n, seed=seed, duplicates=n // 6)
+    rng = np.random.default_rng(seed)
+    centers = rng.normal(0, 200, (5, f.first_pos.shape[1])).astype(np.float32)
+    pick = rng.integers(0, 5, n)
+    for key in ("first_pos", "last_pos"):
+        a = getattr(f, key)
+        a[:] = centers[pick] + 0.01 * a
+    f.pivot_distances = None
+    return f
+
+
+@pytest.mark.parametrize("backward", [False, True])
+def test_grouped_column_minima_equal_the_brute_force_minima(backward, opencl_device):
+    """The kernel's group bounds and seed skip only what cannot lower a minimum: every column's
+    minimum is the brute-force float32 minimum, with rows in tight groups, tied values and
+    phi ties, forward and backward."""
+    s = _settings()
+    f = _clustered(700, seed=5)
+    tc = TransitionCosts(f, s, opencl=True)
+    rng = np.random.default_rng(1)
+    rows = rng.choice(len(f), 500, replace=False)
+    phi = np.round(rng.random(500) * 50, 0).astype(np.float32)  # many ties
+    order = np.argsort(phi, kind="stable")
+    rows, phi = rows[order].astype(np.int32), phi[order]
+    cols = np.arange(len(f), dtype=np.int32)
+    tcb = tc.dense()
+    costs = tcb[cols][:, rows] if backward else tcb[rows][:, cols].T  # (cols, rows)
+    special = (f.pre[rows][None, :] == cols[:, None]) | (f.pre[rows][None, :] < 0) if backward else \
+        (f.pre[cols][:, None] == rows[None, :]) | (f.pre[cols][:, None] < 0)
+    values = np.where(special, np.float32(np.inf), phi[None, :] + costs)  # rules 1 and 4 are init's
+    init = np.full(len(cols), np.inf, np.float32)
+    init[::3] = np.min(values[::3], axis=1)  # some columns start at their exact minimum
+    best, evals = tc.device.column_minima(rows, phi, cols, init, backward=backward)
+    assert np.array_equal(best, np.minimum(init, values.min(axis=1)))
+    assert evals < values.size
+
+
+def test_clustered_database_pruned_equals_dense_on_opencl(opencl_device):
+    s = _settings()
+    f = _clustered(600, seed=9)
+    obs = _random_obs(f, 10, seed=2, s=s)
+    _check(TransitionCosts(f, s, opencl=True), obs)
