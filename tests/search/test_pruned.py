@@ -158,11 +158,12 @@ def _clustered(n: int, seed: int) -> PairFeatures:
 
 
 @pytest.mark.parametrize("backward", [False, True])
-def test_grouped_column_minima_equal_the_brute_force_minima(backward, opencl_device):
+@pytest.mark.parametrize("alpha1", ["1.75", "0.3"])
+def test_grouped_column_minima_equal_the_brute_force_minima(backward, alpha1, opencl_device):
     """The kernel's group bounds and seed skip only what cannot lower a minimum: every column's
     minimum is the brute-force float32 minimum, with rows in tight groups, tied values and
-    phi ties, forward and backward."""
-    s = _settings()
+    phi ties, forward and backward, with the rule-4 penalty alpha1 PNT above and below PNT."""
+    s = _settings(f"synthesize.alpha1={alpha1}")
     f = _clustered(700, seed=5)
     tc = TransitionCosts(f, s, opencl=True)
     rng = np.random.default_rng(1)
@@ -173,9 +174,8 @@ def test_grouped_column_minima_equal_the_brute_force_minima(backward, opencl_dev
     cols = np.arange(len(f), dtype=np.int32)
     tcb = tc.dense()
     costs = tcb[cols][:, rows] if backward else tcb[rows][:, cols].T  # (cols, rows)
-    special = (f.pre[rows][None, :] == cols[:, None]) | (f.pre[rows][None, :] < 0) if backward else \
-        (f.pre[cols][:, None] == rows[None, :]) | (f.pre[cols][:, None] < 0)
-    values = np.where(special, np.float32(np.inf), phi[None, :] + costs)  # rules 1 and 4 are init's
+    special = (f.pre[rows][None, :] == cols[:, None]) if backward else (f.pre[cols][:, None] == rows[None, :])
+    values = np.where(special, np.float32(np.inf), phi[None, :] + costs)  # rule 1 is init's; rule 4 is scanned
     init = np.full(len(cols), np.inf, np.float32)
     init[::3] = np.min(values[::3], axis=1)  # some columns start at their exact minimum
     best, evals = tc.device.column_minima(rows, phi, cols, init, backward=backward)
