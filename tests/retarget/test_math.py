@@ -25,16 +25,18 @@ def test_nnls_on_the_gram_factor_matches_scipy_on_the_full_system():
     np.testing.assert_allclose(rms, np.sqrt(((frames - w @ shapes) ** 2).sum(1) / 20))
 
 
-@pytest.mark.parametrize("stragglers", [0, 8])  # 0: block pivoting to the end, no scipy finish
-def test_batched_block_pivoting_nnls_matches_scipy_frame_by_frame(stragglers):
+@pytest.mark.parametrize("stragglers, k", [(0, 12), (8, 12), (8, 40)])  # 0: block pivoting to the end; 40: per frame
+def test_batched_block_pivoting_nnls_matches_scipy_frame_by_frame(stragglers, k):
     # Many frames, key-shapes that overlap (a near-duplicate pair) and sparse true mixtures: the
-    # batched solver must land on scipy's minimizer for every frame.
-    from facesynth.retarget.solve import nnls_gram
+    # solver (batched up to BATCHED_MAX_SHAPES key-shapes, else per frame) lands on scipy's
+    # minimizer for every frame.
+    from facesynth.retarget.solve import BATCHED_MAX_SHAPES, nnls_gram
 
+    assert (k <= BATCHED_MAX_SHAPES) == (k == 12)
     rng = np.random.default_rng(10)
-    shapes = rng.normal(size=(25, 90)) + 1.0
+    shapes = rng.normal(size=(k, 90)) + 1.0
     shapes[7] = shapes[3] + rng.normal(scale=1e-3, size=90)
-    mix = rng.uniform(0, 1, (300, 25)) * (rng.uniform(size=(300, 25)) < 0.2)
+    mix = rng.uniform(0, 1, (300, k)) * (rng.uniform(size=(300, k)) < 0.2)
     frames = mix @ shapes + rng.normal(scale=0.5, size=(300, 90))
     frames[:50] = rng.normal(scale=3.0, size=(50, 90))  # frames far from the cone: many zeros
     w = nnls_gram(shapes @ shapes.T, frames @ shapes.T, stragglers=stragglers)
@@ -43,7 +45,7 @@ def test_batched_block_pivoting_nnls_matches_scipy_frame_by_frame(stragglers):
     obj = ((frames - w @ shapes) ** 2).sum(1)
     ref_obj = ((frames - ref @ shapes) ** 2).sum(1)
     np.testing.assert_allclose(obj, ref_obj, rtol=1e-9, atol=1e-9)
-    keep = np.setdiff1d(np.arange(25), [3, 7])  # the near-duplicate pair may split its weight differently
+    keep = np.setdiff1d(np.arange(k), [3, 7])  # the near-duplicate pair may split its weight differently
     np.testing.assert_allclose(w[:, keep], ref[:, keep], atol=1e-6)
 
 
