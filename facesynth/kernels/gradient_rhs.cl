@@ -1,0 +1,117 @@
+// Right-hand sides of deformation-gradient blending (facesynth/retarget/gradients.py), for a
+// group of T frames (a multiple of 8; each work-item takes 8 neighbouring frames as a float8):
+// each triangle's two blended edges R (S e) minus the same edges of the linear blend, then
+// summed onto the vertices (E^T) by a gather over each vertex's triangles (no atomics).
+//
+// residual_edges: work-item (t / 8, f).
+//   g: (F, 9, T) blended rotation vector (rows 0-2) and stretch offsets (S - I) e1, (S - I) e2
+//      (rows 3-5, 6-8), mm; rest_edges: (F, 6) e1, e2 of the rest mesh, mm; faces: (F, 3);
+//   lin: (V, 3, T) linear blend, mm; res: (F, 6, T) R (S e) - (lin edge), mm.
+// R x = x + a (r x x) + b (r x (r x x)), a = sin t / t, b = 2 (sin(t/2) / t)^2, t = |r|.
+__kernel void residual_edges(__global const float *g, __global const float *rest_edges,
+                             __global const int *faces, __global const float *lin,
+                             __global float *res, const int T)
+{
+    const int t = 8 * get_global_id(0);
+    const int f = get_global_id(1);
+    const size_t T_ = (size_t)T;
+    const __global float *gf = g + (size_t)f * 9 * T_ + t;
+    const float8 rx = vload8(0, gf), ry = vload8(0, gf + T_), rz = vload8(0, gf + 2 * T_);
+    const float8 th2 = rx * rx + ry * ry + rz * rz;
+    const float8 th = sqrt(th2);
+    // th < 1e-3: the series (sin th / th loses nothing there, but is 0 / 0 at th = 0)
+    const int8 small = th < 1e-3f;
+    const float8 safe = select(th, (float8)(1.0f), small);
+    const float8 hs = sin(0.5f * safe) / safe;
+    const float8 a = select(sin(safe) / safe, 1.0f - th2 / 6.0f, small);
+    const float8 b = select(2.0f * hs * hs, 0.5f - th2 / 24.0f, small);
+    const __global float *l0 = lin + (size_t)faces[3 * f] * 3 * T_ + t;
+    __global float *out = res + (size_t)f * 6 * T_ + t;
+    for (int j = 0; j < 2; j++) {
+        const float8 x = rest_edges[6 * f + 3 * j] + vload8(0, gf + (3 + 3 * j) * T_);
+        const float8 y = rest_edges[6 * f + 3 * j + 1] + vload8(0, gf + (4 + 3 * j) * T_);
+        const float8 z = rest_edges[6 * f + 3 * j + 2] + vload8(0, gf + (5 + 3 * j) * T_);
+        const float8 cx = ry * z - rz * y, cy = rz * x - rx * z, cz = rx * y - ry * x;
+        const float8 dx = ry * cz - rz * cy, dy = rz * cx - rx * cz, dz = rx * cy - ry * cx;
+        const __global float *l1 = lin + (size_t)faces[3 * f + 1 + j] * 3 * T_ + t;
+        vstore8(x + (a * cx + b * dx) - (vload8(0, l1) - vload8(0, l0)), 0, out + (3 * j) * T_);
+        vstore8(y + (a * cy + b * dy) - (vload8(0, l1 + T_) - vload8(0, l0 + T_)), 0, out + (3 * j + 1) * T_);
+        vstore8(z + (a * cz + b * dz) - (vload8(0, l1 + 2 * T_) - vload8(0, l0 + 2 * T_)), 0,
+                out + (3 * j + 2) * T_);
+    }
+}
+
+// gather_edges: work-item (t / 8, v). rhs[v, i, t] = sum over v's triangles f of E^T res:
+// -(r1 + r2) where v is corner 0 of f, r1 at corner 1, r2 at corner 2.
+//   res: (F, 6, T); start: (V + 1) offsets into incident; incident: 4 f + corner, by vertex;
+//   rhs: (V, 3, T), mm.
+__kernel void gather_edges(__global const float *res, __global const int *start,
+                           __global const int *incident, __global float *rhs, const int T)
+{
+    const int t = 8 * get_global_id(0);
+    const int v = get_global_id(1);
+    const size_t T_ = (size_t)T;
+    float8 sx = 0.0f, sy = 0.0f, sz = 0.0f;
+    for (int k = start[v]; k < start[v + 1]; k++) {
+        const int code = incident[k];
+        const int corner = code & 3;
+        const __global float *p = res + (size_t)(code >> 2) * 6 * T_ + t;
+        if (corner == 0) {
+            sx -= vload8(0, p) + vload8(0, p + 3 * T_);
+            sy -= vload8(0, p + T_) + vload8(0, p + 4 * T_);
+            sz -= vload8(0, p + 2 * T_) + vload8(0, p + 5 * T_);
+        } else {
+            const __global float *e = p + (corner - 1) * 3 * T_;
+            sx += vload8(0, e);
+            sy += vload8(0, e + T_);
+            sz += vload8(0, e + 2 * T_);
+        }
+    }
+    __global float *out = rhs + (size_t)v * 3 * T_ + t;
+    vstore8(sx, 0, out);
+    vstore8(sy, 0, out + T_);
+    vstore8(sz, 0, out + 2 * T_);
+}
+
+// lu_solve: work-item c / 8 of the C = 3 T columns (column i T + t: coordinate i of frame t).
+// Solves N d = rhs for 8 columns with the sparse LU factors of Pr N Pc = L U (SuperLU's, as
+// scipy gives them: d = Pc U^-1 L^-1 Pr rhs), by columns of L and U, and writes the vertices
+// out[t, v, i] = lin[v, i, t] + d[v, i T + t].
+//   rhs: (V, C); y: (V, C) scratch; perm_r, perm_c: (V,); l_start, l_row, l_val: L below its unit
+//   diagonal, CSC; u_start, u_row, u_val: U above its diagonal, CSC; u_diag: (V,);
+//   lin: (V, 3, T), mm; out: (T, V, 3), mm.
+__kernel void lu_solve(__global const float *rhs, __global float *y, __global const int *perm_r,
+                       __global const int *perm_c, __global const int *l_start, __global const int *l_row,
+                       __global const float *l_val, __global const int *u_start, __global const int *u_row,
+                       __global const float *u_val, __global const float *u_diag, __global const float *lin,
+                       __global float *out, const int V, const int T)
+{
+    const int c = 8 * get_global_id(0);
+    const size_t C = 3 * (size_t)T;
+    __global float *yc = y + c;
+    for (int j = 0; j < V; j++)
+        vstore8(vload8(0, rhs + j * C + c), 0, yc + perm_r[j] * C);
+    for (int j = 0; j < V; j++) {
+        const float8 yj = vload8(0, yc + j * C);
+        for (int k = l_start[j]; k < l_start[j + 1]; k++) {
+            __global float *r = yc + l_row[k] * C;
+            vstore8(vload8(0, r) - l_val[k] * yj, 0, r);
+        }
+    }
+    for (int j = V - 1; j >= 0; j--) {
+        const float8 yj = vload8(0, yc + j * C) / u_diag[j];
+        vstore8(yj, 0, yc + j * C);
+        for (int k = u_start[j]; k < u_start[j + 1]; k++) {
+            __global float *r = yc + u_row[k] * C;
+            vstore8(vload8(0, r) - u_val[k] * yj, 0, r);
+        }
+    }
+    const int i = c / T, t = c % T;
+    for (int j = 0; j < V; j++) {
+        const float8 x = vload8(0, yc + perm_c[j] * C) + vload8(0, lin + (size_t)j * C + c);
+        const float xs[8] = {x.s0, x.s1, x.s2, x.s3, x.s4, x.s5, x.s6, x.s7};
+        __global float *o = out + ((size_t)t * V + j) * 3 + i;
+        for (int l = 0; l < 8; l++)
+            o[(size_t)l * V * 3] = xs[l];
+    }
+}
