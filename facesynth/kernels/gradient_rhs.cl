@@ -1,5 +1,5 @@
 // Right-hand sides of deformation-gradient blending (facesynth/retarget/gradients.py), for a
-// group of T frames (a multiple of 8; each work-item takes 8 neighbouring frames as a float8):
+// group of T frames (a multiple of 16; each work-item takes 8 or 16 neighbouring frames as a vector):
 // each triangle's two blended edges R (S e) minus the same edges of the linear blend, then
 // summed onto the vertices (E^T) by a gather over each vertex's triangles (no atomics).
 //
@@ -73,12 +73,12 @@ __kernel void gather_edges(__global const float *res, __global const int *start,
     vstore8(sz, 0, out + 2 * T_);
 }
 
-// lu_solve: work-item c / 8 of the C = 3 T columns (column i T + t: coordinate i of frame t).
-// Solves N d = rhs for 8 columns with the sparse LU factors of Pr N Pc = L U (SuperLU's, as
-// scipy gives them: d = Pc U^-1 L^-1 Pr rhs), by columns of L and U, and writes the vertices
-// out[t, v, i] = lin[v, i, t] + d[v, i T + t].
-//   rhs: (V, C); y: (V, C) scratch; perm_r, perm_c: (V,); l_start, l_row, l_val: L below its unit
-//   diagonal, CSC; u_start, u_row, u_val: U above its diagonal, CSC; u_diag: (V,);
+// lu_solve: work-item c / 16 of the C = 3 T columns (column i T + t: coordinate i of frame t; T a
+// multiple of 16, a float16 per row: one cache line). Solves N d = rhs for 16 columns with the
+// sparse LU factors of Pr N Pc = L U (SuperLU's, as scipy gives them: d = Pc U^-1 L^-1 Pr rhs),
+// by columns of L and U, and writes the vertices out[t, v, i] = lin[v, i, t] + d[v, i T + t].
+//   rhs: (V, C); y: (C / 16, V, 16) scratch, its own rows for each work-item; perm_r, perm_c: (V,);
+//   l_start, l_row, l_val: L below its unit diagonal, CSC; u_start, u_row, u_val: U above its diagonal, CSC; u_diag: (V,);
 //   lin: (V, 3, T), mm; out: (T, V, 3), mm.
 __kernel void lu_solve(__global const float *rhs, __global float *y, __global const int *perm_r,
                        __global const int *perm_c, __global const int *l_start, __global const int *l_row,
@@ -86,32 +86,29 @@ __kernel void lu_solve(__global const float *rhs, __global float *y, __global co
                        __global const float *u_val, __global const float *u_diag, __global const float *lin,
                        __global float *out, const int V, const int T)
 {
-    const int c = 8 * get_global_id(0);
+    const int c = 16 * get_global_id(0);
     const size_t C = 3 * (size_t)T;
-    __global float *yc = y + c;
+    __global float *yc = y + (size_t)c * V;  // this work-item's (V, 16) scratch, contiguous
     for (int j = 0; j < V; j++)
-        vstore8(vload8(0, rhs + j * C + c), 0, yc + perm_r[j] * C);
+        vstore16(vload16(0, rhs + j * C + c), perm_r[j], yc);
     for (int j = 0; j < V; j++) {
-        const float8 yj = vload8(0, yc + j * C);
-        for (int k = l_start[j]; k < l_start[j + 1]; k++) {
-            __global float *r = yc + l_row[k] * C;
-            vstore8(vload8(0, r) - l_val[k] * yj, 0, r);
-        }
+        const float16 yj = vload16(j, yc);
+        for (int k = l_start[j]; k < l_start[j + 1]; k++)
+            vstore16(vload16(l_row[k], yc) - l_val[k] * yj, l_row[k], yc);
     }
     for (int j = V - 1; j >= 0; j--) {
-        const float8 yj = vload8(0, yc + j * C) / u_diag[j];
-        vstore8(yj, 0, yc + j * C);
-        for (int k = u_start[j]; k < u_start[j + 1]; k++) {
-            __global float *r = yc + u_row[k] * C;
-            vstore8(vload8(0, r) - u_val[k] * yj, 0, r);
-        }
+        const float16 yj = vload16(j, yc) / u_diag[j];
+        vstore16(yj, j, yc);
+        for (int k = u_start[j]; k < u_start[j + 1]; k++)
+            vstore16(vload16(u_row[k], yc) - u_val[k] * yj, u_row[k], yc);
     }
     const int i = c / T, t = c % T;
     for (int j = 0; j < V; j++) {
-        const float8 x = vload8(0, yc + perm_c[j] * C) + vload8(0, lin + (size_t)j * C + c);
-        const float xs[8] = {x.s0, x.s1, x.s2, x.s3, x.s4, x.s5, x.s6, x.s7};
+        const float16 x = vload16(perm_c[j], yc) + vload16(0, lin + (size_t)j * C + c);
+        float xs[16];
+        vstore16(x, 0, xs);
         __global float *o = out + ((size_t)t * V + j) * 3 + i;
-        for (int l = 0; l < 8; l++)
+        for (int l = 0; l < 16; l++)
             o[(size_t)l * V * 3] = xs[l];
     }
 }

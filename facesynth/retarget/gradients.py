@@ -188,9 +188,9 @@ class GradientBlender:
 
     #: Frames per back-substitution (3 right-hand sides each).
     SOLVE_FRAMES = 8
-    #: Frames whose right-hand sides are built at once (about 30 MB of work arrays on an
+    #: Frames whose right-hand sides are built at once (about 90 MB of work arrays on an
     #: 11,248-vertex mesh).
-    GROUP_FRAMES = 32
+    GROUP_FRAMES = 64
 
     def __init__(self, rest: np.ndarray, faces: np.ndarray, examples: np.ndarray, anchor: float = 1e-3,
                  block: int = 512, use_opencl: bool = True):
@@ -264,17 +264,20 @@ class GradientBlender:
         ``(E^T E + anchor I) X = E^T target + anchor L`` become ``(E^T E + anchor I) D = E^T (target - E L)``,
         whose right-hand side is small where the gradients agree with the linear blend, so the
         back-substitution in float32 loses digits only of D (not of the vertices' coordinates)."""
-        n_t, n_v = len(a), len(self.rest)
+        n_t, n_v, n_k = len(a), len(self.rest), len(self.offsets)
         used = np.flatnonzero(a.any(0))  # key-shapes no frame uses (weight exactly 0) add nothing
+        if 2 * len(used) > n_k:  # copying the used columns costs more than multiplying by zeros
+            used = np.arange(n_k)
+        coef = self._coef if len(used) == n_k else self._coef[:, used]
+        offsets_t = self._offsets_t if len(used) == n_k else self._offsets_t[:, used]
         out = np.empty((n_t, n_v, 3), np.float32)
-        coef = self._coef if len(used) == self._coef.shape[1] else self._coef[:, used]
-        offsets_t = self._offsets_t if len(used) == self._offsets_t.shape[1] else self._offsets_t[:, used]
-        rest = self.rest.astype(np.float32).reshape(-1, 1)
         step = self.GROUP_FRAMES
+        work = self._device_work(min(step, n_t)) if self.use_opencl and n_t else None
+        rest = self.rest.astype(np.float32).reshape(-1, 1)
         for lo in range(0, n_t, step):  # bounded memory on long clips
             a_t = np.ascontiguousarray(a[lo:lo + step, used].T)  # (K', T)
-            if self.use_opencl:
-                self._group_opencl(coef, offsets_t, a_t, out[lo:lo + step])
+            if work is not None:
+                self._group_opencl(coef, offsets_t, a_t, work, out[lo:lo + step])
             else:
                 lin = (offsets_t @ a_t + rest).reshape(n_v, 3, -1)  # (V, 3, T)
                 self._solve(self._rhs_numpy(coef, a_t, lin), lin, out[lo:lo + step])
@@ -328,37 +331,51 @@ class GradientBlender:
                 for x in arrays)
         return self._cl_static[1:]
 
-    def _group_opencl(self, coef: np.ndarray, offsets_t: np.ndarray, a_t: np.ndarray, out: np.ndarray) -> None:
-        """One group of frames (weights a_t (K', T)) on OpenCL (``kernels/gradient_rhs.cl``): the blended
-        gradients by a matrix product here, then the rotated edges, their sum onto the vertices and
-        the back-substitutions (the factors of ``self.factor``) on the device, into ``out`` (T, V, 3).
-        Frames are padded to a multiple of 8 with zero weights (the kernels take 8 at a time)."""
+    def _device_work(self, n_t: int) -> dict:
+        """Host arrays and device buffers of one group of up to ``n_t`` frames (padded to a multiple
+        of 16), made once per clip: page-aligned host arrays the device uses in place."""
         import pyopencl as cl
 
-        from ..opencl import context, host_aligned, kernel, queue
+        from ..opencl import aligned_empty, context
 
-        ctx, q, mf = context(), queue(), cl.mem_flags
+        ctx, mf = context(), cl.mem_flags
+        n_p, n_v, n_f = -(-n_t // 16) * 16, len(self.rest), len(self.faces)
+        host = {"g": aligned_empty((9 * n_f, n_p), np.float32), "lin": aligned_empty((3 * n_v, n_p), np.float32),
+                "out": aligned_empty((n_p, n_v, 3), np.float32)}
+        work = dict(host, n_p=n_p)
+        for name, flag in (("g", mf.READ_ONLY), ("lin", mf.READ_ONLY), ("out", mf.WRITE_ONLY)):
+            work[name + "_buf"] = cl.Buffer(ctx, flag | mf.USE_HOST_PTR, hostbuf=host[name])
+        work["edges"] = cl.Buffer(ctx, mf.READ_WRITE, 6 * n_f * n_p * 4)
+        work["rhs"], work["scratch"] = (cl.Buffer(ctx, mf.READ_WRITE, 3 * n_v * n_p * 4) for _ in range(2))
+        return work
+
+    def _group_opencl(self, coef: np.ndarray, offsets_t: np.ndarray, a_t: np.ndarray, work: dict,
+                      out: np.ndarray) -> None:
+        """One group of frames (weights a_t (K', T)) on OpenCL (``kernels/gradient_rhs.cl``): the blended
+        gradients and the linear blend by matrix products here, then the rotated edges, their sum onto
+        the vertices and the back-substitutions (the factors of ``self.factor``) on the device, into
+        ``out`` (T, V, 3). Frames are padded with zero weights to a multiple of 16 (the kernels take 8
+        or 16 at a time)."""
+        import pyopencl as cl
+
+        from ..opencl import kernel, queue
+
+        q = queue()
         n_t, n_v, n_f = a_t.shape[1], len(self.rest), len(self.faces)
-        n_p = -(-n_t // 8) * 8
+        n_p = -(-n_t // 16) * 16
         a_t = np.pad(a_t, ((0, 0), (0, n_p - n_t)))
         (rest_edges, faces, start, incident, perm_r, perm_c, l_start, l_row, l_val, u_start, u_row, u_val,
          u_diag) = self._device_arrays()
-        g = host_aligned(np.empty((len(coef), n_p), np.float32))
+        g, lin = (work[k].reshape(-1)[:len(work[k]) * n_p].reshape(-1, n_p) for k in ("g", "lin"))
         np.matmul(coef, a_t, out=g)  # (9F, T)
-        lin = host_aligned(np.empty((3 * n_v, n_p), np.float32))
-        np.matmul(offsets_t, a_t, out=lin)
+        np.matmul(offsets_t, a_t, out=lin)  # (3V, T)
         lin += self.rest.astype(np.float32).reshape(-1, 1)
-        res = host_aligned(np.empty((n_p, n_v, 3), np.float32))
-        g_buf = cl.Buffer(ctx, mf.READ_ONLY | mf.USE_HOST_PTR, hostbuf=g)
-        lin_buf = cl.Buffer(ctx, mf.READ_ONLY | mf.USE_HOST_PTR, hostbuf=lin)
-        out_buf = cl.Buffer(ctx, mf.WRITE_ONLY | mf.USE_HOST_PTR, hostbuf=res)
-        edges = cl.Buffer(ctx, mf.READ_WRITE, 6 * n_f * n_p * 4)
-        rhs, scratch = (cl.Buffer(ctx, mf.READ_WRITE, 3 * n_v * n_p * 4) for _ in range(2))
-        kernel("gradient_rhs", "residual_edges")(q, (n_p // 8, n_f), None, g_buf, rest_edges, faces, lin_buf, edges,
-                                                 np.int32(n_p))
-        kernel("gradient_rhs", "gather_edges")(q, (n_p // 8, n_v), None, edges, start, incident, rhs, np.int32(n_p))
-        kernel("gradient_rhs", "lu_solve")(q, (3 * n_p // 8,), None, rhs, scratch, perm_r, perm_c, l_start, l_row,
-                                           l_val, u_start, u_row, u_val, u_diag, lin_buf, out_buf, np.int32(n_v),
-                                           np.int32(n_p))
-        cl.enqueue_copy(q, res, out_buf, is_blocking=True)
-        out[:] = res[:n_t]
+        kernel("gradient_rhs", "residual_edges")(q, (n_p // 8, n_f), None, work["g_buf"], rest_edges, faces,
+                                                 work["lin_buf"], work["edges"], np.int32(n_p))
+        kernel("gradient_rhs", "gather_edges")(q, (n_p // 8, n_v), None, work["edges"], start, incident, work["rhs"],
+                                               np.int32(n_p))
+        kernel("gradient_rhs", "lu_solve")(q, (3 * n_p // 16,), None, work["rhs"], work["scratch"], perm_r, perm_c,
+                                           l_start, l_row, l_val, u_start, u_row, u_val, u_diag, work["lin_buf"],
+                                           work["out_buf"], np.int32(n_v), np.int32(n_p))
+        cl.enqueue_copy(q, work["out"], work["out_buf"], is_blocking=True)
+        out[:] = work["out"][:n_t]
