@@ -19,12 +19,22 @@ __kernel void residual_edges(__global const float *g, __global const float *rest
     const float8 rx = vload8(0, gf), ry = vload8(0, gf + T_), rz = vload8(0, gf + 2 * T_);
     const float8 th2 = rx * rx + ry * ry + rz * rz;
     const float8 th = sqrt(th2);
-    // th < 1e-3: the series (sin th / th loses nothing there, but is 0 / 0 at th = 0)
-    const int8 small = th < 1e-3f;
-    const float8 safe = select(th, (float8)(1.0f), small);
-    const float8 hs = sin(0.5f * safe) / safe;
-    const float8 a = select(sin(safe) / safe, 1.0f - th2 / 6.0f, small);
-    const float8 b = select(2.0f * hs * hs, 0.5f - th2 / 24.0f, small);
+    float8 a, b;
+    if (all(th2 <= 1.0f)) {
+        // |r| <= 1 rad (a face's triangles, nearly always): the Taylor series of sin t / t and
+        // (1 - cos t) / t^2 in t^2, truncated where the next term is below 1e-9 (float32: 6e-8).
+        a = 1.0f + th2 * (-1.0f / 6 + th2 * (1.0f / 120 + th2 * (-1.0f / 5040 + th2 * (1.0f / 362880
+              + th2 * (-1.0f / 39916800)))));
+        b = 0.5f + th2 * (-1.0f / 24 + th2 * (1.0f / 720 + th2 * (-1.0f / 40320 + th2 * (1.0f / 3628800
+              + th2 * (-1.0f / 479001600)))));
+    } else {
+        // th < 1e-3: the series (sin th / th loses nothing there, but is 0 / 0 at th = 0)
+        const int8 small = th < 1e-3f;
+        const float8 safe = select(th, (float8)(1.0f), small);
+        const float8 hs = sin(0.5f * safe) / safe;
+        a = select(sin(safe) / safe, 1.0f - th2 / 6.0f, small);
+        b = select(2.0f * hs * hs, 0.5f - th2 / 24.0f, small);
+    }
     const __global float *l0 = lin + (size_t)faces[3 * f] * 3 * T_ + t;
     __global float *out = res + (size_t)f * 6 * T_ + t;
     for (int j = 0; j < 2; j++) {
