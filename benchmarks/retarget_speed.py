@@ -82,7 +82,7 @@ def main(argv: list[str]) -> int:
 
     def once():
         weights_k, meshes_k = retarget.keymorphs(ks, rig, None, kss.keymorph_ridge, str(args.keyshapes))
-        return weights_k, GradientBlender(rig.neutral, rig.faces, meshes_k, rset.anchor)
+        return weights_k, GradientBlender(rig.neutral, rig.faces, meshes_k, rset.anchor, use_opencl=rset.use_opencl)
 
     weights_k, blender = clock.run("one_time", once)
     for _ in range(max(args.repeat, 1)):
