@@ -86,13 +86,15 @@ __kernel void gather_edges(__global const float *res, __global const int *start,
 // lu_solve: work-item c / 16 of the C = 3 T columns (column i T + t: coordinate i of frame t; T a
 // multiple of 16, a float16 per row: one cache line). Solves N d = rhs for 16 columns with the
 // sparse LU factors of Pr N Pc = L U (SuperLU's, as scipy gives them: d = Pc U^-1 L^-1 Pr rhs),
-// by columns of L and U, and writes the vertices out[t, v, i] = lin[v, i, t] + d[v, i T + t].
+// by rows of L and U (each row's sum kept in registers: a third less CPU than updating by
+// columns), and writes the vertices out[t, v, i] = lin[v, i, t] + d[v, i T + t].
 //   rhs: (V, C); y: (C / 16, V, 16) scratch, its own rows for each work-item; perm_r, perm_c: (V,);
-//   l_start, l_row, l_val: L below its unit diagonal, CSC; u_start, u_row, u_val: U above its diagonal, CSC; u_diag: (V,);
+//   l_start, l_col, l_val: L below its unit diagonal, CSR; u_start, u_col, u_val: U above its
+//   diagonal, CSR; u_diag: (V,);
 //   lin: (V, 3, T), mm; out: (T, V, 3), mm.
 __kernel void lu_solve(__global const float *rhs, __global float *y, __global const int *perm_r,
-                       __global const int *perm_c, __global const int *l_start, __global const int *l_row,
-                       __global const float *l_val, __global const int *u_start, __global const int *u_row,
+                       __global const int *perm_c, __global const int *l_start, __global const int *l_col,
+                       __global const float *l_val, __global const int *u_start, __global const int *u_col,
                        __global const float *u_val, __global const float *u_diag, __global const float *lin,
                        __global float *out, const int V, const int T)
 {
@@ -101,16 +103,17 @@ __kernel void lu_solve(__global const float *rhs, __global float *y, __global co
     __global float *yc = y + (size_t)c * V;  // this work-item's (V, 16) scratch, contiguous
     for (int j = 0; j < V; j++)
         vstore16(vload16(0, rhs + j * C + c), perm_r[j], yc);
-    for (int j = 0; j < V; j++) {
-        const float16 yj = vload16(j, yc);
+    for (int j = 0; j < V; j++) {  // forward: y_j -= L_jk y_k, k < j
+        float16 s = vload16(j, yc);
         for (int k = l_start[j]; k < l_start[j + 1]; k++)
-            vstore16(vload16(l_row[k], yc) - l_val[k] * yj, l_row[k], yc);
+            s -= l_val[k] * vload16(l_col[k], yc);
+        vstore16(s, j, yc);
     }
-    for (int j = V - 1; j >= 0; j--) {
-        const float16 yj = vload16(j, yc) / u_diag[j];
-        vstore16(yj, j, yc);
+    for (int j = V - 1; j >= 0; j--) {  // backward: y_j = (y_j - U_jk y_k) / U_jj, k > j
+        float16 s = vload16(j, yc);
         for (int k = u_start[j]; k < u_start[j + 1]; k++)
-            vstore16(vload16(u_row[k], yc) - u_val[k] * yj, u_row[k], yc);
+            s -= u_val[k] * vload16(u_col[k], yc);
+        vstore16(s / u_diag[j], j, yc);
     }
     const int i = c / T, t = c % T;
     for (int j = 0; j < V; j++) {
