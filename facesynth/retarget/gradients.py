@@ -25,7 +25,7 @@ differ by 8.5e-6 mm, the rounding of float32 vertex coordinates):
   matrix; the normal matrix, symmetric positive definite, factorized by SuperLU in single
   precision with a minimum degree ordering of ``A + A^T`` in symmetric mode (half the fill of
   the default COLAMD and fewer operations per back-substitution);
-* per clip, 64 frames at a time: the unknowns are the departures from the linear blend (whose
+* per clip, 32 frames at a time: the unknowns are the departures from the linear blend (whose
   anchor term then drops out of the right-hand side), small where the blended gradients agree
   with the linear blend, so float32 right-hand sides and back-substitutions lose digits of the
   departures only; one matrix product gives every frame's blended rotation vectors and
@@ -195,9 +195,9 @@ class GradientBlender:
 
     #: Frames per back-substitution (3 right-hand sides each).
     SOLVE_FRAMES = 8
-    #: Frames whose right-hand sides are built at once (about 90 MB of work arrays on an
+    #: Frames whose right-hand sides are built at once (about 60 MB of work arrays on an
     #: 11,248-vertex mesh).
-    GROUP_FRAMES = 64
+    GROUP_FRAMES = 32
 
     def __init__(self, rest: np.ndarray, faces: np.ndarray, examples: np.ndarray, anchor: float = 1e-3,
                  block: int = 512, use_opencl: bool = True):
