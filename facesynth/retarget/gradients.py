@@ -188,8 +188,9 @@ class GradientBlender:
     in the rest's units and vertex order; anchor : weight of the pull toward the linear blend,
     relative to the mean squared rest edge length (small: it only fixes what edges leave free);
     block : triangles per block of the NumPy per-clip work (its arrays stay in cache);
-    use_opencl : build the right-hand sides with the kernels of ``kernels/gradient_rhs.cl`` when a
-    device builds them (else, and with False, NumPy; the two agree to float32 rounding).
+    use_opencl : rotate the edges, sum them onto the vertices and back-substitute with the kernels
+    of ``kernels/gradient_rhs.cl`` when a device builds them (else, and with False, NumPy and
+    SuperLU; the two agree to float32 rounding); the attribute says which is used.
     Construction does the one-time work (gradients, polar decompositions, the factorization).
     """
 
