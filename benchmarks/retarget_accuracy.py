@@ -205,7 +205,8 @@ def main(argv: list[str]) -> int:
                 select_s.append(time.perf_counter() - t0)
                 weights_k, meshes_k = retarget.keymorphs(ks, target, None, kss.keymorph_ridge, "keyshapes")
                 t0 = time.perf_counter()
-                blender = GradientBlender(target.neutral, target.faces, meshes_k, rset.anchor)
+                blender = GradientBlender(target.neutral, target.faces, meshes_k, rset.anchor,
+                                          use_opencl=rset.use_opencl)
                 factor_s.append(time.perf_counter() - t0)
                 counts[str(db_path)] = {e: k.count for e, k in ks.emotions.items()}
                 recon[str(db_path)] = {e: float(k.rms) for e, k in ks.emotions.items()}

@@ -14,7 +14,9 @@ frame rate. Prints JSON with wall time (``*_s``) and CPU time of this process (`
   animation), their totals ``retarget_linear`` and ``retarget_gradient`` (weights + curves +
   mesh), and the direct solve of the same clip as the reference.
 
-Per-clip parts are the fastest of ``--repeat`` runs (wall and CPU each). The machine's load
+Per-clip parts are the fastest of ``--repeat`` runs (wall and CPU each). ``gradient_device`` says
+where gradient blending ran (``[retarget] use_opencl``; ``FACESYNTH_OPENCL=off`` measures the
+NumPy and SuperLU path). The machine's load
 average is printed beside them: the wall times of a shared machine scale with it, the CPU times
 much less.
 """
@@ -34,6 +36,7 @@ import numpy as np
 from facesynth.config import Config
 from facesynth.model.keyshapes import KeyShapes
 from facesynth.model.motion import Motion
+from facesynth.opencl import device_description
 from facesynth.retarget.gradients import GradientBlender
 from facesynth.retarget.rig import builtin_rig
 from facesynth.stages import retarget, solve
@@ -82,7 +85,7 @@ def main(argv: list[str]) -> int:
 
     def once():
         weights_k, meshes_k = retarget.keymorphs(ks, rig, None, kss.keymorph_ridge, str(args.keyshapes))
-        return weights_k, GradientBlender(rig.neutral, rig.faces, meshes_k, rset.anchor)
+        return weights_k, GradientBlender(rig.neutral, rig.faces, meshes_k, rset.anchor, use_opencl=rset.use_opencl)
 
     weights_k, blender = clock.run("one_time", once)
     for _ in range(max(args.repeat, 1)):
@@ -92,7 +95,8 @@ def main(argv: list[str]) -> int:
         clock.run("gradient_mesh", lambda: blender.blend(r.alpha))
     _, _, iterations = clock.run("direct_solve", lambda: solve.solve(clip, rig, config.settings("solve"), str(args.motion)))
     out = {"frames": n, "fps": motion.fps, "vertices": len(rig.neutral), "triangles": len(rig.faces),
-           "keyshapes": int(r.alpha.shape[1]), "keyshapes_used": int(r.alpha.any(0).sum()), **clock.report()}
+           "keyshapes": int(r.alpha.shape[1]), "keyshapes_used": int(r.alpha.any(0).sum()),
+           "gradient_device": device_description(blender.use_opencl), **clock.report()}
     for path in ("linear", "gradient"):
         for unit, table in (("s", clock.wall), ("cpu_s", clock.cpu)):
             out[f"retarget_{path}_{unit}"] = round(table["weights"] + table["curves"] + table[f"{path}_mesh"], 4)

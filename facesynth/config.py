@@ -367,7 +367,8 @@ class SolveSettings:
 
 @dataclass(frozen=True)
 class RetargetSettings:
-    """``[retarget]``: key-shape retargeting (Chuang & Bregler Eq. 9) and mesh blending (Huang et al. §3)."""
+    """``[retarget]``: key-shape retargeting (Chuang & Bregler Eq. 9) and mesh blending (Huang et al. §3),
+    compute device."""
 
     blend: str = setting("Huang et al. §3 (deformation gradients) or linear keymorph blending",
                          choices=("linear", "gradient"))
@@ -377,6 +378,8 @@ class RetargetSettings:
                                       ge=0)
     anchor: float = setting("Sumner et al. 2005 (soft constraint): pull toward the linear blend, relative to the "
                             "mean squared edge", gt=0)
+    use_opencl: bool = setting("not in the papers: gradient blending's rotated edges and back-substitutions on "
+                               "OpenCL (NumPy and SuperLU without a device that builds)")
 
 
 @dataclass(frozen=True)

@@ -108,7 +108,8 @@ def run(motion_path: Path, keyshapes_path: Path, out: Path, settings: RetargetSe
     anim = None
     if mesh_out is not None:
         if settings.blend == "gradient":
-            vertices = GradientBlender(rig.neutral, rig.faces, meshes_k, settings.anchor).blend(result.alpha)
+            vertices = GradientBlender(rig.neutral, rig.faces, meshes_k, settings.anchor,
+                                       use_opencl=settings.use_opencl).blend(result.alpha)
         else:  # linear: rest + sum_k alpha_k (G_k - rest), no factorization needed
             offsets = (meshes_k - rig.neutral).reshape(len(meshes_k), -1)
             vertices = rig.neutral + (result.alpha @ offsets).reshape(len(result.alpha), -1, 3)
