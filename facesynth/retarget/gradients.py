@@ -109,7 +109,7 @@ def _polar(f: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     x = fm.reshape(-1, 9).T.copy()  # (9, N)
     _, det0 = _cofactors(x)
     ok = det0 > 1e-9 * np.abs(x).max(0) ** 3
-    x[:, ~ok] = np.eye(3).reshape(9, 1)  # placeholders; these go through the SVD
+    x[:, ~ok] = np.eye(3).reshape(9, 1)  # identity stand-ins; these matrices go through the SVD
     moved = np.zeros(x.shape[1])
     for _ in range(60):
         cof, det = _cofactors(x)
