@@ -175,6 +175,11 @@ __kernel void tc_block(FEATURE_PARAMS,
 // its predecessor's viseme (backward), row_pre[r] = its predecessor (backward only).
 // col_p/col_v[c * PIVOTS + q] = those of cols[c] (forward: first; backward: last).
 // group_lo/hi_p/v[g * PIVOTS + q]: the ranges; group_vis[g]: the viseme set.
+//
+// All of these come in one buffer, `step` (one host-to-device copy per launch instead of
+// sixteen: on a CPU device each copy is a command of its own): step[0 .. STEP_PARTS) are the
+// word offsets of the arrays below (each 32-byte aligned), then n_groups, n_cols, backward.
+// The results go to `out`: best[c] = out[c] (float bits), evals[c] = out[n_cols + c].
 #ifndef MAX_GROUPS
 #define MAX_GROUPS 256
 #endif
@@ -224,20 +229,33 @@ inline float scan_group(const int g, const float gap, float best, int *evals, co
     return best;
 }
 
-__kernel void pruned_columns(FEATURE_PARAMS,
-                             __global const float *row_p, __global const float *row_v,
-                             __global const int *row_vis, __global const int *row_pre,
-                             __global const float *col_p, __global const float *col_v, const float slack,
-                             __global const int *rows, __global const float *phi,
-                             __global const int *group_start, const int n_groups,
-                             __global const float *group_lo_p, __global const float *group_hi_p,
-                             __global const float *group_lo_v, __global const float *group_hi_v,
-                             __global const uint *group_vis,
-                             __global const int *cols, __global const float *init, const int n_cols,
-                             const int backward, __global float *best_out, __global int *evals_out)
+#define STEP_PARTS 16
+#define STEP_F(k) ((__global const float *)(step + step[k]))
+#define STEP_I(k) ((__global const int *)(step + step[k]))
+
+__kernel void pruned_columns(FEATURE_PARAMS, const float slack, __global const uint *step, __global uint *out)
 {
+    const int n_groups = (int)step[STEP_PARTS];
+    const int n_cols = (int)step[STEP_PARTS + 1];
+    const int backward = (int)step[STEP_PARTS + 2];
     const int c = get_global_id(0);
     if (c >= n_cols) return;
+    __global const int *rows = STEP_I(0);
+    __global const float *phi = STEP_F(1);
+    __global const int *row_vis = STEP_I(2);
+    __global const int *row_pre = STEP_I(3);
+    __global const float *row_p = STEP_F(4);
+    __global const float *row_v = STEP_F(5);
+    __global const int *group_start = STEP_I(6);
+    __global const float *group_lo_p = STEP_F(7);
+    __global const float *group_hi_p = STEP_F(8);
+    __global const float *group_lo_v = STEP_F(9);
+    __global const float *group_hi_v = STEP_F(10);
+    __global const uint *group_vis = step + step[11];
+    __global const int *cols = STEP_I(12);
+    __global const float *init = STEP_F(13);
+    __global const float *col_p = STEP_F(14);
+    __global const float *col_v = STEP_F(15);
     const int me = cols[c];
     const int me_pre = pre[me];
     const int me_vis = backward ? vis[me] : pre_vis[me];
@@ -312,8 +330,8 @@ __kernel void pruned_columns(FEATURE_PARAMS,
         best = scan_group(g, gap[g], best, &evals, me, me_pre, me_vis, mq_p, mq_v, slack, backward,
                           row_p, row_v, row_vis, row_pre, rows, phi, group_start, PAIR_ARGS);
     }
-    best_out[c] = best;
-    evals_out[c] = evals;
+    out[c] = as_uint(best);
+    out[n_cols + c] = (uint)evals;
 }
 
 // The device layout of a boundary state: (n, 3M) interleaved x, y, z per marker ->

@@ -39,7 +39,6 @@ import logging
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.linalg import solveh_banded
 
 from ..errors import InputError
 from ..phonemes import PAU, VISEME_GROUPS, viseme
@@ -258,6 +257,8 @@ def solve(means: np.ndarray, precisions: np.ndarray, lam: float) -> np.ndarray:
     ab[0] = -lam
     ab[0, :, 0] = 0.0  # no coupling across weights (and ab[0, 0, 0] is unused)
     rhs = (p * mu).T.ravel()
+    from scipy.linalg import solveh_banded  # here: `synthesize` of the DP method never loads SciPy
+
     x = solveh_banded(ab.reshape(2, k * t), rhs, overwrite_ab=True, overwrite_b=True, check_finite=False)
     return x.reshape(k, t).T
 

@@ -97,8 +97,15 @@ class PairFeatures:
         """DSC, PGap and VGap of every (rows[a], cols[b]), each (r, c) float32, summed in eight
         lanes and then across them (the reference of ``kernels/pair_costs.cl``, bit-identical)."""
         rows, cols = np.asarray(rows), np.asarray(cols)
-        lay = self.layout()
-        x, y = lay.x[rows], lay.y[cols]  # (r, Q, 8), (c, Q, 8)
+        if getattr(self, "_layout", None) is not None or len(rows) + len(cols) >= len(self) // 4:
+            lay = self.layout()
+            x, y = lay.x[rows], lay.y[cols]  # (r, Q, 8), (c, Q, 8)
+            last_pos, first_pos = lay.last_pos[rows], lay.first_pos[cols]
+            last_vel, first_vel = lay.last_vel[rows], lay.first_vel[cols]
+        else:  # a few pairs (backtracking): lay out only the nodes they use, the same values
+            x, y = _lanes8(self.dsc_out[rows]), _lanes8(self.dsc_in[cols])
+            last_pos, first_pos = _planes(self.last_pos[rows]), _planes(self.first_pos[cols])
+            last_vel, first_vel = _planes(self.last_vel[rows]), _planes(self.first_vel[cols])
         acc = np.zeros((len(rows), len(cols), 8), np.float32)
         s = np.empty_like(acc)
         for q in range(x.shape[1]):
@@ -107,8 +114,7 @@ class PairFeatures:
             acc += s
         dsc = _lanes(acc)
         dsc *= self.dsc_scale[cols][None, :]
-        return (dsc, _gap_lanes(lay.last_pos[rows], lay.first_pos[cols]),
-                _gap_lanes(lay.last_vel[rows], lay.first_vel[cols]))
+        return dsc, _gap_lanes(last_pos, first_pos), _gap_lanes(last_vel, first_vel)
 
 
 @dataclass
@@ -126,21 +132,26 @@ class DeviceLayout:
 
     @classmethod
     def of(cls, f: PairFeatures) -> "DeviceLayout":
-        def lanes8(a):
-            n, d = a.shape
-            out = np.zeros((n, -(-d // 8) * 8), np.float32)
-            out[:, :d] = a
-            return out.reshape(n, -1, 8)
+        return cls(_lanes8(f.dsc_out), _lanes8(f.dsc_in), _planes(f.last_pos), _planes(f.first_pos),
+                   _planes(f.last_vel), _planes(f.first_vel))
 
-        def planes(a):
-            n, m3 = a.shape
-            m = m3 // 3
-            out = np.zeros((n, 3, -(-m // 8) * 8), np.float32)
-            out[:, :, :m] = a.reshape(n, m, 3).transpose(0, 2, 1)
-            return out.reshape(n, 3, -1, 8)
 
-        return cls(lanes8(f.dsc_out), lanes8(f.dsc_in), planes(f.last_pos), planes(f.first_pos), planes(f.last_vel),
-                   planes(f.first_vel))
+def _lanes8(a: np.ndarray) -> np.ndarray:
+    """(n, d) -> (n, ceil(d / 8), 8) float32, zero-padded: term d in lane d % 8."""
+    n, d = a.shape
+    out = np.zeros((n, -(-d // 8) * 8), np.float32)
+    out[:, :d] = a
+    return out.reshape(n, -1, 8)
+
+
+def _planes(a: np.ndarray) -> np.ndarray:
+    """(n, 3M) marker coordinates -> (n, 3, ceil(M / 8), 8) float32 coordinate planes, marker k
+    in lane k % 8 of group k // 8, zero-padded."""
+    n, m3 = a.shape
+    m = m3 // 3
+    out = np.zeros((n, 3, -(-m // 8) * 8), np.float32)
+    out[:, :, :m] = a.reshape(n, m, 3).transpose(0, 2, 1)
+    return out.reshape(n, 3, -1, 8)
 
 
 def _lanes(a: np.ndarray) -> np.ndarray:
@@ -317,6 +328,10 @@ class TransitionCosts:
         suc = self._suc
         via = np.where(suc >= 0, a3 * self.col_fp[np.maximum(suc, 0), 0] + self.col_fv[np.maximum(suc, 0), 0], 0.0)
         self.reach_col = np.maximum(a3 * self.row_lp[:, 0].astype(np.float64) + self.row_lv[:, 0], via)
+        # Absolute slack of the cheap lower bound (:meth:`lower`, the kernel's): float32 rounding of
+        # the stored pivot distances and of the computed sums, far below any cost that matters.
+        self.slack = 1e-4 * (a3 * (float(self.row_lp.max(initial=0)) + float(self.col_fp.max(initial=0)))
+                             + float(self.row_lv.max(initial=0)) + float(self.col_fv.max(initial=0))) + 1e-3
 
     # --- values ----------------------------------------------------------------------------
     def block(self, rows, cols) -> np.ndarray:
@@ -393,6 +408,16 @@ class TransitionCosts:
         pvc = self.s.alpha3 * pg.astype(np.float64) + vg
         tc = self.dsc_row_max[r] + pvc + self.s.pnt * (self.f.viseme[r] != self.pre_viseme[k])
         return np.where(self.pre[k] < 0, float(self.a1pnt) + pvc, np.where(self.pre[k] == r, 0.0, tc))
+
+    def lower(self, r: np.ndarray, k: int) -> np.ndarray:
+        """Lower bounds of TC(r, k) for rows ``r`` ((n,) int) and one node k, float64: the
+        viseme penalty (alpha1 PNT for rule 4) plus the pivot bounds of alpha3 PGap and VGap,
+        shrunk against rounding as in ``kernels/pair_costs.cl``; 0 for rule 1."""
+        lp = np.max(np.abs(self.row_lp[r] - self.col_fp[k]), axis=-1).astype(np.float64)
+        lv = np.max(np.abs(self.row_lv[r] - self.col_fv[k]), axis=-1).astype(np.float64)
+        pen = float(self.a1pnt) if self.pre[k] < 0 else self.s.pnt * (self.f.viseme[r] != self.pre_viseme[k])
+        bound = (pen + self.s.alpha3 * lp + lv) * 0.9999 - self.slack
+        return np.where(self.pre[k] == r, 0.0, np.maximum(bound, 0.0))
 
     def advantage(self, r: np.ndarray, j: np.ndarray) -> np.ndarray:
         """Upper bounds of max_k (TC(r, k) - TC(j, k)) over every node k, float64 (r, j broadcast):
@@ -471,10 +496,7 @@ class OpenCLPairs:
                          up(f.viseme.astype(np.int32)), up(tc.pre.astype(np.int32)),
                          up(tc.pre_viseme.astype(np.int32)),
                          np.float32(tc.s.alpha2), np.float32(tc.s.alpha3), np.float32(tc.s.pnt), tc.a1pnt]
-        # Absolute slack of the kernel's cheap lower bound: float32 rounding of the stored pivot
-        # distances and of the computed sums, far below any cost that matters.
-        self.slack = 1e-4 * (tc.s.alpha3 * (float(tc.row_lp.max(initial=0)) + float(tc.col_fp.max(initial=0)))
-                             + float(tc.row_lv.max(initial=0)) + float(tc.col_fv.max(initial=0))) + 1e-3
+        self.slack = tc.slack
 
     def upload(self, a: np.ndarray):
         """A read-only device copy of ``a`` (float32 or int32, C order)."""
@@ -532,13 +554,6 @@ class OpenCLPairs:
                            f32(row_p), f32(row_v), start, f32(lo_p), f32(hi_p), f32(lo_v), f32(hi_v), group_vis]
         return self._rows_data
 
-    @property
-    def _changing(self) -> tuple[int, ...]:
-        """Argument indices of ``pruned_columns`` that change between calls: the group count,
-        the column count and the direction."""
-        first = len(self.features) + 10  # n_groups
-        return first, first + 8, first + 9
-
     def _cols(self, cols: np.ndarray, init: np.ndarray, backward: bool) -> list[np.ndarray]:
         """What ``pruned_columns`` reads of the columns: cols, init, pivot distances."""
         tc = self.tc
@@ -547,16 +562,16 @@ class OpenCLPairs:
         return [cols.astype(np.int32), np.ascontiguousarray(init, np.float32),
                 np.ascontiguousarray(col_p, np.float32), np.ascontiguousarray(col_v, np.float32)]
 
-    def _scratch(self, n: int):
-        """Device buffers for one step, reused, in the order of :meth:`_rows` and :meth:`_cols`,
-        then best and evals: n entries (times the pivots for pivot distances and ranges)."""
-        if getattr(self, "_capacity", 0) < n:
-            cl, mf = self.cl, self.cl.mem_flags
-            self._capacity = max(n, 1024)
-            pivots = self.tc.row_lp.shape[1]
-            sizes = [1, 1, 1, 1, pivots, pivots, 1, pivots, pivots, pivots, pivots, 1, 1, 1, pivots, pivots, 1, 1]
-            self._buffers = [cl.Buffer(self.ctx, mf.READ_WRITE, 4 * (self._capacity + 1) * k) for k in sizes]
-        return self._buffers
+    def _buffer(self, name: str, nbytes: int):
+        """A device buffer ``name`` of at least ``nbytes``, reused between launches (grown by
+        doubling), and whether it is new."""
+        have = getattr(self, "_buffers", {})
+        self._buffers = have
+        if name in have and have[name].size >= nbytes:
+            return have[name], False
+        size = max(nbytes, 2 * have[name].size if name in have else 1 << 16)
+        have[name] = self.cl.Buffer(self.ctx, self.cl.mem_flags.READ_WRITE, size)
+        return have[name], True
 
     def column_minima(self, rows: np.ndarray, phi: np.ndarray, cols: np.ndarray, init: np.ndarray,
                       backward: bool = False) -> tuple[np.ndarray, int]:
@@ -567,33 +582,38 @@ class OpenCLPairs:
         n_cols = len(cols)
         if n_cols == 0:
             return np.zeros(0, np.float32), 0
-        host = self._rows(rows, phi, backward) + self._cols(cols, init, backward)
-        buffers = self._scratch(max(len(rows), n_cols))
-        for buf, a in zip(buffers, host):
-            if len(a):
-                cl.enqueue_copy(self.queue, buf, a, is_blocking=False)
-        (rows_buf, phi_buf, row_vis_buf, row_pre_buf, row_p_buf, row_v_buf, start_buf, lo_p_buf, hi_p_buf,
-         lo_v_buf, hi_v_buf, group_vis_buf, cols_buf, init_buf, col_p_buf, col_v_buf, best_buf, evals_buf) = buffers
-        best = np.empty(n_cols, np.float32)
-        evals = np.empty(n_cols, np.int32)
-        local = LOCAL_SIZE
-        args = [*self.features, row_p_buf, row_v_buf, row_vis_buf, row_pre_buf, col_p_buf, col_v_buf,
-                np.float32(self.slack), rows_buf, phi_buf, start_buf, np.int32(len(host[6]) - 1),
-                lo_p_buf, hi_p_buf, lo_v_buf, hi_v_buf, group_vis_buf, cols_buf, init_buf,
-                np.int32(n_cols), np.int32(bool(backward)), best_buf, evals_buf]
-        # the buffers stay the same between calls: all arguments are set once, then only those
-        # that change (setting some 40 arguments per launch cost about 3 ms)
+        parts = self._rows(rows, phi, backward) + self._cols(cols, init, backward)
+        step = pack_words(parts, [len(parts[6]) - 1, n_cols, int(bool(backward))])
+        step_buf, new_step = self._buffer("step", step.nbytes)
+        out_buf, new_out = self._buffer("out", 8 * n_cols)
         kernel = self.pruned_kernel
-        if getattr(self, "_args_for", None) is not buffers:
-            kernel.set_args(*args)
-            self._args_for = buffers
-        else:
-            for index in self._changing:
-                kernel.set_arg(index, args[index])
-        self.cl.enqueue_nd_range_kernel(self.queue, kernel, (-(-n_cols // local) * local,), (local,))
-        cl.enqueue_copy(self.queue, best, best_buf, is_blocking=False)
-        cl.enqueue_copy(self.queue, evals, evals_buf, is_blocking=True)
-        return best, int(evals.astype(np.int64).sum())
+        if new_step or new_out:  # the arguments stay the same between launches otherwise
+            kernel.set_args(*self.features, np.float32(self.slack), step_buf, out_buf)
+        cl.enqueue_copy(self.queue, step_buf, step, is_blocking=False)
+        local = LOCAL_SIZE
+        cl.enqueue_nd_range_kernel(self.queue, kernel, (-(-n_cols // local) * local,), (local,))
+        out = np.empty(2 * n_cols, np.uint32)
+        cl.enqueue_copy(self.queue, out, out_buf, is_blocking=True)
+        return out[:n_cols].view(np.float32), int(out[n_cols:].astype(np.int64).sum())
+
+
+def pack_words(parts: list[np.ndarray], scalars: list[int]) -> np.ndarray:
+    """One uint32 buffer holding the 4-byte arrays ``parts`` (float32, int32 or uint32, any
+    shape, C order) and ``scalars``: the word offset of each part, then the scalars, then
+    the parts, each starting on a 32-byte boundary (the layout ``pruned_columns`` reads)."""
+    head = -(-(len(parts) + len(scalars)) // 8) * 8
+    offsets, at = [], head
+    for a in parts:
+        offsets.append(at)
+        at += -(-max(a.size, 1) // 8) * 8
+    out = np.zeros(at, np.uint32)
+    out[: len(parts)] = offsets
+    out[len(parts) : len(parts) + len(scalars)] = scalars
+    for start, a in zip(offsets, parts):
+        if a.dtype.itemsize != 4:
+            raise TypeError(f"pack_words: parts must have 4-byte elements, not {a.dtype}")
+        out[start : start + a.size] = np.ascontiguousarray(a).reshape(-1).view(np.uint32)
+    return out
 
 
 class PairTerms:

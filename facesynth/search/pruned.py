@@ -70,9 +70,10 @@ def _margin(a, b):
 
 
 def _dominated(tc: TransitionCosts, cand: np.ndarray, lower: np.ndarray, refs: np.ndarray, ref_upper: np.ndarray,
-               last: bool) -> np.ndarray:
+               last: bool, cheap: bool = False) -> np.ndarray:
     """Mask of ``cand`` (indices, with lower bounds ``lower`` of their phi) that some reference
-    state (``refs`` with upper bounds ``ref_upper`` of their phi) dominates strictly."""
+    state (``refs`` with upper bounds ``ref_upper`` of their phi) dominates strictly; with
+    ``cheap`` by the first, cheap test only (fewer kills, never a wrong one)."""
     if len(cand) == 0 or len(refs) == 0:
         return np.zeros(len(cand), bool)
     lower = lower.astype(np.float64)
@@ -82,6 +83,8 @@ def _dominated(tc: TransitionCosts, cand: np.ndarray, lower: np.ndarray, refs: n
     # Cheap first: advantage(r, j) <= tc.reach_row[r] + tc.reach_col[j] for all r, j.
     bound = float(np.min(ref_upper + tc.reach_row[refs]))
     killed = lower - tc.reach_col[cand] > bound + _margin(lower, bound)
+    if cheap:
+        return killed
     open_ = np.nonzero(~killed)[0]
     # One reference at a time, smallest upper bound first, each on the states still open: the
     # same kills as against the minimum over the references (b + margin(lower, b) grows with
@@ -143,6 +146,9 @@ def dp_pruned(tc: TransitionCosts, obs: np.ndarray, keep_last: bool = False) -> 
     live = all_nodes
     if t_count > 1:
         live = _after(tc, live, phi[0], last=False)
+        dead = np.ones(n, bool)
+        dead[live] = False
+        phi[0, dead] = np.inf
     stats.live.append(len(live))
     minima = tc.device.column_minima if tc.opencl else (lambda *a: _column_minima_numpy(tc, *a))
     for t in range(1, t_count):
@@ -166,7 +172,7 @@ def dp_pruned(tc: TransitionCosts, obs: np.ndarray, keep_last: bool = False) -> 
         upper[probes] = best + obs[t, probes]
         phi[t, probes] = upper[probes]
         refs, ref_upper = _references(all_nodes, upper)
-        killed = (np.zeros(n, bool) if last and keep_last else _dominated(tc, all_nodes, lower, refs, ref_upper, last))
+        killed = (np.zeros(n, bool) if last and keep_last else _dominated(tc, all_nodes, lower, refs, ref_upper, last, cheap=not last))
         cols = np.nonzero(~killed)[0]
         cols = cols[np.isinf(phi[t, cols])]  # the probes are done
         stats.columns.append(len(cols) + len(probes))
@@ -184,18 +190,23 @@ def dp_pruned(tc: TransitionCosts, obs: np.ndarray, keep_last: bool = False) -> 
     path = np.empty(t_count, np.int64)
     path[-1] = int(np.argmin(phi[-1]))
     for t in range(t_count - 1, 0, -1):
-        path[t - 1] = _argmin_predecessor(tc, phi[t - 1], int(path[t]), phi[t, path[t]], stats)
+        j = int(path[t])
+        path[t - 1] = _argmin_predecessor(tc, phi[t - 1], j, phi[t, j], obs[t, j], stats)
     return DpResult(float(phi[-1, path[-1]]), path, phi), stats
 
 
-def _argmin_predecessor(tc: TransitionCosts, prev: np.ndarray, j: int, target: np.float32, stats: PruneStats) -> int:
+def _argmin_predecessor(tc: TransitionCosts, prev: np.ndarray, j: int, phi_j: np.float32, obs_j: np.float32,
+                        stats: PruneStats) -> int:
     """argmin_i (prev[i] + TC(i, j)), lowest index on ties (``prev``: (N,) float32 phi of the
-    step before, +inf on pruned states; ``target`` = phi_t(j)). Only rows with ``prev[i] <=
-    target`` can attain the minimum: it is at most phi_t(j) (obs >= 0 and rounding is
-    monotone) and every other row's value is at least its ``prev`` (TC >= 0), strictly above.
-    So few rows are left, and their costs are computed on the host (bit-identical to the
-    kernel), without a device round trip per step."""
-    rows = np.nonzero(prev <= target)[0]
+    step before, +inf on pruned states; ``phi_j`` = phi_t(j), ``obs_j`` = obs_t(j): the minimum
+    is phi_j - obs_j up to one float32 rounding of phi_j). Only rows whose ``prev[i]`` plus the
+    cheap lower bound of TC(i, j) (:meth:`TransitionCosts.lower`) stays within a margin far
+    above that rounding can attain the minimum (TC >= 0 and rounding is monotone). So few rows
+    are left, and their costs are computed on the host (bit-identical to the kernel),
+    without a device round trip per step."""
+    limit = float(phi_j) - float(obs_j) + _margin(float(phi_j), float(obs_j))
+    rows = np.nonzero(prev <= limit)[0]
+    rows = rows[prev[rows] + tc.lower(rows, j) <= limit]
     stats.pairs += len(rows)
     values = prev[rows] + tc.block_numpy(rows, np.array([j]))[:, 0]
     return int(rows[np.argmin(values)])
