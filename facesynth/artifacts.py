@@ -512,16 +512,23 @@ def open_artifact(path: Path, kind: str) -> h5py.File:
     return f
 
 
-def read(f: h5py.File, key: str) -> np.ndarray:
+def read(f: h5py.File, key: str, aligned: int = 0) -> np.ndarray:
     """Read dataset ``key`` fully, naming the file and key if it is missing or cannot be read,
     and check its values against the specification (finite, in range) when ``f`` was opened
-    by :func:`open_artifact`."""
+    by :func:`open_artifact`. With ``aligned`` (bytes) the array's data starts on that
+    boundary (an OpenCL CPU device can then use it in place)."""
     try:
         ds = f[key]
     except KeyError:
         raise ArtifactError(f"{f.filename}: missing dataset '{key}'; the file is damaged or from another tool.") from None
     try:
-        data = ds[()]
+        if aligned and ds.shape and ds.size and ds.dtype.kind in "fiu":
+            from .opencl import aligned_empty
+
+            data = aligned_empty(ds.shape, ds.dtype, aligned)
+            ds.read_direct(data)
+        else:
+            data = ds[()]
     except (OSError, RuntimeError) as exc:
         kind = f.attrs.get("facesynth_kind", "")
         raise damaged(Path(f.filename), kind if isinstance(kind, str) else "", f"/{key.lstrip('/')}: ", exc) from None

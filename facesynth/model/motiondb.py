@@ -221,12 +221,14 @@ class MotionDatabase:
         """The per-node transition features (a :class:`~facesynth.search.pairs.PairFeatures`)."""
         from ..search.pairs import PairFeatures
 
-        with self._opened() as f:
-            boundary = [read(f, f"boundary/{k}") for k in BOUNDARY_KEYS]
+        from ..opencl import HOST_ALIGNMENT
+
+        with self._opened() as f:  # page-aligned: an OpenCL CPU device reads them in place
+            boundary = [read(f, f"boundary/{k}", HOST_ALIGNMENT) for k in BOUNDARY_KEYS]
             first_pos, last_pos, first_vel, last_vel = boundary
             return PairFeatures(first_pos, last_pos, first_vel, last_vel,
-                                *(read(f, f"transition/{k}") for k in DSC_KEYS), self.nodes.viseme, self.nodes.pre,
-                                tuple(read(f, f"transition/{k}") for k in PIVOT_KEYS))
+                                *(read(f, f"transition/{k}", HOST_ALIGNMENT) for k in DSC_KEYS), self.nodes.viseme,
+                                self.nodes.pre, tuple(read(f, f"transition/{k}") for k in PIVOT_KEYS))
 
     def transition_costs(self, settings, opencl: bool | None = None):
         """Table I's costs for ``settings`` (SynthesizeSettings), computed on demand

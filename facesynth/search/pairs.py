@@ -93,27 +93,32 @@ class PairFeatures:
             self._layout = DeviceLayout.of(self)
         return self._layout
 
-    def terms(self, rows: np.ndarray, cols: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """DSC, PGap and VGap of every (rows[a], cols[b]), each (r, c) float32, summed in eight
-        lanes and then across them (the reference of ``kernels/pair_costs.cl``, bit-identical)."""
+    def terms(self, rows: np.ndarray, cols: np.ndarray, paired: bool = False) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """DSC, PGap and VGap of every (rows[a], cols[b]), each (r, c) float32, or with ``paired``
+        of each (rows[k], cols[k]), each (K,) float32; summed in eight lanes and then across them
+        (the reference of ``kernels/pair_costs.cl``, bit-identical)."""
         rows, cols = np.asarray(rows), np.asarray(cols)
         if getattr(self, "_layout", None) is not None or len(rows) + len(cols) >= len(self) // 4:
             lay = self.layout()
             x, y = lay.x[rows], lay.y[cols]  # (r, Q, 8), (c, Q, 8)
             last_pos, first_pos = lay.last_pos[rows], lay.first_pos[cols]
             last_vel, first_vel = lay.last_vel[rows], lay.first_vel[cols]
-        else:  # a few pairs (backtracking): lay out only the nodes they use, the same values
+        else:  # a few nodes (backtracking, a pruned scan): lay out only those, the same values
             x, y = _lanes8(self.dsc_out[rows]), _lanes8(self.dsc_in[cols])
             last_pos, first_pos = _planes(self.last_pos[rows]), _planes(self.first_pos[cols])
             last_vel, first_vel = _planes(self.last_vel[rows]), _planes(self.first_vel[cols])
-        acc = np.zeros((len(rows), len(cols), 8), np.float32)
+        scale = self.dsc_scale[cols]
+        if not paired:  # rows along the first axis, columns along the second
+            x, last_pos, last_vel = x[:, None], last_pos[:, None], last_vel[:, None]
+            y, first_pos, first_vel, scale = y[None], first_pos[None], first_vel[None], scale[None]
+        acc = np.zeros(np.broadcast_shapes(x.shape[:-2], y.shape[:-2]) + (8,), np.float32)
         s = np.empty_like(acc)
-        for q in range(x.shape[1]):
-            np.add(x[:, None, q], y[None, :, q], out=s)
+        for q in range(x.shape[-2]):
+            np.add(x[..., q, :], y[..., q, :], out=s)
             s *= s
             acc += s
         dsc = _lanes(acc)
-        dsc *= self.dsc_scale[cols][None, :]
+        dsc *= scale
         return dsc, _gap_lanes(last_pos, first_pos), _gap_lanes(last_vel, first_vel)
 
 
@@ -160,16 +165,16 @@ def _lanes(a: np.ndarray) -> np.ndarray:
 
 
 def _gap_lanes(last: np.ndarray, first: np.ndarray) -> np.ndarray:
-    """sum over markers of || first[b, k] - last[a, k] ||, (r, c) float32, in the lane order of
-    the kernel; last (r, 3, Mq, 8), first (c, 3, Mq, 8)."""
-    acc = np.zeros((len(last), len(first), 8), np.float32)
+    """sum over markers of || first[..., k] - last[..., k] ||, float32, in the lane order of the
+    kernel; last (..., 3, Mq, 8) and first (..., 3, Mq, 8) broadcast against each other."""
+    acc = np.zeros(np.broadcast_shapes(last.shape[:-3], first.shape[:-3]) + (8,), np.float32)
     d = np.empty_like(acc)
     sq = np.empty_like(acc)
-    for q in range(last.shape[2]):
-        np.subtract(first[None, :, 0, q], last[:, None, 0, q], out=sq)
+    for q in range(last.shape[-2]):
+        np.subtract(first[..., 0, q, :], last[..., 0, q, :], out=sq)
         sq *= sq
         for c in (1, 2):
-            np.subtract(first[None, :, c, q], last[:, None, c, q], out=d)
+            np.subtract(first[..., c, q, :], last[..., c, q, :], out=d)
             d *= d
             sq += d
         np.sqrt(sq, out=sq)
@@ -349,22 +354,34 @@ class TransitionCosts:
         order of ``kernels/pair_costs.cl``."""
         out = np.empty((len(rows), len(cols)), np.float32)
         step = max(1, (1 << 21) // max(len(cols), 1))
-        s = self.s
         for a in range(0, len(rows), step):
             r = rows[a : a + step]
-            dsc, pgap, vgap = self.f.terms(r, cols)
-            pre = self.pre[cols]
-            rule4 = np.float32(s.alpha3) * pgap[:, pre < 0]  # rule 4: (alpha3 PGap + VGap) + alpha1 PNT
-            rule4 += vgap[:, pre < 0]
-            rule4 += self.a1pnt
-            t = np.float32(s.alpha2) * dsc
-            t += np.float32(s.alpha3) * pgap
-            t += vgap
-            t += np.float32(s.pnt) * (self.f.viseme[r][:, None] != self.pre_viseme[cols][None, :])
-            t[:, pre < 0] = rule4
-            t[pre[None, :] == r[:, None]] = 0.0
-            out[a : a + step] = t
+            out[a : a + step] = self._rules(*self.f.terms(r, cols), r[:, None], cols[None, :])
         return out
+
+    def pairs_numpy(self, rows: np.ndarray, cols: np.ndarray) -> np.ndarray:
+        """TC(rows[k], cols[k]) for each k, (K,) float32: the values of :meth:`block_numpy`."""
+        rows, cols = np.asarray(rows, np.int64), np.asarray(cols, np.int64)
+        out = np.empty(len(rows), np.float32)
+        step = 1 << 16
+        for a in range(0, len(rows), step):
+            r, c = rows[a : a + step], cols[a : a + step]
+            out[a : a + step] = self._rules(*self.f.terms(r, c, paired=True), r, c)
+        return out
+
+    def _rules(self, dsc: np.ndarray, pgap: np.ndarray, vgap: np.ndarray, r: np.ndarray, c: np.ndarray) -> np.ndarray:
+        """Table I on the pair terms of nodes ``r`` before ``c`` (index arrays that broadcast to
+        the terms' shape), in the float32 operations of ``kernels/pair_costs.cl``."""
+        s = self.s
+        rule4 = np.float32(s.alpha3) * pgap  # rule 4: (alpha3 PGap + VGap) + alpha1 PNT
+        rule4 += vgap
+        rule4 += self.a1pnt
+        t = np.float32(s.alpha2) * dsc
+        t += np.float32(s.alpha3) * pgap
+        t += vgap
+        t += np.float32(s.pnt) * (self.f.viseme[r] != self.pre_viseme[c])
+        pre = self.pre[c]
+        return np.where(pre == r, np.float32(0.0), np.where(pre < 0, rule4, t))
 
     def column(self, j: int, rows: np.ndarray | None = None) -> np.ndarray:
         """TC[:, j] ((N,) float32), or TC[rows, j] when ``rows`` is given."""
@@ -409,15 +426,19 @@ class TransitionCosts:
         tc = self.dsc_row_max[r] + pvc + self.s.pnt * (self.f.viseme[r] != self.pre_viseme[k])
         return np.where(self.pre[k] < 0, float(self.a1pnt) + pvc, np.where(self.pre[k] == r, 0.0, tc))
 
-    def lower(self, r: np.ndarray, k: int) -> np.ndarray:
-        """Lower bounds of TC(r, k) for rows ``r`` ((n,) int) and one node k, float64: the
-        viseme penalty (alpha1 PNT for rule 4) plus the pivot bounds of alpha3 PGap and VGap,
+    def lower(self, r: np.ndarray, k: np.ndarray, pivots: int | None = None) -> np.ndarray:
+        """Lower bounds of TC(r, k) for nodes ``r`` before ``k`` (index arrays or scalars that
+        broadcast), float64: the viseme penalty (alpha1 PNT for rule 4) plus the pivot bounds
+        of alpha3 PGap and VGap (the first ``pivots`` pivots: fewer is cheaper and looser),
         shrunk against rounding as in ``kernels/pair_costs.cl``; 0 for rule 1."""
-        lp = np.max(np.abs(self.row_lp[r] - self.col_fp[k]), axis=-1).astype(np.float64)
-        lv = np.max(np.abs(self.row_lv[r] - self.col_fv[k]), axis=-1).astype(np.float64)
-        pen = float(self.a1pnt) if self.pre[k] < 0 else self.s.pnt * (self.f.viseme[r] != self.pre_viseme[k])
+        r, k = np.asarray(r), np.asarray(k)
+        q = slice(0, pivots)
+        lp = np.max(np.abs(self.row_lp[r, q] - self.col_fp[k, q]), axis=-1).astype(np.float64)
+        lv = np.max(np.abs(self.row_lv[r, q] - self.col_fv[k, q]), axis=-1).astype(np.float64)
+        pre = self.pre[k]
+        pen = np.where(pre < 0, float(self.a1pnt), self.s.pnt * (self.f.viseme[r] != self.pre_viseme[k]))
         bound = (pen + self.s.alpha3 * lp + lv) * 0.9999 - self.slack
-        return np.where(self.pre[k] == r, 0.0, np.maximum(bound, 0.0))
+        return np.where(pre == r, 0.0, np.maximum(bound, 0.0))
 
     def advantage(self, r: np.ndarray, j: np.ndarray) -> np.ndarray:
         """Upper bounds of max_k (TC(r, k) - TC(j, k)) over every node k, float64 (r, j broadcast):
@@ -457,8 +478,9 @@ class TransitionCosts:
 class OpenCLPairs:
     """The features on the OpenCL device, and the kernels of ``kernels/pair_costs.cl``.
 
-    Every array is copied into device-owned buffers (COPY_HOST_PTR), so the host arrays'
-    alignment never matters.
+    On a CPU device the page-aligned features are used in place (:meth:`upload`), everything
+    else is copied into device-owned buffers (COPY_HOST_PTR): a misaligned or short-lived host
+    array is never handed over.
     """
 
     def __init__(self, tc: TransitionCosts):
@@ -467,6 +489,10 @@ class OpenCLPairs:
         from ..opencl import context, kernel, queue
 
         self.cl, self.ctx, self.queue, self.tc = cl, context(), queue(), tc
+        device = self.ctx.devices[0]
+        # the alignment a host array needs to be used in place, or 0: only a CPU device reads
+        # host memory as fast as its own
+        self.in_place = max(128, device.mem_base_addr_align // 8) if device.type & cl.device_type.CPU else 0
         f = tc.f
         dims8, markers = -(-f.dsc_out.shape[1] // 8), f.first_pos.shape[1] // 3
         defines = dict(DIMS8=dims8, MQ=-(-markers // 8), PIVOTS=tc.row_lp.shape[1])
@@ -477,16 +503,19 @@ class OpenCLPairs:
         # The lane layout of DeviceLayout, made on the device: no host copy of the features.
         planes = kernel("pair_costs", "to_planes", **defines)
 
+        sources = []  # held until the layout kernels have run: a buffer may use its array in place
+
         def as_planes(a):
-            src = up(a)
+            src = up(a, kept=True)
+            sources.append(src)
             out = cl.Buffer(self.ctx, cl.mem_flags.READ_WRITE, max(4, 4 * len(a) * 3 * defines["MQ"] * 8))
             if len(a):
-                planes(self.queue, (len(a),), None, src, np.int32(len(a)), np.int32(markers), out)
+                planes(self.queue, (-(-len(a) // 64) * 64,), (64,), src, np.int32(len(a)), np.int32(markers), out)
             return out
 
         def as_lanes(a):
             if a.shape[1] % 8 == 0:
-                return up(a)
+                return up(a, kept=True)
             padded = np.zeros((len(a), dims8 * 8), np.float32)
             padded[:, : a.shape[1]] = a
             return up(padded)
@@ -496,14 +525,21 @@ class OpenCLPairs:
                          up(f.viseme.astype(np.int32)), up(tc.pre.astype(np.int32)),
                          up(tc.pre_viseme.astype(np.int32)),
                          np.float32(tc.s.alpha2), np.float32(tc.s.alpha3), np.float32(tc.s.pnt), tc.a1pnt]
+        self.queue.finish()
         self.slack = tc.slack
 
-    def upload(self, a: np.ndarray):
-        """A read-only device copy of ``a`` (float32 or int32, C order)."""
+    def upload(self, a: np.ndarray, kept: bool = False):
+        """A read-only device buffer of ``a`` (float32 or int32, C order), a copy; with ``kept``
+        (the buffer outlives every kernel that reads it, and the buffer holds its array) on a
+        CPU device ``a`` itself when it starts on the device's base alignment (USE_HOST_PTR:
+        no copy of hundreds of MB at 100,000 nodes). A buffer dropped while a kernel still
+        reads it must be a copy: the array it used in place would be freed under the kernel."""
         a = np.ascontiguousarray(a, np.int32 if a.dtype.kind in "iu" else np.float32)
         mf = self.cl.mem_flags
         if a.nbytes == 0:
             a = np.zeros(1, a.dtype)
+        if kept and self.in_place and a.ctypes.data % self.in_place == 0:
+            return self.cl.Buffer(self.ctx, mf.READ_ONLY | mf.USE_HOST_PTR, hostbuf=a)
         return self.cl.Buffer(self.ctx, mf.READ_ONLY | mf.COPY_HOST_PTR, hostbuf=a)
 
     def block(self, rows: np.ndarray, cols: np.ndarray) -> np.ndarray:
@@ -636,7 +672,7 @@ class PairTerms:
             lay = f.layout()
             for a in range(0, n, step):
                 rows = np.arange(a, min(n, a + step))
-                self.vgap[rows] = _gap_lanes(lay.last_vel[rows], lay.first_vel[cols])
+                self.vgap[rows] = _gap_lanes(lay.last_vel[rows][:, None], lay.first_vel[cols][None])
             return
         self.dsc, self.pgap, self.vgap = (np.empty((n, n), np.float32) for _ in range(3))
         for a in range(0, n, step):

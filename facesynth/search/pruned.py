@@ -44,8 +44,10 @@ from .pairs import TransitionCosts
 REFERENCES = 4
 #: Columns evaluated first at each step to give the references exact values.
 PROBES = 32
-#: Rows per block in the NumPy reference's sorted scan.
-NUMPY_ROW_BLOCK = 256
+#: Pivots of the NumPy scan's first bound (all pivots bound the pairs it leaves).
+NUMPY_FIRST_PIVOTS = 4
+#: Elements (rows x columns x first pivots) per block of the NumPy scan's bounds.
+NUMPY_BOUND_ELEMENTS = 1 << 22
 
 
 @dataclass
@@ -111,20 +113,41 @@ def _references(idx: np.ndarray, upper: np.ndarray, count: int = REFERENCES) -> 
 
 def _column_minima_numpy(tc: TransitionCosts, rows: np.ndarray, phi: np.ndarray, cols: np.ndarray,
                          init: np.ndarray, backward: bool = False) -> tuple[np.ndarray, int]:
-    """Reference of ``pruned_columns`` in ``kernels/pair_costs.cl``: the same minima, scanning the
-    sorted rows in blocks and stopping per column once ``phi >= best`` (``backward``: the
-    costs TC(cols, rows))."""
+    """The NumPy side of ``pruned_columns`` in ``kernels/pair_costs.cl``: the same minima
+    (``backward``: of the costs TC(cols, rows)) with the same cheap bounds, vectorized.
+
+    Per column: the pair with the smallest ``phi`` plus lower bound (a seed, bounded through
+    :data:`NUMPY_FIRST_PIVOTS` pivots) is computed first; then every row whose ``phi`` plus
+    lower bound, first through those pivots and then through all, stays below the best value
+    so far. Every other row's value is at least its bound, so at least that best value, and
+    the minimum is the dense one.
+    """
     best = init.astype(np.float32).copy()
     evals = 0
-    for a in range(0, len(rows), NUMPY_ROW_BLOCK):
-        active = np.nonzero(best > phi[a])[0]
-        if len(active) == 0:
-            break
-        r = rows[a : a + NUMPY_ROW_BLOCK]
-        costs = tc.block_numpy(cols[active], r).T if backward else tc.block_numpy(r, cols[active])
-        block = phi[a : a + NUMPY_ROW_BLOCK, None] + costs
-        evals += block.size
-        best[active] = np.minimum(best[active], block.min(axis=0))
+    if len(rows) == 0 or len(cols) == 0:
+        return best, 0
+
+    def evaluate(r, k, c):
+        nonlocal evals
+        i, j = (c[k], rows[r]) if backward else (rows[r], c[k])
+        evals += len(r)
+        return phi[r] + tc.pairs_numpy(i, j)
+
+    step = max(1, NUMPY_BOUND_ELEMENTS // (len(rows) * NUMPY_FIRST_PIVOTS))
+    for a in range(0, len(cols), step):
+        c, at = cols[a : a + step], np.arange(a, min(a + step, len(cols)))
+        i, j = (c[None, :], rows[:, None]) if backward else (rows[:, None], c[None, :])
+        bound = phi[:, None] + tc.lower(i, j, NUMPY_FIRST_PIVOTS)  # (rows, columns), float64
+        bound[tc.pre[j] == i] = np.inf  # rule 1 is in init
+        seed = np.argmin(bound, axis=0)
+        go = np.nonzero(bound[seed, at - a] < best[at])[0]
+        np.minimum.at(best, at[go], evaluate(seed[go], go, c))
+        r, k = np.nonzero(bound < best[at][None, :])
+        r, k = r[r != seed[k]], k[r != seed[k]]
+        i, j = (c[k], rows[r]) if backward else (rows[r], c[k])
+        tight = phi[r] + tc.lower(i, j) < best[at[k]]
+        r, k = r[tight], k[tight]
+        np.minimum.at(best, at[k], evaluate(r, k, c))
     return best, evals
 
 
