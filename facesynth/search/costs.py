@@ -109,9 +109,9 @@ def step_costs(phones: list[str], emotions: list[str], node_phone: list[str], no
                constraints: dict[int, int], s: SynthesizeSettings) -> StepCosts:
     """OC (Table II), EMP (Eq. 5) and B (Eq. 10) for every input step and node."""
     t_count, n = len(phones), len(node_phone)
-    node_phone_arr = np.array(node_phone)
-    node_vis = np.array([viseme(p) for p in node_phone])
-    node_emo = np.array(node_emotion)
+    phone_codes, node_phone_code = _codes(node_phone)
+    emotion_codes, node_emo = _codes(node_emotion)
+    node_vis = np.array([viseme(p) for p in phone_codes], np.int64)[node_phone_code]
     oc = np.empty((t_count, n), np.float32)
     emp = np.empty((t_count, n), np.float32)
     block = np.zeros((t_count, n), np.float32)
@@ -119,14 +119,21 @@ def step_costs(phones: list[str], emotions: list[str], node_phone: list[str], no
         if p == PAU:
             oc[t] = 0.0
         else:
-            same_phone = node_phone_arr == p
+            same_phone = node_phone_code == phone_codes.get(p, -1)
             same_viseme = node_vis == viseme(p)
             oc[t] = np.where(same_phone, 0.0, np.where(same_viseme, s.alpha4 * s.alpha5 * s.pnt, s.alpha5 * s.pnt))
-        emp[t] = np.where(node_emo == e, 0.0, s.alpha6 * s.pnt)
+        emp[t] = np.where(node_emo == emotion_codes.get(e, -1), 0.0, s.alpha6 * s.pnt)
     for t, node in constraints.items():
         block[t] = s.huge_penalty
         block[t, node] = 0.0
     return StepCosts(oc, emp, block)
+
+
+def _codes(names: list[str]) -> tuple[dict[str, int], np.ndarray]:
+    """Each distinct name's code (in order of first appearance) and the (N,) int64 codes of
+    ``names``: comparisons per input step on integers instead of strings."""
+    codes: dict[str, int] = {}
+    return codes, np.fromiter((codes.setdefault(x, len(codes)) for x in names), np.int64, len(names))
 
 
 def path_terms(path: np.ndarray, tc, steps: StepCosts) -> dict[str, np.ndarray]:
