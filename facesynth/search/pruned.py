@@ -15,8 +15,10 @@ Per step t, with ``phi_{t-1}`` exact on the live states (dead states are +inf):
    norm through pivots, the viseme penalty, the captured successor of j) and is 0 at the last
    step. The references r are the few states with the smallest upper bounds (the rule 1/4
    values, and the exact values of a few probe columns evaluated first: those with the
-   smallest lower bounds). The observation cost's large constants (Table II) put the nodes of other phones
-   far above, so they die here without a single pair cost.
+   smallest lower bounds). Before evaluation only the cheap form of the test runs
+   (``advantage(r, j) <= reach_row[r] + reach_col[j]``), the full one at the last step.
+   The observation cost's large constants (Table II) put the nodes of other phones far
+   above, so they die here without a single pair cost.
 3. **Sorted rows.** For each surviving column, the live rows are scanned by increasing
    ``phi_{t-1}``; the scan stops at the first row with ``phi_{t-1}(i) >= best`` (TC >= 0) and
    skips rows whose cheap lower bound (viseme penalty + pivot bounds) already reaches ``best``.
@@ -195,7 +197,10 @@ def dp_pruned(tc: TransitionCosts, obs: np.ndarray, keep_last: bool = False) -> 
         upper[probes] = best + obs[t, probes]
         phi[t, probes] = upper[probes]
         refs, ref_upper = _references(all_nodes, upper)
-        killed = (np.zeros(n, bool) if last and keep_last else _dominated(tc, all_nodes, lower, refs, ref_upper, last, cheap=not last))
+        # before evaluation only the cheap test: the per-reference bounds cost more than the
+        # few columns they would spare (at 100,000 nodes they killed 2% of the survivors)
+        killed = (np.zeros(n, bool) if last and keep_last
+                  else _dominated(tc, all_nodes, lower, refs, ref_upper, last, cheap=not last))
         cols = np.nonzero(~killed)[0]
         cols = cols[np.isinf(phi[t, cols])]  # the probes are done
         stats.columns.append(len(cols) + len(probes))

@@ -2,6 +2,8 @@
 accumulated costs, on random databases with ties, on the tiny preset with constraints and
 emotions, and on hand-made cases where the bounds are tight or useless."""
 
+from functools import partial
+
 import numpy as np
 import pytest
 
@@ -9,7 +11,7 @@ from facesynth.config import Config
 from facesynth.search.costs import step_costs
 from facesynth.search.dp import dp_numpy, dp_opencl
 from facesynth.search.pairs import PairFeatures, TransitionCosts
-from facesynth.search.pruned import dp_pruned
+from facesynth.search.pruned import _column_minima_numpy, dp_pruned
 
 from features import random_features
 
@@ -157,15 +159,12 @@ def _clustered(n: int, seed: int) -> PairFeatures:
     return f
 
 
-@pytest.mark.parametrize("backward", [False, True])
-@pytest.mark.parametrize("alpha1", ["1.75", "0.3"])
-def test_grouped_column_minima_equal_the_brute_force_minima(backward, alpha1, opencl_device):
-    """The kernel's group bounds and seed skip only what cannot lower a minimum: every column's
-    minimum is the brute-force float32 minimum, with rows in tight groups, tied values and
-    phi ties, forward and backward, with the rule-4 penalty alpha1 PNT above and below PNT."""
+def _check_column_minima(backward: bool, alpha1: str, opencl: bool) -> None:
+    """Every column's minimum from the pruned scan (the kernel, or NumPy) is the brute-force
+    float32 minimum, with rows in tight groups, tied values and phi ties; fewer pairs computed."""
     s = _settings(f"synthesize.alpha1={alpha1}")
     f = _clustered(700, seed=5)
-    tc = TransitionCosts(f, s, opencl=True)
+    tc = TransitionCosts(f, s, opencl=opencl)
     rng = np.random.default_rng(1)
     rows = rng.choice(len(f), 500, replace=False)
     phi = np.round(rng.random(500) * 50, 0).astype(np.float32)  # many ties
@@ -178,9 +177,25 @@ def test_grouped_column_minima_equal_the_brute_force_minima(backward, alpha1, op
     values = np.where(special, np.float32(np.inf), phi[None, :] + costs)  # rule 1 is init's; rule 4 is scanned
     init = np.full(len(cols), np.inf, np.float32)
     init[::3] = np.min(values[::3], axis=1)  # some columns start at their exact minimum
-    best, evals = tc.device.column_minima(rows, phi, cols, init, backward=backward)
+    minima = tc.device.column_minima if opencl else partial(_column_minima_numpy, tc)
+    best, evals = minima(rows, phi, cols, init, backward=backward)
     assert np.array_equal(best, np.minimum(init, values.min(axis=1)))
     assert evals < values.size
+
+
+@pytest.mark.parametrize("backward", [False, True])
+@pytest.mark.parametrize("alpha1", ["1.75", "0.3"])
+def test_grouped_column_minima_equal_the_brute_force_minima(backward, alpha1, opencl_device):
+    """The kernel's group bounds and seed skip only what cannot lower a minimum, forward and
+    backward, with the rule-4 penalty alpha1 PNT above and below PNT."""
+    _check_column_minima(backward, alpha1, opencl=True)
+
+
+@pytest.mark.parametrize("backward", [False, True])
+@pytest.mark.parametrize("alpha1", ["1.75", "0.3"])
+def test_numpy_column_minima_equal_the_brute_force_minima(backward, alpha1):
+    """The NumPy scan's seed and two-stage pivot bounds skip only what cannot lower a minimum."""
+    _check_column_minima(backward, alpha1, opencl=False)
 
 
 def test_clustered_database_pruned_equals_dense_on_opencl(opencl_device):
