@@ -189,6 +189,26 @@ inline float range_gap(const float x, const float lo, const float hi)
     return x < lo ? lo - x : (x > hi ? x - hi : 0.0f);
 }
 
+// A row's own lower bound of TC against the column (phi not included): the viseme penalty
+// (alpha1 PNT for rule 4, pj < 0) plus alpha3 and 1 times the largest pivot-distance gaps of
+// the positions and velocities, shrunk by 1e-4 relative and `slack` absolute.
+inline float row_bound(const int r, const int pj, const int me_vis, const float *mq_p, const float *mq_v,
+                       __global const float *row_p, __global const float *row_v, __global const int *row_vis,
+                       const float a3, const float pnt, const float a1pnt, const float slack)
+{
+    float lp = 0.0f, lv = 0.0f;
+    for (int q = 0; q < PIVOTS; ++q) {
+        const float dp = row_p[(size_t)r * PIVOTS + q] - mq_p[q];
+        const float dv = row_v[(size_t)r * PIVOTS + q] - mq_v[q];
+        const float ap = dp < 0.0f ? -dp : dp;
+        const float av = dv < 0.0f ? -dv : dv;
+        lp = ap > lp ? ap : lp;
+        lv = av > lv ? av : lv;
+    }
+    const float pen = pj < 0 ? a1pnt : (row_vis[r] != me_vis ? pnt : 0.0f);
+    return (pen + a3 * lp + lv) * 0.9999f - slack;
+}
+
 inline float scan_group(const int g, const float gap, float best, int *evals, const int me, const int me_pre,
                         const int me_vis, const float *mq_p, const float *mq_v, const float slack, const int backward,
                         __global const float *row_p, __global const float *row_v,
@@ -208,17 +228,7 @@ inline float scan_group(const int g, const float gap, float best, int *evals, co
         const int i = backward ? me : other;
         const int pj = backward ? row_pre[r] : me_pre;
         if (pj == i) continue;  // rule 1 is in init
-        float lp = 0.0f, lv = 0.0f;
-        for (int q = 0; q < PIVOTS; ++q) {
-            const float dp = row_p[(size_t)r * PIVOTS + q] - mq_p[q];
-            const float dv = row_v[(size_t)r * PIVOTS + q] - mq_v[q];
-            const float ap = dp < 0.0f ? -dp : dp;
-            const float av = dv < 0.0f ? -dv : dv;
-            lp = ap > lp ? ap : lp;
-            lv = av > lv ? av : lv;
-        }
-        const float pen = pj < 0 ? a1pnt : (row_vis[r] != me_vis ? pnt : 0.0f);  // rule 4: alpha1 PNT
-        const float lb = (pen + a3 * lp + lv) * 0.9999f - slack;
+        const float lb = row_bound(r, pj, me_vis, mq_p, mq_v, row_p, row_v, row_vis, a3, pnt, a1pnt, slack);
         if (p + lb >= best) continue;
         const int j = backward ? other : me;
         // best - p rounds by at most 2^-24 best (costs are >= 0); the limit allows for that
@@ -301,17 +311,7 @@ __kernel void pruned_columns(FEATURE_PARAMS, const float slack, __global const u
             const int i = backward ? me : rows[r];
             const int pj = backward ? row_pre[r] : me_pre;
             if (pj == i) continue;
-            float lp = 0.0f, lv = 0.0f;
-            for (int q = 0; q < PIVOTS; ++q) {
-                const float dp = row_p[(size_t)r * PIVOTS + q] - mq_p[q];
-                const float dv = row_v[(size_t)r * PIVOTS + q] - mq_v[q];
-                const float ap = dp < 0.0f ? -dp : dp;
-                const float av = dv < 0.0f ? -dv : dv;
-                lp = ap > lp ? ap : lp;
-                lv = av > lv ? av : lv;
-            }
-            const float pen = pj < 0 ? a1pnt : (row_vis[r] != me_vis ? pnt : 0.0f);
-            const float lb = p + (pen + a3 * lp + lv) * 0.9999f - slack;
+            const float lb = p + row_bound(r, pj, me_vis, mq_p, mq_v, row_p, row_v, row_vis, a3, pnt, a1pnt, slack);
             if (lb < seed_lb) { seed_lb = lb; seed = r; }
         }
     }
