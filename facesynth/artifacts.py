@@ -654,6 +654,15 @@ def attr(f: h5py.File | h5py.Dataset | h5py.Group, key: str):
     return value.decode("utf-8") if isinstance(value, bytes) else value
 
 
+def attr_choice(f: h5py.File, key: str, choices: Sequence[str], remedy: str) -> str:
+    """The root attribute ``key``, refused in one sentence (ending with ``remedy``) unless it
+    is one of ``choices``."""
+    value = str(attr(f, key))
+    if value not in choices:
+        raise InputError(f"{f.filename}: / attribute '{key}' is {value!r}, not one of {', '.join(choices)}; {remedy}.")
+    return value
+
+
 #: Version of each group encoding (the ``encoding-type`` attribute names the group's layout,
 #: ``encoding-version`` this number); bumped when a group's layout changes incompatibly.
 ENCODING_VERSION = "1"

@@ -11,8 +11,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..artifacts import attr, open_artifact, read, read_strings, stamp, write_artifact, write_strings
-from ..errors import InputError
+from ..artifacts import attr, attr_choice, open_artifact, read, read_strings, stamp, write_artifact, write_strings
 
 #: The ways key-shapes are chosen.
 METHODS = ("pca", "affinity")
@@ -78,10 +77,7 @@ class KeyShapes:
     def read(cls, path: Path) -> "KeyShapes":
         """The ``keyshapes`` artifact at ``path``."""
         with open_artifact(path, cls.KIND) as f:
-            method = str(attr(f, "method"))
-            if method not in METHODS:
-                raise InputError(f"{path}: / attribute 'method' is {method!r}, not one of {', '.join(METHODS)}; "
-                                 f"rebuild it with `facesynth keyshapes`.")
+            method = attr_choice(f, "method", METHODS, "rebuild it with `facesynth keyshapes`")
             emotions = {}
             for name in read_strings(f, "emotion_names"):
                 g = f[f"emotions/{name}"]

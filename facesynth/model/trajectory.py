@@ -20,8 +20,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..artifacts import attr, open_artifact, read, read_strings, write_artifact, write_strings
-from ..errors import InputError
+from ..artifacts import attr, attr_choice, open_artifact, read, read_strings, write_artifact, write_strings
 
 #: Which frames of a phone token feed its Gaussian.
 SAMPLINGS = ("span", "centre")
@@ -95,10 +94,7 @@ class TrajectoryModel:
     def read(cls, path: Path) -> "TrajectoryModel":
         """The ``trajectory`` artifact at ``path``."""
         with open_artifact(path, cls.KIND) as f:
-            sampling = str(attr(f, "sampling"))
-            if sampling not in SAMPLINGS:
-                raise InputError(f"{path}: / attribute 'sampling' is {sampling!r}, not one of {', '.join(SAMPLINGS)}; "
-                                 "train it again with `facesynth train-trajectory`.")
+            sampling = attr_choice(f, "sampling", SAMPLINGS, "train it again with `facesynth train-trajectory`")
             return cls(read_strings(f, "marker_names"), read(f, "reference"), read(f, "keyshapes"),
                        read_strings(f, "keyshape_names"), read_strings(f, "keyshape_emotion"),
                        read_strings(f, "phones"), read(f, "means"), read(f, "variances"), read(f, "tokens"),

@@ -28,3 +28,24 @@ def random_features(n: int, seed: int, markers: int = 7, dims: int = 12, duplica
     y[pre < 0] = 0.0
     scale[pre < 0] = 0.0
     return PairFeatures(*arrays, x, y, scale, viseme, pre)
+
+
+def tiny_utterance_steps(db, s, textgrid, with_emotions: bool, with_constraints: bool):
+    """The step costs of the utterance ``textgrid`` over the database ``db`` (a MotionDatabase)
+    for settings ``s``: per-phone emotions cycling through angry, sad and happy when
+    ``with_emotions``, and with ``with_constraints`` up to three phones constrained to a node
+    of their own phone. Returns (StepCosts, constraints {step: node})."""
+    from facesynth.search.costs import step_costs
+    from facesynth.search.inputs import read_utterance
+
+    utt = read_utterance(textgrid)
+    if with_emotions:
+        utt.emotions = [("angry", "sad", "happy")[k % 3] for k in range(len(utt))]
+    constraints = {}
+    if with_constraints:
+        for t, p in enumerate(utt.phones):
+            nodes = [j for j, q in enumerate(db.nodes.phone) if q == p]
+            if nodes and len(constraints) < 3:
+                constraints[t] = nodes[len(nodes) // 2]
+        assert constraints
+    return step_costs(utt.phones, utt.emotions, db.nodes.phone, db.nodes.emotion, constraints, s), constraints

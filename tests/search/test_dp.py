@@ -5,8 +5,9 @@ import itertools
 import numpy as np
 import pytest
 
-from facesynth.search.costs import step_costs
 from facesynth.search.dp import OpenCLDp, dp_numpy, dp_opencl
+
+from features import tiny_utterance_steps
 
 
 def _random(n, t, seed):
@@ -57,22 +58,13 @@ def test_buffers_split_below_the_allocation_limit_give_the_same_answer(monkeypat
 @pytest.mark.parametrize("with_emotions, with_constraints", [(False, False), (True, False), (False, True), (True, True)])
 def test_real_database_with_emotions_and_constraints(tiny_db, tiny_corpus, held_out_take, config, with_emotions, with_constraints,
                                                     opencl_device):
-    from facesynth.search.inputs import read_utterance
     from facesynth.model.motiondb import MotionDatabase
 
     db = MotionDatabase.read(tiny_db)
     s = config.settings("synthesize")
     tc = db.transition(s)
-    utt = read_utterance(tiny_corpus / "labels" / f"{held_out_take}.TextGrid")
-    if with_emotions:
-        utt.emotions = [("angry", "sad", "happy")[k % 3] for k in range(len(utt))]
-    constraints = {}
-    if with_constraints:
-        for t, p in enumerate(utt.phones):
-            nodes = [j for j, q in enumerate(db.nodes.phone) if q == p]
-            if nodes and len(constraints) < 3:
-                constraints[t] = nodes[-1]
-    steps = step_costs(utt.phones, utt.emotions, db.nodes.phone, db.nodes.emotion, constraints, s)
+    steps, constraints = tiny_utterance_steps(db, s, tiny_corpus / "labels" / f"{held_out_take}.TextGrid",
+                                              with_emotions, with_constraints)
     ref, cl = dp_numpy(tc, steps.total), dp_opencl(tc, steps.total)
     assert cl.cost == ref.cost and cl.path.tolist() == ref.path.tolist()
     for t, node in constraints.items():

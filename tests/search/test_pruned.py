@@ -8,12 +8,11 @@ import numpy as np
 import pytest
 
 from facesynth.config import Config
-from facesynth.search.costs import step_costs
 from facesynth.search.dp import dp_numpy, dp_opencl
 from facesynth.search.pairs import PairFeatures, TransitionCosts
 from facesynth.search.pruned import _column_minima_numpy, dp_pruned
 
-from features import random_features
+from features import random_features, tiny_utterance_steps
 
 
 def _settings(*overrides):
@@ -99,22 +98,12 @@ def test_a_tight_case_kills_other_phones_without_evaluating_them():
 def test_tiny_preset_with_emotions_and_constraints(tiny_db, tiny_corpus, held_out_take, config, with_emotions,
                                                    with_constraints):
     from facesynth.model.motiondb import MotionDatabase
-    from facesynth.search.inputs import read_utterance
 
     db = MotionDatabase.read(tiny_db)
     s = config.settings("synthesize")
     tc = db.transition_costs(s, opencl=False)
-    utt = read_utterance(tiny_corpus / "labels" / f"{held_out_take}.TextGrid")
-    if with_emotions:
-        utt.emotions = [("angry", "sad", "happy")[k % 3] for k in range(len(utt))]
-    constraints = {}
-    if with_constraints:
-        for t, p in enumerate(utt.phones):
-            nodes = [j for j, q in enumerate(db.nodes.phone) if q == p]
-            if nodes and len(constraints) < 3:
-                constraints[t] = nodes[len(nodes) // 2]
-        assert constraints
-    steps = step_costs(utt.phones, utt.emotions, db.nodes.phone, db.nodes.emotion, constraints, s)
+    steps, constraints = tiny_utterance_steps(db, s, tiny_corpus / "labels" / f"{held_out_take}.TextGrid",
+                                              with_emotions, with_constraints)
     res, stats = _check(tc, steps.total)
     for t, node in constraints.items():
         assert res.path[t] == node
