@@ -444,7 +444,9 @@ def markdown(results: dict) -> str:
         "",
         f"Rebuilt by `make report` (`benchmarks/report.py`) from fresh sample corpora: preset "
         f"`{results['preset']}`, seeds {seeds}; tuning budget {results['tune_evaluations']} evaluations. "
-        f"The whole report took {results['report_s'] / 60:.1f} min. Every number below is in `results.json`.",
+        f"The whole report took {results['report_s'] / 60:.1f} min"
+        + (f" (seeds {', '.join(map(str, results['reused_seeds']))} read from an earlier run's raw.json)"
+           if results.get("reused_seeds") else "") + ". Every number below is in `results.json`.",
         "",
         "Quality figures are deterministic: the same code and seeds give the same numbers (a second run "
         "of the report reproduces them exactly; another processor or OpenCL device may differ in the last "
@@ -599,6 +601,9 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--tune-evaluations", type=int, default=12, help="tune.max_evaluations per seed (default: 12)")
     ap.add_argument("--work", type=Path, default=ROOT / "out" / "report", help="folder for the artifacts")
     ap.add_argument("--out", type=Path, default=ROOT / "docs", help="folder for results.md and results.json")
+    ap.add_argument("--reuse-seeds", action="store_true",
+                    help="read a seed's figures from its raw.json in --work when an earlier run of the same "
+                         "commit and preset left one, instead of running it again")
     args = ap.parse_args(argv)
     if len(set(args.seeds)) != len(args.seeds):
         ap.error("--seeds: each seed once.")
@@ -612,11 +617,17 @@ def main(argv: list[str] | None = None) -> int:
         host = host_info()
         host["copy_bandwidth_gb_s"] = copy_bandwidth()
         host["opencl"] = opencl_device()
-        raws = []
+        raws, reused = [], []
         for seed in args.seeds:
+            raw = args.work / f"seed{seed}" / "raw.json"
+            if args.reuse_seeds and raw.exists():
+                say(f"seed {seed}: figures read from {raw}")
+                raws.append(json.loads(raw.read_text(encoding="utf-8")))
+                reused.append(seed)
+                continue
             say(f"seed {seed}: pipeline ({args.preset} preset), evaluate, prune, searches, tune ...")
             raws.append(run_seed(fs, args.work, args.preset, seed, args.tune_evaluations))
-            (args.work / f"seed{seed}" / "raw.json").write_text(json.dumps(raws[-1]), encoding="utf-8")
+            raw.write_text(json.dumps(raws[-1]), encoding="utf-8")
         paper = args.work / f"seed{args.seeds[0]}"
         if args.preset != "paper":
             paper = args.work / "paper"
@@ -629,7 +640,8 @@ def main(argv: list[str] | None = None) -> int:
         return 1
     results = {"generated": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d"),
                "commit": _commit(), "preset": args.preset, "tune_evaluations": args.tune_evaluations,
-               "host": host, **aggregate(raws), "speed": speed, "report_s": time.perf_counter() - started}
+               "host": host, **aggregate(raws), "speed": speed, "report_s": time.perf_counter() - started,
+               "reused_seeds": reused}
     args.out.mkdir(parents=True, exist_ok=True)
     (args.out / "results.json").write_text(json.dumps(results, indent=2) + "\n", encoding="utf-8")
     (args.out / "results.md").write_text(markdown(results), encoding="utf-8")
