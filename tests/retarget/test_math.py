@@ -12,6 +12,8 @@ from facesynth.retarget.keyshapes import knee, select_affinity, select_pca
 from facesynth.retarget.retarget import decompose, emotion_blend
 from facesynth.retarget.solve import fit_rig_weights, nnls_weights, solve_curves
 
+from meshes import grid
+
 
 def test_nnls_on_the_gram_factor_matches_scipy_on_the_full_system():
     rng = np.random.default_rng(0)
@@ -199,18 +201,6 @@ def test_newton_polar_decomposition_matches_the_svd_route():
     np.testing.assert_allclose(rv.reshape(-1, 3)[12:], Rotation.from_matrix(rot[12:]).as_rotvec(), atol=1e-10)
 
 
-def _grid(n: int = 7):
-    """An n x n grid of vertices 1 mm apart in the z = 0 plane, two triangles per cell."""
-    xs, ys = np.meshgrid(np.arange(n, dtype=float), np.arange(n, dtype=float))
-    rest = np.stack([xs.ravel(), ys.ravel(), np.zeros(n * n)], 1)
-    faces = []
-    for i in range(n - 1):
-        for j in range(n - 1):
-            a, b, c, d = i * n + j, i * n + j + 1, (i + 1) * n + j, (i + 1) * n + j + 1
-            faces += [(a, b, d), (a, d, c)]
-    return rest, np.array(faces)
-
-
 def _reference_blend(rest, faces, examples, anchor, alpha):
     """The formulation of the module docstring written out frame by frame: SVD polar factors,
     scipy's rotations, one sparse solve per frame (float64 throughout)."""
@@ -249,7 +239,7 @@ def test_blocked_gradient_blend_matches_the_frame_by_frame_formulation(use_openc
 
     if use_opencl and not device_builds():
         pytest.skip("no OpenCL device builds kernels here")
-    rest, faces = _grid()
+    rest, faces = grid(7)
     rng = np.random.default_rng(9)
     bend = Rotation.from_rotvec([0, -1.2, 0]).apply(rest - [3, 0, 0]) + [3, 0, 0]
     examples = np.stack([rest + rng.normal(scale=0.2, size=rest.shape), bend,

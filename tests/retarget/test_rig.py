@@ -16,21 +16,12 @@ from facesynth.errors import InputError
 from facesynth.formats.mesh import write_obj
 from facesynth.retarget.rig import TargetRig, builtin_rig, read_keymorphs, read_rig
 
-
-def _grid(n: int = 4):
-    xs, ys = np.meshgrid(np.arange(n, dtype=float), np.arange(n, dtype=float))
-    v = np.stack([xs.ravel(), ys.ravel(), np.zeros(n * n)], 1)
-    f = []
-    for i in range(n - 1):
-        for j in range(n - 1):
-            a = i * n + j
-            f += [(a, a + 1, a + n + 1), (a, a + n + 1, a + n)]
-    return v, np.array(f)
+from meshes import grid
 
 
 def _rig_folder(folder: Path) -> tuple[np.ndarray, np.ndarray]:
     folder.mkdir()
-    v, f = _grid()
+    v, f = grid(4)
     write_obj(folder / "neutral.obj", v, f)
     up = v.copy()
     up[:, 2] += v[:, 0]
@@ -64,7 +55,7 @@ def test_rig_objs_that_disagree_in_vertex_count_or_topology_are_refused(tmp_path
 
 
 def test_a_gltf_with_morph_targets_is_a_rig(tmp_path):
-    v, f = _grid()
+    v, f = grid(4)
     delta = np.zeros_like(v)
     delta[:, 2] = 1.0
     blobs = [v.astype(np.float32).tobytes(), f.astype(np.uint32).tobytes(), delta.astype(np.float32).tobytes()]
