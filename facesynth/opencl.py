@@ -39,6 +39,11 @@ _OFF = {"off", "0", "no", "false", "numpy"}
 #: Build options of every facesynth kernel.
 BUILD_OPTIONS = ("-cl-std=CL1.2",)
 
+#: Asks for IEEE-754 correctly rounded single-precision sqrt and division. OpenCL 1.2 allows a
+#: device 3 ulp of error in sqrt without it (NVIDIA's driver uses that freedom, PoCL does not),
+#: and the kernels' values must equal the NumPy reference's bit for bit.
+CORRECTLY_ROUNDED = "-cl-fp32-correctly-rounded-divide-sqrt"
+
 _KIND_ORDER = {"GPU": 0, "ACCELERATOR": 1, "CPU": 2}
 
 _ADVICE = ("install your system's OpenCL driver (e.g. Debian's pocl-opencl-icd) or choose a device with "
@@ -161,6 +166,17 @@ def _cl_device(device: Device):
     return _cl().get_platforms()[device.platform_index].get_devices()[device.device_index]
 
 
+def build_options(cl_device) -> list[str]:
+    """:data:`BUILD_OPTIONS`, plus :data:`CORRECTLY_ROUNDED` where ``cl_device`` (a pyopencl
+    device) offers correctly rounded sqrt and division; the probe refuses a device whose sqrt
+    still differs from IEEE-754's."""
+    cl = _cl()
+    options = list(BUILD_OPTIONS)
+    if cl_device.single_fp_config & cl.device_fp_config.CORRECTLY_ROUNDED_DIVIDE_SQRT:
+        options.append(CORRECTLY_ROUNDED)
+    return options
+
+
 def build_log_line(exc: BaseException) -> str:
     """The first meaningful line of a failed build's log (pyopencl puts the log after
     'Build on <device>:'), else the first line of the error."""
@@ -178,13 +194,15 @@ _probe_contexts: dict[Device, object] = {}
 
 
 def probe(device: Device) -> Probe:
-    """Build ``kernels/probe.cl`` on ``device`` and check what it computes."""
+    """Build ``kernels/probe.cl`` on ``device`` and check what it computes: float8 arithmetic,
+    integer atomics on float bits, and sqrt rounded as IEEE-754 (bit-identical to NumPy's)."""
     import numpy as np
 
     try:
         cl = _cl()
-        ctx = cl.Context([_cl_device(device)])
-        prg = cl.Program(ctx, kernel_source("probe")).build(options=list(BUILD_OPTIONS))
+        cl_device = _cl_device(device)
+        ctx = cl.Context([cl_device])
+        prg = cl.Program(ctx, kernel_source("probe")).build(options=build_options(cl_device))
         q = cl.CommandQueue(ctx)
         x = np.array([3.0, 1.5, 2.0, 4.0], np.float32)
         mf = cl.mem_flags
@@ -196,12 +214,30 @@ def probe(device: Device) -> Probe:
         y = np.empty_like(x)
         cl.enqueue_copy(q, y, yb)
         cl.enqueue_copy(q, low, lb, is_blocking=True)
+        roots_of = _sqrt_probe_values()
+        rb = cl.Buffer(ctx, mf.READ_ONLY | mf.COPY_HOST_PTR, hostbuf=roots_of)
+        sb = cl.Buffer(ctx, mf.WRITE_ONLY, roots_of.nbytes)
+        prg.probe_sqrt(q, roots_of.shape, None, rb, sb)
+        roots = np.empty_like(roots_of)
+        cl.enqueue_copy(q, roots, sb, is_blocking=True)
     except (_cl().Error, RuntimeError, ValueError, OSError) as exc:  # a driver failure: this device is unusable
         return Probe(device, False, build_log_line(exc))
     if not (np.array_equal(y, 36 * x) and low[0] == np.float32(1.5).view(np.int32)):
         return Probe(device, False, "the probe kernel ran but computed wrong numbers")
+    wrong = int(np.count_nonzero(roots.view(np.uint32) != np.sqrt(roots_of).view(np.uint32)))
+    if wrong:
+        return Probe(device, False, f"its float32 sqrt is not correctly rounded ({wrong} of {roots_of.size} "
+                                    "probe values differ from IEEE-754), so results would not be bit-identical")
     _probe_contexts[device] = ctx
     return Probe(device, True)
+
+
+def _sqrt_probe_values():
+    """(4096,) float32: fixed positive values spread over 2^-20 .. 2^20 (the range of squared
+    marker distances in mm^2 and more), whose correctly rounded square roots the probe checks."""
+    import numpy as np
+
+    return np.exp2(np.random.default_rng(0).uniform(-20.0, 20.0, 4096)).astype(np.float32)
 
 
 def _forced_off() -> bool:
@@ -345,7 +381,7 @@ def build(source: str, name: str = "<source>", **defines: int):
     """Build OpenCL C ``source`` for the current context; ``defines`` become ``-DNAME=value``
     options, so a kernel's compile-time sizes come from the Python constant that lays out its data."""
     cl = _cl()
-    options = list(BUILD_OPTIONS) + [f"-D{key}={value}" for key, value in sorted(defines.items())]
+    options = build_options(context().devices[0]) + [f"-D{key}={value}" for key, value in sorted(defines.items())]
     try:
         return cl.Program(context(), source).build(options=options)
     except cl.Error as exc:  # the probe built, so this is a kernel the device cannot take: keep the log

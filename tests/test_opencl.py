@@ -161,3 +161,24 @@ def test_a_real_pocl_build_failure_falls_back(tiny_db, tiny_corpus, held_out_tak
     assert "Traceback" not in r.stderr
     with h5py.File(out) as f:
         assert f["path"].attrs["device"] == "NumPy"
+
+
+def test_a_device_whose_sqrt_is_not_correctly_rounded_is_refused(opencl_device, monkeypatch):
+    """OpenCL 1.2 lets a device's float32 sqrt be 3 ulp off (NVIDIA's is, unless built with
+    -cl-fp32-correctly-rounded-divide-sqrt); the pair costs would then differ from the NumPy
+    reference. The probe checks sqrt bit for bit: a sqrt one ulp off is refused with the reason."""
+    source = opencl.kernel_source("probe")
+    monkeypatch.setattr(opencl, "kernel_source", lambda name: source.replace(
+        "y[i] = sqrt(x[i]);", "y[i] = as_float(as_uint(sqrt(x[i])) + (get_global_id(0) % 3 == 0));"))
+    result = opencl.probe(opencl_device)
+    assert not result.ok
+    assert "sqrt is not correctly rounded" in result.reason and "1366 of 4096" in result.reason
+
+
+def test_the_kernels_ask_for_correctly_rounded_sqrt_where_the_device_offers_it(opencl_device):
+    import pyopencl as cl
+
+    dev = opencl.context().devices[0]
+    offered = bool(dev.single_fp_config & cl.device_fp_config.CORRECTLY_ROUNDED_DIVIDE_SQRT)
+    assert (opencl.CORRECTLY_ROUNDED in opencl.build_options(dev)) == offered
+    assert opencl.probe(opencl_device).ok
