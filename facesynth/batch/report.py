@@ -10,7 +10,7 @@ from pathlib import Path
 from ..artifacts import atomic_path
 from .line import LineResult
 
-COLUMNS = ("id", "row", "status", "reason", "method", "phones", "audio_s", "align_s", "synthesize_s", "outputs_s",
+COLUMNS = ("id", "row", "status", "reason", "method", "recognized", "phones", "audio_s", "align_s", "synthesize_s", "outputs_s",
            "load_s", "total_s", "cpu_s", "outputs", "warnings")
 
 
