@@ -12,9 +12,10 @@ Per source and mode:
   praatio's hand-made ``bobby``, the MFA corpora's aligner-made tiers), else the first CMU
   pronunciation of each word of its reference transcript.
 - ``ver``: the same over visemes (Table VI classes): the error the mouth shows.
-- boundary error (ms): absolute start and end differences of the phones matched by label in
-  order with the phone tier (recordings with a phone tier only), as in
-  ``alignment_accuracy.py``: count, mean, median, 95th percentile.
+- boundary error (ms): absolute start and end differences of the phones that the PER's edit
+  alignment pairs as equal (recordings with a phone tier only): count, mean, median, 95th
+  percentile. (``alignment_accuracy.py`` pairs phones by :class:`difflib.SequenceMatcher`
+  instead, which can pair a recognised phone with an equal one far away.)
 - ``confusions``: the most frequent substitutions (reference > recognised), and the
   deletions, insertions and substitutions by phone class; ``failures``: recordings refused,
   with the reason; ``seconds``: the time the mode took.
@@ -42,7 +43,7 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from alignment_accuracy import festival, matched_errors, mfa_items, praatio_items, sample_items  # noqa: E402
+from alignment_accuracy import festival, mfa_items, praatio_items, sample_items  # noqa: E402
 
 from facesynth.alignment import AlignmentFailed, normalize_text  # noqa: E402
 from facesynth.config import Config  # noqa: E402
@@ -61,9 +62,9 @@ def phone_class(phone: str) -> str:
     return next((name for name, members in CLASSES.items() if phone in members), "other")
 
 
-def edit_operations(ref: list[str], hyp: list[str]) -> list[tuple[str, str | None, str | None]]:
-    """A minimal Levenshtein alignment of ``hyp`` to ``ref``: ("=" | "sub" | "del" | "ins", ref
-    label, hyp label) in order (ties: substitution, then deletion, then insertion)."""
+def edit_operations(ref: list, hyp: list) -> list[tuple[str, int | None, int | None]]:
+    """A minimal Levenshtein alignment of ``hyp`` to ``ref``: ("=" | "sub" | "del" | "ins", index
+    in ref, index in hyp) in order (ties: substitution, then deletion, then insertion)."""
     n, m = len(ref), len(hyp)
     cost = np.zeros((n + 1, m + 1), int)
     cost[:, 0], cost[0, :] = np.arange(n + 1), np.arange(m + 1)
@@ -74,13 +75,13 @@ def edit_operations(ref: list[str], hyp: list[str]) -> list[tuple[str, str | Non
     i, j = n, m
     while i or j:
         if i and j and cost[i, j] == cost[i - 1, j - 1] + (ref[i - 1] != hyp[j - 1]):
-            ops.append(("=" if ref[i - 1] == hyp[j - 1] else "sub", ref[i - 1], hyp[j - 1]))
+            ops.append(("=" if ref[i - 1] == hyp[j - 1] else "sub", i - 1, j - 1))
             i, j = i - 1, j - 1
         elif i and cost[i, j] == cost[i - 1, j] + 1:
-            ops.append(("del", ref[i - 1], None))
+            ops.append(("del", i - 1, None))
             i -= 1
         else:
-            ops.append(("ins", None, hyp[j - 1]))
+            ops.append(("ins", None, j - 1))
             j -= 1
     return ops[::-1]
 
@@ -89,7 +90,7 @@ def reference_phones(item: dict) -> list[str] | None:
     """The recording's reference phones (no pauses): its phone tier, else the first CMU (or the
     item's extra) pronunciation of each word of its text; None when a word has none."""
     if "phones" in item:
-        return [s.label for s in festival(item["phones"]) if s.label != PAU]
+        return [s.label for s in reference_segments(item)]
     words = normalize_text(item["text"])
     table = pronunciations(words)
     extra = item.get("extra") or {}
@@ -99,6 +100,21 @@ def reference_phones(item: dict) -> list[str] | None:
         if not prons:
             return None
         out += [p for p in (to_festival(x) for x in prons[0]) if p and p != PAU]
+    return out
+
+
+def reference_segments(item: dict) -> list:
+    """The non-pause segments of the recording's phone tier, in the Festival set."""
+    return [s for s in festival(item["phones"]) if s.label != PAU]
+
+
+def boundary_errors(ref: list, hyp: list, ops: list) -> list[float]:
+    """Absolute start and end differences (ms) of the phones the edit alignment ``ops`` pairs
+    as equal (``ref`` and ``hyp``: non-pause segments)."""
+    out = []
+    for op, i, j in ops:
+        if op == "=":
+            out += [abs(ref[i].start - hyp[j].start) * 1e3, abs(ref[i].end - hyp[j].end) * 1e3]
     return out
 
 
@@ -123,7 +139,8 @@ def run_mode(items: list[dict], mode: str, base_settings) -> dict:
                 vis.update(ref=len(ref), dele=len(ref))
             continue
         methods[result.method] += 1
-        hyp = [s.label for s in result.phones if s.label != PAU]
+        hyp_segments = [s for s in result.phones if s.label != PAU]
+        hyp = [s.label for s in hyp_segments]
         record = {"method": result.method}
         if mode != "text":
             record["recognized"] = result.recognized
@@ -131,7 +148,8 @@ def run_mode(items: list[dict], mode: str, base_settings) -> dict:
             ops = edit_operations(ref, hyp)
             k = Counter(op for op, _, _ in ops)
             counts.update(ref=len(ref), sub=k["sub"], dele=k["del"], ins=k["ins"])
-            for op, r, h in ops:
+            for op, i, j in ops:
+                r, h = ref[i] if i is not None else None, hyp[j] if j is not None else None
                 if op == "sub":
                     subs[f"{r}>{h}"] += 1
                     by_class[f"sub {phone_class(r)}>{phone_class(h)}"] += 1
@@ -143,7 +161,7 @@ def run_mode(items: list[dict], mode: str, base_settings) -> dict:
             vops = Counter(op for op, _, _ in edit_operations([viseme(p) for p in ref], [viseme(p) for p in hyp]))
             vis.update(ref=len(ref), sub=vops["sub"], dele=vops["del"], ins=vops["ins"])
         if "phones" in item:
-            e = matched_errors(result.phones, festival(item["phones"]))
+            e = boundary_errors(reference_segments(item), hyp_segments, ops)
             errors += e
             if e:
                 record["median_ms"] = round(float(np.median(e)), 1)
