@@ -148,3 +148,9 @@ def test_synthesize_with_text_uses_the_texts_alignment(tiny_db, tiny_corpus, hel
     with h5py.File(tmp_path / "m.h5") as f:
         asked = [p.decode() for p in f["path/phone"][()]]
     assert asked == [s.label for s in given.phones] != [s.label for s in heard.phones]
+
+
+def test_text_without_audio_is_a_usage_error(tiny_db, tmp_path):
+    r = CliRunner().invoke(main, ["synthesize", str(tiny_db), "--text", "hello", "-o", str(tmp_path / "m.h5")])
+    assert r.exit_code == 2 and "--text says what --audio says; give --audio too" in r.output
+    assert not (tmp_path / "m.h5").exists()

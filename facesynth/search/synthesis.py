@@ -216,7 +216,7 @@ def prepare(db: MotionDatabase | None, phones_path: Path | None, emotions_path: 
         aligned = align_or_recognize(samples, rate, text, settings=align_settings, where=str(audio))
         log = logging.getLogger(__name__)
         if aligned.recognized:
-            log.info("%s: recognised %s", audio, aligned.recognized)
+            log.info("%s: recognised: %s", audio, aligned.recognized)
         for warning in aligned.warnings:
             log.warning(warning)
         segs = aligned.phones
