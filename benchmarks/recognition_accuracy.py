@@ -43,14 +43,14 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from alignment_accuracy import festival, mfa_items, praatio_items, sample_items  # noqa: E402
+from alignment_accuracy import festival, mfa_items, praatio_items, sample_items
 
-from facesynth.alignment import AlignmentFailed, normalize_text  # noqa: E402
-from facesynth.config import Config  # noqa: E402
-from facesynth.errors import InputError  # noqa: E402
-from facesynth.formats.audio import read_audio  # noqa: E402
-from facesynth.phonemes import PAU, VOWELS, pronunciations, to_festival, viseme  # noqa: E402
-from facesynth.recognition import align_or_recognize  # noqa: E402
+from facesynth.alignment import AlignmentFailed, normalize_text
+from facesynth.config import Config
+from facesynth.errors import InputError
+from facesynth.formats.audio import read_audio
+from facesynth.phonemes import PAU, VOWELS, pronunciations, to_festival, viseme
+from facesynth.recognition import align_or_recognize
 
 #: Phone classes for the confusion summary (Festival phones).
 CLASSES = {"vowel": VOWELS, "stop": {"p", "b", "t", "d", "k", "g"},
@@ -174,7 +174,7 @@ def run_mode(items: list[dict], mode: str, base_settings) -> dict:
     return {"recordings": len(items), "failures": failures, "methods": dict(methods),
             "per": rate(counts), "ver": rate(vis), "reference_phones": counts["ref"],
             "substitutions": counts["sub"], "deletions": counts["dele"], "insertions": counts["ins"],
-            "boundaries": int(len(e)), "mean_ms": round(float(e.mean()), 1) if len(e) else None,
+            "boundaries": len(e), "mean_ms": round(float(e.mean()), 1) if len(e) else None,
             "median_ms": round(float(np.median(e)), 1) if len(e) else None,
             "p95_ms": round(float(np.percentile(e, 95)), 1) if len(e) else None,
             "confusions": {"top_substitutions": dict(subs.most_common(12)), "by_class": dict(by_class.most_common())},

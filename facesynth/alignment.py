@@ -303,6 +303,11 @@ def longest_voiced_pause(phones: list[Segment], active: np.ndarray, hop: float, 
     return round(best, 3), round(at, 3)
 
 
+def pcm16(audio: np.ndarray) -> bytes:
+    """``audio`` ((n,) float in [-1, 1], clipped) as the 16-bit little-endian PCM pocketsphinx reads."""
+    return (np.clip(audio, -1, 1) * 32767).astype(np.int16).tobytes()
+
+
 def _decoder(settings: AlignSettings, extra: dict, beam: float | None):
     """A pocketsphinx decoder with the user's pronunciations added (as alternatives of a word the
     dictionary already has: ``word(2)``, ``word(3)``, ...)."""
@@ -347,7 +352,7 @@ def _pocketsphinx(audio: np.ndarray, words: list[str], settings: AlignSettings, 
     the words are placed but their phones cannot be ("Failed to set up sub-word alignment"),
     each word's phones share its span by typical durations. Returns (phones, words, how many words got durations instead of an acoustic alignment)."""
     decoder = _decoder(settings, extra, beam)
-    pcm = (np.clip(audio, -1, 1) * 32767).astype(np.int16).tobytes()
+    pcm = pcm16(audio)
     frame = 1.0 / settings.frame_rate
     word_pass = None
     try:

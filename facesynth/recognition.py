@@ -28,7 +28,7 @@ import re
 
 import numpy as np
 
-from .alignment import Alignment, AlignmentFailed, align_robust, tile, voice_activity
+from .alignment import Alignment, AlignmentFailed, align_robust, pcm16, tile, voice_activity
 from .config import AlignSettings
 from .formats.audio import resample
 from .formats.labels import Segment
@@ -64,7 +64,7 @@ def recognize(samples: np.ndarray, rate: int, *, settings: AlignSettings, extra:
         phones, attempts = _recognize_phones(audio, settings)
         if not phones:
             raise AlignmentFailed(_no_speech(where, "the phone recogniser found no phone"))
-        recognized = " ".join(s.label for s in phones)
+        recognized = " ".join(s.label for s in phones if s.label != PAU)
         return Alignment(tile(phones, duration), [], "phones", attempts, recognized=recognized)
     words, attempts = _recognize_words(audio, settings)
     if not words:
@@ -79,17 +79,13 @@ def recognize(samples: np.ndarray, rate: int, *, settings: AlignSettings, extra:
 
 
 def _no_speech(where: str, reason: str) -> str:
-    return (f"{where}: no speech was found ({reason}); check that the file holds speech, or give what is said "
-            "with --text.")
-
-
-def _pcm(audio: np.ndarray) -> bytes:
-    return (np.clip(audio, -1, 1) * 32767).astype(np.int16).tobytes()
+    return f"{where}: no speech was found ({reason}); check that the file holds speech, or give what is said as a text."
 
 
 def _decode(audio: np.ndarray, settings: AlignSettings, beam: float | None, **options):
-    """Run a pocketsphinx decoder built with ``options`` over ``audio`` (float32 at
-    ``settings.sample_rate``); returns its segments as (label, first frame, end frame)."""
+    """Run a pocketsphinx decoder built with ``options`` (and ``beam`` for every beam, None:
+    its defaults) over ``audio`` (float32 at ``settings.sample_rate``); returns the decoder and
+    its segments as (label, first frame, end frame)."""
     import pocketsphinx
 
     options.update(samprate=settings.sample_rate, frate=settings.frame_rate, loglevel="FATAL", dither=False)
@@ -97,7 +93,7 @@ def _decode(audio: np.ndarray, settings: AlignSettings, beam: float | None, **op
         options.update(beam=beam, wbeam=beam, pbeam=beam, maxhmmpf=-1)
     decoder = pocketsphinx.Decoder(**options)
     decoder.start_utt()
-    decoder.process_raw(_pcm(audio), full_utt=True)
+    decoder.process_raw(pcm16(audio), full_utt=True)
     decoder.end_utt()
     return decoder, [(seg.word, seg.start_frame, seg.end_frame + 1) for seg in decoder.seg() or ()]
 

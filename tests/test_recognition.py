@@ -89,7 +89,7 @@ def test_silence_and_noise_are_refused_in_one_sentence(config):
     settings = config.settings("align")
     silence = np.zeros(16000, np.float32)
     with pytest.raises(AlignmentFailed, match=r"^quiet.wav: no speech was found \(it has no voice activity\); "
-                                              r"check that the file holds speech, or give what is said with --text\.$"):
+                                              r"check that the file holds speech, or give what is said as a text\.$"):
         recognition.recognize(silence, 16000, settings=settings, where="quiet.wav")
     # a pure tone is "voice activity" but no word or phone of English
     tone = (0.3 * np.sin(2 * np.pi * 1000 * np.arange(16000) / 16000)).astype(np.float32)
@@ -137,7 +137,8 @@ def _settings_of_cli():
 def test_synthesize_with_text_uses_the_texts_alignment(tiny_db, tiny_corpus, held_out_take, config, tmp_path):
     import h5py
 
-    row = next(r for r in csv.DictReader(open(tiny_corpus / "manifest.csv")) if r["take"] == held_out_take)
+    with open(tiny_corpus / "manifest.csv") as fh:
+        row = next(r for r in csv.DictReader(fh) if r["take"] == held_out_take)
     audio = tiny_corpus / row["audio"]
     r = CliRunner().invoke(main, ["synthesize", str(tiny_db), "--audio", str(audio), "--text", row["transcript"],
                                   "-o", str(tmp_path / "m.h5")])
