@@ -103,7 +103,9 @@ class Alignment:
 
     ``phones``: Festival phone segments (seconds) tiling [0, duration], silences as ``pau``;
     ``words``: the spoken words' segments (seconds); ``method``: the method that placed every
-    word (one of :data:`METHODS`); ``attempts``: why each earlier method was not used;
+    word (one of :data:`METHODS`, ``+durations`` when the last words got typical durations;
+    for recognised speech ``words/`` before it, or ``phones``); ``attempts``: why each earlier
+    method was not used;
     ``voiced_pause_s``: the longest stretch of voice activity (s) inside a ``pau`` segment;
     ``warnings``: sentences for the user (a transcript that seems to lack words);
     ``recognized``: empty for a given text; for audio alone (:mod:`facesynth.recognition`) the
