@@ -18,7 +18,8 @@ unstressed AH into the schwa ``ax``; silences become ``pau``.
   audio with typical phone durations, scaled to fill it (falsetto or whispered speech that
   the acoustic model cannot follow at all).
 
-The first that places every word is kept and named in the result. The duration model places
+The first that places every word is kept and named in the result. Audio without a text is
+recognised first (:mod:`facesynth.recognition`), then its words aligned the same way. The duration model places
 any text, so a result timed by durations is also checked against the text's typical
 duration: speech more than ``align.max_rate_ratio`` times longer or shorter is warned about. When pocketsphinx places
 the first words and cannot go on (the rest of a line whispered, or trailing off), the rest
@@ -102,9 +103,13 @@ class Alignment:
 
     ``phones``: Festival phone segments (seconds) tiling [0, duration], silences as ``pau``;
     ``words``: the spoken words' segments (seconds); ``method``: the method that placed every
-    word (one of :data:`METHODS`); ``attempts``: why each earlier method was not used;
+    word (one of :data:`METHODS`, ``+durations`` when the last words got typical durations;
+    for recognised speech ``words/`` before it, or ``phones``); ``attempts``: why each earlier
+    method was not used;
     ``voiced_pause_s``: the longest stretch of voice activity (s) inside a ``pau`` segment;
-    ``warnings``: sentences for the user (a transcript that seems to lack words).
+    ``warnings``: sentences for the user (a transcript that seems to lack words);
+    ``recognized``: empty for a given text; for audio alone (:mod:`facesynth.recognition`) the
+    recognised words, or phones, that were aligned.
     """
 
     phones: list[Segment]
@@ -114,6 +119,7 @@ class Alignment:
     voiced_pause_s: float = 0.0
     voiced_pause_at_s: float = 0.0
     warnings: list[str] = field(default_factory=list)
+    recognized: str = ""
 
     @property
     def mismatch(self) -> bool:
@@ -204,7 +210,7 @@ def align_robust(samples: np.ndarray, rate: int, text: str, *, settings: AlignSe
         except _MethodFailed as exc:
             attempts.append(f"{method}: {exc}")
             continue
-        phones = _tile(phones, duration)
+        phones = tile(phones, duration)
         # each non-speech mark of the text explains one voiced pause (a laugh is voiced)
         longest, at = longest_voiced_pause(phones, active & voiced, hop, skip=len(marks))
         # words after the last one the search placed, given typical durations: named in the method
@@ -299,6 +305,11 @@ def longest_voiced_pause(phones: list[Segment], active: np.ndarray, hop: float, 
     return round(best, 3), round(at, 3)
 
 
+def pcm16(audio: np.ndarray) -> bytes:
+    """``audio`` ((n,) float in [-1, 1], clipped) as the 16-bit little-endian PCM pocketsphinx reads."""
+    return (np.clip(audio, -1, 1) * 32767).astype(np.int16).tobytes()
+
+
 def _decoder(settings: AlignSettings, extra: dict, beam: float | None):
     """A pocketsphinx decoder with the user's pronunciations added (as alternatives of a word the
     dictionary already has: ``word(2)``, ``word(3)``, ...)."""
@@ -343,7 +354,7 @@ def _pocketsphinx(audio: np.ndarray, words: list[str], settings: AlignSettings, 
     the words are placed but their phones cannot be ("Failed to set up sub-word alignment"),
     each word's phones share its span by typical durations. Returns (phones, words, how many words got durations instead of an acoustic alignment)."""
     decoder = _decoder(settings, extra, beam)
-    pcm = (np.clip(audio, -1, 1) * 32767).astype(np.int16).tobytes()
+    pcm = pcm16(audio)
     frame = 1.0 / settings.frame_rate
     word_pass = None
     try:
@@ -530,7 +541,7 @@ def _duration_model(words: list[str], prons: dict, active: np.ndarray, hop: floa
     return phones, word_segs
 
 
-def _tile(segments: list[Segment], duration: float) -> list[Segment]:
+def tile(segments: list[Segment], duration: float) -> list[Segment]:
     """Merge adjacent pauses and fill gaps so segments cover [0, duration] without overlap."""
     out: list[Segment] = []
     cursor = 0.0

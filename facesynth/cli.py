@@ -298,7 +298,7 @@ def sample_corpus_cmd(ctx: Context, out_dir: Path, preset: str, seed: int):
 
 @main.command()
 @click.argument("audio", type=EXISTING)
-@click.option("--text", default=None, help="What is said.")
+@click.option("--text", default=None, help="What is said (without it or --transcript: recognised from the audio).")
 @click.option("--transcript", type=EXISTING, default=None, help="A file holding what is said.")
 @click.option("--dict", "dict_path", type=EXISTING, default=None, help="Extra pronunciations: lines 'word  W ER D'.")
 @click.option("-o", "--output", type=PATH, required=True, help="Output TextGrid.")
@@ -310,7 +310,8 @@ def align(ctx: Context, audio: Path, text: str | None, transcript: Path | None, 
     silences, then typical phone durations over the voiced span (align.methods; the one used
     is printed). Speech aligned as pause for longer than align.max_voiced_pause_s is warned
     about: the text may lack words. Non-speech marked in the text ([breath], [laugh],
-    <noise>) is aligned as pause.
+    <noise>) is aligned as pause. Without --text or --transcript the speech is recognised
+    first (align.recognition: words recognised then aligned, or a phone loop).
 
     \b
     Example:
@@ -319,10 +320,12 @@ def align(ctx: Context, audio: Path, text: str | None, transcript: Path | None, 
     """
     from .stages import align as stage_align
 
-    if (text is None) == (transcript is None):
-        raise UsageError("give exactly one of --text or --transcript.")
+    if text is not None and transcript is not None:
+        raise UsageError("give one of --text or --transcript, not both.")
     summary = stage_align.run(audio, text if transcript is None else stage_align.read_transcript(transcript), output,
                               ctx.config.settings("align"), dict_path, ctx.overwrite)
+    if summary["recognized"]:
+        ctx.say(f"recognised: {summary['recognized']}")
     for reason in summary["attempts"]:
         ctx.detail(f"not used: {reason}")
     for warning in summary["warnings"]:
@@ -417,7 +420,8 @@ def build_db(ctx: Context, pca_path: Path, output: Path):
               help="dp: search the motion database (DB); trajectory: the compact key-shape model (MODEL, from "
                    "facesynth train-trajectory; Huang et al. Eq. 6-7).")
 @click.option("--phonemes", type=EXISTING, default=None, help="The utterance's phone timing (TextGrid or .lab).")
-@click.option("--audio", type=EXISTING, default=None, help="Speech to align on the fly (with --text).")
+@click.option("--audio", type=EXISTING, default=None,
+              help="Speech to align on the fly (to --text; without it, recognised: align.recognition).")
 @click.option("--text", default=None, help="What --audio says.")
 @click.option("--emotions", type=EXISTING, default=None, help="Emotion spans: 'start_s end_s emotion' lines, or a TextGrid tier 'emotions'.")
 @click.option("--constraints", type=EXISTING, default=None, help="Motion-node constraints: 'INDEX NODE' or 'TIMEs NODE' lines.")

@@ -104,6 +104,8 @@ class AlignSettings:
     min_phone_s: float = setting("not in the paper: shortest speech per phone of the text", unit="s", ge=0)
     activity_range_db: float = setting("not in the paper: voice activity, below the loudest frames", unit="dB", gt=0)
     activity_floor_db: float = setting("not in the paper: voice activity, above the noise floor", unit="dB", ge=0)
+    recognition: str = setting("not in the paper: how audio without a text is turned into phones (recognised words "
+                               "then aligned, or a phone loop)", choices=("words", "phones"))
 
 
 @dataclass(frozen=True)

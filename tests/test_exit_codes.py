@@ -100,7 +100,7 @@ def test_align_text_and_transcript_is_usage(anim, tmp_path):
     transcript = tmp_path / "t.txt"
     transcript.write_text("hello\n")
     _is_error(_run("align", anim[1], "--text", "hello", "--transcript", transcript, "-o", tmp_path / "a.TextGrid"), 2,
-              "give exactly one of --text or --transcript")
+              "give one of --text or --transcript, not both")
 
 
 def test_prune_remove_and_auto_is_usage(tiny_db, tmp_path):

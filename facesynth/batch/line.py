@@ -1,5 +1,6 @@
-"""One line of a batch, done in a Dask worker process: align (when no alignment is given),
-synthesize, write the asked outputs, record a manifest.
+"""One line of a batch, done in a Dask worker process: align (when no alignment is given; a
+line without text is recognised first, :mod:`facesynth.recognition`), synthesize, write the
+asked outputs, record a manifest.
 
 State kept per worker process (never shipped with a task): the motion database and its
 transition costs, read once per database file (:func:`database`), the mesh bound to the
@@ -25,7 +26,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from .. import __version__
-from ..alignment import AlignmentFailed, align_robust
+from ..alignment import AlignmentFailed
 from ..artifacts import atomic_path, sha256_of
 from ..config import (AlignSettings, DeformSettings, IngestSettings, RenderSettings, SynthesizeSettings,
                       settings_json)
@@ -33,6 +34,7 @@ from ..errors import FacesynthError, InputError
 from ..formats.audio import read_audio
 from ..formats.labels import Segment, read_phone_segments, write_textgrid
 from ..phonemes import PAU, map_phones
+from ..recognition import align_or_recognize
 from .script import Line
 
 #: Output kinds and the file each writes, by line id.
@@ -65,7 +67,8 @@ class Job:
 @dataclass
 class LineResult:
     """The outcome of one line, one row of the summary. ``status``: ``ok``, ``skipped`` (up to
-    date from an earlier run) or ``failed`` (``reason`` says why). Times in seconds: wall time
+    date from an earlier run) or ``failed`` (``reason`` says why); ``recognized``: the words (or
+    phones) recognised for a line without text. Times in seconds: wall time
     of each phase, ``total_s`` of the whole line, ``cpu_s`` the CPU time of the worker process
     for the line (all its threads), ``load_s`` reading the database (once per worker)."""
 
@@ -85,6 +88,7 @@ class LineResult:
     outputs: list[str] = field(default_factory=list)
     warnings: list[str] = field(default_factory=list)
     worker: str = ""
+    recognized: str = ""
 
 
 _CACHE: dict = {}
@@ -168,8 +172,6 @@ def _check_inputs(line: Line, job: Job) -> str:
                     ("constraints", line.constraints)):
         if p is not None and not p.is_file():
             raise InputError(f"{name} file {p} not found; check the path (relative to the script's folder).")
-    if line.alignment is None and not (line.text or "").strip():
-        raise InputError("the text is empty and no alignment is given; give what is said.")
     if line.emotion and line.emotions:
         raise InputError("both an emotion and an emotions file are given; give one.")
     name = (line.emotion or "neutral").strip().lower()
@@ -195,7 +197,7 @@ def run_line(line: Line, job: Job) -> LineResult:
         if not job.redo and old is not None and old.get("inputs") == key and old.get("status") == "ok" \
                 and all(p.exists() for p in outputs.values()):
             recorded = old.get("result", {})
-            for name in ("method", "phones", "audio_s", "warnings"):
+            for name in ("method", "phones", "audio_s", "warnings", "recognized"):
                 if name in recorded:
                     setattr(result, name, recorded[name])
             result.status, result.outputs = "skipped", sorted(p.name for p in outputs.values())
@@ -248,12 +250,15 @@ def _do_line(line: Line, job: Job, emotion: str, key: dict, outputs: dict[str, P
             raise InputError(f"the alignment {line.alignment} ends at {segments[-1].end:.2f} s, after the audio "
                              f"({result.audio_s:.2f} s); give the alignment of this audio.")
     else:
-        try:
-            aligned = align_robust(samples, rate, line.text, settings=job.align, where=str(line.audio))
+        try:  # a line without text is recognised (the script reader makes an empty cell None)
+            aligned = align_or_recognize(samples, rate, line.text, settings=job.align, where=str(line.audio))
         except AlignmentFailed as exc:
             raise InputError(str(exc)) from None
         segments, result.method, result.warnings = aligned.phones, aligned.method, list(aligned.warnings)
-        if aligned.mismatch:
+        result.recognized = aligned.recognized
+        # a given transcript that misses speech is the user's to fix; recognised words that miss
+        # some are only warned about (the summary lists the warnings)
+        if aligned.mismatch and not aligned.recognized:
             raise InputError("the transcript does not match the speech: " + "; ".join(aligned.warnings))
         aligned_words = aligned.words
     result.phones = sum(s.label != PAU for s in segments)
@@ -275,7 +280,8 @@ def _do_line(line: Line, job: Job, emotion: str, key: dict, outputs: dict[str, P
     if line.alignment is None:
         grid = job.out_dir / f"{line.id}.TextGrid"
         with atomic_path(grid, overwrite=True) as tmp:
-            write_textgrid(tmp, {"phones": segments, "words": aligned_words}, segments[-1].end)
+            write_textgrid(tmp, {"phones": segments, "words": aligned_words} if aligned_words else {"phones": segments},
+                           segments[-1].end)
         result.outputs.append(grid.name)
     records = [{"path": str(job.db), "kind": "motiondb", "sha256": job.db_sha256}]
     records += [{"path": str(p), "kind": None, "sha256": key[name]}
@@ -296,7 +302,7 @@ def _do_line(line: Line, job: Job, emotion: str, key: dict, outputs: dict[str, P
     _write_json(manifest_path(job, line.id), {
         "id": line.id, "status": "ok", "inputs": key, "outputs": sorted(result.outputs),
         "result": {"method": result.method, "phones": result.phones, "audio_s": result.audio_s,
-                   "warnings": result.warnings}})
+                   "warnings": result.warnings, "recognized": result.recognized}})
 
 
 def _mesh_outputs(line: Line, job: Job, motion, motion_path: Path, outputs: dict[str, Path], result: LineResult) -> None:

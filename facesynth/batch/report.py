@@ -10,8 +10,8 @@ from pathlib import Path
 from ..artifacts import atomic_path
 from .line import LineResult
 
-COLUMNS = ("id", "row", "status", "reason", "method", "phones", "audio_s", "align_s", "synthesize_s", "outputs_s",
-           "load_s", "total_s", "cpu_s", "outputs", "warnings")
+COLUMNS = ("id", "row", "status", "reason", "method", "recognized", "phones", "audio_s", "align_s", "synthesize_s",
+           "outputs_s", "load_s", "total_s", "cpu_s", "outputs", "warnings")
 
 
 def rows(results: list[LineResult]) -> list[dict]:

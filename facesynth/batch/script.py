@@ -4,15 +4,17 @@ Columns (header names are case-insensitive; others are ignored):
 
 - ``id`` (required): the line's name, used for its output files (letters, digits, ``. _ -``);
 - ``audio`` (required): its speech (WAV or FLAC);
-- ``text`` and/or ``alignment`` (at least one of the two columns): what is said (aligned
-  with :func:`facesynth.alignment.align_robust`), or its phone timing (TextGrid or ``.lab``),
-  which is used as is when given;
+- ``text`` (optional): what is said (aligned with :func:`facesynth.alignment.align_robust`);
+  a line without text (no such column, or an empty cell) is recognised from its audio
+  (:mod:`facesynth.recognition`);
+- ``alignment`` (optional): the line's phone timing (TextGrid or ``.lab``), used as is when
+  given (before any text);
 - ``emotion`` (optional): one emotion for the whole line (default ``neutral``), or
   ``emotions``: a per-phone emotion file (``start_s end_s emotion`` lines or a TextGrid tier);
 - ``constraints`` (optional): a motion-node constraint file, as for ``synthesize``.
 
 File paths are relative to the script's folder. A file that lacks the required columns is
-refused before any work; a bad row (a missing file, empty text, an unknown emotion, a
+refused before any work; a bad row (a missing file, an unknown emotion, a
 duplicated or unusable id) fails only its line, with the reason in the summary.
 """
 
@@ -58,7 +60,7 @@ def read_script(path: Path) -> list[Line]:
     a CSV with the required columns (naming the missing ones)."""
     path = Path(path)
     if not path.is_file():
-        raise InputError(f"{path}: script not found; give a CSV with columns id, audio, text (or alignment).")
+        raise InputError(f"{path}: script not found; give a CSV with columns id, audio (and text or alignment).")
     try:
         with open(path, newline="", encoding="utf-8-sig") as fh:
             rows = list(csv.reader(fh))
@@ -67,14 +69,13 @@ def read_script(path: Path) -> list[Line]:
     except csv.Error as exc:
         raise InputError(f"{path}: not a readable CSV ({exc}); save it as comma-separated values.") from None
     if not rows:
-        raise InputError(f"{path}: the script is empty; its first row must name the columns id, audio, text.")
+        raise InputError(f"{path}: the script is empty; its first row must name the columns id, audio (and text).")
     header = [h.strip().lower() for h in rows[0]]
     missing = [c for c in REQUIRED if c not in header]
-    if not ("text" in header or "alignment" in header):
-        missing.append("text (or alignment)")
     if missing:
         raise InputError(f"{path}: the header lacks the column(s) {', '.join(missing)}; "
-                         f"the first row must name id, audio and text or alignment (found {', '.join(header) or 'none'}).")
+                         f"the first row must name id and audio, and text or alignment where known "
+                         f"(found {', '.join(header) or 'none'}).")
     col = {name: header.index(name) for name in REQUIRED + OPTIONAL if name in header}
     base = path.parent
     lines: list[Line] = []

@@ -1,35 +1,39 @@
 """``facesynth align``: phone-level forced alignment of speech to its text (see
-:mod:`facesynth.alignment`: pocketsphinx with fallbacks), written as a TextGrid with phone
-and word tiers."""
+:mod:`facesynth.alignment`: pocketsphinx with fallbacks), or, without a text, phones
+recognised from the speech alone (:mod:`facesynth.recognition`), written as a TextGrid with
+phone and word tiers (no word tier when phones were recognised without words)."""
 
 from __future__ import annotations
 
 from pathlib import Path
 
-from ..alignment import align_robust, read_pronunciations
+from ..alignment import read_pronunciations
 from ..artifacts import atomic_path, check_output
 from ..config import AlignSettings
 from ..errors import InputError
 from ..formats.audio import read_audio
 from ..formats.labels import write_textgrid
 from ..phonemes import PAU
+from ..recognition import align_or_recognize
 
 
-def run(audio_path: Path, text: str, out: Path, settings: AlignSettings, dict_path: Path | None = None,
+def run(audio_path: Path, text: str | None, out: Path, settings: AlignSettings, dict_path: Path | None = None,
         overwrite: bool = False) -> dict:
-    """Align ``text`` to the speech of ``audio_path`` and write ``out`` (a TextGrid with phone and
-    word tiers). Returns the number of phones, the duration (s), the method that placed the
-    words, why earlier methods were not used (``attempts``) and ``warnings`` (a transcript that
-    seems to lack words)."""
+    """Align ``text`` to the speech of ``audio_path`` (``text`` None: recognise it, by
+    ``settings.recognition``) and write ``out`` (a TextGrid with phone and word tiers). Returns
+    the number of phones, the duration (s), the method that placed the words, why earlier
+    methods were not used (``attempts``), ``warnings`` (a transcript that seems to lack words)
+    and ``recognized`` (what was recognised; empty for a given text)."""
     check_output(out, overwrite)
     samples, rate = read_audio(audio_path)
     extra = read_pronunciations(dict_path) if dict_path else {}
-    result = align_robust(samples, rate, text, extra=extra, settings=settings, where=str(audio_path))
+    result = align_or_recognize(samples, rate, text, extra=extra, settings=settings, where=str(audio_path))
     segments = result.phones
+    tiers = {"phones": segments, "words": result.words} if result.words else {"phones": segments}
     with atomic_path(out, overwrite) as tmp:
-        write_textgrid(tmp, {"phones": segments, "words": result.words}, segments[-1].end)
+        write_textgrid(tmp, tiers, segments[-1].end)
     return {"phones": sum(s.label != PAU for s in segments), "seconds": segments[-1].end, "method": result.method,
-            "attempts": result.attempts, "warnings": result.warnings}
+            "attempts": result.attempts, "warnings": result.warnings, "recognized": result.recognized}
 
 
 def read_transcript(path: Path) -> str:

@@ -13,13 +13,20 @@ def test_lines_resolve_paths_against_the_script_folder(tmp_path):
     assert all(l.problem is None and l.alignment is None for l in lines)
 
 
-@pytest.mark.parametrize("header, missing", [("audio,text", "id"), ("id,text", "audio"),
-                                             ("id,audio,emotion", "text (or alignment)")])
+@pytest.mark.parametrize("header, missing", [("audio,text", "id"), ("id,text", "audio"), ("text,emotion", "id, audio")])
 def test_a_script_without_the_required_columns_is_refused(tmp_path, header, missing):
     script = tmp_path / "s.csv"
     script.write_text(header + "\nx,y,z\n")
     with pytest.raises(InputError, match=rf"s.csv: the header lacks the column\(s\) {missing.replace('(', '.').replace(')', '.')};"):
         read_script(script)
+
+
+def test_a_script_without_text_or_alignment_gives_lines_to_recognise(tmp_path):
+    script = tmp_path / "s.csv"
+    script.write_text("id,audio,emotion\nl1,x.wav,sad\n")
+    [line] = read_script(script)
+    assert (line.id, line.audio, line.text, line.alignment, line.emotion, line.problem) == \
+        ("l1", tmp_path / "x.wav", None, None, "sad", None)
 
 
 def test_empty_and_header_only_scripts_are_refused(tmp_path):

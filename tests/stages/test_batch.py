@@ -58,28 +58,32 @@ def test_lines_fail_alone_with_their_reason_and_a_rerun_skips_what_is_done(tiny_
     out = tmp_path / "out"
     s = batch.run(script, tiny_db, out, *_settings(config), client=client)
     status = {(r.id, r.row): (r.status, r.reason) for r in s["results"]}
-    assert (s["ok"], s["failed"], s["skipped"]) == (2, 6, 0)
-    assert status[("aligned", 2)][0] == status[("given", 3)][0] == "ok"
+    assert (s["ok"], s["failed"], s["skipped"]) == (3, 5, 0)
+    assert status[("aligned", 2)][0] == status[("given", 3)][0] == status[("empty", 5)][0] == "ok"
     assert "missing.wav not found" in status[("no_audio", 4)][1]
-    assert "the text is empty" in status[("empty", 5)][1]
     assert "unknown emotion 'furious'" in status[("moody", 6)][1]
     assert "id 'aligned' is already used by row 2" in status[("aligned", 7)][1]
     assert "the transcript does not match the speech" in status[("partial", 8)][1]
     assert "too short for its text" in status[("too_short", 9)][1]
-    for name in ("aligned.motion.h5", "aligned.TextGrid", "aligned.json", "given.motion.h5", "given.json"):
+    for name in ("aligned.motion.h5", "aligned.TextGrid", "aligned.json", "given.motion.h5", "given.json",
+                 "empty.motion.h5", "empty.TextGrid", "empty.json"):
         assert (out / name).exists(), name
     assert not (out / "given.TextGrid").exists() and not (out / "partial.motion.h5").exists()
     summary = list(csv.DictReader(open(out / "summary.csv")))
     assert [r["id"] for r in summary] == ["aligned", "given", "no_audio", "empty", "moody", "aligned", "partial",
                                           "too_short"]
     assert summary[0]["method"] == "pocketsphinx" and summary[1]["method"] == "given" and int(summary[0]["phones"]) > 5
+    # the line without text is recognised: words recognised then aligned, the words in the summary
+    assert summary[3]["method"].startswith("words/") and summary[3]["recognized"] and not summary[0]["recognized"]
+    assert json.loads((out / "empty.json").read_text())["result"]["recognized"] == summary[3]["recognized"]
     assert "furious" in (out / "summary.html").read_text()
     manifest = json.loads((out / "aligned.json").read_text())
     assert manifest["status"] == "ok" and len(manifest["inputs"]["audio"]) == 64
 
     before = (out / "aligned.motion.h5").stat().st_mtime_ns
     again = batch.run(script, tiny_db, out, *_settings(config), client=client)
-    assert (again["ok"], again["skipped"], again["failed"]) == (0, 2, 6)
+    assert (again["ok"], again["skipped"], again["failed"]) == (0, 3, 5)
+    assert next(r for r in again["results"] if r.id == "empty").recognized == summary[3]["recognized"]
     assert (out / "aligned.motion.h5").stat().st_mtime_ns == before
 
     changed = _write(tmp_path / "script.csv", [("id", "audio", "text", "emotion"),
@@ -111,7 +115,7 @@ def test_anim_and_video_outputs(tiny_corpus, tiny_db, takes, config, client, tmp
 def test_command_exit_status_and_a_malformed_script(tiny_corpus, tiny_db, takes, tmp_path):
     bad = _write(tmp_path / "bad.csv", [("name", "audio"), ("x", "y.wav")])
     r = CliRunner().invoke(main, ["batch", str(bad), "--db", str(tiny_db), "-o", str(tmp_path / "o")])
-    assert r.exit_code == 1 and r.output.count("\n") == 1 and "lacks the column(s) id, text (or alignment)" in r.output
+    assert r.exit_code == 1 and r.output.count("\n") == 1 and "lacks the column(s) id;" in r.output
     assert not (tmp_path / "o").exists()
     row = takes["neutral_s001"]
     script = _write(tmp_path / "s.csv", [("id", "audio", "alignment"),

@@ -158,16 +158,18 @@ def test_audio_and_text_are_aligned_on_the_fly_and_emotion_tiers_read(tiny_db, t
 
 
 def test_align_settings_reach_the_aligner_of_the_input_audio(tiny_db, tiny_corpus, held_out_take, tmp_path, monkeypatch):
+    from facesynth import recognition
+    from facesynth.alignment import Alignment
     from facesynth.formats.labels import read_phone_segments
-    from facesynth import alignment as align
 
     received = []
 
     def fake_align(samples, rate, text, *, settings=None, extra=None, where="audio"):
         received.append(settings)
-        return read_phone_segments(tiny_corpus / "labels" / f"{held_out_take}.TextGrid", ("phones",))
+        return Alignment(read_phone_segments(tiny_corpus / "labels" / f"{held_out_take}.TextGrid", ("phones",)), [],
+                         "pocketsphinx")
 
-    monkeypatch.setattr(align, "align_samples", fake_align)
+    monkeypatch.setattr(recognition, "align_robust", fake_align)
     r = CliRunner().invoke(main, ["synthesize", str(tiny_db), "--audio", str(tiny_corpus / "audio" / f"{held_out_take}.wav"),
                                   "--text", "words", "-o", str(tmp_path / "m.h5"),
                                   "--set", "align.sample_rate=22050", "--set", "align.frame_rate=200"])
