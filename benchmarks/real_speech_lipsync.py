@@ -261,7 +261,7 @@ def phones_from_audio(wav: Path, out: Path, settings) -> tuple[list[Segment], st
 
 def facesynth_cli(*args: str) -> None:
     """Run one facesynth command (quiet); a failure stops the benchmark with its message."""
-    done = subprocess.run([sys.executable, "-m", "facesynth.cli", *args, "-q"], capture_output=True, text=True)
+    done = subprocess.run([sys.executable, "-m", "facesynth.cli", *args, "-q"], capture_output=True, text=True, check=False)
     if done.returncode:
         raise SystemExit(f"facesynth {' '.join(args)} failed: {done.stderr.strip() or done.stdout.strip()}")
 
@@ -402,7 +402,6 @@ def main(argv=None) -> dict:
 
     from facesynth.facerig import load_face_rig
     from facesynth.formats.mesh import read_binding
-
     from facesynth.model.motiondb import MotionDatabase
 
     rig, database = load_face_rig(), MotionDatabase.read(db)
@@ -445,7 +444,7 @@ def main(argv=None) -> dict:
         real_closures = closure_events(t["real"]["opening"], args.closure_depth, args.closure_prominence)
         per_take[t["take"]] = {"seconds": round(t["n"] / FPS, 2), "windows": len(t["spans"]),
                                "phones": sum(s.label != PAU for s in t["segs"]),
-                               "real_closures": int(len(real_closures)), "opening_r": {}}
+                               "real_closures": len(real_closures), "opening_r": {}}
         for method, curves in t["methods"].items():
             for channel, curve in curves.items():
                 values = window_r(curve, t["real"][channel], t["spans"])
