@@ -44,7 +44,9 @@ Methods, all at 30 frames/s on the take's whole length, no lag (none is searched
 Scores: Pearson r between each method's curve and the real one in windows of about
 ``--window-s`` seconds (each take cut into equal windows), the mean over windows with a
 bootstrap 95% interval over windows (percentile method, :mod:`facesynth.bootstrap`), and
-paired differences (facesynth minus each other method) on the same resamples.
+paired differences (facesynth minus each other method) on the same resamples; the same again
+with the takes resampled instead (``r_takes``, ``paired_takes``: wider, since windows of one
+take are not independent).
 Lip closures: real closures are the deep minima of the real mouth opening (normalized per take
 by its 5th..95th percentiles: below ``--closure-depth`` with prominence ``--closure-prominence``);
 a method's closures are the same minima of its own opening curve; the recall is the fraction
@@ -151,24 +153,37 @@ def ratio_statistic(hits: np.ndarray, totals: np.ndarray):
     return stat
 
 
-def summarize(r: dict, closures: dict, resample_count: int, seed: int) -> dict:
-    """Intervals over windows. r: {channel: {method: (W,) window r}}; closures: {method: (W, 4)
-    int per window: real closures, matched real, method closures, matched method}."""
-    n = len(next(iter(next(iter(r.values())).values())))
-    index = resamples(n, resample_count, seed)
-    overall, differences = {}, {}
-    for channel, per in r.items():
-        overall[channel] = {m: interval(mean_r_statistic(v), n, index) for m, v in per.items()}
-        if "facesynth" in per:
-            differences[channel] = {f"facesynth - {m}": paired_difference(mean_r_statistic(per["facesynth"]),
-                                                                          mean_r_statistic(v), n, index)
-                                    for m, v in per.items() if m != "facesynth"}
-    closure = {}
-    for m, c in closures.items():
-        closure[m] = {"recall": interval(ratio_statistic(c[:, 1], c[:, 0]), n, index),
-                      "precision": interval(ratio_statistic(c[:, 3], c[:, 2]), n, index),
-                      "closures": int(c[:, 2].sum())}
-    return {"windows": n, "r": overall, "paired": differences, "closures": closure}
+def by_take(stat, groups: np.ndarray):
+    """``stat`` (window indices -> float) as a statistic of take indices: the windows of the
+    chosen takes (a take drawn twice counts twice). groups : (W,) the take of each window."""
+    members = [np.flatnonzero(groups == g) for g in range(int(groups.max()) + 1)]
+
+    def take_stat(idx: np.ndarray) -> float:
+        return stat(np.concatenate([members[i] for i in idx]))
+    return take_stat
+
+
+def summarize(r: dict, closures: dict, groups: np.ndarray, resample_count: int, seed: int) -> dict:
+    """Intervals over windows (``r``, ``paired``, ``closures``) and over takes (``r_takes``,
+    ``paired_takes``: the takes resampled, each with all its windows). r: {channel: {method: (W,)
+    window r}}; closures: {method: (W, 4) int per window: real closures, matched real, method
+    closures, matched method}; groups: (W,) int, the take of each window (0..K-1)."""
+    n, k = len(groups), int(groups.max()) + 1
+    index, take_index = resamples(n, resample_count, seed), resamples(k, resample_count, seed)
+    out = {"windows": n, "takes": k}
+    for suffix, wrap, count, idx in (("", lambda f: f, n, index), ("_takes", lambda f: by_take(f, groups), k, take_index)):
+        overall, differences = {}, {}
+        for channel, per in r.items():
+            overall[channel] = {m: interval(wrap(mean_r_statistic(v)), count, idx) for m, v in per.items()}
+            if "facesynth" in per:
+                differences[channel] = {f"facesynth - {m}": paired_difference(wrap(mean_r_statistic(per["facesynth"])),
+                                                                              wrap(mean_r_statistic(v)), count, idx)
+                                        for m, v in per.items() if m != "facesynth"}
+        out["r" + suffix], out["paired" + suffix] = overall, differences
+    out["closures"] = {m: {"recall": interval(ratio_statistic(c[:, 1], c[:, 0]), n, index),
+                           "precision": interval(ratio_statistic(c[:, 3], c[:, 2]), n, index),
+                           "closures": int(c[:, 2].sum())} for m, c in closures.items()}
+    return out
 
 
 # ---------------------------------------------------------------- the real curves and the audio
@@ -464,7 +479,8 @@ def main(argv=None) -> dict:
     complete = {c: {m: np.concatenate(v) for m, v in per.items() if len(v) == len(takes)} for c, per in r.items()}
     complete = {c: per for c, per in complete.items() if per}
     closures = {m: np.concatenate(v) for m, v in closures.items() if len(v) == len(takes)}
-    summary = summarize(complete, closures, args.resamples, args.seed)
+    groups = np.concatenate([np.full(len(t["spans"]), i) for i, t in enumerate(takes)])
+    summary = summarize(complete, closures, groups, args.resamples, args.seed)
     seconds = sum(t["n"] for t in takes) / FPS
     result = {
         "data": {"source": "FACEGOOD Audio2Face training takes (MIT)", "takes": take_names,
@@ -501,9 +517,9 @@ def markdown(result: dict) -> str:
              "| channel | " + " | ".join(methods) + " |", "|---|" + "---|" * len(methods)]
     for channel, per in result["r"].items():
         lines.append(f"| {channel} | " + " | ".join(_fmt(per.get(m)) for m in methods) + " |")
-    lines += ["", "| paired difference (mouth opening r) | value [95%] |", "|---|---|"]
+    lines += ["", "| paired difference (mouth opening r) | over windows [95%] | over takes [95%] |", "|---|---|---|"]
     for name, s in result["paired"].get("opening", {}).items():
-        lines.append(f"| {name} | {_fmt(s)} |")
+        lines.append(f"| {name} | {_fmt(s)} | {_fmt(result['paired_takes']['opening'][name])} |")
     lines += ["", f"Lip closures ({result['real_closures_per_minute']:g} real closures per minute, "
               f"+-{result['settings']['closure_tolerance_frames']} frames):", "",
               "| method | recall | precision | closures |", "|---|---|---|---|"]

@@ -80,7 +80,8 @@ def test_summarize_intervals_and_paired_difference():
     good = 0.6 + 0.05 * rng.normal(size=40)
     bad = good - 0.3  # worse in every window by exactly 0.3
     closures = np.array([[2, 1, 2, 2]] * 40)  # half the real closures found, every found one right
-    s = bench.summarize({"opening": {"facesynth": good, "openfacefx": bad}}, {"facesynth": closures}, 500, 0)
+    groups = np.repeat(np.arange(4), 10)  # four takes of ten windows
+    s = bench.summarize({"opening": {"facesynth": good, "openfacefx": bad}}, {"facesynth": closures}, groups, 500, 0)
     r = s["r"]["opening"]["facesynth"]
     assert r["value"] == pytest.approx(good.mean())
     assert r["low"] < r["value"] < r["high"]
@@ -88,7 +89,18 @@ def test_summarize_intervals_and_paired_difference():
     assert d["value"] == pytest.approx(0.3) and d["low"] == pytest.approx(0.3) and d["high"] == pytest.approx(0.3)
     assert s["closures"]["facesynth"]["recall"]["value"] == pytest.approx(0.5)
     assert s["closures"]["facesynth"]["precision"]["value"] == pytest.approx(1.0)
-    assert s["windows"] == 40
+    assert s["windows"] == 40 and s["takes"] == 4
+    assert s["r_takes"]["opening"]["facesynth"]["value"] == pytest.approx(good.mean())
+    assert s["paired_takes"]["opening"]["facesynth - openfacefx"]["low"] == pytest.approx(0.3)
+
+
+def test_by_take_resamples_whole_takes():
+    values = np.array([0.1, 0.1, 0.5, 0.5, 0.5, 0.9])  # take 0: two windows, take 1: three, take 2: one
+    groups = np.array([0, 0, 1, 1, 1, 2])
+    stat = bench.by_take(bench.mean_r_statistic(values), groups)
+    assert stat(np.array([0, 1, 2])) == pytest.approx(values.mean())
+    assert stat(np.array([2, 2])) == pytest.approx(0.9)
+    assert stat(np.array([0, 2])) == pytest.approx((0.1 + 0.1 + 0.9) / 3)  # windows, not takes, are averaged
 
 
 def test_real_curves_follow_facegood_table():
