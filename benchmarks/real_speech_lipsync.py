@@ -59,6 +59,7 @@ the fraction of method closures with a real one that near.
 from __future__ import annotations
 
 import argparse
+import hashlib
 import json
 import os
 import re
@@ -303,6 +304,12 @@ def facesynth_method(db: Path, phones: Path, folder: Path, n: int, lip_markers) 
     from facesynth.model.motion import Motion
 
     motion, curves = folder / "motion.h5", folder / "curves.h5"
+    # The cached motion holds only for the phones it was made from.
+    stamp, digest = folder / "phones.sha256", hashlib.sha256(phones.read_bytes()).hexdigest()
+    if not stamp.exists() or stamp.read_text() != digest:
+        motion.unlink(missing_ok=True)
+        curves.unlink(missing_ok=True)
+        stamp.write_text(digest)
     if not motion.exists():
         facesynth_cli("synthesize", str(db), "--phonemes", str(phones), "-o", str(motion))
     if not curves.exists():
@@ -386,7 +393,8 @@ def fit_length(x: np.ndarray, n: int) -> np.ndarray:
 def main(argv=None) -> dict:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--data", type=Path, required=True, help="the FACEGOOD folder (see the module docstring)")
-    ap.add_argument("--work", type=Path, required=True, help="cache: the database, phones, motion and curves")
+    ap.add_argument("--work", type=Path, required=True,
+                    help="cache: the database, phones, motion and curves (empty it after changing facesynth)")
     ap.add_argument("--takes", default=None, help="comma-separated take names (default: every wav/*.wav)")
     ap.add_argument("--window-s", type=float, default=10.0)
     ap.add_argument("--energy-smooth-s", type=float, default=0.1)

@@ -138,3 +138,49 @@ def test_phone_means_fit_and_interpolate():
     pred = bench.phone_mean_method(means, [Segment(0.0, 1.0, "m"), Segment(1.0, 2.0, "aa"), Segment(2.0, 3.0, "zh")], 90)
     # held at the first centre, ramping to the next, the unseen phone gets the overall mean (0.5)
     assert pred["opening"][0] == 0.0 and pred["opening"][45] == pytest.approx(1.0) and pred["opening"][89] == pytest.approx(0.5)
+
+
+def test_phones_from_audio_prefers_facesynths_own_audio_only_alignment(tmp_path, monkeypatch):
+    import click
+
+    import facesynth.cli
+    from facesynth.config import Config
+    from facesynth.formats.audio import write_wav
+    from facesynth.formats.labels import write_textgrid
+
+    @click.group()
+    def fake_main():
+        pass
+
+    @fake_main.command()
+    @click.argument("audio")
+    @click.option("-o", "output")
+    @click.option("--overwrite", is_flag=True)
+    @click.option("-q", is_flag=True)
+    def align(audio, output, overwrite, q):
+        write_textgrid(Path(output), {"phones": [Segment(0.0, 0.4, "pau"), Segment(0.4, 1.0, "aa")]}, xmax=1.0)
+
+    monkeypatch.setattr(facesynth.cli, "main", fake_main)
+    wav = tmp_path / "x.wav"
+    write_wav(wav, np.zeros(16000, np.float32), 16000)
+    segs, source = bench.phones_from_audio(wav, tmp_path / "x.TextGrid", Config.load().settings("align"))
+    assert source == "facesynth align (audio only)"
+    assert [s.label for s in segs] == ["pau", "aa"]
+
+
+def test_phones_from_audio_tiles_the_audio(tmp_path):
+    pytest.importorskip("pocketsphinx", reason="pocketsphinx is needed for phone recognition")
+    from facesynth.config import Config
+    from facesynth.formats.audio import write_wav
+
+    rate = 16000
+    t = np.arange(rate * 2) / rate
+    voiced = (t > 0.5) & (t < 1.5)
+    samples = (0.3 * np.sin(2 * np.pi * 150 * t) * (1 + 0.5 * np.sin(2 * np.pi * 4 * t)) * voiced).astype(np.float32)
+    wav = tmp_path / "x.wav"
+    write_wav(wav, samples, rate)
+    segs, source = bench.phones_from_audio(wav, tmp_path / "x.TextGrid", Config.load().settings("align"))
+    assert source in ("facesynth align (audio only)", "pocketsphinx phone loop (en-us phone language model)")
+    assert segs[0].start == 0.0 and segs[-1].end == pytest.approx(2.0, abs=0.02)
+    assert all(a.end == pytest.approx(b.start) for a, b in zip(segs[:-1], segs[1:]))
+    assert (tmp_path / "x.TextGrid").exists()
