@@ -131,11 +131,12 @@ def _resolve_labels(path: Path, labels: list[str], descriptions: list[str], xyz:
                     notes: list[str]) -> tuple[list[str], list[np.ndarray]]:
     """One column per marker name from points whose labels may be empty or repeated.
 
-    xyz : (n_frames, n_points, 3), NaN where missing. A point that holds no sample and has no
-    label, or repeats another's, is dropped. Points of one label that agree wherever both hold
-    a sample (a trajectory written twice or in pieces: Qualisys, BTS) are merged. Points of one
-    label that disagree (writers that cut labels to four characters: Motion Analysis) are named
-    by their ``POINT:DESCRIPTIONS`` when those tell them apart; otherwise the file is refused.
+    xyz : (n_frames, n_points, 3), NaN where missing. Points of one label whose
+    ``POINT:DESCRIPTIONS`` tell them apart (writers that cut labels to four characters: Motion
+    Analysis) are named by their descriptions. Otherwise a point that holds no sample and has no
+    label, or repeats another's, is dropped; points of one label that agree wherever both hold
+    a sample (a trajectory written twice or in pieces: Qualisys) are merged; and points of one
+    label that still disagree are refused.
     Returns the names and (n_frames, 3) columns."""
     seen = ~np.isnan(xyz).all(axis=(0, 2))
     order: list[str] = []
@@ -154,6 +155,12 @@ def _resolve_labels(path: Path, labels: list[str], descriptions: list[str], xyz:
                                  "told from the others; name it in the capture software and export again.")
             dropped += len(members)
             continue
+        described_as = [descriptions[i] for i in members]
+        if len(members) > 1 and all(described_as) and len(set(described_as)) == len(members):
+            names += described_as
+            columns += [xyz[:, i].copy() for i in members]
+            described += len(members)
+            continue
         kept = holding or members[:1]
         dropped += len(members) - len(holding or members[:1])
         distinct: list[np.ndarray] = []
@@ -171,13 +178,8 @@ def _resolve_labels(path: Path, labels: list[str], descriptions: list[str], xyz:
             names.append(label)
             columns.append(distinct[0])
             continue
-        named = [descriptions[i] for i in kept]
-        if len(distinct) != len(kept) or not all(named) or len(set(named)) != len(named):
-            raise InputError(f"{path}: the label {label!r} names {len(distinct)} different trajectories and their "
-                             "descriptions do not tell them apart; give every marker its own label and export again.")
-        names += named
-        columns += distinct
-        described += len(named)
+        raise InputError(f"{path}: the label {label!r} names {len(distinct)} different trajectories and their "
+                         "descriptions do not tell them apart; give every marker its own label and export again.")
     repeated = sorted({n for n in names if names.count(n) > 1})
     if repeated:
         raise InputError(f"{path}: the name {repeated[0]!r} is used by {names.count(repeated[0])} markers (a label "
