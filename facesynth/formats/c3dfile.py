@@ -2,7 +2,7 @@
 
 A C3D file (https://www.c3d.org/docs/C3D_User_Guide.pdf) is a sequence of 512-byte blocks:
 block 1 is the header, the parameter section starts at the block the header's first byte
-names, and the data block at the block ``POINT:DATA_START`` (or header word 9) names. Each
+names, and the data block at the block header word 9 names (``POINT:DATA_START`` repeats it). Each
 frame of the data block holds, for every point, X, Y, Z and a residual word, then the frame's
 analog samples, all as 16-bit integers (times ``POINT:SCALE``) or 32-bit floats. The byte
 order and float format follow the processor type of the parameter section: Intel
@@ -97,9 +97,10 @@ class _Decoder:
         return np.frombuffer(raw, self.end + "u2").astype(np.int64)
 
     def float32(self, raw: bytes) -> np.ndarray:
-        if self.processor == "DEC":
-            return _dec_float(np.frombuffer(raw, np.uint8))
-        return np.frombuffer(raw, self.end + "f4").astype(np.float64)
+        with np.errstate(invalid="ignore"):  # signalling NaNs (a corrupt or Biogesta file) stay NaN
+            if self.processor == "DEC":
+                return _dec_float(np.frombuffer(raw, np.uint8))
+            return np.frombuffer(raw, self.end + "f4").astype(np.float64)
 
 
 def _parse_parameters(data: bytes, start: int, stop: int, dec: _Decoder) -> tuple[dict, list[str]]:
@@ -245,19 +246,17 @@ def read_points(path: Path) -> C3dPoints:
     rate = _number(params, "POINT:RATE", dec)
     if rate is None or not rate > 0:
         rate = header_rate
-    data_start = _number(params, "POINT:DATA_START", dec, unsigned=True)
-    if data_start is None or data_start < 2:
-        data_start = header_data_start
-    elif int(data_start) != header_data_start:
-        notes.append(f"POINT:DATA_START ({int(data_start)}) differs from the header's ({header_data_start}); "
+    declared_start = _number(params, "POINT:DATA_START", dec, unsigned=True)
+    if declared_start is not None and int(declared_start) != header_data_start:
+        notes.append(f"POINT:DATA_START ({int(declared_start)}) differs from the header's ({header_data_start}); "
                      "the header's was used")
-        data_start = header_data_start
-    data_start = int(data_start)
+    data_start = header_data_start
 
     n_frames = last_frame - first_frame + 1
     trial_end = params.get("TRIAL:ACTUAL_END_FIELD")
     trial_start = params.get("TRIAL:ACTUAL_START_FIELD")
-    if last_frame == 65535 and trial_end is not None and trial_start is not None and trial_end.kind == 2:
+    if (last_frame == 65535 and trial_end is not None and trial_start is not None and trial_end.kind == 2
+            and trial_start.kind == 2 and len(trial_end.raw) >= 4 and len(trial_start.raw) >= 4):
         # more than 65535 frames: the header is saturated; TRIAL holds 32-bit frame numbers as two words
         end = dec.uint16(trial_end.raw[:4])
         begin = dec.uint16(trial_start.raw[:4])
@@ -280,7 +279,7 @@ def read_points(path: Path) -> C3dPoints:
     if labels is None:
         raise InputError(f"{path}: the file has no POINT:LABELS parameter, so its {n_points} points have no "
                          "names; export it again with marker labels.")
-    if labels is not None and len(labels) < n_points:
+    if len(labels) < n_points:
         notes.append(f"the POINT:LABELS parameters name {len(labels)} of {n_points} points")
         labels += [""] * (n_points - len(labels))
 
@@ -325,7 +324,7 @@ def _analog_per_frame(params: dict, dec: _Decoder, header_count: int, n_points: 
     analog_rate = _number(params, "ANALOG:RATE", dec)
     point_rate = _number(params, "POINT:RATE", dec)
     if used and analog_rate and point_rate and analog_rate > 0 and point_rate > 0:
-        count = int(used) * int(round(analog_rate / point_rate))
+        count = int(used) * round(analog_rate / point_rate)
         if count != header_count and 0 <= slack(count) <= BLOCK:
             notes.append(f"the header's {header_count} analog samples a frame do not fit the size of the data block, "
                          f"but the {count} of the ANALOG parameters do; those were used")

@@ -17,7 +17,7 @@ import numpy as np
 
 from .. import limits
 from ..errors import InputError
-from .c3dfile import MODEL_OUTPUT_GROUPS, read_points
+from .c3dfile import MODEL_OUTPUT_GROUPS, C3dPoints, read_points
 
 log = logging.getLogger(__name__)
 
@@ -84,9 +84,10 @@ def read_c3d(path: Path) -> MarkerTake:
     The points come from :func:`facesynth.formats.c3dfile.read_points`. Of them, the model
     outputs that ``POINT:ANGLES``, ``FORCES``, ``MOMENTS``, ``POWERS``, ``SCALARS`` and
     ``REACTIONS`` list (joint angles in degrees, forces...) are left out and named in
-    ``MarkerTake.left_out``; unlabelled or duplicate-labelled points that are never seen are
-    dropped. A sample is missing (NaN) when its residual word is negative (the standard's
-    invalid flag) or it is exactly (0, 0, 0), as several writers store a gap.
+    ``MarkerTake.left_out``; repeated or empty labels are resolved by :func:`_resolve_labels`.
+    A sample is missing (NaN) when its residual word is negative (the standard's invalid
+    flag), a coordinate is NaN, or it is exactly (0, 0, 0), as several writers store a gap.
+    Every liberty taken with the file is logged as a warning naming it.
     """
     path = Path(path)
     try:
@@ -98,7 +99,8 @@ def read_c3d(path: Path) -> MarkerTake:
     model_outputs = {label for group in MODEL_OUTPUT_GROUPS
                      for label in points.groups.get(f"POINT:{group}", []) if isinstance(label, str) and label}
     xyz = points.xyz.copy()
-    missing = (points.residual_word < 0) | np.all(xyz == 0, axis=2) | ~np.isfinite(xyz).all(axis=2)
+    # a NaN coordinate is a gap (Vicon Nexus writes them); an infinite one is refused by check_take
+    missing = (points.residual_word < 0) | np.all(xyz == 0, axis=2) | np.isnan(xyz).any(axis=2)
     xyz[missing] = np.nan
     left_out = [label for label in labels if label in model_outputs]
     markers = [i for i, label in enumerate(labels) if label not in model_outputs]
@@ -121,7 +123,7 @@ def read_c3d(path: Path) -> MarkerTake:
     return MarkerTake(positions.astype(np.float32), names, points.rate, left_out)
 
 
-def _descriptions(points, indices: list[int]) -> list[str]:
+def _descriptions(points: C3dPoints, indices: list[int]) -> list[str]:
     """POINT:DESCRIPTIONS of the points at ``indices`` ("" where absent)."""
     described = [d for d in points.groups.get("POINT:DESCRIPTIONS", []) if isinstance(d, str)]
     return [described[i] if i < len(described) else "" for i in indices]
