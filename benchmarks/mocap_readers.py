@@ -2,8 +2,10 @@
 
     .venv/bin/python benchmarks/mocap_readers.py FOLDER [FOLDER...] > readers.json
 
-Reads every ``*.c3d`` under the folders (the c3d.org sample set, the ezc3d test files,
-OpenSim's test data) with each reader and prints JSON, one entry per file:
+Reads every ``*.c3d`` under the folders with each reader and prints JSON, one entry per file.
+``mocap_readers.json`` holds the run on the c3d.org sample set (as ``tests/c3d_org_samples`` of
+the biomechanics-foundation/c3dio repository keeps it), the ezc3d test files
+(pyomeca/ezc3d-testFiles) and the C3D files of opensim-org/opensim-core, 106 files:
 
 * ``facesynth``: what ``read_mocap`` gives (frames, markers, rate, left-out model outputs,
   NaN fraction), or the sentence it refuses the file with;
@@ -13,7 +15,8 @@ OpenSim's test data) with each reader and prints JSON, one entry per file:
   facesynth's decoded points and the library's over the samples both call valid, and the number
   of samples whose validity (residual word not negative) they disagree on (needs the same frame
   and point counts);
-* ``seconds``: each reader's time on the file.
+* ``seconds``: each reader's time on the file (ezc3d's includes starting the child process
+  it runs in, since it can crash the interpreter on a malformed file).
 
 A summary counts, per reader, the files read and refused, and the files where the readers
 disagree. ezc3d is optional (``pip install ezc3d``); without it its columns say so.

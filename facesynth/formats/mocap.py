@@ -111,8 +111,8 @@ def read_c3d(path: Path) -> MarkerTake:
                      f"reactions) of {len(labels)} points; {len(names)} markers read")
     positions = np.stack(columns, axis=1) if columns else np.zeros((xyz.shape[0], 0, 3))
     if names and positions.shape[0] and np.isnan(positions).all():
-        raise InputError(f"{path}: every sample of every marker is marked invalid (negative residual) or lies at "
-                         "(0, 0, 0); the file holds no marker positions: export the reconstructed trajectories.")
+        raise InputError(f"{path}: every marker sample is missing (marked invalid by a negative residual, or at "
+                         "(0, 0, 0)); the file holds no marker positions: export the reconstructed trajectories.")
     unit = points.unit
     if not unit:
         notes.append("POINT:UNITS is absent; millimetres (the C3D convention) assumed")
