@@ -165,6 +165,20 @@ def test_truncated_c3d_data_block_is_refused(tmp_path):
         read_mocap(path)
 
 
+def test_a_header_analog_count_that_does_not_fit_the_data_block_yields_to_the_analog_parameters(tmp_path, caplog):
+    """MotionMonitor writes the channel count (30) where the header wants the samples a frame
+    (30 channels x 16 samples = 480); the ANALOG parameters fit the size of the data block."""
+    data = bytearray((CAPTURES / "gait-pig.c3d").read_bytes())
+    assert data[4:6] == (480).to_bytes(2, "little")  # header word 3 (DEC: little-endian)
+    data[4:6] = (30).to_bytes(2, "little")
+    path = tmp_path / "channels.c3d"
+    path.write_bytes(bytes(data))
+    with caplog.at_level(logging.WARNING, logger="facesynth"):
+        take = read_mocap(path)
+    np.testing.assert_array_equal(take.positions, read_mocap(CAPTURES / "gait-pig.c3d").positions)
+    assert "the header's 30 analog samples a frame do not fit the size of the data block" in caplog.text
+
+
 def test_centimetres_are_converted(tmp_path):
     data = bytearray((CAPTURES / "pc_real.c3d").read_bytes())
     at = _parameter_name_at(data, b"UNITS")
