@@ -109,8 +109,11 @@ def read_c3d(path: Path) -> MarkerTake:
     if left_out:
         notes.append(f"left out {len(left_out)} model outputs (angles, forces, moments, powers, scalars, "
                      f"reactions) of {len(labels)} points; {len(names)} markers read")
-    positions = np.stack(columns, axis=1) if columns else np.zeros((xyz.shape[0], 0, 3))
-    if names and positions.shape[0] and np.isnan(positions).all():
+    if not names:
+        raise InputError(f"{path}: none of its {len(labels)} points is a marker ({len(left_out)} are model outputs, "
+                         "the others unnamed and empty); export the marker trajectories.")
+    positions = np.stack(columns, axis=1)
+    if positions.shape[0] and np.isnan(positions).all():
         raise InputError(f"{path}: every marker sample is missing (marked invalid by a negative residual, or at "
                          "(0, 0, 0)); the file holds no marker positions: export the reconstructed trajectories.")
     unit = points.unit

@@ -95,6 +95,16 @@ def test_model_outputs_are_left_out_and_said(caplog):
     assert "left out 28 model outputs" in caplog.text
 
 
+def test_a_file_of_model_outputs_only_is_refused(monkeypatch):
+    from facesynth.formats import c3dfile, mocap
+
+    points = c3dfile.read_points(CAPTURES / "gait-pig.c3d")
+    points.groups["POINT:ANGLES"] = list(points.labels)  # every point declared a model output
+    monkeypatch.setattr(mocap, "read_points", lambda path: points)
+    with pytest.raises(InputError, match=r"gait-pig\.c3d: none of its 77 points is a marker \(77 are model outputs"):
+        read_mocap(CAPTURES / "gait-pig.c3d")
+
+
 def test_qualisys_invalid_residual_65535_is_missing():
     """Capture0002 writes gaps as (0, 0, 0) with the residual float 65535.0 (the word 0xFFFF)."""
     take = read_mocap(CAPTURES / "Capture0002.c3d")
