@@ -1,32 +1,40 @@
-"""Marker trajectories: C3D (through the ``c3d`` library), TRC and plain CSV.
+"""Marker trajectories: C3D (decoded by :mod:`facesynth.formats.c3dfile`; written with the
+``c3d`` library), TRC and plain CSV.
 
 All readers return a :class:`MarkerTake` with positions in millimetres; missing samples
-(C3D residual < 0, empty TRC/CSV fields) are NaN.
+(C3D residual < 0 or (0, 0, 0), empty or NaN TRC/CSV fields) are NaN.
 """
 
 from __future__ import annotations
 
 import csv
-import struct
-from dataclasses import dataclass
+import logging
 import warnings
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
 
 from .. import limits
 from ..errors import InputError
+from .c3dfile import MODEL_OUTPUT_GROUPS, C3dPoints, read_points
+
+log = logging.getLogger(__name__)
 
 _UNIT_TO_MM = {"mm": 1.0, "cm": 10.0, "m": 1000.0, "millimeters": 1.0, "meters": 1000.0}
 
 
 @dataclass
 class MarkerTake:
-    """positions : (n_frames, n_markers, 3) float32, millimetres, NaN where missing."""
+    """positions : (n_frames, n_markers, 3) float32, millimetres, NaN where missing.
+    names : n_markers labels. fps : frames per second.
+    left_out : labels of the points a C3D file lists as model outputs (joint angles, forces,
+        moments, powers...), which are not markers and were not read."""
 
     positions: np.ndarray
     names: list[str]
     fps: float
+    left_out: list[str] = field(default_factory=list)
 
 
 def _unit_scale(unit: str, path: Path) -> float:
@@ -71,35 +79,135 @@ def check_take(take: MarkerTake, where: str) -> None:
 
 
 def read_c3d(path: Path) -> MarkerTake:
-    """Markers of a C3D file (millimetres, as C3D stores them; missing samples NaN)."""
-    import c3d
+    """Markers of a C3D file of any writer (see ``docs/inputs.md``), in millimetres.
 
+    The points come from :func:`facesynth.formats.c3dfile.read_points`. Of them, the model
+    outputs that ``POINT:ANGLES``, ``FORCES``, ``MOMENTS``, ``POWERS``, ``SCALARS`` and
+    ``REACTIONS`` list (joint angles in degrees, forces...) are left out and named in
+    ``MarkerTake.left_out``; repeated or empty labels are resolved by :func:`_resolve_labels`.
+    A sample is missing (NaN) when its residual word is negative (the standard's invalid
+    flag), a coordinate is NaN, or it is exactly (0, 0, 0), as several writers store a gap.
+    Every liberty taken with the file is logged as a warning naming it.
+    """
+    path = Path(path)
     try:
-        with open(path, "rb") as fh, warnings.catch_warnings():
-            warnings.simplefilter("ignore")  # "no analog data" is normal for marker-only files
-            reader = c3d.Reader(fh)
-            names = [str(n).strip() for n in reader.point_labels]
-            fps = float(reader.point_rate)
-            try:
-                unit = reader.get("POINT:UNITS").string_value
-            except (AttributeError, KeyError):
-                unit = "mm"
-            expected = reader.last_frame - reader.first_frame + 1
-            frames = []
-            for _, points, _ in reader.read_frames(copy=False):
-                xyz = np.array(points[:, :3], dtype=np.float32)
-                xyz[points[:, 3] < 0] = np.nan
-                frames.append(xyz)
-    except (struct.error, ValueError, EOFError, IndexError, KeyError, OSError, TypeError, AssertionError,
-            OverflowError, MemoryError) as exc:
-        raise InputError(f"{path}: unreadable or truncated C3D file ({exc}); re-export it from the capture software.") from None
-    if len(frames) != expected:
-        raise InputError(
-            f"{path}: truncated C3D file ({len(frames)} of {expected} frames); re-export it from the capture software."
-        )
-    positions = np.stack(frames) if frames else np.zeros((0, len(names), 3), np.float32)
-    positions *= _unit_scale(unit, path)
-    return MarkerTake(positions.astype(np.float32), names, fps)
+        points = read_points(path)
+    except OSError as exc:
+        raise InputError(f"{path}: cannot read the file ({exc.strerror or exc}); check its permissions.") from None
+    notes = list(points.notes)
+    labels = points.labels
+    model_outputs = {label for group in MODEL_OUTPUT_GROUPS
+                     for label in points.groups.get(f"POINT:{group}", []) if isinstance(label, str) and label}
+    xyz = points.xyz.copy()
+    # a NaN coordinate is a gap (Vicon Nexus writes them); an infinite one is refused by check_take
+    missing = (points.residual_word < 0) | np.all(xyz == 0, axis=2) | np.isnan(xyz).any(axis=2)
+    xyz[missing] = np.nan
+    left_out = [label for label in labels if label in model_outputs]
+    markers = [i for i, label in enumerate(labels) if label not in model_outputs]
+    names, columns = _resolve_labels(path, [labels[i] for i in markers], _descriptions(points, markers),
+                                     xyz[:, markers], notes)
+    if left_out:
+        notes.append(f"left out {len(left_out)} model outputs (angles, forces, moments, powers, scalars, "
+                     f"reactions) of {len(labels)} points; {len(names)} markers read")
+    if not names:
+        raise InputError(f"{path}: none of its {len(labels)} points is a marker ({len(left_out)} are model outputs, "
+                         "the others unnamed and empty); export the marker trajectories.")
+    positions = np.stack(columns, axis=1)
+    if positions.shape[0] and np.isnan(positions).all():
+        raise InputError(f"{path}: every marker sample is missing (marked invalid by a negative residual, or at "
+                         "(0, 0, 0)); the file holds no marker positions: export the reconstructed trajectories.")
+    unit = points.unit
+    if not unit:
+        notes.append("POINT:UNITS is absent; millimetres (the C3D convention) assumed")
+        unit = "mm"
+    positions *= _c3d_unit_scale(unit, path)
+    for note in notes:
+        log.warning("%s: %s.", path, note)
+    return MarkerTake(positions.astype(np.float32), names, points.rate, left_out)
+
+
+def _descriptions(points: C3dPoints, indices: list[int]) -> list[str]:
+    """POINT:DESCRIPTIONS of the points at ``indices`` ("" where absent)."""
+    described = [d for d in points.groups.get("POINT:DESCRIPTIONS", []) if isinstance(d, str)]
+    return [described[i] if i < len(described) else "" for i in indices]
+
+
+def _resolve_labels(path: Path, labels: list[str], descriptions: list[str], xyz: np.ndarray,
+                    notes: list[str]) -> tuple[list[str], list[np.ndarray]]:
+    """One column per marker name from points whose labels may be empty or repeated.
+
+    xyz : (n_frames, n_points, 3), NaN where missing. Points of one label whose
+    ``POINT:DESCRIPTIONS`` tell them apart (writers that cut labels to four characters: Motion
+    Analysis) are named by their descriptions. Otherwise a point that holds no sample and has no
+    label, or repeats another's, is dropped; points of one label that agree wherever both hold
+    a sample (a trajectory written twice or in pieces: Qualisys) are merged; and points of one
+    label that still disagree are refused.
+    Returns the names and (n_frames, 3) columns."""
+    seen = ~np.isnan(xyz).all(axis=(0, 2))
+    order: list[str] = []
+    groups: dict[str, list[int]] = {}
+    for index, label in enumerate(labels):
+        if label not in groups:
+            order.append(label)
+        groups.setdefault(label, []).append(index)
+    names, columns, dropped, merged, described = [], [], 0, 0, 0
+    for label in order:
+        members = groups[label]
+        holding = [i for i in members if seen[i]]
+        if not label:
+            if holding:
+                raise InputError(f"{path}: point {holding[0] + 1} has no label but holds samples, so it cannot be "
+                                 "told from the others; name it in the capture software and export again.")
+            dropped += len(members)
+            continue
+        described_as = [descriptions[i] for i in members]
+        if len(members) > 1 and all(described_as) and len(set(described_as)) == len(members):
+            names += described_as
+            columns += [xyz[:, i].copy() for i in members]
+            described += len(members)
+            continue
+        kept = holding or members[:1]
+        dropped += len(members) - len(holding or members[:1])
+        distinct: list[np.ndarray] = []
+        for i in kept:
+            for column in distinct:
+                both = ~np.isnan(column).any(axis=1) & ~np.isnan(xyz[:, i]).any(axis=1)
+                if np.allclose(column[both], xyz[both, i], rtol=0, atol=1e-4):
+                    fill = np.isnan(column).any(axis=1)
+                    column[fill] = xyz[fill, i]
+                    merged += 1
+                    break
+            else:
+                distinct.append(xyz[:, i].copy())
+        if len(distinct) == 1:
+            names.append(label)
+            columns.append(distinct[0])
+            continue
+        raise InputError(f"{path}: the label {label!r} names {len(distinct)} different trajectories and their "
+                         "descriptions do not tell them apart; give every marker its own label and export again.")
+    repeated = sorted({n for n in names if names.count(n) > 1})
+    if repeated:
+        raise InputError(f"{path}: the name {repeated[0]!r} is used by {names.count(repeated[0])} markers (a label "
+                         "and a description); give every marker its own label and export again.")
+    if dropped:
+        notes.append(f"dropped {dropped} unlabelled or repeated points that hold no sample")
+    if merged:
+        notes.append(f"merged {merged} repeated points into the point of the same label they agree with")
+    if described:
+        notes.append(f"{described} points share their label with another trajectory and were named by their "
+                     "POINT:DESCRIPTIONS")
+    return names, columns
+
+
+def _c3d_unit_scale(unit: str, path: Path) -> float:
+    """Millimetres per unit of ``POINT:UNITS``; also the cut spellings some writers store in a
+    four-character field ('mete' for metres)."""
+    key = unit.strip().lower()
+    for full, scale in (("millimeters", 1.0), ("millimetres", 1.0), ("centimeters", 10.0), ("centimetres", 10.0),
+                        ("meters", 1000.0), ("metres", 1000.0)):
+        if len(key) >= 4 and full.startswith(key):
+            return scale
+    return _unit_scale(unit, path)
 
 
 def write_c3d(path: Path, take: MarkerTake) -> None:
@@ -134,44 +242,132 @@ def text_ends_with_newline(path: Path) -> bool:
 
 
 def read_trc(path: Path) -> MarkerTake:
-    """Markers of a tab-separated TRC file (units from its header, converted to mm; empty cells NaN)."""
+    """Markers of a TRC file as OpenSim's readers and the writers of real files produce it.
+
+    Five header lines (``PathFileType``; the keys ``DataRate ... OrigNumFrames``; their values;
+    ``Frame# Time`` and the marker names; the ``X1 Y1 Z1`` line), blank lines, then one row per
+    frame: frame number, time (s), X Y Z per marker, tab-separated. Cells padded with spaces or
+    tabs, CRLF line ends, empty cells between header fields and after the last cell of a row, and
+    a last row without a line break are all taken as OpenSim takes them. A missing sample is an
+    empty cell or NaN (any case). Units from the header (mm, cm, m), converted to mm.
+
+    The frame rate is the header's ``DataRate`` when the Time column agrees with it (within 1%);
+    when it does not, the Time column's rate is used, with a warning, provided the column steps
+    regularly (nine steps in ten within a quarter of the fitted step); otherwise the file is
+    refused; the corrected rate is rounded to 0.01 frames/s. A last row cut short, or fewer rows than ``NumFrames`` in a file that ends in the
+    middle of a line, is refused as a file cut short; fewer rows in a file that ends cleanly (an
+    export of part of a trial that kept the header) is warned about.
+    """
+    path = Path(path)
+    lines = path.read_text("utf-8", errors="replace").splitlines()
+    if len(lines) < 5:
+        raise InputError(f"{path}: not a valid TRC file (it has {len(lines)} lines, fewer than the five of the "
+                         "header); export it again.")
+    keys = [k.strip() for k in lines[1].split("\t") if k.strip()]
+    values = [v.strip() for v in lines[2].split("\t") if v.strip()]
+    if len(keys) != len(values) or "DataRate" not in keys:
+        raise InputError(f"{path}, lines 2-3: not a valid TRC header ({len(keys)} keys, {len(values)} values, "
+                         "DataRate needed); check its five header lines.")
+    meta = dict(zip(keys, values))
     try:
-        lines = Path(path).read_text("utf-8", errors="replace").splitlines()
-        keys = lines[1].split("\t")
-        values = lines[2].split("\t")
-        meta = dict(zip([k.strip() for k in keys], [v.strip() for v in values]))
-        fps = float(meta["DataRate"])
-        unit = meta.get("Units", "mm")
-        names = [n.strip() for n in lines[3].split("\t")[2:] if n.strip()]
-        numbered = [(n, line.split("\t")) for n, line in enumerate(lines[5:], 6) if line.strip()]
-        declared = int(meta["NumFrames"]) if meta.get("NumFrames", "").strip().isdigit() else None
-    except (IndexError, KeyError, ValueError) as exc:
-        raise InputError(f"{path}: not a valid TRC file ({exc}); check its five header lines.") from None
-    # Every exporter ends each line with a line break: a last line without one (or a row with more
-    # cells than the header allows) is a file cut short or edited, which would change numbers silently.
+        header_fps = float(meta["DataRate"])
+    except ValueError:
+        raise InputError(f"{path}, line 3: DataRate {meta['DataRate']!r} is not a number; fix the header.") from None
+    unit = meta.get("Units", "mm")
+    names = [n.strip() for n in lines[3].split("\t")[2:] if n.strip()]
+    declared_markers = _header_count(meta, "NumMarkers", path)
+    if declared_markers is not None and declared_markers != len(names):
+        raise InputError(f"{path}, line 4: the header declares {declared_markers} markers but names {len(names)}; "
+                         "fix the header.")
     width = 2 + 3 * len(names)
+    numbered = [(n, line.split("\t")) for n, line in enumerate(lines[5:], 6) if line.strip()]
     for number, row in numbered:
+        while row and not row[-1].strip():
+            row.pop()
         if len(row) > width:
             raise InputError(f"{path}, line {number}: holds {len(row)} cells but the header has {width} "
                              "(frame, time, x y z per marker); fix the export.")
-    if numbered and not text_ends_with_newline(path):
-        raise InputError(f"{path}, line {numbered[-1][0]}: the file ends in the middle of this line; it was cut short: "
-                         "export it again.")
-    if declared is not None and declared != len(numbered):
-        raise InputError(f"{path}: the header declares {declared} frames but {len(numbered)} follow; the file is "
-                         "cut short or edited: export it again.")
-    rows = [row for _, row in numbered]
-    positions = np.full((len(rows), len(names), 3), np.nan, np.float32)
-    for i, row in enumerate(rows):
-        cells = row[2 : 2 + 3 * len(names)]
-        for j, cell in enumerate(cells):
-            if cell.strip():
+    declared = _header_count(meta, "NumFrames", path)
+    _check_not_cut(path, lines, numbered, declared)
+    positions = np.full((len(numbered), len(names), 3), np.nan, np.float32)
+    times = np.zeros(len(numbered))
+    for i, (number, row) in enumerate(numbered):
+        try:
+            times[i] = float(row[1])
+        except (IndexError, ValueError):
+            raise InputError(f"{path}, line {number}: the Time cell {row[1] if len(row) > 1 else ''!r} is not a "
+                             "number.") from None
+        for j, cell in enumerate(row[2:]):
+            cell = cell.strip()
+            if cell and cell.lower() != "nan":
                 try:
                     positions[i, j // 3, j % 3] = float(cell)
                 except ValueError:
-                    raise InputError(f"{path}, line {i + 6}: {cell!r} is not a number.") from None
+                    raise InputError(f"{path}, line {number}: {cell!r} is not a number.") from None
+    # a marker is missing when any of its three cells is (as OpenSim reads it)
+    positions[np.isnan(positions).any(axis=2)] = np.nan
+    fps = _trc_rate(path, header_fps, times)
     positions *= _unit_scale(unit, path)
     return MarkerTake(positions, names, fps)
+
+
+def _header_count(meta: dict, key: str, path: Path) -> int | None:
+    """An integer field of the TRC header (``NumFrames``, ``NumMarkers``), None when absent."""
+    if key not in meta:
+        return None
+    try:
+        value = float(meta[key])
+    except ValueError:
+        raise InputError(f"{path}, line 3: {key} {meta[key]!r} is not a number; fix the header.") from None
+    if value != int(value) or value < 0:
+        raise InputError(f"{path}, line 3: {key} {meta[key]!r} is not a count; fix the header.")
+    return int(value)
+
+
+def _check_not_cut(path: Path, lines: list[str], numbered: list, declared: int | None) -> None:
+    """Refuse a TRC cut short; warn when an intact file holds other than ``NumFrames`` rows."""
+    if not numbered:
+        return
+    ends_cleanly = text_ends_with_newline(path)
+    last_number, last_row = numbered[-1]
+    if not ends_cleanly:
+        raw = lines[last_number - 1].split("\t")
+        others = [len(lines[n - 1].split("\t")) for n, _ in numbered[-6:-1]]
+        if (others and len(raw) < min(others)) or (declared is not None and len(numbered) < declared):
+            raise InputError(f"{path}, line {last_number}: the file ends in the middle of this line; it was cut "
+                             "short: export it again.")
+    if declared is not None and declared != len(numbered):
+        log.warning("%s: the header declares %d frames but %d rows follow (frames %s to %s); the rows were read.",
+                    path, declared, len(numbered), numbered[0][1][0].strip(), last_row[0].strip())
+
+
+def _trc_rate(path: Path, header_fps: float, times: np.ndarray) -> float:
+    """The frame rate of a TRC: its header's, checked against the Time column (see read_trc)."""
+    if len(times) < 3:
+        return header_fps
+    steps = np.diff(times)
+    if not np.all(steps > 0):
+        row = int(np.argmax(steps <= 0)) + 2
+        raise InputError(f"{path}: the Time column does not increase at data row {row}; fix the export.")
+    rows = np.arange(len(times))
+    slope, intercept = np.polyfit(rows, times, 1)
+    # refit without the rows off the line by more than a quarter step (a last frame kept from the
+    # original take, a dropped row), so that they do not bias the rate
+    on_line = np.abs(times - (intercept + slope * rows)) <= 0.25 * slope
+    step = np.polyfit(rows[on_line], times[on_line], 1)[0] if on_line.sum() >= 2 else slope
+    time_fps = 1.0 / step
+    if header_fps > 0 and abs(time_fps / header_fps - 1) <= 0.01:
+        return header_fps
+    irregular = int(np.sum(np.abs(steps / step - 1) > 0.25))
+    if irregular > 0.1 * len(steps):
+        raise InputError(f"{path}: the header's DataRate is {header_fps:g} frames/s but the Time column steps "
+                         f"irregularly ({irregular} of {len(steps)} steps off its mean of {step:.6g} s); fix the "
+                         "export.")
+    fps = float(np.round(time_fps, 2))  # a Time column printed to the ms does not hold more
+    log.warning("%s: the header's DataRate is %g frames/s but the Time column steps at %g frames/s%s; the Time "
+                "column's rate was used.", path, header_fps, fps,
+                f" ({irregular} of {len(steps)} steps differ)" if irregular else "")
+    return fps
 
 
 def write_trc(path: Path, take: MarkerTake) -> None:
