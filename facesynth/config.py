@@ -113,7 +113,8 @@ class NormalizeSettings:
     origin_marker: str = setting("paper III ('a specific marker'); empty: the marker nearest the centroid")
     rigid_markers: tuple[str, ...] = setting("Eq. 1-2; empty: the corpus's rigid markers, else all markers as in the paper")
     max_gap_frames: int = setting("not in the paper: gap filling", unit="frames", ge=0)
-    reference_take: str = setting("Eq. 1-2 reference frame; empty: leading silences of neutral takes")
+    reference_take: str = setting("Eq. 1-2 reference frame; empty: leading silences of neutral takes (or the first "
+                                  "take when reference_frame is set)")
     reference_frame: int = setting("Eq. 1-2 reference frame; -1: automatic", unit="frame index", ge=-1)
     reference_silence_s: float = setting("Eq. 1-2 automatic reference", unit="s", gt=0)
     rigid_max_spread_mm: float = setting("not in the paper: rigid markers found from the data when none are named; "

@@ -183,26 +183,36 @@ def _distances(frames: np.ndarray) -> np.ndarray:
 
 
 def typical_frame(frames: np.ndarray, max_frames: int = 1000) -> int:
-    """The take's most typical frame: among the frames that see the most of the markers seen in at
-    least half the frames, the one whose
-    marker-to-marker distances are nearest (RMS, mm) to their medians over the take.
+    """The take's most typical frame: the face it holds most, found from marker-to-marker
+    distances alone (they do not change with head pose, so no alignment is needed).
 
-    Distances do not change with head pose, so no alignment is needed; for speech and singing the
-    median face is close to the face at rest, so this stands in for a neutral frame where no
-    silence is marked. frames : (T, M, 3) mm, NaN where unseen. Returns a frame index into ``frames``.
+    Each frame is described by the distances between the markers seen in at least half the
+    frames; among the frames that see the most of them (at most ``max_frames`` evenly spaced),
+    the typical one is the mode of that description: the frame with the smallest RMS distance (mm)
+    to its k-th nearest frame, k one twentieth of the frames. A face at rest is held often and
+    still (the lips stop each other when closed) while speech and song pass through open mouths
+    at every size, so the densest frame is the rest pose where a median would be half open (a
+    singer holds the mouth open much of a take). frames : (T, M, 3) mm, NaN where unseen.
+    Returns a frame index into ``frames``.
     """
     frames = np.asarray(frames)
     visible = ~np.isnan(frames).any(axis=2)  # (T, M)
     common = visible.mean(axis=0) >= 0.5  # markers seen in most frames; a rarely seen one does not pick the frame
-    frames = frames[:, common] if common.sum() >= 3 else frames
-    seen = visible[:, common].sum(axis=1) if common.sum() >= 3 else visible.sum(axis=1)
+    if common.sum() < 3:
+        common = visible.any(axis=0)
+    seen = visible[:, common].sum(axis=1)
     full = np.nonzero(seen == seen.max())[0]
     idx = full if len(full) <= max_frames else full[np.linspace(0, len(full) - 1, max_frames).round().astype(int)]
-    d = _distances(np.asarray(frames[idx], np.float64))
-    median = np.nanmedian(d, axis=0)
-    with np.errstate(invalid="ignore"):
-        score = np.sqrt(np.nanmean((d - median) ** 2, axis=(1, 2)))
-    return int(idx[np.nanargmin(score)])
+    d = _distances(np.asarray(frames[idx][:, common], np.float64))
+    upper = np.triu_indices(d.shape[1], 1)
+    features = np.nan_to_num(d[:, upper[0], upper[1]].astype(np.float64))  # (N, P) mm
+    sq = (features**2).sum(1)
+    between = np.sqrt(np.maximum(sq[:, None] + sq[None] - 2 * features @ features.T, 0.0) / features.shape[1])
+    k = min(max(1, len(idx) // 20), len(idx) - 1)
+    if k == 0:
+        return int(idx[0])
+    kth = np.partition(between, k, axis=1)[:, k]  # column 0 is the frame itself
+    return int(idx[np.argmin(kth)])
 
 
 def find_rigid_markers(frames: np.ndarray, *, max_spread_mm: float, min_markers: int = 3,

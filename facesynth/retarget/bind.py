@@ -4,6 +4,9 @@ A real capture has its own marker names and count and no binding to any rig. One
 (the neutral, or a chosen one) is fitted to the rig's surface by a similarity (scale, rotation,
 translation) with no known correspondence, then each marker takes its nearest surface vertex.
 
+Markers the capture shows riding on the jaw are kept on vertices the rig's jaw opening carries,
+and the others off them (:func:`jaw_sides`): a similarity cannot absorb a face's proportions.
+
 The fit (:func:`fit_to_surface`) is iterative closest point with scale (Umeyama's similarity on
 the nearest vertices, trimmed: the worst ``1 - keep`` of the markers, e.g. a headband or a
 marker on the neck, take no part), started from several poses; the best few are refined
@@ -34,6 +37,9 @@ import numpy as np
 from scipy.spatial import cKDTree
 
 from ..motion.rigid import similarity_fit
+
+#: A rig vertex rides on the jaw when jaw opening moves it by at least this share of its largest move.
+JAW_VERTEX_SHARE = 0.35
 
 #: How many of the best point-to-point fits are refined point-to-plane.
 REFINED_STARTS = 6
@@ -233,13 +239,16 @@ def fit_to_surface(points: np.ndarray, vertices: np.ndarray, faces: np.ndarray |
 def bind_markers(frame: np.ndarray, names: list[str], vertices: np.ndarray, faces: np.ndarray | None = None, *,
                  max_residual_mm: float,
                  up: str | None = None, forward: str | None = None, keep: float = 0.8, iterations: int = 60,
-                 frame_index: int = 0) -> Binding:
+                 frame_index: int = 0, allowed: list | None = None) -> Binding:
     """Place the markers of one capture frame on the rig.
 
     frame : (M, 3) mm, NaN for markers unseen in it; names : the M marker names; vertices : (V, 3)
     the rig's neutral (rig units; every vertex may be chosen, not only the front half); faces :
     (F, 3) its triangles, for the point-to-plane refinement (None: point-to-point only).
     max_residual_mm : markers farther than this from their vertex (capture mm) are flagged.
+    allowed : per marker, None or the (K,) vertex indices it may take (:func:`jaw_sides`); a
+    marker takes the nearest of them unless that is more than ``2 max_residual_mm`` farther than
+    its nearest vertex.
     Raises ValueError when fewer than four markers are seen in the frame.
     """
     frame = np.asarray(frame, np.float64)
@@ -247,7 +256,65 @@ def bind_markers(frame: np.ndarray, names: list[str], vertices: np.ndarray, face
     if seen.sum() < 4:
         raise ValueError(f"only {int(seen.sum())} markers are seen in frame {frame_index}; a fit needs at least 4")
     fit = fit_to_surface(frame[seen], vertices, faces, up=up, forward=forward, keep=keep, iterations=iterations)
-    dist, nearest = cKDTree(np.asarray(vertices, np.float64)).query(fit.apply(frame[seen]))
+    placed = fit.apply(frame[seen])
+    dist, nearest = cKDTree(np.asarray(vertices, np.float64)).query(placed)
+    if allowed is not None:  # a marker limited to some vertices (its side of the jaw) takes the nearest of those
+        for k, m in enumerate(np.nonzero(seen)[0]):
+            if allowed[m] is not None and len(allowed[m]):
+                d = np.linalg.norm(np.asarray(vertices)[allowed[m]] - placed[k], axis=1)
+                if d.min() <= dist[k] + 2 * max_residual_mm * fit.scale:
+                    dist[k], nearest[k] = d.min(), allowed[m][np.argmin(d)]
     residual = dist / fit.scale
     return Binding([n for n, s in zip(names, seen) if s], nearest.astype(np.int64), residual,
                    residual > max_residual_mm, [n for n, s in zip(names, seen) if not s], frame_index, fit)
+
+
+
+def jaw_sides(displacements: np.ndarray, jaw_motion: np.ndarray, *, jaw_share: float = 0.5) -> list:
+    """Which rig vertices each marker may take, by the side of the jaw it moves with.
+
+    A similarity cannot absorb a face's proportions: a capture whose mouth sits lower under the
+    nose than the rig's puts upper-lip markers on the rig's lower lip, and a solve then explains
+    an upper lip that rises with jaw opening plus lip closing. The capture says which markers the
+    jaw carries: the marker moving most against the head (the chin or lower lip in speech and
+    song) gives the jaw's direction (its first principal axis); a marker whose motion along it
+    correlates with the jaw's by 0.8 or more and reaches ``jaw_share`` of its size rides on the
+    jaw, one that correlates by at most 0.3 or moves less than a quarter as much does not, the
+    rest (cheeks, the jaw's sides) are left free. The rig says which vertices jaw opening carries
+    (``jaw_motion``, its displacement length per vertex): those moving at least
+    :data:`JAW_VERTEX_SHARE` of its largest (on the built-in rig: the lower lip, chin and mouth
+    corners; the upper lip moves under an eighth).
+
+    displacements : (T, M, 3) mm, the markers' motion with head motion removed, from a rest frame
+    (NaN where unseen); jaw_motion : (V,) rig units. Returns per marker None (free) or the (K,)
+    vertex indices it may take.
+    """
+    d = np.asarray(displacements, np.float64)
+    seen = (~np.isnan(d).any(axis=2)).mean(axis=0) >= 0.5
+    size = np.zeros(d.shape[1])
+    size[seen] = np.sqrt(np.nanmean((d[:, seen] ** 2).sum(axis=2), axis=0))  # (M,) RMS displacement, mm
+    if not seen.any():
+        return [None] * d.shape[1]
+    jaw = int(np.argmax(np.where(seen, size, -np.inf)))
+    track = d[:, jaw]
+    ok = ~np.isnan(track).any(axis=1)
+    _, _, vt = np.linalg.svd(track[ok] - track[ok].mean(0), full_matrices=False)
+    signal = track @ vt[0]
+    carried = jaw_motion >= JAW_VERTEX_SHARE * jaw_motion.max()
+    on_jaw, off_jaw = np.nonzero(carried)[0], np.nonzero(~carried)[0]
+    out: list = []
+    for m in range(d.shape[1]):
+        along = d[:, m] @ vt[0]
+        both = ~np.isnan(along) & ~np.isnan(signal)
+        if not seen[m] or both.sum() < 3 or np.std(along[both]) == 0:
+            out.append(None)
+            continue
+        r = float(np.corrcoef(along[both], signal[both])[0, 1])
+        share = size[m] / max(size[jaw], 1e-9)
+        if r >= 0.8 and share >= jaw_share:
+            out.append(on_jaw)
+        elif r <= 0.3 or share < 0.25:
+            out.append(off_jaw)
+        else:
+            out.append(None)
+    return out

@@ -87,22 +87,28 @@ def load_rig(path: Path | None, binding: Path | None) -> TargetRig:
     return read_rig(Path(path), binding)
 
 
-def load_rig_mesh(path: Path | None) -> tuple[str, np.ndarray, np.ndarray]:
-    """(name, neutral (V, 3) in rig units, faces (F, 3)) of the built-in rig (``path`` None or
-    ``builtin``) or a user's rig (an OBJ folder or a glTF file), no binding needed."""
+#: The shape whose displacement tells which vertices the jaw carries (ARKit's name, ICT's too).
+JAW_SHAPE = "jawOpen"
+
+
+def load_rig_mesh(path: Path | None) -> tuple[str, np.ndarray, np.ndarray, np.ndarray | None]:
+    """(name, neutral (V, 3) in rig units, faces (F, 3), the (V,) displacement length of its
+    ``jawOpen`` shape or None without one) of the built-in rig (``path`` None or ``builtin``) or
+    a user's rig (an OBJ folder or a glTF file), no binding needed."""
     if path is None or str(path) == BUILTIN:
         rig = load_face_rig()
-        return BUILTIN_RIG_NAME, rig.neutral, rig.faces
+        return BUILTIN_RIG_NAME, rig.neutral, rig.faces, np.linalg.norm(rig.deltas[rig.shape_index(JAW_SHAPE)], axis=1)
     path = Path(path)
     if not path.exists():
         raise InputError(f"{path}: rig not found; give a folder of OBJ files, a .gltf/.glb file or 'builtin'.")
     if path.is_dir():
-        name, _, neutral, faces, _, _ = _read_obj_folder(path)
+        name, _, neutral, faces, names, deltas = _read_obj_folder(path)
     elif path.suffix.lower() in (".gltf", ".glb"):
-        name, _, neutral, faces, _, _ = _read_gltf(path)
+        name, _, neutral, faces, names, deltas = _read_gltf(path)
     else:
         raise InputError(f"{path}: unsupported rig {path.suffix!r}; give a folder of OBJ files or a .gltf/.glb file.")
-    return name, neutral, faces
+    jaw = np.linalg.norm(deltas[list(names).index(JAW_SHAPE)], axis=1) if JAW_SHAPE in names else None
+    return name, neutral, faces, jaw
 
 
 def read_rig(path: Path, binding_path: Path | None) -> TargetRig:

@@ -2,8 +2,11 @@
 ``solve``, ``rig-mesh``, ``deform`` and ``ingest`` read (``marker,vertex,rigid``, plus
 ``residual_mm`` and ``flagged`` for the user to check).
 
-One frame (``bind.frame``, or the take's most typical frame) is fitted to the rig's surface by
-:func:`facesynth.retarget.bind.bind_markers`; the rigid flags are the markers whose mutual
+One frame is fitted to the rig's surface by :func:`facesynth.retarget.bind.bind_markers`:
+``bind.frame``, else the take's most typical frame (:func:`facesynth.motion.rigid.typical_frame`,
+the face it holds most; ``normalize`` takes the same frame as its reference when no silence is
+marked); markers the capture shows riding on the jaw take vertices the rig's ``jawOpen`` carries,
+and markers that do not, vertices it does not (:func:`facesynth.retarget.bind.jaw_sides`); the rigid flags are the markers whose mutual
 distances vary least over the whole take (:func:`facesynth.motion.rigid.find_rigid_markers`,
 with ``normalize.rigid_max_spread_mm``), so that ``ingest`` records them when the CSV is saved
 as ``markers.csv`` beside the manifest and ``normalize`` fits the head pose on them.
@@ -20,8 +23,8 @@ from ..config import BindSettings, NormalizeSettings
 from ..errors import InputError
 from ..formats.mesh import write_binding
 from ..formats.mocap import read_mocap
-from ..motion.rigid import find_rigid_markers, typical_frame
-from ..retarget.bind import AXES, bind_markers
+from ..motion.rigid import fill_gaps, find_rigid_markers, head_pose, typical_frame
+from ..retarget.bind import AXES, bind_markers, jaw_sides
 from ..retarget.rig import load_rig_mesh
 
 
@@ -43,13 +46,22 @@ def run(capture: Path, out: Path, settings: BindSettings, normalize_settings: No
     if frame >= len(positions):
         raise InputError(f"{capture}: bind.frame {frame} is beyond the take's {len(positions)} frames; choose a frame "
                          f"from 0 to {len(positions) - 1}.")
-    rig_name, neutral, faces = load_rig_mesh(rig_path)
+    rig_name, neutral, faces, jaw_motion = load_rig_mesh(rig_path)
     try:
-        binding = bind_markers(positions[frame], take.names, neutral, faces, max_residual_mm=settings.max_residual_mm,
-                               up=up, forward=forward, keep=settings.keep, iterations=settings.iterations,
-                               frame_index=frame)
         rigid_idx, spreads = find_rigid_markers(positions, max_spread_mm=normalize_settings.rigid_max_spread_mm,
                                                 min_markers=normalize_settings.rigid_min_markers)
+        allowed = None
+        if jaw_motion is not None:  # markers kept on their side of the jaw (see jaw_sides)
+            filled = positions.astype(np.float64)
+            for m in range(filled.shape[1]):
+                filled[:, m], _ = fill_gaps(filled[:, m], normalize_settings.max_gap_frames)
+            rest = filled[frame]
+            if not np.isnan(rest[rigid_idx]).any():
+                aligned, _, _, _ = head_pose(filled, rest, rigid_idx)
+                allowed = jaw_sides(aligned - rest, jaw_motion)
+        binding = bind_markers(positions[frame], take.names, neutral, faces, max_residual_mm=settings.max_residual_mm,
+                               up=up, forward=forward, keep=settings.keep, iterations=settings.iterations,
+                               frame_index=frame, allowed=allowed)
     except ValueError as exc:
         raise InputError(f"{capture}: {exc}; choose a frame that sees the face's markers with --frame.") from None
     rigid = {take.names[i] for i in rigid_idx}

@@ -46,15 +46,15 @@ def choose_origin(reference_frames: np.ndarray, names: list[str], settings: Norm
 def reference_frame(markers: np.ndarray, takes: Takes, phones: Phones, fps: float,
                     settings: NormalizeSettings) -> np.ndarray:
     """Candidate frames (C, M, 3) mm for the neutral closed-mouth reference, raw capture: the named
-    take's frame, else the leading silences of the neutral training takes, else (no silence is
+    take's frame (a frame without a take: of the first take), else the leading silences of the neutral training takes, else (no silence is
     marked) the first take's most typical frame (:func:`~facesynth.motion.rigid.typical_frame`)."""
-    if settings.reference_take:
-        if settings.reference_take not in takes.name:
+    if settings.reference_take or settings.reference_frame >= 0:  # a frame alone is of the first take
+        if settings.reference_take and settings.reference_take not in takes.name:
             raise InputError(f"normalize.reference_take {settings.reference_take!r} is not a take of this corpus.")
-        i = takes.index(settings.reference_take)
+        i = takes.index(settings.reference_take) if settings.reference_take else 0
         frame = settings.reference_frame if settings.reference_frame >= 0 else 0
         if frame >= takes.frame_count[i]:
-            raise InputError(f"normalize.reference_frame {frame} is beyond take {settings.reference_take!r} ({takes.frame_count[i]} frames).")
+            raise InputError(f"normalize.reference_frame {frame} is beyond take {takes.name[i]!r} ({takes.frame_count[i]} frames).")
         return markers[takes.frame_start[i] + frame][None]
     candidates = []
     for i in range(len(takes)):
