@@ -163,3 +163,22 @@ def test_facial_sing_binds_and_solves(tmp_path):
     jaw_open, mouth_close = weights[:, rig.shape_index("jawOpen")], weights[:, rig.shape_index("mouthClose")]
     assert np.percentile(jaw_open, 95) > 0.5  # she sings with her mouth open
     assert mouth_close.mean() < 0.05  # and the lips part with the jaw (no jaw opening undone by lip closing)
+
+
+def test_bind_on_a_users_obj_rig_matches_the_builtin(user_capture, config, tmp_path):
+    """The built-in rig exported as a user's OBJ folder (neutral, jawOpen, one more shape) binds
+    the capture to the same vertices."""
+    from facesynth.formats.mesh import write_obj
+
+    rig = load_face_rig()
+    folder = tmp_path / "rig"
+    folder.mkdir()
+    write_obj(folder / "neutral.obj", rig.neutral, rig.faces)
+    for name in ("jawOpen", "mouthSmile_L"):
+        write_obj(folder / f"{name}.obj", rig.neutral + rig.deltas[rig.shape_index(name)], rig.faces)
+    ours, builtin = tmp_path / "ours.csv", tmp_path / "builtin.csv"
+    s = bind.run(user_capture / "take.c3d", ours, config.settings("bind"), config.settings("normalize"), folder)
+    bind.run(user_capture / "take.c3d", builtin, config.settings("bind"), config.settings("normalize"), "builtin")
+    assert s["rig"] == "rig"
+    a, b = read_binding(ours), read_binding(builtin)
+    assert np.mean([a[n] == b[n] for n in a]) > 0.95
