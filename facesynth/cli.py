@@ -654,8 +654,13 @@ def bind(ctx: Context, capture: Path, rig, frame, up, forward, output: Path):
         ctx.say(f"warning: {len(s['flagged'])} markers lie more than {s['max_residual_mm']:g} mm from the rig's surface: "
                 + ", ".join(f"{n} {s['residual_mm'][n]:.1f} mm" for n in s["flagged"])
                 + "; check them in the CSV (flagged = 1), or delete their rows.")
-    ctx.say("rigid markers (found from the data; spread in mm): "
-            + ", ".join(f"{n} {x:.2f}" for n, x in zip(s["rigid"], s["rigid_spreads_mm"])))
+    for note in s["notes"]:
+        ctx.say(f"note: {note}.")
+    if s["shared_vertices"]:
+        ctx.say(f"note: {s['shared_vertices']} markers share their vertex with another; check the CSV.")
+    if s["rigid"]:
+        ctx.say("rigid markers (found from the data; spread in mm): "
+                + ", ".join(f"{n} {x:.2f}" for n, x in zip(s["rigid"], s["rigid_spreads_mm"])))
     ctx.say(f"bound {s['markers']} markers of frame {s['frame']} to rig {s['rig']} (scale {s['scale']:.3g}; residual "
             f"median {s['residual_median_mm']:.2f} mm, 95th percentile {s['residual_p95_mm']:.2f} mm) -> {output}")
 

@@ -5,11 +5,13 @@
 One frame is fitted to the rig's surface by :func:`facesynth.retarget.bind.bind_markers`:
 ``bind.frame``, else the take's most typical frame (:func:`facesynth.motion.rigid.typical_frame`,
 the face it holds most; ``normalize`` takes the same frame as its reference when no silence is
-marked); markers the capture shows riding on the jaw take vertices the rig's ``jawOpen`` carries,
-and markers that do not, vertices it does not (:func:`facesynth.retarget.bind.jaw_sides`); the rigid flags are the markers whose mutual
-distances vary least over the whole take (:func:`facesynth.motion.rigid.find_rigid_markers`,
-with ``normalize.rigid_max_spread_mm``), so that ``ingest`` records them when the CSV is saved
-as ``markers.csv`` beside the manifest and ``normalize`` fits the head pose on them.
+marked); markers the capture shows riding on the jaw take vertices the rig's ``jawOpen``
+carries, and markers that do not, vertices it does not (:func:`facesynth.retarget.bind.jaw_sides`).
+The rigid flags are the markers whose mutual distances vary least over the whole take
+(:func:`facesynth.motion.rigid.find_rigid_markers`, with ``normalize.rigid_max_spread_mm``), so
+that ``ingest`` records them when the CSV is saved as ``markers.csv`` beside the manifest and
+``normalize`` fits the head pose on them; a take with too few markers seen for that gets no
+rigid flags (and no jaw sides), with a note.
 """
 
 from __future__ import annotations
@@ -47,11 +49,16 @@ def run(capture: Path, out: Path, settings: BindSettings, normalize_settings: No
         raise InputError(f"{capture}: bind.frame {frame} is beyond the take's {len(positions)} frames; choose a frame "
                          f"from 0 to {len(positions) - 1}.")
     rig_name, neutral, faces, jaw_motion = load_rig_mesh(rig_path)
+    notes = []
     try:
         rigid_idx, spreads = find_rigid_markers(positions, max_spread_mm=normalize_settings.rigid_max_spread_mm,
                                                 min_markers=normalize_settings.rigid_min_markers)
+    except ValueError as exc:
+        rigid_idx, spreads = np.zeros(0, np.int64), np.zeros(0)
+        notes.append(f"no rigid markers found ({exc}); name them in the CSV's rigid column")
+    try:
         allowed = None
-        if jaw_motion is not None:  # markers kept on their side of the jaw (see jaw_sides)
+        if jaw_motion is not None and len(rigid_idx):  # markers kept on their side of the jaw (see jaw_sides)
             filled = positions.astype(np.float64)
             for m in range(filled.shape[1]):
                 filled[:, m], _ = fill_gaps(filled[:, m], normalize_settings.max_gap_frames)
@@ -76,4 +83,4 @@ def run(capture: Path, out: Path, settings: BindSettings, normalize_settings: No
             "residual_p95_mm": float(np.percentile(binding.residual_mm, 95)), "scale": binding.fit.scale,
             "start": binding.fit.start, "rigid": [take.names[i] for i in rigid_idx],
             "rigid_spreads_mm": [float(x) for x in spreads], "shared_vertices": shared,
-            "max_residual_mm": settings.max_residual_mm}
+            "max_residual_mm": settings.max_residual_mm, "notes": notes}
