@@ -40,7 +40,7 @@ class PipelineGroup(click.Group):
     order of the README and docs/pipeline.md), then any others alphabetically."""
 
     order = ("sample-corpus", "align", "ingest", "normalize", "pca", "build-db", "db", "check", "prune", "isomap",
-             "synthesize", "suggest", "expression", "head-motion", "deform", "keyshapes", "train-trajectory", "solve", "retarget", "rig-mesh",
+             "synthesize", "suggest", "expression", "head-motion", "deform", "keyshapes", "train-trajectory", "bind", "solve", "retarget", "rig-mesh",
              "render", "export", "player", "batch", "capture", "evaluate", "tune", "devices")
 
     def list_commands(self, ctx):
@@ -111,6 +111,7 @@ READS: dict[str, tuple[str, ...]] = {
     "keyshapes": ("keyshapes",),
     "train-trajectory": ("trajectory",),
     "solve": ("solve",),
+    "bind": ("bind", "normalize"),
     "retarget": ("retarget", "keyshapes"),
     "rig-mesh": (),
     "render": ("render",),
@@ -347,6 +348,11 @@ def ingest(ctx: Context, manifest: Path, output: Path):
     from .stages import ingest as stage_ingest
 
     s = stage_ingest.run(manifest, output, ctx.config.settings("ingest"), ctx.config.settings("align"), ctx.overwrite)
+    if s["without_audio"]:
+        ctx.say(f"note: {len(s['without_audio'])} takes have no audio ({', '.join(s['without_audio'][:4])}); head-motion needs it.")
+    if s["without_phones"]:
+        ctx.say(f"note: {len(s['without_phones'])} takes have no phone timing ({', '.join(s['without_phones'][:4])}); "
+                f"build-db and what needs a database leave them out; normalize, pca and solve take them.")
     ctx.say(f"ingested {s['takes']} takes, {s['frames']} frames of {s['markers']} markers at {s['fps']:g} Hz, "
             f"{s['phones']} phone segments ({100 * s['missing_fraction']:.2f}% samples missing) -> {output}")
 
@@ -374,6 +380,9 @@ def normalize(ctx: Context, corpus: Path, output: Path):
             if s["long_gaps"] else "")
     for warning in s["warnings"]:
         ctx.say(f"warning: {warning}")
+    if s["rigid_source"] == "data":
+        ctx.say("no rigid markers are named; found from the data (spread: how much each one's distances to the others "
+                "vary): " + ", ".join(f"{n} {x:.2f} mm" for n, x in zip(s["rigid_markers"], s["rigid_spreads_mm"])))
     ctx.detail("head pose fitted on " + ", ".join(f"{n} (weight {w:.2f})" for n, w in zip(s["rigid_markers"], s["rigid_weights"])))
     ctx.say(f"normalized {s['frames']} frames (head pose on {len(s['rigid_markers'])} rigid markers){gaps} -> {output}")
 
@@ -548,8 +557,8 @@ def deform(ctx: Context, motion: Path, mesh: Path, binding: Path, output: Path):
     ctx.say(f"deformed {s['vertices']} vertices over {s['frames']} frames (marker fit RMS {s['fit_rms']:.3g} mesh units) -> {output}")
 
 
-_RIG_HELP = "A user's rig: a folder with neutral.obj and one OBJ per shape, or a .gltf/.glb with morph targets (default: the built-in ICT-FaceKit rig)."
-_BINDING_HELP = "With --rig: CSV 'marker,vertex' placing the motion's markers on the rig's vertices."
+_RIG_HELP = "A user's rig: a folder with neutral.obj and one OBJ per shape, or a .gltf/.glb with morph targets (default, or 'builtin': the built-in ICT-FaceKit rig)."
+_BINDING_HELP = "CSV 'marker,vertex' placing the motion's markers on the rig's vertices (facesynth bind writes one); needed with a user's --rig."
 
 
 @main.command()
@@ -609,15 +618,69 @@ def train_trajectory(ctx: Context, db: Path, keyshapes_path: Path, output: Path)
 
 
 @main.command()
+@click.argument("capture", type=EXISTING)
+@click.option("--rig", type=PATH, default="builtin", show_default=True,
+              help="'builtin' (the ICT-FaceKit rig), or a user's rig: a folder with neutral.obj and one OBJ per shape, "
+                   "or a .gltf/.glb (taken +y up, the face toward +z).")
+@click.option("--frame", type=click.IntRange(min=0), default=None,
+              help="Capture frame to fit (0-based). Default: bind.frame (-1: the take's most typical frame).")
+@click.option("--up", type=click.Choice(["+x", "-x", "+y", "-y", "+z", "-z"]), default=None,
+              help="The capture's up axis (with --forward). Default: found from the data.")
+@click.option("--forward", type=click.Choice(["+x", "-x", "+y", "-y", "+z", "-z"]), default=None,
+              help="The axis the capture's face looks along (with --up).")
+@click.option("-o", "--output", type=PATH, required=True, help="Output binding CSV (marker,vertex,rigid,residual_mm,flagged).")
+@stage
+def bind(ctx: Context, capture: Path, rig, frame, up, forward, output: Path):
+    """Place a capture's own markers on a rig: a binding CSV to check and edit, for solve, rig-mesh and deform.
+
+    One frame is fitted to the rig's surface (a similarity found by closest points from several
+    starts), each marker takes its nearest vertex; markers far from the surface are flagged.
+    Rigid (head) markers are found from the data. Save it as markers.csv beside the manifest
+    so ingest records the rigid flags.
+
+    \b
+    Example:
+      facesynth bind corpus/mocap/neutral_s000.c3d --rig builtin -o bound.csv
+    """
+    import dataclasses
+
+    from .stages import bind as stage
+
+    settings = ctx.config.settings("bind")
+    if frame is not None:
+        settings = dataclasses.replace(settings, frame=frame)
+    s = stage.run(capture, output, settings, ctx.config.settings("normalize"), rig, up, forward, ctx.overwrite)
+    for name, r in s["residual_mm"].items():
+        ctx.detail(f"  {name}: {r:.2f} mm from its vertex" + ("  (flagged)" if name in s["flagged"] else ""))
+    if s["unbound"]:
+        ctx.say(f"warning: not seen in frame {s['frame']}, left out: {', '.join(s['unbound'])}; choose another --frame to bind them.")
+    if s["flagged"]:
+        ctx.say(f"warning: {len(s['flagged'])} markers lie more than {s['max_residual_mm']:g} mm from the rig's surface: "
+                + ", ".join(f"{n} {s['residual_mm'][n]:.1f} mm" for n in s["flagged"])
+                + "; check them in the CSV (flagged = 1), or delete their rows.")
+    for note in s["notes"]:
+        ctx.say(f"note: {note}.")
+    if s["shared_vertices"]:
+        ctx.say(f"note: {s['shared_vertices']} markers share their vertex with another; check the CSV.")
+    if s["rigid"]:
+        ctx.say("rigid markers (found from the data; spread in mm): "
+                + ", ".join(f"{n} {x:.2f}" for n, x in zip(s["rigid"], s["rigid_spreads_mm"])))
+    ctx.say(f"bound {s['markers']} markers of frame {s['frame']} to rig {s['rig']} (scale {s['scale']:.3g}; residual "
+            f"median {s['residual_median_mm']:.2f} mm, 95th percentile {s['residual_p95_mm']:.2f} mm) -> {output}")
+
+
+@main.command()
 @click.argument("motion", type=EXISTING)
 @click.option("--rig", type=PATH, default=None, help=_RIG_HELP)
 @click.option("--binding", type=EXISTING, default=None, help=_BINDING_HELP)
+@click.option("--take", default=None, help="With a normalized capture: the take to solve (default: its only take).")
 @click.option("-o", "--output", type=PATH, required=True, help="Output curves.h5.")
 @stage
-def solve(ctx: Context, motion: Path, rig, binding, output: Path):
+def solve(ctx: Context, motion: Path, rig, binding, take, output: Path):
     """Solve the rig's blendshape weights, between 0 and 1, that best explain the markers, frame by frame.
 
     A direct facial solve with a small temporal smoothness term; the reference for retarget.
+    MOTION is a motion artifact, or a normalized capture (one take of it, at solve.output_fps).
 
     \b
     Example:
@@ -626,9 +689,10 @@ def solve(ctx: Context, motion: Path, rig, binding, output: Path):
     """
     from .stages import solve as stage
 
-    s = stage.run(motion, output, ctx.config.settings("solve"), rig, binding, ctx.overwrite)
+    s = stage.run(motion, output, ctx.config.settings("solve"), rig, binding, ctx.overwrite, take)
     ctx.say(f"solved {s['shapes']} shapes of rig {s['rig']} over {s['frames']} frames ({s['iterations']} iterations, "
-            f"marker residual RMS {s['residual_rms']:.3g} rig units) -> {output}")
+            f"marker residual RMS {s['residual_rms']:.3g} rig units; per marker median "
+            f"{s['marker_residual_median_mm']:.2f} mm, 95th percentile {s['marker_residual_p95_mm']:.2f} mm) -> {output}")
 
 
 @main.command()
@@ -689,7 +753,8 @@ def rig_mesh(ctx: Context, curves: Path, rig, binding, output: Path):
 
 @main.command()
 @click.argument("anims", nargs=-1, required=True, type=EXISTING)
-@click.option("--audio", "audios", multiple=True, required=True, type=EXISTING, help="Audio of each animation, in order.")
+@click.option("--audio", "audios", multiple=True, type=EXISTING,
+              help="Audio of each animation, in order (none: a silent soundtrack).")
 @click.option("--view", type=click.Choice(choices("render", "view")), default=None, help="Default: render.view.")
 @click.option("--compare", type=EXISTING, default=None, help="Second animation for the side-by-side view.")
 @click.option("-o", "--output", type=PATH, required=True, help="Output .avi.")

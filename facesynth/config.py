@@ -115,9 +115,13 @@ class NormalizeSettings:
     origin_marker: str = setting("paper III ('a specific marker'); empty: the marker nearest the centroid")
     rigid_markers: tuple[str, ...] = setting("Eq. 1-2; empty: the corpus's rigid markers, else all markers as in the paper")
     max_gap_frames: int = setting("not in the paper: gap filling", unit="frames", ge=0)
-    reference_take: str = setting("Eq. 1-2 reference frame; empty: leading silences of neutral takes")
+    reference_take: str = setting("Eq. 1-2 reference frame; empty: leading silences of neutral takes (or the first "
+                                  "take when reference_frame is set)")
     reference_frame: int = setting("Eq. 1-2 reference frame; -1: automatic", unit="frame index", ge=-1)
     reference_silence_s: float = setting("Eq. 1-2 automatic reference", unit="s", gt=0)
+    rigid_max_spread_mm: float = setting("not in the paper: rigid markers found from the data when none are named; "
+                                         "the most a pair's distance may vary (standard deviation)", unit="mm", gt=0)
+    rigid_min_markers: int = setting("not in the paper: fewest rigid markers found from the data", ge=3, le=1000)
 
 
 @dataclass(frozen=True)
@@ -365,6 +369,21 @@ class SolveSettings:
     iterations: int = setting("not in the papers: most iterations of the projected-gradient solve", ge=1, le=100000)
     tolerance: float = setting("not in the papers: stop when no weight moves by more than this in one iteration",
                                unit="weight", gt=0)
+    output_fps: float = setting("not in the papers: rate of the curves solved from a normalized capture (render's rate)",
+                                unit="frames/s", gt=0, le=1000)
+
+
+@dataclass(frozen=True)
+class BindSettings:
+    """``[bind]``: placing a capture's markers on a rig (``facesynth bind``)."""
+
+    frame: int = setting("not in the papers: the capture frame fitted to the rig; -1: the most typical frame",
+                         unit="frame index", ge=-1)
+    max_residual_mm: float = setting("not in the papers: markers farther than this from their rig vertex are "
+                                     "flagged", unit="mm", gt=0)
+    keep: float = setting("not in the papers: fraction of the markers each fitting step uses (the rest are taken "
+                          "as off the face)", unit="fraction", gt=0, le=1)
+    iterations: int = setting("not in the papers: most closest-point iterations per start", ge=1, le=10000)
 
 
 @dataclass(frozen=True)
@@ -408,6 +427,7 @@ SECTIONS: dict[str, type] = {
     "keyshapes": KeyshapesSettings,
     "trajectory": TrajectorySettings,
     "solve": SolveSettings,
+    "bind": BindSettings,
     "retarget": RetargetSettings,
     "render": RenderSettings,
     "limits": LimitsSettings,

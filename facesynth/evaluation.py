@@ -75,7 +75,7 @@ from .model.corpus import Corpus
 from .model.motiondb import MotionDatabase
 from .motion.dominance import DominanceModel, emotion_labels, fit_dominance, training_sentences
 from .motion.postprocess import frame_ranges
-from .motion.rigid import fill_gaps, head_pose, rigid_indices
+from .motion.rigid import choose_rigid, fill_gaps, head_pose
 from .motion.trajectory import synthesize_motion
 from .opencl import use_opencl
 from .phonemes import PAU, viseme
@@ -114,13 +114,15 @@ class Sentence:
 def normalized_take(raw: np.ndarray, db: MotionDatabase, settings: NormalizeSettings, corpus_rigid=()):
     """One take's captured markers (T, M, 3) mm, gaps filled and aligned to the database's
     reference frame as ``normalize`` does (weighted Procrustes on the rigid markers:
-    the settings', else ``corpus_rigid``, else all). Returns markers (T, M, 3), rotations (T, 3, 3), translations (T, 3) mm."""
+    the settings', else ``corpus_rigid``, else those found from this take's data). Returns markers
+    (T, M, 3), rotations (T, 3, 3), translations (T, 3) mm."""
     names = db.marker_names
-    rigid, _ = rigid_indices(names, settings.rigid_markers, [n for n in corpus_rigid if n in names])
     raw = raw.astype(np.float64)
     for m in range(raw.shape[1]):
         raw[:, m], _ = fill_gaps(raw[:, m], settings.max_gap_frames)
-    return head_pose(raw, db.reference.astype(np.float64), rigid)[:3]
+    rigid = choose_rigid(names, settings.rigid_markers, [n for n in corpus_rigid if n in names], raw,
+                         max_spread_mm=settings.rigid_max_spread_mm, min_markers=settings.rigid_min_markers)
+    return head_pose(raw, db.reference.astype(np.float64), rigid.indices)[:3]
 
 
 @dataclass

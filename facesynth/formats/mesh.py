@@ -120,15 +120,22 @@ def read_binding(path: Path) -> dict[str, int]:
     return binding
 
 
-def write_binding(path: Path, binding: dict[str, int], rigid: set[str] | None = None) -> None:
+def write_binding(path: Path, binding: dict[str, int], rigid: set[str] | None = None,
+                  residual_mm: dict[str, float] | None = None, flagged: set[str] | None = None) -> None:
     """Write a ``marker,vertex`` CSV binding (vertex: 0-based index into the mesh's vertices).
     With ``rigid``, a third column ``rigid`` marks (1) the markers that move only with the
-    head, the set a normalizer fits the head pose on (:func:`read_rigid_markers`)."""
+    head, the set a normalizer fits the head pose on (:func:`read_rigid_markers`). With
+    ``residual_mm`` and ``flagged`` (what ``facesynth bind`` knows), the columns ``residual_mm``
+    (each marker's distance to its vertex after the fit) and ``flagged`` (1: farther than the
+    setting; check it); readers ignore them."""
+    extra = residual_mm is not None
     with open(path, "w", encoding="utf-8", newline="") as fh:
         writer = csv.writer(fh)
-        writer.writerow(["marker", "vertex"] + (["rigid"] if rigid is not None else []))
+        writer.writerow(["marker", "vertex"] + (["rigid"] if rigid is not None else [])
+                        + (["residual_mm", "flagged"] if extra else []))
         for name, vertex in binding.items():
-            writer.writerow([name, vertex] + ([int(name in rigid)] if rigid is not None else []))
+            writer.writerow([name, vertex] + ([int(name in rigid)] if rigid is not None else [])
+                            + ([f"{residual_mm[name]:.2f}", int(name in (flagged or set()))] if extra else []))
 
 
 def read_rigid_markers(path: Path) -> list[str]:

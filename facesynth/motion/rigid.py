@@ -8,6 +8,8 @@ reflection is turned into the nearest rotation). The per-frame rigid transform i
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 from scipy.interpolate import CubicSpline
 
@@ -121,16 +123,31 @@ def head_pose(frames: np.ndarray, reference: np.ndarray, rigid: np.ndarray, iter
     return normalized, r, t, weights
 
 
-def rigid_indices(names: list[str], chosen, corpus_rigid) -> tuple[np.ndarray, str]:
-    """The marker indices the head pose is fitted on: ``chosen`` names (the normalize setting)
-    if any, else the corpus's rigid set, else every marker with a warning (returned as the
-    second value; empty when there is none). Unknown names are refused by the caller."""
-    for source in (chosen, corpus_rigid):
-        if source:
-            return np.array([names.index(n) for n in source]), ""
-    return np.arange(len(names)), ("the corpus marks no rigid markers and normalize.rigid_markers is empty: the head pose "
-                                   "is fitted on every marker, so speech motion leaks into it; name the markers that move "
-                                   "only with the head with --set normalize.rigid_markers=[...] or a `rigid` column in markers.csv.")
+@dataclass(frozen=True)
+class RigidChoice:
+    """The markers the head pose is fitted on.
+
+    indices : (K,) marker indices; source : "settings" (``normalize.rigid_markers``), "corpus"
+    (the ``rigid`` flags ``ingest`` recorded) or "data" (:func:`find_rigid_markers`);
+    spreads : (K,) mm, each marker's spread within the set when found from the data, else None.
+    """
+
+    indices: np.ndarray
+    source: str
+    spreads: np.ndarray | None = None
+
+
+def choose_rigid(names: list[str], chosen, corpus_rigid, frames: np.ndarray, *, max_spread_mm: float,
+                 min_markers: int) -> RigidChoice:
+    """The head-pose markers: ``chosen`` names (the normalize setting) if any, else the corpus's
+    rigid set, else the markers that keep their mutual distances over ``frames`` (T, M, 3) mm
+    (:func:`find_rigid_markers` with ``max_spread_mm`` and ``min_markers``). Unknown names are
+    refused by the caller. Raises ValueError when the data has fewer than three usable markers."""
+    for source, given in (("settings", chosen), ("corpus", corpus_rigid)):
+        if given:
+            return RigidChoice(np.array([names.index(n) for n in given]), source)
+    indices, spreads = find_rigid_markers(frames, max_spread_mm=max_spread_mm, min_markers=min_markers)
+    return RigidChoice(indices, "data", spreads)
 
 
 def similarity_fit(source: np.ndarray, target: np.ndarray) -> tuple[float, np.ndarray, np.ndarray, float]:
@@ -147,3 +164,97 @@ def similarity_fit(source: np.ndarray, target: np.ndarray) -> tuple[float, np.nd
     t = mu_t - s * r @ mu_s
     residual = float(np.sqrt(np.mean(np.sum((s * a @ r.T - b) ** 2, axis=1))))
     return s, r, t, residual
+
+
+def _sample_frames(frames: np.ndarray, max_frames: int) -> np.ndarray:
+    """At most ``max_frames`` of (T, M, 3) frames, evenly spaced (all of them when fewer)."""
+    if len(frames) <= max_frames:
+        return np.asarray(frames, np.float64)
+    return np.asarray(frames[np.linspace(0, len(frames) - 1, max_frames).round().astype(int)], np.float64)
+
+
+def _distances(frames: np.ndarray) -> np.ndarray:
+    """(T, M, M) float32 distances (mm) between every pair of markers in each frame (NaN where one
+    is unseen); one marker at a time, so no (T, M, M, 3) array is made."""
+    out = np.empty(frames.shape[:2] + (frames.shape[1],), np.float32)
+    for m in range(frames.shape[1]):
+        out[:, m] = np.sqrt(((frames - frames[:, m:m + 1]) ** 2).sum(-1))
+    return out
+
+
+def typical_frame(frames: np.ndarray, max_frames: int = 1000) -> int:
+    """The take's most typical frame: the face it holds most, found from marker-to-marker
+    distances alone (they do not change with head pose, so no alignment is needed).
+
+    Each frame is described by the distances between the markers seen in at least half the
+    frames; among the frames that see the most of them (at most ``max_frames`` evenly spaced),
+    the typical one is the mode of that description: the frame with the smallest RMS distance (mm)
+    to its k-th nearest frame, k one twentieth of the frames. A face at rest is held often and
+    still (the lips stop each other when closed) while speech and song pass through open mouths
+    at every size, so the densest frame is the rest pose where a median would be half open (a
+    singer holds the mouth open much of a take). frames : (T, M, 3) mm, NaN where unseen.
+    Returns a frame index into ``frames``.
+    """
+    frames = np.asarray(frames)
+    visible = ~np.isnan(frames).any(axis=2)  # (T, M)
+    common = visible.mean(axis=0) >= 0.5  # markers seen in most frames; a rarely seen one does not pick the frame
+    if common.sum() < 3:
+        common = visible.any(axis=0)
+    seen = visible[:, common].sum(axis=1)
+    full = np.nonzero(seen == seen.max())[0]
+    idx = full if len(full) <= max_frames else full[np.linspace(0, len(full) - 1, max_frames).round().astype(int)]
+    d = _distances(np.asarray(frames[idx][:, common], np.float64))
+    upper = np.triu_indices(d.shape[1], 1)
+    features = np.nan_to_num(d[:, upper[0], upper[1]].astype(np.float64))  # (N, P) mm
+    sq = (features**2).sum(1)
+    between = np.sqrt(np.maximum(sq[:, None] + sq[None] - 2 * features @ features.T, 0.0) / features.shape[1])
+    k = min(max(1, len(idx) // 20), len(idx) - 1)
+    if k == 0:
+        return int(idx[0])
+    kth = np.partition(between, k, axis=1)[:, k]  # column 0 is the frame itself
+    return int(idx[np.argmin(kth)])
+
+
+def find_rigid_markers(frames: np.ndarray, *, max_spread_mm: float, min_markers: int = 3,
+                       min_seen: float = 0.5, max_frames: int = 1000) -> tuple[np.ndarray, np.ndarray]:
+    """The markers that move only with the head, found from the data: those whose mutual
+    distances vary least over the take.
+
+    The spread of a pair is the standard deviation over the frames (mm) of the distance between
+    its two markers; a rigid body's pairs spread by marker noise alone, while speech moves the
+    lips and jaw tens of millimetres against the head. Starting from every marker seen in at
+    least ``min_seen`` of the frames, the marker with the most pairs spreading by more than
+    ``max_spread_mm`` within the set (ties: the largest RMS spread) is dropped, one at a time,
+    until no such pair is left or only ``min_markers`` are: what is left is the largest group
+    whose markers all keep their distances, the head. Counting pairs rather than averaging
+    spreads keeps a group of markers that move together (the upper lip) out: each of them
+    spreads against every marker of the head.
+
+    frames : (T, M, 3) mm, NaN where unseen (at most ``max_frames`` evenly spaced frames are used).
+    Returns the chosen marker indices (K,) in marker order and each one's spread within the
+    chosen set (K,) mm: the RMS of its pairs' spreads.
+    Raises ValueError when fewer than three markers are seen often enough.
+    """
+    sample = _sample_frames(frames, max_frames)
+    seen = (~np.isnan(sample).any(axis=2)).mean(axis=0)
+    candidates = np.nonzero(seen >= min_seen)[0]
+    if len(candidates) < 3:
+        raise ValueError(f"only {len(candidates)} markers are seen in at least {100 * min_seen:.0f}% of the frames")
+    d = _distances(sample[:, candidates])
+    both = (~np.isnan(d)).sum(axis=0)
+    with np.errstate(invalid="ignore"):
+        pair = np.where(both >= 3, np.nanstd(d, axis=0, dtype=np.float64), np.inf)  # (K, K) mm; seldom seen together: moving
+    np.fill_diagonal(pair, 0.0)
+    keep = np.arange(len(candidates))
+
+    def spreads(rows: np.ndarray) -> np.ndarray:
+        sub = np.minimum(pair[np.ix_(rows, rows)], 1e6)
+        return np.sqrt((sub**2).sum(axis=1) / max(len(rows) - 1, 1))
+
+    while len(keep) > max(min_markers, 3):
+        over = (pair[np.ix_(keep, keep)] > max_spread_mm).sum(axis=1)
+        if not over.any():
+            break
+        worst = np.lexsort((spreads(keep), over))[-1]  # most pairs over the bound, then the largest spread
+        keep = np.delete(keep, worst)
+    return candidates[keep], spreads(keep)

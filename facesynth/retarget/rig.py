@@ -65,22 +65,50 @@ class TargetRig:
         return np.array(cols), np.array([self.binding[marker_names[c]] for c in cols])
 
 
-def builtin_rig() -> TargetRig:
-    """The ICT-FaceKit rig shipped with facesynth, in mm, bound to the virtual actress's markers."""
+#: The ``--rig`` value naming the built-in rig.
+BUILTIN = "builtin"
+
+
+def builtin_rig(binding: dict | None = None) -> TargetRig:
+    """The ICT-FaceKit rig shipped with facesynth, in mm, bound to the virtual actress's markers,
+    or to ``binding`` (marker name -> vertex, e.g. a user's capture placed by ``facesynth bind``)."""
     from ..corpus.markers import build_marker_set
 
     rig = load_face_rig()
     return TargetRig(BUILTIN_RIG_NAME, builtin_rig_sha256(), rig.neutral, rig.faces, rig.shape_names, rig.deltas,
-                     build_marker_set(rig).binding())
+                     build_marker_set(rig).binding() if binding is None else binding)
 
 
 def load_rig(path: Path | None, binding: Path | None) -> TargetRig:
-    """The built-in rig when ``path`` is None, else :func:`read_rig`."""
-    if path is None:
-        if binding is not None:
-            raise InputError(f"{binding}: a binding is only read with a user's --rig; the built-in rig has its own.")
-        return builtin_rig()
+    """The built-in rig when ``path`` is None or ``builtin`` (with its own binding, or ``binding``:
+    a user's markers placed on it), else :func:`read_rig`."""
+    if path is None or str(path) == BUILTIN:
+        return builtin_rig(read_binding(Path(binding)) if binding is not None else None)
     return read_rig(Path(path), binding)
+
+
+#: The shape whose displacement tells which vertices the jaw carries (ARKit's name, ICT's too).
+JAW_SHAPE = "jawOpen"
+
+
+def load_rig_mesh(path: Path | None) -> tuple[str, np.ndarray, np.ndarray, np.ndarray | None]:
+    """(name, neutral (V, 3) in rig units, faces (F, 3), the (V,) displacement length of its
+    ``jawOpen`` shape or None without one) of the built-in rig (``path`` None or ``builtin``) or
+    a user's rig (an OBJ folder or a glTF file), no binding needed."""
+    if path is None or str(path) == BUILTIN:
+        rig = load_face_rig()
+        return BUILTIN_RIG_NAME, rig.neutral, rig.faces, np.linalg.norm(rig.deltas[rig.shape_index(JAW_SHAPE)], axis=1)
+    path = Path(path)
+    if not path.exists():
+        raise InputError(f"{path}: rig not found; give a folder of OBJ files, a .gltf/.glb file or 'builtin'.")
+    if path.is_dir():
+        name, _, neutral, faces, names, deltas = _read_obj_folder(path)
+    elif path.suffix.lower() in (".gltf", ".glb"):
+        name, _, neutral, faces, names, deltas = _read_gltf(path)
+    else:
+        raise InputError(f"{path}: unsupported rig {path.suffix!r}; give a folder of OBJ files or a .gltf/.glb file.")
+    jaw = np.linalg.norm(deltas[list(names).index(JAW_SHAPE)], axis=1) if JAW_SHAPE in names else None
+    return name, neutral, faces, jaw
 
 
 def read_rig(path: Path, binding_path: Path | None) -> TargetRig:

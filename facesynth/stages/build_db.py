@@ -79,7 +79,8 @@ def build_nodes(takes: Takes, phones: Phones, fps: float) -> Nodes:
                 rows["suc"][previous_node] = k
             previous_node = k
     if not rows["phone"]:
-        raise InputError("no training phones: the manifest's split column marks no take 'train', or every phone is a pause.")
+        raise InputError("no training phones: the manifest's split column marks no take 'train', every phone is a pause, "
+                         "or the takes have no phone timing (give each an alignment or a transcript in the manifest).")
     ints = ("viseme", "take", "frame_start", "frame_count", "pre", "suc")
     return Nodes(**{k: (np.array(v, np.int64) if k in ints else np.array(v) if k in ("start_s", "end_s") else v)
                     for k, v in rows.items()})

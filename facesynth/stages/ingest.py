@@ -1,8 +1,12 @@
 """``facesynth ingest``: a manifest of takes -> the ``corpus`` artifact (paper III).
 
 The manifest is a CSV with the columns ``take, mocap, audio, alignment, transcript,
-emotion, sentence, split`` (paths relative to the manifest). A take with an empty
-``alignment`` and a ``transcript`` is aligned with :mod:`facesynth.alignment`.
+emotion, sentence, split`` (paths relative to the manifest); only ``take`` and ``mocap`` are
+required. A take with an empty ``alignment`` and a ``transcript`` is aligned with
+:mod:`facesynth.alignment`. A take with neither has no phones, and one with an empty ``audio``
+no audio: ``normalize``, ``pca``, ``solve`` (on the normalized takes), ``rig-mesh`` and
+``render`` (silent) accept such takes; ``build-db`` (and what needs a database) needs phone
+timing, and ``head-motion`` audio. An empty ``emotion`` is neutral.
 Phones are mapped to the Festival set; marker gaps stay NaN here.
 
 Emotion: a take has its manifest ``emotion`` throughout, unless its TextGrid has an emotion
@@ -35,7 +39,9 @@ from ..progress import progress
 from ..model.corpus import Corpus
 from ..model.tables import Phones, Takes
 
-REQUIRED_COLUMNS = ("take", "mocap", "audio", "alignment", "emotion")
+REQUIRED_COLUMNS = ("take", "mocap")
+#: The sample rate recorded for a corpus none of whose takes has audio (no samples are stored).
+NO_AUDIO_RATE = 16000
 SPLITS = ("train", "val", "test")
 
 
@@ -46,7 +52,7 @@ class ManifestRow:
     line: int
     take: str
     mocap: Path
-    audio: Path
+    audio: Path | None
     alignment: Path | None
     transcript: str
     emotion: str
@@ -76,7 +82,7 @@ def read_manifest(path: Path, settings: IngestSettings) -> list[ManifestRow]:
             if take in seen:
                 raise InputError(f"{where}: take {take!r} appears twice; take names must be unique.")
             seen.add(take)
-            emotion = (raw.get("emotion") or "").strip().lower()
+            emotion = (raw.get("emotion") or "").strip().lower() or "neutral"
             emotion = aliases.get(emotion, emotion)
             if emotion not in settings.emotions:
                 raise InputError(f"{where}: unknown emotion {raw.get('emotion')!r}; use one of {', '.join(settings.emotions)}.")
@@ -85,10 +91,15 @@ def read_manifest(path: Path, settings: IngestSettings) -> list[ManifestRow]:
                 raise InputError(f"{where}: unknown split {split!r}; use train, val or test.")
             alignment = (raw.get("alignment") or "").strip()
             transcript = (raw.get("transcript") or "").strip()
-            if not alignment and not transcript:
-                raise InputError(f"{where}: take {take!r} has neither an alignment nor a transcript to align.")
+            audio = (raw.get("audio") or "").strip()
+            mocap = (raw.get("mocap") or "").strip()
+            if not mocap:
+                raise InputError(f"{where}: take {take!r} has no mocap file; give its marker file in the mocap column.")
+            if transcript and not alignment and not audio:
+                raise InputError(f"{where}: take {take!r} has a transcript to align but no audio; give its audio, "
+                                 f"or its phone timing in the alignment column, or leave the transcript empty.")
             rows.append(ManifestRow(
-                line, take, base / raw["mocap"].strip(), base / raw["audio"].strip(),
+                line, take, base / mocap, base / audio if audio else None,
                 base / alignment if alignment else None, transcript, emotion,
                 (raw.get("sentence") or take).strip(), split,
             ))
@@ -139,14 +150,16 @@ def phone_emotions(row: ManifestRow, segs: list[Segment], settings: IngestSettin
 
 def ingest(rows: list[ManifestRow], settings: IngestSettings, align_settings: AlignSettings):
     """Read and check every take; a take with only a transcript is aligned with ``align_settings``.
-    Returns (markers (F,M,3) float32 mm, names, fps, takes, phones, audio list of (samples, rate))."""
+    Returns (markers (F,M,3) float32 mm, names, fps, takes, phones, audio list of (samples, rate);
+    a take without audio has no samples and rate None, a take with neither alignment nor
+    transcript no phones)."""
     markers, audio, starts, counts = [], [], [], []
     phone_take, phone_start, phone_end, phone_label, phone_emotion = [], [], [], [], []
     names = fps = None
     for i, row in enumerate(progress(rows, "ingest")):
         where = f"take {row.take!r} (manifest line {row.line})"
         for label, p in (("mocap", row.mocap), ("audio", row.audio)):
-            if not p.exists():
+            if p is not None and not p.exists():
                 raise InputError(f"{where}: {label} file {p} not found; fix the manifest's {label} column.")
         take = read_mocap(row.mocap)
         if names is None:
@@ -160,20 +173,24 @@ def ingest(rows: list[ManifestRow], settings: IngestSettings, align_settings: Al
             raise InputError(f"{row.mocap}: frame rate {take.fps:g} Hz differs from the first take's {fps:g} Hz; resample the takes to one rate.")
         if np.isnan(take.positions).all():
             raise InputError(f"{row.mocap}: every marker sample is missing; the take is empty.")
-        samples, rate = read_audio(row.audio)
         motion_s = take.positions.shape[0] / take.fps
-        audio_s = len(samples) / rate
-        if abs(audio_s - motion_s) > settings.max_audio_mismatch_s:
-            raise InputError(
-                f"{row.audio}: audio lasts {audio_s:.2f} s but the motion {motion_s:.2f} s; "
-                f"trim or pad them to the same length (tolerance {settings.max_audio_mismatch_s:g} s)."
-            )
-        segs = _segments_for(row, settings, align_settings, samples, rate, where)
-        source = str(row.alignment or row.audio)
-        check_segments(segs, source)
-        if segs[-1].end > motion_s + settings.max_audio_mismatch_s:
-            raise InputError(f"{source}: the alignment ends at {segs[-1].end:.2f} s, after the motion ({motion_s:.2f} s); use the take's own alignment.")
-        labels = map_phones([s.label for s in segs], source, [s.start for s in segs])
+        samples, rate = np.zeros(0, np.float32), None
+        if row.audio is not None:
+            samples, rate = read_audio(row.audio)
+            audio_s = len(samples) / rate
+            if abs(audio_s - motion_s) > settings.max_audio_mismatch_s:
+                raise InputError(
+                    f"{row.audio}: audio lasts {audio_s:.2f} s but the motion {motion_s:.2f} s; "
+                    f"trim or pad them to the same length (tolerance {settings.max_audio_mismatch_s:g} s)."
+                )
+        segs: list[Segment] = []
+        if row.alignment is not None or row.transcript:  # a take without either has no phones
+            segs = _segments_for(row, settings, align_settings, samples, rate, where)
+            source = str(row.alignment or row.audio)
+            check_segments(segs, source)
+            if segs[-1].end > motion_s + settings.max_audio_mismatch_s:
+                raise InputError(f"{source}: the alignment ends at {segs[-1].end:.2f} s, after the motion ({motion_s:.2f} s); use the take's own alignment.")
+        labels = map_phones([s.label for s in segs], source, [s.start for s in segs]) if segs else []
         starts.append(sum(counts))
         counts.append(take.positions.shape[0])
         markers.append(take.positions)
@@ -185,7 +202,8 @@ def ingest(rows: list[ManifestRow], settings: IngestSettings, align_settings: Al
         phone_emotion += phone_emotions(row, segs, settings)
     takes = Takes([r.take for r in rows], [r.emotion for r in rows], [r.sentence for r in rows],
                   [r.split for r in rows], [r.transcript for r in rows], np.array(starts), np.array(counts))
-    phones = Phones(np.array(phone_take), np.array(phone_start), np.array(phone_end), phone_label, phone_emotion)
+    phones = Phones(np.array(phone_take, np.int64), np.array(phone_start, np.float64), np.array(phone_end, np.float64),
+                    phone_label, phone_emotion)
     return np.concatenate(markers).astype(np.float32), names, fps, takes, phones, audio
 
 
@@ -194,8 +212,8 @@ def run(manifest: Path, out: Path, settings: IngestSettings, align_settings: Ali
     """Read the takes of ``manifest`` and write ``out`` (a ``corpus`` artifact); returns a summary."""
     rows = read_manifest(manifest, settings)
     markers, names, fps, takes, phones, audio = ingest(rows, settings, align_settings)
-    rate = audio[0][1]
-    samples = [resample(s, r, rate) for s, r in audio]
+    rate = next((r for _, r in audio if r is not None), NO_AUDIO_RATE)
+    samples = [resample(s, r, rate) if r is not None else s for s, r in audio]
     audio_start = np.cumsum([0] + [len(s) for s in samples[:-1]])
     binding = manifest.parent / "markers.csv"
     rigid = [n for n in read_rigid_markers(binding) if n in names] if binding.is_file() else []
@@ -204,4 +222,6 @@ def run(manifest: Path, out: Path, settings: IngestSettings, align_settings: Ali
         out, config=settings_json(settings), inputs=[manifest], overwrite=overwrite)
     missing = float(np.isnan(markers).any(axis=2).mean())
     return {"takes": len(takes), "frames": int(markers.shape[0]), "markers": len(names), "phones": len(phones),
-            "fps": fps, "missing_fraction": missing, "rigid_markers": rigid}
+            "fps": fps, "missing_fraction": missing, "rigid_markers": rigid,
+            "without_audio": [r.take for r in rows if r.audio is None],
+            "without_phones": [takes.name[i] for i in range(len(takes)) if not (phones.take == i).any()]}

@@ -7,13 +7,16 @@ frame (:mod:`facesynth.motion.rigid`); the per-frame rigid transform is kept, so
 Where the paper translates by one marker and rotates on all of them, translation and rotation
 are fitted together by weighted Procrustes on the rigid markers only (those that move with
 the head, not with speech: ``normalize.rigid_markers``, else the set the corpus marks rigid,
-else every marker with a warning), each weighted by the inverse of its residual, so neither
+else the largest group of markers whose mutual distances vary by at most
+``normalize.rigid_max_spread_mm`` over the corpus, found from the data with each one's spread
+reported), each weighted by the inverse of its residual, so neither
 one noisy marker nor jaw opening leaks into the head pose. The origin marker only places the
 reference: it is at 0 in the reference frame.
 """
 
 from __future__ import annotations
 
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -23,7 +26,7 @@ from ..errors import InputError
 from ..model.corpus import Corpus
 from ..model.frames import HeadFrames, NormalizedFrames
 from ..model.tables import Phones, Takes
-from ..motion.rigid import fill_gaps, head_pose, rigid_indices
+from ..motion.rigid import choose_rigid, fill_gaps, head_pose, typical_frame
 
 
 def choose_origin(reference_frames: np.ndarray, names: list[str], settings: NormalizeSettings) -> int:
@@ -34,20 +37,24 @@ def choose_origin(reference_frames: np.ndarray, names: list[str], settings: Norm
         if settings.origin_marker not in names:
             raise InputError(f"normalize.origin_marker {settings.origin_marker!r} is not a marker of this corpus; pick one of {names[:6]}...")
         return names.index(settings.origin_marker)
-    mean = np.nanmean(reference_frames, axis=0)
-    return int(np.nanargmin(np.linalg.norm(mean - np.nanmean(mean, axis=0), axis=1)))
+    seen = ~np.isnan(reference_frames).any(axis=2).all(axis=0)  # markers seen in some candidate frame
+    mean = np.full((reference_frames.shape[1], 3), np.nan)
+    mean[seen] = np.nanmean(reference_frames[:, seen], axis=0)
+    return int(np.nanargmin(np.linalg.norm(mean - mean[seen].mean(axis=0), axis=1)))
 
 
 def reference_frame(markers: np.ndarray, takes: Takes, phones: Phones, fps: float,
                     settings: NormalizeSettings) -> np.ndarray:
-    """Candidate frames for the neutral closed-mouth reference (M,3) positions, raw capture."""
-    if settings.reference_take:
-        if settings.reference_take not in takes.name:
+    """Candidate frames (C, M, 3) mm for the neutral closed-mouth reference, raw capture: the named
+    take's frame (a frame without a take: of the first take), else the leading silences of the neutral training takes, else (no silence is
+    marked) the first take's most typical frame (:func:`~facesynth.motion.rigid.typical_frame`)."""
+    if settings.reference_take or settings.reference_frame >= 0:  # a frame alone is of the first take
+        if settings.reference_take and settings.reference_take not in takes.name:
             raise InputError(f"normalize.reference_take {settings.reference_take!r} is not a take of this corpus.")
-        i = takes.index(settings.reference_take)
+        i = takes.index(settings.reference_take) if settings.reference_take else 0
         frame = settings.reference_frame if settings.reference_frame >= 0 else 0
         if frame >= takes.frame_count[i]:
-            raise InputError(f"normalize.reference_frame {frame} is beyond take {settings.reference_take!r} ({takes.frame_count[i]} frames).")
+            raise InputError(f"normalize.reference_frame {frame} is beyond take {takes.name[i]!r} ({takes.frame_count[i]} frames).")
         return markers[takes.frame_start[i] + frame][None]
     candidates = []
     for i in range(len(takes)):
@@ -58,29 +65,42 @@ def reference_frame(markers: np.ndarray, takes: Takes, phones: Phones, fps: floa
             continue
         n = int(min(phones.end[rows[0]], settings.reference_silence_s) * fps)
         candidates.append(markers[takes.frames(i)][: max(n, 1)])
-    if not candidates:  # no neutral silence: the first frame of the first take
-        candidates = [markers[takes.frames(0)][:1]]
+    if not candidates:  # no neutral silence marked (e.g. a take without phone timing): the first take's most typical frame
+        first = markers[takes.frames(0)]
+        candidates = [first[typical_frame(first)][None]]
     return np.concatenate(candidates)
 
 
-def build_reference(candidates: np.ndarray, origin: int, rigid: np.ndarray) -> np.ndarray:
+def build_reference(candidates: np.ndarray, origin: int, rigid: np.ndarray, frames: np.ndarray,
+                    names: list[str]) -> np.ndarray:
     """Generalized Procrustes mean (M, 3) mm of the candidate frames (C, M, 3), fitted on the
-    rigid markers, shifted so the origin marker is at 0."""
-    reference = candidates[0]
-    if np.isnan(reference).any():
-        reference = np.where(np.isnan(reference), np.nanmean(candidates, axis=0), reference)
-    for _ in range(3):
-        aligned, _, _, _ = head_pose(candidates, reference, rigid)
-        reference = np.nanmean(aligned, axis=0)
+    rigid markers, shifted so the origin marker is at 0. A marker unseen in every candidate
+    (e.g. one the capture lost at the reference) takes its mean over all ``frames`` (F, M, 3)
+    aligned onto the reference; one never seen at all is an error naming it."""
+    with np.errstate(invalid="ignore"), warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)  # nanmean of a marker unseen in every candidate
+        reference = candidates[0]
+        if np.isnan(reference).any():
+            reference = np.where(np.isnan(reference), np.nanmean(candidates, axis=0), reference)
+        for _ in range(3):
+            aligned, _, _, _ = head_pose(candidates, reference, rigid)
+            reference = np.nanmean(aligned, axis=0)
+        unseen = np.isnan(reference).any(axis=1)
+        if unseen.any():
+            aligned, _, _, _ = head_pose(frames, reference, rigid)
+            reference[unseen] = np.nanmean(aligned[:, unseen], axis=0)
+    never = np.nonzero(np.isnan(reference).any(axis=1))[0]
+    if len(never):
+        raise InputError(f"marker {names[never[0]]!r} is never seen in the corpus; remove it from the capture.")
     return reference - reference[origin]
 
 
 def normalize(markers: np.ndarray, names: list[str], takes: Takes, phones: Phones, fps: float,
               settings: NormalizeSettings, corpus_rigid=()):
     """Fill gaps, then remove head motion, fitted on the rigid markers (the settings', else
-    ``corpus_rigid``, else all). Returns (normalized, rotations, translations, reference,
-    origin index, list of unfilled gaps (take, marker, start_s, length_s), rigid marker
-    indices, their weights, a warning or "")."""
+    ``corpus_rigid``, else found from the data). Returns (normalized, rotations, translations,
+    reference, origin index, list of unfilled gaps (take, marker, start_s, length_s), the
+    :class:`~facesynth.motion.rigid.RigidChoice`, the rigid markers' weights)."""
     filled = markers.astype(np.float64).copy()
     long_gaps = []
     for i in range(len(takes)):
@@ -92,7 +112,13 @@ def normalize(markers: np.ndarray, names: list[str], takes: Takes, phones: Phone
     unknown = [n for n in settings.rigid_markers if n not in names]
     if unknown:
         raise InputError(f"normalize.rigid_markers names unknown markers {unknown}; use names from the corpus.")
-    rigid, warning = rigid_indices(names, settings.rigid_markers, [n for n in corpus_rigid if n in names])
+    try:
+        choice = choose_rigid(names, settings.rigid_markers, [n for n in corpus_rigid if n in names], filled,
+                              max_spread_mm=settings.rigid_max_spread_mm, min_markers=settings.rigid_min_markers)
+    except ValueError as exc:
+        raise InputError(f"no rigid markers can be found from the data ({exc}); name the markers that move only "
+                         f"with the head with --set normalize.rigid_markers=[...].") from None
+    rigid = choice.indices
     if len(rigid) < 3:
         raise InputError(f"normalize.rigid_markers names {len(rigid)} markers; a head pose needs at least 3 that do not lie on a line.")
     candidates = reference_frame(filled, takes, phones, fps, settings)
@@ -101,21 +127,23 @@ def normalize(markers: np.ndarray, names: list[str], takes: Takes, phones: Phone
         bad = np.nonzero(np.isnan(filled[:, origin, 0]))[0][0]
         take = next(takes.name[i] for i in range(len(takes)) if takes.frames(i).start <= bad < takes.frames(i).stop)
         raise InputError(f"take {take!r}: the origin marker {names[origin]!r} has a gap too long to fill; choose another with --set normalize.origin_marker=NAME.")
-    reference = build_reference(candidates, origin, rigid)
+    reference = build_reference(candidates, origin, rigid, filled, names)
     normalized, rotations, translations, weights = head_pose(filled, reference, rigid)
-    return normalized.astype(np.float32), rotations, translations, reference, origin, long_gaps, rigid, weights, warning
+    return normalized.astype(np.float32), rotations, translations, reference, origin, long_gaps, choice, weights
 
 
 def run(corpus_path: Path, out: Path, settings: NormalizeSettings, overwrite: bool = False) -> dict:
     """Normalize ``corpus_path`` and write ``out`` (a ``normalized`` artifact); returns a summary."""
     corpus = Corpus.read(corpus_path, audio=False)
     names = corpus.marker_names
-    normalized, rotations, translations, reference, origin, long_gaps, rigid, weights, warning = normalize(
+    normalized, rotations, translations, reference, origin, long_gaps, choice, weights = normalize(
         corpus.markers, names, corpus.takes, corpus.phones, corpus.fps, settings, corpus.rigid_markers)
     frames = HeadFrames(normalized, reference.astype(np.float32), rotations.astype(np.float32),
                         translations.astype(np.float32), corpus.fps, names[origin])
     NormalizedFrames(corpus.takes, corpus.phones, names, frames).write(
         out, config=settings_json(settings), inputs=[corpus_path], overwrite=overwrite)
     return {"frames": len(normalized), "origin_marker": names[origin], "long_gaps": long_gaps,
-            "rigid_markers": [names[k] for k in rigid], "rigid_weights": [float(w) for w in weights],
-            "warnings": [warning] if warning else []}
+            "rigid_markers": [names[k] for k in choice.indices], "rigid_weights": [float(w) for w in weights],
+            "rigid_source": choice.source,
+            "rigid_spreads_mm": None if choice.spreads is None else [float(x) for x in choice.spreads],
+            "warnings": []}

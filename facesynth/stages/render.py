@@ -160,13 +160,14 @@ def render_frames(clip: MeshAnimation, settings: RenderSettings, compare: MeshAn
 
 def run(anims: list[Path], audios: list[Path], out: Path, settings: RenderSettings, compare: Path | None = None,
         overwrite: bool = False) -> dict:
-    """Render the animations one after another, each with its audio, into the AVI ``out``;
+    """Render the animations one after another, each with its audio (none: silence), into the AVI ``out``;
     returns frames, seconds of video and frames rendered per second.
     """
     import imageio_ffmpeg
 
-    if len(anims) != len(audios):
-        raise UsageError(f"give one --audio per animation ({len(anims)} animations, {len(audios)} audio files).")
+    if audios and len(anims) != len(audios):
+        raise UsageError(f"give one --audio per animation ({len(anims)} animations, {len(audios)} audio files), "
+                         f"or none for a silent video.")
     if settings.view == "side-by-side" and compare is None:
         raise UsageError("the side-by-side view needs --compare ANIM (e.g. the ground truth deformed onto the same mesh).")
     if out.suffix.lower() != ".avi":
@@ -180,8 +181,11 @@ def run(anims: list[Path], audios: list[Path], out: Path, settings: RenderSettin
         if abs(c.fps - settings.fps) > 1e-6:
             raise InputError(f"{path}: animation is at {c.fps:g} fps but render.fps is {settings.fps:g}; set one to the other.")
     rate = 48000
-    audio = np.concatenate([clip_audio(a, len(c.vertices), settings.fps, rate, p) for c, a, p in zip(clips, audios, anims)])
     n_frames = sum(len(c.vertices) for c in clips)
+    if audios:
+        audio = np.concatenate([clip_audio(a, len(c.vertices), settings.fps, rate, p) for c, a, p in zip(clips, audios, anims)])
+    else:  # a capture without audio: a silent soundtrack of the video's length
+        audio = np.zeros(int(round(n_frames / settings.fps * rate)), np.float32)
     # The temporary audio lies beside the output (NAME.tmp-PID.wav: removed on every exit, and by
     # the next run after a kill); ffmpeg gets absolute paths, which never read as options.
     with atomic_path(out, overwrite) as tmp_out, contextlib.ExitStack() as cleanup:

@@ -6,6 +6,11 @@ The markers are carried into the rig's frame and units by a similarity fitted fr
 neutral reference to the rig's neutral at the bound vertices (as ``deform`` does); the solve fits
 displacements from the reference. This is what users call a facial solve, and the reference that
 key-shape retargeting (``facesynth retarget``) is judged against.
+
+The input is a ``motion`` artifact, or a ``normalized`` one (a user's own capture after
+``ingest`` and ``normalize``, with no database): then one take of it (``--take``, or the only
+one) is solved, its markers resampled to ``solve.output_fps``, the head motion kept relative to
+the take's mean pose as ``capture`` does, and the normalize reference serves as the rest pose.
 """
 
 from __future__ import annotations
@@ -14,10 +19,14 @@ from pathlib import Path
 
 import numpy as np
 
-from ..artifacts import check_output
+from ..artifacts import artifact_kind, check_output
 from ..config import SolveSettings, settings_json
+from ..errors import InputError
 from ..model.curves import RigCurves
+from ..model.frames import NormalizedFrames
 from ..model.motion import Motion
+from ..motion.head import relative_to_take
+from ..motion.postprocess import downsample
 from ..retarget.rig import TargetRig, load_rig, marker_map
 from ..retarget.solve import solve_curves
 
@@ -31,16 +40,54 @@ def solve(motion: Motion, rig: TargetRig, settings: SolveSettings, where: str) -
                         tolerance=settings.tolerance)
 
 
+def take_motion(normalized: NormalizedFrames, take: str | None, output_fps: float, where: str) -> Motion:
+    """One take of a ``normalized`` artifact as captured motion (``source = "capture"``) at
+    ``output_fps``: markers (T, M, 3) mm in the head frame, the reference as rest pose, the head
+    motion relative to the take's mean. ``take`` None: the only take."""
+    names = normalized.takes.name
+    if take is None:
+        if len(names) != 1:
+            raise InputError(f"{where}: it holds {len(names)} takes ({', '.join(names[:4])}...); choose one with --take.")
+        take = names[0]
+    if take not in names:
+        raise InputError(f"{where}: no take {take!r}; it has {', '.join(names[:5])}.")
+    frames = normalized.frames
+    sl = normalized.takes.frames(names.index(take))
+    markers = frames.markers[sl].astype(np.float32)
+    rel_r, rel_t = relative_to_take(frames.head_rotation[sl], frames.head_translation[sl], [slice(0, len(markers))])
+    return Motion(downsample(markers, frames.fps, output_fps), output_fps, markers, frames.fps, normalized.marker_names,
+                  frames.reference, downsample(rel_r, frames.fps, output_fps).astype(np.float32),
+                  downsample(rel_t, frames.fps, output_fps).astype(np.float32), source="capture", take=take)
+
+
 def run(motion_path: Path, out: Path, settings: SolveSettings, rig_path: Path | None = None,
-        binding: Path | None = None, overwrite: bool = False) -> dict:
-    """Solve ``motion_path`` on the rig (built-in when ``rig_path`` is None) and write ``out``."""
+        binding: Path | None = None, overwrite: bool = False, take: str | None = None) -> dict:
+    """Solve ``motion_path`` (a ``motion``, or one take of a ``normalized`` artifact) on the rig
+    (built-in when ``rig_path`` is None, with ``binding`` when given) and write ``out``."""
     check_output(out, overwrite)
     rig = load_rig(rig_path, binding)
-    motion = Motion.read(motion_path)
+    if artifact_kind(motion_path) == NormalizedFrames.KIND:
+        motion = take_motion(NormalizedFrames.read(motion_path), take, settings.output_fps, str(motion_path))
+    else:
+        if take is not None:
+            raise InputError(f"{motion_path}: --take picks a take of a normalized capture; a motion artifact has one.")
+        motion = Motion.read(motion_path)
     weights, residual, iterations = solve(motion, rig, settings, str(motion_path))
     inputs = [motion_path] + ([rig_path] if rig_path is not None and Path(rig_path).is_file() else [])
     RigCurves(weights, motion.fps, list(rig.shape_names), rig.name, rig.sha256, "solve", motion.head_rotation,
               motion.head_translation, residual=residual, method="bounded least squares with temporal smoothness").write(
         out, config=settings_json(settings), inputs=inputs, overwrite=overwrite)
+    marker_mm = per_marker_residual_mm(motion, rig, weights)
     return {"frames": len(weights), "shapes": len(rig.shape_names), "iterations": iterations,
-            "residual_rms": float(np.sqrt(np.nanmean(residual**2))), "rig": rig.name}
+            "residual_rms": float(np.sqrt(np.nanmean(residual**2))), "rig": rig.name,
+            "marker_residual_median_mm": float(np.nanmedian(marker_mm)),
+            "marker_residual_p95_mm": float(np.nanpercentile(marker_mm, 95)), "take": motion.take}
+
+
+def per_marker_residual_mm(motion: Motion, rig: TargetRig, weights: np.ndarray) -> np.ndarray:
+    """(T, B) distance in the motion's millimetres between each bound marker's displacement and
+    the solved rig's displacement at its vertex (NaN where the marker is unseen)."""
+    mmap = marker_map(rig, motion.marker_names, motion.reference, "")
+    disp = mmap.displacements(motion.markers, motion.reference)
+    fitted = np.tensordot(weights, rig.deltas[:, mmap.vertices], axes=(1, 0))
+    return np.linalg.norm(disp - fitted, axis=2) / mmap.scale

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from facesynth.motion.postprocess import blend_join, end_slope_weights, hermite
-from facesynth.motion.rigid import head_pose, procrustes_align, rigid_indices
+from facesynth.motion.rigid import head_pose, procrustes_align
 
 
 @pytest.mark.parametrize("length", [2, 3, 4, 7, 12])
@@ -67,15 +67,6 @@ def test_weights_follow_the_residuals():
     frames[:, 0] += rng.normal(0, 3.0, (50, 3))  # one noisy marker
     _, _, _, weights = head_pose(frames, ref, np.arange(8))
     assert weights[0] < 0.1 * weights[1:].min() and weights.sum() == pytest.approx(8)
-
-
-def test_rigid_set_falls_back_to_every_marker_with_a_warning():
-    names = ["a", "b", "c", "d"]
-    assert rigid_indices(names, ("b", "c", "d"), ["a"])[0].tolist() == [1, 2, 3]
-    idx, warning = rigid_indices(names, (), ["a", "c", "d"])
-    assert idx.tolist() == [0, 2, 3] and warning == ""
-    idx, warning = rigid_indices(names, (), [])
-    assert idx.tolist() == [0, 1, 2, 3] and "rigid" in warning
 
 
 def _two_phone_join(pinned):

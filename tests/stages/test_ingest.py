@@ -191,3 +191,24 @@ def test_align_settings_reach_the_aligner_of_transcript_only_takes(corpus, tmp_p
                                   "--set", "align.sample_rate=8000", "--set", "align.frame_rate=50"])
     assert r.exit_code == 0, r.output
     assert [(s.sample_rate, s.frame_rate) for s in received] == [(8000, 50)]
+
+
+def test_a_manifest_of_mocap_alone_is_ingested(corpus, config):
+    """A user's capture: only take and mocap; no audio, no phones, neutral."""
+    rows = _rows(corpus)
+    (corpus / "manifest.csv").write_text("take,mocap\n" + "".join(f"{r['take']},{r['mocap']}\n" for r in rows[:2]))
+    out = corpus / "corpus.h5"
+    s = ingest.run(corpus / "manifest.csv", out, config.settings("ingest"), config.settings("align"))
+    assert s["without_audio"] == s["without_phones"] == [r["take"] for r in rows[:2]]
+    from facesynth.model.corpus import Corpus
+
+    c = Corpus.read(out)
+    assert len(c.phones) == 0 and len(c.audio) == 0 and c.audio_count.tolist() == [0, 0]
+    assert c.takes.emotion == ["neutral", "neutral"] and c.takes.split == ["train", "train"]
+
+
+def test_a_transcript_without_audio_is_refused(corpus, config):
+    rows = _rows(corpus)
+    rows[1]["audio"], rows[1]["alignment"] = "", ""
+    _write_manifest(corpus, rows)
+    _refused(corpus, config, r"manifest\.csv, line 3: take 'neutral_s001' has a transcript to align but no audio")

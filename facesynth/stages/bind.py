@@ -1,0 +1,86 @@
+"""``facesynth bind``: a user's own capture placed on a rig, written as the binding CSV that
+``solve``, ``rig-mesh``, ``deform`` and ``ingest`` read (``marker,vertex,rigid``, plus
+``residual_mm`` and ``flagged`` for the user to check).
+
+One frame is fitted to the rig's surface by :func:`facesynth.retarget.bind.bind_markers`:
+``bind.frame``, else the take's most typical frame (:func:`facesynth.motion.rigid.typical_frame`,
+the face it holds most; ``normalize`` takes the same frame as its reference when no silence is
+marked); markers the capture shows riding on the jaw take vertices the rig's ``jawOpen``
+carries, and markers that do not, vertices it does not (:func:`facesynth.retarget.bind.jaw_sides`).
+The rigid flags are the markers whose mutual distances vary least over the whole take
+(:func:`facesynth.motion.rigid.find_rigid_markers`, with ``normalize.rigid_max_spread_mm``), so
+that ``ingest`` records them when the CSV is saved as ``markers.csv`` beside the manifest and
+``normalize`` fits the head pose on them; a take with too few markers seen for that gets no
+rigid flags (and no jaw sides), with a note.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from ..artifacts import atomic_path, check_output
+from ..config import BindSettings, NormalizeSettings
+from ..errors import InputError
+from ..formats.mesh import write_binding
+from ..formats.mocap import read_mocap
+from ..motion.rigid import fill_gaps, find_rigid_markers, head_pose, typical_frame
+from ..retarget.bind import AXES, bind_markers, jaw_sides
+from ..retarget.rig import load_rig_mesh
+
+
+def run(capture: Path, out: Path, settings: BindSettings, normalize_settings: NormalizeSettings,
+        rig_path: Path | None = None, up: str | None = None, forward: str | None = None,
+        overwrite: bool = False) -> dict:
+    """Bind the markers of ``capture`` (C3D, TRC or CSV) to the rig and write the CSV ``out``."""
+    check_output(out, overwrite)
+    if (up is None) != (forward is None):
+        raise InputError("give both --up and --forward (the capture's axes), or neither to find them from the data.")
+    for label, axis in (("--up", up), ("--forward", forward)):
+        if axis is not None and axis not in AXES:
+            raise InputError(f"{label} {axis!r} is not an axis; use one of {', '.join(AXES)}.")
+    if up is not None and up[1] == forward[1]:
+        raise InputError(f"--up {up} and --forward {forward} lie on one axis; give two perpendicular axes.")
+    take = read_mocap(Path(capture))
+    positions = take.positions
+    frame = settings.frame if settings.frame >= 0 else typical_frame(positions)
+    if frame >= len(positions):
+        raise InputError(f"{capture}: bind.frame {frame} is beyond the take's {len(positions)} frames; choose a frame "
+                         f"from 0 to {len(positions) - 1}.")
+    rig_name, neutral, faces, jaw_motion = load_rig_mesh(rig_path)
+    notes = []
+    try:
+        rigid_idx, spreads = find_rigid_markers(positions, max_spread_mm=normalize_settings.rigid_max_spread_mm,
+                                                min_markers=normalize_settings.rigid_min_markers)
+    except ValueError as exc:
+        rigid_idx, spreads = np.zeros(0, np.int64), np.zeros(0)
+        notes.append(f"no rigid markers found ({exc}); name them in the CSV's rigid column")
+    try:
+        allowed = None
+        if jaw_motion is not None and len(rigid_idx):  # markers kept on their side of the jaw (see jaw_sides)
+            filled = positions.astype(np.float64)
+            for m in range(filled.shape[1]):
+                filled[:, m], _ = fill_gaps(filled[:, m], normalize_settings.max_gap_frames)
+            rest = filled[frame]
+            if not np.isnan(rest[rigid_idx]).any():
+                aligned, _, _, _ = head_pose(filled, rest, rigid_idx)
+                allowed = jaw_sides(aligned - rest, jaw_motion)
+        binding = bind_markers(positions[frame], take.names, neutral, faces, max_residual_mm=settings.max_residual_mm,
+                               up=up, forward=forward, keep=settings.keep, iterations=settings.iterations,
+                               frame_index=frame, allowed=allowed)
+    except ValueError as exc:
+        raise InputError(f"{capture}: {exc}; choose a frame that sees the face's markers with --frame.") from None
+    rigid = {take.names[i] for i in rigid_idx}
+    residual = dict(zip(binding.names, binding.residual_mm.tolist()))
+    flagged = {n for n, f in zip(binding.names, binding.flagged) if f}
+    with atomic_path(out, overwrite) as tmp:
+        write_binding(tmp, dict(zip(binding.names, binding.vertices.tolist())), rigid, residual, flagged)
+    shared = len(binding.vertices) - len(np.unique(binding.vertices))
+    return {"rig": rig_name, "frame": frame, "markers": len(binding.names), "unbound": binding.unbound,
+            "residual_mm": residual, "flagged": sorted(flagged, key=binding.names.index),
+            "residual_median_mm": float(np.median(binding.residual_mm)),
+            "residual_p95_mm": float(np.percentile(binding.residual_mm, 95)), "scale": binding.fit.scale,
+            "start": binding.fit.start, "rigid": [take.names[i] for i in rigid_idx],
+            "rigid_spreads_mm": [float(x) for x in spreads], "shared_vertices": shared,
+            "max_residual_mm": settings.max_residual_mm, "notes": notes}
