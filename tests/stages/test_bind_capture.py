@@ -4,7 +4,6 @@ then `rig-mesh` and `render` (silent)."""
 
 import csv
 import dataclasses
-import os
 from pathlib import Path
 
 import numpy as np
@@ -23,8 +22,7 @@ from facesynth.retarget.bind import axis_rotation
 from facesynth.stages import bind, ingest, normalize, render, rig_mesh, solve
 
 #: NaturalPoint's Facial-Sing.c3d (c3d.org sample 29): a singer's face, 38 markers, 100 Hz, no audio.
-FACIAL_SING = Path(os.environ.get("FACESYNTH_FACIAL_SING",
-                                  Path(__file__).resolve().parents[2].parent / "shared" / "assets" / "c3d-org" / "Facial-Sing.c3d"))
+FACIAL_SING = Path(__file__).resolve().parents[1] / "formats" / "captures" / "Facial-Sing.c3d"
 
 
 def _truth(tiny_corpus):
@@ -133,15 +131,9 @@ def test_solve_on_a_normalized_capture_with_several_takes_needs_take(tiny_artifa
         solve.run(tiny_artifacts["normalized"], tmp_path / "c.h5", config.settings("solve"))
 
 
-@pytest.mark.skipif(not FACIAL_SING.exists(), reason=f"Facial-Sing.c3d (c3d.org sample 29) is not at {FACIAL_SING}; "
-                    "set FACESYNTH_FACIAL_SING to its path")
 def test_facial_sing_binds_and_solves(tmp_path):
     """NaturalPoint's singer: 37 face and head markers bound, the four head markers found rigid,
     and the solve's marker residual small (0.92 mm median, 3.98 mm 95th percentile when written)."""
-    try:
-        read_mocap(FACIAL_SING)
-    except InputError as exc:
-        pytest.skip(f"the mocap reader cannot read Facial-Sing.c3d yet: {exc}")
     config = Config.load()
     binding = tmp_path / "markers.csv"
     s = bind.run(FACIAL_SING, binding, config.settings("bind"), config.settings("normalize"))
