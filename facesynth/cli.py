@@ -348,10 +348,14 @@ def ingest(ctx: Context, manifest: Path, output: Path):
     from .stages import ingest as stage_ingest
 
     s = stage_ingest.run(manifest, output, ctx.config.settings("ingest"), ctx.config.settings("align"), ctx.overwrite)
+    def takes(names: list[str]) -> str:
+        listed = ", ".join(names[:4]) + (", ..." if len(names) > 4 else "")
+        return f"{len(names)} take{'s' if len(names) != 1 else ''} ({listed})"
+
     if s["without_audio"]:
-        ctx.say(f"note: {len(s['without_audio'])} takes have no audio ({', '.join(s['without_audio'][:4])}); head-motion needs it.")
+        ctx.say(f"note: no audio for {takes(s['without_audio'])}; head-motion needs it.")
     if s["without_phones"]:
-        ctx.say(f"note: {len(s['without_phones'])} takes have no phone timing ({', '.join(s['without_phones'][:4])}); "
+        ctx.say(f"note: no phone timing for {takes(s['without_phones'])}; "
                 f"build-db and what needs a database leave them out; normalize, pca and solve take them.")
     ctx.say(f"ingested {s['takes']} takes, {s['frames']} frames of {s['markers']} markers at {s['fps']:g} Hz, "
             f"{s['phones']} phone segments ({100 * s['missing_fraction']:.2f}% samples missing) -> {output}")
