@@ -1176,7 +1176,7 @@ def stream(ctx: Context, db_path: Path, audio: str, serve: str | None, livelink:
         stage.serve(model, c.settings("align"), serve, livelink=livelink, ready=ctx.say)
         ctx.say("stopped.")
         return
-    if audio == "-":
+    if str(audio) == "-":
         frames = stage.run_stdin(model, c.settings("align"), sys.stdin.buffer, click.echo, where="standard input",
                                  livelink=livelink, markers=markers, realtime=realtime)
     else:

@@ -111,6 +111,7 @@ class StreamServer:
         self.server = None
         self.clients = 0
         self.connections: set = set()
+        self.most_queued = 0   # the most messages that ever waited for one client
         self.stopped = asyncio.Event()
 
     async def start(self) -> None:
@@ -170,6 +171,7 @@ class StreamServer:
                 return False
             try:
                 queue.put_nowait(json.dumps(message))
+                self.most_queued = max(self.most_queued, queue.qsize())
             except asyncio.QueueFull:
                 too_slow = True
                 log.warning("%s: %d messages waiting; disconnected as too slow", name, queue.qsize())

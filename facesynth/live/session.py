@@ -22,6 +22,7 @@ import numpy as np
 
 from ..config import AlignSettings
 from ..errors import InputError
+from ..phonemes import PAU
 from .core import Frame, LiveModel, LiveSynthesizer
 from .phones import SAMPLE_RATE, PhoneRecognizer, given_phones
 
@@ -109,6 +110,8 @@ class Session:
         if self.recognizer is not None:
             for phone in self.recognizer.end():
                 self.synth.add_phone(*phone)
+        if self.time > self.synth.known_until:  # the phones cover the audio, as batch recognition tiles them
+            self.synth.add_phone(PAU, self.synth.known_until, self.time)
         return self._frames(self.synth.finish(self.time)) + [{"type": "end", "frames": self.synth.sent}]
 
     def _frames(self, frames: list[Frame]) -> list[dict]:
