@@ -1161,11 +1161,12 @@ def stream(ctx: Context, db_path: Path, audio: str, serve: str | None, livelink:
            lookahead: int | None, markers: bool, realtime: bool):
     """Live synthesis: audio in as it arrives, frames of ARKit curves out with a fixed latency
     (JSON lines on standard output, or WebSocket messages), never revised (docs/live.md).
+    With --serve it serves WebSocket clients until Ctrl-C or SIGTERM, e.g.
+    `facesynth stream db.h5 --serve 127.0.0.1:8765 --livelink 127.0.0.1:11111`.
 
     \b
     Example:
       facesynth stream db.h5 --audio corpus/audio/neutral_s016.wav > frames.jsonl
-      facesynth stream db.h5 --serve 127.0.0.1:8765 --livelink 127.0.0.1:11111
     """
     from .errors import InputError
     from .stages import stream as stage

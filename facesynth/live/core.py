@@ -19,8 +19,9 @@ Frames: the committed path is rendered as batch synthesis renders a path
 (:func:`facesynth.search.synthesis.render_path`: time-warp, the join smoothing of VII-B, pauses
 regenerated, Eq. 11, down-sampling). A frame is sent only when nothing uncommitted can change
 it: it must lie before the first uncommitted phone by more than the join smoothing's reach
-(``smoothing_half_window`` capture frames, plus one for the down-sampling), and before a
-committed pause that is last (a pause is interpolated toward the next phone's first frame).
+(``smoothing_half_window`` capture frames; none when that phone is a pause, since joins next to
+a pause are not smoothed), and before a committed pause that is last (a pause is interpolated
+toward the next phone's first frame: its frames wait for that phone).
 Only a window of recent phones is re-rendered at each decision, starting two spoken phones
 before the first unsent frame, so the work per decision does not grow with the stream.
 
@@ -234,23 +235,36 @@ class LiveSynthesizer:
 
     # -- frames ----------------------------------------------------------------------------
 
-    def _final_until(self) -> float:
-        """Time (s) before which every frame depends on committed steps only."""
+    def _final_frames(self) -> int:
+        """How many output frames depend on committed steps only.
+
+        The capture frames of step t start at ``round(starts[t] * fps)`` (:func:`frame_ranges`).
+        With steps ``[0, c)`` committed: a committed pause at ``c - 1`` is interpolated toward the
+        next step's first frame, so frames stop at its first; otherwise frames stop at step c's
+        first, less the blend's reach (``smoothing_half_window`` frames) when step c is spoken or not
+        yet known (joins next to a pause are not smoothed). An output frame takes the capture frame
+        under it (and the next one when the rates are not in a whole ratio)."""
         c = len(self.committed)
         if c == 0:
-            return 0.0
+            return 0
         db, s = self.model.db, self.model.synth
-        reach = (s.smoothing_half_window + 1) / db.fps + 1.0 / self.model.stream.fps
-        if self.phones[c - 1] == PAU:  # interpolated toward the next phone's first frame
-            return self.starts[c - 1] - reach
-        return self.starts[c] - reach if c < len(self.phones) else self.ends[c - 1] - reach
+        if self.phones[c - 1] == PAU:
+            limit = int(round(self.starts[c - 1] * db.fps))
+        else:
+            limit = int(round(self.ends[c - 1] * db.fps))
+            if c == len(self.phones) or self.phones[c] != PAU:
+                limit -= s.smoothing_half_window
+        ratio = db.fps / self.model.stream.fps
+        if abs(ratio - round(ratio)) > 1e-9:
+            limit -= 1  # the down-sampling interpolates with the next capture frame
+        return max(0, int(np.ceil(limit / ratio - 1e-9)))
 
     def _emit(self, now: float) -> list[Frame]:
         fps = self.model.stream.fps
         if self.finished:
             n_final = self._total_frames()
         else:
-            n_final = int(np.ceil(self._final_until() * fps - 1e-9))  # frames strictly before it
+            n_final = self._final_frames()
         if n_final <= self.sent:
             return []
         markers = self._render(self.sent, n_final)

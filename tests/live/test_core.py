@@ -59,9 +59,10 @@ def test_fixed_lag_dp_is_the_whole_utterance_dp_when_the_lookahead_covers_it(db,
     np.testing.assert_allclose(markers, batch["markers"], atol=1e-4)
 
 
-@pytest.mark.parametrize("method,lookahead", [("dp", 0), ("dp", 1), ("dp", 2), ("greedy", 1)])
-def test_frames_are_sent_once_in_order_and_never_need_revision(db, utt, config, method, lookahead):
-    live, frames, prefixes = _stream(_model(db, config, method=method, lookahead_phones=lookahead), utt)
+@pytest.mark.parametrize("method,lookahead,fps", [("dp", 0, 30), ("dp", 1, 30), ("dp", 2, 30), ("greedy", 1, 30),
+                                                  ("dp", 1, 60), ("dp", 1, 25)])
+def test_frames_are_sent_once_in_order_and_never_need_revision(db, utt, config, method, lookahead, fps):
+    live, frames, prefixes = _stream(_model(db, config, method=method, lookahead_phones=lookahead, fps=fps), utt)
     assert [f.index for f in frames] == list(range(len(frames)))
     # committed decisions only grow: each prefix is a prefix of the final path
     for p in prefixes:
