@@ -10,9 +10,10 @@ utterances; their clean ground truth scores the mouth).
 1. ``offline``: each held-out take streamed through a session in 20 ms chunks, for every
    configuration (``method`` dp or greedy, ``lookahead`` phones, ``phones``: ``recognize``d live
    from the audio, or ``given`` by a TTS engine as it speaks: each phone's timing sent with the
-   chunk where the phone starts). Time is simulated as real time: chunk c arrives at its stream
-   time, its processing starts then (or when the previous chunk's ends) and takes the measured
-   wall time; a frame's **latency** is the time it is ready minus the arrival of the audio
+   chunk where the phone starts, or ``given_ahead``: all of them before the audio, as an engine that
+   plans a sentence before speaking it can; the last message says the phones are complete). Time
+   is simulated as real time: chunk c arrives at its stream time, its processing starts then (or
+   when the previous chunk's ends) and takes the measured wall time; a frame's **latency** is the time it is ready minus the arrival of the audio
    sample it shows (its time; a frame ready before its sound counts 0). ``rtf``: processing time
    over audio time, one stream on one core. **Quality** against batch synthesis of the same
    phones (same emotions, the whole-utterance search of the same method): RMS marker difference
@@ -100,7 +101,7 @@ def stream_offline(model: LiveModel, align, pcm: bytes, phones_given: list[dict]
             starting = [p for p in pending if p["start"] < arrival or ahead]
             if starting:
                 pending = pending[len(starting):]
-                out += session.control(json.dumps({"type": "phones", "phones": starting}))
+                out += session.control(json.dumps({"type": "phones", "phones": starting, "final": not pending}))
             out += session.audio(pcm[c * step : (c + 1) * step])
         else:
             out = session.end()

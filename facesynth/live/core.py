@@ -133,6 +133,7 @@ class LiveSynthesizer:
     committed: list[int] = field(default_factory=list)
     sent: int = 0                      # output frames sent so far
     finished: bool = False
+    phones_complete: bool = False      # every phone of the utterance is known (a TTS engine said so)
     decision_s: list[float] = field(default_factory=list)   # wall time of each decision
     _last_markers: np.ndarray | None = None
 
@@ -155,8 +156,8 @@ class LiveSynthesizer:
         """Append a phone (Festival name, seconds). A start after the last end is preceded by a
         pause; a start before it is moved to it (the recogniser's boundaries can shift by a
         frame); a phone that ends no later than the last end is ignored."""
-        if self.finished:
-            raise InputError("the stream has ended; no phone can be added.")
+        if self.finished or self.phones_complete:
+            raise InputError("the utterance's phones were declared complete; no phone can be added.")
         last = self.known_until
         if end <= last + 1e-9:
             return
@@ -177,7 +178,7 @@ class LiveSynthesizer:
         """Take the decisions the known phones allow and return the frames that became final;
         ``now`` is the stream time (s of audio received), recorded in each frame."""
         t0 = time.perf_counter()
-        lookahead = self.model.stream.lookahead_phones
+        lookahead = 0 if self.phones_complete else self.model.stream.lookahead_phones
         self._decide(len(self.phones) - lookahead)
         frames = self._emit(now)
         self.decision_s.append(time.perf_counter() - t0)
@@ -247,6 +248,8 @@ class LiveSynthesizer:
         c = len(self.committed)
         if c == 0:
             return 0
+        if self.phones_complete and c == len(self.phones):
+            return self._total_frames()
         db, s = self.model.db, self.model.synth
         if self.phones[c - 1] == PAU:
             limit = int(round(self.starts[c - 1] * db.fps))

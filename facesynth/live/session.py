@@ -6,8 +6,9 @@ Control messages (JSON objects, docs/live.md):
 - ``{"type": "start", "phones": "recognize" | "given", "emotion": name, "markers": bool}``:
   optional, before any audio; ``given`` means the client sends the phone timings (a TTS engine)
   and the audio is not recognised.
-- ``{"type": "phones", "phones": [{"phone": "HH", "start": 0.10, "end": 0.16}, ...]}``: phone
-  timings in stream seconds, in order (``given`` mode).
+- ``{"type": "phones", "phones": [{"phone": "HH", "start": 0.10, "end": 0.16}, ...], "final": false}``:
+  phone timings in stream seconds, in order (``given`` mode); ``"final": true`` says they are
+  the utterance's last, so nothing waits for a look-ahead past them.
 - ``{"type": "emotion", "name": "happy"}``: the emotion of the phones from now on.
 - ``{"type": "end"}``: the audio is complete; the remaining frames are sent.
 
@@ -98,6 +99,8 @@ class Session:
             self.started = True
             for phone in given_phones(message.get("phones"), f"{self.where}, phones message"):
                 self.synth.add_phone(*phone)
+            if message.get("final") is True:
+                self.synth.phones_complete = True
             return self._frames(self.synth.step(self.time))
         if kind == "end":
             return self.end()
@@ -110,7 +113,7 @@ class Session:
         if self.recognizer is not None:
             for phone in self.recognizer.end():
                 self.synth.add_phone(*phone)
-        if self.time > self.synth.known_until:  # the phones cover the audio, as batch recognition tiles them
+        if self.time > self.synth.known_until and not self.synth.phones_complete:  # the phones cover the audio, as batch recognition tiles them
             self.synth.add_phone(PAU, self.synth.known_until, self.time)
         return self._frames(self.synth.finish(self.time)) + [{"type": "end", "frames": self.synth.sent}]
 

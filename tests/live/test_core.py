@@ -127,3 +127,19 @@ def test_a_gap_between_phones_becomes_a_pause(db, config):
     live.add_phone("aa", 0.35, 0.5)  # starts inside the known span: moved to its end
     assert live.phones == ["pau", "hh", "pau", "aa"]
     assert live.starts == [0.0, 0.1, 0.2, 0.4] and live.ends == [0.1, 0.2, 0.4, 0.5]
+
+
+def test_phones_declared_complete_release_every_frame_before_the_audio_ends(db, utt, config):
+    live = LiveSynthesizer(_model(db, config, method="dp", lookahead_phones=3))
+    for p, a, b in zip(utt.phones, utt.starts, utt.ends):
+        live.add_phone(p, a, b)
+    held = live.step(0.0)
+    live.phones_complete = True
+    frames = held + live.step(0.0)
+    assert len(held) < len(frames) == live._total_frames()
+    batch = _batch(db, utt, config)
+    np.testing.assert_array_equal(live.committed, batch["path"])  # the whole utterance in one window
+    np.testing.assert_allclose(np.stack([f.markers for f in frames]), batch["markers"], atol=1e-3)
+    assert live.finish(utt.ends[-1]) == []
+    with pytest.raises(InputError, match="declared complete"):
+        live.add_phone("aa", 10.0, 10.1)
