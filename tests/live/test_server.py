@@ -240,3 +240,23 @@ def _read_line(proc, timeout: float) -> str:
         if not sel.select(timeout):
             raise AssertionError("the server did not start")
     return proc.stderr.readline().decode().strip()
+
+
+@pytest.mark.parametrize("args,message", [
+    (["--serve", "8765"], "--serve '8765': give HOST:PORT, e.g. 127.0.0.1:8765."),
+    (["--lookahead", "-1"], "--lookahead -1: give 0 or more phones."),
+    (["--audio", "missing.wav"], "missing.wav: no such audio file."),
+])
+def test_bad_stream_options_say_what_to_do(tiny_db, args, message):
+    result = CliRunner().invoke(main, ["stream", str(tiny_db), *args], input=b"")
+    assert result.exit_code == 1 and message in result.output, result.output
+
+
+def test_start_after_audio_is_refused(model):
+    from facesynth.errors import InputError
+    from facesynth.live.session import Session
+
+    session = Session(model, _align(), "client 1")
+    session.audio(b"\0\0" * 320)
+    with pytest.raises(InputError, match="client 1: 'start' must come before any audio or phones."):
+        session.control(json.dumps({"type": "start", "phones": "given"}))
