@@ -75,7 +75,7 @@ class LiveModel:
 
         self.db = db
         self.stream = stream
-        self.solve = solve
+        self.solve_settings = solve
         self.synth = replace(synth, output_fps=stream.fps, postprocess="deng", use_opencl=False)
         self.tc = db.transition_costs(self.synth, False)
         self.dense = np.ascontiguousarray(self.tc.dense(), np.float32)
@@ -101,18 +101,22 @@ class LiveModel:
         """The 52 ARKit names of :attr:`Frame.arkit`, in Live Link Face order."""
         return self.face.arkit_names
 
-    def arkit(self, markers: np.ndarray, previous: np.ndarray | None) -> np.ndarray:
-        """(T, 52) ARKit weights for markers (T, M, 3) mm; ``previous`` ((M, 3), the last sent frame's
-        markers) is solved with them for continuity and dropped."""
+    def solve(self, markers: np.ndarray, previous: tuple[np.ndarray, np.ndarray] | None) -> np.ndarray:
+        """(T, E) rig weights for markers (T, M, 3) mm. ``previous`` (the last sent frame's markers
+        (M, 3) and rig weights (E,)) is solved with them for continuity and dropped; its weights
+        start the iterations."""
         from ..retarget.solve import solve_curves
 
-        frames = markers if previous is None else np.concatenate([previous[None], markers])
+        frames = markers if previous is None else np.concatenate([previous[0][None], markers])
         disp = self.marker_map.displacements(frames, self.db.reference)
-        w, _, _ = solve_curves(disp, self.basis, smooth=self.solve.smooth, ridge=self.solve.ridge,
-                               iterations=self.solve.iterations, tolerance=self.solve.tolerance)
-        if previous is not None:
-            w = w[1:]
-        return np.clip(self.face.to_arkit(w), 0.0, 1.0)
+        w, _, _ = solve_curves(disp, self.basis, smooth=self.solve_settings.smooth, ridge=self.solve_settings.ridge,
+                               iterations=self.solve_settings.iterations, tolerance=self.solve_settings.tolerance,
+                               initial=None if previous is None else previous[1])
+        return w if previous is None else w[1:]
+
+    def arkit(self, weights: np.ndarray) -> np.ndarray:
+        """(T, 52) ARKit weights in [0, 1] (:attr:`arkit_names` order) for rig weights (T, E)."""
+        return np.clip(self.face.to_arkit(weights), 0.0, 1.0)
 
 
 @dataclass
@@ -135,7 +139,7 @@ class LiveSynthesizer:
     finished: bool = False
     phones_complete: bool = False      # every phone of the utterance is known (a TTS engine said so)
     decision_s: list[float] = field(default_factory=list)   # wall time of each decision
-    _last_markers: np.ndarray | None = None
+    _last: tuple[np.ndarray, np.ndarray] | None = None   # the last sent frame's markers and rig weights
 
     def __post_init__(self):
         self.set_emotion(self.emotion)
@@ -271,10 +275,11 @@ class LiveSynthesizer:
         if n_final <= self.sent:
             return []
         markers = self._render(self.sent, n_final)
-        arkit = self.model.arkit(markers, self._last_markers)
+        weights = self.model.solve(markers, self._last)
+        arkit = self.model.arkit(weights)
         frames = [Frame(self.sent + k, (self.sent + k) / fps, arkit[k], markers[k], now) for k in range(len(markers))]
         self.sent = n_final
-        self._last_markers = markers[-1]
+        self._last = (markers[-1], weights[-1])
         return frames
 
     def _total_frames(self) -> int:
