@@ -15,12 +15,13 @@ utterances; their clean ground truth scores the mouth).
    is simulated as real time: chunk c arrives at its stream time, its processing starts then (or
    when the previous chunk's ends) and takes the measured wall time; a frame's **latency** is the time it is ready minus the arrival of the audio
    sample it shows (its time; a frame ready before its sound counts 0). ``rtf``: processing time
-   over audio time, one stream on one core. **Quality** against batch synthesis of the same
+   over audio time, one stream on one core (``rtf_cpu``: its CPU time, less sensitive to a shared
+   machine's load). **Quality** against batch synthesis of the same
    phones (same emotions, the whole-utterance search of the same method): RMS marker difference
    (mm), mouth-opening r (inner-lip gap ``ULI_C``-``LLI_C``) between live and batch, and the
    mouth-opening r of each against the clean ground truth (``quality_ratio`` = live r / batch r).
    ``path_differs``: the fraction of spoken steps whose node differs from the whole-utterance path.
-2. ``concurrent``: ``facesynth stream --serve 127.0.0.1:0`` in its own process; K clients push
+2. ``concurrent``: ``facesynth stream --serve 127.0.0.1:0 --workers W`` in its own processes; K clients push
    ``--seconds`` of audio each at real-time speed (20 ms chunks) at once, and latency is measured
    on the clock of this process (frame received minus the send of the chunk holding its sample).
    A stream count is **held** when its p95 latency stays within 100 ms of one stream's.
@@ -90,12 +91,12 @@ def stream_offline(model: LiveModel, align, pcm: bytes, phones_given: list[dict]
     if phones_given is not None:
         session.control(json.dumps({"type": "start", "phones": "given", "markers": True}))
     step = int(CHUNK_S * 16000) * 2
-    clock, busy, frames, times, latency = 0.0, 0.0, [], [], []
+    clock, busy, cpu, frames, times, latency = 0.0, 0.0, 0.0, [], [], []
     pending = list(phones_given or [])
     n_chunks = -(-len(pcm) // step)
     for c in range(n_chunks + 1):
         arrival = min((c + 1) * step, len(pcm)) / 32000
-        t0 = time.perf_counter()
+        t0, c0 = time.perf_counter(), time.process_time()
         if c < n_chunks:
             out = []
             starting = [p for p in pending if p["start"] < arrival or ahead]
@@ -107,6 +108,7 @@ def stream_offline(model: LiveModel, align, pcm: bytes, phones_given: list[dict]
             out = session.end()
         dt = time.perf_counter() - t0
         busy += dt
+        cpu += time.process_time() - c0
         clock = max(clock, arrival) + dt
         for m in out:
             if m["type"] == "frame":
@@ -114,7 +116,7 @@ def stream_offline(model: LiveModel, align, pcm: bytes, phones_given: list[dict]
                 latency.append(max(0.0, clock - max(sample_arrival, m["time"])))
                 frames.append(np.array(m["markers"], np.float32).reshape(-1, 3))
                 times.append(m["time"])
-    return np.stack(frames), np.array(times), np.array(latency), busy, session
+    return np.stack(frames), np.array(times), np.array(latency), busy, cpu, session
 
 
 def offline(db_path: Path, corpus: Path, takes: list[str], config: Config) -> dict:
@@ -130,19 +132,20 @@ def offline(db_path: Path, corpus: Path, takes: list[str], config: Config) -> di
             if mode != "recognize" and hold != 1:
                 continue  # the hold only matters to recognition
             speech_lat, lat, rms, r_batch, r_live_truth, r_batch_truth, decisions = [], [], [], [], [], [], []
-            busy, audio_s, differ, spoken = 0.0, 0.0, 0, 0
+            busy, cpu_s, audio_s, differ, spoken = 0.0, 0.0, 0.0, 0, 0
             for take in takes:
                 pcm = read_pcm(corpus / "audio" / f"{take}.wav")
                 given = None
                 if mode != "recognize":
                     utt = read_utterance(corpus / "labels" / f"{take}.TextGrid")
                     given = [{"phone": p, "start": float(a), "end": float(b)} for p, a, b in zip(utt.phones, utt.starts, utt.ends)]
-                live, times, latency, t_busy, session = stream_offline(model, align, pcm, given, mode == "given_ahead")
+                live, times, latency, t_busy, t_cpu, session = stream_offline(model, align, pcm, given, mode == "given_ahead")
                 lat.append(latency)
                 s = session.synth
                 step_of = np.searchsorted(np.array(s.starts), times, side="right") - 1
                 speech_lat.append(latency[np.array([s.phones[k] != PAU for k in step_of])])
                 busy += t_busy
+                cpu_s += t_cpu
                 audio_s += len(pcm) / 32000
                 decisions += session.synth.decision_s
                 utt = utterance(s.phones, s.starts, s.ends, s.emotions)
@@ -170,7 +173,7 @@ def offline(db_path: Path, corpus: Path, takes: list[str], config: Config) -> di
                 "latency_p95_ms": round(1000 * float(np.percentile(lat_all, 95)), 1),
                 "speech_latency_median_ms": round(1000 * float(np.median(speech_all)), 1),
                 "speech_latency_p95_ms": round(1000 * float(np.percentile(speech_all, 95)), 1),
-                "rtf": round(busy / audio_s, 4), "decision_median_ms": round(1000 * float(np.median(decisions)), 2),
+                "rtf": round(busy / audio_s, 4), "rtf_cpu": round(cpu_s / audio_s, 4), "decision_median_ms": round(1000 * float(np.median(decisions)), 2),
                 "decision_p95_ms": round(1000 * float(np.percentile(decisions, 95)), 2),
                 "path_differs": round(differ / max(spoken, 1), 3),
                 "rms_vs_batch_mm": round(float(np.mean(rms)), 3),
@@ -212,15 +215,15 @@ async def _client(port: int, pcm: bytes, t_start: float) -> list[float]:
     return latencies
 
 
-def concurrent(db_path: Path, pcm: bytes, counts: list[int], seconds: float) -> dict:
-    proc = subprocess.Popen([sys.executable, "-m", "facesynth.cli", "stream", str(db_path), "--serve", "127.0.0.1:0"],
-                            stderr=subprocess.PIPE, stdout=subprocess.DEVNULL)
+def concurrent(db_path: Path, pcm: bytes, counts: list[int], seconds: float, workers: int) -> dict:
+    proc = subprocess.Popen([sys.executable, "-m", "facesynth.cli", "stream", str(db_path), "--serve", "127.0.0.1:0",
+                             "--workers", str(workers)], stderr=subprocess.PIPE, stdout=subprocess.DEVNULL)
     try:
         with selectors.DefaultSelector() as sel:
             sel.register(proc.stderr, selectors.EVENT_READ)
             if not sel.select(120):
                 raise RuntimeError("the server did not start")
-        port = int(proc.stderr.readline().decode().strip().rsplit(":", 1)[1])
+        port = int(proc.stderr.readline().decode().split()[2].rsplit(":", 1)[1])
         audio = (pcm * int(np.ceil(seconds * 32000 / len(pcm))))[: int(seconds * 32000) // 2 * 2]
         out = {}
         for k in counts:
@@ -232,10 +235,11 @@ def concurrent(db_path: Path, pcm: bytes, counts: list[int], seconds: float) -> 
             lat = np.concatenate(asyncio.run(run()))
             out[str(k)] = {"latency_median_ms": round(1000 * float(np.median(lat)), 1),
                            "latency_p95_ms": round(1000 * float(np.percentile(lat, 95)), 1), "frames": int(len(lat))}
-            print("concurrent", k, out[str(k)], file=sys.stderr)
+            print("concurrent", workers, k, out[str(k)], file=sys.stderr)
         base = out[str(counts[0])]["latency_p95_ms"]
         held = [k for k in counts if out[str(k)]["latency_p95_ms"] <= base + 100]
-        return {"streams": out, "held": max(held) if held else 0, "criterion": "p95 within 100 ms of one stream's"}
+        return {"workers": workers, "streams": out, "held": max(held) if held else 0,
+                "criterion": "p95 within 100 ms of one stream's"}
     finally:
         proc.terminate()
         proc.wait(30)
@@ -248,17 +252,21 @@ def main() -> None:
     ap.add_argument("--takes", type=int, default=8, help="held-out takes streamed (first ones in the manifest)")
     ap.add_argument("--streams", default="1,4,8,12", help="concurrent stream counts, the first the reference")
     ap.add_argument("--seconds", type=float, default=8.0, help="audio per concurrent stream")
+    ap.add_argument("--workers", default="1,2", help="server processes (--workers) to measure")
     ap.add_argument("--skip-concurrent", action="store_true")
+    ap.add_argument("--skip-offline", action="store_true")
     args = ap.parse_args()
     config = Config.load()
     rows = list(csv.DictReader(open(args.corpus / "manifest.csv")))
     takes = [r["take"] for r in rows if r["split"] == "test"][: args.takes]
     result = {"db": args.db.name, "takes": takes, "chunk_s": CHUNK_S, "fps": config.settings("stream").fps,
               "cpus": os.cpu_count(), "load_average": os.getloadavg()}
-    result["offline"] = offline(args.db, args.corpus, takes, config)
+    if not args.skip_offline:
+        result["offline"] = offline(args.db, args.corpus, takes, config)
     if not args.skip_concurrent:
         counts = [int(x) for x in args.streams.split(",")]
-        result["concurrent"] = concurrent(args.db, read_pcm(args.corpus / "audio" / f"{takes[0]}.wav"), counts, args.seconds)
+        pcm = read_pcm(args.corpus / "audio" / f"{takes[0]}.wav")
+        result["concurrent"] = [concurrent(args.db, pcm, counts, args.seconds, int(w)) for w in args.workers.split(",")]
     result["load_average_after"] = os.getloadavg()
     print(json.dumps(result, indent=1))
 

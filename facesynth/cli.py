@@ -1156,9 +1156,10 @@ def head_motion(ctx: Context, db: Path, audio: Path, corpus_path: Path, output: 
 @click.option("--lookahead", type=int, default=None, help="Phones of look-ahead (default: stream.lookahead_phones).")
 @click.option("--markers", is_flag=True, help="Add the markers (mm) to every frame.")
 @click.option("--realtime", is_flag=True, help="Read --audio at its own speed, as if it arrived live.")
+@click.option("--workers", type=int, default=1, show_default=True, help="With --serve: processes sharing the port.")
 @stage(writes=False)
 def stream(ctx: Context, db_path: Path, audio: str, serve: str | None, livelink: str | None, method: str | None,
-           lookahead: int | None, markers: bool, realtime: bool):
+           lookahead: int | None, markers: bool, realtime: bool, workers: int):
     """Live synthesis: audio in as it arrives, frames of ARKit curves out with a fixed latency
     (JSON lines on standard output, or WebSocket messages), never revised (docs/live.md).
     With --serve it serves WebSocket clients until Ctrl-C or SIGTERM, e.g.
@@ -1174,7 +1175,7 @@ def stream(ctx: Context, db_path: Path, audio: str, serve: str | None, livelink:
     c = ctx.config
     model = stage.load_model(db_path, c.settings("synthesize"), c.settings("stream"), c.settings("solve"), method, lookahead)
     if serve is not None:
-        stage.serve(model, c.settings("align"), serve, livelink=livelink, ready=ctx.say)
+        stage.serve(model, c.settings("align"), serve, livelink=livelink, ready=ctx.say, workers=workers)
         ctx.say("stopped.")
         return
     if str(audio) == "-":

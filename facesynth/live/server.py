@@ -103,11 +103,13 @@ class StreamServer:
     address the user chose; ``port`` 0 picks a free one (:attr:`port` after :meth:`start`)."""
 
     def __init__(self, model: LiveModel, align: AlignSettings, host: str, port: int,
-                 livelink: tuple[str, int] | None = None, socket_send_buffer: int | None = None):
+                 livelink: tuple[str, int] | None = None, socket_send_buffer: int | None = None,
+                 reuse_port: bool = False):
         self.model, self.align = model, align
         self.host, self.port = host, port
         self.livelink = livelink
         self.socket_send_buffer = socket_send_buffer
+        self.reuse_port = reuse_port  # several processes serve one port (the kernel spreads the clients)
         self.server = None
         self.clients = 0
         self.connections: set = set()
@@ -119,7 +121,7 @@ class StreamServer:
 
         s = self.model.stream
         self.server = await serve(self._handle, self.host, self.port, max_size=s.max_message_bytes, max_queue=16,
-                                  ping_interval=None)
+                                  ping_interval=None, reuse_port=self.reuse_port or None)
         self.port = self.server.sockets[0].getsockname()[1]
 
     async def stop(self) -> None:

@@ -207,26 +207,32 @@ def test_a_client_that_reads_too_slowly_is_disconnected_with_bounded_memory(mode
     assert most <= 8  # and never held more than its bound for it
 
 
-@pytest.mark.parametrize("sig", [signal.SIGTERM, signal.SIGINT])
-def test_a_signal_stops_the_server_cleanly(tiny_db, sig):
+@pytest.mark.parametrize("sig,workers", [(signal.SIGTERM, 1), (signal.SIGINT, 1), (signal.SIGTERM, 2)])
+def test_a_signal_stops_the_server_cleanly(tiny_db, sig, workers):
     env = dict(os.environ, PYTHONPATH=str(ROOT) + os.pathsep + os.environ.get("PYTHONPATH", ""))
-    proc = subprocess.Popen([sys.executable, "-m", "facesynth.cli", "stream", str(tiny_db), "--serve", "127.0.0.1:0"],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env)
+    proc = subprocess.Popen([sys.executable, "-m", "facesynth.cli", "stream", str(tiny_db), "--serve", "127.0.0.1:0",
+                             "--workers", str(workers)], stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env)
     try:
         line = _read_line(proc, 60)
         assert line.startswith("listening on ws://127.0.0.1:"), line
-        port = int(line.rsplit(":", 1)[1])
+        port = int(line.split()[2].rsplit(":", 1)[1])
 
         async def client():
-            async with connect(f"ws://127.0.0.1:{port}") as ws:
+            # several clients: with two workers the kernel spreads them over both processes
+            sockets = [await connect(f"ws://127.0.0.1:{port}") for _ in range(2 * workers)]
+            for ws in sockets:
                 assert json.loads(await ws.recv())["type"] == "hello"
-                proc.send_signal(sig)
+            await asyncio.sleep(0.2)
+            proc.send_signal(sig)
+            codes = []
+            for ws in sockets:
                 with pytest.raises(websockets.exceptions.ConnectionClosed):
-                    await asyncio.wait_for(ws.recv(), 10)
-                return ws.close_code
+                    await asyncio.wait_for(ws.recv(), 15)
+                codes.append(ws.close_code)
+            return codes
 
-        assert asyncio.run(client()) == 1001  # going away
-        assert proc.wait(10) == 0
+        assert asyncio.run(client()) == [1001] * (2 * workers)  # going away
+        assert proc.wait(15) == 0
         assert "stopped." in proc.stderr.read().decode()
     finally:
         if proc.poll() is None:
