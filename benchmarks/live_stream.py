@@ -13,16 +13,18 @@ utterances; their clean ground truth scores the mouth).
    chunk where the phone starts, or ``given_ahead``: all of them before the audio, as an engine that
    plans a sentence before speaking it can; the last message says the phones are complete). Time
    is simulated as real time: chunk c arrives at its stream time, its processing starts then (or
-   when the previous chunk's ends) and takes the measured wall time; a frame's **latency** is the time it is ready minus the arrival of the audio
-   sample it shows (its time; a frame ready before its sound counts 0). ``rtf``: processing time
-   over audio time, one stream on one core (``rtf_cpu``: its CPU time, less sensitive to a shared
-   machine's load). **Quality** against batch synthesis of the same
-   phones (same emotions, the whole-utterance search of the same method): RMS marker difference
-   (mm), mouth-opening r (inner-lip gap ``ULI_C``-``LLI_C``) between live and batch, and the
+   when the previous chunk's ends) and takes the measured wall time; a frame's **latency** is the
+   time it is ready minus the arrival of the audio sample it shows (its time; a frame ready before
+   its sound counts 0). ``rtf``: processing time over audio time, one stream on one core
+   (``rtf_cpu``: its CPU time, less sensitive to a shared machine's load). **Quality** against
+   batch synthesis of the same phones (same emotions, the whole-utterance search of the same
+   method): RMS marker difference
+   (mm), mouth-opening r (inner-lip gap ``ULI_C``-``LLI_C``) between live and batch, the ARKit
+   curves' RMS and jawOpen r against ``facesynth solve``'s curves of the batch markers, and the
    mouth-opening r of each against the clean ground truth (``quality_ratio`` = live r / batch r).
    ``path_differs``: the fraction of spoken steps whose node differs from the whole-utterance path.
-2. ``concurrent``: ``facesynth stream --serve 127.0.0.1:0 --workers W`` in its own processes; K clients push
-   ``--seconds`` of audio each at real-time speed (20 ms chunks) at once, and latency is measured
+2. ``concurrent``: ``facesynth stream --serve 127.0.0.1:0 --workers W`` in its own processes; K
+   clients push ``--seconds`` of audio each at real-time speed (20 ms chunks) at once, and latency is measured
    on the clock of this process (frame received minus the send of the chunk holding its sample).
    A stream count is **held** when its p95 latency stays within 100 ms of one stream's.
 
@@ -91,7 +93,7 @@ def stream_offline(model: LiveModel, align, pcm: bytes, phones_given: list[dict]
     if phones_given is not None:
         session.control(json.dumps({"type": "start", "phones": "given", "markers": True}))
     step = int(CHUNK_S * 16000) * 2
-    clock, busy, cpu, frames, times, latency = 0.0, 0.0, 0.0, [], [], []
+    clock, busy, cpu, frames, times, latency, arkit = 0.0, 0.0, 0.0, [], [], [], []
     pending = list(phones_given or [])
     n_chunks = -(-len(pcm) // step)
     for c in range(n_chunks + 1):
@@ -116,6 +118,8 @@ def stream_offline(model: LiveModel, align, pcm: bytes, phones_given: list[dict]
                 latency.append(max(0.0, clock - max(sample_arrival, m["time"])))
                 frames.append(np.array(m["markers"], np.float32).reshape(-1, 3))
                 times.append(m["time"])
+                arkit.append(m["arkit"])
+    session.arkit = np.array(arkit)
     return np.stack(frames), np.array(times), np.array(latency), busy, cpu, session
 
 
@@ -132,6 +136,7 @@ def offline(db_path: Path, corpus: Path, takes: list[str], config: Config) -> di
             if mode != "recognize" and hold != 1:
                 continue  # the hold only matters to recognition
             speech_lat, lat, rms, r_batch, r_live_truth, r_batch_truth, decisions = [], [], [], [], [], [], []
+            arkit_rms, jaw_r = [], []
             busy, cpu_s, audio_s, differ, spoken = 0.0, 0.0, 0.0, 0, 0
             for take in takes:
                 pcm = read_pcm(corpus / "audio" / f"{take}.wav")
@@ -139,7 +144,8 @@ def offline(db_path: Path, corpus: Path, takes: list[str], config: Config) -> di
                 if mode != "recognize":
                     utt = read_utterance(corpus / "labels" / f"{take}.TextGrid")
                     given = [{"phone": p, "start": float(a), "end": float(b)} for p, a, b in zip(utt.phones, utt.starts, utt.ends)]
-                live, times, latency, t_busy, t_cpu, session = stream_offline(model, align, pcm, given, mode == "given_ahead")
+                live, times, latency, t_busy, t_cpu, session = stream_offline(model, align, pcm, given,
+                                                                             mode == "given_ahead")
                 lat.append(latency)
                 s = session.synth
                 step_of = np.searchsorted(np.array(s.starts), times, side="right") - 1
@@ -155,6 +161,11 @@ def offline(db_path: Path, corpus: Path, takes: list[str], config: Config) -> di
                 differ += int(((np.array(s.committed) != batch["path"]) & keep).sum())
                 spoken += int(keep.sum())
                 rms.append(float(np.sqrt(((live - batch["markers"]) ** 2).sum(-1).mean())))
+                # the curves: the live per-batch solve against `facesynth solve` of the batch markers
+                batch_arkit = model.arkit(model.solve(batch["markers"], None))
+                jaw = model.arkit_names.index("jawOpen")
+                arkit_rms.append(float(np.sqrt(((session.arkit - batch_arkit) ** 2).mean())))
+                jaw_r.append(pearson(session.arkit[:, jaw], batch_arkit[:, jaw]))
                 o_live, o_batch = opening(live, names), opening(batch["markers"], names)
                 r_batch.append(pearson(o_live, o_batch))
                 clean, _ = truth.clean(take, names, db.reference)
@@ -173,10 +184,13 @@ def offline(db_path: Path, corpus: Path, takes: list[str], config: Config) -> di
                 "latency_p95_ms": round(1000 * float(np.percentile(lat_all, 95)), 1),
                 "speech_latency_median_ms": round(1000 * float(np.median(speech_all)), 1),
                 "speech_latency_p95_ms": round(1000 * float(np.percentile(speech_all, 95)), 1),
-                "rtf": round(busy / audio_s, 4), "rtf_cpu": round(cpu_s / audio_s, 4), "decision_median_ms": round(1000 * float(np.median(decisions)), 2),
+                "rtf": round(busy / audio_s, 4), "rtf_cpu": round(cpu_s / audio_s, 4),
+                "decision_median_ms": round(1000 * float(np.median(decisions)), 2),
                 "decision_p95_ms": round(1000 * float(np.percentile(decisions, 95)), 2),
                 "path_differs": round(differ / max(spoken, 1), 3),
                 "rms_vs_batch_mm": round(float(np.mean(rms)), 3),
+                "arkit_rms_vs_batch": round(float(np.mean(arkit_rms)), 4),
+                "jaw_open_r_vs_batch": round(float(np.nanmean(jaw_r)), 3),
                 "mouth_r_vs_batch": round(float(np.nanmean(r_batch)), 3),
                 "mouth_r_truth_live": round(float(np.nanmean(r_live_truth)), 3),
                 "mouth_r_truth_batch": round(float(np.nanmean(r_batch_truth)), 3),
