@@ -113,7 +113,8 @@ class Session:
         if self.recognizer is not None:
             for phone in self.recognizer.end():
                 self.synth.add_phone(*phone)
-        if self.time > self.synth.known_until and not self.synth.phones_complete:  # the phones cover the audio, as batch recognition tiles them
+        # the phones cover the audio, as batch recognition tiles them
+        if self.time > self.synth.known_until and not self.synth.phones_complete:
             self.synth.add_phone(PAU, self.synth.known_until, self.time)
         return self._frames(self.synth.finish(self.time)) + [{"type": "end", "frames": self.synth.sent}]
 

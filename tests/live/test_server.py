@@ -11,6 +11,7 @@ import signal
 import socket
 import subprocess
 import sys
+import time
 import wave
 from dataclasses import replace
 from pathlib import Path
@@ -70,6 +71,28 @@ def test_stdin_raw_pcm_with_markers(tiny_db, pcm):
     assert result.exit_code == 0, result.output
     frames = _check_frames([json.loads(line) for line in result.stdout.splitlines()])
     assert len(frames[0]["markers"]) == 91 * 3
+
+
+def test_live_link_packets_follow_the_frames_and_realtime_paces_the_reading(tiny_db, pcm):
+    from facesynth.live.livelink import decode
+
+    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as receiver:
+        receiver.bind(("127.0.0.1", 0))
+        receiver.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, 1 << 20)
+        receiver.settimeout(5)
+        clip = pcm[: 16000]  # 0.5 s
+        t0 = time.monotonic()
+        result = CliRunner().invoke(main, ["stream", str(tiny_db), "--realtime", "--livelink",
+                                           f"127.0.0.1:{receiver.getsockname()[1]}"], input=clip)
+        took = time.monotonic() - t0
+        assert result.exit_code == 0, result.output
+        frames = [json.loads(line) for line in result.stdout.splitlines() if '"frame"' in line]
+        packets = [decode(receiver.recvfrom(2048)[0]) for _ in frames]
+    assert took >= 0.5  # read no faster than the audio plays
+    assert [p.frame for p in packets] == [f["index"] for f in frames] and len(frames) == 15
+    names = json.loads(result.stdout.splitlines()[0])["arkit_names"]
+    jaw = names.index("jawOpen")
+    np.testing.assert_allclose([p.values[17] for p in packets], [f["arkit"][jaw] for f in frames], atol=1e-4)
 
 
 def test_stdin_wav_at_another_rate_is_refused(tiny_db, tmp_path):
