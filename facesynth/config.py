@@ -407,6 +407,9 @@ class StreamSettings:
                          unit="frames/s", gt=0, le=120)
     recognition_hold: int = setting("not in the papers: the recogniser's last phones that are still provisional "
                                     "(its partial hypothesis revises them)", unit="phones", ge=1, le=16)
+    recognition_restart_s: float = setting("not in the papers: the live recogniser starts a new utterance in the first "
+                                           "silence after this long (its work per step grows with the utterance)",
+                                           unit="s", gt=0, le=3600)
     chunk_s: float = setting("not in the papers: audio read per step from standard input", unit="s", gt=0, le=1)
     queue_messages: int = setting("not in the papers: messages waiting for one WebSocket client at most; a client "
                                   "that falls further behind is disconnected", unit="messages", ge=1, le=100000)

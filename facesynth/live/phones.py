@@ -5,6 +5,9 @@
   :mod:`facesynth.recognition`), fed 16 kHz mono 16-bit PCM as it arrives. Its partial
   hypothesis revises its last phones as more audio comes in, so the last
   ``stream.recognition_hold`` phones stay provisional; the others are final and passed on.
+  The decoder's utterance is ended and a new one started in a silence (0.3 s or more) once it is
+  ``stream.recognition_restart_s`` long, so a stream of hours costs no more per chunk than a
+  sentence (each step reads the utterance's segments, and the decoder's tables grow with it).
 - :func:`given_phones`: the phone timings a TTS engine gives as it speaks (a JSON control
   message), checked and mapped to the Festival set.
 """
@@ -22,6 +25,8 @@ from ..phonemes import PAU, map_phones, to_festival
 
 #: The sample rate live audio arrives at (Hz): 16-bit little-endian mono PCM.
 SAMPLE_RATE = 16000
+#: The silence (s) the recogniser must be in before it starts a new utterance: longer than a stop's closure.
+RESTART_SILENCE_S = 0.3
 
 
 @dataclass
@@ -31,6 +36,7 @@ class PhoneRecognizer:
 
     settings: AlignSettings
     hold: int = 2
+    restart_s: float = 20.0
 
     def __post_init__(self):
         import pocketsphinx
@@ -43,7 +49,8 @@ class PhoneRecognizer:
                                             frate=self.settings.frame_rate, loglevel="FATAL", dither=False)
         self.decoder.start_utt()
         self.samples = 0
-        self.accepted_frames = 0   # recogniser frames already passed on
+        self.utterance_start = 0   # recogniser frame of the stream where the decoder's utterance began
+        self.accepted_frames = 0   # recogniser frames of the stream already passed on
         self._pending = b""
         self.ended = False
 
@@ -61,7 +68,22 @@ class PhoneRecognizer:
         if whole:
             self.decoder.process_raw(data[:whole], full_utt=False)
             self.samples += whole // 2
-        return self._final(self.hold)
+        segments = self._segments()
+        out = self._final(segments[: len(segments) - self.hold])
+        frames_now = self.samples * self.settings.frame_rate // SAMPLE_RATE
+        if (frames_now - self.utterance_start >= self.restart_s * self.settings.frame_rate and segments
+                and (to_festival(segments[-1][0]) or PAU) == PAU
+                and segments[-1][2] - segments[-1][1] >= RESTART_SILENCE_S * self.settings.frame_rate):
+            # in a silence: end the decoder's utterance (its last phones become final) and start another
+            self.decoder.end_utt()
+            out += self._final(self._segments())
+            if self.accepted_frames < frames_now:  # audio the decoder had not placed yet: silence
+                frame = 1.0 / self.settings.frame_rate
+                out.append((PAU, self.accepted_frames * frame, frames_now * frame))
+                self.accepted_frames = frames_now
+            self.decoder.start_utt()
+            self.utterance_start = self.accepted_frames
+        return out
 
     def end(self) -> list[tuple[str, float, float]]:
         """End of the audio: every remaining phone is final."""
@@ -69,12 +91,15 @@ class PhoneRecognizer:
             return []
         self.decoder.end_utt()
         self.ended = True
-        return self._final(0)
+        return self._final(self._segments())
 
-    def _final(self, hold: int) -> list[tuple[str, float, float]]:
-        segments = [(s.word, s.start_frame, s.end_frame + 1) for s in self.decoder.seg() or ()]
-        if hold:
-            segments = segments[:-hold]
+    def _segments(self) -> list[tuple[str, int, int]]:
+        """The decoder's current segments: (label, first frame, end frame) in stream frames."""
+        off = self.utterance_start
+        return [(s.word, s.start_frame + off, s.end_frame + 1 + off) for s in self.decoder.seg() or ()]
+
+    def _final(self, segments) -> list[tuple[str, float, float]]:
+        """Pass on ``segments`` (final ones) not passed on yet, tiling from the last one passed on."""
         frame = 1.0 / self.settings.frame_rate
         out = []
         for label, a, b in segments:

@@ -65,7 +65,8 @@ class Session:
         self.samples += whole // 2
         if self.mode == "recognize":
             if self.recognizer is None:
-                self.recognizer = PhoneRecognizer(self.align, self.model.stream.recognition_hold)
+                self.recognizer = PhoneRecognizer(self.align, self.model.stream.recognition_hold,
+                                                  self.model.stream.recognition_restart_s)
             for phone in self.recognizer.feed(data[:whole]):
                 self.synth.add_phone(*phone)
         return self._frames(self.synth.step(self.time))

@@ -143,3 +143,33 @@ def test_phones_declared_complete_release_every_frame_before_the_audio_ends(db, 
     assert live.finish(utt.ends[-1]) == []
     with pytest.raises(InputError, match="declared complete"):
         live.add_phone("aa", 10.0, 10.1)
+
+
+def test_the_recogniser_restarts_in_silences_and_keeps_tiling(tiny_corpus, held_out_take, config):
+    import wave
+
+    from facesynth.live.phones import PhoneRecognizer
+
+    with wave.open(str(tiny_corpus / "audio" / f"{held_out_take}.wav")) as w:
+        pcm = w.readframes(w.getnframes())
+    silence = b"\0\0" * 8000
+    audio = (pcm + silence) * 3  # three sentences with half a second of silence after each
+
+    def run(restart_s):
+        rec = PhoneRecognizer(config.settings("align"), 1, restart_s)
+        phones, restarts = [], 0
+        for a in range(0, len(audio), 640):
+            before = rec.utterance_start
+            phones += rec.feed(audio[a : a + 640])
+            restarts += rec.utterance_start != before
+        return phones + rec.end(), restarts
+
+    whole, none = run(3600.0)
+    split, restarts = run(1.0)
+    assert none == 0 and restarts >= 2
+    for phones in (whole, split):
+        assert phones[0][1] == 0.0 and all(p[2] == q[1] for p, q in zip(phones, phones[1:]))  # they tile the stream
+        assert abs(phones[-1][2] - len(audio) / 32000) < 0.05
+    spoken = lambda phones: [p[0] for p in phones if p[0] != "pau"]  # noqa: E731
+    # each restart falls in a silence: the sentences' phones come out as without restarts, near enough
+    assert abs(len(spoken(split)) - len(spoken(whole))) <= 3
