@@ -34,6 +34,7 @@ settings), the last sent frame prepended so that consecutive batches join, and m
 from __future__ import annotations
 
 import time
+from collections import deque
 from dataclasses import dataclass, field, replace
 
 import numpy as np
@@ -138,7 +139,7 @@ class LiveSynthesizer:
     sent: int = 0                      # output frames sent so far
     finished: bool = False
     phones_complete: bool = False      # every phone of the utterance is known (a TTS engine said so)
-    decision_s: list[float] = field(default_factory=list)   # wall time of each decision
+    decision_s: deque = field(default_factory=lambda: deque(maxlen=100000))  # wall time of the recent decisions
     _last: tuple[np.ndarray, np.ndarray] | None = None   # the last sent frame's markers and rig weights
 
     def __post_init__(self):
@@ -160,7 +161,9 @@ class LiveSynthesizer:
         """Append a phone (Festival name, seconds). A start after the last end is preceded by a
         pause; a start before it is moved to it (the recogniser's boundaries can shift by a
         frame); a phone that ends no later than the last end is ignored."""
-        if self.finished or self.phones_complete:
+        if self.finished:
+            raise InputError("the stream has ended; start a new stream for the next utterance.")
+        if self.phones_complete:
             raise InputError("the utterance's phones were declared complete; no phone can be added.")
         last = self.known_until
         if end <= last + 1e-9:

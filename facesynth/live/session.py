@@ -58,6 +58,8 @@ class Session:
 
     def audio(self, pcm: bytes) -> list[dict]:
         """Audio bytes in; frame messages out."""
+        if self.synth.finished:
+            raise InputError(f"{self.where}: audio after 'end'; open a new stream for the next utterance.")
         self.started = True
         data = self._odd + pcm
         whole = len(data) - len(data) % 2

@@ -140,8 +140,10 @@ def test_phones_declared_complete_release_every_frame_before_the_audio_ends(db, 
     batch = _batch(db, utt, config)
     np.testing.assert_array_equal(live.committed, batch["path"])  # the whole utterance in one window
     np.testing.assert_allclose(np.stack([f.markers for f in frames]), batch["markers"], atol=1e-3)
-    assert live.finish(utt.ends[-1]) == []
     with pytest.raises(InputError, match="declared complete"):
+        live.add_phone("aa", 10.0, 10.1)
+    assert live.finish(utt.ends[-1]) == []
+    with pytest.raises(InputError, match="the stream has ended"):
         live.add_phone("aa", 10.0, 10.1)
 
 

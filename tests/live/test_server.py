@@ -289,3 +289,6 @@ def test_start_after_audio_is_refused(model):
     session.audio(b"\0\0" * 320)
     with pytest.raises(InputError, match="client 1: 'start' must come before any audio or phones."):
         session.control(json.dumps({"type": "start", "phones": "given"}))
+    assert session.end()[-1]["type"] == "end" and session.end() == []
+    with pytest.raises(InputError, match="client 1: audio after 'end'; open a new stream"):
+        session.audio(b"\0\0")
