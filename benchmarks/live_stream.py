@@ -240,13 +240,13 @@ def concurrent(db_path: Path, pcm: bytes, counts: list[int], seconds: float, wor
         port = int(proc.stderr.readline().decode().split()[2].rsplit(":", 1)[1])
         audio = (pcm * int(np.ceil(seconds * 32000 / len(pcm))))[: int(seconds * 32000) // 2 * 2]
         out = {}
-        for k in counts:
-            async def run():
-                t0 = time.monotonic() + 0.2
-                # streams start 20 ms apart so their chunks do not all arrive at once
-                return await asyncio.gather(*[_client(port, audio, t0 + i * CHUNK_S / max(k, 1)) for i in range(k)])
+        async def run(count: int):
+            t0 = time.monotonic() + 0.2
+            # the streams' starts are spread over one chunk, so their chunks do not all arrive at once
+            return await asyncio.gather(*[_client(port, audio, t0 + i * CHUNK_S / count) for i in range(count)])
 
-            lat = np.concatenate(asyncio.run(run()))
+        for k in counts:
+            lat = np.concatenate(asyncio.run(run(k)))
             out[str(k)] = {"latency_median_ms": round(1000 * float(np.median(lat)), 1),
                            "latency_p95_ms": round(1000 * float(np.percentile(lat, 95)), 1), "frames": int(len(lat))}
             print("concurrent", workers, k, out[str(k)], file=sys.stderr)
