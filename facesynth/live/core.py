@@ -90,7 +90,8 @@ class LiveModel:
                 graph = cluster_graph(db.nodes.phone, db.nodes.emotion, db.nodes.suc, features, self.synth.greedy_clusters)
             else:
                 graph = anime_graph(db.nodes.phone, db.nodes.emotion, db.nodes.suc)
-            self.greedy = Greedy(graph, db.nodes.viseme, db.nodes.emotion, self.tc, self.synth.alpha6 * self.synth.pnt)
+            # the dense matrix, read-only: streams on several threads share it
+            self.greedy = Greedy(graph, db.nodes.viseme, db.nodes.emotion, self.dense, self.synth.alpha6 * self.synth.pnt)
         rig = builtin_rig()
         self.face = load_face_rig()
         self.marker_map = marker_map(rig, db.marker_names, db.reference, "the motion database")
