@@ -40,8 +40,9 @@ class PipelineGroup(click.Group):
     order of the README and docs/pipeline.md), then any others alphabetically."""
 
     order = ("sample-corpus", "align", "ingest", "normalize", "pca", "build-db", "db", "check", "prune", "isomap",
-             "synthesize", "suggest", "expression", "head-motion", "deform", "keyshapes", "train-trajectory", "bind", "solve", "retarget", "rig-mesh",
-             "render", "export", "player", "batch", "capture", "evaluate", "tune", "devices")
+             "synthesize", "suggest", "expression", "head-motion", "deform", "keyshapes", "train-trajectory", "bind",
+             "solve", "retarget", "rig-mesh", "render", "export", "player", "stream", "batch", "capture", "evaluate", "tune",
+             "devices")
 
     def list_commands(self, ctx):
         listed = [name for name in self.order if name in self.commands]
@@ -131,6 +132,7 @@ READS: dict[str, tuple[str, ...]] = {
     "head-motion": ("head_motion",),
     "export": ("export",),
     "player": (),
+    "stream": ("stream", "synthesize", "align", "solve"),
 }
 # Every command reads the input bounds (facesynth.limits).
 READS = {name: sections + ("limits",) for name, sections in READS.items()}
@@ -1212,6 +1214,51 @@ def head_motion(ctx: Context, db: Path, audio: Path, corpus_path: Path, output: 
         ctx.say(f"warning: {warning}")
     ctx.say(f"head motion for {s['seconds']:.2f} s from {s['segments']} pitch segments ({s['consecutive']} joins "
             f"kept consecutive), pitch of {s['library_takes']} takes in {s['pitch_s']:.1f} s -> {output}")
+
+
+@main.command()
+@click.argument("db_path", metavar="DB", type=EXISTING)
+@click.option("--audio", type=PATH, default="-", show_default=True,
+              help="WAV (16 kHz mono 16-bit) or raw 16-bit PCM at 16 kHz; '-' reads standard input.")
+@click.option("--serve", default=None, metavar="HOST:PORT", help="Serve WebSocket clients instead (e.g. 127.0.0.1:8765).")
+@click.option("--livelink", default=None, metavar="HOST:PORT", help="Also send Live Link Face UDP packets (port 11111).")
+@click.option("--method", type=click.Choice(choices("stream", "method")), default=None, help="Decisions (default: stream.method).")
+@click.option("--lookahead", type=int, default=None, help="Phones of look-ahead (default: stream.lookahead_phones).")
+@click.option("--markers", is_flag=True, help="Add the markers (mm) to every frame.")
+@click.option("--realtime", is_flag=True, help="Read --audio at its own speed, as if it arrived live.")
+@click.option("--workers", type=int, default=1, show_default=True, help="With --serve: processes sharing the port.")
+@stage(writes=False)
+def stream(ctx: Context, db_path: Path, audio: str, serve: str | None, livelink: str | None, method: str | None,
+           lookahead: int | None, markers: bool, realtime: bool, workers: int):
+    """Live synthesis: audio in as it arrives, frames of ARKit curves out with a fixed latency
+    (JSON lines on standard output, or WebSocket messages), never revised (docs/live.md).
+    With --serve it serves WebSocket clients until Ctrl-C or SIGTERM, e.g.
+    `facesynth stream db.h5 --serve 127.0.0.1:8765 --livelink 127.0.0.1:11111`.
+
+    \b
+    Example:
+      facesynth stream db.h5 --audio corpus/audio/neutral_s016.wav > frames.jsonl
+    """
+    from .errors import InputError
+    from .stages import stream as stage
+
+    c = ctx.config
+    model = stage.load_model(db_path, c.settings("synthesize"), c.settings("stream"), c.settings("solve"), method, lookahead)
+    if serve is not None:
+        stage.serve(model, c.settings("align"), serve, livelink=livelink, ready=ctx.say, workers=workers)
+        ctx.say("stopped.")
+        return
+    if str(audio) == "-":
+        frames = stage.run_stdin(model, c.settings("align"), sys.stdin.buffer, click.echo, where="standard input",
+                                 livelink=livelink, markers=markers, realtime=realtime)
+    else:
+        path = Path(audio)
+        if not path.is_file():
+            raise InputError(f"{path}: no such audio file.")
+        with open(path, "rb") as fh:
+            frames = stage.run_stdin(model, c.settings("align"), fh, click.echo, where=str(path), livelink=livelink,
+                                     markers=markers, realtime=realtime)
+    ctx.detail(f"{frames} frames")
 
 
 @main.command()

@@ -412,6 +412,30 @@ class ExportSettings:
                                gt=0, le=1000)
 
 
+@dataclass(frozen=True)
+class StreamSettings:
+    """``[stream]``: live synthesis (``facesynth stream``): decisions with a bounded look-ahead,
+    incremental phones, the transports' bounds (docs/live.md)."""
+
+    method: str = setting("paper Algorithm 1 on a sliding window (dp, fixed-lag) or Cao et al.'s greedy tiling",
+                          choices=("dp", "greedy"))
+    lookahead_phones: int = setting("not in the papers: phones known past a step before it is committed (the "
+                                    "fixed lag); more: closer to the whole-utterance DP, later frames", unit="phones",
+                                    ge=0, le=64)
+    fps: float = setting("not in the papers: output frames per second (30 as batch, 60 as Live Link Face)",
+                         unit="frames/s", gt=0, le=120)
+    recognition_hold: int = setting("not in the papers: the recogniser's last phones that are still provisional "
+                                    "(its partial hypothesis revises them)", unit="phones", ge=1, le=16)
+    recognition_restart_s: float = setting("not in the papers: the live recogniser starts a new utterance in the first "
+                                           "silence after this long (its work per step grows with the utterance)",
+                                           unit="s", gt=0, le=3600)
+    chunk_s: float = setting("not in the papers: audio read per step from standard input", unit="s", gt=0, le=1)
+    queue_messages: int = setting("not in the papers: messages waiting for one WebSocket client at most; a client "
+                                  "that falls further behind is disconnected", unit="messages", ge=1, le=100000)
+    max_message_bytes: int = setting("not in the papers: largest WebSocket message a client may send",
+                                     unit="bytes", ge=1024, le=1 << 26)
+
+
 SECTIONS: dict[str, type] = {
     "ingest": IngestSettings,
     "align": AlignSettings,
@@ -435,6 +459,7 @@ SECTIONS: dict[str, type] = {
     "expression": ExpressionSettings,
     "head_motion": HeadMotionSettings,
     "export": ExportSettings,
+    "stream": StreamSettings,
 }
 
 S = TypeVar("S")

@@ -16,9 +16,25 @@
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 from scipy.linalg import solve_triangular
 from scipy.optimize import lsq_linear, nnls
+
+
+@functools.lru_cache(maxsize=1)
+def _blas_controller():
+    """threadpoolctl's view of the loaded BLAS libraries, found once (finding them costs about
+    4 ms, more than a live stream's solve of a few frames)."""
+    from threadpoolctl import ThreadpoolController
+
+    return ThreadpoolController()
+
+
+def one_blas_thread():
+    """A context in which BLAS runs on one thread."""
+    return _blas_controller().limit(limits=1)
 
 
 def nnls_weights(frames: np.ndarray, shapes: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -32,9 +48,7 @@ def nnls_weights(frames: np.ndarray, shapes: np.ndarray) -> tuple[np.ndarray, np
     K x K Gram matrix (a ridge of 1e-9 of its mean diagonal keeps it positive definite); a frame
     with missing markers (NaN) fits the coordinates it has with scipy's NNLS.
     """
-    from threadpoolctl import threadpool_limits
-
-    with threadpool_limits(1):  # small products: BLAS threads cost more than they save
+    with one_blas_thread():  # small products: BLAS threads cost more than they save
         return _nnls_weights(np.asarray(frames, np.float64), np.asarray(shapes, np.float64))
 
 
@@ -173,24 +187,25 @@ def fit_rig_weights(targets: np.ndarray, basis: np.ndarray, ridge: float = 0.0) 
 
 
 def solve_curves(frames: np.ndarray, basis: np.ndarray, *, smooth: float, ridge: float, iterations: int,
-                 tolerance: float) -> tuple[np.ndarray, np.ndarray, int]:
+                 tolerance: float, initial: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray, int]:
     """The direct facial solve; see :func:`_solve_curves`. Runs with one BLAS thread: its products
     are small (T x E by E x 3M), and a threaded BLAS spends more on waking threads than on them
     (25 times slower on a busy two-core machine)."""
-    from threadpoolctl import threadpool_limits
-
-    with threadpool_limits(1):
-        return _solve_curves(frames, basis, smooth=smooth, ridge=ridge, iterations=iterations, tolerance=tolerance)
+    with one_blas_thread():
+        return _solve_curves(frames, basis, smooth=smooth, ridge=ridge, iterations=iterations, tolerance=tolerance,
+                             initial=initial)
 
 
 def _solve_curves(frames: np.ndarray, basis: np.ndarray, *, smooth: float, ridge: float, iterations: int,
-                  tolerance: float) -> tuple[np.ndarray, np.ndarray, int]:
+                  tolerance: float, initial: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray, int]:
     """The direct facial solve.
 
     frames : (T, M, 3) marker displacements in rig units (NaN: missing); basis : (E, M, 3) the rig's
     shape displacements at the markers' vertices. smooth : weight of ``sum_t |w_t - w_{t-1}|^2``,
     ridge : of ``|w|^2``, both relative to the mean squared norm of a basis row. Stops when no
-    weight moved by more than ``tolerance`` in an iteration, or after ``iterations``.
+    weight moved by more than ``tolerance`` in an iteration, or after ``iterations``. ``initial``
+    ((E,) or (T, E)) starts the iterations there instead of at 0 (a live stream starts each batch
+    of frames at the weights of the frame before: the same minimum, fewer iterations).
     Returns weights (T, E) float64 in [0, 1], the per-frame RMS marker residual (T,) (NaN where no
     marker was seen) and the iterations run.
     """
@@ -205,7 +220,7 @@ def _solve_curves(frames: np.ndarray, basis: np.ndarray, *, smooth: float, ridge
     # Lipschitz constant of the gradient: |A|^2 (masks only shrink it) + 4 smooth (path Laplacian) + ridge.
     lip = np.linalg.norm(a, 2) ** 2 + 4 * lam_s + lam_r
     step = 1.0 / lip
-    w = np.zeros((t_count, len(a)))
+    w = np.zeros((t_count, len(a))) if initial is None else np.clip(np.broadcast_to(initial, (t_count, len(a))), 0.0, 1.0)
     y, theta, prev_obj = w.copy(), 1.0, np.inf
     # Frames with every marker seen take the misfit's gradient through the E x E Gram matrix,
     # ``y (A A^T) - D A^T`` (D/E times less work per iteration); frames with missing markers

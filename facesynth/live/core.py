@@ -1,0 +1,328 @@
+"""The live core: phones arrive one by one (with their times), node decisions are taken with a
+bounded look-ahead, and frames are sent once, in order, never revised.
+
+Decisions (``stream.method``):
+
+- ``dp``: the exact DP of paper Algorithm 1 over a sliding window. When phones are known up to
+  step K and steps ``[0, c)`` are committed, the DP runs on steps ``[c - 1, K]`` with step
+  ``c - 1`` pinned to its committed node (Eq. 10's blocking penalty), so the transition into
+  the window is costed exactly; steps ``c .. K - L`` (L = ``stream.lookahead_phones``) of its
+  optimal path are committed. It is a fixed-lag decision: exact within its window, and equal
+  to the whole-utterance DP when the look-ahead covers the utterance (tested); with a shorter
+  look-ahead a committed step cannot be changed by what comes after the window
+  (``benchmarks/live_stream.py`` measures how often the paths differ).
+- ``greedy``: Cao et al.'s greedy tiling (:class:`facesynth.search.greedy.Greedy`) of the
+  uncommitted spoken phones, its first run tied to the last committed node; steps older than
+  the look-ahead are committed.
+
+Frames: the committed path is rendered as batch synthesis renders a path
+(:func:`facesynth.search.synthesis.render_path`: time-warp, the join smoothing of VII-B, pauses
+regenerated, Eq. 11, down-sampling). A frame is sent only when nothing uncommitted can change
+it: it must lie before the first uncommitted phone by more than the join smoothing's reach
+(``smoothing_half_window`` capture frames; none when that phone is a pause, since joins next to
+a pause are not smoothed), and before a committed pause that is last (a pause is interpolated
+toward the next phone's first frame: its frames wait for that phone).
+Only a window of recent phones is re-rendered at each decision, starting two spoken phones
+before the first unsent frame, so the work per decision does not grow with the stream.
+
+Rig curves: the markers of each batch of sent frames are solved onto the built-in rig with
+the direct facial solve (:func:`facesynth.retarget.solve.solve_curves`, the ``[solve]``
+settings), the last sent frame prepended so that consecutive batches join, and mapped to the
+52 ARKit weights (:meth:`facesynth.facerig.FaceRig.to_arkit`).
+"""
+
+from __future__ import annotations
+
+import time
+from collections import deque
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+
+from ..config import SolveSettings, StreamSettings, SynthesizeSettings
+from ..errors import InputError
+from ..model.motiondb import MotionDatabase
+from ..phonemes import PAU
+from ..search.costs import step_costs
+from ..search.dp import dp_numpy
+from ..search.inputs import Utterance
+from ..search.synthesis import render_path
+
+
+@dataclass
+class Frame:
+    """One output frame: ``index`` on the output grid (time = index / fps, s), the 52 ARKit
+    weights in [0, 1] (``FaceRig.arkit_names`` order), the markers ((M, 3) float32 mm, head
+    frame) and ``ready_at``: the stream time (s of audio received) when the frame was decided."""
+
+    index: int
+    time: float
+    arkit: np.ndarray
+    markers: np.ndarray
+    ready_at: float
+
+
+class LiveModel:
+    """What every stream of one database shares (read once): the database, the dense transition
+    costs (Table I, (N, N) float32), the greedy search and the facial solve's basis.
+
+    db : a read :class:`MotionDatabase`; synth : the search and post-processing settings
+    (smoothing, output rate are taken from ``stream`` where it has them); solve : the facial solve's.
+    """
+
+    def __init__(self, db: MotionDatabase, synth: SynthesizeSettings, stream: StreamSettings, solve: SolveSettings):
+        from ..facerig import load_face_rig
+        from ..retarget.rig import builtin_rig, marker_map
+
+        self.db = db
+        self.stream = stream
+        self.solve_settings = solve
+        self.synth = replace(synth, output_fps=stream.fps, postprocess="deng", use_opencl=False)
+        self.tc = db.transition_costs(self.synth, False)
+        self.dense = np.ascontiguousarray(self.tc.dense(), np.float32)
+        self.emotions = sorted(set(db.nodes.emotion))
+        self.greedy = None
+        if stream.method == "greedy":
+            from ..search.greedy import Greedy, anime_graph, cluster_graph, motion_features
+
+            if self.synth.greedy_clusters > 0:
+                features = motion_features(db.coeffs, db.nodes.frame_start, db.nodes.frame_count)
+                graph = cluster_graph(db.nodes.phone, db.nodes.emotion, db.nodes.suc, features, self.synth.greedy_clusters)
+            else:
+                graph = anime_graph(db.nodes.phone, db.nodes.emotion, db.nodes.suc)
+            # the dense matrix, read-only: streams on several threads share it
+            self.greedy = Greedy(graph, db.nodes.viseme, db.nodes.emotion, self.dense, self.synth.alpha6 * self.synth.pnt)
+        rig = builtin_rig()
+        self.face = load_face_rig()
+        self.marker_map = marker_map(rig, db.marker_names, db.reference, "the motion database")
+        self.basis = rig.deltas[:, self.marker_map.vertices]
+        self.rest_coeffs = db.model.project(db.reference[None])[0]
+
+    @property
+    def arkit_names(self) -> tuple[str, ...]:
+        """The 52 ARKit names of :attr:`Frame.arkit`, in Live Link Face order."""
+        return self.face.arkit_names
+
+    def solve(self, markers: np.ndarray, previous: tuple[np.ndarray, np.ndarray] | None) -> np.ndarray:
+        """(T, E) rig weights for markers (T, M, 3) mm. ``previous`` (the last sent frame's markers
+        (M, 3) and rig weights (E,)) is solved with them for continuity and dropped; its weights
+        start the iterations."""
+        from ..retarget.solve import solve_curves
+
+        frames = markers if previous is None else np.concatenate([previous[0][None], markers])
+        disp = self.marker_map.displacements(frames, self.db.reference)
+        w, _, _ = solve_curves(disp, self.basis, smooth=self.solve_settings.smooth, ridge=self.solve_settings.ridge,
+                               iterations=self.solve_settings.iterations, tolerance=self.solve_settings.tolerance,
+                               initial=None if previous is None else previous[1])
+        return w if previous is None else w[1:]
+
+    def arkit(self, weights: np.ndarray) -> np.ndarray:
+        """(T, 52) ARKit weights in [0, 1] (:attr:`arkit_names` order) for rig weights (T, E)."""
+        return np.clip(self.face.to_arkit(weights), 0.0, 1.0)
+
+
+@dataclass
+class LiveSynthesizer:
+    """One stream: phones in (:meth:`add_phone`), frames out, each frame once and in order.
+
+    The phone list tiles the stream from 0 s; a phone is (Festival name, start s, end s) and must
+    start where the previous one ended (a gap is filled with a pause by :meth:`add_phone`).
+    Adjacent pauses are merged, as batch synthesis merges them.
+    """
+
+    model: LiveModel
+    emotion: str = "neutral"
+    phones: list[str] = field(default_factory=list)
+    starts: list[float] = field(default_factory=list)
+    ends: list[float] = field(default_factory=list)
+    emotions: list[str] = field(default_factory=list)
+    committed: list[int] = field(default_factory=list)
+    sent: int = 0                      # output frames sent so far
+    finished: bool = False
+    phones_complete: bool = False      # every phone of the utterance is known (a TTS engine said so)
+    decision_s: deque = field(default_factory=lambda: deque(maxlen=100000))  # wall time of the recent decisions
+    _last: tuple[np.ndarray, np.ndarray] | None = None   # the last sent frame's markers and rig weights
+
+    def __post_init__(self):
+        self.set_emotion(self.emotion)
+
+    def set_emotion(self, name: str) -> None:
+        """The emotion of the phones that arrive from now on (a control message); one of the
+        database's emotions."""
+        if name not in self.model.emotions:
+            raise InputError(f"emotion {name!r} is not in the motion database; use one of {', '.join(self.model.emotions)}.")
+        self.emotion = name
+
+    @property
+    def known_until(self) -> float:
+        """End of the last known phone, s."""
+        return self.ends[-1] if self.ends else 0.0
+
+    def add_phone(self, phone: str, start: float, end: float) -> None:
+        """Append a phone (Festival name, seconds). A start after the last end is preceded by a
+        pause; a start before it is moved to it (the recogniser's boundaries can shift by a
+        frame); a phone that ends no later than the last end is ignored."""
+        if self.finished:
+            raise InputError("the stream has ended; start a new stream for the next utterance.")
+        if self.phones_complete:
+            raise InputError("the utterance's phones were declared complete; no phone can be added.")
+        last = self.known_until
+        if end <= last + 1e-9:
+            return
+        if start > last + 1e-6:
+            self._append(PAU, last, start)
+        self._append(phone, max(start, last), end)
+
+    def _append(self, phone: str, start: float, end: float) -> None:
+        if phone == PAU and self.phones and self.phones[-1] == PAU:
+            self.ends[-1] = end  # one silence is one step (batch merges them likewise)
+            return
+        self.phones.append(phone)
+        self.starts.append(start)
+        self.ends.append(end)
+        self.emotions.append(self.emotion)
+
+    def step(self, now: float) -> list[Frame]:
+        """Take the decisions the known phones allow and return the frames that became final;
+        ``now`` is the stream time (s of audio received), recorded in each frame."""
+        t0 = time.perf_counter()
+        lookahead = 0 if self.phones_complete else self.model.stream.lookahead_phones
+        self._decide(len(self.phones) - lookahead)
+        frames = self._emit(now)
+        self.decision_s.append(time.perf_counter() - t0)
+        return frames
+
+    def finish(self, now: float) -> list[Frame]:
+        """End of stream: commit every known phone and send the remaining frames."""
+        if self.finished:
+            return []
+        self._decide(len(self.phones))
+        self.finished = True
+        return self._emit(now)
+
+    # -- decisions -------------------------------------------------------------------------
+
+    def _decide(self, upto: int) -> None:
+        """Commit steps up to (not including) ``upto``."""
+        c = len(self.committed)
+        if upto <= c:
+            return
+        first = max(0, c - 1)
+        phones = self.phones[first:]
+        emotions = self.emotions[first:]
+        if self.model.greedy is not None:
+            path = self._greedy(phones, emotions, self.committed[-1] if c else -1, pinned=c > 0)
+        else:
+            constraints = {0: self.committed[-1]} if c else {}
+            s = self.model.synth
+            steps = step_costs(phones, emotions, self.model.db.nodes.phone, self.model.db.nodes.emotion, constraints, s)
+            path = dp_numpy(self.model.dense, steps.total).path
+        offset = c - first
+        self.committed.extend(int(n) for n in path[offset : offset + upto - c])
+
+    def _greedy(self, phones: list[str], emotions: list[str], before: int, pinned: bool) -> np.ndarray:
+        """Greedy tiling of ``phones`` (the first pinned to ``before`` when ``pinned``)."""
+        greedy = self.model.greedy
+        start = 1 if pinned else 0
+        nodes = np.full(len(phones), -1, np.int64)
+        if pinned:
+            nodes[0] = before
+        t = start
+        while t < len(phones):
+            if phones[t] == PAU:  # a pause's frames are regenerated: any node will do; keep the last
+                nodes[t] = before if before >= 0 else 0
+                t += 1
+                continue
+            end = t
+            while end < len(phones) and phones[end] != PAU:
+                end += 1
+            animes = greedy.tile(phones[t:end], emotions[t:end], before)
+            nodes[t:end] = greedy.g.node[animes]
+            before = int(nodes[end - 1])
+            t = end
+        return nodes
+
+    # -- frames ----------------------------------------------------------------------------
+
+    def _final_frames(self) -> int:
+        """How many output frames depend on committed steps only.
+
+        The capture frames of step t start at ``round(starts[t] * fps)`` (:func:`frame_ranges`).
+        With steps ``[0, c)`` committed: a committed pause at ``c - 1`` is interpolated toward the
+        next step's first frame, so frames stop at its first; otherwise frames stop at step c's
+        first, less the blend's reach (``smoothing_half_window`` frames) when step c is spoken or not
+        yet known (joins next to a pause are not smoothed). An output frame takes the capture frame
+        under it (and the next one when the rates are not in a whole ratio)."""
+        c = len(self.committed)
+        if c == 0:
+            return 0
+        if self.phones_complete and c == len(self.phones):
+            return self._total_frames()
+        db, s = self.model.db, self.model.synth
+        if self.phones[c - 1] == PAU:
+            limit = int(round(self.starts[c - 1] * db.fps))
+        else:
+            limit = int(round(self.ends[c - 1] * db.fps))
+            if c == len(self.phones) or self.phones[c] != PAU:
+                limit -= s.smoothing_half_window
+        ratio = db.fps / self.model.stream.fps
+        if abs(ratio - round(ratio)) > 1e-9:
+            limit -= 1  # the down-sampling interpolates with the next capture frame
+        return max(0, int(np.ceil(limit / ratio - 1e-9)))
+
+    def _emit(self, now: float) -> list[Frame]:
+        fps = self.model.stream.fps
+        if self.finished:
+            n_final = self._total_frames()
+        else:
+            n_final = self._final_frames()
+        if n_final <= self.sent:
+            return []
+        markers = self._render(self.sent, n_final)
+        weights = self.model.solve(markers, self._last)
+        arkit = self.model.arkit(weights)
+        frames = [Frame(self.sent + k, (self.sent + k) / fps, arkit[k], markers[k], now) for k in range(len(markers))]
+        self.sent = n_final
+        self._last = (markers[-1], weights[-1])
+        return frames
+
+    def _total_frames(self) -> int:
+        """Frames batch synthesis gives the whole utterance (its down-sampling of the capture frames)."""
+        db = self.model.db
+        if not self.phones:
+            return 0
+        n_capture = int(round(self.ends[-1] * db.fps))
+        ratio = db.fps / self.model.stream.fps
+        return int(np.floor((n_capture - 1) / ratio)) + 1 if n_capture > 0 else 0
+
+    def _render(self, first: int, stop: int) -> np.ndarray:
+        """Markers (stop - first, M, 3) mm of output frames [first, stop), rendering the committed
+        steps from two spoken phones before the step of frame ``first``."""
+        db = self.model.db
+        fps = self.model.stream.fps
+        c = len(self.committed)
+        starts = np.array(self.starts[:c])
+        k = int(np.searchsorted(starts, first / fps, side="right")) - 1
+        k = max(0, k)
+        spoken = 0
+        while k > 0 and spoken < 2:
+            k -= 1
+            if self.phones[k] != PAU:
+                spoken += 1
+        while k > 0 and self.phones[k] == PAU:
+            k -= 1
+        # shift the window to start on a whole capture frame, so its frame grid is batch's grid
+        ratio = db.fps / fps
+        if abs(ratio - round(ratio)) < 1e-9:  # a whole number of output frames: the grids agree
+            shift_frames = int(round(self.starts[k] * db.fps)) // int(round(ratio)) * int(round(ratio))
+        else:
+            shift_frames = 0  # no common grid: render from the start
+        shift = shift_frames / db.fps
+        utt = Utterance(self.phones[k:c], np.array(self.starts[k:c]) - shift, np.array(self.ends[k:c]) - shift,
+                        self.emotions[k:c])
+        out = render_path(db, utt, np.array(self.committed[k:c]), self.model.synth)["markers"]
+        base = int(round(shift * fps))
+        lo, hi = first - base, stop - base
+        if lo < 0 or hi > len(out):
+            raise AssertionError(f"render window [{lo}, {hi}) outside its {len(out)} frames")  # a bug, not input
+        return out[lo:hi].astype(np.float32)

@@ -1,0 +1,177 @@
+"""The live core: fixed-lag decisions against the whole-utterance search, frames that are never
+revised, emotion switches, given phone timings."""
+
+from dataclasses import replace
+
+import numpy as np
+import pytest
+
+from facesynth.errors import InputError
+from facesynth.live.core import LiveModel, LiveSynthesizer
+from facesynth.live.phones import given_phones
+from facesynth.model.motiondb import MotionDatabase
+from facesynth.search.inputs import read_utterance
+from facesynth.search.synthesis import render_path, synthesize
+
+
+@pytest.fixture(scope="module")
+def db(tiny_db):
+    return MotionDatabase.read(tiny_db)
+
+
+@pytest.fixture(scope="module")
+def utt(tiny_corpus, held_out_take):
+    return read_utterance(tiny_corpus / "labels" / f"{held_out_take}.TextGrid")
+
+
+def _model(db, config, **stream):
+    return LiveModel(db, config.settings("synthesize"), replace(config.settings("stream"), **stream),
+                     config.settings("solve"))
+
+
+def _stream(model, utt, switch: dict | None = None):
+    """Feed ``utt`` phone by phone (``switch``: step -> emotion set before it); returns the
+    synthesizer, the frames in the order sent and the committed prefix after each step."""
+    live = LiveSynthesizer(model)
+    frames, prefixes = [], []
+    for t, (p, a, b) in enumerate(zip(utt.phones, utt.starts, utt.ends)):
+        if switch and t in switch:
+            live.set_emotion(switch[t])
+        live.add_phone(p, a, b)
+        frames += live.step(b)
+        prefixes.append(list(live.committed))
+    frames += live.finish(utt.ends[-1])
+    return live, frames, prefixes
+
+
+def _batch(db, utt, config, search="dp"):
+    s = replace(config.settings("synthesize"), use_opencl=False, search=search)
+    return synthesize(db, utt, {}, s)
+
+
+def test_fixed_lag_dp_is_the_whole_utterance_dp_when_the_lookahead_covers_it(db, utt, config):
+    live, frames, prefixes = _stream(_model(db, config, method="dp", lookahead_phones=len(utt)), utt)
+    batch = _batch(db, utt, config)
+    assert all(p == [] for p in prefixes)  # nothing is decided before the end
+    np.testing.assert_array_equal(live.committed, batch["path"])
+    markers = np.stack([f.markers for f in frames])
+    assert markers.shape == batch["markers"].shape
+    np.testing.assert_allclose(markers, batch["markers"], atol=1e-4)
+
+
+@pytest.mark.parametrize("method,lookahead,fps", [("dp", 0, 30), ("dp", 1, 30), ("dp", 2, 30), ("greedy", 1, 30),
+                                                  ("dp", 1, 60), ("dp", 1, 25)])
+def test_frames_are_sent_once_in_order_and_never_need_revision(db, utt, config, method, lookahead, fps):
+    live, frames, prefixes = _stream(_model(db, config, method=method, lookahead_phones=lookahead, fps=fps), utt)
+    assert [f.index for f in frames] == list(range(len(frames)))
+    # committed decisions only grow: each prefix is a prefix of the final path
+    for p in prefixes:
+        assert p == live.committed[: len(p)]
+    # most frames go out before the end, and each sent frame is what rendering the final path gives
+    early = [f for f in frames if f.ready_at < utt.ends[-1]]
+    assert len(early) > len(frames) // 2
+    final = render_path(db, utt, np.array(live.committed), live.model.synth)["markers"]
+    assert len(final) == len(frames)
+    np.testing.assert_allclose(np.stack([f.markers for f in frames]), final, atol=1e-3)
+    arkit = np.stack([f.arkit for f in frames])
+    assert arkit.shape == (len(frames), 52) and arkit.min() >= 0 and arkit.max() <= 1
+    jaw = arkit[:, live.model.arkit_names.index("jawOpen")]
+    assert jaw.max() > 0.1 and jaw.min() < 0.5 * jaw.max()  # the mouth opens and closes
+
+
+def test_a_short_lookahead_changes_few_decisions(db, utt, config):
+    whole = _batch(db, utt, config)["path"]
+    live, _, _ = _stream(_model(db, config, method="dp", lookahead_phones=2), utt)
+    spoken = np.array([p != "pau" for p in utt.phones])
+    differ = (np.array(live.committed) != whole) & spoken
+    assert differ.sum() <= spoken.sum() // 2
+
+
+def test_greedy_with_the_whole_lookahead_is_batch_greedy(db, utt, config):
+    live, _, _ = _stream(_model(db, config, method="greedy", lookahead_phones=len(utt)), utt)
+    batch = _batch(db, utt, config, search="greedy")["path"]
+    spoken = np.array([p != "pau" for p in utt.phones])
+    np.testing.assert_array_equal(np.array(live.committed)[spoken], batch[spoken])
+
+
+def test_an_emotion_switch_applies_to_the_phones_after_it(db, utt, config):
+    half = len(utt) // 2
+    live, _, _ = _stream(_model(db, config, method="dp", lookahead_phones=1), utt, switch={0: "sad", half: "happy"})
+    assert live.emotions[:half] == ["sad"] * half and set(live.emotions[half:]) == {"happy"}
+    node_emotion = np.array(db.nodes.emotion)[live.committed]
+    spoken = np.array([p != "pau" for p in live.phones])
+    after = node_emotion[half:][spoken[half:]]
+    assert (after == "happy").mean() > 0.5
+    with pytest.raises(InputError, match="emotion 'bored' is not in the motion database; use one of"):
+        live.set_emotion("bored")
+
+
+def test_given_phone_timings_are_checked():
+    assert given_phones([{"phone": "HH", "start": 0, "end": 0.1}, {"phone": "AH0", "start": 0.1, "end": 0.2}],
+                        "m") == [("hh", 0.0, 0.1), ("ax", 0.1, 0.2)]
+    with pytest.raises(InputError, match="m, 0.100 s: unknown phone 'QQ'"):
+        given_phones([{"phone": "HH", "start": 0, "end": 0.1}, {"phone": "QQ", "start": 0.1, "end": 0.2}], "m")
+    with pytest.raises(InputError, match="starts at 0.050 s, before the previous phone ends"):
+        given_phones([{"phone": "HH", "start": 0, "end": 0.1}, {"phone": "AA", "start": 0.05, "end": 0.2}], "m")
+    with pytest.raises(InputError, match="needs finite times"):
+        given_phones([{"phone": "HH", "start": 0.2, "end": 0.1}], "m")
+    with pytest.raises(InputError, match="must be a list"):
+        given_phones("hh", "m")
+
+
+def test_a_gap_between_phones_becomes_a_pause(db, config):
+    live = LiveSynthesizer(_model(db, config))
+    live.add_phone("hh", 0.1, 0.2)
+    live.add_phone("pau", 0.2, 0.3)
+    live.add_phone("pau", 0.3, 0.4)
+    live.add_phone("aa", 0.35, 0.5)  # starts inside the known span: moved to its end
+    assert live.phones == ["pau", "hh", "pau", "aa"]
+    assert live.starts == [0.0, 0.1, 0.2, 0.4] and live.ends == [0.1, 0.2, 0.4, 0.5]
+
+
+def test_phones_declared_complete_release_every_frame_before_the_audio_ends(db, utt, config):
+    live = LiveSynthesizer(_model(db, config, method="dp", lookahead_phones=3))
+    for p, a, b in zip(utt.phones, utt.starts, utt.ends):
+        live.add_phone(p, a, b)
+    held = live.step(0.0)
+    live.phones_complete = True
+    frames = held + live.step(0.0)
+    assert len(held) < len(frames) == live._total_frames()
+    batch = _batch(db, utt, config)
+    np.testing.assert_array_equal(live.committed, batch["path"])  # the whole utterance in one window
+    np.testing.assert_allclose(np.stack([f.markers for f in frames]), batch["markers"], atol=1e-3)
+    with pytest.raises(InputError, match="declared complete"):
+        live.add_phone("aa", 10.0, 10.1)
+    assert live.finish(utt.ends[-1]) == []
+    with pytest.raises(InputError, match="the stream has ended"):
+        live.add_phone("aa", 10.0, 10.1)
+
+
+def test_the_recogniser_restarts_in_silences_and_keeps_tiling(tiny_corpus, held_out_take, config):
+    import wave
+
+    from facesynth.live.phones import PhoneRecognizer
+
+    with wave.open(str(tiny_corpus / "audio" / f"{held_out_take}.wav")) as w:
+        pcm = w.readframes(w.getnframes())
+    silence = b"\0\0" * 8000
+    audio = (pcm + silence) * 3  # three sentences with half a second of silence after each
+
+    def run(restart_s):
+        rec = PhoneRecognizer(config.settings("align"), 1, restart_s)
+        phones, restarts = [], 0
+        for a in range(0, len(audio), 640):
+            before = rec.utterance_start
+            phones += rec.feed(audio[a : a + 640])
+            restarts += rec.utterance_start != before
+        return phones + rec.end(), restarts
+
+    whole, none = run(3600.0)
+    split, restarts = run(1.0)
+    assert none == 0 and restarts >= 2
+    for phones in (whole, split):
+        assert phones[0][1] == 0.0 and all(p[2] == q[1] for p, q in zip(phones, phones[1:]))  # they tile the stream
+        assert abs(phones[-1][2] - len(audio) / 32000) < 0.05
+    spoken = lambda phones: [p[0] for p in phones if p[0] != "pau"]  # noqa: E731
+    # each restart falls in a silence: the sentences' phones come out as without restarts, near enough
+    assert abs(len(spoken(split)) - len(spoken(whole))) <= 3
