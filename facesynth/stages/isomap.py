@@ -32,7 +32,7 @@ import numpy as np
 from scipy.ndimage import gaussian_filter
 from scipy.spatial import Delaunay
 
-from ..artifacts import atomic_folder, check_output, check_output_folder
+from ..artifacts import atomic_folder, check_output, check_output_folder, published_together
 from ..config import IsomapSettings, settings_json
 from ..errors import InputError
 from ..limits import require_memory
@@ -369,7 +369,7 @@ def run(db_path: Path, out: Path, settings: IsomapSettings, images: Path | None 
     t0 = time.perf_counter()
     clusters = build_clusters(db.coeffs, db.nodes, settings)
     embed_s = time.perf_counter() - t0
-    with contextlib.ExitStack() as stack:
+    with published_together(), contextlib.ExitStack() as stack:  # the artifact and the images, or neither
         if images is not None:  # written beside the folder, renamed into place after the artifact
             folder = stack.enter_context(atomic_folder(images, "the images", overwrite))
             trajectories = {c.phone: save_cluster_images(c, folder, settings) for c in progress(clusters, "images")}

@@ -13,7 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..artifacts import check_output
+from ..artifacts import atomic_path, check_output, published_together
 from ..config import KeyshapesSettings, settings_json
 from ..errors import InputError
 from ..model.keyshapes import EmotionKeyShapes, KeyShapes
@@ -115,8 +115,10 @@ def run(db_path: Path, out: Path, settings: KeyshapesSettings, sheet: Path | Non
             raise InputError(f"{sheet}: the contact sheet is a PNG image; give a .png path.")
     db = MotionDatabase.read(db_path)
     result = build(db, settings, settings.method, settings.count, str(db_path))
-    result.write(out, config=settings_json(settings), inputs=[db_path], overwrite=overwrite)
-    if sheet is not None:
-        contact_sheet(result, sheet)
+    with published_together():  # the artifact and its sheet, or neither
+        result.write(out, config=settings_json(settings), inputs=[db_path], overwrite=overwrite)
+        if sheet is not None:
+            with atomic_path(sheet, overwrite) as tmp:
+                contact_sheet(result, tmp)
     return {"emotions": {e: {"count": k.count, "rms_mm": k.rms} for e, k in result.emotions.items()},
             "method": settings.method}
