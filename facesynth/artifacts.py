@@ -22,14 +22,18 @@ import signal
 import stat
 import threading
 import time
+from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
-from typing import Callable, Iterator, Sequence
+from typing import TYPE_CHECKING
 
 import h5py
 import numpy as np
 
 from . import __version__
 from .errors import ArtifactError, InputError, OutputExistsError
+
+if TYPE_CHECKING:
+    from .check import Snapshot
 
 #: Current schema of each artifact kind; bumped on an incompatible change.
 SCHEMAS: dict[str, int] = {
@@ -576,10 +580,10 @@ def write_artifact(
 
 #: What :func:`open_artifact` validated, by the operating-system file handle of the open file
 #: (``h5py`` hands out a new File object for ``dataset.file``; the handle is the same).
-_SNAPSHOTS: dict[int, tuple[object, tuple[int, int]]] = {}  # handle -> (snapshot, (device, inode))
+_SNAPSHOTS: dict[int, tuple[Snapshot, tuple[int, int]]] = {}  # handle -> (snapshot, (device, inode))
 
 
-def _live_snapshots() -> Iterator[tuple[int, object]]:
+def _live_snapshots() -> Iterator[tuple[int, Snapshot]]:
     """(handle, snapshot) of the files still open on the inode they were validated on; others are forgotten."""
     for handle, (snap, ids) in list(_SNAPSHOTS.items()):
         try:

@@ -201,7 +201,7 @@ def _check_outputs(command: str, kwargs: dict, overwrite: bool) -> None:
     no-clobber before any work, so a wrong path costs nothing."""
     from .artifacts import check_output, check_output_folder
 
-    folders = FOLDER_OUTPUTS.get(command, ())
+    folders = FOLDER_OUTPUTS.get(command, {})
     if command == "export" and kwargs.get("fmt") == "obj-seq":  # the one format that writes a folder
         folders = {"output": "the OBJ sequence"}
     for name in ("output", "out_dir", "images"):

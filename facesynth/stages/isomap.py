@@ -26,6 +26,7 @@ import contextlib
 import html
 import time
 import warnings
+from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
@@ -155,7 +156,7 @@ def map_transform(points: np.ndarray, size: int) -> dict:
             "lo": [float(lo[0]), float(lo[1])], "hi": [float(hi[0]), float(hi[1])]}
 
 
-def render_map(points: np.ndarray, emotion: list[str], settings: IsomapSettings) -> tuple[np.ndarray, callable]:
+def render_map(points: np.ndarray, emotion: list[str], settings: IsomapSettings) -> tuple[np.ndarray, Callable]:
     """Eq. 3 image of a 2D map (size x size x 3 uint8) and the map -> pixel transform
     (:func:`map_transform`; the axes are drawn by :func:`draw_axes`)."""
     size = settings.image_size

@@ -90,7 +90,7 @@ def contact_sheet(keyshapes: KeyShapes, out: Path, tile: int = 192, columns: int
     camera = Camera.fit(rig.neutral, tile, tile, 24.0).scaled(2)
     raster = rasterizer(scene.faces, scene.albedo, scene.eye, tile, tile, 2, False)
     rows = []
-    for emotion, e in keyshapes.emotions.items():
+    for e in keyshapes.emotions.values():
         for start in range(0, e.count, columns):
             rows.append([(name, w) for name, w in zip(e.names[start:start + columns], e.keymorphs[start:start + columns])])
     sheet = Image.new("RGB", (tile * columns, tile * max(len(rows), 1)), (0, 0, 0))

@@ -4,11 +4,11 @@ import numpy as np
 import pytest
 from click.testing import CliRunner
 
+from facesynth import evaluation
 from facesynth.cli import main
 from facesynth.config import Config
 from facesynth.errors import InputError
 from facesynth.search.inputs import Utterance
-from facesynth import evaluation
 from facesynth.stages import tune
 
 

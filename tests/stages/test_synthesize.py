@@ -158,8 +158,8 @@ def test_audio_and_text_are_aligned_on_the_fly_and_emotion_tiers_read(tiny_db, t
 
 
 def test_align_settings_reach_the_aligner_of_the_input_audio(tiny_db, tiny_corpus, held_out_take, tmp_path, monkeypatch):
-    from facesynth.formats.labels import read_phone_segments
     from facesynth import alignment as align
+    from facesynth.formats.labels import read_phone_segments
 
     received = []
 

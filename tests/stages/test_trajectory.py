@@ -13,8 +13,15 @@ from facesynth.cli import main
 from facesynth.errors import InputError
 from facesynth.model.motion import Motion
 from facesynth.model.trajectory import TrajectoryModel
-from facesynth.motion.trajectory import (dense_system, duration_weights, effective_lambda, frame_targets, pooled, solve,
-                                         synthesize_path)
+from facesynth.motion.trajectory import (
+    dense_system,
+    duration_weights,
+    effective_lambda,
+    frame_targets,
+    pooled,
+    solve,
+    synthesize_path,
+)
 from facesynth.search.inputs import read_utterance
 from facesynth.stages import keyshapes, synthesize, train_trajectory
 
