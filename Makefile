@@ -28,7 +28,7 @@ $(STAMP): pyproject.toml
 TEST_WORKERS ?= auto
 
 test: $(STAMP)
-	$(BIN)/python -m pytest -q -n $(TEST_WORKERS)
+	$(BIN)/python -m pytest -q -n $(TEST_WORKERS) --dist worksteal
 
 # ruff's lint rules and mypy, as configured in pyproject.toml.
 lint: $(STAMP)
