@@ -183,6 +183,19 @@ def _sigterm_raises():
         signal.signal(signal.SIGTERM, previous)
 
 
+#: The root context's ``obj`` when facesynth is the program (:func:`run`), not a command called
+#: inside another program through :func:`main` (a test, a notebook).
+PROGRAM = "facesynth program"
+
+
+def _hand_sigterm_on() -> None:
+    """After a command ended by SIGTERM has cleaned up: inside another program, raise the signal
+    again for that program's own handler (by default the program stops, as the signal asked, so
+    a test run under a time-out ends); the facesynth program itself goes on to exit 143."""
+    if click.get_current_context().find_root().obj != PROGRAM and threading.current_thread() is threading.main_thread():
+        signal.raise_signal(signal.SIGTERM)
+
+
 def _left_behind(published: list[Path]) -> str:
     """The end of an interrupted command's message: which outputs it had written (complete)."""
     if not published:
@@ -248,6 +261,7 @@ def stage(func=None, *, writes: bool = True):
             sys.exit(1)
         except Terminated:
             click.echo(f"terminated (SIGTERM); {_left_behind(published)}", err=True)
+            _hand_sigterm_on()
             sys.exit(143)
         except KeyboardInterrupt:
             click.echo(f"interrupted; {_left_behind(published)}", err=True)
@@ -1235,7 +1249,7 @@ def run() -> None:
     import os
 
     try:
-        main()
+        main(obj=PROGRAM)
         code = 0
     except SystemExit as exc:
         code = exc.code

@@ -100,9 +100,9 @@ _SLOW_WRITE = textwrap.dedent("""
         time.sleep(60)
         publish(tmp, path, overwrite)
     artifacts.publish = slow
-    from facesynth.cli import main
+    from facesynth.cli import run
     sys.argv = ["facesynth"] + sys.argv[1:]
-    main()
+    run()
 """)
 
 
@@ -133,9 +133,9 @@ _SIGNAL_BETWEEN_OUTPUTS = textwrap.dedent("""
         publish(tmp, path, overwrite)
         os.kill(os.getpid(), signal.SIGTERM)
     artifacts.publish = then_signal
-    from facesynth.cli import main
+    from facesynth.cli import run
     sys.argv = ["facesynth"] + sys.argv[1:]
-    main()
+    run()
 """)
 
 
@@ -214,6 +214,38 @@ _IN_PROCESS_THEN_WAIT = textwrap.dedent("""
     time.sleep(120)
     print("still running after SIGTERM", flush=True)
 """)
+
+
+# A test-like process whose in-process command (through click's CliRunner) is writing its output.
+_IN_PROCESS_SLOW_WRITE = textwrap.dedent("""
+    import sys, time
+    from click.testing import CliRunner
+    from facesynth import artifacts
+    publish = artifacts.publish
+    def slow(tmp, path, overwrite):
+        open(str(path) + ".ready", "w").close()
+        time.sleep(60)
+        publish(tmp, path, overwrite)
+    artifacts.publish = slow
+    from facesynth.cli import main
+    result = CliRunner().invoke(main, sys.argv[1:])
+    print("the test process went on after SIGTERM:", result.exit_code, flush=True)
+""")
+
+
+def test_sigterm_during_an_in_process_command_stops_the_process_after_cleaning_up(tiny_artifacts, tmp_path):
+    out = tmp_path / "p.h5"
+    proc = subprocess.Popen([sys.executable, "-c", _IN_PROCESS_SLOW_WRITE, "pca", str(tiny_artifacts["normalized"]),
+                             "-o", str(out)], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    deadline = time.monotonic() + 120
+    while not Path(str(out) + ".ready").exists():
+        assert proc.poll() is None and time.monotonic() < deadline, proc.communicate()
+        time.sleep(0.05)
+    proc.send_signal(signal.SIGTERM)
+    stdout, stderr = proc.communicate(timeout=30)
+    assert proc.returncode == -signal.SIGTERM, (stdout, stderr)
+    assert "went on" not in stdout
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["p.h5.ready"]  # the temporary file was removed first
 
 
 def test_a_process_that_ran_a_command_in_process_still_stops_on_sigterm(tiny_db, tiny_corpus, held_out_take, tmp_path):
