@@ -148,8 +148,11 @@ class Bases:
 
 
 def _invoke(args: list[str]) -> tuple[int, str]:
-    """Run the command line in a forked child (no OpenCL); (exit status, output)."""
-    out = run([str(a) for a in args])
+    """Run the command line in a forked child (no OpenCL); (exit status, output). Building a
+    base is no case: it has minutes, and one that does not finish is an error (status -1)."""
+    out = run([str(a) for a in args], kill_after=600.0)
+    if out["exit_code"] is None:
+        return -1, "timed out" if out.get("timed_out") else (out.get("escaped") or "the child died without a result")
     return out["exit_code"], out["output"]
 
 
