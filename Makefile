@@ -1,5 +1,6 @@
 # facesynth: `make demo` runs the whole pipeline on the built-in sample corpus,
-# `make test` runs the test suite, `make report` rebuilds every figure the README quotes.
+# `make test` runs the test suite, `make lint` the linter and type checker, `make report`
+# rebuilds every figure the README quotes.
 # All create the environment with pip alone.
 
 PYTHON ?= python3
@@ -12,24 +13,32 @@ CONFIG := configs/default.toml
 PRESET ?= small
 SEED   ?= 0
 
-.PHONY: all demo test test-hostile report bench clean
+.PHONY: all demo test test-hostile lint report bench clean
 
 all: demo
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
-	$(BIN)/python -m pip install --quiet --quiet -e '.[test]'
+	$(BIN)/python -m pip install --quiet --quiet -e '.[test,lint]'
 	$(BIN)/python -m compileall -q facesynth  # an editable install leaves this to the first run
 	touch $@
 
+# The suite on every core (pytest-xdist; TEST_WORKERS=0 runs it in one process).
+TEST_WORKERS ?= auto
+
 test: $(STAMP)
-	$(BIN)/python -m pytest -q
+	$(BIN)/python -m pytest -q -n $(TEST_WORKERS) --dist worksteal
+
+# ruff's lint rules and mypy, as configured in pyproject.toml.
+lint: $(STAMP)
+	$(BIN)/ruff check facesynth tests benchmarks
+	$(BIN)/mypy
 
 # The long hostile-input run: every input kind x mutation over five seeds (several minutes;
 # `make test` runs a quick part of it). `benchmarks/hostile.py` prints the same cases as a table.
 test-hostile: $(STAMP)
-	$(BIN)/python -m pytest -q -m hostile_long tests/hostile
+	$(BIN)/python -m pytest -q -n $(TEST_WORKERS) -m hostile_long tests/hostile
 
 # Every figure the README quotes, from fresh sample corpora over several seeds (mean and
 # spread), with the host's processor and memory bandwidth -> docs/results.md, docs/results.json.

@@ -56,7 +56,7 @@ def main() -> None:
         true_rigid = set(read_rigid_markers(corpus / "markers.csv"))
         rows = list(csv.DictReader(open(corpus / "manifest.csv", encoding="utf-8")))[: args.takes]
         rng = np.random.default_rng(args.seed)
-        for k, row in enumerate(rows):
+        for row in rows:
             take = read_mocap(corpus / row["mocap"])
             r = Rotation.random(random_state=rng.integers(1 << 31)).as_matrix()
             moved = rng.uniform(0.8, 1.25) * take.positions.astype(np.float64) @ r.T + [600.0, -900.0, 1200.0]

@@ -24,12 +24,12 @@ import numpy as np
 
 from facesynth.config import Config
 from facesynth.formats.labels import Segment, write_textgrid
+from facesynth.model.motiondb import MotionDatabase
 from facesynth.opencl import build, choice, context, queue, use_opencl
 from facesynth.phonemes import PAU, cmudict, to_festival
 from facesynth.search.costs import step_costs
 from facesynth.search.dp import PANEL, OpenCLDp, PanelMatrix, dp_numpy
 from facesynth.search.pruned import dp_pruned
-from facesynth.model.motiondb import MotionDatabase
 
 PHRASES = {  # paper Table V
     14: "I know you meant it",
@@ -139,7 +139,7 @@ def main() -> None:
     for length, text in PHRASES.items():
         phones = phrase_phones(text, length)
         steps = step_costs(phones, ["neutral"] * length, db.nodes.phone, db.nodes.emotion, {}, s)
-        numpy_s, ref = time_dp(lambda obs: dp_numpy(tc, obs), steps.total, repeats=2)
+        numpy_s, ref = time_dp(lambda obs, tc=tc: dp_numpy(tc, obs), steps.total, repeats=2)
         row = {"phones": length, "text": text, "numpy_s": round(numpy_s, 4),
                "paper_gpu_s": {14: 50.828, 24: 90.891, 53: 232.078, 63: 256.484}[length]}
         pruned_s, (pruned, stats) = time_dp(lambda obs: dp_pruned(costs, obs), steps.total)

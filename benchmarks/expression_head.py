@@ -24,7 +24,6 @@ Makes the corpus and its artifacts in ``--work`` (kept between runs) and prints 
 from __future__ import annotations
 
 import argparse
-import dataclasses
 import json
 import subprocess
 import sys

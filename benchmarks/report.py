@@ -207,7 +207,7 @@ def method_tables(methods: list[dict]) -> list[str]:
                   *("| " + " | ".join(r) + " |" for r in rows), "",
                   "Paired differences, DP minus each baseline (an interval that excludes 0 decides):", "",
                   head[0].replace("| method |", "| difference |"), head[1], *("| " + " | ".join(r) + " |" for r in diffs)]
-        lines += [f"", *(f"*{m} not run:* {why}." for m, why in entry["skipped"].items())]
+        lines += ["", *(f"*{m} not run:* {why}." for m, why in entry["skipped"].items())]
     return lines
 
 

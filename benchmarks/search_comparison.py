@@ -15,12 +15,12 @@ from pathlib import Path
 import numpy as np
 
 from facesynth.config import Config
+from facesynth.evaluation import heldout, sentence_metrics
+from facesynth.model.motiondb import MotionDatabase
 from facesynth.opencl import use_opencl
 from facesynth.search.costs import path_terms, step_costs
 from facesynth.search.dp import PanelMatrix, dp_bounded, dp_numpy, dp_opencl
 from facesynth.search.greedy import Greedy, anime_graph, cluster_graph, motion_features, pq_matching
-from facesynth.evaluation import heldout, sentence_metrics
-from facesynth.model.motiondb import MotionDatabase
 from facesynth.search.synthesis import render_path
 
 

@@ -29,11 +29,11 @@ import sys
 import time
 from pathlib import Path
 
+import numpy as np
 from dp_table_v import PHRASES, build_paper_db, byte_compile, phrase_phones, read_floor, write_phrase
 
-import numpy as np
-from facesynth.opencl import device_name
 from facesynth.model.motiondb import MotionDatabase
+from facesynth.opencl import device_name
 
 PHONES = 63
 PHASE = re.compile(r"([A-Za-z][A-Za-z -]*?) (\d+\.\d+) s\b")

@@ -2,12 +2,15 @@
 
 Every artifact is one ``.h5`` file stamped with its kind, schema, producing version,
 the resolved configuration that made it and the provenance (path, kind, sha256) of the
-artifacts it was made from. Readers check kind and schema; writes are atomic.
+artifacts it was made from. Readers check kind and schema; writes are atomic, and the outputs
+of a command that writes several are published together (:func:`published_together`).
 """
 
 from __future__ import annotations
 
 import contextlib
+import contextvars
+import dataclasses
 import errno
 import hashlib
 import json
@@ -15,17 +18,22 @@ import mmap
 import os
 import re
 import shutil
+import signal
 import stat
 import threading
 import time
+from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
-from typing import Callable, Iterator, Sequence
+from typing import TYPE_CHECKING
 
 import h5py
 import numpy as np
 
 from . import __version__
 from .errors import ArtifactError, InputError, OutputExistsError
+
+if TYPE_CHECKING:
+    from .check import Snapshot
 
 #: Current schema of each artifact kind; bumped on an incompatible change.
 SCHEMAS: dict[str, int] = {
@@ -242,12 +250,202 @@ def publish(tmp: Path, path: Path, overwrite: bool) -> None:
         else:
             os.unlink(tmp)
     _fsync_folder(path.parent)
+    _note_published(path)
+
+
+#: The outputs published while :func:`recording_published` runs (the command line's record of
+#: what an interrupt leaves behind), and the open group of :func:`published_together`.
+_PUBLISHED: contextvars.ContextVar[list[Path] | None] = contextvars.ContextVar("facesynth_published", default=None)
+_GROUP: contextvars.ContextVar[list[_Pending] | None] = contextvars.ContextVar("facesynth_group", default=None)
+
+
+def _note_published(path: Path) -> None:
+    published = _PUBLISHED.get()
+    if published is not None:
+        published.append(Path(path))
+
+
+@contextlib.contextmanager
+def recording_published(published: list[Path]) -> Iterator[list[Path]]:
+    """Append to ``published`` every output published in the body (files and folders, in order),
+    so that a command interrupted after writing something can say what it wrote."""
+    token = _PUBLISHED.set(published)
+    try:
+        yield published
+    finally:
+        _PUBLISHED.reset(token)
+
+
+def _aside(path: Path) -> Path:
+    """Where the previous version of output ``path`` waits until its replacement is in place."""
+    return path.with_name(f"{path.name}.old.tmp-{os.getpid()}")
+
+
+def _remove(path: Path) -> None:
+    """Remove a file or folder (nothing if missing)."""
+    if path.is_dir() and not path.is_symlink():
+        shutil.rmtree(path, ignore_errors=True)
+    else:
+        with contextlib.suppress(FileNotFoundError):
+            path.unlink()
+
+
+def _publish_folder(tmp: Path, path: Path, overwrite: bool) -> Path | None:
+    """Rename the finished folder ``tmp`` to ``path``; returns where a replaced previous folder
+    was moved aside (the caller removes it), or None. A failed rename puts it back."""
+    lost = OutputExistsError(f"{path}: another process wrote this output folder while this one ran; it is kept. "
+                             "Pass --overwrite to replace it or choose another path.")
+    old = None
+    if path.is_dir() and not any(path.iterdir()):
+        pass  # an empty folder is replaced by the rename
+    elif path.exists() and overwrite:
+        old = _aside(path)
+        _remove(old)
+        os.rename(path, old)
+    elif path.exists():
+        raise lost
+    try:
+        os.rename(tmp, path)
+    except OSError as exc:
+        if old is not None:
+            with contextlib.suppress(OSError):
+                os.rename(old, path)
+        if exc.errno in (errno.EEXIST, errno.ENOTEMPTY):
+            raise lost from None
+        raise
+    _fsync_folder(path.parent)
+    _note_published(path)
+    return old
+
+
+@dataclasses.dataclass
+class _Pending:
+    """A finished output (a temporary file or folder) waiting for its group to be published."""
+
+    tmp: Path
+    path: Path
+    overwrite: bool
+    folder: bool
+    previous: Path | None = None  # the output it replaced, kept until the whole group is in place
+
+    def publish(self) -> None:
+        if self.folder:
+            self.previous = _publish_folder(self.tmp, self.path, self.overwrite)
+            return
+        if self.overwrite and self.path.is_file():
+            aside = _aside(self.path)
+            _remove(aside)
+            try:
+                os.link(self.path, aside)
+            except OSError:  # no hard links here: a copy
+                shutil.copy2(self.path, aside)
+            self.previous = aside
+        publish(self.tmp, self.path, self.overwrite)
+
+    def undo(self) -> None:
+        """Take a published output back: the previous version returns, or nothing stays."""
+        with contextlib.suppress(OSError):
+            if self.previous is None:
+                _remove(self.path)
+            elif self.folder:
+                _remove(self.path)
+                os.rename(self.previous, self.path)
+            else:
+                os.replace(self.previous, self.path)
+        published = _PUBLISHED.get()
+        if published is not None and self.path in published:
+            published.remove(self.path)
+
+    def discard(self) -> None:
+        _remove(self.tmp)
+
+    def finish(self) -> None:
+        if self.previous is not None:
+            _remove(self.previous)
+
+
+@contextlib.contextmanager
+def _signals_held(caught: list[int]) -> Iterator[None]:
+    """Hold SIGINT and SIGTERM for the body (a few renames): one that arrives is appended to
+    ``caught`` and delivered, to the handlers the body found, when it ends. Only the main thread
+    sets handlers; elsewhere the body runs as is (signals interrupt the main thread only)."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    previous = {}
+    for signum in (signal.SIGINT, signal.SIGTERM):
+        handler = signal.getsignal(signum)
+        if handler is not None and handler != signal.SIG_IGN:  # None: set outside Python, not restorable
+            previous[signum] = signal.signal(signum, lambda number, frame: caught.append(number))
+    try:
+        yield
+    finally:
+        for signum, handler in previous.items():
+            signal.signal(signum, handler)
+        for signum in dict.fromkeys(caught):
+            signal.raise_signal(signum)
+
+
+@contextlib.contextmanager
+def published_together() -> Iterator[None]:
+    """Publish the outputs finished in the body (by :func:`atomic_path`, :func:`atomic_folder`
+    and so :func:`write_artifact`) together when it ends: all of them, or none.
+
+    Until then each waits under its temporary name. An exception, Ctrl-C or SIGTERM in the body
+    removes them all. Publishing is a rename per output with SIGINT and SIGTERM held: one that
+    arrives meanwhile, or an output that cannot be published (another process took its name),
+    takes back those already published (a replaced output returns) before the interrupt or
+    error goes on. Only a ``kill -9`` between two renames can leave part of the group, each
+    output complete. Nested groups join the outermost one.
+    """
+    if _GROUP.get() is not None:
+        yield
+        return
+    pending: list[_Pending] = []
+    token = _GROUP.set(pending)
+    try:
+        yield
+    except BaseException:
+        for item in pending:
+            item.discard()
+        raise
+    finally:
+        _GROUP.reset(token)
+    done: list[_Pending] = []
+    caught: list[int] = []
+    with _signals_held(caught):
+        try:
+            for item in pending:
+                item.publish()
+                done.append(item)
+            if caught:  # interrupted while publishing: none of the outputs stays
+                done.reverse()
+                for item in done:
+                    item.undo()
+            else:
+                for item in done:
+                    item.finish()
+        except BaseException:
+            for item in reversed(done):
+                item.undo()
+            for item in pending[len(done):]:
+                item.discard()
+            raise
+
+
+def _staged(tmp: Path, path: Path, overwrite: bool, folder: bool) -> bool:
+    """Hand a finished temporary output to the open group (True), or False when there is none."""
+    group = _GROUP.get()
+    if group is None:
+        return False
+    group.append(_Pending(tmp, path, overwrite, folder))
+    return True
 
 
 @contextlib.contextmanager
 def atomic_path(path: Path, overwrite: bool = False) -> Iterator[Path]:
     """Yield a temporary path beside ``path`` (``NAME.tmp-PID``); on success fsync it and
-    :func:`publish` it at ``path``.
+    :func:`publish` it at ``path`` (inside :func:`published_together`, when the group is).
 
     On any exception, Ctrl-C or SIGTERM (which the command line turns into an exception) the
     temporary file is removed; a ``kill -9`` leaves it under its temporary name, never at
@@ -256,50 +454,44 @@ def atomic_path(path: Path, overwrite: bool = False) -> Iterator[Path]:
     path = Path(path)
     check_output(path, overwrite)
     tmp = temporary_path(path)
+    staged = False
     try:
         yield tmp
         with open(tmp, "rb+") as fh:
             os.fsync(fh.fileno())
-        publish(tmp, path, overwrite)
+        staged = _staged(tmp, path, overwrite, folder=False)
+        if not staged:
+            publish(tmp, path, overwrite)
     finally:
-        with contextlib.suppress(FileNotFoundError):
-            tmp.unlink()
+        if not staged:
+            with contextlib.suppress(FileNotFoundError):
+                tmp.unlink()
 
 
 @contextlib.contextmanager
 def atomic_folder(path: Path, what: str, overwrite: bool = False) -> Iterator[Path]:
     """Yield a temporary folder beside the output folder ``path`` (``NAME.tmp-PID``); on success
-    rename it into place. An existing ``path`` that is not empty is refused without ``overwrite`` (and the rename
-    itself refuses a folder another process made meanwhile); with it, the old folder is moved
-    aside and removed after the new one is in place. On failure the temporary folder is removed."""
+    rename it into place (inside :func:`published_together`, when the group is). An existing
+    ``path`` that is not empty is refused without ``overwrite`` (and the rename itself refuses a
+    folder another process made meanwhile); with it, the old folder is moved aside and removed
+    after the new one is in place. On failure the temporary folder is removed."""
     path = Path(path)
     check_output_folder(path, what, overwrite)
     tmp = temporary_path(path)
     if tmp.exists():
         shutil.rmtree(tmp)
     tmp.mkdir()
-    old = path.with_name(f"{path.name}.old.tmp-{os.getpid()}")
+    staged = False
     try:
         yield tmp
-        if path.is_dir() and not any(path.iterdir()):
-            pass  # an empty folder is replaced by the rename
-        elif path.exists() and overwrite:
-            os.rename(path, old)
-        elif path.exists():
-            raise OutputExistsError(f"{path}: another process wrote this output folder while this one ran; it is kept. "
-                                    "Pass --overwrite to replace it or choose another path.")
-        try:
-            os.rename(tmp, path)
-        except OSError as exc:
-            if exc.errno in (errno.EEXIST, errno.ENOTEMPTY):
-                raise OutputExistsError(f"{path}: another process wrote this output folder while this one ran; it is "
-                                        "kept. Pass --overwrite to replace it or choose another path.") from None
-            raise
-        _fsync_folder(path.parent)
+        staged = _staged(tmp, path, overwrite, folder=True)
+        if not staged:
+            old = _publish_folder(tmp, path, overwrite)
+            if old is not None:
+                _remove(old)
     finally:
-        for leftover in (tmp, old):
-            if leftover.exists():
-                shutil.rmtree(leftover, ignore_errors=True)
+        if not staged and tmp.exists():
+            shutil.rmtree(tmp, ignore_errors=True)
 
 
 def input_record(path: Path) -> dict:
@@ -388,10 +580,10 @@ def write_artifact(
 
 #: What :func:`open_artifact` validated, by the operating-system file handle of the open file
 #: (``h5py`` hands out a new File object for ``dataset.file``; the handle is the same).
-_SNAPSHOTS: dict[int, tuple[object, tuple[int, int]]] = {}  # handle -> (snapshot, (device, inode))
+_SNAPSHOTS: dict[int, tuple[Snapshot, tuple[int, int]]] = {}  # handle -> (snapshot, (device, inode))
 
 
-def _live_snapshots() -> Iterator[tuple[int, object]]:
+def _live_snapshots() -> Iterator[tuple[int, Snapshot]]:
     """(handle, snapshot) of the files still open on the inode they were validated on; others are forgotten."""
     for handle, (snap, ids) in list(_SNAPSHOTS.items()):
         try:

@@ -10,7 +10,7 @@ difficulty, and an interval that excludes 0 means one method is better on this c
 
 from __future__ import annotations
 
-from typing import Callable
+from collections.abc import Callable
 
 import numpy as np
 

@@ -25,15 +25,28 @@ from __future__ import annotations
 
 import dataclasses
 import json
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Iterable
 
 import h5py
 import numpy as np
 
 from .artifacts import ENCODING_VERSION, PRODUCERS, SCHEMAS, sha256_of
-from .model.spec import COMMON_ATTRS, KINDS, MAX_FLOAT, MAX_INT, SYMBOLS, Attr, Dataset, Entry, Group, Kind, applies, parse_size
+from .model.spec import (
+    COMMON_ATTRS,
+    KINDS,
+    MAX_FLOAT,
+    MAX_INT,
+    SYMBOLS,
+    Attr,
+    Dataset,
+    Entry,
+    Group,
+    Kind,
+    applies,
+    parse_size,
+)
 
 #: Most numbers read at once by the finiteness scan (16 Mi: 64 MB of float32).
 SCAN_ELEMENTS = 1 << 24

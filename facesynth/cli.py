@@ -10,6 +10,7 @@ import functools
 import logging
 import signal
 import sys
+import threading
 import time
 from pathlib import Path
 
@@ -171,16 +172,39 @@ def _terminate(signum, frame):
 
 @contextlib.contextmanager
 def _sigterm_raises():
-    """While a command runs, SIGTERM raises :class:`Terminated` (only the main thread can set it)."""
-    try:
-        previous = signal.signal(signal.SIGTERM, _terminate)
-    except ValueError:  # not the main thread
+    """While a command runs, SIGTERM raises :class:`Terminated`; the handler found before is put
+    back after it, also when the command runs inside another program (a test calling
+    :func:`main`), so that program's SIGTERM works as it did. Only the main thread can set
+    handlers, and a handler set outside Python (which could not be put back) is left alone."""
+    if threading.current_thread() is not threading.main_thread() or signal.getsignal(signal.SIGTERM) is None:
         yield
         return
+    previous = signal.signal(signal.SIGTERM, _terminate)
     try:
         yield
     finally:
         signal.signal(signal.SIGTERM, previous)
+
+
+#: The root context's ``obj`` when facesynth is the program (:func:`run`), not a command called
+#: inside another program through :func:`main` (a test, a notebook).
+PROGRAM = "facesynth program"
+
+
+def _hand_sigterm_on() -> None:
+    """After a command ended by SIGTERM has cleaned up: inside another program, raise the signal
+    again for that program's own handler (by default the program stops, as the signal asked, so
+    a test run under a time-out ends); the facesynth program itself goes on to exit 143."""
+    if click.get_current_context().find_root().obj != PROGRAM and threading.current_thread() is threading.main_thread():
+        signal.raise_signal(signal.SIGTERM)
+
+
+def _left_behind(published: list[Path]) -> str:
+    """The end of an interrupted command's message: which outputs it had written (complete)."""
+    if not published:
+        return "no output was written."
+    names = ", ".join(map(str, published[:3])) + (f" and {len(published) - 3} more" if len(published) > 3 else "")
+    return f"{names} {'was' if len(published) == 1 else 'were'} written before it (complete); nothing else was."
 
 
 #: Output options that name a folder rather than a file, by command path.
@@ -193,7 +217,7 @@ def _check_outputs(command: str, kwargs: dict, overwrite: bool) -> None:
     no-clobber before any work, so a wrong path costs nothing."""
     from .artifacts import check_output, check_output_folder
 
-    folders = FOLDER_OUTPUTS.get(command, ())
+    folders = FOLDER_OUTPUTS.get(command, {})
     if command == "export" and kwargs.get("fmt") == "obj-seq":  # the one format that writes a folder
         folders = {"output": "the OBJ sequence"}
     for name in ("output", "out_dir", "images"):
@@ -219,14 +243,19 @@ def stage(func=None, *, writes: bool = True):
     def wrapper(config_path, overrides, verbose, quiet, overwrite=False, **kwargs):
         _configure_logging(verbose, quiet)
         started = time.perf_counter()
+        published: list[Path] = []  # what an interrupt leaves behind, for its message
         try:
             command = _command_path()
             config = Config.load(config_path, tuple(overrides))
             _check_overrides_read(command, tuple(overrides))
             ctx = Context(config.only(READS[command]), verbose, quiet, overwrite)
+            recording: contextlib.AbstractContextManager = contextlib.nullcontext()
             if writes:
+                from .artifacts import recording_published
+
                 _check_outputs(command, kwargs, overwrite)
-            with limits.using(ctx.config.settings("limits")), _sigterm_raises():
+                recording = recording_published(published)
+            with limits.using(ctx.config.settings("limits")), _sigterm_raises(), recording:
                 func(ctx, **kwargs)
         except UsageError as exc:
             raise click.UsageError(str(exc)) from None
@@ -234,10 +263,11 @@ def stage(func=None, *, writes: bool = True):
             click.echo(f"error: {exc}", err=True)
             sys.exit(1)
         except Terminated:
-            click.echo("terminated (SIGTERM); no output was written.", err=True)
+            click.echo(f"terminated (SIGTERM); {_left_behind(published)}", err=True)
+            _hand_sigterm_on()
             sys.exit(143)
         except KeyboardInterrupt:
-            click.echo("interrupted; no output was written.", err=True)
+            click.echo(f"interrupted; {_left_behind(published)}", err=True)
             sys.exit(130)
         if verbose and not quiet:
             click.echo(f"done in {time.perf_counter() - started:.2f} s", err=True)
@@ -1339,7 +1369,7 @@ def run() -> None:
     import os
 
     try:
-        main()
+        main(obj=PROGRAM)
         code = 0
     except SystemExit as exc:
         code = exc.code

@@ -22,10 +22,11 @@ import json
 import math
 import sys
 import typing
+from collections.abc import Mapping
 from dataclasses import dataclass
 from importlib import resources
 from pathlib import Path
-from typing import Any, Mapping, TypeVar
+from typing import Any, TypeVar
 
 from .errors import ConfigError, OverrideError
 from .phonemes import PAU, PHONES

@@ -83,7 +83,6 @@ from .progress import progress
 from .search.inputs import Utterance, utterance
 from .search.synthesis import synthesize
 
-
 BILABIALS = ("p", "b", "m")
 
 
@@ -495,11 +494,11 @@ def figures(per_method: dict[str, list[dict]], settings: EvaluateSettings, with_
         for key, (_, stat, clean, _) in FIGURES.items():
             if (clean and not with_clean) or any(_needed(key) not in r for r in rows):
                 continue
-            entry[key] = interval(lambda idx, stat=stat, rows=rows: stat(rows, idx), n, index)
+            entry[key] = interval(lambda idx, stat=stat, rows=rows: stat(rows, idx), n, index)  # type: ignore[misc]
             if method != "dp" and method not in REFERENCES and key in out.get("dp", {}):
                 dp_rows = per_method["dp"]
-                entry[f"dp_minus.{key}"] = paired_difference(lambda idx, s=stat: s(dp_rows, idx),
-                                                             lambda idx, s=stat, r=rows: s(r, idx), n, index)
+                entry[f"dp_minus.{key}"] = paired_difference(lambda idx, s=stat: s(dp_rows, idx),  # type: ignore[misc]
+                                                             lambda idx, s=stat, r=rows: s(r, idx), n, index)  # type: ignore[misc]
         if with_clean and all("_sweep" in r for r in rows):
             sweep = np.concatenate([r["_sweep"] for r in rows], axis=1)
             entry["closure_sweep"] = {f"{k * settings.closure_mm:g}": (float(sweep[j].mean()) if sweep.shape[1] else None)
@@ -619,7 +618,7 @@ def evaluate(db_path: Path, corpus: Path, settings: EvaluateSettings, synth: Syn
             if method not in REFERENCES:
                 record[method] = markers[:, k]
         records.append(record)
-    metrics = {}
+    metrics: dict[str, dict] = {}
     for method, rows in per_method.items():
         emotions = sorted({r["emotion"] for r in rows})
         public = [{key: v for key, v in r.items() if not key.startswith("_")} for r in rows]

@@ -16,7 +16,7 @@ from __future__ import annotations
 import contextlib
 import contextvars
 import functools
-from typing import Iterator
+from collections.abc import Iterator
 
 from .config import Config, LimitsSettings
 from .errors import InputError

@@ -24,7 +24,7 @@ import ctypes
 import logging
 import os
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cache, lru_cache
 from importlib import resources
 from pathlib import Path
 
@@ -388,13 +388,13 @@ def build(source: str, name: str = "<source>", **defines: int):
         raise RuntimeError(f"OpenCL kernel {name} failed to build on {choice().description}:\n{exc}") from None
 
 
-@lru_cache(maxsize=None)
+@cache
 def program(name: str, **defines: int):
     """Build ``kernels/<name>.cl`` once per set of ``defines`` for the current context."""
     return build(kernel_source(name), f"{name}.cl", **defines)
 
 
-@lru_cache(maxsize=None)
+@cache
 def kernel(program_name: str, kernel_name: str, **defines: int):
     """One kernel object per (file, name, defines), retrieved once."""
     return _cl().Kernel(program(program_name, **defines), kernel_name)

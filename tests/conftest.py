@@ -1,11 +1,16 @@
-"""Shared fixtures: the tiny sample corpus and the artifacts built from it, made once per session."""
+"""Shared fixtures: the tiny sample corpus and the artifacts built from it, made once per session
+(once for all the session's pytest-xdist workers: see :func:`_built_once`)."""
 
 from __future__ import annotations
 
 import functools
+import os
+import shutil
+from collections.abc import Callable
 from pathlib import Path
 
 import pytest
+from filelock import FileLock
 
 from facesynth.config import Config
 
@@ -41,6 +46,26 @@ def pytest_generate_tests(metafunc):
                              ids=[f"{d.spec}-{d.name}" for d in working] or ["no-device"])
 
 
+@pytest.hookimpl(trylast=True)  # after ``-m`` and ``-k`` deselected theirs
+def pytest_collection_modifyitems(session, config, items):
+    """Order the suite for pytest-xdist's work stealing (``make test`` runs ``--dist worksteal``):
+    the first half of the list goes to one worker and the second half to the other, and a worker
+    that runs out takes tests from the end of the other's list. The two longest pieces of work,
+    the whole chain on the small corpus (built by the first test that needs it) and the README
+    block, each start one half, followed by half of the tests that read that chain; the short
+    tests come after them and are what gets taken. Without xdist the order only changes when
+    the chain is built."""
+    chain = [item for item in items if "chain" in getattr(item, "fixturenames", ())]
+    readme = [item for item in items if item.name == "test_readme_block_runs"]
+    if not chain or not readme:
+        return
+    moved = {id(item) for item in chain + readme}
+    rest = [item for item in items if id(item) not in moved]
+    first, second = chain[0::2], chain[1::2]
+    fill = max(0, len(items) // 2 - len(first))
+    items[:] = first + rest[:fill] + readme + second + rest[fill:]
+
+
 @pytest.fixture
 def opencl_device(request, monkeypatch):
     """Run the test with facesynth's OpenCL code on one device (``PYOPENCL_CTX``); skip with the
@@ -69,13 +94,45 @@ def config() -> Config:
     return Config.load()
 
 
+def _built_once(tmp_path_factory: pytest.TempPathFactory, name: str, build: Callable[[Path], None]) -> Path:
+    """A folder ``name`` that ``build(folder)`` fills once per test session, shared by every
+    pytest-xdist worker of the session (and by the one process without xdist).
+
+    The folder lives in the session's base temporary folder (the parent of each worker's own,
+    as pytest-xdist's documentation recommends); the first worker to ask builds it under a file
+    lock while the others wait, then all read it. Tests only read what it holds: anything they
+    write goes to their own ``tmp_path``. A build that fails is removed, so the next asks again.
+    """
+    root = tmp_path_factory.getbasetemp()
+    if os.environ.get("PYTEST_XDIST_WORKER"):
+        root = root.parent
+    folder = root / "built-once" / name
+    folder.parent.mkdir(parents=True, exist_ok=True)
+    with FileLock(str(folder) + ".lock"):
+        done = folder.with_name(f"{name}.built")
+        if not done.exists():
+            shutil.rmtree(folder, ignore_errors=True)
+            folder.mkdir()
+            try:
+                build(folder)
+            except BaseException:
+                shutil.rmtree(folder, ignore_errors=True)
+                raise
+            done.touch()
+    return folder
+
+
+@pytest.fixture(scope="session")
+def built_once(tmp_path_factory) -> Callable[[str, Callable[[Path], None]], Path]:
+    """:func:`_built_once` for fixtures of other folders: ``built_once(name, build) -> folder``."""
+    return functools.partial(_built_once, tmp_path_factory)
+
+
 @pytest.fixture(scope="session")
 def tiny_corpus(tmp_path_factory) -> Path:
     from facesynth.corpus.generate import generate
 
-    out = tmp_path_factory.mktemp("tiny") / "corpus"
-    generate(out, "tiny", seed=0)
-    return out
+    return _built_once(tmp_path_factory, "tiny", lambda d: generate(d / "corpus", "tiny", seed=0)) / "corpus"
 
 
 @pytest.fixture(scope="session")
@@ -83,21 +140,23 @@ def tiny_artifacts(tiny_corpus, config, tmp_path_factory) -> dict[str, Path]:
     """corpus.h5, normalized.h5, pca.h5 built from the tiny corpus."""
     from facesynth.stages import ingest, normalize, pca
 
-    d = tmp_path_factory.mktemp("artifacts")
-    paths = {k: d / f"{k}.h5" for k in ("corpus", "normalized", "pca")}
-    ingest.run(tiny_corpus / "manifest.csv", paths["corpus"], config.settings("ingest"), config.settings("align"))
-    normalize.run(paths["corpus"], paths["normalized"], config.settings("normalize"))
-    pca.run(paths["normalized"], paths["pca"], config.settings("pca"))
-    return paths
+    def build(d: Path) -> None:
+        ingest.run(tiny_corpus / "manifest.csv", d / "corpus.h5", config.settings("ingest"), config.settings("align"))
+        normalize.run(d / "corpus.h5", d / "normalized.h5", config.settings("normalize"))
+        pca.run(d / "normalized.h5", d / "pca.h5", config.settings("pca"))
+
+    d = _built_once(tmp_path_factory, "tiny-artifacts", build)
+    return {k: d / f"{k}.h5" for k in ("corpus", "normalized", "pca")}
 
 
 @pytest.fixture(scope="session")
-def tiny_db(tiny_artifacts, config) -> Path:
+def tiny_db(tiny_artifacts, config, tmp_path_factory) -> Path:
     from facesynth.stages import build_db
 
-    out = tiny_artifacts["pca"].parent / "db.h5"
-    build_db.run(tiny_artifacts["pca"], out, config.settings("build_db"))
-    return out
+    def build(d: Path) -> None:
+        build_db.run(tiny_artifacts["pca"], d / "db.h5", config.settings("build_db"))
+
+    return _built_once(tmp_path_factory, "tiny-db", build) / "db.h5"
 
 
 @pytest.fixture(scope="session")
@@ -113,10 +172,12 @@ def small_db_and_truth(tmp_path_factory, config) -> tuple[Path, Path]:
     from facesynth.corpus.generate import generate
     from facesynth.stages import build_db, ingest, normalize, pca
 
-    d = tmp_path_factory.mktemp("small")
-    generate(d / "corpus", "small", seed=0)
-    ingest.run(d / "corpus" / "manifest.csv", d / "corpus.h5", config.settings("ingest"), config.settings("align"))
-    normalize.run(d / "corpus.h5", d / "normalized.h5", config.settings("normalize"))
-    pca.run(d / "normalized.h5", d / "pca.h5", config.settings("pca"))
-    build_db.run(d / "pca.h5", d / "db.h5", config.settings("build_db"))
+    def build(d: Path) -> None:
+        generate(d / "corpus", "small", seed=0)
+        ingest.run(d / "corpus" / "manifest.csv", d / "corpus.h5", config.settings("ingest"), config.settings("align"))
+        normalize.run(d / "corpus.h5", d / "normalized.h5", config.settings("normalize"))
+        pca.run(d / "normalized.h5", d / "pca.h5", config.settings("pca"))
+        build_db.run(d / "pca.h5", d / "db.h5", config.settings("build_db"))
+
+    d = _built_once(tmp_path_factory, "small", build)
     return d / "db.h5", d / "corpus" / "contamination.csv"

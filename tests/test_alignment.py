@@ -7,8 +7,15 @@ import dataclasses
 import numpy as np
 import pytest
 
-from facesynth.alignment import (AlignmentFailed, align_robust, longest_voiced_pause, non_speech_marks,
-                                 normalize_text, voice_activity, voicing)
+from facesynth.alignment import (
+    AlignmentFailed,
+    align_robust,
+    longest_voiced_pause,
+    non_speech_marks,
+    normalize_text,
+    voice_activity,
+    voicing,
+)
 from facesynth.errors import InputError
 from facesynth.formats.audio import read_audio
 from facesynth.formats.labels import Segment

@@ -1,3 +1,6 @@
+import os
+import signal
+
 import h5py
 import numpy as np
 import pytest
@@ -159,3 +162,74 @@ def test_row_reader_maps_plain_chunks_and_reads_anything_else(tmp_path, layout, 
         assert np.array_equal(inside, data[4:6]) and inside.flags.writeable != mapped
         assert np.array_equal(reader.rows(slice(2, 4)), data[2:4])  # across a chunk boundary: read
         del rows, inside
+
+
+# --- several outputs published together ----------------------------------------------------
+
+def _write(path, text, overwrite=False):
+    from facesynth.artifacts import atomic_path
+
+    with atomic_path(path, overwrite) as tmp:
+        tmp.write_text(text)
+
+
+def test_outputs_of_a_group_appear_together_when_it_ends(tmp_path):
+    from facesynth.artifacts import atomic_folder, published_together, recording_published
+
+    published = []
+    with recording_published(published), published_together():
+        _write(tmp_path / "a.h5", "a")
+        with atomic_folder(tmp_path / "images", "the images") as folder:
+            (folder / "1.png").write_text("png")
+        assert sorted(p.name for p in tmp_path.iterdir()) == [f"a.h5.tmp-{os.getpid()}", f"images.tmp-{os.getpid()}"]
+    assert (tmp_path / "a.h5").read_text() == "a" and (tmp_path / "images" / "1.png").read_text() == "png"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["a.h5", "images"]
+    assert published == [tmp_path / "a.h5", tmp_path / "images"]
+
+
+def test_an_error_in_a_group_leaves_none_of_its_outputs(tmp_path):
+    from facesynth.artifacts import published_together
+
+    with pytest.raises(RuntimeError, match="failed after the first"):
+        with published_together():
+            _write(tmp_path / "a.h5", "a")
+            raise RuntimeError("failed after the first")
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_a_group_that_cannot_publish_one_output_takes_back_the_others(tmp_path):
+    """The second output's name is taken by another process while the group is written: the
+    first, already in place, is taken back and the file it replaced returns."""
+    from facesynth.artifacts import published_together
+
+    (tmp_path / "a.h5").write_text("old a")
+    with pytest.raises(OutputExistsError, match=r"b\.png: another process wrote this output"):
+        with published_together():
+            _write(tmp_path / "a.h5", "new a", overwrite=True)
+            _write(tmp_path / "b.png", "mine")
+            (tmp_path / "b.png").write_text("theirs")
+    assert (tmp_path / "a.h5").read_text() == "old a" and (tmp_path / "b.png").read_text() == "theirs"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["a.h5", "b.png"]
+
+
+def test_an_interrupt_while_a_group_is_published_leaves_none(tmp_path, monkeypatch):
+    """Ctrl-C between the renames of two outputs is held until the group is back to nothing
+    (the replaced output restored), then raised."""
+    from facesynth import artifacts
+
+    (tmp_path / "a.h5").write_text("old a")
+    publish = artifacts.publish
+
+    def interrupted_after(tmp, path, overwrite):
+        publish(tmp, path, overwrite)
+        os.kill(os.getpid(), signal.SIGINT)
+
+    monkeypatch.setattr(artifacts, "publish", interrupted_after)
+    published = []
+    with pytest.raises(KeyboardInterrupt):
+        with artifacts.recording_published(published), artifacts.published_together():
+            _write(tmp_path / "a.h5", "new a", overwrite=True)
+            _write(tmp_path / "b.png", "b")
+    assert published == []
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["a.h5"] and (tmp_path / "a.h5").read_text() == "old a"
+    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler

@@ -27,8 +27,20 @@ DOC = Path(__file__).resolve().parents[1] / "docs" / "file-format.md"
 @pytest.fixture(scope="module")
 def written(tiny_corpus, tiny_artifacts, tiny_db, held_out_take, config, tmp_path_factory) -> dict[str, Path]:
     """One file of every kind (and variant), each written by its stage from the tiny corpus."""
-    from facesynth.stages import (capture, deform, expression, head_motion, isomap, keyshapes, prune, retarget, rig_mesh,
-                                  solve, synthesize, train_trajectory)
+    from facesynth.stages import (
+        capture,
+        deform,
+        expression,
+        head_motion,
+        isomap,
+        keyshapes,
+        prune,
+        retarget,
+        rig_mesh,
+        solve,
+        synthesize,
+        train_trajectory,
+    )
 
     d = tmp_path_factory.mktemp("check")
     out = {**tiny_artifacts, "motiondb": tiny_db, "pruned": d / "pruned.h5", "isomap": d / "isomap.h5",

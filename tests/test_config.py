@@ -5,8 +5,15 @@ import pytest
 from click.testing import CliRunner
 
 from facesynth.cli import main
-from facesynth.config import (DECLARATIONS, SAMPLE_CORPUS_PRESETS, SECTIONS, Config, choices, default_config,
-                              reference_markdown)
+from facesynth.config import (
+    DECLARATIONS,
+    SAMPLE_CORPUS_PRESETS,
+    SECTIONS,
+    Config,
+    choices,
+    default_config,
+    reference_markdown,
+)
 from facesynth.errors import ConfigError
 
 DOCS = Path(__file__).resolve().parents[1] / "docs" / "configuration.md"
@@ -131,6 +138,6 @@ def test_click_choices_come_from_the_declarations():
 def test_the_settings_reference_is_up_to_date():
     assert DOCS.read_text("utf-8") == reference_markdown(), (
         "docs/configuration.md is stale; rewrite it with `python -m facesynth.config > docs/configuration.md`.")
-    for section, declared in DECLARATIONS.items():
+    for declared in DECLARATIONS.values():
         for name in declared:
             assert f"| `{name}` |" in reference_markdown()

@@ -28,8 +28,7 @@ from pathlib import Path
 from .. import __version__
 from ..alignment import AlignmentFailed
 from ..artifacts import atomic_path, sha256_of
-from ..config import (AlignSettings, DeformSettings, IngestSettings, RenderSettings, SynthesizeSettings,
-                      settings_json)
+from ..config import AlignSettings, DeformSettings, IngestSettings, RenderSettings, SynthesizeSettings, settings_json
 from ..errors import FacesynthError, InputError
 from ..formats.audio import read_audio
 from ..formats.labels import Segment, read_phone_segments, write_textgrid
@@ -141,7 +140,7 @@ def input_key(line: Line, job: Job) -> dict:
              "constraints": line.constraints}
     if set(job.outputs) & {"anim", "avi"}:
         files.update(mesh=job.mesh, binding=job.binding)
-    key = {name: sha256_of(p) for name, p in files.items() if p is not None}
+    key: dict[str, object] = {name: sha256_of(p) for name, p in files.items() if p is not None}
     key.update(db=job.db_sha256, text=_text_sha(line.text) if line.alignment is None else "", emotion=line.emotion or "",
                outputs=sorted(job.outputs), version=__version__,
                settings={"synthesize": settings_json(job.synthesize), "ingest": settings_json(job.ingest),

@@ -44,8 +44,17 @@ from ..formats.mocap import MarkerTake, write_c3d
 from ..phonemes import PAU
 from ..progress import progress
 from .articulation import CHANNEL_NAMES, ContactSolver, TokenVariation, apply_contact, articulate
-from .expression import (EMOTIONS, EmotionTrack, blink_times, blink_weights, brow_weights, couple_cheeks_and_nose,
-                         emotion_track, expression_weights, gaze_weights)
+from .expression import (
+    EMOTIONS,
+    EmotionTrack,
+    blink_times,
+    blink_weights,
+    brow_weights,
+    couple_cheeks_and_nose,
+    emotion_track,
+    expression_weights,
+    gaze_weights,
+)
 from .markers import build_marker_set
 from .speech import STYLES, ReadSentence, design_sentences, head_motion, pitch, synthesize_audio, time_utterance
 from .truth import write_truth

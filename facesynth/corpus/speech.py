@@ -9,10 +9,10 @@ articulation itself is in :mod:`facesynth.corpus.articulation`.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 from functools import lru_cache
 from importlib import resources
-from typing import Sequence
 
 import numpy as np
 from scipy.signal import butter, lfilter, sosfilt

@@ -74,8 +74,20 @@ def build(rest_mm: np.ndarray, faces: np.ndarray, deltas_mm: np.ndarray, target_
     rest_mm : (V, 3) mm; faces : (F, 3) int; deltas_mm : (E, V, 3) mm morph targets named
     ``target_names``; times_s : (T,) s; weights : (T, E) in [0, 1]; head_rotation : optional
     (T, 3, 3), head_translation_mm : (T, 3) mm; audio_uri : the WAV's file name beside the file."""
-    from pygltflib import (GLTF2, Animation, AnimationChannel, AnimationChannelTarget, AnimationSampler, Asset,
-                           Attributes, Buffer, Mesh, Node, Primitive, Scene)
+    from pygltflib import (
+        GLTF2,
+        Animation,
+        AnimationChannel,
+        AnimationChannelTarget,
+        AnimationSampler,
+        Asset,
+        Attributes,
+        Buffer,
+        Mesh,
+        Node,
+        Primitive,
+        Scene,
+    )
 
     gltf = GLTF2(asset=Asset(version="2.0", generator="facesynth export"))
     blob = _Blob(gltf)
@@ -110,7 +122,7 @@ def build(rest_mm: np.ndarray, faces: np.ndarray, deltas_mm: np.ndarray, target_
         channels.append(AnimationChannel(sampler=1, target=AnimationChannelTarget(node=0, path="translation")))
         samplers.append(AnimationSampler(input=t_in, output=blob.add(quats, "VEC4", _FLOAT), interpolation="LINEAR"))
         channels.append(AnimationChannel(sampler=2, target=AnimationChannelTarget(node=0, path="rotation")))
-    extras = {"fps": float(1.0 / np.median(np.diff(times))) if len(times) > 1 else None}
+    extras: dict[str, object] = {"fps": float(1.0 / np.median(np.diff(times))) if len(times) > 1 else None}
     if audio_uri:
         extras["audio"] = {"uri": audio_uri, "mimeType": "audio/wav", "startTime_s": 0.0}
     gltf.animations.append(Animation(name=f"{name} animation", samplers=samplers, channels=channels, extras=extras))

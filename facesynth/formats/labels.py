@@ -11,9 +11,9 @@ from __future__ import annotations
 import logging
 import math
 import re
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Sequence
 
 from .. import limits
 from ..errors import InputError
@@ -93,7 +93,7 @@ def read_textgrid(path: Path) -> dict[str, list[Segment]]:
     return tiers
 
 
-def write_textgrid(path: Path, tiers: dict[str, Sequence[Segment]], xmax: float | None = None) -> None:
+def write_textgrid(path: Path, tiers: Mapping[str, Sequence[Segment]], xmax: float | None = None) -> None:
     """Write interval tiers as a long-format TextGrid (UTF-8)."""
     xmax = xmax if xmax is not None else max((s[-1].end for s in tiers.values() if s), default=0.0)
     lines = [
@@ -126,7 +126,7 @@ def read_lab(path: Path) -> list[Segment]:
         if "#" in lines:  # Festival/xwaves: header, '#', then "end colour label"
             prev = 0.0
             first = lines.index("#") + 1
-            for number, line in enumerate(lines[first:], first + 1):
+            for number, line in enumerate(lines[first:], first + 1):  # noqa: B007 (the error names it)
                 if not line:
                     continue
                 parts = line.split()
@@ -135,7 +135,7 @@ def read_lab(path: Path) -> list[Segment]:
                 prev = end
         else:  # HTK: "start end label" in units of 100 ns, or the same in seconds
             rows = []
-            for number, line in enumerate(lines, 1):
+            for number, line in enumerate(lines, 1):  # noqa: B007 (the error names it)
                 if not line or line == ".":
                     continue
                 parts = line.split()

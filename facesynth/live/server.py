@@ -23,7 +23,8 @@ import json
 import logging
 import signal
 import wave
-from typing import BinaryIO, Callable
+from collections.abc import Callable
+from typing import BinaryIO, cast
 
 from ..config import AlignSettings
 from ..errors import FacesynthError, InputError
@@ -41,7 +42,7 @@ def _audio_source(stream: BinaryIO, where: str) -> tuple[BinaryIO | wave.Wave_re
     head = stream.read(12)
     if head[:4] == b"RIFF" and head[8:12] == b"WAVE":
         try:
-            reader = wave.open(_Prefixed(head, stream), "rb")
+            reader = wave.open(cast(BinaryIO, _Prefixed(head, stream)), "rb")
         except (wave.Error, EOFError) as exc:
             raise InputError(f"{where}: not a readable WAV ({exc}).") from None
         if (reader.getframerate(), reader.getnchannels(), reader.getsampwidth()) != (SAMPLE_RATE, 1, 2):
@@ -120,9 +121,10 @@ class StreamServer:
         from websockets.asyncio.server import serve
 
         s = self.model.stream
-        self.server = await serve(self._handle, self.host, self.port, max_size=s.max_message_bytes, max_queue=16,
-                                  ping_interval=None, reuse_port=self.reuse_port or None)
-        self.port = self.server.sockets[0].getsockname()[1]
+        server = await serve(self._handle, self.host, self.port, max_size=s.max_message_bytes, max_queue=16,
+                             ping_interval=None, reuse_port=self.reuse_port or None)
+        self.server = server
+        self.port = server.sockets[0].getsockname()[1]
 
     async def stop(self) -> None:
         """Close every connection (1001, going away) and the listening socket."""

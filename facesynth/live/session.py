@@ -78,7 +78,8 @@ class Session:
         try:
             message = json.loads(text)
         except (json.JSONDecodeError, UnicodeDecodeError) as exc:
-            raise InputError(f"{self.where}: a text message must be a JSON object ({exc.msg}).") from None
+            reason = exc.msg if isinstance(exc, json.JSONDecodeError) else "not UTF-8 text"
+            raise InputError(f"{self.where}: a text message must be a JSON object ({reason}).") from None
         if not isinstance(message, dict) or not isinstance(message.get("type"), str):
             raise InputError(f"{self.where}: a control message must be a JSON object with a 'type'.")
         kind = message["type"]

@@ -87,9 +87,9 @@ class Nodes:
     @classmethod
     def read(cls, f: h5py.File) -> "Nodes":
         """The table under ``/nodes`` of an open artifact."""
-        values = {k: read_strings(f, f"nodes/{k}") for k in cls._STRINGS}
+        values: dict[str, list[str] | np.ndarray] = {k: read_strings(f, f"nodes/{k}") for k in cls._STRINGS}
         values.update({k: read(f, f"nodes/{k}") for k in cls._ARRAYS})
-        return cls(**values)
+        return cls(**values)  # type: ignore[arg-type]
 
 
 def node_frames(nodes: Nodes, n_frames: int) -> tuple[np.ndarray, np.ndarray]:
@@ -219,9 +219,8 @@ class MotionDatabase:
 
     def read_features(self):
         """The per-node transition features (a :class:`~facesynth.search.pairs.PairFeatures`)."""
-        from ..search.pairs import PairFeatures
-
         from ..opencl import HOST_ALIGNMENT
+        from ..search.pairs import PairFeatures
 
         with self._opened() as f:  # page-aligned: an OpenCL CPU device reads them in place
             boundary = [read(f, f"boundary/{k}", HOST_ALIGNMENT) for k in BOUNDARY_KEYS]

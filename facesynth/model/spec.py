@@ -20,9 +20,9 @@ from __future__ import annotations
 
 import re
 import sys
+from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Iterator, Union
 
 from ..artifacts import ENCODING_VERSION, PRODUCERS, SCHEMAS
 
@@ -81,7 +81,7 @@ ATTR_TYPES = ("str", "int", "float", "json", "ints")
 
 _SIZE = re.compile(r"^(\d*)([A-Za-z][A-Za-z0-9]*)(?:\+(\d+))?$")
 
-Required = Union[bool, str]
+Required = bool | str
 """True (always), False (optional) or a variant's name (required in that variant, optional otherwise)."""
 
 
@@ -152,7 +152,7 @@ class Block:
     entries: tuple[Entry, ...]
 
 
-Entry = Union[Dataset, Group]
+Entry = Dataset | Group
 
 
 @dataclass(frozen=True)

@@ -49,8 +49,8 @@ class Takes:
     @classmethod
     def read(cls, f: h5py.File) -> "Takes":
         """The table under ``/takes`` of an open artifact."""
-        return cls(
-            *(read_strings(f, f"takes/{k}") for k in ("name", "emotion", "sentence", "split", "transcript")),
+        return cls(  # type: ignore[call-arg]
+            *(read_strings(f, f"takes/{k}") for k in ("name", "emotion", "sentence", "split", "transcript")),  # type: ignore[arg-type]
             read(f, "takes/frame_start"), read(f, "takes/frame_count"),
         )
 

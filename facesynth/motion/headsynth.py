@@ -117,7 +117,7 @@ def subsentences(segs: list[P.Segment], breath_s: float) -> list[list[int]]:
 
 
 def search(library: list[LibraryTake], segs: list[P.Segment], features: np.ndarray, *, m: int, k: int, b: float,
-           c: float, omega_h: float, omega_r: float, breath_s: float, exclude: set[str] = frozenset()) -> list[Choice]:
+           c: float, omega_h: float, omega_r: float, breath_s: float, exclude: frozenset[str] | set[str] = frozenset()) -> list[Choice]:
     """§5.2-5.3: a library segment for every input segment (the trellis path per subsentence)."""
     rows = top_sentences(library, features, m, set(exclude))
     hop = library[rows[0]].hop_s
@@ -166,7 +166,7 @@ def search(library: list[LibraryTake], segs: list[P.Segment], features: np.ndarr
 
 
 def random_choices(library: list[LibraryTake], n: int, rng: np.random.Generator,
-                   exclude: set[str] = frozenset()) -> list[Choice]:
+                   exclude: frozenset[str] | set[str] = frozenset()) -> list[Choice]:
     """A baseline: ``n`` library segments drawn uniformly (no pitch matching, no trellis)."""
     pool = [(r, j) for r, t in enumerate(library) if t.sentence not in exclude for j in range(len(t.segments))]
     picks = rng.integers(0, len(pool), n)

@@ -221,7 +221,7 @@ def _solve_curves(frames: np.ndarray, basis: np.ndarray, *, smooth: float, ridge
     lip = np.linalg.norm(a, 2) ** 2 + 4 * lam_s + lam_r
     step = 1.0 / lip
     w = np.zeros((t_count, len(a))) if initial is None else np.clip(np.broadcast_to(initial, (t_count, len(a))), 0.0, 1.0)
-    y, theta, prev_obj = w.copy(), 1.0, np.inf
+    y, theta = w.copy(), 1.0
     # Frames with every marker seen take the misfit's gradient through the E x E Gram matrix,
     # ``y (A A^T) - D A^T`` (D/E times less work per iteration); frames with missing markers
     # through their masked residual.
@@ -229,7 +229,7 @@ def _solve_curves(frames: np.ndarray, basis: np.ndarray, *, smooth: float, ridge
     partial = np.flatnonzero(~whole)
     gram, da = a @ a.T, d @ a.T
     it = 0
-    for it in range(1, iterations + 1):
+    for it in range(1, iterations + 1):  # noqa: B007 (the count is reported after the loop)
         grad = y @ gram - da + lam_r * y
         if len(partial):
             yp = y[partial]

@@ -8,8 +8,8 @@ is why the OpenCL kernel keeps no backpointers.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Callable
 
 import numpy as np
 

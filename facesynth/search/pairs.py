@@ -426,7 +426,7 @@ class TransitionCosts:
         tc = self.dsc_row_max[r] + pvc + self.s.pnt * (self.f.viseme[r] != self.pre_viseme[k])
         return np.where(self.pre[k] < 0, float(self.a1pnt) + pvc, np.where(self.pre[k] == r, 0.0, tc))
 
-    def lower(self, r: np.ndarray, k: np.ndarray, pivots: int | None = None) -> np.ndarray:
+    def lower(self, r: np.ndarray, k: np.ndarray | int, pivots: int | None = None) -> np.ndarray:
         """Lower bounds of TC(r, k) for nodes ``r`` before ``k`` (index arrays or scalars that
         broadcast), float64: the viseme penalty (alpha1 PNT for rule 4) plus the pivot bounds
         of alpha3 PGap and VGap (the first ``pivots`` pivots: fewer is cheaper and looser),
@@ -565,7 +565,7 @@ class OpenCLPairs:
         The same rows come twice per step (probes, then the other columns): made once."""
         key = (backward, len(rows), rows.tobytes(), phi.tobytes())
         if getattr(self, "_rows_key", None) == key:
-            return self._rows_data
+            return self._rows_data  # type: ignore[has-type]
         tc = self.tc
         rows = np.asarray(rows, np.int64)
         if backward:
@@ -667,7 +667,7 @@ class PairTerms:
         cols = np.arange(n)
         step = max(1, (1 << 21) // max(n, 1))
         if like is not None:
-            self.dsc, self.pgap = like.dsc, like.pgap
+            self.dsc, self.pgap = like.dsc, like.pgap  # type: ignore[has-type]
             self.vgap = np.empty((n, n), np.float32)
             lay = f.layout()
             for a in range(0, n, step):

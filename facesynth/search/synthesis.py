@@ -11,8 +11,8 @@ from __future__ import annotations
 
 import threading
 import time
+from collections.abc import Callable
 from pathlib import Path
-from typing import Callable
 
 import numpy as np
 
@@ -72,7 +72,7 @@ def search(tc, steps: StepCosts, settings: SynthesizeSettings, *, while_running:
     if settings.dp == "pruned":
         if tc.opencl:
             t0 = time.perf_counter()
-            tc.device  # kernels built, features uploaded
+            tc.device  # noqa: B018 (the property builds the kernels and uploads the features)
             if timings is not None:
                 timings["opencl_setup_s"] = time.perf_counter() - t0
         # The host work overlaps the search on a thread: the search waits on the device and on

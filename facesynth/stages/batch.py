@@ -10,17 +10,16 @@ and the reason of every failure.
 from __future__ import annotations
 
 import time
+from collections.abc import Callable
 from pathlib import Path
-from typing import Callable
 
 from ..artifacts import check_output_folder, open_artifact, sha256_of
-from ..config import (AlignSettings, BatchSettings, DeformSettings, IngestSettings, RenderSettings,
-                      SynthesizeSettings)
-from ..errors import InputError, UsageError
 from ..batch.line import Job, LineResult
 from ..batch.report import write_summary
 from ..batch.runner import dask_client, run_lines
 from ..batch.script import read_script
+from ..config import AlignSettings, BatchSettings, DeformSettings, IngestSettings, RenderSettings, SynthesizeSettings
+from ..errors import InputError, UsageError
 from ..progress import progress
 
 

@@ -36,10 +36,10 @@ from ..config import BuildDbSettings, settings_json
 from ..errors import InputError
 from ..limits import bound, require_memory
 from ..model.motiondb import MotionDatabase, Nodes
-from ..model.pca import PcaFrames, PcaModel
+from ..model.pca import PcaFrames
 from ..model.tables import Phones, Takes
-from ..search.pairs import PairFeatures, boundary_states
 from ..phonemes import PAU, viseme
+from ..search.pairs import PairFeatures, boundary_states
 
 
 def build_nodes(takes: Takes, phones: Phones, fps: float) -> Nodes:
@@ -83,7 +83,7 @@ def build_nodes(takes: Takes, phones: Phones, fps: float) -> Nodes:
                          "or the takes have no phone timing (give each an alignment or a transcript in the manifest).")
     ints = ("viseme", "take", "frame_start", "frame_count", "pre", "suc")
     return Nodes(**{k: (np.array(v, np.int64) if k in ints else np.array(v) if k in ("start_s", "end_s") else v)
-                    for k, v in rows.items()})
+                    for k, v in rows.items()})  # type: ignore[arg-type]
 
 
 def warp_to_samples(sequence: np.ndarray, n: int) -> np.ndarray:
@@ -167,7 +167,7 @@ def build(pca: PcaFrames, settings: BuildDbSettings, source: str = "") -> tuple[
     t0 = time.perf_counter()
     states = boundary_states(coeffs, nodes, pca.model, settings.boundary_fit_frames)
     timings["boundary_s"] = time.perf_counter() - t0
-    features = PairFeatures(*(np.ascontiguousarray(a, np.float32) for a in states[:2]),
+    features = PairFeatures(*(np.ascontiguousarray(a, np.float32) for a in states[:2]),  # type: ignore[arg-type, call-arg]
                             *(np.ascontiguousarray(a, np.float32) for a in states[2:]), x, y, scale,
                             nodes.viseme, nodes.pre)
     db = MotionDatabase(pca.takes, pca.phones, pca.marker_names, pca.model, coeffs, pca.frames, nodes)

@@ -23,7 +23,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..artifacts import atomic_folder, atomic_path, check_output, publish, temporary_path
+from ..artifacts import atomic_folder, atomic_path, check_output, publish, published_together, temporary_path
 from ..config import ExportSettings
 from ..errors import InputError, UsageError
 from ..exports import livelink
@@ -106,17 +106,13 @@ def run(artifact: Path, fmt: str, output: Path, settings: ExportSettings, *, fps
                                anim.head_rotation if head_motion else None,
                                anim.head_translation if head_motion else None,
                                wav.name if wav is not None else None, name=Path(output).stem)
-        if wav is not None:
-            with atomic_path(wav, overwrite) as tmp:
-                shutil.copyfile(audio, tmp)
-            files.append(wav)
-        try:
+        with published_together():  # the scene and its audio, or neither
+            if wav is not None:
+                with atomic_path(wav, overwrite) as tmp:
+                    shutil.copyfile(audio, tmp)
+                files.append(wav)
             with atomic_path(output, overwrite) as tmp:
                 gltf.write(tmp, doc, data, binary=fmt == "glb")
-        except BaseException:
-            if wav is not None:
-                wav.unlink(missing_ok=True)
-            raise
     elif fmt in ("usd", "usda"):
         from ..exports import usd
 

@@ -89,7 +89,7 @@ def library(db: MotionDatabase, corpus: Corpus, db_path: Path, corpus_path: Path
 
 
 def synthesize(lib: list[headsynth.LibraryTake], p: np.ndarray, duration_s: float, s: HeadMotionSettings, *,
-               exclude: set[str] = frozenset(), random: np.random.Generator | None = None
+               exclude: frozenset[str] | set[str] = frozenset(), random: np.random.Generator | None = None
                ) -> tuple[headsynth.Result, list[str]]:
     """Head motion (T, 6) for a cleaned pitch track; ``random`` draws segments instead of
     matching them (a baseline). Returns the result and warnings (no voiced frame: rest)."""

@@ -34,10 +34,10 @@ from ..formats.audio import read_audio, resample
 from ..formats.labels import Segment, check_segments, read_phone_segments, read_textgrid
 from ..formats.mesh import read_rigid_markers
 from ..formats.mocap import read_mocap
-from ..phonemes import map_phones
-from ..progress import progress
 from ..model.corpus import Corpus
 from ..model.tables import Phones, Takes
+from ..phonemes import map_phones
+from ..progress import progress
 
 REQUIRED_COLUMNS = ("take", "mocap")
 #: The sample rate recorded for a corpus none of whose takes has audio (no samples are stored).

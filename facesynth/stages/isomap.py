@@ -26,13 +26,14 @@ import contextlib
 import html
 import time
 import warnings
+from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
 from scipy.ndimage import gaussian_filter
 from scipy.spatial import Delaunay
 
-from ..artifacts import atomic_folder, check_output, check_output_folder
+from ..artifacts import atomic_folder, check_output, check_output_folder, published_together
 from ..config import IsomapSettings, settings_json
 from ..errors import InputError
 from ..limits import require_memory
@@ -155,7 +156,7 @@ def map_transform(points: np.ndarray, size: int) -> dict:
             "lo": [float(lo[0]), float(lo[1])], "hi": [float(hi[0]), float(hi[1])]}
 
 
-def render_map(points: np.ndarray, emotion: list[str], settings: IsomapSettings) -> tuple[np.ndarray, callable]:
+def render_map(points: np.ndarray, emotion: list[str], settings: IsomapSettings) -> tuple[np.ndarray, Callable]:
     """Eq. 3 image of a 2D map (size x size x 3 uint8) and the map -> pixel transform
     (:func:`map_transform`; the axes are drawn by :func:`draw_axes`)."""
     size = settings.image_size
@@ -369,7 +370,7 @@ def run(db_path: Path, out: Path, settings: IsomapSettings, images: Path | None 
     t0 = time.perf_counter()
     clusters = build_clusters(db.coeffs, db.nodes, settings)
     embed_s = time.perf_counter() - t0
-    with contextlib.ExitStack() as stack:
+    with published_together(), contextlib.ExitStack() as stack:  # the artifact and the images, or neither
         if images is not None:  # written beside the folder, renamed into place after the artifact
             folder = stack.enter_context(atomic_folder(images, "the images", overwrite))
             trajectories = {c.phone: save_cluster_images(c, folder, settings) for c in progress(clusters, "images")}

@@ -13,7 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..artifacts import check_output
+from ..artifacts import atomic_path, check_output, published_together
 from ..config import KeyshapesSettings, settings_json
 from ..errors import InputError
 from ..model.keyshapes import EmotionKeyShapes, KeyShapes
@@ -90,7 +90,7 @@ def contact_sheet(keyshapes: KeyShapes, out: Path, tile: int = 192, columns: int
     camera = Camera.fit(rig.neutral, tile, tile, 24.0).scaled(2)
     raster = rasterizer(scene.faces, scene.albedo, scene.eye, tile, tile, 2, False)
     rows = []
-    for emotion, e in keyshapes.emotions.items():
+    for e in keyshapes.emotions.values():
         for start in range(0, e.count, columns):
             rows.append([(name, w) for name, w in zip(e.names[start:start + columns], e.keymorphs[start:start + columns])])
     sheet = Image.new("RGB", (tile * columns, tile * max(len(rows), 1)), (0, 0, 0))
@@ -115,8 +115,10 @@ def run(db_path: Path, out: Path, settings: KeyshapesSettings, sheet: Path | Non
             raise InputError(f"{sheet}: the contact sheet is a PNG image; give a .png path.")
     db = MotionDatabase.read(db_path)
     result = build(db, settings, settings.method, settings.count, str(db_path))
-    result.write(out, config=settings_json(settings), inputs=[db_path], overwrite=overwrite)
-    if sheet is not None:
-        contact_sheet(result, sheet)
+    with published_together():  # the artifact and its sheet, or neither
+        result.write(out, config=settings_json(settings), inputs=[db_path], overwrite=overwrite)
+        if sheet is not None:
+            with atomic_path(sheet, overwrite) as tmp:
+                contact_sheet(result, tmp)
     return {"emotions": {e: {"count": k.count, "rms_mm": k.rms} for e, k in result.emotions.items()},
             "method": settings.method}

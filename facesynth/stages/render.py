@@ -91,7 +91,7 @@ def label_mask(text: str, scale: int = 2) -> np.ndarray:
 
     font = ImageFont.load_default_imagefont() if hasattr(ImageFont, "load_default_imagefont") else ImageFont.load_default()
     left, top, right, bottom = ImageDraw.Draw(Image.new("L", (1, 1))).textbbox((0, 0), text, font=font)
-    image = Image.new("L", (right - left + 4, bottom - top + 4), 0)
+    image = Image.new("L", (int(right - left) + 4, int(bottom - top) + 4), 0)
     ImageDraw.Draw(image).text((2 - left, 2 - top), text, fill=255, font=font)
     mask = np.asarray(image, np.float32) / 255.0
     return np.kron(mask, np.ones((scale, scale), np.float32))

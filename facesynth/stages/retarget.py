@@ -16,7 +16,7 @@ from pathlib import Path
 import numpy as np
 from scipy import sparse
 
-from ..artifacts import check_output
+from ..artifacts import check_output, published_together
 from ..config import KeyshapesSettings, RetargetSettings, settings_json
 from ..errors import InputError
 from ..model.curves import RigCurves
@@ -114,8 +114,9 @@ def run(motion_path: Path, keyshapes_path: Path, out: Path, settings: RetargetSe
             offsets = (meshes_k - rig.neutral).reshape(len(meshes_k), -1)
             vertices = rig.neutral + (result.alpha @ offsets).reshape(len(result.alpha), -1, 3)
         anim = rig_animation(vertices, motion.fps, rig, motion.marker_names, motion.reference, str(motion_path))
-    curves.write(out, config=settings_json(settings), inputs=inputs, overwrite=overwrite)
-    if anim is not None:
-        anim.write(mesh_out, config=settings_json(settings), inputs=inputs, overwrite=overwrite)
-        summary["blend"] = settings.blend
+    with published_together():  # the curves and the mesh animation, or neither
+        curves.write(out, config=settings_json(settings), inputs=inputs, overwrite=overwrite)
+        if anim is not None:
+            anim.write(mesh_out, config=settings_json(settings), inputs=inputs, overwrite=overwrite)
+            summary["blend"] = settings.blend
     return summary

@@ -9,9 +9,10 @@ from __future__ import annotations
 import asyncio
 import sys
 import time
+from collections.abc import Callable
 from dataclasses import replace
 from pathlib import Path
-from typing import BinaryIO, Callable
+from typing import BinaryIO, cast
 
 from ..config import AlignSettings, SolveSettings, StreamSettings, SynthesizeSettings
 from ..errors import InputError
@@ -50,7 +51,7 @@ def run_stdin(model: LiveModel, align: AlignSettings, source: BinaryIO, write: C
         host, port = parse_address(livelink, "--livelink")
         sender = LiveLinkSender(host, port, "facesynth", "facesynth-0", model.stream.fps, model.arkit_names)
     if realtime:
-        source = _Paced(source, model.stream.chunk_s)
+        source = cast(BinaryIO, _Paced(source, model.stream.chunk_s))
     try:
         return run_pipe(model, align, source, write, where=where, livelink=sender, markers=markers)
     finally:
@@ -62,7 +63,8 @@ class _Paced:
     """A byte stream read no faster than 16 kHz 16-bit mono audio plays."""
 
     def __init__(self, source: BinaryIO, chunk_s: float):
-        self.source, self.read_bytes, self.t0 = source, 0, None
+        self.source, self.read_bytes = source, 0
+        self.t0: float | None = None
 
     def read(self, n: int = -1) -> bytes:
         if self.t0 is None:

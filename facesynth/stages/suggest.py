@@ -25,9 +25,9 @@ import numpy as np
 
 from ..config import IngestSettings, SynthesizeSettings
 from ..errors import InputError
+from ..model.motiondb import MotionDatabase
 from ..opencl import use_opencl
 from ..phonemes import PAU
-from ..model.motiondb import MotionDatabase
 from ..search.costs import step_costs
 from ..search.pruned import backward_pruned, dp_pruned
 from ..search.synthesis import prepare

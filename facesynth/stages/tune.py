@@ -41,12 +41,12 @@ from scipy.optimize import minimize
 from scipy.special import expit
 
 from ..artifacts import atomic_path, check_output
-from ..config import BuildDbSettings, EvaluateSettings, NormalizeSettings, SynthesizeSettings, TuneSettings
+from ..config import BuildDbSettings, NormalizeSettings, SynthesizeSettings, TuneSettings
 from ..errors import InputError
 from ..evaluation import heldout
+from ..limits import mem_available
 from ..model.motiondb import MotionDatabase
 from ..opencl import use_opencl
-from ..limits import mem_available
 from ..search.pairs import PairTerms, TransitionCosts, boundary_states
 from ..search.synthesis import render_path, synthesize
 

@@ -6,7 +6,7 @@ import hashlib
 import numpy as np
 import pytest
 
-from facesynth.corpus.articulation import ContactSolver, TokenVariation, apply_contact, token_targets, CHANNEL_NAMES
+from facesynth.corpus.articulation import CHANNEL_NAMES, ContactSolver, TokenVariation, apply_contact, token_targets
 from facesynth.corpus.expression import blink_times
 from facesynth.corpus.generate import perform
 from facesynth.corpus.markers import LIP_GAP_MARKERS, LOWER_LIP_MARKER, build_marker_set, mesh_lip_gap

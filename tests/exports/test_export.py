@@ -19,6 +19,7 @@ from facesynth.cli import main
 from facesynth.config import Config
 from facesynth.corpus.generate import CAPTURE_FPS
 from facesynth.corpus.truth import read_truth
+from facesynth.exports import livelink
 from facesynth.facerig import BUILTIN_RIG_NAME, builtin_rig_sha256, load_face_rig
 from facesynth.formats.mesh import read_mesh
 from facesynth.formats.mocap import read_c3d
@@ -26,7 +27,6 @@ from facesynth.model.curves import RigCurves
 from facesynth.model.meshanim import MeshAnimation
 from facesynth.model.motion import Motion
 from facesynth.rendering.parts import gaze_from_rig_weights
-from facesynth.exports import livelink
 from facesynth.stages import deform, synthesize
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -161,8 +161,8 @@ def _validate(path: Path) -> dict:
     if NODE is None:
         pytest.skip("node is not installed (Debian package 'nodejs'); the glTF validator needs it")
     if not VALIDATOR.is_dir():
-        pytest.skip(f"the Khronos glTF validator is not installed: `npm install --prefix .cache/npm gltf-validator` "
-                    f"(or set FACESYNTH_GLTF_VALIDATOR)")
+        pytest.skip("the Khronos glTF validator is not installed: `npm install --prefix .cache/npm gltf-validator` "
+                    "(or set FACESYNTH_GLTF_VALIDATOR)")
     done = subprocess.run([NODE, str(Path(__file__).with_name("validate_gltf.js")), str(VALIDATOR), str(path)],
                           capture_output=True, text=True, timeout=300)
     assert done.returncode == 0, done.stderr[-2000:]

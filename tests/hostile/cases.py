@@ -134,10 +134,25 @@ class Bases:
     take: dict = field(default_factory=dict)  # the manifest row used for one-take ingests
     utterance: Path | None = None
 
+    def save(self, path: Path) -> None:
+        """Write what :meth:`load` reads (JSON), so other processes use the same bases."""
+        path.write_text(json.dumps({"root": str(self.root), "corpus_dir": str(self.corpus_dir), "take": self.take,
+                                    "files": {k: str(v) for k, v in self.files.items()},
+                                    "utterance": str(self.utterance) if self.utterance else None}), encoding="utf-8")
+
+    @classmethod
+    def load(cls, path: Path) -> "Bases":
+        d = json.loads(path.read_text(encoding="utf-8"))
+        return cls(Path(d["root"]), Path(d["corpus_dir"]), {k: Path(v) for k, v in d["files"].items()}, d["take"],
+                   Path(d["utterance"]) if d["utterance"] else None)
+
 
 def _invoke(args: list[str]) -> tuple[int, str]:
-    """Run the command line in a forked child (no OpenCL); (exit status, output)."""
-    out = run([str(a) for a in args])
+    """Run the command line in a forked child (no OpenCL); (exit status, output). Building a
+    base is no case: it has minutes, and one that does not finish is an error (status -1)."""
+    out = run([str(a) for a in args], kill_after=600.0)
+    if out["exit_code"] is None:
+        return -1, "timed out" if out.get("timed_out") else (out.get("escaped") or "the child died without a result")
     return out["exit_code"], out["output"]
 
 

@@ -9,7 +9,12 @@ from . import cases
 
 
 @pytest.fixture(scope="session")
-def hostile_bases(tiny_corpus, tiny_artifacts, tiny_db, tmp_path_factory) -> cases.Bases:
-    """Valid inputs of every kind (captures, audio, labels, meshes, settings, every artifact kind)."""
+def hostile_bases(tiny_corpus, tiny_artifacts, tiny_db, built_once) -> cases.Bases:
+    """Valid inputs of every kind (captures, audio, labels, meshes, settings, every artifact kind),
+    built once for every worker of the session."""
     artifacts = {**tiny_artifacts, "motiondb": tiny_db}
-    return cases.build_bases(tmp_path_factory.mktemp("hostile") / "bases", tiny_corpus, artifacts)
+
+    def build(d):
+        cases.build_bases(d / "bases", tiny_corpus, artifacts).save(d / "bases.json")
+
+    return cases.Bases.load(built_once("hostile-bases", build) / "bases.json")

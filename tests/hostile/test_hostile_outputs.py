@@ -100,9 +100,9 @@ _SLOW_WRITE = textwrap.dedent("""
         time.sleep(60)
         publish(tmp, path, overwrite)
     artifacts.publish = slow
-    from facesynth.cli import main
+    from facesynth.cli import run
     sys.argv = ["facesynth"] + sys.argv[1:]
-    main()
+    run()
 """)
 
 
@@ -122,6 +122,145 @@ def test_signal_during_a_write_removes_the_temporary(tiny_artifacts, tmp_path, s
     assert proc.returncode == status, stderr
     assert stderr.strip().splitlines() == [phrase], stderr
     assert sorted(p.name for p in tmp_path.iterdir()) == ["p.h5.ready"]
+
+
+# The second output of a command is not published: a signal arrives just after the first is in place.
+_SIGNAL_BETWEEN_OUTPUTS = textwrap.dedent("""
+    import os, signal, sys
+    from facesynth import artifacts
+    publish = artifacts.publish
+    def then_signal(tmp, path, overwrite):
+        publish(tmp, path, overwrite)
+        os.kill(os.getpid(), signal.SIGTERM)
+    artifacts.publish = then_signal
+    from facesynth.cli import run
+    sys.argv = ["facesynth"] + sys.argv[1:]
+    run()
+""")
+
+
+def test_sigterm_between_the_artifact_and_its_contact_sheet_leaves_neither(tiny_db, tmp_path):
+    (tmp_path / "keyshapes.h5").write_text("an older key-shapes file")
+    proc = subprocess.run([sys.executable, "-c", _SIGNAL_BETWEEN_OUTPUTS, "keyshapes", str(tiny_db), "--method", "pca",
+                           "--count", "2", "--set", "keyshapes.curve_frames=50", "--sheet", str(tmp_path / "sheet.png"),
+                           "-o", str(tmp_path / "keyshapes.h5"), "--overwrite"], capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 143, proc.stderr
+    assert proc.stderr.strip().splitlines() == ["terminated (SIGTERM); no output was written."], proc.stderr
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["keyshapes.h5"]
+    assert (tmp_path / "keyshapes.h5").read_text() == "an older key-shapes file"  # the replaced file returned
+
+
+@pytest.fixture(scope="module")
+def retarget_inputs(tiny_db, tiny_artifacts, held_out_take, config, tmp_path_factory):
+    """A held-out take of the tiny corpus and its key-shapes (2 per emotion, fitted on the rig)."""
+    import dataclasses
+
+    from facesynth.stages import capture, keyshapes
+
+    d = tmp_path_factory.mktemp("retarget")
+    capture.run(tiny_db, tiny_artifacts["corpus"], held_out_take, d / "take.h5", config.settings("normalize"), 30.0)
+    keyshapes.run(tiny_db, d / "ks.h5", dataclasses.replace(config.settings("keyshapes"), method="pca", count=2,
+                                                            curve_frames=50))
+    return d / "take.h5", d / "ks.h5"
+
+
+def test_ctrl_c_between_the_curves_and_the_mesh_leaves_neither(retarget_inputs, tmp_path, monkeypatch):
+    take, ks = retarget_inputs
+    publish = artifacts.publish
+
+    def then_interrupt(tmp, path, overwrite):
+        publish(tmp, path, overwrite)
+        os.kill(os.getpid(), signal.SIGINT)
+
+    monkeypatch.setattr(artifacts, "publish", then_interrupt)
+    r = _run("retarget", take, "--keyshapes", ks, "--blend", "linear", "--mesh", tmp_path / "anim.h5",
+             "-o", tmp_path / "curves.h5")
+    assert r.exit_code == 130, r.output
+    assert r.output.strip().splitlines() == ["interrupted; no output was written."], r.output
+    assert list(tmp_path.iterdir()) == []
+    monkeypatch.setattr(artifacts, "publish", publish)
+    r = _run("retarget", take, "--keyshapes", ks, "--blend", "linear", "--mesh", tmp_path / "anim.h5",
+             "-o", tmp_path / "curves.h5", "-q")
+    assert r.exit_code == 0, r.output
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["anim.h5", "curves.h5"]
+
+
+def test_an_interrupt_after_the_output_is_written_says_so(tiny_artifacts, tmp_path, monkeypatch):
+    from facesynth.stages import pca
+
+    run = pca.run
+
+    def then_interrupt(*args, **kwargs):
+        run(*args, **kwargs)
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(pca, "run", then_interrupt)
+    r = _run("pca", tiny_artifacts["normalized"], "-o", tmp_path / "p.h5")
+    assert r.exit_code == 130, r.output
+    assert r.output.strip().splitlines() == [f"interrupted; {tmp_path / 'p.h5'} was written before it (complete); "
+                                             "nothing else was."], r.output
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["p.h5"]
+
+
+# A test-like process: one command in-process (through click's CliRunner), then SIGTERM.
+_IN_PROCESS_THEN_WAIT = textwrap.dedent("""
+    import signal, sys, time
+    from click.testing import CliRunner
+    from facesynth.cli import main
+    result = CliRunner().invoke(main, sys.argv[1:])
+    assert result.exit_code == 0, result.output
+    assert signal.getsignal(signal.SIGTERM) == signal.SIG_DFL, signal.getsignal(signal.SIGTERM)
+    print("ready", flush=True)
+    time.sleep(120)
+    print("still running after SIGTERM", flush=True)
+""")
+
+
+# A test-like process whose in-process command (through click's CliRunner) is writing its output.
+_IN_PROCESS_SLOW_WRITE = textwrap.dedent("""
+    import sys, time
+    from click.testing import CliRunner
+    from facesynth import artifacts
+    publish = artifacts.publish
+    def slow(tmp, path, overwrite):
+        open(str(path) + ".ready", "w").close()
+        time.sleep(60)
+        publish(tmp, path, overwrite)
+    artifacts.publish = slow
+    from facesynth.cli import main
+    result = CliRunner().invoke(main, sys.argv[1:])
+    print("the test process went on after SIGTERM:", result.exit_code, flush=True)
+""")
+
+
+def test_sigterm_during_an_in_process_command_stops_the_process_after_cleaning_up(tiny_artifacts, tmp_path):
+    out = tmp_path / "p.h5"
+    proc = subprocess.Popen([sys.executable, "-c", _IN_PROCESS_SLOW_WRITE, "pca", str(tiny_artifacts["normalized"]),
+                             "-o", str(out)], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    deadline = time.monotonic() + 120
+    while not Path(str(out) + ".ready").exists():
+        assert proc.poll() is None and time.monotonic() < deadline, proc.communicate()
+        time.sleep(0.05)
+    proc.send_signal(signal.SIGTERM)
+    stdout, stderr = proc.communicate(timeout=30)
+    assert proc.returncode == -signal.SIGTERM, (stdout, stderr)
+    assert "went on" not in stdout
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["p.h5.ready"]  # the temporary file was removed first
+
+
+def test_a_process_that_ran_a_command_in_process_still_stops_on_sigterm(tiny_db, tiny_corpus, held_out_take, tmp_path):
+    labels = tiny_corpus / "labels" / f"{held_out_take}.TextGrid"
+    proc = subprocess.Popen([sys.executable, "-c", _IN_PROCESS_THEN_WAIT, "synthesize", str(tiny_db), "--phonemes",
+                             str(labels), "-o", str(tmp_path / "m.h5"), "-q"],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        assert proc.stdout.readline().strip() == "ready", proc.communicate(timeout=60)
+        proc.send_signal(signal.SIGTERM)
+        stdout, stderr = proc.communicate(timeout=30)
+    finally:
+        proc.kill()
+    assert proc.returncode == -signal.SIGTERM, (stdout, stderr)
+    assert (tmp_path / "m.h5").exists()
 
 
 def test_stale_temporaries_of_killed_runs_are_cleaned(tiny_artifacts, tmp_path):

@@ -5,14 +5,13 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from meshes import grid
 from scipy.optimize import nnls
 
 from facesynth.retarget.gradients import GradientBlender, _exp
 from facesynth.retarget.keyshapes import knee, select_affinity, select_pca
 from facesynth.retarget.retarget import decompose, emotion_blend
 from facesynth.retarget.solve import fit_rig_weights, nnls_weights, solve_curves
-
-from meshes import grid
 
 
 def test_nnls_on_the_gram_factor_matches_scipy_on_the_full_system():
@@ -181,8 +180,9 @@ def test_gradient_blending_keeps_lengths_where_linear_blending_shrinks_a_rotatio
 
 
 def test_newton_polar_decomposition_matches_the_svd_route():
-    from facesynth.retarget.gradients import _polar, _polar_svd
     from scipy.spatial.transform import Rotation
+
+    from facesynth.retarget.gradients import _polar, _polar_svd
 
     rng = np.random.default_rng(7)
     n = 400

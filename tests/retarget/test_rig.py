@@ -10,13 +10,12 @@ from pathlib import Path
 import numpy as np
 import pytest
 from click.testing import CliRunner
+from meshes import grid
 
 from facesynth.cli import main
 from facesynth.errors import InputError
 from facesynth.formats.mesh import write_obj
 from facesynth.retarget.rig import TargetRig, builtin_rig, read_keymorphs, read_rig
-
-from meshes import grid
 
 
 def _rig_folder(folder: Path) -> tuple[np.ndarray, np.ndarray]:

@@ -20,7 +20,7 @@ def random_features(n: int, seed: int, markers: int = 7, dims: int = 12, duplica
     y = rng.normal(0, 1, (n, dims)).astype(np.float32)
     scale = rng.uniform(0.1, 3, n).astype(np.float32)
     viseme = rng.integers(0, 4, n)
-    for d in range(duplicates):
+    for _ in range(duplicates):
         src, dst = int(rng.integers(n)), int(rng.integers(n))
         for a in arrays + [x]:
             a[dst] = a[src]

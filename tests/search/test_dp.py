@@ -4,10 +4,9 @@ import itertools
 
 import numpy as np
 import pytest
+from features import tiny_utterance_steps
 
 from facesynth.search.dp import OpenCLDp, dp_numpy, dp_opencl
-
-from features import tiny_utterance_steps
 
 
 def _random(n, t, seed):

@@ -4,13 +4,13 @@ never above greedy's, PQ-Matching over the whole sentence agrees, ties follow em
 import numpy as np
 import pytest
 
+from facesynth.model.motiondb import MotionDatabase
 from facesynth.motion.cao import blend_jumps, learned_cutoffs, lowpass
 from facesynth.phonemes import PAU
 from facesynth.search.costs import path_terms, step_costs
 from facesynth.search.dp import dp_numpy
 from facesynth.search.greedy import Greedy, anime_graph, cluster_graph, motion_features, pq_matching
 from facesynth.search.inputs import read_utterance
-from facesynth.model.motiondb import MotionDatabase
 
 
 def min_jumps(phones, node_phone, suc):
@@ -33,7 +33,7 @@ def min_jumps(phones, node_phone, suc):
     return total
 
 
-def random_db(seed, n_sentences=12, length=8, alphabet="aa b m iy s t k ow".split()):
+def random_db(seed, n_sentences=12, length=8, alphabet=("aa", "b", "m", "iy", "s", "t", "k", "ow")):
     rng = np.random.default_rng(seed)
     phones, suc, emotion = [], [], []
     for s in range(n_sentences):

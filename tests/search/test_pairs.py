@@ -3,11 +3,10 @@ kernel bit-identical to the NumPy reference, and the bounds the pruned DP relies
 
 import numpy as np
 import pytest
+from features import random_features
 
 from facesynth.config import Config
 from facesynth.search.pairs import PairFeatures, TransitionCosts
-
-from features import random_features
 
 
 @pytest.fixture(scope="module")

@@ -6,13 +6,12 @@ from functools import partial
 
 import numpy as np
 import pytest
+from features import random_features, tiny_utterance_steps
 
 from facesynth.config import Config
 from facesynth.search.dp import dp_numpy, dp_opencl
 from facesynth.search.pairs import PairFeatures, TransitionCosts
 from facesynth.search.pruned import _column_minima_numpy, dp_pruned
-
-from features import random_features, tiny_utterance_steps
 
 
 def _settings(*overrides):

@@ -2,8 +2,8 @@ import numpy as np
 import pytest
 
 from facesynth.model.motiondb import Nodes
-from facesynth.stages.build_db import build_nodes, dsc_features, dsc_matrix, pair_gaps_numpy
 from facesynth.model.tables import Phones, Takes
+from facesynth.stages.build_db import build_nodes, dsc_features, dsc_matrix, pair_gaps_numpy
 
 
 def _tables():

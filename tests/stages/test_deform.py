@@ -1,7 +1,6 @@
 import numpy as np
 import pytest
 
-from facesynth.config import Config
 from facesynth.corpus.markers import build_marker_set
 from facesynth.errors import InputError
 from facesynth.facerig import load_face_rig
@@ -68,7 +67,7 @@ def _rig_binding(rig):
     vertex of the inner lip line; with which of them are on the upper lip."""
     mouth = rig.loops["mouth"]
     layout = classify_holes(rig.neutral, rig.faces)
-    upper, _ = lip_halves((rig.neutral[mouth] - layout.mouth.centre))
+    upper, _ = lip_halves(rig.neutral[mouth] - layout.mouth.centre)
     vertices = np.unique(np.concatenate([rig.landmarks68, mouth[::3]]))
     upper_set = set(mouth[upper].tolist())
     return vertices, np.array([v in upper_set for v in vertices]), mouth, upper

@@ -172,9 +172,9 @@ def test_a_take_with_only_a_transcript_is_aligned(corpus, config):
 def test_align_settings_reach_the_aligner_of_transcript_only_takes(corpus, tmp_path, monkeypatch):
     from click.testing import CliRunner
 
+    from facesynth import alignment as align
     from facesynth.cli import main
     from facesynth.formats.labels import read_phone_segments
-    from facesynth import alignment as align
 
     rows = _rows(corpus)
     aligned = corpus / rows[1]["alignment"]

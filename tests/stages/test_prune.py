@@ -5,8 +5,8 @@ from click.testing import CliRunner
 
 from facesynth.cli import main
 from facesynth.errors import InputError
-from facesynth.stages import prune
 from facesynth.model.motiondb import Nodes
+from facesynth.stages import prune
 from facesynth.stages.prune import excursions, parse_ids
 
 
@@ -63,8 +63,8 @@ def test_removing_nodes_keeps_links_and_costs_consistent(tiny_db, tmp_path, conf
 
 def test_auto_finds_the_injected_contamination(small_db_and_truth, config):
     from facesynth.artifacts import open_artifact, read
-    from facesynth.stages.prune import contaminated_nodes, detect
     from facesynth.model.tables import Takes
+    from facesynth.stages.prune import contaminated_nodes, detect
 
     db, truth_csv = small_db_and_truth
     with open_artifact(db, "motiondb") as f:
