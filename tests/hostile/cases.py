@@ -547,6 +547,12 @@ def _child(args: list[str], fd: int) -> None:
     try:
         os.environ["FACESYNTH_OPENCL"] = "off"
         resource.setrlimit(resource.RLIMIT_AS, (MEMORY_CAP, MEMORY_CAP))
+        # The parent's OpenMP and BLAS worker threads are not in a forked child: a parallel
+        # region would wait on them for ever (scikit-learn's neighbours after the parent ran
+        # an Isomap), so the child computes on its one thread.
+        from threadpoolctl import threadpool_limits
+
+        threadpool_limits(1)
         from click.testing import CliRunner
 
         from facesynth import opencl
