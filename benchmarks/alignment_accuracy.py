@@ -249,25 +249,39 @@ def mfa_items(cache: Path) -> list[dict]:
     return items
 
 
-def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+def speech_arguments(description: str) -> argparse.ArgumentParser:
+    """The options of the benchmarks on these recordings: --preset, --sources, --cache, --work, --out."""
+    parser = argparse.ArgumentParser(description=description)
     parser.add_argument("--preset", default="tiny", help="sample corpus preset (tiny: 20 takes, small: 72)")
     parser.add_argument("--sources", default="sample,praatio,mfa")
     parser.add_argument("--cache", type=Path,
                         default=Path(os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache") / "facesynth" / "speech")
     parser.add_argument("--work", type=Path, default=Path("out/bench-align"))
     parser.add_argument("--out", type=Path, default=None)
-    args = parser.parse_args()
-    settings = Config.load().settings("align")
+    return parser
+
+
+def load_sources(args: argparse.Namespace) -> dict[str, list[dict] | str]:
+    """Per source of ``args.sources``, its recordings, or why it was skipped (a str)."""
     args.work.mkdir(parents=True, exist_ok=True)
     loaders = {"sample": lambda: sample_items(args.preset, args.work), "praatio": lambda: praatio_items(args.cache),
                "mfa": lambda: mfa_items(args.cache)}
-    result = {}
+    sources: dict[str, list[dict] | str] = {}
     for source in args.sources.split(","):
         try:
-            items = loaders[source]()
+            sources[source] = loaders[source]()
         except (OSError, subprocess.SubprocessError, StopIteration, KeyError) as exc:
-            result[source] = {"skipped": f"{type(exc).__name__}: {exc}"}
+            sources[source] = f"{type(exc).__name__}: {exc}"
+    return sources
+
+
+def main() -> None:
+    args = speech_arguments(__doc__.splitlines()[0]).parse_args()
+    settings = Config.load().settings("align")
+    result = {}
+    for source, items in load_sources(args).items():
+        if isinstance(items, str):
+            result[source] = {"skipped": items}
             continue
         report = {"recordings": len(items), "failures": [], "methods": {}, "warnings": [], "errors_ms": [],
                   "per_recording": {}}

@@ -29,11 +29,8 @@ other two).
 
 from __future__ import annotations
 
-import argparse
 import dataclasses
 import json
-import os
-import subprocess
 import sys
 import time
 from collections import Counter
@@ -43,7 +40,7 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from alignment_accuracy import festival, mfa_items, praatio_items, sample_items
+from alignment_accuracy import festival, load_sources, speech_arguments
 
 from facesynth.alignment import AlignmentFailed, normalize_text
 from facesynth.config import Config
@@ -182,27 +179,16 @@ def run_mode(items: list[dict], mode: str, base_settings) -> dict:
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--preset", default="tiny", help="sample corpus preset (tiny: 20 takes, small: 72)")
-    parser.add_argument("--sources", default="sample,praatio,mfa")
+    parser = speech_arguments(__doc__.splitlines()[0])
     parser.add_argument("--modes", default="text,words,phones")
     parser.add_argument("--only", default="", help="comma-separated recording names to keep (default: all)")
-    parser.add_argument("--cache", type=Path,
-                        default=Path(os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache") / "facesynth" / "speech")
-    parser.add_argument("--work", type=Path, default=Path("out/bench-align"))
-    parser.add_argument("--out", type=Path, default=None)
     args = parser.parse_args()
     settings = Config.load().settings("align")
-    args.work.mkdir(parents=True, exist_ok=True)
-    loaders = {"sample": lambda: sample_items(args.preset, args.work), "praatio": lambda: praatio_items(args.cache),
-               "mfa": lambda: mfa_items(args.cache)}
     keep = set(filter(None, args.only.split(",")))
     result = {}
-    for source in args.sources.split(","):
-        try:
-            items = loaders[source]()
-        except (OSError, subprocess.SubprocessError, StopIteration, KeyError) as exc:
-            result[source] = {"skipped": f"{type(exc).__name__}: {exc}"}
+    for source, items in load_sources(args).items():
+        if isinstance(items, str):
+            result[source] = {"skipped": items}
             continue
         if keep:
             items = [i for i in items if i["name"] in keep]

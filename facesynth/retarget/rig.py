@@ -98,32 +98,30 @@ def load_rig_mesh(path: Path | None) -> tuple[str, np.ndarray, np.ndarray, np.nd
     if path is None or str(path) == BUILTIN:
         rig = load_face_rig()
         return BUILTIN_RIG_NAME, rig.neutral, rig.faces, np.linalg.norm(rig.deltas[rig.shape_index(JAW_SHAPE)], axis=1)
-    path = Path(path)
-    if not path.exists():
-        raise InputError(f"{path}: rig not found; give a folder of OBJ files, a .gltf/.glb file or 'builtin'.")
-    if path.is_dir():
-        name, _, neutral, faces, names, deltas = _read_obj_folder(path)
-    elif path.suffix.lower() in (".gltf", ".glb"):
-        name, _, neutral, faces, names, deltas = _read_gltf(path)
-    else:
-        raise InputError(f"{path}: unsupported rig {path.suffix!r}; give a folder of OBJ files or a .gltf/.glb file.")
+    rig_files = _read_rig_files(Path(path), "a folder of OBJ files, a .gltf/.glb file or 'builtin'")
+    name, _, neutral, faces, names, deltas = rig_files
     jaw = np.linalg.norm(deltas[list(names).index(JAW_SHAPE)], axis=1) if JAW_SHAPE in names else None
     return name, neutral, faces, jaw
+
+
+def _read_rig_files(path: Path, what: str):
+    """(name, digest, neutral, faces, shape names, deltas) of a user's rig: an OBJ folder or a
+    glTF file; ``what`` names the accepted kinds in the error."""
+    if not path.exists():
+        raise InputError(f"{path}: rig not found; give {what}.")
+    if path.is_dir():
+        return _read_obj_folder(path)
+    if path.suffix.lower() in (".gltf", ".glb"):
+        return _read_gltf(path)
+    raise InputError(f"{path}: unsupported rig {path.suffix!r}; give a folder of OBJ files or a .gltf/.glb file.")
 
 
 def read_rig(path: Path, binding_path: Path | None) -> TargetRig:
     """A user's rig: an OBJ folder or a glTF file, with its marker binding CSV."""
     path = Path(path)
-    if not path.exists():
-        raise InputError(f"{path}: rig not found; give a folder of OBJ files or a .gltf/.glb file.")
-    if binding_path is None:
+    if path.exists() and binding_path is None:
         raise InputError(f"{path}: a user's rig needs --binding, a CSV of marker,vertex placing the motion's markers on it.")
-    if path.is_dir():
-        name, digest, neutral, faces, names, deltas = _read_obj_folder(path)
-    elif path.suffix.lower() in (".gltf", ".glb"):
-        name, digest, neutral, faces, names, deltas = _read_gltf(path)
-    else:
-        raise InputError(f"{path}: unsupported rig {path.suffix!r}; give a folder of OBJ files or a .gltf/.glb file.")
+    name, digest, neutral, faces, names, deltas = _read_rig_files(path, "a folder of OBJ files or a .gltf/.glb file")
     binding = read_binding(Path(binding_path))
     return TargetRig(name, digest, neutral, faces, tuple(names), deltas, binding)
 
