@@ -850,24 +850,46 @@ def export(ctx: Context, artifact: Path, fmt: str, fps: float | None, head_motio
 
 
 @main.command()
-@click.argument("artifact", type=EXISTING)
-@click.option("--audio", type=EXISTING, default=None, help="WAV played with the animation (embedded in the page).")
+@click.argument("artifact", type=EXISTING, required=False)
+@click.option("--audio", type=EXISTING, default=None,
+              help="WAV played with the animation (embedded in the page); with --live, the speech the page sends.")
 @click.option("--motion", type=EXISTING, default=None,
               help="The synthesized motion a mesh animation or curves came from: its phones, emotion and provenance.")
+@click.option("--live", "live_url", default=None, metavar="WS_URL",
+              help="Instead of an artifact: a live page that connects to 'facesynth stream DB --serve' at this "
+                   "WebSocket URL (e.g. ws://127.0.0.1:8765) and animates the built-in rig's face as frames arrive.")
 @click.option("-o", "--output", type=PATH, required=True, help="Output .html.")
 @stage
-def player(ctx: Context, artifact: Path, audio: Path | None, motion: Path | None, output: Path):
+def player(ctx: Context, artifact: Path | None, audio: Path | None, motion: Path | None, live_url: str | None,
+           output: Path):
     """Write one self-contained HTML page that plays the animation in 3D with its audio.
 
     Orbit with the mouse, play/pause and scrub; the timeline shows each phone, its emotion and
     (for synthesized motion) the take and database node it came from. No network is needed to view it.
 
+    With --live WS_URL (and no ARTIFACT) the page is the live mode: it holds the built-in rig with
+    its 52 ARKit blendshapes, connects to the stream server, sends the --audio speech (or a WAV the
+    viewer picks) in real time when 'start' is pressed, and shows each frame at its time after a
+    small jitter buffer, playing the speech in sync; it shows the connection state. A '?live=URL'
+    parameter of the page's address overrides the URL, '#start' starts at once.
+
     \b
-    Example:
+    Examples:
       facesynth player anim.h5 --motion motion.h5 --audio corpus/audio/neutral_s016.wav -o player.html
+      facesynth player --live ws://127.0.0.1:8765 --audio corpus/audio/neutral_s016.wav -o live.html
     """
     from .stages import player as stage
 
+    if (artifact is None) == (live_url is None):
+        raise click.UsageError("give either an ARTIFACT to play or --live WS_URL (a live page), not both or neither.")
+    if live_url is not None:
+        if motion is not None:
+            raise click.UsageError("--motion is for an ARTIFACT; a live page takes its frames from the stream.")
+        s = stage.run_live(live_url, output, audio=audio, overwrite=ctx.overwrite)
+        ctx.say(f"live player for {live_url} ({s['vertices']} vertices, {s['targets']} ARKit morph targets, "
+                f"{s['seconds']:.2f} s of speech to send) -> {output} ({s['bytes'] / 1e6:.1f} MB)")
+        return
+    assert artifact is not None
     s = stage.run(artifact, output, audio=audio, motion=motion, overwrite=ctx.overwrite)
     ctx.say(f"player of {s['frames']} frames ({s['seconds']:.2f} s at {s['fps']:g} frames/s, "
             f"{s['phones']} phones) -> {output} ({s['bytes'] / 1e6:.1f} MB)")

@@ -17,6 +17,11 @@ largest offset / 65534). The page shows the frame count and duration, play/pause
 the phones with their emotion on a timeline under the view and, for synthesized motion, the take
 and database node each phone came from. Head motion is not played (the face stays in its head
 frame, as the renderer draws it).
+
+A live page (:func:`live_payload`) holds the built-in rig with its 52 ARKit blendshapes as
+morph targets and connects to a ``facesynth stream --serve`` WebSocket: it sends its speech as
+PCM in real time, shows each frame at its time after a small jitter buffer, and plays the speech
+in sync (see docs/live.md).
 """
 
 from __future__ import annotations
@@ -35,6 +40,9 @@ from .animation import Exportable
 MAX_COMPONENTS = 96
 #: Fraction of the variance of the offsets from the rest pose the kept components explain.
 KEEP_VARIANCE = 0.999999
+
+#: Seconds a live page holds a frame after it arrives before showing it (the jitter buffer).
+LIVE_JITTER_S = 0.15
 
 #: The vendored three.js files (package data) and the ids of the page's script blocks.
 THREE_FILES = {"three-core": "three.core.js", "three-module": "three.module.js", "three-orbit": "three.OrbitControls.js"}
@@ -99,14 +107,55 @@ def payload(anim: Exportable, audio: Path | None = None) -> dict:
         "audio": "",
     }
     if audio is not None:
-        import soundfile as sf
+        data["audio"] = _wav_uri(*_read_audio(audio))
+    return data
 
-        from ..formats.audio import read_audio
 
-        samples, rate = read_audio(audio)
-        buffer = io.BytesIO()
-        sf.write(buffer, np.clip(samples, -1.0, 1.0), rate, format="WAV", subtype="PCM_16")
-        data["audio"] = "data:audio/wav;base64," + base64.b64encode(buffer.getvalue()).decode("ascii")
+def _read_audio(path: Path) -> tuple[np.ndarray, int]:
+    from ..formats.audio import read_audio
+
+    return read_audio(path)
+
+
+def _wav_uri(samples: np.ndarray, rate: int) -> str:
+    """A 16-bit mono WAV data URI of ``samples`` (S,) in [-1, 1] at ``rate`` Hz."""
+    import soundfile as sf
+
+    buffer = io.BytesIO()
+    sf.write(buffer, np.clip(samples, -1.0, 1.0), rate, format="WAV", subtype="PCM_16")
+    return "data:audio/wav;base64," + base64.b64encode(buffer.getvalue()).decode("ascii")
+
+
+def live_payload(url: str, audio: Path | None = None, jitter_s: float = LIVE_JITTER_S) -> dict:
+    """The data of a live page: the built-in rig's neutral mesh and faces with its 52 ARKit
+    blendshapes as morph targets (each the sum of the rig shapes the ARKit name drives, as
+    :meth:`FaceRig.from_arkit`), so a stream frame's ``arkit`` weights pose the face directly;
+    the stream's WebSocket ``url``; and optionally the speech to send (16 kHz mono int16 PCM,
+    ``pcm``) and play (``audio``, a WAV data URI)."""
+    from ..errors import InputError
+    from ..facerig import load_face_rig
+    from ..formats.audio import resample
+    from ..live.phones import SAMPLE_RATE
+
+    if not url.startswith(("ws://", "wss://")) or len(url) <= len("ws://"):
+        raise InputError(f"--live {url!r}: give the stream server's WebSocket URL, e.g. ws://127.0.0.1:8765 "
+                         "(the address 'facesynth stream DB --serve' listens on).")
+    rig = load_face_rig()
+    targets = rig.arkit_to_rig @ rig.deltas.reshape(len(rig.deltas), -1).astype(np.float64)  # (52, V*3) mm
+    q, scale = quantize(targets)
+    data = {
+        "kind": "live", "source": url, "live": url, "jitter": float(jitter_s), "fps": 0, "frames": 0, "duration": 0.0,
+        "rest": _b64(np.asarray(rig.neutral, np.float32)), "vertices": int(len(rig.neutral)),
+        "faces": _b64(np.asarray(rig.faces, np.uint32)),
+        "targets": [_b64(row) for row in q], "scales": [float(s) for s in scale], "target_names": list(rig.arkit_names),
+        "weights": "", "phones": [], "emotion_runs": [], "audio": "", "pcm": "",
+    }
+    if audio is not None:
+        samples, rate = _read_audio(audio)
+        if rate != SAMPLE_RATE:
+            samples, rate = resample(samples, rate, SAMPLE_RATE), SAMPLE_RATE
+        data["audio"] = _wav_uri(samples, rate)
+        data["pcm"] = _b64(np.round(np.clip(samples, -1.0, 1.0) * 32767).astype("<i2"))
     return data
 
 

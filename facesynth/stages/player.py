@@ -5,11 +5,13 @@ phones with their emotion and, for synthesized motion, the take and database nod
 
 from __future__ import annotations
 
+import base64
 from pathlib import Path
 
 from ..artifacts import atomic_path, check_output
 from ..exports.animation import load
-from ..exports.player import page, payload
+from ..exports.player import live_payload, page, payload
+from ..live.phones import SAMPLE_RATE
 
 
 def run(artifact: Path, output: Path, *, audio: Path | None = None, motion: Path | None = None,
@@ -21,4 +23,17 @@ def run(artifact: Path, output: Path, *, audio: Path | None = None, motion: Path
     with atomic_path(output, overwrite) as tmp:
         Path(tmp).write_text(html, encoding="utf-8")
     return {"frames": anim.n_frames, "fps": anim.fps, "seconds": anim.duration_s, "phones": len(anim.phones),
+            "bytes": len(html.encode("utf-8"))}
+
+
+def run_live(url: str, output: Path, *, audio: Path | None = None, overwrite: bool = False) -> dict:
+    """Write a live page (the built-in rig, connecting to the stream server at ``url``) to ``output``;
+    returns vertices, targets, seconds of speech to send and bytes."""
+    check_output(output, overwrite)
+    data = live_payload(url, audio)
+    html = page(data)
+    with atomic_path(output, overwrite) as tmp:
+        Path(tmp).write_text(html, encoding="utf-8")
+    seconds = len(base64.b64decode(data["pcm"])) / 2 / SAMPLE_RATE  # int16 samples at 16 kHz
+    return {"vertices": data["vertices"], "targets": len(data["targets"]), "seconds": seconds,
             "bytes": len(html.encode("utf-8"))}
