@@ -53,7 +53,7 @@ def test_usage_error_is_exit_2():
 
 def test_every_command_has_a_runnable_example():
     for name, command in main.commands.items():
-        assert "Example:" in (command.help or ""), name
+        assert "Example:" in (command.help or "") or "Examples:" in (command.help or ""), name
 
 
 def test_only_commands_that_write_offer_overwrite():
