@@ -122,12 +122,18 @@ def _recognize_words(audio: np.ndarray, settings: AlignSettings) -> tuple[list[s
     return _with_beams(settings, attempt)
 
 
+def phone_loop_model() -> str:
+    """The path of pocketsphinx's bundled phonetic trigram model (``en-us-phone.lm.bin``), the
+    ``allphone`` search's model for file and live recognition."""
+    import pocketsphinx
+
+    return os.path.join(pocketsphinx.get_model_path(), "en-us", "en-us-phone.lm.bin")
+
+
 def _recognize_phones(audio: np.ndarray, settings: AlignSettings) -> tuple[list[Segment], list[str]]:
     """Phone-loop decoding of ``audio``: Festival phone segments (seconds; silences and noises
     as ``pau``), and why each beam found no phone."""
-    import pocketsphinx
-
-    model = os.path.join(pocketsphinx.get_model_path(), "en-us", "en-us-phone.lm.bin")
+    model = phone_loop_model()
     frame = 1.0 / settings.frame_rate
 
     def attempt(beam):

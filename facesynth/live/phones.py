@@ -14,7 +14,6 @@
 
 from __future__ import annotations
 
-import os
 from dataclasses import dataclass
 
 import numpy as np
@@ -22,6 +21,7 @@ import numpy as np
 from ..config import AlignSettings
 from ..errors import InputError
 from ..phonemes import PAU, map_phones, to_festival
+from ..recognition import phone_loop_model
 
 #: The sample rate live audio arrives at (Hz): 16-bit little-endian mono PCM.
 SAMPLE_RATE = 16000
@@ -44,8 +44,7 @@ class PhoneRecognizer:
         if self.settings.sample_rate != SAMPLE_RATE:
             raise InputError(f"align.sample_rate is {self.settings.sample_rate} Hz; live recognition reads "
                              f"{SAMPLE_RATE} Hz audio, so set it to {SAMPLE_RATE}.")
-        model = os.path.join(pocketsphinx.get_model_path(), "en-us", "en-us-phone.lm.bin")
-        self.decoder = pocketsphinx.Decoder(lm=None, allphone=model, samprate=SAMPLE_RATE,
+        self.decoder = pocketsphinx.Decoder(lm=None, allphone=phone_loop_model(), samprate=SAMPLE_RATE,
                                             frate=self.settings.frame_rate, loglevel="FATAL", dither=False)
         self.decoder.start_utt()
         self.samples = 0
