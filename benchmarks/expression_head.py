@@ -32,7 +32,7 @@ from pathlib import Path
 import numpy as np
 
 from facesynth.config import Config
-from facesynth.expression import bilinear
+from facesynth.style import bilinear
 from facesynth.model.corpus import Corpus
 from facesynth.model.frames import NormalizedFrames
 from facesynth.model.motiondb import MotionDatabase

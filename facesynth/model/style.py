@@ -1,5 +1,5 @@
-"""The ``expression`` artifact: a fitted bilinear style/content model (Chuang & Bregler §3),
-written by ``facesynth expression fit``."""
+"""The ``expression`` artifact: a fitted style model (the bilinear style/content model of
+Chuang & Bregler §3, :mod:`facesynth.style`), written by ``facesynth expression fit``."""
 
 from __future__ import annotations
 
@@ -8,12 +8,12 @@ from pathlib import Path
 import numpy as np
 
 from ..artifacts import open_artifact, read, read_strings, write_artifact, write_strings
-from ..expression.bilinear import BilinearModel
+from ..style.bilinear import BilinearModel
 
 
-class ExpressionModel:
+class StyleModel:
     """Reader and writer of the ``expression`` kind; the model itself is a
-    :class:`~facesynth.expression.bilinear.BilinearModel` with its marker names."""
+    :class:`~facesynth.style.bilinear.BilinearModel` with its marker names."""
 
     KIND = "expression"
 

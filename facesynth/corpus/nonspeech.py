@@ -102,7 +102,7 @@ def emotion_track(first: str, second: str | None, switch_s: float | None, n_fram
     return EmotionTrack(blend, intensity, switch_s)
 
 
-def expression_weights(rig: FaceRig, track: EmotionTrack, fps: float, rng: np.random.Generator) -> np.ndarray:
+def emotion_weights(rig: FaceRig, track: EmotionTrack, fps: float, rng: np.random.Generator) -> np.ndarray:
     """The emotion's shape offsets per frame, breathing slowly (+-15%). Returns (T, E)."""
     n = len(track.blend)
     t = np.arange(n) / fps
