@@ -16,11 +16,11 @@ import numpy as np
 from ..artifacts import check_output
 from ..config import ExpressionSettings, IngestSettings, settings_json
 from ..errors import InputError
-from ..style import bilinear
-from ..model.style import StyleModel
 from ..model.frames import NormalizedFrames
 from ..model.motion import Motion
+from ..model.style import StyleModel
 from ..phonemes import PAU
+from ..style import bilinear
 
 log = logging.getLogger(__name__)
 

@@ -6,8 +6,8 @@ from click.testing import CliRunner
 
 from facesynth.cli import main
 from facesynth.errors import InputError
-from facesynth.model.style import StyleModel
 from facesynth.model.motion import Motion
+from facesynth.model.style import StyleModel
 from facesynth.stages import capture
 from facesynth.stages import expression as stage
 
