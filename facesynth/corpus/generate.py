@@ -36,7 +36,7 @@ import numpy as np
 
 from ..artifacts import check_output_folder
 from ..errors import InputError
-from ..facerig import FaceRig, load_face_rig
+from ..facerig import Rig, load_face_rig
 from ..formats.audio import write_wav
 from ..formats.labels import Segment, write_textgrid
 from ..formats.mesh import write_binding, write_obj
@@ -107,7 +107,7 @@ class Performance:
     f0: np.ndarray
 
 
-def perform(words: list[str], emotion: str, rng: np.random.Generator, rig: FaceRig, solver: ContactSolver,
+def perform(words: list[str], emotion: str, rng: np.random.Generator, rig: Rig, solver: ContactSolver,
             pause_prob: float, fps: float = 120.0, change_probability: float = EMOTION_CHANGE_PROBABILITY) -> Performance:
     """The actress reads ``words`` in ``emotion`` (sometimes changing to another at a word boundary)."""
     second, switch_word = None, None
