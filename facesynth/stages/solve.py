@@ -24,9 +24,8 @@ from ..config import SolveSettings, settings_json
 from ..errors import InputError
 from ..facerig import Rig
 from ..model.curves import RigCurves
-from ..model.frames import NormalizedFrames
+from ..model.frames import NormalizedFrames, relative_to_take
 from ..model.motion import Motion
-from ..motion.head import relative_to_take
 from ..motion.postprocess import downsample
 from ..retarget.rig import load_rig, marker_map
 from ..retarget.solve import solve_curves
