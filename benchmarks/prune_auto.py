@@ -12,8 +12,8 @@ import time
 from pathlib import Path
 
 from facesynth.config import Config
+from facesynth.contamination import contaminated_nodes, detect
 from facesynth.model.motiondb import MotionDatabase
-from facesynth.stages.prune import contaminated_nodes, detect
 
 
 def evaluate(db: Path, truth_csv: Path, overrides: tuple[str, ...] = ()) -> dict:

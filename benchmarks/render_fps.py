@@ -37,6 +37,7 @@ from facesynth.facerig import load_face_rig
 from facesynth.formats.audio import write_wav
 from facesynth.model.meshanim import MeshAnimation
 from facesynth.opencl import device_description, use_opencl
+from facesynth.rendering import video
 from facesynth.rendering.parts import gaze_from_rig_weights
 from facesynth.stages import render
 
@@ -65,7 +66,7 @@ def animation(frames: int) -> MeshAnimation:
 def draw_fps(clip: MeshAnimation, settings, frames: int) -> tuple[float, float]:
     """Frames drawn per second of wall-clock time over ``frames`` frames (after one warm-up
     frame), and the process's CPU time per frame, ms (all its threads, PoCL's included)."""
-    view = render.ShadedView(clip, settings, settings.width)
+    view = video.ShadedView(clip, settings, settings.width)
     view.frame(clip.vertices[0], 0)
     started, cpu = time.perf_counter(), time.process_time()
     for t in range(frames):

@@ -53,8 +53,9 @@ from facesynth.model.corpus import Corpus
 from facesynth.model.motion import Motion
 from facesynth.model.motiondb import MotionDatabase
 from facesynth.motion.postprocess import downsample
+from facesynth.retarget import deform
 from facesynth.retarget.gradients import GradientBlender
-from facesynth.stages import capture, deform, keyshapes, retarget, solve, synthesize
+from facesynth.stages import capture, keyshapes, retarget, solve, synthesize
 
 BILABIALS = ("p", "b", "m")
 

@@ -12,131 +12,26 @@ import contextlib
 import contextvars
 import dataclasses
 import errno
-import hashlib
 import json
 import mmap
 import os
 import re
 import shutil
 import signal
-import stat
 import threading
-import time
 from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING
 
 import h5py
 import numpy as np
 
 from . import __version__
+from .check import Snapshot, bounds_in_force, validate, value_problem, written_problem
 from .errors import ArtifactError, InputError, OutputExistsError
-
-if TYPE_CHECKING:
-    from .check import Snapshot
-
-#: Current schema of each artifact kind; bumped on an incompatible change.
-SCHEMAS: dict[str, int] = {
-    "corpus": 1,
-    "normalized": 1,
-    "pca": 1,
-    "motiondb": 2,  # 2: per-node transition features instead of (N, N) pair tables
-    "isomap": 1,
-    "motion": 1,
-    "meshanim": 1,
-    "expression": 1,
-    "headmotion": 1,
-    "curves": 1,
-    "keyshapes": 1,
-    "trajectory": 1,
-}
-
-#: Which stage makes each kind (used in messages that say what to do).
-PRODUCERS: dict[str, str] = {
-    "corpus": "facesynth ingest",
-    "normalized": "facesynth normalize",
-    "pca": "facesynth pca",
-    "motiondb": "facesynth build-db",
-    "isomap": "facesynth isomap",
-    "motion": "facesynth synthesize",
-    "meshanim": "facesynth deform",
-    "expression": "facesynth expression fit",
-    "headmotion": "facesynth head-motion",
-    "curves": "facesynth solve",
-    "keyshapes": "facesynth keyshapes",
-    "trajectory": "facesynth train-trajectory",
-}
+from .hashing import sha256_of
+from .model.kinds import ENCODING_VERSION, PRODUCERS, SCHEMAS
 
 STR = h5py.string_dtype("utf-8")
-
-
-#: Files at least this large (a motion database) have their sha256 remembered between
-#: commands; hashing 500 MB takes about 0.3 s of a core, every time a sentence is synthesized.
-HASH_CACHE_MIN_BYTES = 64 << 20
-
-
-def sha256_of(path: Path) -> str:
-    """Hex sha256 of a file's bytes.
-
-    The file is read in 16 MB blocks into one reused buffer; reading and hashing a block
-    release the GIL, so other threads run meanwhile.
-
-    The digest of a file of at least :data:`HASH_CACHE_MIN_BYTES` is remembered in
-    ``$XDG_CACHE_HOME/facesynth/sha256/`` (default ``~/.cache``) under the file's device,
-    inode, size, modification and status-change times (ns), the way git trusts its index:
-    the kernel sets the status-change time on every write, rename or ``touch`` of the file
-    and ``utime`` cannot set it. A digest is remembered only when the file's times are
-    more than a second older than the hashing and the file did not change while it was
-    hashed, so a write within the same clock tick is never missed. A cache that cannot be
-    read or written is ignored.
-    """
-    path = Path(path)
-    before = os.stat(path)
-    key = _hash_cache_key(before) if stat.S_ISREG(before.st_mode) and before.st_size >= HASH_CACHE_MIN_BYTES else None
-    if key is not None:
-        cached = _hash_cache_get(key)
-        if cached is not None:
-            return cached
-    started_ns = time.time_ns()
-    digest = hashlib.sha256()
-    buffer = bytearray(min(16 << 20, max(before.st_size, 1 << 16)))
-    view = memoryview(buffer)
-    with open(path, "rb", buffering=0) as fh:
-        while count := fh.readinto(buffer):
-            digest.update(view[:count])
-    hex_digest = digest.hexdigest()
-    settled = max(before.st_mtime_ns, before.st_ctime_ns) < started_ns - 1_000_000_000
-    if key is not None and settled and _hash_cache_key(os.stat(path)) == key:
-        _hash_cache_put(key, hex_digest)
-    return hex_digest
-
-
-def _hash_cache_key(st: os.stat_result) -> str:
-    return f"{st.st_dev}-{st.st_ino}-{st.st_size}-{st.st_mtime_ns}-{st.st_ctime_ns}"
-
-
-def _hash_cache_folder() -> Path:
-    return Path(os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache") / "facesynth" / "sha256"
-
-
-def _hash_cache_get(key: str) -> str | None:
-    try:
-        value = (_hash_cache_folder() / key).read_text("ascii").strip()
-    except (OSError, UnicodeDecodeError):
-        return None
-    return value if len(value) == 64 and all(c in "0123456789abcdef" for c in value) else None
-
-
-def _hash_cache_put(key: str, hex_digest: str) -> None:
-    folder = _hash_cache_folder()
-    tmp = folder / f"{key}.tmp-{os.getpid()}-{threading.get_ident()}"
-    try:
-        folder.mkdir(parents=True, exist_ok=True)
-        tmp.write_text(hex_digest + "\n", "ascii")
-        os.replace(tmp, folder / key)
-    except OSError:
-        with contextlib.suppress(OSError):
-            tmp.unlink()
 
 
 def _writable_folder(path: Path) -> None:
@@ -569,8 +464,6 @@ def write_artifact(
             f.attrs["config"] = config if isinstance(config, str) else json.dumps(config, sort_keys=True)
             f.attrs["inputs"] = json.dumps(records)
             yield f
-            from .check import written_problem
-
             problem = written_problem(f, kind)
             if problem:
                 sources = ", ".join(r["path"] for r in records) or "the inputs"
@@ -652,8 +545,6 @@ def open_artifact(path: Path, kind: str) -> h5py.File:
     checked as :func:`read` (or :class:`RowReader`) reads them. A damaged or truncated file is an
     ArtifactError naming the file, never an HDF5 traceback.
     """
-    from .check import bounds_in_force, validate
-
     path = Path(path)
     producer = PRODUCERS.get(kind, "facesynth")
     if not path.exists():
@@ -733,8 +624,6 @@ def check_values(f: h5py.File, key: str, data: np.ndarray) -> None:
     snapshot = snapshot_of(f)
     if snapshot is None:
         return
-    from .check import value_problem
-
     problem = value_problem(snapshot, key, data)
     if problem:
         raise ArtifactError(f"{f.filename}: /{key.lstrip('/')}: {problem}; the file is damaged or was changed "
@@ -853,11 +742,6 @@ def attr_choice(f: h5py.File, key: str, choices: Sequence[str], remedy: str) -> 
     if value not in choices:
         raise InputError(f"{f.filename}: / attribute '{key}' is {value!r}, not one of {', '.join(choices)}; {remedy}.")
     return value
-
-
-#: Version of each group encoding (the ``encoding-type`` attribute names the group's layout,
-#: ``encoding-version`` this number); bumped when a group's layout changes incompatibly.
-ENCODING_VERSION = "1"
 
 
 def stamp(group: h5py.Group, encoding: str) -> h5py.Group:

@@ -32,7 +32,8 @@ from pathlib import Path
 import h5py
 import numpy as np
 
-from .artifacts import ENCODING_VERSION, PRODUCERS, SCHEMAS, sha256_of
+from .hashing import sha256_of
+from .model.kinds import ENCODING_VERSION, PRODUCERS, SCHEMAS
 from .model.spec import (
     COMMON_ATTRS,
     KINDS,

@@ -699,10 +699,6 @@ class Config:
                 raise OverrideError(str(exc)) from None
         return cls(data)
 
-    def section(self, name: str) -> dict[str, Any]:
-        """The raw values of one section (a copy)."""
-        return json.loads(json.dumps(self._data[name]))
-
     def settings(self, section: str, cls: type[S] | None = None) -> S:
         """The section as its frozen dataclass (lists become tuples)."""
         if self._reads is not None and section not in self._reads:

@@ -1,4 +1,6 @@
-"""The production face rig shipped with facesynth: ICT-FaceKit's face and head with 55 blendshapes.
+"""The rig: :class:`Rig`, the one linear blendshape rig class (the built-in rig, a user's rig
+read for retargeting), and the production face rig shipped with facesynth
+(:func:`load_face_rig`): ICT-FaceKit's face and head with 55 blendshapes.
 
 The rig is linear: for weights ``w`` (one per shape, 0..1 in the ARKit convention) the
 vertices are ``neutral + sum_e w[e] * deltas[e]``. Shapes follow ARKit's naming with
@@ -15,37 +17,48 @@ attribution in ``facesynth/data/ict_face.LICENSE``.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+import hashlib
+from dataclasses import dataclass, field
 from functools import lru_cache
 from importlib import resources
 
 import numpy as np
 
+from .errors import InputError
+
 CM_TO_MM = 10.0
 
 
 @dataclass(frozen=True)
-class FaceRig:
-    """A linear blendshape rig.
+class Rig:
+    """A linear blendshape rig: ``vertices = neutral + sum_e w[e] * deltas[e]``, w in [0, 1].
 
-    neutral : (V, 3) float64, mm, the rest mesh
+    name : the rig's name; sha256 : hex digest of its data (identifies it in artifacts).
+    neutral : (V, 3) float64, the rest mesh in rig units (mm for the built-in rig)
     faces : (F, 3) int64, triangles counter-clockwise seen from outside
-    shape_names : the E blendshape names (ICT order)
-    deltas : (E, V, 3) float32, mm, each shape minus the neutral mesh
-    landmarks68 : (68,) int64, Multi-PIE 68-point landmark vertices
+    shape_names : the E blendshape names
+    deltas : (E, V, 3) float32, each shape minus the neutral mesh, rig units
+    binding : marker name -> vertex index (empty for a rig not bound to markers)
+    landmarks68 : (68,) int64, Multi-PIE 68-point landmark vertices, or None
     loops : boundary loops by name ('mouth', 'eye_L', 'eye_R', 'neck'), each (n,) int64 in order
-    arkit_names : the 52 ARKit blendshape names, in Live Link Face column order
-    arkit_to_rig : (52, E) float64 matrix taking ARKit weights to rig weights
+    arkit_names : the 52 ARKit blendshape names, in Live Link Face column order (empty: no ARKit map)
+    arkit_to_rig : (52, E) float64 matrix taking ARKit weights to rig weights, or None
+
+    The built-in rig (:func:`load_face_rig`) has every field; a user's rig (read by
+    :func:`facesynth.retarget.rig.read_rig`) has a name, digest, meshes and binding only.
     """
 
+    name: str
+    sha256: str
     neutral: np.ndarray
     faces: np.ndarray
     shape_names: tuple[str, ...]
     deltas: np.ndarray
-    landmarks68: np.ndarray
-    loops: dict
-    arkit_names: tuple[str, ...]
-    arkit_to_rig: np.ndarray
+    binding: dict[str, int] = field(default_factory=dict)
+    landmarks68: np.ndarray | None = None
+    loops: dict[str, np.ndarray] = field(default_factory=dict)
+    arkit_names: tuple[str, ...] = ()
+    arkit_to_rig: np.ndarray | None = None
 
     def shape_index(self, name: str) -> int:
         """Index of the shape called ``name`` (ICT spelling, e.g. 'jawOpen', 'mouthSmile_L')."""
@@ -55,23 +68,41 @@ class FaceRig:
         """Posed vertices.
 
         weights : (T, E) or (E,) rig weights. vertices : optional (K,) indices to evaluate only
-        those (e.g. marker vertices). Returns (T, K or V, 3) float64 mm, or (K or V, 3) for 1-D weights.
+        those (e.g. marker vertices). Returns (T, K or V, 3) float64 in rig units, or (K or V, 3)
+        for 1-D weights.
         """
         w = np.asarray(weights, dtype=np.float64)
         neutral, deltas = self.neutral, self.deltas
         if vertices is not None:
             neutral, deltas = neutral[vertices], deltas[:, vertices]
-        out = neutral + np.tensordot(w, deltas, axes=(w.ndim - 1, 0))
-        return out
+        return neutral + np.tensordot(w, deltas, axes=(w.ndim - 1, 0))
+
+    def bound(self, marker_names: list[str], where: str) -> tuple[np.ndarray, np.ndarray]:
+        """(columns of ``marker_names``, rig vertices) of the markers bound on this rig; three are needed."""
+        cols = [i for i, m in enumerate(marker_names) if m in self.binding]
+        if len(cols) < 3:
+            raise InputError(f"{where}: fewer than three of the motion's markers are bound on rig {self.name!r}; "
+                             f"give a binding CSV that names the motion's markers.")
+        bad = [m for m in self.binding if not 0 <= self.binding[m] < len(self.neutral)]
+        if bad:
+            raise InputError(f"{where}: marker {bad[0]!r} is bound to vertex {self.binding[bad[0]]}, but rig "
+                             f"{self.name!r} has {len(self.neutral)} vertices; use the binding made for this rig.")
+        return np.array(cols), np.array([self.binding[marker_names[c]] for c in cols])
+
+    def _arkit(self) -> np.ndarray:
+        if self.arkit_to_rig is None:
+            raise ValueError(f"rig {self.name!r} has no ARKit mapping")
+        return self.arkit_to_rig
 
     def from_arkit(self, arkit_weights: np.ndarray) -> np.ndarray:
         """Rig weights (..., E) for ARKit weights (..., 52) in :attr:`arkit_names` order."""
-        return np.asarray(arkit_weights, dtype=np.float64) @ self.arkit_to_rig
+        return np.asarray(arkit_weights, dtype=np.float64) @ self._arkit()
 
     def to_arkit(self, rig_weights: np.ndarray) -> np.ndarray:
         """ARKit weights (..., 52) for rig weights (..., E): split shapes averaged, tongueOut 0."""
-        counts = self.arkit_to_rig.sum(axis=1)
-        return (np.asarray(rig_weights, dtype=np.float64) @ self.arkit_to_rig.T) / np.maximum(counts, 1.0)
+        arkit_to_rig = self._arkit()
+        counts = arkit_to_rig.sum(axis=1)
+        return (np.asarray(rig_weights, dtype=np.float64) @ arkit_to_rig.T) / np.maximum(counts, 1.0)
 
 
 def _read_arkit_table(shape_names: tuple[str, ...]) -> tuple[tuple[str, ...], np.ndarray]:
@@ -94,8 +125,9 @@ def _read_arkit_table(shape_names: tuple[str, ...]) -> tuple[tuple[str, ...], np
 
 
 @lru_cache(maxsize=1)
-def load_face_rig() -> FaceRig:
-    """The ICT-FaceKit rig from the package data, in millimetres (cached; treat as read-only)."""
+def load_face_rig() -> Rig:
+    """The ICT-FaceKit rig from the package data, in millimetres, not bound to markers (cached;
+    treat as read-only)."""
     with resources.files("facesynth").joinpath("data/ict_face.npz").open("rb") as fh:
         data = np.load(fh, allow_pickle=False)
         shape_names = tuple(str(n) for n in data["expr_names"])
@@ -107,7 +139,8 @@ def load_face_rig() -> FaceRig:
     arkit_names, arkit_to_rig = _read_arkit_table(shape_names)
     for array in (neutral, deltas, faces, landmarks, arkit_to_rig, *loops.values()):
         array.setflags(write=False)
-    return FaceRig(neutral, faces, shape_names, deltas, landmarks, loops, arkit_names, arkit_to_rig)
+    return Rig(BUILTIN_RIG_NAME, builtin_rig_sha256(), neutral, faces, shape_names, deltas, {}, landmarks, loops,
+               arkit_names, arkit_to_rig)
 
 
 #: The name ``curves`` and ``keyshapes`` artifacts give the built-in rig.
@@ -117,8 +150,6 @@ BUILTIN_RIG_NAME = "ict-facekit"
 @lru_cache(maxsize=1)
 def builtin_rig_sha256() -> str:
     """Hex sha256 identifying the built-in rig: of its two data files' bytes, in order."""
-    import hashlib
-
     digest = hashlib.sha256()
     for name in ("data/ict_face.npz", "data/ict_face_arkit.tsv"):
         digest.update(resources.files("facesynth").joinpath(name).read_bytes())

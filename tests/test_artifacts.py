@@ -110,33 +110,33 @@ def test_large_file_digests_are_remembered_until_the_file_changes(tmp_path, monk
     import hashlib
     import time
 
-    from facesynth import artifacts
+    from facesynth import hashing
 
     monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "cache"))
-    monkeypatch.setattr(artifacts, "HASH_CACHE_MIN_BYTES", 4)
+    monkeypatch.setattr(hashing, "HASH_CACHE_MIN_BYTES", 4)
     f = tmp_path / "db.bin"
     f.write_bytes(b"first version")
-    assert artifacts.sha256_of(f) == hashlib.sha256(b"first version").hexdigest()
+    assert hashing.sha256_of(f) == hashlib.sha256(b"first version").hexdigest()
     assert not (tmp_path / "cache").exists()  # written less than a second ago: not remembered
     real_ns = time.time_ns
-    monkeypatch.setattr(artifacts.time, "time_ns", lambda: real_ns() + 5_000_000_000)
-    artifacts.sha256_of(f)
+    monkeypatch.setattr(hashing.time, "time_ns", lambda: real_ns() + 5_000_000_000)
+    hashing.sha256_of(f)
     (entry,) = (tmp_path / "cache" / "facesynth" / "sha256").iterdir()
     entry.write_text("ab" * 32)  # a remembered digest is used without reading the file
-    assert artifacts.sha256_of(f) == "ab" * 32
+    assert hashing.sha256_of(f) == "ab" * 32
     time.sleep(0.05)
     f.write_bytes(b"other version")  # same size, new modification and status-change times
-    assert artifacts.sha256_of(f) == hashlib.sha256(b"other version").hexdigest()
+    assert hashing.sha256_of(f) == hashlib.sha256(b"other version").hexdigest()
     time.sleep(0.05)
     f.chmod(0o600)  # only the status-change time moves
-    assert artifacts.sha256_of(f) == hashlib.sha256(b"other version").hexdigest()
+    assert hashing.sha256_of(f) == hashlib.sha256(b"other version").hexdigest()
     for e in entry.parent.iterdir():
         e.write_text("not a digest")  # a damaged entry is ignored
-    assert artifacts.sha256_of(f) == hashlib.sha256(b"other version").hexdigest()
-    monkeypatch.setattr(artifacts.time, "time_ns", real_ns)
+    assert hashing.sha256_of(f) == hashlib.sha256(b"other version").hexdigest()
+    monkeypatch.setattr(hashing.time, "time_ns", real_ns)
     small = tmp_path / "small.txt"
     small.write_bytes(b"abc")  # below the size limit: always hashed
-    assert artifacts.sha256_of(small) == hashlib.sha256(b"abc").hexdigest()
+    assert hashing.sha256_of(small) == hashlib.sha256(b"abc").hexdigest()
 
 
 @pytest.mark.parametrize("layout, mapped", [

@@ -11,7 +11,7 @@ from facesynth.cli import READS, main
 from facesynth.config import SECTIONS
 from facesynth.errors import InputError
 from facesynth.formats.labels import read_phone_segments
-from facesynth.stages import render
+from facesynth.rendering import video
 
 
 def _run(*args):
@@ -244,7 +244,7 @@ def test_render_takes_audio_within_two_frames(tmp_path):
     n_frames, rate = 90, 16000
     for frames_off in (-1.9, 1.9):
         sf.write(tmp_path / "a.wav", np.zeros(int(round((n_frames + frames_off) / 30.0 * rate))), rate)
-        assert len(render.clip_audio(tmp_path / "a.wav", n_frames, 30.0, 48000)) == n_frames / 30.0 * 48000
+        assert len(video.clip_audio(tmp_path / "a.wav", n_frames, 30.0, 48000)) == n_frames / 30.0 * 48000
     sf.write(tmp_path / "a.wav", np.zeros(int(round((n_frames + 2.5) / 30.0 * rate))), rate)
     with pytest.raises(InputError, match="more than 2 frames apart"):
-        render.clip_audio(tmp_path / "a.wav", n_frames, 30.0, 48000)
+        video.clip_audio(tmp_path / "a.wav", n_frames, 30.0, 48000)

@@ -120,7 +120,7 @@ def database(path: Path, settings: SynthesizeSettings):
 def bound_mesh(mesh: Path, binding: Path, marker_names: list[str], settings: DeformSettings):
     """The mesh bound to the markers (Eq. 14 weights), computed once per worker process."""
     from ..formats.mesh import read_binding, read_mesh
-    from ..stages.deform import bind
+    from ..retarget.deform import bind
 
     key = ("mesh", _file_key(mesh), _file_key(binding), tuple(marker_names), settings_json(settings))
     if key not in _CACHE:
@@ -307,8 +307,8 @@ def _do_line(line: Line, job: Job, emotion: str, key: dict, outputs: dict[str, P
 def _mesh_outputs(line: Line, job: Job, motion, motion_path: Path, outputs: dict[str, Path], result: LineResult) -> None:
     """The mesh animation (Eq. 14-15) and its video with the line's audio."""
     from ..model.meshanim import MeshAnimation
-    from ..stages.deform import animate
-    from ..stages.render import run as render
+    from ..rendering.video import render_video
+    from ..retarget.deform import animate
 
     if job.mesh is None or job.binding is None:
         raise InputError("the anim and avi outputs need --mesh and --binding.")
@@ -324,7 +324,7 @@ def _mesh_outputs(line: Line, job: Job, motion, motion_path: Path, outputs: dict
         result.outputs.append(anim_path.name)
     try:
         if "avi" in outputs:
-            render([anim_path], [line.audio], outputs["avi"], job.render, None, overwrite=True)
+            render_video([anim_path], [line.audio], outputs["avi"], job.render, None, overwrite=True)
             result.outputs.append(outputs["avi"].name)
     finally:
         if "anim" not in outputs:

@@ -34,7 +34,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..facerig import FaceRig
+from ..facerig import Rig
 from ..phonemes import PAU, VOWELS
 
 #: Articulatory channels and the rig shapes each drives (a sided channel drives _L and _R).
@@ -200,7 +200,7 @@ class ContactSolver:
     lip_pairs : (P, 2) rig vertices (upper, lower) on the inner lip line.
     """
 
-    rig: FaceRig
+    rig: Rig
     lip_pairs: np.ndarray
     target_gap_mm: float = 0.0
 
@@ -226,7 +226,7 @@ class ContactSolver:
 
 def articulate(phones: list[str], starts: np.ndarray, ends: np.ndarray, stress: np.ndarray, n_frames: int, fps: float,
                amplitude: np.ndarray, stiffness: np.ndarray, take_sides: np.ndarray, rng: np.random.Generator,
-               rig: FaceRig, variation: TokenVariation = TokenVariation()):
+               rig: Rig, variation: TokenVariation = TokenVariation()):
     """Speech weights of one take before the lip contact is solved.
 
     amplitude : (n,) per phone; stiffness : (T,) per-frame multiplier of every articulator's

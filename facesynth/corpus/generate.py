@@ -3,7 +3,7 @@
 The actress lives on the production face rig (:mod:`facesynth.facerig`): her speech is
 articulated in the rig's blendshape weights (:mod:`facesynth.corpus.articulation`), her face
 blinks, raises the brows, looks around and shows four emotions, sometimes changing emotion
-inside a sentence (:mod:`facesynth.corpus.expression`), and her head moves with pitch and
+inside a sentence (:mod:`facesynth.corpus.nonspeech`), and her head moves with pitch and
 phrasing (:mod:`facesynth.corpus.speech`). About 90 markers glued to rig vertices
 (:mod:`facesynth.corpus.markers`) are captured with noise, gaps and contamination.
 
@@ -36,7 +36,7 @@ import numpy as np
 
 from ..artifacts import check_output_folder
 from ..errors import InputError
-from ..facerig import FaceRig, load_face_rig
+from ..facerig import Rig, load_face_rig
 from ..formats.audio import write_wav
 from ..formats.labels import Segment, write_textgrid
 from ..formats.mesh import write_binding, write_obj
@@ -44,7 +44,8 @@ from ..formats.mocap import MarkerTake, write_c3d
 from ..phonemes import PAU
 from ..progress import progress
 from .articulation import CHANNEL_NAMES, ContactSolver, TokenVariation, apply_contact, articulate
-from .expression import (
+from .markers import build_marker_set
+from .nonspeech import (
     EMOTIONS,
     EmotionTrack,
     blink_times,
@@ -52,10 +53,9 @@ from .expression import (
     brow_weights,
     couple_cheeks_and_nose,
     emotion_track,
-    expression_weights,
+    emotion_weights,
     gaze_weights,
 )
-from .markers import build_marker_set
 from .speech import STYLES, ReadSentence, design_sentences, head_motion, pitch, synthesize_audio, time_utterance
 from .truth import write_truth
 
@@ -107,7 +107,7 @@ class Performance:
     f0: np.ndarray
 
 
-def perform(words: list[str], emotion: str, rng: np.random.Generator, rig: FaceRig, solver: ContactSolver,
+def perform(words: list[str], emotion: str, rng: np.random.Generator, rig: Rig, solver: ContactSolver,
             pause_prob: float, fps: float = 120.0, change_probability: float = EMOTION_CHANGE_PROBABILITY) -> Performance:
     """The actress reads ``words`` in ``emotion`` (sometimes changing to another at a word boundary)."""
     second, switch_word = None, None
@@ -133,7 +133,7 @@ def perform(words: list[str], emotion: str, rng: np.random.Generator, rig: FaceR
     take_sides = np.exp(rng.normal(0.0, TokenVariation().take_side_sigma, (len(CHANNEL_NAMES), 2)))
     weights, drive = articulate(utt.phones, utt.starts, utt.ends, utt.stress, n_frames, fps, amplitude, stiffness,
                                 take_sides, rng, rig)
-    weights += expression_weights(rig, track, fps, rng)
+    weights += emotion_weights(rig, track, fps, rng)
     pauses = [(float(a), float(b)) for a, b, p in zip(utt.starts, utt.ends, utt.phones) if p == PAU]
     blink_scale = float(np.mean(track.blend @ np.array([s.blink_duration for s in style_rows])))
     weights += blink_weights(rig, blink_times(utt.duration, pauses, rng), n_frames, fps, rng, blink_scale)

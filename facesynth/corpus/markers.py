@@ -22,7 +22,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..facerig import FaceRig
+from ..facerig import Rig
 
 #: The lower-lip marker used for trajectory plots, like the paper's marker #79.
 LOWER_LIP_MARKER = "LLO_C"
@@ -62,7 +62,7 @@ class MarkerSet:
         return dict(zip(self.names, self.vertices.tolist()))
 
 
-def _front_vertex(rig: FaceRig, x: float, y: float, radius: float = 2.5) -> int:
+def _front_vertex(rig: Rig, x: float, y: float, radius: float = 2.5) -> int:
     """The front-most neutral vertex within ``radius`` mm of (x, y) in the image plane."""
     n = rig.neutral
     for r in (radius, 2 * radius, 4 * radius):
@@ -72,7 +72,7 @@ def _front_vertex(rig: FaceRig, x: float, y: float, radius: float = 2.5) -> int:
     raise ValueError(f"no rig vertex near ({x}, {y}) mm")
 
 
-def _still_vertex(rig: FaceRig, x: float, y: float, motion: np.ndarray, radius: float = 12.0) -> int:
+def _still_vertex(rig: Rig, x: float, y: float, motion: np.ndarray, radius: float = 12.0) -> int:
     """Among the vertices within ``radius`` mm of (x, y) on the front half of the head (within
     25 mm of the front-most depth there), the one the shapes move least."""
     n = rig.neutral
@@ -117,7 +117,7 @@ _RIGID_LAYOUT = (("FH_T", 0, 100), ("FH_TR", -25, 100), ("FH_TL", 25, 100), ("NO
 _RIGID_NAMES = frozenset(name for name, _, _ in _RIGID_LAYOUT)
 
 
-def build_marker_set(rig: FaceRig) -> MarkerSet:
+def build_marker_set(rig: Rig) -> MarkerSet:
     """The actress's markers on ``rig``, with their rigid flags and the inner-lip contact pairs."""
     motion = np.linalg.norm(rig.deltas, axis=2).max(axis=0)  # (V,) mm, the largest any shape moves each vertex
     names, vertices = [], []
@@ -150,7 +150,7 @@ def build_marker_set(rig: FaceRig) -> MarkerSet:
     return MarkerSet(names, vertices, rigid, lip_pairs, upper, lower)
 
 
-def lip_surfaces(rig: FaceRig) -> tuple[np.ndarray, np.ndarray]:
+def lip_surfaces(rig: Rig) -> tuple[np.ndarray, np.ndarray]:
     """Vertices of the central upper and lower lip: those within 12 mm of the midline around
     the lip line, split by whether the jaw carries them (jawOpen moves the lower lip ~35 mm)."""
     n = rig.neutral
@@ -161,7 +161,7 @@ def lip_surfaces(rig: FaceRig) -> tuple[np.ndarray, np.ndarray]:
     return upper, lower
 
 
-def mesh_lip_gap(rig: FaceRig, weights: np.ndarray, upper: np.ndarray, lower: np.ndarray) -> np.ndarray:
+def mesh_lip_gap(rig: Rig, weights: np.ndarray, upper: np.ndarray, lower: np.ndarray) -> np.ndarray:
     """The lip gap on the posed mesh: per frame, the smallest distance (mm) between the upper
     and the lower lip surface (vertex sets ``upper``, ``lower``; 0.7 mm at rest, where the
     lips touch). weights : (T, E) rig weights. Returns (T,)."""

@@ -3,7 +3,7 @@
 Phone durations follow the phone class, stress, phrase-final lengthening and the emotion's
 tempo (word by word, so a take that changes emotion changes tempo with it); pitch has
 declination, accents on some stressed vowels (which also raise the brows, see
-:mod:`facesynth.corpus.expression`) and a final fall; the head nods with the pitch. The
+:mod:`facesynth.corpus.nonspeech`) and a final fall; the head nods with the pitch. The
 articulation itself is in :mod:`facesynth.corpus.articulation`.
 """
 
@@ -25,7 +25,7 @@ class EmotionStyle:
     """How one emotion shapes speech: tempo (duration multiplier), articulator stiffness and
     articulation amplitude (multipliers), F0 base and range (Hz), loudness, head-motion gain
     and a blink-duration multiplier. Its shape offsets are in
-    :data:`facesynth.corpus.expression.EMOTION_OFFSETS`.
+    :data:`facesynth.corpus.nonspeech.EMOTION_OFFSETS`.
     """
 
     tempo: float        # duration multiplier
@@ -38,7 +38,7 @@ class EmotionStyle:
     blink_duration: float
 
 
-#: One style per emotion of :data:`facesynth.corpus.expression.EMOTIONS`.
+#: One style per emotion of :data:`facesynth.corpus.nonspeech.EMOTIONS`.
 STYLES = {
     "neutral": EmotionStyle(1.00, 1.00, 1.00, 195.0, 25.0, 1.0, 1.0, 1.0),
     "happy": EmotionStyle(0.93, 1.05, 1.08, 235.0, 45.0, 1.1, 1.2, 0.9),

@@ -14,7 +14,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..facerig import FaceRig
+from ..facerig import Rig
 
 #: The mouth shapes whose correlations are compared (ARKit names).
 MOUTH_SHAPES = ("jawOpen", "mouthClose", "mouthFunnel", "mouthPucker", "mouthSmileLeft", "mouthSmileRight",
@@ -27,7 +27,7 @@ LLF_FPS = 60.0
 
 
 def arkit_label(name: str) -> str:
-    """ARKit name as in :attr:`FaceRig.arkit_names` ('eyeBlinkLeft')."""
+    """ARKit name as in :attr:`Rig.arkit_names` ('eyeBlinkLeft')."""
     return name[0].lower() + name[1:]
 
 
@@ -72,7 +72,7 @@ def blink_events(blink: np.ndarray, fps: float, threshold: float = 0.5) -> list[
     return [(int(a + np.argmax(blink[a:b])), (b - a) / fps) for a, b in zip(starts, ends)]
 
 
-def bilabial_gaps(rig: FaceRig, weights: np.ndarray, phones, upper: np.ndarray, lower: np.ndarray, fps: float) -> list[float]:
+def bilabial_gaps(rig: Rig, weights: np.ndarray, phones, upper: np.ndarray, lower: np.ndarray, fps: float) -> list[float]:
     """The inner-lip gap on the mesh (mm) at the centre of every /p b m/ of a take.
     phones : (start s, end s, label) triples; weights : (T, E) rig weights; upper, lower : the
     lip surfaces' vertices (:func:`facesynth.corpus.markers.lip_surfaces`)."""

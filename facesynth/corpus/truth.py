@@ -8,7 +8,7 @@ One row per frame at the capture rate (120 Hz), columns:
 * ``intensity``: that emotion's weight in the frame times its intensity in the take (0..1;
   0 for neutral);
 * ``rig:<shape>``: the 55 weights of the face rig (:mod:`facesynth.facerig`, ICT order);
-* ``arkit:<name>``: the same pose as the 52 ARKit blendshapes (``FaceRig.to_arkit``, Live
+* ``arkit:<name>``: the same pose as the 52 ARKit blendshapes (``Rig.to_arkit``, Live
   Link Face column order; ``tongueOut`` is 0).
 
 Weights are written with four decimals, so the mesh ``rig.evaluate(weights)`` (mm) of the
@@ -27,7 +27,7 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import InputError
-from ..facerig import FaceRig
+from ..facerig import Rig
 
 
 @dataclass
@@ -53,7 +53,7 @@ def _number(v: float) -> str:
     return "0" if text in ("", "-0") else text
 
 
-def write_truth(path: Path, rig: FaceRig, fps: float, weights: np.ndarray, emotion: list[str], intensity: np.ndarray) -> None:
+def write_truth(path: Path, rig: Rig, fps: float, weights: np.ndarray, emotion: list[str], intensity: np.ndarray) -> None:
     """Write one take's truth. weights : (T, E) rig weights; emotion : T labels; intensity : (T,)."""
     arkit = rig.to_arkit(weights)
     with open(path, "w", newline="", encoding="utf-8") as fh:

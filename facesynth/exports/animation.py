@@ -11,7 +11,7 @@ import numpy as np
 
 from ..artifacts import PRODUCERS, artifact_kind
 from ..errors import InputError
-from ..facerig import BUILTIN_RIG_NAME, FaceRig, builtin_rig_sha256, load_face_rig
+from ..facerig import BUILTIN_RIG_NAME, Rig, builtin_rig_sha256, load_face_rig
 
 #: Artifact kinds ``facesynth export`` and ``facesynth player`` read.
 EXPORTABLE = ("motion", "meshanim", "curves")
@@ -57,7 +57,7 @@ class Exportable:
     faces: np.ndarray | None = None
     vertices: np.ndarray | None = None
     weights: np.ndarray | None = None
-    rig: FaceRig | None = None
+    rig: Rig | None = None
     head_rotation: np.ndarray | None = None
     head_translation: np.ndarray | None = None
     gaze: np.ndarray | None = None

@@ -129,7 +129,7 @@ def _wav_uri(samples: np.ndarray, rate: int) -> str:
 def live_payload(url: str, audio: Path | None = None, jitter_s: float = LIVE_JITTER_S) -> dict:
     """The data of a live page: the built-in rig's neutral mesh and faces with its 52 ARKit
     blendshapes as morph targets (each the sum of the rig shapes the ARKit name drives, as
-    :meth:`FaceRig.from_arkit`), so a stream frame's ``arkit`` weights pose the face directly;
+    :meth:`Rig.from_arkit`), so a stream frame's ``arkit`` weights pose the face directly;
     the stream's WebSocket ``url``; and optionally the speech to send (16 kHz mono int16 PCM,
     ``pcm``) and play (``audio``, a WAV data URI)."""
     from ..errors import InputError

@@ -28,7 +28,7 @@ before the first unsent frame, so the work per decision does not grow with the s
 Rig curves: the markers of each batch of sent frames are solved onto the built-in rig with
 the direct facial solve (:func:`facesynth.retarget.solve.solve_curves`, the ``[solve]``
 settings), the last sent frame prepended so that consecutive batches join, and mapped to the
-52 ARKit weights (:meth:`facesynth.facerig.FaceRig.to_arkit`).
+52 ARKit weights (:meth:`facesynth.facerig.Rig.to_arkit`).
 """
 
 from __future__ import annotations
@@ -52,7 +52,7 @@ from ..search.synthesis import render_path
 @dataclass
 class Frame:
     """One output frame: ``index`` on the output grid (time = index / fps, s), the 52 ARKit
-    weights in [0, 1] (``FaceRig.arkit_names`` order), the markers ((M, 3) float32 mm, head
+    weights in [0, 1] (``Rig.arkit_names`` order), the markers ((M, 3) float32 mm, head
     frame) and ``ready_at``: the stream time (s of audio received) when the frame was decided."""
 
     index: int

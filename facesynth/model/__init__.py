@@ -11,9 +11,12 @@ motiondb      Nodes, MotionDatabase       ``motiondb`` (facesynth build-db, prun
 isomap        Cluster, PhonemeMaps        ``isomap`` (facesynth isomap)
 motion        Motion                      ``motion`` (facesynth synthesize, capture)
 meshanim      MeshAnimation               ``meshanim`` (facesynth deform)
+style         StyleModel, BilinearModel   ``expression`` (facesynth expression fit)
+kinds         SCHEMAS, PRODUCERS          every kind's schema and the commands that write it
 spec          KINDS (the specification)   every kind, as data (facesynth check, docs)
 ============  ==========================  ==========================================
 
 Stage modules (``facesynth.stages``) import these and the domain packages, never another
-stage. Nothing else opens these kinds with h5py.
+stage. Nothing else opens these kinds with h5py. This layer imports only the formats and the
+base modules below it, with one known exception (docs/architecture.md).
 """

@@ -2,7 +2,8 @@
 
 Every artifact from ``normalized`` on carries the same four datasets, written by
 :func:`write_head_frames` and read by :func:`read_head_frames`: the normalized markers, the
-rest pose they were aligned to, and the per-frame rigid head motion that was removed.
+rest pose they were aligned to, and the per-frame rigid head motion that was removed
+(:func:`relative_to_take`: that motion relative to each take's mean pose).
 """
 
 from __future__ import annotations
@@ -81,3 +82,21 @@ class NormalizedFrames:
         with write_artifact(path, self.KIND, config=config, inputs=inputs, overwrite=overwrite) as g:
             write_tables(g, self.takes, self.phones, self.marker_names)
             write_head_frames(g, self.frames)
+
+
+def relative_to_take(rotations: np.ndarray, translations: np.ndarray, take_ranges: list[slice]) -> tuple[np.ndarray, np.ndarray]:
+    """Per frame head motion relative to its take's mean pose: ``R_rel = Rbar^T R_t``,
+    ``t_rel = Rbar^T (t_t - tbar)`` (Rbar the rotation nearest the take's mean, tbar its mean
+    translation), for (F, 3, 3) rotations and (F, 3) mm translations and the frame ranges of
+    the takes; returns (F, 3, 3) and (F, 3) mm."""
+    rel_r = rotations.astype(np.float64).copy()
+    rel_t = translations.astype(np.float64).copy()
+    for sl in take_ranges:
+        r = rotations[sl].astype(np.float64)
+        if len(r) == 0:
+            continue
+        u, _, vt = np.linalg.svd(r.mean(axis=0))
+        mean_r = u @ np.diag([1.0, 1.0, np.linalg.det(u @ vt)]) @ vt
+        rel_r[sl] = mean_r.T @ r
+        rel_t[sl] = (translations[sl] - translations[sl].mean(axis=0)) @ mean_r
+    return rel_r, rel_t

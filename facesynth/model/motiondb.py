@@ -20,7 +20,7 @@ import numpy as np
 from ..artifacts import attr, open_artifact, read, read_strings, stamp, write_artifact, write_strings
 from ..errors import InputError
 from ..phonemes import to_festival
-from .frames import HeadFrames, write_head_frames
+from .frames import HeadFrames, relative_to_take, write_head_frames
 from .pca import PcaModel
 from .tables import Phones, Takes, read_tables, write_tables
 
@@ -165,8 +165,6 @@ class MotionDatabase:
     @cached_property
     def head_relative_to_take(self) -> tuple[np.ndarray, np.ndarray]:
         """Per frame, the head pose relative to its take's mean: (F, 3, 3) rotations and (F, 3) mm."""
-        from ..motion.head import relative_to_take
-
         return relative_to_take(self.frames.head_rotation, self.frames.head_translation,
                                 [self.takes.frames(i) for i in range(len(self.takes))])
 
@@ -178,8 +176,6 @@ class MotionDatabase:
         by_start = np.argsort(starts, kind="stable")
         take = by_start[np.searchsorted(starts[by_start], frames, side="right") - 1]
         rot, trans = np.empty((len(frames), 3, 3)), np.empty((len(frames), 3))
-        from ..motion.head import relative_to_take
-
         for t in np.unique(take):
             sl = self.takes.frames(int(t))
             r, tr = relative_to_take(self.frames.head_rotation[sl], self.frames.head_translation[sl],

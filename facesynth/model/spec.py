@@ -24,7 +24,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..artifacts import ENCODING_VERSION, PRODUCERS, SCHEMAS
+from .kinds import ENCODING_VERSION, PRODUCERS, SCHEMAS
 
 #: What each shape symbol counts.
 SYMBOLS: dict[str, str] = {

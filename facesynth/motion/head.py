@@ -3,7 +3,8 @@
 normalize keeps each captured frame's head transform (``captured = R_t @ normalized + t_t``).
 Takes were captured at different places in the capture volume, so a frame's head motion is
 taken relative to its take's mean pose: ``R_rel = Rbar^T R_t``, ``t_rel = Rbar^T (t_t - tbar)``
-(Rbar the rotation nearest the take's mean, tbar its mean translation). A synthesized frame
+(Rbar the rotation nearest the take's mean, tbar its mean translation;
+:func:`facesynth.model.frames.relative_to_take`, a property of the stored head frames). A synthesized frame
 gets the relative head motion of its source frame; pauses are interpolated (rotations by
 slerp) and the result is smoothed lightly so joins between takes do not jerk the head.
 
@@ -16,21 +17,6 @@ whole search on the paper preset; ``tests/motion/test_head.py`` checks both agai
 from __future__ import annotations
 
 import numpy as np
-
-
-def relative_to_take(rotations: np.ndarray, translations: np.ndarray, take_ranges: list[slice]) -> tuple[np.ndarray, np.ndarray]:
-    """Per frame head motion relative to its take's mean pose. (F, 3, 3), (F, 3)."""
-    rel_r = rotations.astype(np.float64).copy()
-    rel_t = translations.astype(np.float64).copy()
-    for sl in take_ranges:
-        r = rotations[sl].astype(np.float64)
-        if len(r) == 0:
-            continue
-        u, _, vt = np.linalg.svd(r.mean(axis=0))
-        mean_r = u @ np.diag([1.0, 1.0, np.linalg.det(u @ vt)]) @ vt
-        rel_r[sl] = mean_r.T @ r
-        rel_t[sl] = (translations[sl] - translations[sl].mean(axis=0)) @ mean_r
-    return rel_r, rel_t
 
 
 def quat_from_matrix(m: np.ndarray) -> np.ndarray:

@@ -12,9 +12,9 @@ from ..artifacts import check_output
 from ..config import NormalizeSettings
 from ..evaluation import normalized_take
 from ..model.corpus import Corpus
+from ..model.frames import relative_to_take
 from ..model.motion import Motion
 from ..model.motiondb import MotionDatabase
-from ..motion.head import relative_to_take
 from ..motion.postprocess import downsample
 
 

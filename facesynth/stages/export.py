@@ -99,7 +99,7 @@ def run(artifact: Path, fmt: str, output: Path, settings: ExportSettings, *, fps
         with atomic_path(output, overwrite) as tmp:
             livelink.write(tmp, anim.rig.arkit_names, anim.rig.to_arkit(anim.weights), anim.fps, head, eyes)
     elif fmt in ("gltf", "glb"):
-        from ..exports import gltf
+        from ..formats import gltf
 
         wav = audio_path(output) if audio is not None else None
         doc, data = gltf.build(anim.rest, anim.faces, anim.rig.deltas, anim.rig.shape_names, anim.times, anim.weights,

@@ -1,5 +1,5 @@
 """``facesynth expression fit|analyze|restyle``: the bilinear style/content model of Chuang &
-Bregler (2005) §3 on marker motion (the math is :mod:`facesynth.expression.bilinear`).
+Bregler (2005) §3 on marker motion (the math is :mod:`facesynth.style.bilinear`).
 
 fit: the takes of each sentence in every emotion are time-warped phone by phone onto one
 timeline (the neutral take's when there is one; pauses placed differently are warped over), so
@@ -16,11 +16,11 @@ import numpy as np
 from ..artifacts import check_output
 from ..config import ExpressionSettings, IngestSettings, settings_json
 from ..errors import InputError
-from ..expression import bilinear
-from ..model.expression import ExpressionModel
 from ..model.frames import NormalizedFrames
 from ..model.motion import Motion
+from ..model.style import StyleModel
 from ..phonemes import PAU
+from ..style import bilinear
 
 log = logging.getLogger(__name__)
 
@@ -97,7 +97,7 @@ def fit(norm_path: Path, out: Path, settings: ExpressionSettings, overwrite: boo
     norm = NormalizedFrames.read(norm_path)
     X, emotions, used, notes = aligned_data(norm, settings.splits, settings.frame_step)
     model = fit_model(X, emotions, settings)
-    ExpressionModel.write(out, model, norm.marker_names, config=settings_json(settings),
+    StyleModel.write(out, model, norm.marker_names, config=settings_json(settings),
                           inputs=[norm_path], aligned_frames=X.shape[1], sentences=used,
                           overwrite=overwrite)
     return {"emotions": emotions, "sentences": len(used), "frames": X.shape[1], "errors": model.errors.tolist(),
@@ -119,7 +119,7 @@ def nearest_emotion(model: bilinear.BilinearModel, styles: np.ndarray) -> list[s
 def analyze(model_path: Path, motion_path: Path, settings: ExpressionSettings) -> list[str]:
     """``expression analyze``: CSV lines, one per output frame: time (s), the nearest fitted
     emotion, the style vector (e0..) and the content vector (c0..); NaN frames are skipped."""
-    model, names = ExpressionModel.read(model_path)
+    model, names = StyleModel.read(model_path)
     motion = Motion.read(motion_path)
     _check_markers(motion.marker_names, names, motion_path, model_path)
     m = motion.markers
@@ -174,7 +174,7 @@ def restyle(model_path: Path, motion_path: Path, out: Path, settings: Expression
     """``expression restyle``: the motion in another expression (Eq. 7), at the output and
     the capture rate, head motion kept; writes a ``motion`` artifact (``source = restyle``)."""
     check_output(out, overwrite)
-    model, names = ExpressionModel.read(model_path)
+    model, names = StyleModel.read(model_path)
     check_request(model, model_path, to, intensity)
     motion = Motion.read(motion_path)
     _check_markers(motion.marker_names, names, motion_path, model_path)

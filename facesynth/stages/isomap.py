@@ -1,15 +1,9 @@
 """``facesynth isomap``: expressive phoneme-Isomaps (paper IV, Eq. 3, Figs. 5-7).
 
-For each phoneme cluster (every frame of every node of one phone) a 2D Isomap with
-``n_neighbors`` neighbours, the 2D PCA map of the same frames beside it (Fig. 5), and a
-Delaunay triangulation of each map, so a picked 2D point gives a new frame by barycentric
-interpolation of three captured frames (Fig. 7).
-
-Large clusters: Isomap's geodesic distances and eigendecomposition grow as n^2 to n^3, so
-at most ``max_exact_frames`` evenly spaced frames are embedded exactly and the others are
-placed by Isomap's out-of-sample extension (the landmark approach). A cluster too small for
-``n_neighbors`` uses one neighbour fewer than it has frames; below four frames its Isomap
-map falls back to the PCA map. Both are reported.
+The embeddings (for each phoneme cluster a 2D Isomap, the PCA map beside it and their Delaunay
+triangulations; landmark Isomap for large clusters) and the barycentric pick of Fig. 7 are
+:mod:`facesynth.embedding`; this stage reads the database, writes the ``isomap`` artifact and
+the images.
 
 Images (``--images DIR``): per phoneme a PNG of the Isomap and one of the PCA map,
 rendered with Eq. 3 — each frame adds a Gaussian of peak ``rho`` in its emotion's colour
@@ -25,103 +19,22 @@ from __future__ import annotations
 import contextlib
 import html
 import time
-import warnings
 from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
 from scipy.ndimage import gaussian_filter
-from scipy.spatial import Delaunay
 
 from ..artifacts import atomic_folder, check_output, check_output_folder, published_together
 from ..config import IsomapSettings, settings_json
+from ..embedding import barycentric_pick, build_clusters, memory_estimate
 from ..errors import InputError
 from ..limits import require_memory
 from ..model.isomap import Cluster, PhonemeMaps
-from ..model.motiondb import MotionDatabase, Nodes
+from ..model.motiondb import MotionDatabase
 from ..progress import progress
 
 EMOTION_COLOURS = {"neutral": (0, 0, 0), "angry": (220, 30, 30), "sad": (20, 160, 40), "happy": (30, 70, 230)}
-
-
-def cluster_frames(nodes: Nodes, phone: str) -> tuple[np.ndarray, np.ndarray, np.ndarray, list[str]]:
-    """All frames of the nodes of ``phone``, with node, relative time in the node and emotion."""
-    frames, node, rel, emo = [], [], [], []
-    for k in np.nonzero(np.array(nodes.phone) == phone)[0]:
-        c = int(nodes.frame_count[k])
-        frames.append(np.arange(nodes.frame_start[k], nodes.frame_start[k] + c))
-        node.append(np.full(c, k))
-        rel.append(np.linspace(0.0, 1.0, c))
-        emo += [nodes.emotion[k]] * c
-    return np.concatenate(frames), np.concatenate(node), np.concatenate(rel), emo
-
-
-def pca_map(x: np.ndarray) -> np.ndarray:
-    """Projection on the cluster's two largest principal axes (Fig. 5, left)."""
-    centred = x - x.mean(0)
-    _, _, vt = np.linalg.svd(centred, full_matrices=False)
-    out = centred @ vt[:2].T
-    if out.shape[1] < 2:
-        out = np.pad(out, ((0, 0), (0, 2 - out.shape[1])))
-    return out * np.sign(out[np.abs(out).argmax(0), [0, 1]] + 1e-30)
-
-
-def embed(x: np.ndarray, n_neighbors: int, max_exact: int) -> tuple[np.ndarray, int, int, str]:
-    """2D Isomap of x (n, K). Returns (embedding, neighbours used, frames embedded exactly, note)."""
-    from sklearn.manifold import Isomap
-
-    n = len(x)
-    if n < 4:
-        return pca_map(x), 0, 0, f"only {n} frames: shown as the PCA map"
-    k = min(n_neighbors, n - 2)
-    note = "" if k == n_neighbors else f"{n} frames: {k} neighbours instead of {n_neighbors}"
-    exact = np.arange(n) if (max_exact <= 0 or n <= max_exact) else np.linspace(0, n - 1, max_exact).round().astype(int)
-    model = Isomap(n_neighbors=k, n_components=2, eigen_solver="dense" if len(exact) < 600 else "arpack")
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")  # disconnected neighbour graphs are completed by sklearn
-        fitted = model.fit_transform(x[exact])
-        out = np.empty((n, 2))
-        out[exact] = fitted
-        rest = np.setdiff1d(np.arange(n), exact)
-        if len(rest):
-            out[rest] = model.transform(x[rest])
-    out *= np.sign(out[np.abs(out).argmax(0), [0, 1]] + 1e-30)  # fixed signs: deterministic output
-    return out, k, len(exact), note
-
-
-def build_clusters(coeffs: np.ndarray, nodes: Nodes, settings: IsomapSettings, phones: list[str] | None = None) -> list[Cluster]:
-    """Embed every phoneme cluster (or those of ``phones``) of the database frames ``coeffs`` (F, K)."""
-    out = []
-    for phone in progress(phones or sorted(set(nodes.phone)), "isomap"):
-        frames, node, rel, emo = cluster_frames(nodes, phone)
-        x = coeffs[frames].astype(np.float64)
-        iso, k, exact, note = embed(x, settings.n_neighbors, settings.max_exact_frames)
-        flat = pca_map(x)
-        out.append(Cluster(phone, frames, node, rel, emo, iso, flat, k, exact, note, coeffs[frames],
-                           {"isomap": _triangulate(iso), "pca_map": _triangulate(flat)}))
-    return out
-
-
-def triangulate(points: np.ndarray) -> Delaunay | None:
-    """The Delaunay triangulation of a 2D map (deterministic for the same points), or None if degenerate."""
-    unique = np.unique(points.round(9), axis=0)
-    if len(unique) < 3 or np.linalg.matrix_rank(unique - unique[0]) < 2:
-        return None
-    return Delaunay(points, qhull_options="QJ")
-
-
-def barycentric_pick(points: np.ndarray, xy: tuple[float, float]) -> tuple[np.ndarray, np.ndarray] | None:
-    """The triangle (three frame rows) holding xy and its barycentric weights, or None outside."""
-    tri = triangulate(points)
-    if tri is None:
-        return None
-    s = int(tri.find_simplex(np.array([xy], float))[0])
-    if s < 0:
-        return None
-    t = tri.transform[s]
-    b = t[:2] @ (np.asarray(xy, float) - t[2])
-    return tri.simplices[s], np.array([b[0], b[1], 1.0 - b.sum()])
-
 
 PLOT_MARGINS = (0.14, 0.04, 0.04, 0.10)  # left, top, right, bottom: fractions of the image left for the axes
 AXIS_COLOUR = (40, 40, 40)
@@ -345,26 +258,12 @@ def write_index(folder: Path, clusters: list[Cluster], trajectories: dict[str, l
     (folder / "index.html").write_text("\n".join(parts), encoding="utf-8")
 
 
-def memory_estimate(nodes: Nodes, settings: IsomapSettings) -> float:
-    """Bytes the largest cluster's Isomap needs: its exactly embedded frames' geodesic distances
-    (n x n float64), the neighbour graph's shortest paths and the double-centred copy, about
-    three n x n float64 arrays."""
-    counts: dict[str, int] = {}
-    for phone, c in zip(nodes.phone, nodes.frame_count):
-        counts[phone] = counts.get(phone, 0) + int(c)
-    largest = max(counts.values(), default=0)
-    exact = largest if settings.max_exact_frames <= 0 else min(largest, settings.max_exact_frames)
-    return 3.0 * 8 * exact * exact
-
-
 def run(db_path: Path, out: Path, settings: IsomapSettings, images: Path | None = None, overwrite: bool = False) -> dict:
     """Embed every phoneme cluster of ``db_path``, write ``out`` (an ``isomap`` artifact) and,
     with ``images``, the PNGs and ``index.html`` there; returns a summary."""
     check_output(out, overwrite)
     if images is not None:
         check_output_folder(images, "the images", overwrite)
-    if settings.n_neighbors < 2:
-        raise InputError("isomap.n_neighbors must be at least 2.")
     db = MotionDatabase.read(db_path)
     require_memory(memory_estimate(db.nodes, settings), "embedding the largest phoneme cluster", str(db_path))
     t0 = time.perf_counter()
@@ -381,11 +280,6 @@ def run(db_path: Path, out: Path, settings: IsomapSettings, images: Path | None 
     small = {c.phone: c.note for c in clusters if c.note}
     return {"clusters": len(clusters), "frames": int(sum(len(c.frames) for c in clusters)), "embed_s": embed_s,
             "largest": max(len(c.frames) for c in clusters), "notes": small}
-
-
-def _triangulate(points: np.ndarray) -> np.ndarray:
-    tri = triangulate(points)
-    return np.zeros((0, 3), np.int32) if tri is None else tri.simplices.astype(np.int32)
 
 
 def pick(isomap_path: Path, phone: str, x: float, y: float, use_pca_map: bool = False) -> tuple[np.ndarray, list[str], dict]:
@@ -406,8 +300,6 @@ def pick(isomap_path: Path, phone: str, x: float, y: float, use_pca_map: bool = 
     frame = (weights[:, None] * cluster.coefficients[corners].astype(np.float64)).sum(0)
     info = {"corners": corners.tolist(), "weights": weights.round(6).tolist(), "nodes": cluster.node[corners].tolist()}
     return maps.model.reconstruct(frame[None])[0], maps.marker_names, info
-
-
 
 
 def markers_csv(markers: np.ndarray, names: list[str]) -> list[str]:

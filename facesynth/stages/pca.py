@@ -36,8 +36,6 @@ def fit_pca(frames: np.ndarray, *, n_components: int, variance_target: float = 0
 
 def run(normalized: Path, out: Path, settings: PcaSettings, overwrite: bool = False) -> dict:
     """Fit the PCA to ``normalized`` and write ``out`` (a ``pca`` artifact); returns a summary."""
-    if settings.n_components < 1 and settings.variance_target <= 0:
-        raise InputError("pca.n_components must be at least 1 (or set pca.variance_target).")
     frames = NormalizedFrames.read(normalized)
     markers, takes = frames.frames.markers, frames.takes
     train = np.zeros(len(markers), bool)

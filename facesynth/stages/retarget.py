@@ -19,17 +19,18 @@ from scipy import sparse
 from ..artifacts import check_output, published_together
 from ..config import KeyshapesSettings, RetargetSettings, settings_json
 from ..errors import InputError
+from ..facerig import Rig
 from ..model.curves import RigCurves
 from ..model.keyshapes import KeyShapes
 from ..model.meshanim import MeshAnimation
 from ..model.motion import Motion
 from ..retarget.gradients import GradientBlender
 from ..retarget.retarget import decompose
-from ..retarget.rig import TargetRig, load_rig, marker_map, read_keymorphs
+from ..retarget.rig import load_rig, marker_map, read_keymorphs
 from ..retarget.solve import fit_rig_weights
 
 
-def keymorphs(keyshapes: KeyShapes, rig: TargetRig, keymorph_path: Path | None, ridge: float,
+def keymorphs(keyshapes: KeyShapes, rig: Rig, keymorph_path: Path | None, ridge: float,
               where: str) -> tuple[np.ndarray, np.ndarray]:
     """(K, E) rig weights and (K, V, 3) meshes of every emotion's keymorphs, emotions in order."""
     names = [n for e in keyshapes.emotions.values() for n in e.names]
@@ -69,7 +70,7 @@ def retarget(motion: Motion, keyshapes: KeyShapes, settings: RetargetSettings, e
     return decompose(frames, sets, settings.emotion_scale_mm, window, fixed)
 
 
-def rig_animation(vertices: np.ndarray, fps: float, rig: TargetRig, marker_names: list[str], reference: np.ndarray,
+def rig_animation(vertices: np.ndarray, fps: float, rig: Rig, marker_names: list[str], reference: np.ndarray,
                   where: str) -> MeshAnimation:
     """A ``meshanim`` of rig-made vertices (T, V, 3): its markers are the mesh at the bound marker
     vertices, its deformation weights an empty matrix (the rig, not Eq. 14, moved the mesh)."""

@@ -22,16 +22,16 @@ import numpy as np
 from ..artifacts import artifact_kind, check_output
 from ..config import SolveSettings, settings_json
 from ..errors import InputError
+from ..facerig import Rig
 from ..model.curves import RigCurves
-from ..model.frames import NormalizedFrames
+from ..model.frames import NormalizedFrames, relative_to_take
 from ..model.motion import Motion
-from ..motion.head import relative_to_take
 from ..motion.postprocess import downsample
-from ..retarget.rig import TargetRig, load_rig, marker_map
+from ..retarget.rig import load_rig, marker_map
 from ..retarget.solve import solve_curves
 
 
-def solve(motion: Motion, rig: TargetRig, settings: SolveSettings, where: str) -> tuple[np.ndarray, np.ndarray, int]:
+def solve(motion: Motion, rig: Rig, settings: SolveSettings, where: str) -> tuple[np.ndarray, np.ndarray, int]:
     """(T, E) rig weights, (T,) RMS marker residual in rig units and iterations for ``motion``."""
     mmap = marker_map(rig, motion.marker_names, motion.reference, where)
     disp = mmap.displacements(motion.markers, motion.reference)
@@ -84,7 +84,7 @@ def run(motion_path: Path, out: Path, settings: SolveSettings, rig_path: Path | 
             "marker_residual_p95_mm": float(np.nanpercentile(marker_mm, 95)), "take": motion.take}
 
 
-def per_marker_residual_mm(motion: Motion, rig: TargetRig, weights: np.ndarray) -> np.ndarray:
+def per_marker_residual_mm(motion: Motion, rig: Rig, weights: np.ndarray) -> np.ndarray:
     """(T, B) distance in the motion's millimetres between each bound marker's displacement and
     the solved rig's displacement at its vertex (NaN where the marker is unseen)."""
     mmap = marker_map(rig, motion.marker_names, motion.reference, "")

@@ -7,9 +7,9 @@ import numpy as np
 import pytest
 
 from facesynth.corpus.articulation import CHANNEL_NAMES, ContactSolver, TokenVariation, apply_contact, token_targets
-from facesynth.corpus.expression import blink_times
 from facesynth.corpus.generate import perform
 from facesynth.corpus.markers import LIP_GAP_MARKERS, LOWER_LIP_MARKER, build_marker_set, mesh_lip_gap
+from facesynth.corpus.nonspeech import blink_times
 from facesynth.corpus.speech import STYLES, head_motion, lexicon, pitch, time_utterance
 from facesynth.corpus.statistics import bilabial_gaps, blink_events
 from facesynth.corpus.truth import read_truth

@@ -214,7 +214,7 @@ def test_binding_that_is_not_utf8_or_missing(tmp_path):
 
 def test_a_vertex_out_of_the_mesh_is_refused_when_bound(tmp_path, config):
     """read_binding cannot know the mesh; deform's bind checks the range against it."""
-    from facesynth.stages.deform import bind
+    from facesynth.retarget.deform import bind
 
     v, f = read_mesh(_write(tmp_path, "m.obj", VERTICES + "f 1 2 3 4\nf 2 5 3\n"))
     for bad, shown in ((-1, -1), (6, 6)):

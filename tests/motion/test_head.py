@@ -2,7 +2,8 @@ import numpy as np
 import pytest
 from scipy.spatial.transform import Rotation
 
-from facesynth.motion.head import apply, follow_sources, relative_to_take
+from facesynth.model.frames import relative_to_take
+from facesynth.motion.head import apply, follow_sources
 
 
 def test_relative_to_take_removes_each_takes_placement():

@@ -14,8 +14,9 @@ from meshes import grid
 
 from facesynth.cli import main
 from facesynth.errors import InputError
+from facesynth.facerig import Rig
 from facesynth.formats.mesh import write_obj
-from facesynth.retarget.rig import TargetRig, builtin_rig, read_keymorphs, read_rig
+from facesynth.retarget.rig import builtin_rig, read_keymorphs, read_rig
 
 
 def _rig_folder(folder: Path) -> tuple[np.ndarray, np.ndarray]:
@@ -77,7 +78,7 @@ def test_a_gltf_with_morph_targets_is_a_rig(tmp_path):
     np.testing.assert_allclose(rig.deltas[0], delta)
 
 
-def _toy_rig(tmp_path) -> TargetRig:
+def _toy_rig(tmp_path) -> Rig:
     _rig_folder(tmp_path / "rig")
     return read_rig(tmp_path / "rig", _binding(tmp_path / "b.csv"))
 

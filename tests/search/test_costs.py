@@ -63,7 +63,8 @@ def test_matrices_of_the_real_database_match_the_schema_1_reference(tiny_db, tin
     panel layout bit-identical to the matrix."""
     from facesynth.model.motiondb import MotionDatabase
     from facesynth.model.pca import PcaFrames
-    from facesynth.stages.build_db import boundary_states, build_nodes, dsc_matrix, pair_gaps_numpy
+    from facesynth.search.nodes import build_nodes, dsc_matrix, pair_gaps_numpy
+    from facesynth.search.pairs import boundary_states
 
     db = MotionDatabase.read(tiny_db)
     s = config.settings("synthesize")

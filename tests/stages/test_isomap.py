@@ -3,6 +3,7 @@ import numpy as np
 import pytest
 from click.testing import CliRunner
 
+from facesynth import embedding
 from facesynth.cli import main
 from facesynth.config import Config
 from facesynth.errors import InputError
@@ -35,9 +36,9 @@ def test_every_phoneme_cluster_is_embedded_with_images(iso, tiny_db):
 
 def test_small_clusters_fall_back_and_say_so():
     rng = np.random.default_rng(0)
-    emb, k, exact, note = isomap.embed(rng.normal(size=(8, 5)), 12, 2500)
+    emb, k, exact, note = embedding.embed(rng.normal(size=(8, 5)), 12, 2500)
     assert k == 6 and "6 neighbours instead of 12" in note
-    emb, k, exact, note = isomap.embed(rng.normal(size=(3, 5)), 12, 2500)
+    emb, k, exact, note = embedding.embed(rng.normal(size=(3, 5)), 12, 2500)
     assert k == 0 and "PCA map" in note and emb.shape == (3, 2)
 
 
@@ -45,7 +46,7 @@ def test_landmark_isomap_places_every_frame():
     rng = np.random.default_rng(1)
     t = rng.uniform(0, 3 * np.pi, 900)
     x = np.stack([t * np.cos(t), rng.uniform(0, 10, 900), t * np.sin(t)], 1)  # a swiss roll
-    emb, k, exact, _ = isomap.embed(x, 12, 300)
+    emb, k, exact, _ = embedding.embed(x, 12, 300)
     assert exact == 300 and np.isfinite(emb).all()
     # Isomap unrolls the roll: one axis follows the roll's arc length (|corr| with t near 1)
     assert max(abs(np.corrcoef(emb[:, 0], t)[0, 1]), abs(np.corrcoef(emb[:, 1], t)[0, 1])) > 0.9

@@ -4,10 +4,11 @@ import pytest
 from click.testing import CliRunner
 
 from facesynth.cli import main
+from facesynth.contamination import excursions
 from facesynth.errors import InputError
 from facesynth.model.motiondb import Nodes
 from facesynth.stages import prune
-from facesynth.stages.prune import excursions, parse_ids
+from facesynth.stages.prune import parse_ids
 
 
 def test_excursion_of_a_spike_and_a_swap():
@@ -63,8 +64,8 @@ def test_removing_nodes_keeps_links_and_costs_consistent(tiny_db, tmp_path, conf
 
 def test_auto_finds_the_injected_contamination(small_db_and_truth, config):
     from facesynth.artifacts import open_artifact, read
+    from facesynth.contamination import contaminated_nodes, detect
     from facesynth.model.tables import Takes
-    from facesynth.stages.prune import contaminated_nodes, detect
 
     db, truth_csv = small_db_and_truth
     with open_artifact(db, "motiondb") as f:

@@ -10,7 +10,7 @@ from facesynth.config import Config
 from facesynth.errors import InputError, UsageError
 from facesynth.facerig import load_face_rig
 from facesynth.model.meshanim import MeshAnimation
-from facesynth.rendering import parts
+from facesynth.rendering import parts, video
 from facesynth.rendering.camera import Camera
 from facesynth.rendering.raster import NumpyRasterizer, OpenCLRasterizer
 from facesynth.stages import deform, render, synthesize
@@ -29,7 +29,7 @@ def anim(tiny_db, tiny_corpus, held_out_take, tmp_path_factory):
 def _scene_frame(clip_rest, faces, vertices, width, height, samples=2, yaw=25.0, pitch=6.0, gaze=None):
     """Projected points, camera normals and the scene for one frame, as ShadedView does it."""
     scene = parts.build_scene(clip_rest, faces)
-    cam = Camera.fit(clip_rest, width, height, 30.0, yaw, pitch, render.face_focus(scene)).scaled(samples)
+    cam = Camera.fit(clip_rest, width, height, 30.0, yaw, pitch, video.face_focus(scene)).scaled(samples)
     points = scene.positions(vertices, gaze)
     normals = parts.vertex_normals(points, scene.faces, scene.incidence)
     return scene, cam, cam.project(points), cam.directions(normals)
@@ -113,7 +113,7 @@ def test_open_mouth_shows_a_dark_cavity_teeth_and_no_see_through():
     teeth = (mouth.min(1) > 150) & (np.ptp(mouth, axis=1) < 60)             # light, unsaturated
     assert teeth.sum() > 10
     # nothing of the background shows through the mouth
-    background = np.round(np.asarray(render.BACKGROUND[:3]) * 255)
+    background = np.round(np.asarray(video.BACKGROUND[:3]) * 255)
     assert (np.abs(mouth - background).max(1) > 3).all()
 
 
@@ -150,13 +150,13 @@ def test_supersampled_edges_have_intermediate_values():
     raster = NumpyRasterizer(scene.faces, scene.albedo, scene.eye, 160, 120, 2)
     image = raster.render(screen, normals).astype(float)
     covered = (raster.triangle_ids() != np.iinfo(np.int32).max).reshape(120, 2, 160, 2).sum(axis=(1, 3))
-    background = np.asarray(render.BACKGROUND[:3]) * 255
+    background = np.asarray(video.BACKGROUND[:3]) * 255
     distance = np.abs(image - background).sum(2)
     means = [distance[covered == k].mean() for k in range(5)]
     assert (covered == 2).sum() > 20                                        # silhouette pixels half covered
     assert means[0] < 2 and means[1] < means[2] < means[3] < means[4]       # the more covered, the farther from the background
     one = NumpyRasterizer(scene.faces, scene.albedo, scene.eye, 160, 120, 1)
-    cam1 = Camera.fit(rig.neutral, 160, 120, 30.0, 25.0, 6.0, render.face_focus(scene))
+    cam1 = Camera.fit(rig.neutral, 160, 120, 30.0, 25.0, 6.0, video.face_focus(scene))
     points = scene.positions(rig.neutral)
     plain = one.render(cam1.project(points), cam1.directions(parts.vertex_normals(points, scene.faces, scene.incidence)))
     assert plain.shape == (120, 160, 3)
@@ -193,7 +193,7 @@ def test_a_plain_mesh_without_holes_still_renders(tmp_path):
         scene, _, screen, normals = _scene_frame(verts, faces, verts, 160, 120)
         assert scene.n_vertices == len(verts) and len(scene.notes) == 2
         image = NumpyRasterizer(scene.faces, scene.albedo, scene.eye, 160, 120, 2).render(screen, normals)
-        background = np.round(np.asarray(render.BACKGROUND[:3]) * 255)
+        background = np.round(np.asarray(video.BACKGROUND[:3]) * 255)
         assert (np.abs(image.astype(int) - background).max(2) > 20).mean() > 0.1
 
 
@@ -249,9 +249,9 @@ def test_side_by_side_halves_are_labelled(anim):
     background there, and the two labels differ from each other."""
     settings = Config.load(None, ("render.width=320", "render.height=240", "render.view=side-by-side")).settings("render")
     clip = MeshAnimation.read(anim[0])
-    frame = next(render.render_frames(clip, settings, clip))
+    frame = next(video.render_frames(clip, settings, clip))
     half = settings.width // 2
-    background = np.round(render.BACKGROUND[:3] * 255)
+    background = np.round(video.BACKGROUND[:3] * 255)
     left, right = frame[8:30, 8:80].astype(float), frame[8:30, half + 8:half + 80].astype(float)
     for region in (left, right):
         assert (np.abs(region - background).max(-1) > 100).sum() > 40  # white text on the dark box

@@ -3,7 +3,7 @@ import pytest
 
 from facesynth.model.motiondb import Nodes
 from facesynth.model.tables import Phones, Takes
-from facesynth.stages.build_db import build_nodes, dsc_features, dsc_matrix, pair_gaps_numpy
+from facesynth.search.nodes import build_nodes, dsc_features, dsc_matrix, pair_gaps_numpy
 
 
 def _tables():

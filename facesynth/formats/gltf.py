@@ -1,5 +1,9 @@
-"""glTF 2.0 (``.gltf`` with the buffer embedded, ``.glb`` binary) through pygltflib: the rig mesh
-with one morph target per rig shape and one animation whose ``weights`` channel follows the
+"""glTF 2.0 (``.gltf`` with the buffer embedded, ``.glb`` binary), read and written.
+
+Reading (:func:`read_morph_mesh`, a user's rig for ``--rig``): the first mesh's positions,
+triangles and morph targets, by a small reader of the container. Writing (:func:`build` and
+:func:`write`, ``facesynth export``), through pygltflib: the rig mesh with one morph target per
+rig shape and one animation whose ``weights`` channel follows the
 curves, for web pages (three.js, Babylon.js), Blender and game engines.
 
 Units and axes: glTF is metres, +y up, the asset's front toward +z, right-handed; facesynth's
@@ -14,9 +18,15 @@ validator ignores and a player can read.
 
 from __future__ import annotations
 
+import base64
+import hashlib
+import json
+import struct
 from pathlib import Path
 
 import numpy as np
+
+from ..errors import InputError
 
 MM_TO_M = 1e-3
 
@@ -134,11 +144,99 @@ def build(rest_mm: np.ndarray, faces: np.ndarray, deltas_mm: np.ndarray, target_
 def write(path: Path, gltf, data: bytes, binary: bool) -> None:
     """Write ``gltf`` with its buffer ``data`` to ``path``: a GLB when ``binary``, else a .gltf
     JSON file with the buffer embedded as a base64 data URI (one file to move around)."""
-    import base64
-
     if binary:
         gltf.set_binary_blob(data)
         gltf.save_binary(str(path))
     else:
         gltf.buffers[0].uri = "data:application/octet-stream;base64," + base64.b64encode(data).decode("ascii")
         Path(path).write_text(gltf.gltf_to_json(), encoding="utf-8")
+
+
+# ---------------------------------------------------------------- reading (only what a morph rig needs)
+
+_COMPONENT = {5121: np.uint8, 5123: np.uint16, 5125: np.uint32, 5126: np.float32}
+_WIDTH = {"SCALAR": 1, "VEC3": 3}
+
+
+def read_morph_mesh(path: Path) -> tuple[str, str, np.ndarray, np.ndarray, list[str], np.ndarray]:
+    """A morph rig from a ``.gltf``/``.glb`` file: (name (the file's stem), hex sha256 of the file,
+    neutral (V, 3) float64 and faces (F, 3) int64 of the first mesh's first primitive, the E
+    morph-target names, deltas (E, V, 3) float32 of its POSITION morph targets), in the file's units.
+
+    A small reader of the glTF 2.0 container (JSON chunk + binary buffers, embedded ``data:`` URIs
+    or files beside it) rather than a dependency: a morph rig needs five of its fields."""
+    raw = path.read_bytes()
+    digest = hashlib.sha256(raw).hexdigest()
+    bin_chunk = None
+    try:
+        if raw[:4] == b"glTF":
+            length = struct.unpack_from("<I", raw, 12)[0]
+            doc = json.loads(raw[20:20 + length])
+            offset = 20 + length
+            if offset + 8 <= len(raw):
+                blen = struct.unpack_from("<I", raw, offset)[0]
+                bin_chunk = raw[offset + 8: offset + 8 + blen]
+        else:
+            doc = json.loads(raw.decode("utf-8"))
+    except (ValueError, UnicodeDecodeError, struct.error) as exc:
+        raise InputError(f"{path}: not a readable glTF file ({exc}); export it again as glTF 2.0.") from None
+
+    buffers = []
+    for i, b in enumerate(doc.get("buffers", [])):
+        uri = b.get("uri")
+        if uri is None:
+            if bin_chunk is None:
+                raise InputError(f"{path}: buffer {i} has no data; export it again as glTF 2.0.")
+            buffers.append(bin_chunk)
+        elif uri.startswith("data:"):
+            buffers.append(base64.b64decode(uri.split(",", 1)[1]))
+        else:
+            source = path.parent / uri
+            if not source.exists():
+                raise InputError(f"{path}: buffer file {uri!r} is missing; keep it beside the .gltf.")
+            buffers.append(source.read_bytes())
+
+    def accessor(index: int, where: str) -> np.ndarray:
+        try:
+            a = doc["accessors"][index]
+            view = doc["bufferViews"][a["bufferView"]]
+            dtype = np.dtype(_COMPONENT[a["componentType"]])
+            width = _WIDTH[a["type"]]
+            stride = view.get("byteStride") or dtype.itemsize * width
+            start = view.get("byteOffset", 0) + a.get("byteOffset", 0)
+            data = buffers[view["buffer"]]
+            rows = np.ndarray((a["count"], width), dtype=dtype, buffer=data, offset=start, strides=(stride, dtype.itemsize))
+            return np.array(rows, dtype=np.float64 if dtype == np.float32 else np.int64)
+        except (KeyError, IndexError, TypeError, ValueError) as exc:
+            raise InputError(f"{path}: {where} cannot be read ({type(exc).__name__}: {exc}); export it again as glTF 2.0 "
+                             f"with float positions.") from None
+
+    meshes = doc.get("meshes", [])
+    if not meshes or not meshes[0].get("primitives"):
+        raise InputError(f"{path}: no mesh; export the face with its morph targets.")
+    mesh = meshes[0]
+    prim = mesh["primitives"][0]
+    if prim.get("mode", 4) != 4:
+        raise InputError(f"{path}: mesh 0 is not made of triangles (mode {prim.get('mode')}); triangulate it on export.")
+    if "POSITION" not in prim.get("attributes", {}) or "indices" not in prim:
+        raise InputError(f"{path}: mesh 0 has no positions or no triangle indices; export an indexed mesh.")
+    neutral = accessor(prim["attributes"]["POSITION"], "POSITION")
+    faces = accessor(prim["indices"], "indices").reshape(-1, 3)
+    targets = prim.get("targets", [])
+    if not targets:
+        raise InputError(f"{path}: mesh 0 has no morph targets; export the blendshapes as morph targets.")
+    names = list(mesh.get("extras", {}).get("targetNames") or [f"target{i}" for i in range(len(targets))])
+    if len(names) != len(targets):
+        raise InputError(f"{path}: {len(names)} targetNames for {len(targets)} morph targets; export them together.")
+    deltas = np.empty((len(targets), len(neutral), 3), np.float32)
+    for e, t in enumerate(targets):
+        if "POSITION" not in t:
+            raise InputError(f"{path}: morph target {names[e]!r} has no POSITION displacements; export shape positions.")
+        d = accessor(t["POSITION"], f"morph target {names[e]!r}")
+        if len(d) != len(neutral):
+            raise InputError(f"{path}: morph target {names[e]!r} has {len(d)} vertices, but the mesh has {len(neutral)}; "
+                             f"export every target from the same mesh.")
+        deltas[e] = d
+    if faces.size == 0 or faces.max() >= len(neutral):
+        raise InputError(f"{path}: triangle indices beyond the {len(neutral)} vertices; export it again.")
+    return path.stem, digest, neutral, faces, names, deltas

@@ -4,8 +4,9 @@ import pytest
 from facesynth.corpus.markers import build_marker_set
 from facesynth.errors import InputError
 from facesynth.facerig import load_face_rig
+from facesynth.motion.rigid import similarity_fit
 from facesynth.rendering.parts import classify_holes, lip_halves
-from facesynth.stages.deform import animate, bind, mesh_distances, similarity_fit
+from facesynth.retarget.deform import animate, bind, mesh_distances
 
 
 @pytest.fixture(scope="module")

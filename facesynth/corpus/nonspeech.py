@@ -26,7 +26,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..facerig import FaceRig
+from ..facerig import Rig
 from .articulation import critically_damped
 
 EMOTIONS = ("neutral", "happy", "angry", "sad")
@@ -49,7 +49,7 @@ BLINK_REFRACTORY_S = 0.5
 BLINK_DURATION_S = (0.1, 0.3)
 
 
-def _sided(rig: FaceRig, name: str) -> list[int]:
+def _sided(rig: Rig, name: str) -> list[int]:
     """Rig shape indices of ``name``: itself, or its _L and _R shapes."""
     if name in rig.shape_names:
         return [rig.shape_index(name)]
@@ -102,7 +102,7 @@ def emotion_track(first: str, second: str | None, switch_s: float | None, n_fram
     return EmotionTrack(blend, intensity, switch_s)
 
 
-def expression_weights(rig: FaceRig, track: EmotionTrack, fps: float, rng: np.random.Generator) -> np.ndarray:
+def emotion_weights(rig: Rig, track: EmotionTrack, fps: float, rng: np.random.Generator) -> np.ndarray:
     """The emotion's shape offsets per frame, breathing slowly (+-15%). Returns (T, E)."""
     n = len(track.blend)
     t = np.arange(n) / fps
@@ -134,7 +134,7 @@ def blink_times(duration: float, pauses: list[tuple[float, float]], rng: np.rand
     return out
 
 
-def blink_weights(rig: FaceRig, onsets: list[float], n_frames: int, fps: float, rng: np.random.Generator,
+def blink_weights(rig: Rig, onsets: list[float], n_frames: int, fps: float, rng: np.random.Generator,
                   duration_scale: float = 1.0) -> np.ndarray:
     """Blinks as eyelid weights (T, E): fast closing (a third), slower opening."""
     out = np.zeros((n_frames, len(rig.shape_names)))
@@ -153,7 +153,7 @@ def blink_weights(rig: FaceRig, onsets: list[float], n_frames: int, fps: float, 
     return out
 
 
-def brow_weights(rig: FaceRig, accents: list[tuple[float, float]], n_frames: int, fps: float,
+def brow_weights(rig: Rig, accents: list[tuple[float, float]], n_frames: int, fps: float,
                  rng: np.random.Generator) -> np.ndarray:
     """Brow raises on pitch accents. accents : (time s, strength 0..1). Returns (T, E)."""
     out = np.zeros((n_frames, len(rig.shape_names)))
@@ -174,7 +174,7 @@ def brow_weights(rig: FaceRig, accents: list[tuple[float, float]], n_frames: int
     return out
 
 
-def gaze_weights(rig: FaceRig, n_frames: int, fps: float, rng: np.random.Generator) -> np.ndarray:
+def gaze_weights(rig: Rig, n_frames: int, fps: float, rng: np.random.Generator) -> np.ndarray:
     """Fixations and saccades as eyeLook weights, with the lids following a downward gaze. Returns (T, E)."""
     duration = n_frames / fps
     horizontal = np.zeros(n_frames)  # + toward the subject's left
@@ -204,7 +204,7 @@ def gaze_weights(rig: FaceRig, n_frames: int, fps: float, rng: np.random.Generat
     return out
 
 
-def couple_cheeks_and_nose(rig: FaceRig, weights: np.ndarray) -> np.ndarray:
+def couple_cheeks_and_nose(rig: Rig, weights: np.ndarray) -> np.ndarray:
     """Add the cheek and nose motion that follows the mouth, in place; returns ``weights``."""
     for side in ("_L", "_R"):
         smile = weights[:, rig.shape_index("mouthSmile" + side)]

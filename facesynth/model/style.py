@@ -1,19 +1,52 @@
-"""The ``expression`` artifact: a fitted bilinear style/content model (Chuang & Bregler §3),
-written by ``facesynth expression fit``."""
+"""The ``expression`` artifact: a fitted style model (the bilinear style/content model of
+Chuang & Bregler §3, :mod:`facesynth.style`), written by ``facesynth expression fit``."""
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
 from ..artifacts import open_artifact, read, read_strings, write_artifact, write_strings
-from ..expression.bilinear import BilinearModel
 
 
-class ExpressionModel:
+@dataclass
+class BilinearModel:
+    """A fitted symmetric bilinear model over PCA coefficients of marker frames.
+
+    mean : (3M,) float64 mm, the mean marker frame (flattened x, y, z per marker).
+    basis : (K, 3M) float64, orthonormal PCA modes (Eq. 1's ``P_s``, rows).
+    emotions : S emotion names; styles : (S, I) float64 style vectors (Eq. 4's ``e_s``).
+    W : (K, I, J) float64 bilinear basis (Eq. 4's ``W_k``).
+    content_mean : (J,) float64, the mean training content vector (Eq. 5's initial guess).
+    errors : (n_iter,) float64 mean squared error per ALS iteration, mm^2 per component.
+    """
+
+    mean: np.ndarray
+    basis: np.ndarray
+    emotions: list[str]
+    styles: np.ndarray
+    W: np.ndarray
+    content_mean: np.ndarray
+    errors: np.ndarray
+
+    def coefficients(self, frames: np.ndarray) -> np.ndarray:
+        """(T, M, 3) mm frames -> (T, K) PCA coefficients (Eq. 1)."""
+        return (frames.reshape(len(frames), -1).astype(np.float64) - self.mean) @ self.basis.T
+
+    def frames(self, coeffs: np.ndarray) -> np.ndarray:
+        """(T, K) coefficients -> (T, M, 3) mm frames."""
+        return (self.mean + coeffs @ self.basis).reshape(len(coeffs), -1, 3)
+
+    def style(self, emotion: str) -> np.ndarray:
+        """(I,) the style vector of ``emotion`` (a fitted one)."""
+        return self.styles[self.emotions.index(emotion)]
+
+
+class StyleModel:
     """Reader and writer of the ``expression`` kind; the model itself is a
-    :class:`~facesynth.expression.bilinear.BilinearModel` with its marker names."""
+    :class:`BilinearModel` with its marker names (fitted and used by :mod:`facesynth.style.bilinear`)."""
 
     KIND = "expression"
 

@@ -1,1 +1,0 @@
-"""The bilinear style/content expression model (Chuang & Bregler 2005 §3)."""

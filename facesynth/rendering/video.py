@@ -1,0 +1,207 @@
+"""Mesh animations -> an AVI with the audio muxed in: the views, the audio fitted to the
+frames and the video writing that ``facesynth render`` and ``facesynth batch`` share.
+
+Views: ``shaded`` (the face, smooth-shaded and anti-aliased, with eyeballs, mouth cavity,
+teeth and tongue where the mesh has eye and mouth holes, on OpenCL with a NumPy reference),
+``markers`` (the paper's marker mode: the markers as dots) and ``side-by-side`` (the animation
+beside a second one, e.g. ground truth, each half labelled as ``render.labels`` says).
+The camera orbits the rest mesh (+y up, looking toward +z) by ``render.yaw_deg`` and
+``render.pitch_deg``, fitted once so the view is steady: on a face (eyes and mouth found) it
+frames brow to chin, otherwise the whole mesh. The eyes follow the animation's gaze track where
+it is known and look ahead elsewhere. Several animations render one after another into one
+video, each with its own audio, cut or padded to its frame count, so the first frame is at
+audio time 0 and picture and sound end together.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import time
+from pathlib import Path
+
+import numpy as np
+
+from ..artifacts import atomic_path
+from ..config import RenderSettings
+from ..errors import InputError, UsageError
+from ..formats.audio import read_audio, resample, write_wav
+from ..model.meshanim import MeshAnimation
+from ..progress import progress
+from .camera import Camera
+from .parts import FaceScene, build_scene, vertex_normals
+from .raster import BACKGROUND as BACKGROUND_RGB
+from .raster import rasterizer
+
+BACKGROUND = np.array(BACKGROUND_RGB + (1.0,), np.float32)
+
+
+def face_focus(scene: FaceScene) -> tuple[np.ndarray, float] | None:
+    """The sphere (centre (3,), radius, mesh units) the camera frames when the mesh has eyes
+    and a mouth: from above the brows to below the chin, so the face fills the frame whatever
+    else (neck, shoulders) the mesh holds. None for other meshes (the whole mesh is framed)."""
+    layout = scene.layout
+    if layout.eyes is None or layout.mouth is None:
+        return None
+    eyes = (layout.eyes[0].centre + layout.eyes[1].centre) / 2
+    mouth = layout.mouth.centre
+    span = float(eyes[1] - mouth[1])
+    centre = (eyes + mouth) / 2 + np.array([0.0, 0.05 * span, -0.5 * span])
+    return centre, 1.75 * span
+
+
+def draw_markers(points_px: np.ndarray, width: int, height: int, radius: int = 3) -> np.ndarray:
+    """The paper's marker mode: each marker as a filled disc."""
+    img = np.empty((height, width, 3), np.uint8)
+    img[:] = (BACKGROUND[:3] * 255).astype(np.uint8)
+    yy, xx = np.mgrid[-radius : radius + 1, -radius : radius + 1]
+    disc = xx**2 + yy**2 <= radius**2
+    for x, y in np.round(points_px[:, :2]).astype(int):
+        ys, xs = y + yy[disc], x + xx[disc]
+        ok = (xs >= 0) & (xs < width) & (ys >= 0) & (ys < height)
+        img[ys[ok], xs[ok]] = (240, 220, 90)
+    return img
+
+
+#: Audio may be longer or shorter than its animation by at most this many video frames;
+#: the difference (rounding of the frame count) is cut or padded with silence.
+MAX_AUDIO_MISMATCH_FRAMES = 2
+
+
+def clip_audio(audio_path: Path, n_frames: int, fps: float, rate: int, anim_path: Path | None = None) -> np.ndarray:
+    """The clip's audio at ``rate`` (samples,) float, cut or padded to exactly n_frames / fps
+    seconds. An audio file longer or shorter than that by more than
+    :data:`MAX_AUDIO_MISMATCH_FRAMES` frames is an InputError: it is another utterance's."""
+    samples, src_rate = read_audio(audio_path)
+    samples = resample(samples, src_rate, rate)
+    need = int(round(n_frames / fps * rate))
+    if abs(len(samples) - need) > MAX_AUDIO_MISMATCH_FRAMES / fps * rate:
+        anim = f" ({anim_path})" if anim_path is not None else ""
+        raise InputError(f"{audio_path}: the audio lasts {len(samples) / rate:.2f} s but the animation{anim} "
+                         f"{n_frames / fps:.2f} s (more than {MAX_AUDIO_MISMATCH_FRAMES} frames apart); "
+                         "give the audio of the utterance it was synthesized from, or trim or pad the audio to match.")
+    return np.pad(samples, (0, max(0, need - len(samples))))[:need]
+
+
+def label_mask(text: str, scale: int = 2) -> np.ndarray:
+    """A (h, w) float mask in [0, 1] of ``text`` in Pillow's default bitmap font, enlarged
+    ``scale`` times (nearest neighbour, so the same on every machine)."""
+    from PIL import Image, ImageDraw, ImageFont
+
+    font = ImageFont.load_default_imagefont() if hasattr(ImageFont, "load_default_imagefont") else ImageFont.load_default()
+    left, top, right, bottom = ImageDraw.Draw(Image.new("L", (1, 1))).textbbox((0, 0), text, font=font)
+    image = Image.new("L", (int(right - left) + 4, int(bottom - top) + 4), 0)
+    ImageDraw.Draw(image).text((2 - left, 2 - top), text, fill=255, font=font)
+    mask = np.asarray(image, np.float32) / 255.0
+    return np.kron(mask, np.ones((scale, scale), np.float32))
+
+
+def burn_label(frame: np.ndarray, mask: np.ndarray, x: int = 8, y: int = 8) -> np.ndarray:
+    """Draw a label mask (from :func:`label_mask`) in white on a dark box at (x, y) of an RGB
+    frame (H, W, 3) uint8; returns the frame (modified in place)."""
+    h = min(mask.shape[0] + 4, frame.shape[0] - y)
+    w = min(mask.shape[1] + 4, frame.shape[1] - x)
+    if h <= 4 or w <= 4:
+        return frame
+    box = frame[y:y + h, x:x + w].astype(np.float32) * 0.35
+    m = mask[:h - 4, :w - 4, None]
+    box[2:h - 2, 2:w - 2] = box[2:h - 2, 2:w - 2] * (1 - m) + 255.0 * m
+    frame[y:y + h, x:x + w] = box.round().astype(np.uint8)
+    return frame
+
+
+class ShadedView:
+    """The shaded face of one clip: the scene (skin and procedural parts, built once from the
+    rest mesh), a camera fitted once and a rasterizer, to draw frame after frame."""
+
+    def __init__(self, clip: MeshAnimation, settings: RenderSettings, width: int):
+        self.scene = build_scene(clip.rest, clip.faces)
+        self.gaze = clip.gaze
+        s = settings.supersample
+        self.camera = Camera.fit(clip.rest, width, settings.height, settings.fov_deg, settings.yaw_deg,
+                                 settings.pitch_deg, face_focus(self.scene)).scaled(s)
+        self.raster = rasterizer(self.scene.faces, self.scene.albedo, self.scene.eye, width, settings.height, s,
+                                 settings.use_opencl)
+
+    def frame(self, vertices: np.ndarray, t: int) -> np.ndarray:
+        """RGB (H, W, 3) uint8 of the skin ``vertices`` (V, 3) at frame ``t``."""
+        gaze = self.gaze[min(t, len(self.gaze) - 1)] if self.gaze is not None else None
+        points = self.scene.positions(vertices, gaze)
+        normals = vertex_normals(points, self.scene.faces, self.scene.incidence)
+        return self.raster.render(self.camera.project(points), self.camera.directions(normals))
+
+
+def render_frames(clip: MeshAnimation, settings: RenderSettings, compare: MeshAnimation | None = None,
+                  notes: list[str] | None = None):
+    """Yield RGB frames (H, W, 3) uint8 for one clip in the configured view; parts of the face
+    that could not be built are appended to ``notes``."""
+    view = settings.view
+    width = settings.width // 2 if view == "side-by-side" else settings.width
+    if view == "markers":
+        camera = Camera.fit(clip.markers[0], width, settings.height, settings.fov_deg, settings.yaw_deg, settings.pitch_deg)
+        for t in range(len(clip.markers)):
+            yield draw_markers(camera.project(clip.markers[t].astype(np.float64)), width, settings.height)
+        return
+    shaded = ShadedView(clip, settings, width)
+    if notes is not None:
+        notes.extend(shaded.scene.notes)
+    if view == "shaded":
+        for t in range(len(clip.vertices)):
+            yield shaded.frame(clip.vertices[t], t)
+        return
+    other = ShadedView(compare, settings, width)
+    masks = [label_mask(text) for text in settings.labels]  # left: the animation rendered; right: --compare
+    for t in range(len(clip.vertices)):
+        u = min(t, len(compare.vertices) - 1)
+        left, right = shaded.frame(clip.vertices[t], t), other.frame(compare.vertices[u], u)
+        yield np.concatenate([burn_label(left, masks[0]), burn_label(right, masks[1])], axis=1)
+
+
+def render_video(anims: list[Path], audios: list[Path], out: Path, settings: RenderSettings, compare: Path | None = None,
+                 overwrite: bool = False) -> dict:
+    """Render the animations one after another, each with its audio (none: silence), into the AVI ``out``;
+    returns frames, seconds of video and frames rendered per second.
+    """
+    import imageio_ffmpeg
+
+    if audios and len(anims) != len(audios):
+        raise UsageError(f"give one --audio per animation ({len(anims)} animations, {len(audios)} audio files), "
+                         f"or none for a silent video.")
+    if settings.view == "side-by-side" and compare is None:
+        raise UsageError("the side-by-side view needs --compare ANIM (e.g. the ground truth deformed onto the same mesh).")
+    if out.suffix.lower() != ".avi":
+        raise InputError(f"{out}: the output must be an .avi file.")
+    if settings.width % 16 or settings.height % 16:
+        raise InputError(f"render size {settings.width}x{settings.height}: width and height must be multiples of 16.")
+    started = time.perf_counter()
+    clips = [MeshAnimation.read(p) for p in anims]
+    other = MeshAnimation.read(compare) if compare else None
+    for path, c in zip(anims, clips):
+        if abs(c.fps - settings.fps) > 1e-6:
+            raise InputError(f"{path}: animation is at {c.fps:g} fps but render.fps is {settings.fps:g}; set one to the other.")
+    rate = 48000
+    n_frames = sum(len(c.vertices) for c in clips)
+    if audios:
+        audio = np.concatenate([clip_audio(a, len(c.vertices), settings.fps, rate, p) for c, a, p in zip(clips, audios, anims)])
+    else:  # a capture without audio: a silent soundtrack of the video's length
+        audio = np.zeros(int(round(n_frames / settings.fps * rate)), np.float32)
+    # The temporary audio lies beside the output (NAME.tmp-PID.wav: removed on every exit, and by
+    # the next run after a kill); ffmpeg gets absolute paths, which never read as options.
+    with atomic_path(out, overwrite) as tmp_out, contextlib.ExitStack() as cleanup:
+        wav = tmp_out.with_name(tmp_out.name + ".wav")
+        cleanup.callback(lambda: wav.unlink(missing_ok=True))
+        write_wav(wav, audio, rate)
+        writer = imageio_ffmpeg.write_frames(
+            str(tmp_out.resolve()), (settings.width, settings.height), fps=settings.fps, codec="mjpeg", quality=9,
+            ffmpeg_log_level="error",
+            pix_fmt_out="yuvj420p", audio_path=str(wav.resolve()), audio_codec="pcm_s16le", macro_block_size=16,
+            output_params=["-f", "avi", "-fflags", "+bitexact", "-flags:v", "+bitexact", "-flags:a", "+bitexact"],
+        )
+        cleanup.callback(writer.close)  # on an error ffmpeg is stopped before its audio is removed
+        writer.send(None)
+        notes: list[str] = []
+        frames = (f for c in clips for f in render_frames(c, settings, other, notes))
+        for frame in progress(frames, "render", length=n_frames):
+            writer.send(np.ascontiguousarray(frame))
+        writer.close()
+    return {"frames": n_frames, "seconds": n_frames / settings.fps,
+            "frames_per_s": n_frames / (time.perf_counter() - started), "notes": sorted(set(notes))}
