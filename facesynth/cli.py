@@ -1067,7 +1067,7 @@ def tune(ctx: Context, db: Path, validation: Path, output: Path):
 
 @main.group(cls=DefaultGroup)
 def isomap():
-    """Phoneme-Isomaps (paper IV): build them, or pick a new frame from one.
+    """Phoneme-Isomaps (paper IV): build them, pick a new frame from one, or choose constraints on them.
 
     \b
     Example:
