@@ -1152,11 +1152,13 @@ def isomap_page(ctx: Context, isomap_path: Path, db: Path, phonemes: Path, emoti
 
     s = stage.page(isomap_path, db, phonemes, output, ctx.config.settings("isomap"), ctx.config.settings("ingest"),
                    emotions, constraints, motion, ctx.overwrite)
-    if s["missing"]:
-        ctx.say(f"warning: the database has no node of {', '.join('/' + p + '/' for p in s['missing'])}; "
+    if s.missing:
+        ctx.say(f"warning: the database has no node of {', '.join('/' + p + '/' for p in s.missing)}; "
                 "those phones cannot be constrained (synthesize covers them with nodes of the same viseme).")
-    ctx.say(f"wrote the constraint page of {s['phones']} spoken phones ({s['maps']} maps, "
-            f"{s['constraints']} constraints given, {s['bytes'] / 1e6:.1f} MB) -> {output}")
+    for note in s.notes:
+        ctx.say(f"warning: {note}.")
+    ctx.say(f"wrote the constraint page of {s.phones} spoken phones ({s.maps} maps, "
+            f"{s.constraints} constraints given, {s.bytes / 1e6:.1f} MB) -> {output}")
 
 
 @main.group()

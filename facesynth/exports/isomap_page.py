@@ -71,6 +71,11 @@ def check_path(path: SearchPath | None, utt: Utterance, db: MotionDatabase, moti
                              f"have as /{path.node_phone[k]}/; give a motion synthesized from {db_path}.")
 
 
+def emotion_differences(path: SearchPath, utt: Utterance) -> list[int]:
+    """The spoken steps whose emotion in the motion's search differs from the utterance's."""
+    return [k for k, (made, asked) in enumerate(zip(path.emotion, utt.emotions)) if utt.phones[k] != PAU and made != asked]
+
+
 def mid_time(utt: Utterance, c: int) -> float:
     """Step ``c``'s mid time rounded to the millisecond (its start when rounding leaves it)."""
     mid = round(0.5 * (float(utt.starts[c]) + float(utt.ends[c])), 3)
@@ -107,7 +112,7 @@ def page_data(maps: PhonemeMaps, db: MotionDatabase, utt: Utterance, constraints
             rows.append([n, first, int(db.nodes.frame_count[n]), int(db.nodes.frame_start[n]) - int(db.takes.frame_start[take]),
                          db.nodes.emotion[n], db.takes.name[take], f"{db.nodes.prev_phone[n]}-{phone}+{db.nodes.next_phone[n]}"])
         out_maps[phone] = {"image": "data:image/png;base64," + base64.b64encode(png).decode("ascii"),
-                           "px": np.round(pixels, 2).tolist(), "nodes": rows}
+                           "px": np.round(pixels, 1).tolist(), "nodes": rows}
     initial = [[c, mid_time(utt, c), node] for c, node in sorted(constraints.items())]
     return {"steps": steps, "maps": out_maps, "constraints": initial, "command": command}
 

@@ -27,6 +27,7 @@ import html
 import time
 import warnings
 from collections.abc import Callable
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -427,12 +428,25 @@ def markers_csv(markers: np.ndarray, names: list[str]) -> list[str]:
     return ["marker,x_mm,y_mm,z_mm"] + [f"{name},{x:.4f},{y:.4f},{z:.4f}" for name, (x, y, z) in zip(names, markers)]
 
 
+@dataclass(frozen=True)
+class PageResult:
+    """What ``isomap page`` did: spoken phones of the utterance, maps on the page, spoken
+    phones without a map, constraints given, the page's size (bytes), warnings for the user."""
+
+    phones: int
+    maps: int
+    missing: list[str]
+    constraints: int
+    bytes: int
+    notes: list[str]
+
+
 def page(isomap_path: Path, db_path: Path, phones_path: Path, out: Path, settings: IsomapSettings,
          ingest_settings: IngestSettings, emotions_path: Path | None = None, constraints_path: Path | None = None,
-         motion_path: Path | None = None, overwrite: bool = False) -> dict:
+         motion_path: Path | None = None, overwrite: bool = False) -> PageResult:
     """Write the constraint page (paper VI-A, Fig. 9; :mod:`facesynth.exports.isomap_page`) of
     an utterance over the maps of ``isomap_path`` built from ``db_path``, marking the path of
-    the synthesized ``motion_path``; returns a summary (phones, spoken phones without a map)."""
+    the synthesized ``motion_path``."""
     import io
 
     from ..exports import isomap_page as export
@@ -447,12 +461,18 @@ def page(isomap_path: Path, db_path: Path, phones_path: Path, out: Path, setting
     export.check_maps(maps, db, isomap_path, db_path)
     utt, constraints = prepare(db, phones_path, emotions_path, constraints_path, ingest_settings)
     missing = export.require_some_map(utt, maps, phones_path, db_path)
-    path = None
+    path, notes = None, []
     if motion_path is not None:
         export.require_same_database(motion_path, Motion.KIND, "was synthesized", db_path,
                                      f"give a motion synthesized from {db_path}, or that motion's database")
         path = Motion.read_search(motion_path)[0]
         export.check_path(path, utt, db, motion_path, phones_path, db_path)
+        differ = export.emotion_differences(path, utt)
+        if differ:
+            k = differ[0]
+            notes.append(f"{motion_path} was synthesized with other emotions than the page's at {len(differ)} phones "
+                         f"(phone {k} /{utt.phones[k]}/: {path.emotion[k]}, not {utt.emotions[k]}); "
+                         "give the --emotions it was made with")
     pictures = {}
     for phone in dict.fromkeys(utt.phones):
         if phone in maps.clusters:
@@ -468,5 +488,5 @@ def page(isomap_path: Path, db_path: Path, phones_path: Path, out: Path, setting
     text = export.render_page(data, f"Constraints for {phones_path.name}", settings.image_size)
     with atomic_path(out, overwrite) as tmp:
         tmp.write_text(text, encoding="utf-8")
-    return {"phones": sum(p != PAU for p in utt.phones), "maps": len(pictures), "missing": missing,
-            "constraints": len(constraints), "bytes": len(text.encode("utf-8"))}
+    return PageResult(sum(p != PAU for p in utt.phones), len(pictures), missing, len(constraints),
+                      len(text.encode("utf-8")), notes)

@@ -306,3 +306,16 @@ def test_a_motion_or_isomap_of_another_database(made, tiny_db, tmp_path):
                               "--motion", made["motion"], "-o", out))
     assert "was synthesized for another utterance" in line
     assert not out.exists()
+
+
+def test_emotions_travel_to_the_page_and_a_differing_motion_is_warned_about(made, tiny_db, tmp_path):
+    spans = tmp_path / "emotions.txt"
+    spans.write_text("0 1000 happy\n")
+    out = tmp_path / "p.html"
+    r = _cli("isomap", "page", made["iso"], tiny_db, "--phonemes", made["tg"], "--emotions", spans,
+             "--motion", made["motion"], "-o", out)
+    assert r.exit_code == 0, r.output
+    assert f"warning: {made['motion']} was synthesized with other emotions than the page's" in r.output
+    data = json.loads(re.search(r'id="pagedata">(.*?)</script>', out.read_text(), re.S).group(1))
+    assert {s["emotion"] for s in data["steps"]} == {"happy"}
+    assert data["command"].endswith(f"--emotions {spans} --constraints constraints.txt -o constrained.h5")
