@@ -38,10 +38,12 @@ def require_same_database(path: Path, kind: str, what: str, db_path: Path, make:
     makes a matching one. An artifact that records no database passes (the node checks of the
     callers still apply)."""
     recorded = [r for r in recorded_inputs(path, kind) if r.get("kind") == MotionDatabase.KIND]
-    if recorded and all(r.get("sha256") != sha256_of(db_path) for r in recorded):
+    if not recorded:
+        return
+    digest = sha256_of(db_path)
+    if all(r.get("sha256") != digest for r in recorded):
         raise InputError(f"{path}: {what} from another database ({recorded[0].get('path')}, sha256 "
-                         f"{str(recorded[0].get('sha256'))[:12]}) than {db_path} (sha256 {sha256_of(db_path)[:12]}); "
-                         f"{make}.")
+                         f"{str(recorded[0].get('sha256'))[:12]}) than {db_path} (sha256 {digest[:12]}); {make}.")
 
 
 def check_maps(maps: PhonemeMaps, db: MotionDatabase, isomap_path: Path, db_path: Path) -> None:

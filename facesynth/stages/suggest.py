@@ -9,6 +9,8 @@ a frame index inside the node's take, 0 at the take's first frame), whether it i
 total cost (Eq. 4) of the whole utterance when the phone is constrained to it:
 ``phi_c(j) + psi_c(j) - obs_c(j)``, where ``phi`` is the forward DP of Algorithm 1 and
 ``psi`` the same DP run backwards (transposed TC, reversed steps). Best first.
+The time- and context-correct definitions live in :mod:`facesynth.search.constraint_choice`,
+which ``facesynth isomap page`` shares to highlight the same nodes on the phone's Isomap.
 
 Context-correct nodes exist only where the input shares a triphone with a training
 sentence; the sample corpus designs its sentences to cover new diphones, so a held-out

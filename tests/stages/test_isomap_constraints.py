@@ -59,7 +59,7 @@ def made(tiny_db, tiny_corpus, tmp_path_factory):
                  ["isomap", "page", d / "iso.h5", tiny_db, "--phonemes", tg, "--motion", d / "motion.h5", "-o", d / "page.html"]):
         r = _cli(*args)
         assert r.exit_code == 0, r.output
-    return {"dir": d, "tg": tg, "iso": d / "iso.h5", "motion": d / "motion.h5", "page": d / "page.html"}
+    return {"dir": d, "db": tiny_db, "tg": tg, "iso": d / "iso.h5", "motion": d / "motion.h5", "page": d / "page.html"}
 
 
 class Browser:
@@ -258,6 +258,9 @@ def test_page_is_self_contained(made):
     text = made["page"].read_text()
     assert not re.search(r"""(src|href)\s*=\s*["']?(https?:)?//""", text)
     assert "data:image/png;base64," in text and 'id="pagedata"' in text
+    again = made["dir"] / "again.html"  # deterministic: the same inputs give the same page
+    r = _cli("isomap", "page", made["iso"], made["db"], "--phonemes", made["tg"], "--motion", made["motion"], "-o", again)
+    assert r.exit_code == 0 and again.read_bytes() == made["page"].read_bytes()
 
 
 def _one_sentence(r) -> str:
