@@ -1135,12 +1135,12 @@ def isomap_pick(ctx: Context, isomap_path: Path, phoneme: str, x: float, y: floa
 @click.option("-o", "--output", type=PATH, required=True, help="Output page (.html).")
 @stage
 def isomap_page(ctx: Context, isomap_path: Path, db: Path, phonemes: Path, emotions, constraints, motion, output: Path):
-    """Write the constraint page of an utterance: pick a phone, click a node on its Isomap (paper VI-A, Fig. 9).
+    """Write the constraint page of an utterance: pick a phone, click a node on its Isomap (paper VI-A).
 
     The page highlights the phone's time-correct and context-correct nodes (those facesynth
     suggest lists), marks the node the motion's path chose, and a click on a node writes the
     line 'TIMEs NODE' for synthesize --constraints (copy or download it). ISOMAP must be built
-    from DB. One self-contained HTML file.
+    from DB. One self-contained HTML file; the GUI of Fig. 9 of the paper.
 
     \b
     Example:
