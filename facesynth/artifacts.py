@@ -413,6 +413,17 @@ def input_record(path: Path) -> dict:
     return {"path": str(path), "kind": kind, "sha256": sha256_of(path)}
 
 
+def recorded_inputs(path: Path, kind: str) -> list[dict]:
+    """The ``inputs`` provenance records ({path, kind, sha256}) of the ``kind`` artifact at
+    ``path``; [] when the attribute cannot be parsed."""
+    with open_artifact(path, kind) as f:
+        try:
+            records = json.loads(str(attr(f, "inputs")))
+        except ValueError:
+            return []
+    return [r for r in records if isinstance(r, dict)] if isinstance(records, list) else []
+
+
 def input_records_in_background(paths: Sequence[Path]) -> Callable[[], list[dict]]:
     """Start computing :func:`input_record` of each path on a daemon thread; returns a function
     that waits for the records (re-raising an error of the thread). Hashing a database of a

@@ -123,6 +123,7 @@ READS: dict[str, tuple[str, ...]] = {
     "tune": ("tune", "synthesize", "build_db", "normalize"),
     "isomap build": ("isomap",),
     "isomap pick": (),
+    "isomap page": ("isomap", "ingest"),
     "db show": (),
     "prune": ("prune",),
     "devices": (),
@@ -1066,7 +1067,7 @@ def tune(ctx: Context, db: Path, validation: Path, output: Path):
 
 @main.group(cls=DefaultGroup)
 def isomap():
-    """Phoneme-Isomaps (paper IV): build them, or pick a new frame from one.
+    """Phoneme-Isomaps (paper IV): build them, pick a new frame from one, or choose constraints on them.
 
     \b
     Example:
@@ -1122,6 +1123,42 @@ def isomap_pick(ctx: Context, isomap_path: Path, phoneme: str, x: float, y: floa
     markers, names, info = stage.pick(isomap_path, phoneme, x, y, pca_map)
     ctx.detail(f"triangle of frames {info['corners']} (nodes {info['nodes']}), weights {info['weights']}")
     _echo_lines(stage.markers_csv(markers, names))
+
+
+@isomap.command("page")
+@click.argument("isomap_path", metavar="ISOMAP", type=EXISTING)
+@click.argument("db", type=EXISTING)
+@click.option("--phonemes", type=EXISTING, required=True, help="The utterance's phone timing (TextGrid or .lab).")
+@click.option("--emotions", type=EXISTING, default=None, help="Emotion spans, as for synthesize.")
+@click.option("--constraints", type=EXISTING, default=None, help="Constraints already chosen, as for synthesize: shown and kept.")
+@click.option("--motion", type=EXISTING, default=None, help="The motion synthesized for this utterance: its path's nodes are marked.")
+@click.option("-o", "--output", type=PATH, required=True, help="Output page (.html).")
+@stage
+def isomap_page(ctx: Context, isomap_path: Path, db: Path, phonemes: Path, emotions, constraints, motion, output: Path):
+    """Write the constraint page of an utterance: pick a phone, click a node on its Isomap (paper VI-A).
+
+    The page highlights the phone's time-correct and context-correct nodes (those facesynth
+    suggest lists), marks the node the motion's path chose, and a click on a node writes the
+    line 'TIMEs NODE' for synthesize --constraints (copy or download it). ISOMAP must be built
+    from DB. One self-contained HTML file; the GUI of Fig. 9 of the paper.
+
+    \b
+    Example:
+      facesynth isomap build db.h5 -o isomap.h5
+      facesynth isomap page isomap.h5 db.h5 --phonemes corpus/labels/neutral_s016.TextGrid \\
+          --motion motion.h5 -o constraints.html
+    """
+    from .stages import isomap as stage
+
+    s = stage.page(isomap_path, db, phonemes, output, ctx.config.settings("isomap"), ctx.config.settings("ingest"),
+                   emotions, constraints, motion, ctx.overwrite)
+    if s.missing:
+        ctx.say(f"warning: the database has no node of {', '.join('/' + p + '/' for p in s.missing)}; "
+                "those phones cannot be constrained (synthesize covers them with nodes of the same viseme).")
+    for note in s.notes:
+        ctx.say(f"warning: {note}.")
+    ctx.say(f"wrote the constraint page of {s.phones} spoken phones ({s.maps} maps, "
+            f"{s.constraints} constraints given, {s.bytes / 1e6:.1f} MB) -> {output}")
 
 
 @main.group()

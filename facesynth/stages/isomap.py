@@ -20,18 +20,20 @@ import contextlib
 import html
 import time
 from collections.abc import Callable
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 from scipy.ndimage import gaussian_filter
 
-from ..artifacts import atomic_folder, check_output, check_output_folder, published_together
-from ..config import IsomapSettings, settings_json
+from ..artifacts import atomic_folder, atomic_path, check_output, check_output_folder, published_together
+from ..config import IngestSettings, IsomapSettings, settings_json
 from ..embedding import barycentric_pick, build_clusters, memory_estimate
 from ..errors import InputError
 from ..limits import require_memory
 from ..model.isomap import Cluster, PhonemeMaps
 from ..model.motiondb import MotionDatabase
+from ..phonemes import PAU
 from ..progress import progress
 
 EMOTION_COLOURS = {"neutral": (0, 0, 0), "angry": (220, 30, 30), "sad": (20, 160, 40), "happy": (30, 70, 230)}
@@ -128,26 +130,37 @@ def save_cluster_images(cluster: Cluster, folder: Path, settings: IsomapSettings
     """Write <phone>_isomap.png and <phone>_pca.png, with node trajectories and axes in map
     coordinates; return the trajectories (node, emotion, pixel polyline) of the Isomap
     image for the index page."""
+    trajectories = []
+    for kind in ("isomap", "pca"):
+        img, lines = map_image(cluster, kind, settings)
+        img.save(folder / f"{cluster.phone}_{kind}.png")
+        if kind == "isomap":
+            trajectories = lines
+    return trajectories
+
+
+def map_image(cluster: Cluster, kind: str, settings: IsomapSettings):
+    """The Pillow image of one map of a cluster (``kind`` "isomap" or "pca"): Eq. 3 density,
+    every motion node as a grey directed trajectory (orange dot at its end) and axes in map
+    coordinates; with the trajectories (node, emotion, pixel polyline)."""
     from PIL import Image, ImageDraw
 
+    points = cluster.isomap if kind == "isomap" else cluster.pca_map
+    image, to_px = render_map(points, cluster.emotion, settings)
+    img = Image.fromarray(image)
+    draw = ImageDraw.Draw(img)
     trajectories = []
-    for kind, points in (("isomap", cluster.isomap), ("pca", cluster.pca_map)):
-        image, to_px = render_map(points, cluster.emotion, settings)
-        img = Image.fromarray(image)
-        draw = ImageDraw.Draw(img)
-        for k in np.unique(cluster.node):
-            sel = cluster.node == k
-            line = to_px(points[sel])
-            colour = (120, 120, 120)
-            if len(line) > 1:
-                draw.line([tuple(p) for p in line], fill=colour, width=1)
-                draw.ellipse([line[-1][0] - 2, line[-1][1] - 2, line[-1][0] + 2, line[-1][1] + 2], fill=(255, 140, 0))
-            if kind == "isomap":
-                emo = cluster.emotion[int(np.nonzero(sel)[0][0])]
-                trajectories.append({"node": int(k), "emotion": emo, "points": line.round(1).tolist()})
-        draw_axes(img, points, settings.image_size)
-        img.save(folder / f"{cluster.phone}_{kind}.png")
-    return trajectories
+    for k in np.unique(cluster.node):
+        sel = cluster.node == k
+        line = to_px(points[sel])
+        colour = (120, 120, 120)
+        if len(line) > 1:
+            draw.line([tuple(p) for p in line], fill=colour, width=1)
+            draw.ellipse([line[-1][0] - 2, line[-1][1] - 2, line[-1][0] + 2, line[-1][1] + 2], fill=(255, 140, 0))
+        emo = cluster.emotion[int(np.nonzero(sel)[0][0])]
+        trajectories.append({"node": int(k), "emotion": emo, "points": line.round(1).tolist()})
+    draw_axes(img, points, settings.image_size)
+    return img, trajectories
 
 
 def hover_data(clusters: list[Cluster], size: int, take_of_node: dict[int, str] | None = None) -> dict:
@@ -305,3 +318,67 @@ def pick(isomap_path: Path, phone: str, x: float, y: float, use_pca_map: bool = 
 def markers_csv(markers: np.ndarray, names: list[str]) -> list[str]:
     """Lines of a marker frame (M, 3) mm as CSV: ``marker,x_mm,y_mm,z_mm``."""
     return ["marker,x_mm,y_mm,z_mm"] + [f"{name},{x:.4f},{y:.4f},{z:.4f}" for name, (x, y, z) in zip(names, markers)]
+
+
+@dataclass(frozen=True)
+class PageResult:
+    """What ``isomap page`` did: spoken phones of the utterance, maps on the page, spoken
+    phones without a map, constraints given, the page's size (bytes), warnings for the user."""
+
+    phones: int
+    maps: int
+    missing: list[str]
+    constraints: int
+    bytes: int
+    notes: list[str]
+
+
+def page(isomap_path: Path, db_path: Path, phones_path: Path, out: Path, settings: IsomapSettings,
+         ingest_settings: IngestSettings, emotions_path: Path | None = None, constraints_path: Path | None = None,
+         motion_path: Path | None = None, overwrite: bool = False) -> PageResult:
+    """Write the constraint page (paper VI-A, Fig. 9; :mod:`facesynth.exports.isomap_page`) of
+    an utterance over the maps of ``isomap_path`` built from ``db_path``, marking the path of
+    the synthesized ``motion_path``."""
+    import io
+
+    from ..exports import isomap_page as export
+    from ..model.motion import Motion
+    from ..search.synthesis import prepare
+
+    check_output(out, overwrite)
+    maps = PhonemeMaps.read(isomap_path)
+    db = MotionDatabase.read(db_path)
+    export.require_same_database(isomap_path, PhonemeMaps.KIND, "was built", db_path,
+                                 f"run facesynth isomap build {db_path} -o ISOMAP.h5 and use that")
+    export.check_maps(maps, db, isomap_path, db_path)
+    utt, constraints = prepare(db, phones_path, emotions_path, constraints_path, ingest_settings)
+    missing = export.require_some_map(utt, maps, phones_path, db_path)
+    path, notes = None, []
+    if motion_path is not None:
+        export.require_same_database(motion_path, Motion.KIND, "was synthesized", db_path,
+                                     f"give a motion synthesized from {db_path}, or that motion's database")
+        path = Motion.read_search(motion_path)[0]
+        export.check_path(path, utt, db, motion_path, phones_path, db_path)
+        differ = export.emotion_differences(path, utt)
+        if differ:
+            k = differ[0]
+            notes.append(f"{motion_path} was synthesized with other emotions than the page's at {len(differ)} phones "
+                         f"(phone {k} /{utt.phones[k]}/: {path.emotion[k]}, not {utt.emotions[k]}); "
+                         "give the --emotions it was made with")
+    pictures = {}
+    for phone in dict.fromkeys(utt.phones):
+        if phone in maps.clusters:
+            cluster = maps.clusters[phone]
+            img, _ = map_image(cluster, "isomap", settings)
+            png = io.BytesIO()
+            img.save(png, format="png")
+            t = map_transform(cluster.isomap, settings.image_size)
+            pixels = np.stack([t["x0"] + t["sx"] * cluster.isomap[:, 0], t["y0"] + t["sy"] * cluster.isomap[:, 1]], -1)
+            pictures[phone] = (png.getvalue(), pixels)
+    data = export.page_data(maps, db, utt, constraints, path, pictures,
+                            export.synthesize_command(db_path, phones_path, emotions_path))
+    text = export.render_page(data, f"Constraints for {phones_path.name}", settings.image_size)
+    with atomic_path(out, overwrite) as tmp:
+        tmp.write_text(text, encoding="utf-8")
+    return PageResult(sum(p != PAU for p in utt.phones), len(pictures), missing, len(constraints),
+                      len(text.encode("utf-8")), notes)

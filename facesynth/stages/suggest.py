@@ -9,6 +9,8 @@ a frame index inside the node's take, 0 at the take's first frame), whether it i
 total cost (Eq. 4) of the whole utterance when the phone is constrained to it:
 ``phi_c(j) + psi_c(j) - obs_c(j)``, where ``phi`` is the forward DP of Algorithm 1 and
 ``psi`` the same DP run backwards (transposed TC, reversed steps). Best first.
+The time- and context-correct definitions live in :mod:`facesynth.search.constraint_choice`,
+which ``facesynth isomap page`` shares to highlight the same nodes on the phone's Isomap.
 
 Context-correct nodes exist only where the input shares a triphone with a training
 sentence; the sample corpus designs its sentences to cover new diphones, so a held-out
@@ -27,7 +29,14 @@ from ..config import IngestSettings, SynthesizeSettings
 from ..errors import InputError
 from ..model.motiondb import MotionDatabase
 from ..opencl import use_opencl
-from ..phonemes import PAU
+from ..search.constraint_choice import (
+    context_correct,
+    context_correct_steps,
+    context_name,
+    relative_time,
+    spoken_step_at,
+    time_correct_take_frame,
+)
 from ..search.costs import step_costs
 from ..search.pruned import backward_pruned, dp_pruned
 from ..search.synthesis import prepare
@@ -53,25 +62,6 @@ class Suggestion:
     extra: float                # cost above the unconstrained optimum
 
 
-def triphone(phones: list[str], c: int) -> tuple[str, str]:
-    """The previous and next phone of step ``c`` of an utterance (``pau`` at its ends)."""
-    return (phones[c - 1] if c > 0 else PAU), (phones[c + 1] if c + 1 < len(phones) else PAU)
-
-
-def context_correct_steps(phones: list[str], starts: np.ndarray, ends: np.ndarray, db_contexts: set[tuple[str, str, str]]) -> list[dict]:
-    """The spoken steps of an utterance that have at least one context-correct node: their
-    index, phone, triphone context and mid time (s)."""
-    out = []
-    for c, phone in enumerate(phones):
-        if phone == PAU:
-            continue
-        prev_p, next_p = triphone(phones, c)
-        if (prev_p, phone, next_p) in db_contexts:
-            out.append({"index": c, "phone": phone, "context": f"{prev_p}-{phone}+{next_p}",
-                        "time_s": round(0.5 * (float(starts[c]) + float(ends[c])), 3)})
-    return out
-
-
 def suggest(db_path: Path, phones_path: Path, at_s: float, settings: SynthesizeSettings, ingest_settings: IngestSettings,
             emotions_path: Path | None = None, constraints_path: Path | None = None) -> tuple[dict, list[Suggestion]]:
     """Nodes of the phone at ``at_s`` (s) ranked by the best total cost through them (forward and
@@ -82,17 +72,13 @@ def suggest(db_path: Path, phones_path: Path, at_s: float, settings: SynthesizeS
     """
     db = MotionDatabase.read(db_path)
     utt, constraints = prepare(db, phones_path, emotions_path, constraints_path, ingest_settings)
-    c = utt.index_at(at_s)
-    if c is None:
-        raise InputError(f"{phones_path}: {at_s:.3f} s is outside the utterance (0 to {utt.ends[-1]:.3f} s).")
+    c = spoken_step_at(utt, at_s, str(phones_path))
     phone = utt.phones[c]
-    if phone == PAU:
-        raise InputError(f"{phones_path}: {at_s:.3f} s falls in a pause, whose frames are interpolated; pick a time in a spoken phone.")
     candidates = np.nonzero(np.array(db.nodes.phone) == phone)[0]
     if len(candidates) == 0:
         raise InputError(f"{db_path}: the database has no node of /{phone}/ to suggest.")
-    rel = (at_s - utt.starts[c]) / (utt.ends[c] - utt.starts[c])
-    prev_p, next_p = triphone(utt.phones, c)
+    rel = relative_time(utt, c, at_s)
+    correct = context_correct(db.nodes, utt.phones, c)
     tc = db.transition_costs(settings, use_opencl(settings.use_opencl))
     obs = step_costs(utt.phones, utt.emotions, db.nodes.phone, db.nodes.emotion, constraints, settings).total
     # The optimum, and every node's best cost up to step c and from step c on: the values the
@@ -103,16 +89,14 @@ def suggest(db_path: Path, phones_path: Path, at_s: float, settings: SynthesizeS
     through = up_to.phi[c].astype(np.float64) + from_here - obs[c]
     out = []
     for j in candidates:
-        start, count = int(db.nodes.frame_start[j]), int(db.nodes.frame_count[j])
         take = int(db.nodes.take[j])
-        frame = start - int(db.takes.frame_start[take]) + int(np.floor(rel * (count - 1) + 0.5))
         ctx = f"{db.nodes.prev_phone[j]}-{phone}+{db.nodes.next_phone[j]}"
-        out.append(Suggestion(int(j), db.nodes.emotion[j], db.takes.name[take], ctx,
-                              db.nodes.prev_phone[j] == prev_p and db.nodes.next_phone[j] == next_p,
-                              frame, float(through[j]), max(0.0, float(through[j] - forward.cost))))
+        out.append(Suggestion(int(j), db.nodes.emotion[j], db.takes.name[take], ctx, bool(correct[j]),
+                              time_correct_take_frame(db.nodes, db.takes.frame_start, int(j), rel),
+                              float(through[j]), max(0.0, float(through[j] - forward.cost))))
     out.sort(key=lambda s: (s.cost, s.node))
     contexts = set(zip(db.nodes.prev_phone, db.nodes.phone, db.nodes.next_phone))
-    info = {"phone": phone, "index": c, "relative_time": rel, "context": f"{prev_p}-{phone}+{next_p}",
+    info = {"phone": phone, "index": c, "relative_time": rel, "context": context_name(utt.phones, c),
             "optimum": forward.cost, "optimal_node": int(forward.path[c]),
             "context_correct_at": context_correct_steps(utt.phones, utt.starts, utt.ends, contexts)}
     return info, out
