@@ -430,6 +430,11 @@ class StreamSettings:
     recognition_restart_s: float = setting("not in the papers: the live recogniser starts a new utterance in the first "
                                            "silence after this long (its work per step grows with the utterance)",
                                            unit="s", gt=0, le=3600)
+    pause_wait_s: float = setting("not in the papers: a pause whose next phone is not decided yet has its frames "
+                                  "sent this long after their audio, easing toward rest (in given-phones mode, "
+                                  "audio with no phone for this long is taken as a pause)", unit="s", gt=0, le=3600)
+    pause_settle_s: float = setting("not in the papers: how long the face takes to ease to rest in such a pause",
+                                    unit="s", gt=0, le=10)
     chunk_s: float = setting("not in the papers: audio read per step from standard input", unit="s", gt=0, le=1)
     queue_messages: int = setting("not in the papers: messages waiting for one WebSocket client at most; a client "
                                   "that falls further behind is disconnected", unit="messages", ge=1, le=100000)
