@@ -24,10 +24,10 @@ a pause are not smoothed), and before a committed pause that is last (a pause is
 toward the next phone's first frame: its frames wait for that phone). A pause whose next phone is
 not decided yet does not hold its frames back longer than ``stream.pause_wait_s``: those frames
 go out that long after their audio, easing from the last frame sent toward the rest pose (a
-cosine over ``stream.pause_settle_s``), and once the next phone is decided the pause's remaining
-frames are interpolated from the last frame sent to that phone's first frame, as batch
-synthesis interpolates a pause between its neighbours. Only the frames of such a pause differ
-from batch synthesis of the same path; every other frame is batch's.
+cosine over ``synthesize.pause_rest_ramp_s``, as batch synthesis eases into a long pause), and
+once the next phone is decided the pause's remaining frames are batch's, plus the difference
+between the last frame sent and batch's frame, fading linearly to nothing at the pause's end.
+Only the frames of such a pause differ from batch synthesis of the same path.
 Only a window of recent phones is re-rendered at each decision, starting two spoken phones
 before the first unsent frame, so the work per decision does not grow with the stream.
 
@@ -330,7 +330,7 @@ class LiveSynthesizer:
     def _pause_frames(self, now: float) -> np.ndarray:
         """Frames of the pause the first unsent frame lies in, when they may not wait for the
         pause's next phone: (T, M, 3) mm sent ``stream.pause_wait_s`` after their audio, easing
-        from the last frame sent toward the rest pose (a cosine over ``stream.pause_settle_s``).
+        from the last frame sent toward the rest pose (a cosine over ``synthesize.pause_rest_ramp_s``).
         The pause's own node does not matter (its frames are regenerated), so it need not be
         committed; every frame before it must have been sent."""
         if not self.phones:
@@ -360,28 +360,26 @@ class LiveSynthesizer:
             self._pause_left = (self.sent - 1, self._last[0] if self._last is not None else self.model.rest_markers)
         assert self._pause_left is not None
         k0, left = self._pause_left
-        settle = self.model.stream.pause_settle_s
+        settle = self.model.synth.pause_rest_ramp_s
         u = np.clip((np.arange(self.sent, self.sent + n) - k0) / (settle * fps), 0.0, 1.0)
         u = (1 - np.cos(np.pi * u)) / 2
         rest = self.model.rest_markers
         return (left[None] * (1 - u[:, None, None]) + rest[None] * u[:, None, None]).astype(np.float32)
 
     def _close_pause(self, markers: np.ndarray, stop: int) -> np.ndarray:
-        """Replace the rendered frames of the open pause in ``markers`` (output frames [sent,
-        stop), which reach past the pause unless the stream has ended) by a linear interpolation
-        from the last frame sent to the frame after the pause (the rest pose when the pause ends
-        the stream), as batch synthesis interpolates a pause between its neighbours."""
+        """The rendered frames of the open pause in ``markers`` (output frames [sent, stop), which
+        reach past the pause unless the stream has ended), joined to the frames already sent:
+        batch's frames plus the step from the last frame sent to batch's next, fading linearly
+        to nothing at the pause's end (the frame after it, or the end of the stream)."""
         p = self._open_pause
         assert p is not None and self._last is not None
         self._open_pause = self._pause_left = None
-        last = self._output_range(p)[1]
-        n = min(last, stop) - self.sent
+        n = min(self._output_range(p)[1], stop) - self.sent
         if n <= 0:
             return markers
-        right = markers[n] if last < stop else self.model.rest_markers
         out = markers.copy()
-        u = (np.arange(1, n + 1) / (n + 1))[:, None, None]
-        out[:n] = self._last[0][None] * (1 - u) + right[None] * u
+        fade = (1 - np.arange(1, n + 1) / (n + 1))[:, None, None]
+        out[:n] += (self._last[0] - markers[0])[None] * fade
         return out
 
     def _total_frames(self) -> int:
