@@ -23,6 +23,8 @@ utterances; their clean ground truth scores the mouth).
    curves' RMS and jawOpen r against ``facesynth solve``'s curves of the batch markers, and the
    mouth-opening r of each against the clean ground truth (``quality_ratio`` = live r / batch r).
    ``path_differs``: the fraction of spoken steps whose node differs from the whole-utterance path.
+   Rows ending ``_pauses_wait`` hold a pause's frames back until its next phone is decided (the
+   frames batch renders there); the others send them ``stream.pause_wait_s`` after their audio.
 2. ``concurrent``: ``facesynth stream --serve 127.0.0.1:0 --workers W`` in its own processes; K
    clients push ``--seconds`` of audio each at real-time speed (20 ms chunks) at once, and latency is measured
    on the clock of this process (frame received minus the send of the chunk holding its sample).
@@ -60,8 +62,10 @@ from facesynth.search.inputs import read_utterance, utterance
 from facesynth.search.synthesis import synthesize
 
 CHUNK_S = 0.02
-#: (method, look-ahead phones, recognition hold phones)
-CONFIGS = [("dp", 0, 1), ("dp", 1, 1), ("dp", 2, 1), ("dp", 2, 2), ("dp", 4, 1), ("greedy", 1, 1)]
+#: (method, look-ahead phones, recognition hold phones, stream.pause_wait_s: None the default; a
+#: wait longer than any pause makes a pause's frames wait for the next phone, as batch renders them)
+CONFIGS = [("dp", 0, 1, None), ("dp", 0, 1, 3600.0), ("dp", 1, 1, None), ("dp", 1, 1, 3600.0), ("dp", 2, 1, None),
+           ("dp", 2, 2, None), ("dp", 4, 1, None), ("greedy", 1, 1, None)]
 #: How the phones arrive: recognised from the audio; given by a TTS engine with the chunk where
 #: each starts; given for the whole utterance before its audio (a TTS engine that plans a sentence).
 MODES = ("recognize", "given", "given_ahead")
@@ -129,8 +133,10 @@ def offline(db_path: Path, corpus: Path, takes: list[str], config: Config) -> di
     align = config.settings("align")
     names = db.marker_names
     out = {}
-    for method, lookahead, hold in CONFIGS:
+    for method, lookahead, hold, pause_wait in CONFIGS:
         stream = replace(config.settings("stream"), method=method, lookahead_phones=lookahead, recognition_hold=hold)
+        if pause_wait is not None:
+            stream = replace(stream, pause_wait_s=pause_wait)
         model = LiveModel(db, config.settings("synthesize"), stream, config.settings("solve"))
         for mode in MODES:
             if mode != "recognize" and hold != 1:
@@ -176,10 +182,11 @@ def offline(db_path: Path, corpus: Path, takes: list[str], config: Config) -> di
                 r_batch_truth.append(pearson(o_batch[:n], o_truth))
             lat_all = np.concatenate(lat)
             speech_all = np.concatenate(speech_lat)
-            key = f"{method}_lookahead{lookahead}_{mode}" + (f"_hold{hold}" if mode == "recognize" else "")
+            key = (f"{method}_lookahead{lookahead}_{mode}" + (f"_hold{hold}" if mode == "recognize" else "")
+                   + ("_pauses_wait" if pause_wait is not None else ""))
             out[key] = {
                 "method": method, "lookahead_phones": lookahead, "phones": mode, "frames": int(len(lat_all)),
-                "recognition_hold": hold if mode == "recognize" else None,
+                "recognition_hold": hold if mode == "recognize" else None, "pause_wait_s": stream.pause_wait_s,
                 "latency_median_ms": round(1000 * float(np.median(lat_all)), 1),
                 "latency_p95_ms": round(1000 * float(np.percentile(lat_all, 95)), 1),
                 "speech_latency_median_ms": round(1000 * float(np.median(speech_all)), 1),

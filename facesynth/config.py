@@ -197,6 +197,11 @@ class SynthesizeSettings:
     output_fps: float = setting("paper VII-B (30 frames/s)", unit="frames/s", gt=0, le=1000)
     silence_interpolation: str = setting("paper VII-B (linear); hermite: velocities matched on both sides",
                                          choices=("linear", "cubic", "cosine", "hermite"))
+    pause_rest_min_s: float = setting("not in the paper: a pause at least this long passes through the rest pose "
+                                      "(the mouth relaxes and closes) instead of one interpolation between its "
+                                      "neighbours; 3600: never", unit="s", gt=0, le=3600)
+    pause_rest_ramp_s: float = setting("not in the paper: time such a pause takes to ease from the last phone to "
+                                       "rest, and from rest into the next phone", unit="s", gt=0, le=2)
 
 
 @dataclass(frozen=True)
@@ -430,6 +435,9 @@ class StreamSettings:
     recognition_restart_s: float = setting("not in the papers: the live recogniser starts a new utterance in the first "
                                            "silence after this long (its work per step grows with the utterance)",
                                            unit="s", gt=0, le=3600)
+    pause_wait_s: float = setting("not in the papers: a pause whose next phone is not decided yet has its frames "
+                                  "sent this long after their audio, easing toward rest as batch does (in given-phones mode, "
+                                  "audio with no phone for this long is taken as a pause)", unit="s", gt=0, le=3600)
     chunk_s: float = setting("not in the papers: audio read per step from standard input", unit="s", gt=0, le=1)
     queue_messages: int = setting("not in the papers: messages waiting for one WebSocket client at most; a client "
                                   "that falls further behind is disconnected", unit="messages", ge=1, le=100000)

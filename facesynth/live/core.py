@@ -21,7 +21,13 @@ regenerated, Eq. 11, down-sampling). A frame is sent only when nothing uncommitt
 it: it must lie before the first uncommitted phone by more than the join smoothing's reach
 (``smoothing_half_window`` capture frames; none when that phone is a pause, since joins next to
 a pause are not smoothed), and before a committed pause that is last (a pause is interpolated
-toward the next phone's first frame: its frames wait for that phone).
+toward the next phone's first frame: its frames wait for that phone). A pause whose next phone is
+not decided yet does not hold its frames back longer than ``stream.pause_wait_s``: those frames
+go out that long after their audio, easing from the last frame sent toward the rest pose (a
+cosine over ``synthesize.pause_rest_ramp_s``, as batch synthesis eases into a long pause), and
+once the next phone is decided the pause's remaining frames are batch's, plus the difference
+between the last frame sent and batch's frame, fading linearly to nothing at the pause's end.
+Only the frames of such a pause differ from batch synthesis of the same path.
 Only a window of recent phones is re-rendered at each decision, starting two spoken phones
 before the first unsent frame, so the work per decision does not grow with the stream.
 
@@ -97,6 +103,8 @@ class LiveModel:
         self.marker_map = marker_map(rig, db.marker_names, db.reference, "the motion database")
         self.basis = rig.deltas[:, self.marker_map.vertices]
         self.rest_coeffs = db.model.project(db.reference[None])[0]
+        #: (M, 3) mm: the rest pose as the PCA model reconstructs it (where silences settle)
+        self.rest_markers = db.model.reconstruct(self.rest_coeffs[None])[0].astype(np.float32)
 
     @property
     def arkit_names(self) -> tuple[str, ...]:
@@ -142,6 +150,9 @@ class LiveSynthesizer:
     phones_complete: bool = False      # every phone of the utterance is known (a TTS engine said so)
     decision_s: deque = field(default_factory=lambda: deque(maxlen=100000))  # wall time of the recent decisions
     _last: tuple[np.ndarray, np.ndarray] | None = None   # the last sent frame's markers and rig weights
+    _open_pause: int | None = None     # the step of a pause whose frames went out before its next phone was decided
+    _pause_left: tuple[int, np.ndarray] | None = None  # the open pause's starting frame: (index, (M, 3) markers)
+    _silence_growing: bool = False     # the last phone is a pause from :meth:`extend_silence`: its end is not known
 
     def __post_init__(self):
         self.set_emotion(self.emotion)
@@ -172,6 +183,14 @@ class LiveSynthesizer:
         if start > last + 1e-6:
             self._append(PAU, last, start)
         self._append(phone, max(start, last), end)
+        self._silence_growing = False
+
+    def extend_silence(self, until: float) -> None:
+        """The audio up to ``until`` (s) is silence, though the phone after it is not known yet
+        (a TTS engine sends no phone for it): a pause up to there, whose end may grow."""
+        if until > self.known_until + 1e-9:
+            self.add_phone(PAU, self.known_until, until)
+            self._silence_growing = True
 
     def _append(self, phone: str, start: float, end: float) -> None:
         if phone == PAU and self.phones and self.phones[-1] == PAU:
@@ -271,20 +290,97 @@ class LiveSynthesizer:
         return max(0, int(np.ceil(limit / ratio - 1e-9)))
 
     def _emit(self, now: float) -> list[Frame]:
-        fps = self.model.stream.fps
         if self.finished:
             n_final = self._total_frames()
         else:
             n_final = self._final_frames()
-        if n_final <= self.sent:
-            return []
-        markers = self._render(self.sent, n_final)
+            if self._open_pause is not None and n_final <= self._output_range(self._open_pause)[1]:
+                n_final = self.sent  # the frame after the open pause is not final yet: the pause goes on easing
+        frames = []
+        if n_final > self.sent:
+            markers = self._render(self.sent, n_final)
+            if self._open_pause is not None:
+                markers = self._close_pause(markers, n_final)
+            frames += self._send(markers, now)
+        if not self.finished:
+            provisional = self._pause_frames(now)
+            if len(provisional):
+                frames += self._send(provisional, now)
+        return frames
+
+    def _send(self, markers: np.ndarray, now: float) -> list[Frame]:
+        """Solve the rig for ``markers`` (T, M, 3), the next T output frames, and send them."""
+        fps = self.model.stream.fps
         weights = self.model.solve(markers, self._last)
         arkit = self.model.arkit(weights)
         frames = [Frame(self.sent + k, (self.sent + k) / fps, arkit[k], markers[k], now) for k in range(len(markers))]
-        self.sent = n_final
+        self.sent += len(markers)
         self._last = (markers[-1], weights[-1])
         return frames
+
+    def _output_range(self, step: int) -> tuple[int, int]:
+        """Output frames [first, stop) of ``step``: those whose capture frame lies in the step's
+        capture frames (:func:`~facesynth.motion.postprocess.frame_ranges`' rounding)."""
+        db = self.model.db
+        ratio = db.fps / self.model.stream.fps
+        a = int(round(self.starts[step] * db.fps))
+        b = int(round(self.ends[step] * db.fps))
+        return int(np.ceil(a / ratio - 1e-9)), int(np.ceil(b / ratio - 1e-9))
+
+    def _pause_frames(self, now: float) -> np.ndarray:
+        """Frames of the pause the first unsent frame lies in, when they may not wait for the
+        pause's next phone: (T, M, 3) mm sent ``stream.pause_wait_s`` after their audio, easing
+        from the last frame sent toward the rest pose (a cosine over ``synthesize.pause_rest_ramp_s``).
+        The pause's own node does not matter (its frames are regenerated), so it need not be
+        committed; every frame before it must have been sent."""
+        if not self.phones:
+            return np.zeros((0,), np.float32)
+        fps = self.model.stream.fps
+        p = self._open_pause
+        if p is None:
+            p = max(0, int(np.searchsorted(np.array(self.starts), self.sent / fps + 1e-9, side="right")) - 1)
+            while p > 0 and self._output_range(p)[0] > self.sent:
+                p -= 1
+            while p + 1 < len(self.phones) and self._output_range(p)[1] <= self.sent:
+                p += 1
+        first, last = self._output_range(p)
+        if self.phones[p] != PAU or not first <= self.sent < last:
+            return np.zeros((0,), np.float32)
+        # frames whose audio arrived at least `wait` ago and, where the pause's end is known, at
+        # least `wait` before it, so that its last frames can still lead into the next phone
+        wait = self.model.stream.pause_wait_s
+        growing = self._silence_growing and p == len(self.phones) - 1
+        until = min(now - wait, self.ends[p] - (0.0 if growing else wait))
+        n = min(last, int(np.floor(until * fps + 1e-9)) + 1) - self.sent
+        if n <= 0:
+            return np.zeros((0,), np.float32)
+        if self._open_pause is None:
+            self._open_pause = p
+            # the frame the pause leaves from: the last one sent, or rest before the first phone
+            self._pause_left = (self.sent - 1, self._last[0] if self._last is not None else self.model.rest_markers)
+        assert self._pause_left is not None
+        k0, left = self._pause_left
+        settle = self.model.synth.pause_rest_ramp_s
+        u = np.clip((np.arange(self.sent, self.sent + n) - k0) / (settle * fps), 0.0, 1.0)
+        u = (1 - np.cos(np.pi * u)) / 2
+        rest = self.model.rest_markers
+        return (left[None] * (1 - u[:, None, None]) + rest[None] * u[:, None, None]).astype(np.float32)
+
+    def _close_pause(self, markers: np.ndarray, stop: int) -> np.ndarray:
+        """The rendered frames of the open pause in ``markers`` (output frames [sent, stop), which
+        reach past the pause unless the stream has ended), joined to the frames already sent:
+        batch's frames plus the step from the last frame sent to batch's next, fading linearly
+        to nothing at the pause's end (the frame after it, or the end of the stream)."""
+        p = self._open_pause
+        assert p is not None and self._last is not None
+        self._open_pause = self._pause_left = None
+        n = min(self._output_range(p)[1], stop) - self.sent
+        if n <= 0:
+            return markers
+        out = markers.copy()
+        fade = (1 - np.arange(1, n + 1) / (n + 1))[:, None, None]
+        out[:n] += (self._last[0] - markers[0])[None] * fade
+        return out
 
     def _total_frames(self) -> int:
         """Frames batch synthesis gives the whole utterance (its down-sampling of the capture frames)."""

@@ -5,7 +5,8 @@ Control messages (JSON objects, docs/live.md):
 
 - ``{"type": "start", "phones": "recognize" | "given", "emotion": name, "markers": bool}``:
   optional, before any audio; ``given`` means the client sends the phone timings (a TTS engine)
-  and the audio is not recognised.
+  and the audio is not recognised: each phone must arrive within ``stream.pause_wait_s`` of its
+  start, or the audio before it is taken as a pause (the phone then starts where the pause ends).
 - ``{"type": "phones", "phones": [{"phone": "HH", "start": 0.10, "end": 0.16}, ...], "final": false}``:
   phone timings in stream seconds, in order (``given`` mode); ``"final": true`` says they are
   the utterance's last, so nothing waits for a look-ahead past them.
@@ -71,6 +72,10 @@ class Session:
                                                   self.model.stream.recognition_restart_s)
             for phone in self.recognizer.feed(data[:whole]):
                 self.synth.add_phone(*phone)
+        elif not self.synth.phones_complete:
+            # given phones: audio that no phone has covered for stream.pause_wait_s is silence, so
+            # its frames need not wait for the engine's next phone
+            self.synth.extend_silence(self.time - self.model.stream.pause_wait_s)
         return self._frames(self.synth.step(self.time))
 
     def control(self, text: str) -> list[dict]:

@@ -21,7 +21,11 @@ Choices where the paper is vague:
   window's edges: the frames keep their captured shape, and position and velocity are
   continuous everywhere. Table IV's weights share the correction: the heavier side moves less.
 * Pauses are regenerated between the frames around them; ``silence_interpolation =
-  "hermite"`` matches the velocities on both sides too (a cubic Hermite).
+  "hermite"`` matches the velocities on both sides too (a cubic Hermite). A pause of at least
+  ``rest_after`` frames also passes through the rest pose: the interpolation is blended toward
+  rest with a weight that rises from 0 to 1 over ``rest_ramp`` frames after the pause starts
+  and falls back to 0 over the ``rest_ramp`` frames before it ends (cosine eases), so the mouth
+  relaxes and closes in a silence instead of hanging half open between two phones.
 * Down-sampling takes every (capture rate / output rate)-th frame, or interpolates when the
   ratio is not whole; no low-pass filter, so brief lip closures survive.
 """
@@ -143,13 +147,15 @@ def concatenate(path: np.ndarray, phones: list[str], starts: np.ndarray, ends: n
                 node_start: np.ndarray, node_count: np.ndarray, node_pre: np.ndarray, node_phone: list[str],
                 coeffs: np.ndarray, rest: np.ndarray, fps: float, *, half_window: int, lam: float,
                 weight_of, interpolation: str = "linear", joins=None, method: str = "blend",
-                pinned: frozenset[str] = frozenset()) -> Concatenated:
+                pinned: frozenset[str] = frozenset(), rest_after: int | None = None, rest_ramp: int = 1) -> Concatenated:
     """The whole VII-B chain up to (not including) Eq. 11. ``weight_of(phone)`` gives Table IV's
     factor. With the blend, a phone of ``pinned`` keeps its frames at a join with an unpinned
     phone: the other side takes the whole correction (a captured lip closure stays closed). ``method``: "blend" (:func:`blend_join` over ``half_window`` frames each side,
     at most the phone's own frames) or "eq16" (:func:`smooth_join` over 2 ``half_window``
     frames, free-ended). ``joins(out, ranges)``, if given, replaces both (e.g. Cao's blending
-    and low-pass, :mod:`facesynth.motion.cao`) and returns the mask of frames it changed."""
+    and low-pass, :mod:`facesynth.motion.cao`) and returns the mask of frames it changed.
+    ``rest_after`` (frames; None: never) and ``rest_ramp`` (frames): pauses that long pass
+    through ``rest`` (see the module docstring)."""
     ranges = frame_ranges(starts, ends, fps)
     total = ranges[-1][1]
     k = coeffs.shape[1]
@@ -194,9 +200,21 @@ def concatenate(path: np.ndarray, phones: list[str], starts: np.ndarray, ends: n
             out[a:b] = hermite(left, right, v_left, v_right, b - a)
         else:
             out[a:b] = interpolate(left, right, b - a, interpolation)
+        if rest_after is not None and b - a >= rest_after:
+            out[a:b] = toward_rest(out[a:b], rest, rest_ramp)
         node[a:b] = -1
         source[a:b] = -1
     return Concatenated(out.astype(np.float32), node, source, step, smoothed)
+
+
+def toward_rest(frames: np.ndarray, rest: np.ndarray, ramp: int) -> np.ndarray:
+    """A pause's frames (n, K) blended toward ``rest`` (K,): the weight of rest eases (a cosine)
+    from 0 to 1 over the first ``ramp`` frames and back to 0 over the last ``ramp``."""
+    n = len(frames)
+    t = np.arange(n)
+    w = np.minimum(np.clip((t + 1) / ramp, 0.0, 1.0), np.clip((n - t) / ramp, 0.0, 1.0))
+    w = ((1 - np.cos(np.pi * w)) / 2)[:, None]
+    return frames * (1 - w) + rest[None] * w
 
 
 def interpolate(left: np.ndarray, right: np.ndarray, n: int, kind: str) -> np.ndarray:

@@ -177,7 +177,8 @@ def render_path(db: MotionDatabase, utt: Utterance, path: np.ndarray, settings: 
         db.nodes.phone, db.coeffs, rest, db.fps, half_window=settings.smoothing_half_window,
         lam=settings.smoothing_lambda, weight_of=table_iv_weight(settings), interpolation=settings.silence_interpolation,
         joins=cao_joins(db, path, utt.phones) if settings.postprocess == "cao" else None, method=settings.join_smoothing,
-        pinned=frozenset(settings.pinned_phones),
+        pinned=frozenset(settings.pinned_phones), rest_after=int(round(settings.pause_rest_min_s * db.fps)),
+        rest_ramp=max(1, int(round(settings.pause_rest_ramp_s * db.fps))),
     )
     markers = db.model.reconstruct(cat.coeffs)
     joins = sum(1 for t in range(len(path) - 1)

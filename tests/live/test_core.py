@@ -50,7 +50,8 @@ def _batch(db, utt, config, search="dp"):
 
 
 def test_fixed_lag_dp_is_the_whole_utterance_dp_when_the_lookahead_covers_it(db, utt, config):
-    live, frames, prefixes = _stream(_model(db, config, method="dp", lookahead_phones=len(utt)), utt)
+    model = _model(db, config, method="dp", lookahead_phones=len(utt), pause_wait_s=3600.0)
+    live, frames, prefixes = _stream(model, utt)
     batch = _batch(db, utt, config)
     assert all(p == [] for p in prefixes)  # nothing is decided before the end
     np.testing.assert_array_equal(live.committed, batch["path"])
@@ -62,7 +63,9 @@ def test_fixed_lag_dp_is_the_whole_utterance_dp_when_the_lookahead_covers_it(db,
 @pytest.mark.parametrize("method,lookahead,fps", [("dp", 0, 30), ("dp", 1, 30), ("dp", 2, 30), ("greedy", 1, 30),
                                                   ("dp", 1, 60), ("dp", 1, 25)])
 def test_frames_are_sent_once_in_order_and_never_need_revision(db, utt, config, method, lookahead, fps):
-    live, frames, prefixes = _stream(_model(db, config, method=method, lookahead_phones=lookahead, fps=fps), utt)
+    # pauses wait for their next phone here (a wait longer than any pause): every frame is batch's
+    model = _model(db, config, method=method, lookahead_phones=lookahead, fps=fps, pause_wait_s=3600.0)
+    live, frames, prefixes = _stream(model, utt)
     assert [f.index for f in frames] == list(range(len(frames)))
     # committed decisions only grow: each prefix is a prefix of the final path
     for p in prefixes:
@@ -77,6 +80,39 @@ def test_frames_are_sent_once_in_order_and_never_need_revision(db, utt, config, 
     assert arkit.shape == (len(frames), 52) and arkit.min() >= 0 and arkit.max() <= 1
     jaw = arkit[:, live.model.arkit_names.index("jawOpen")]
     assert jaw.max() > 0.1 and jaw.min() < 0.5 * jaw.max()  # the mouth opens and closes
+
+
+def _pause_frames(live, n: int) -> np.ndarray:
+    """(n,) whether each output frame lies in a pause of the stream's phones."""
+    times = np.arange(n) / live.model.stream.fps
+    step = np.searchsorted(np.array(live.starts), times + 1e-9, side="right") - 1
+    return np.array([live.phones[k] == "pau" for k in step])
+
+
+@pytest.mark.parametrize("lookahead", [0, 1])
+def test_a_pause_does_not_hold_its_frames_back_for_the_next_phone(db, utt, config, lookahead):
+    model = _model(db, config, method="dp", lookahead_phones=lookahead)
+    wait = model.stream.pause_wait_s
+    live, frames, _ = _stream(model, utt)
+    markers = np.stack([f.markers for f in frames])
+    final = render_path(db, utt, np.array(live.committed), live.model.synth)["markers"]
+    assert [f.index for f in frames] == list(range(len(final)))
+    pause = _pause_frames(live, len(final))
+    assert pause.sum() > 10
+    # every frame outside the pauses is batch's; inside them the face eases toward rest and then
+    # into the next phone, without a jump larger than the speech's own frame-to-frame motion
+    np.testing.assert_allclose(markers[~pause], final[~pause], atol=1e-3)
+    assert np.abs(markers[pause] - final[pause]).max() > 0.01
+    motion = np.linalg.norm(np.diff(markers, axis=0), axis=-1).max(-1)
+    batch_motion = np.linalg.norm(np.diff(final, axis=0), axis=-1).max(-1)
+    assert motion.max() <= batch_motion.max() + 1e-3
+    # the pause frames went out when their phone's end was reached (steps are taken at phone
+    # ends here), not after the next phone: at most the wait after the pause ended
+    ends = np.array(live.ends)
+    for f in (f for f, p in zip(frames, pause) if p):
+        k = int(np.searchsorted(np.array(live.starts), f.time + 1e-9, side="right")) - 1
+        if ends[k] - f.time > wait + 1e-6 and k + 1 < len(ends):
+            assert f.ready_at <= ends[k] + 1e-9, (f.index, f.ready_at, ends[k])
 
 
 def test_a_short_lookahead_changes_few_decisions(db, utt, config):

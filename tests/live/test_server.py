@@ -292,3 +292,38 @@ def test_start_after_audio_is_refused(model):
     assert session.end()[-1]["type"] == "end" and session.end() == []
     with pytest.raises(InputError, match="client 1: audio after 'end'; open a new stream"):
         session.audio(b"\0\0")
+
+
+@pytest.mark.parametrize("pause_wait_s", [0.1, 0.25])
+def test_given_phones_at_their_start_leave_no_frame_waiting_past_the_pause_wait(tiny_db, config, pcm, tiny_corpus,
+                                                                                held_out_take, pause_wait_s):
+    """A TTS engine sends each phone as it starts speaking it (look-ahead 0): the silences between
+    its phones are taken as pauses after stream.pause_wait_s, and their frames go out then."""
+    from facesynth.live.session import Session
+    from facesynth.search.inputs import read_utterance
+
+    stream = replace(config.settings("stream"), lookahead_phones=0, pause_wait_s=pause_wait_s)
+    model = LiveModel(MotionDatabase.read(tiny_db), config.settings("synthesize"), stream, config.settings("solve"))
+    utt = read_utterance(tiny_corpus / "labels" / f"{held_out_take}.TextGrid")
+    spoken = [{"phone": p, "start": float(a), "end": float(b)} for p, a, b in zip(utt.phones, utt.starts, utt.ends)
+              if p != "pau"]  # the engine names no pauses: the gaps between its phones are the silences
+    session = Session(model, _align(), "engine")
+    session.control(json.dumps({"type": "start", "phones": "given"}))
+    step, sent_at, pending = 640, {}, list(spoken)
+    for c in range(0, len(pcm), step):
+        now = (c + step) / 32000
+        starting = [p for p in pending if p["start"] < now]
+        pending = pending[len(starting):]
+        out = session.control(json.dumps({"type": "phones", "phones": starting})) if starting else []
+        out += session.audio(pcm[c : c + step])
+        sent_at.update({m["index"]: (m["time"], session.time) for m in out if m["type"] == "frame"})
+    end = session.end()
+    assert end[-1]["type"] == "end" and end[-1]["frames"] == len(sent_at) + sum(m["type"] == "frame" for m in end)
+    assert session.synth.phones == list(utt.phones)  # the pauses found are the text's
+    frame = 1 / stream.fps
+    late = [(i, t, at) for i, (t, at) in sent_at.items() if at - t > pause_wait_s + 0.02 + 2 * frame]
+    # speech frames wait for the next phone only by the join smoothing's reach; pauses by the wait
+    reach = config.settings("synthesize").smoothing_half_window / model.db.fps
+    assert all(at - t <= max(pause_wait_s, reach) + 0.02 + 2 * frame for _, t, at in late), late[:5]
+    # only the frames of the last pause_wait_s of audio wait for the end of the stream
+    assert sum(m["type"] == "frame" for m in end) <= np.ceil(pause_wait_s * stream.fps) + 2
