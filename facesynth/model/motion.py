@@ -117,6 +117,15 @@ class Motion:
                                     read(f, "provenance/smoothed").astype(bool), float(attr(v, "fps")))
             return search, provenance
 
+    def frame_provenance(self, path: Path):
+        """Where each output frame came from (a :class:`~facesynth.model.provenance.FrameProvenance`,
+        read from the motion at ``path``); None for a restyled motion, which records nothing."""
+        from .provenance import of_motion
+
+        search, prov = self.read_search(path) if self.source in ("synthesis", "trajectory") else (None, None)
+        return of_motion(search, prov, len(self.markers), self.fps, self.source, self.take, len(self.markers_capture),
+                         self.capture_fps)
+
     def head(self, path: Path) -> tuple[np.ndarray, np.ndarray]:
         """(rotations, translations) at the output rate; a clear error when there is none."""
         if self.head_rotation is None:
