@@ -100,7 +100,7 @@ def test_player_in_headless_chromium(page, tmp_path):
 
     # the timeline: every phone with its emotion, and the take and node it came from
     search, provenance = Motion.read_search(page / "m.h5")
-    phones = re.findall(r'<div class="phone"[^>]*data-take="([^"]*)" data-node="(-?\d+)"[^>]*>([^<]*)<small>([^<]*)</small>', dom)
+    phones = re.findall(r'<div class="phone[^"]*"[^>]*data-take="([^"]*)" data-node="(-?\d+)"[^>]*>([^<]*)<small>([^<]*)</small>', dom)
     assert [p[2] for p in phones] == search.phone and [p[3] for p in phones] == search.emotion
     assert [int(p[1]) for p in phones] == [int(n) for n in search.node]
     for (take, _, phone, _), step in zip(phones, range(len(phones))):
