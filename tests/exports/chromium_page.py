@@ -43,7 +43,7 @@ class ChromiumPage:
             port = int(port_file.read_text().split()[0])
             targets = json.loads(urllib.request.urlopen(f"http://127.0.0.1:{port}/json/list", timeout=10).read())
             page = next(t for t in targets if t["type"] == "page")
-            self.cdp = connect(page["webSocketDebuggerUrl"], max_size=None)
+            self.cdp = connect(page["webSocketDebuggerUrl"], max_size=None).__enter__()
             while self.evaluate("document.body && document.body.dataset.ready") != "1":
                 if time.monotonic() - start > timeout_s:
                     raise RuntimeError(f"the page did not get ready: {self.evaluate('document.body.innerText')}")
