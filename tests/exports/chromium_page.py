@@ -20,7 +20,7 @@ CHROMIUM = shutil.which("chromium")
 
 
 class ChromiumPage:
-    """``url`` in a headless Chromium with a ``width`` x ``height`` window (SwiftShader WebGL);
+    """``url`` in a headless Chromium with a ``width`` x ``height`` viewport (SwiftShader WebGL);
     a context manager that ends the browser it started."""
 
     def __init__(self, url: str, profile: Path, width: int = 900, height: int = 800, timeout_s: float = 60.0):
@@ -44,6 +44,7 @@ class ChromiumPage:
             targets = json.loads(urllib.request.urlopen(f"http://127.0.0.1:{port}/json/list", timeout=10).read())
             page = next(t for t in targets if t["type"] == "page")
             self.cdp = connect(page["webSocketDebuggerUrl"], max_size=None).__enter__()
+            self.call("Emulation.setDeviceMetricsOverride", width=width, height=height, deviceScaleFactor=1, mobile=False)
             while self.evaluate("document.body && document.body.dataset.ready") != "1":
                 if time.monotonic() - start > timeout_s:
                     raise RuntimeError(f"the page did not get ready: {self.evaluate('document.body.innerText')}")
