@@ -32,8 +32,6 @@ import tempfile
 import time
 from pathlib import Path
 
-import numpy as np
-
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "tests" / "exports"))
 from chromium_page import CHROMIUM, ChromiumPage  # noqa: E402
 from render_fps import FPS, animation, speaking_weights  # noqa: E402

@@ -118,3 +118,16 @@ def test_usd_custom_data_carries_the_provenance(chain, name):
     assert list(data["node"]) == node.tolist()
     assert list(data["segment_phone"]) == search.phone and list(data["segment_node"]) == search.node.tolist()
     assert data["origin"] == "synthesis"
+
+
+def test_the_player_labels_a_capture_with_its_take_and_a_synthesis_with_its_phones(chain, held_out_take):
+    from facesynth.exports.animation import load
+    from facesynth.exports.player import payload
+
+    captured = payload(load(chain / "cap_c.h5"))
+    assert captured["phones"] == [] and [r["emotion"] for r in captured["take_runs"]] == [held_out_take]
+    assert captured["take_runs"][0]["end"] == pytest.approx(captured["duration"])
+    synthesized = payload(load(chain / "a.h5"))  # a deformed mesh: its phones from its own provenance
+    search, _ = Motion.read_search(chain / "m.h5")
+    assert [p["phone"] for p in synthesized["phones"]] == search.phone and synthesized["take_runs"] == []
+    assert synthesized["frame_provenance"]["phone"] == _expected(chain / "m.h5")[2]
