@@ -43,7 +43,14 @@ def made(tiny_db, tiny_corpus, held_out_take, tmp_path_factory):
     turned = dataclasses.replace(c, head_rotation=Rotation.from_euler("y", yaw[:, None], degrees=True).as_matrix().astype(np.float32),
                                  head_translation=np.zeros((c.n_frames, 3), np.float32))
     turned.write(d / "turned.h5", config="{}", inputs=[d / "c.h5"])
-    for name in ("c", "turned"):
+    # and with both eyes looking toward +x in the first half and toward -x in the second
+    w = c.weights.copy()
+    half = c.n_frames // 2
+    for name, first, second in (("eyeLookOut_L", 1, 0), ("eyeLookIn_R", 1, 0), ("eyeLookIn_L", 0, 1), ("eyeLookOut_R", 0, 1)):
+        k = c.shape_names.index(name)
+        w[:half, k], w[half:, k] = 0.6 * first, 0.6 * second
+    dataclasses.replace(c, weights=w).write(d / "gaze.h5", config="{}", inputs=[d / "c.h5"])
+    for name in ("c", "turned", "gaze"):
         player.run(d / f"{name}.h5", d / f"{name}.html")
     return d
 
@@ -185,3 +192,20 @@ def test_the_timeline_is_the_synthesized_path(made, page):
         assert int(state["phone"]) == anim.provenance.step[frame] and state["phoneName"] == anim.provenance.phone[frame]
         current = page.evaluate("[...document.querySelectorAll('#timeline .phone.current')].map((d) => Number(d.dataset.index))")
         assert current == [int(state["phone"])]
+
+
+def test_the_eyes_follow_the_gaze(made, tmp_path):
+    c = RigCurves.read(made / "gaze.h5")
+    pupils = []
+    with ChromiumPage((made / "gaze.html").as_uri() + "#head=0", tmp_path / "profile", WIDTH, HEIGHT) as p:
+        for f in (c.n_frames // 4, 3 * c.n_frames // 4):
+            img, state = _view(p, (f + 0.5) / c.fps)
+            centres = []
+            for xy in np.array(state["eyes"].split(), float).reshape(2, 2):
+                x0, y0 = (int(round(v)) - 12 for v in xy)
+                box = img[y0:y0 + 25, x0:x0 + 25].mean(axis=2)
+                ys, xs = np.nonzero(box < np.percentile(box, 8))  # the pupil and the iris's dark ring
+                centres.append(x0 + xs.mean())
+            pupils.append(centres)
+    # looking toward +x (the subject's left, the screen's right in render's view), then toward -x
+    assert all(a - b > 5 for a, b in zip(*pupils))  # (13 to 14 px at this size)
