@@ -101,9 +101,8 @@ def payload(anim: Exportable, audio: Path | None = None, view: RenderSettings | 
     """The page's data: rest pose, faces, quantized targets, per-frame weights; for a mesh the
     procedural parts and per-vertex materials (``face``); the camera of ``view`` (``render``'s
     settings: fov_deg, yaw_deg, pitch_deg; None: the default configuration's) and the renderer's
-    shading parameters; the head motion;
-    the timeline (phones, or runs of one emotion or take without phones) with the per-frame
-    provenance; and the audio as a data URI."""
+    shading parameters; the head motion; the timeline (phones, or runs of one emotion or take
+    without phones) with the per-frame provenance; and the audio as a data URI."""
     if anim.weights is not None:
         rest = anim.rest
         targets = anim.rig.deltas.reshape(len(anim.rig.deltas), -1)
