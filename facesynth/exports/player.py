@@ -165,7 +165,9 @@ def _face(anim: Exportable) -> dict:
     q, scale = quantize(targets)
     eyes = [list(e) for e in scene.eyeball_vertices]
     loop = scene.layout.mouth.loop if scene.layout.mouth is not None else np.zeros(0, np.int64)
-    return {"vertices": int(scene.n_vertices), "faces": _b64(np.asarray(scene.faces, np.uint32)),
+    index = np.uint16 if scene.n_vertices <= 65536 else np.uint32  # half the bytes for a mesh of up to 65,536 vertices
+    return {"vertices": int(scene.n_vertices), "faces": _b64(np.asarray(scene.faces, index)),
+            "index_bits": 8 * np.dtype(index).itemsize,
             "skin_triangles": int(len(anim.faces)),
             "albedo": _b64(np.asarray(scene.albedo, np.float32)), "eye": _b64(np.asarray(scene.eye, np.float32)),
             "parts_rest": _b64(np.asarray(parts_rest, np.float32)), "targets": [_b64(row) for row in q],
