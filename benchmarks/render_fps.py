@@ -44,8 +44,9 @@ from facesynth.stages import render
 FPS = 30.0
 
 
-def animation(frames: int) -> MeshAnimation:
-    """The rig moved by sine-driven weights, with a gaze track from its eyeLook weights."""
+def speaking_weights(frames: int) -> np.ndarray:
+    """(frames, E) rig weights at :data:`FPS`: jaw, lips and smile on sines, a blink every 2 s and
+    a gaze sweep."""
     rig = load_face_rig()
     t = np.arange(frames) / FPS
     w = np.zeros((frames, len(rig.shape_names)))
@@ -56,6 +57,13 @@ def animation(frames: int) -> MeshAnimation:
         w[:, rig.shape_index(f"eyeBlink_{side}")] = np.exp(-(((t % 2.0) - 1.0) / 0.05) ** 2)
         w[:, rig.shape_index(f"eyeLookUp_{side}")] = 0.3 * np.maximum(np.sin(2 * np.pi * 0.4 * t), 0)
     w[:, rig.shape_index("eyeLookOut_L")] = w[:, rig.shape_index("eyeLookIn_R")] = 0.4 * np.maximum(np.sin(2 * np.pi * 0.25 * t), 0)
+    return w
+
+
+def animation(frames: int) -> MeshAnimation:
+    """The rig moved by :func:`speaking_weights`, with a gaze track from its eyeLook weights."""
+    rig = load_face_rig()
+    w = speaking_weights(frames)
     vertices = rig.evaluate(w).astype(np.float32)
     weights = sparse.csr_matrix((len(rig.neutral), 1), dtype=np.float32)
     return MeshAnimation(vertices, FPS, rig.neutral.astype(np.float32), rig.faces,

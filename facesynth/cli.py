@@ -133,7 +133,7 @@ READS: dict[str, tuple[str, ...]] = {
     "expression restyle": ("expression", "ingest"),
     "head-motion": ("head_motion",),
     "export": ("export",),
-    "player": (),
+    "player": ("render",),
     "stream": ("stream", "synthesize", "align", "solve"),
 }
 # Every command reads the input bounds (facesynth.limits).
@@ -891,7 +891,8 @@ def player(ctx: Context, artifact: Path | None, audio: Path | None, motion: Path
                 f"{s['seconds']:.2f} s of speech to send) -> {output} ({s['bytes'] / 1e6:.1f} MB)")
         return
     assert artifact is not None
-    s = stage.run(artifact, output, audio=audio, motion=motion, overwrite=ctx.overwrite)
+    s = stage.run(artifact, output, audio=audio, motion=motion, view=ctx.config.settings("render"),
+                  overwrite=ctx.overwrite)
     ctx.say(f"player of {s['frames']} frames ({s['seconds']:.2f} s at {s['fps']:g} frames/s, "
             f"{s['phones']} phones) -> {output} ({s['bytes'] / 1e6:.1f} MB)")
 

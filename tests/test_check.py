@@ -377,3 +377,17 @@ def test_quiet_prints_only_problems_and_usage_errors_exit_2(written, tmp_path):
 def test_help_shows_a_runnable_example():
     result = CliRunner().invoke(main, ["check", "--help"])
     assert result.exit_code == 0 and "facesynth check corpus.h5 db.h5 motion.h5" in result.output
+
+
+def test_a_damaged_frame_provenance_is_reported(written, tmp_path):
+    def damage(f):
+        _replace(f, "provenance/node", f["provenance/node"][:-1])
+        del f["provenance/segments/start"]
+        f["provenance"].attrs["origin"] = "guess"
+
+    path = _damaged(written, tmp_path, "retargeted", damage)
+    status, lines = _check(path)
+    assert status == 1
+    text = "\n".join(lines)
+    assert "/provenance/node" in text and "/provenance/segments/start: missing required dataset" in text
+    assert "origin" in text

@@ -316,7 +316,8 @@ def _mesh_outputs(line: Line, job: Job, motion, motion_path: Path, outputs: dict
     head = motion.head(motion_path) if job.deform.apply_head_motion else None
     frames, fit = animate(bound, motion.markers, motion.marker_names, motion.reference, head)
     anim = MeshAnimation(frames, motion.fps, bound.rest, bound.faces, motion.markers, motion.marker_names,
-                         bound.weights, bound.markers, bound.vertex_of, fit["fit_rms"])
+                         bound.weights, bound.markers, bound.vertex_of, fit["fit_rms"],
+                         provenance=motion.frame_provenance(motion_path))
     anim_path = outputs.get("anim") or job.out_dir / f"{line.id}.anim.h5.part-{os.getpid()}"
     anim.write(anim_path, config=settings_json(job.deform), inputs=[motion_path, job.mesh, job.binding],
                overwrite=True)

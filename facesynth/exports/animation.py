@@ -1,6 +1,7 @@
 """One view of every exportable artifact: marker motion, mesh animation or rig curves, with
-what each carries (markers, a mesh, rig weights, head motion, gaze, emotion, the search path)
-and what it does not, so a format that needs something missing can say what to run first."""
+what each carries (markers, a mesh, rig weights, head motion, gaze, emotion, where each frame
+came from) and what it does not, so a format that needs something missing can say what to run
+first."""
 
 from __future__ import annotations
 
@@ -12,23 +13,14 @@ import numpy as np
 from ..artifacts import PRODUCERS, artifact_kind
 from ..errors import InputError
 from ..facerig import BUILTIN_RIG_NAME, Rig, builtin_rig_sha256, load_face_rig
+from ..model.provenance import FrameProvenance, PhoneSegment
 
 #: Artifact kinds ``facesynth export`` and ``facesynth player`` read.
 EXPORTABLE = ("motion", "meshanim", "curves")
 
 
-@dataclass
-class Phone:
-    """One phone of a synthesized utterance, for the player's timeline: ``start``/``end`` s,
-    the phone and emotion asked for, and where its motion came from (database node and take;
-    -1 and '' when not known)."""
-
-    phone: str
-    emotion: str
-    start: float
-    end: float
-    node: int = -1
-    take: str = ""
+#: One phone of a synthesized utterance, for the player's timeline (the provenance's segments).
+Phone = PhoneSegment
 
 
 @dataclass
@@ -45,6 +37,7 @@ class Exportable:
     head_rotation : (T, 3, 3), head_translation : (T, 3) mm, ``x -> R @ x + t`` (motion, curves).
     gaze : (T, 2, 2) radians, per eye (+x eye first) yaw toward +x and pitch up; None if unknown.
     emotion : T per-frame emotion names or None; phones : the synthesized utterance's phones.
+    provenance : where each frame came from (phone, emotion, node, take), or None.
     """
 
     kind: str
@@ -63,6 +56,7 @@ class Exportable:
     gaze: np.ndarray | None = None
     emotion: list[str] | None = None
     phones: list[Phone] = field(default_factory=list)
+    provenance: FrameProvenance | None = None
 
     @property
     def duration_s(self) -> float:
@@ -97,7 +91,7 @@ class Exportable:
     def resampled(self, fps: float) -> "Exportable":
         """This animation at ``fps`` frames/s over the same duration: weights, vertices, markers
         and gaze interpolated linearly, head rotations by spherical interpolation, emotion by the
-        nearest earlier frame. Returns self when the rate is unchanged."""
+        nearest earlier frame, the provenance by the nearest frame. Returns self when the rate is unchanged."""
         if abs(fps - self.fps) < 1e-9 * self.fps:
             return self
         n = max(1, int(np.floor(self.duration_s * fps + 1e-6)))
@@ -125,28 +119,20 @@ class Exportable:
                 rotation = np.repeat(self.head_rotation[:1], n, axis=0)
         return replace(self, fps=float(fps), n_frames=n, markers=lerp(self.markers), vertices=lerp(self.vertices),
                        weights=lerp(self.weights), head_rotation=rotation, head_translation=lerp(self.head_translation),
-                       gaze=lerp(self.gaze), emotion=None if self.emotion is None else [self.emotion[i] for i in lo])
+                       gaze=lerp(self.gaze), emotion=None if self.emotion is None else [self.emotion[i] for i in lo],
+                       provenance=None if self.provenance is None else self.provenance.resampled(n, self.fps, fps))
 
 
-def _phones_of(path: Path, fps: float, n_frames: int) -> tuple[list[Phone], list[str] | None]:
-    """The synthesized phones of the motion at ``path`` with the node and take each came from
-    (the take most of its frames came from), and the per-frame emotion; ([], None) for a capture."""
-    from ..model.motion import Motion
-
-    search, provenance = Motion.read_search(path)
-    if search is None:
-        return [], None
-    phones = []
-    for i in range(len(search.phone)):
-        rows = np.flatnonzero((provenance.step == i) & (provenance.node >= 0))
-        node, take = int(search.node[i]), ""
-        if len(rows):
-            takes = provenance.take[rows]
-            take = provenance.take_names[int(np.bincount(takes).argmax())]
-        phones.append(Phone(search.phone[i], search.emotion[i], float(search.start[i]), float(search.end[i]), node, take))
-    frame_t = np.arange(n_frames) / fps
-    which = np.clip(np.searchsorted(search.start, frame_t, side="right") - 1, 0, len(search.emotion) - 1)
-    return phones, [search.emotion[i] for i in which]
+def _labelled(out: Exportable, provenance: FrameProvenance | None) -> Exportable:
+    """``out`` with ``provenance`` (made at ``out``'s rate or resampled to it): the phones of its
+    timeline and, where the artifact has none of its own, the per-frame emotion."""
+    if provenance is None:
+        return out
+    out.provenance = provenance.fitted(out.n_frames)
+    out.phones = list(provenance.segments)
+    if out.emotion is None and provenance.segments:
+        out.emotion = list(out.provenance.emotion)
+    return out
 
 
 def load(path: Path, motion: Path | None = None) -> Exportable:
@@ -166,8 +152,7 @@ def load(path: Path, motion: Path | None = None) -> Exportable:
         m = Motion.read(path)
         out = Exportable("motion", path, m.fps, len(m.markers), markers=m.markers, marker_names=list(m.marker_names),
                          head_rotation=m.head_rotation, head_translation=m.head_translation)
-        out.phones, out.emotion = _phones_of(path, m.fps, len(m.markers))
-        return out
+        return _labelled(out, m.frame_provenance(path))
     if kind == "meshanim":
         from ..model.meshanim import MeshAnimation
 
@@ -177,7 +162,7 @@ def load(path: Path, motion: Path | None = None) -> Exportable:
                              "make the mesh animation again with `facesynth deform`.")
         out = Exportable("meshanim", path, a.fps, len(a.vertices), markers=a.markers, marker_names=list(a.marker_names),
                          rest=a.rest.astype(np.float64), faces=a.faces.astype(np.int64), vertices=a.vertices,
-                         gaze=a.gaze)
+                         gaze=a.gaze, provenance=a.provenance)
     else:
         from ..model.curves import RigCurves
         from ..rendering.parts import gaze_from_rig_weights
@@ -198,15 +183,17 @@ def load(path: Path, motion: Path | None = None) -> Exportable:
             weights = c.weights
         out = Exportable("curves", path, c.fps, c.n_frames, rest=rig.neutral, faces=rig.faces, weights=weights, rig=rig,
                          head_rotation=c.head_rotation, head_translation=c.head_translation,
-                         gaze=gaze_from_rig_weights(weights, rig.shape_names), emotion=c.emotion)
+                         gaze=gaze_from_rig_weights(weights, rig.shape_names), emotion=c.emotion,
+                         provenance=c.provenance)
     if motion is not None:
+        from ..model.motion import Motion
+
         if artifact_kind(Path(motion)) != "motion":
             raise InputError(f"{motion}: is not a motion artifact; pass the output of `{PRODUCERS['motion']}`.")
-        phones, emotion = _phones_of(Path(motion), out.fps, out.n_frames)
-        out.phones = phones
-        if out.emotion is None:
-            out.emotion = emotion
-    return out
+        m = Motion.read(Path(motion))
+        given = m.frame_provenance(Path(motion))
+        return _labelled(out, None if given is None else given.resampled(out.n_frames, m.fps, out.fps))
+    return _labelled(out, out.provenance)
 
 
 def use_mesh(anim: Exportable, mesh: Path) -> Exportable:

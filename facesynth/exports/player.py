@@ -13,10 +13,21 @@ The animation is stored as morph targets, compact and exact where it can be:
 * marker motion: the same for the markers, drawn as points.
 
 Targets are quantized to int16 with one scale per target (error at most half a step: the
-largest offset / 65534). The page shows the frame count and duration, play/pause, a scrub bar,
-the phones with their emotion on a timeline under the view and, for synthesized motion, the take
-and database node each phone came from. Head motion is not played (the face stays in its head
-frame, as the renderer draws it).
+largest offset / 65534).
+
+A mesh is drawn whole, as ``facesynth render`` draws it (:mod:`facesynth.rendering`): the
+eyeballs (turning with the gaze where the animation carries one), mouth cavity, teeth and tongue
+of :func:`~facesynth.rendering.parts.build_scene` are one more set of vertices, placed for every
+frame by :meth:`~facesynth.rendering.parts.FaceScene.positions` and sent like a mesh animation
+(principal components, int16); every vertex carries the renderer's albedo, specular strength and
+eye attribute, and the page shades with the renderer's lights and parameters
+(:func:`~facesynth.rendering.raster.shading_params`) and frames the face with its camera
+(``render.fov_deg``, ``yaw_deg``, ``pitch_deg``, :func:`~facesynth.rendering.parts.face_focus`).
+The head motion a motion or curves carry (``x -> R @ x + t``) moves the whole head group.
+
+The page shows the frame count and duration, play/pause, a scrub bar, and for an artifact made
+from a synthesis a timeline of its phones with their emotion, database node and take (the
+artifact's provenance, or ``--motion``'s), the current phone highlighted.
 
 A live page (:func:`live_payload`) holds the built-in rig with its 52 ARKit blendshapes as
 morph targets and connects to a ``facesynth stream --serve`` WebSocket: it sends its speech as
@@ -34,7 +45,14 @@ from pathlib import Path
 
 import numpy as np
 
+from ..config import Config, RenderSettings
+from ..rendering.camera import framing
+from ..rendering.parts import build_scene, face_focus
+from ..rendering.raster import BACKGROUND, shading_params
 from .animation import Exportable
+
+#: Frames placed at once when the procedural parts are built (bounds the posed skins in memory).
+PART_BLOCK = 64
 
 #: Largest number of principal components kept for a mesh animation or marker motion.
 MAX_COMPONENTS = 96
@@ -79,36 +97,83 @@ def principal_targets(frames: np.ndarray, rest: np.ndarray) -> tuple[np.ndarray,
     return basis, d @ basis.T
 
 
-def payload(anim: Exportable, audio: Path | None = None) -> dict:
-    """The page's data: rest pose, faces, quantized targets, per-frame weights, the timeline
-    (phones, or emotion runs without phones) and the audio as a data URI."""
+def payload(anim: Exportable, audio: Path | None = None, view: RenderSettings | None = None) -> dict:
+    """The page's data: rest pose, faces, quantized targets, per-frame weights; for a mesh the
+    procedural parts and per-vertex materials (``face``); the camera of ``view`` (``render``'s
+    settings: fov_deg, yaw_deg, pitch_deg; None: the default configuration's) and the renderer's
+    shading parameters; the head motion; the timeline (phones, or runs of one emotion or take
+    without phones) with the per-frame provenance; and the audio as a data URI."""
     if anim.weights is not None:
         rest = anim.rest
         targets = anim.rig.deltas.reshape(len(anim.rig.deltas), -1)
         weights = anim.weights
         names = list(anim.rig.shape_names)
-        faces = anim.faces
     else:
         frames = anim.vertices if anim.vertices is not None else anim.markers
         rest = anim.rest if anim.rest is not None else np.nanmean(anim.markers, axis=0)
         targets, weights = principal_targets(frames, rest)
         names = [f"pc{k + 1}" for k in range(len(targets))]
-        faces = anim.faces
+    if view is None:
+        view = Config.load().settings("render")
     q, scale = quantize(targets)
+    face = _face(anim) if anim.faces is not None else None
+    focus = face.pop("focus") if face is not None else None
+    centre, radius = framing(np.asarray(rest, np.float64), focus)
+    prov = anim.provenance
     data = {
         "kind": anim.kind, "source": Path(anim.path).name, "fps": anim.fps, "frames": anim.n_frames,
         "duration": anim.duration_s, "rest": _b64(np.asarray(rest, np.float32)), "vertices": int(len(rest)),
-        "faces": _b64(np.asarray(faces, np.uint32)) if faces is not None else "",
+        "faces": "",  # a mesh's triangles are in face["faces"], the skin's first
         "targets": [_b64(row) for row in q], "scales": [float(s) for s in scale], "target_names": names,
-        "weights": _b64(np.asarray(weights, np.float32)),
+        "weights": _b64(np.asarray(weights, np.float32)), "face": face,
+        "camera": {"target": [float(x) for x in centre], "radius": radius, "fov": view.fov_deg, "yaw": view.yaw_deg,
+                   "pitch": view.pitch_deg},
+        "shading": [float(x) for x in shading_params()], "background": list(BACKGROUND),
+        "head": None,
         "phones": [{"phone": p.phone, "emotion": p.emotion, "start": p.start, "end": p.end, "node": p.node, "take": p.take}
                    for p in anim.phones],
+        "frame_provenance": prov.to_json()["frames"] if prov is not None else None,
         "emotion_runs": _runs(anim.emotion, anim.fps) if not anim.phones and anim.emotion else [],
+        "take_runs": _runs(prov.take, anim.fps) if prov is not None and not anim.phones else [],
         "audio": "",
     }
+    if anim.head_rotation is not None:
+        data["head"] = {"rotation": _b64(np.asarray(anim.head_rotation, np.float32).reshape(-1, 9)),
+                        "translation": _b64(np.asarray(anim.head_translation, np.float32).reshape(-1, 3))}
     if audio is not None:
         data["audio"] = _wav_uri(*_read_audio(audio))
     return data
+
+
+def _face(anim: Exportable) -> dict:
+    """The whole face of a mesh animation or curves, as the renderer builds it: all faces (skin
+    first), per-vertex albedo (linear RGB and specular strength) and eye attribute, the parts'
+    rest positions and their motion as quantized principal targets, where the eyeballs and the
+    mouth loop are (for the page's state), the parts left out and why, and the focus sphere."""
+    rest = np.asarray(anim.rest, np.float64)
+    scene = build_scene(rest, anim.faces)
+    n_skin, n_parts = scene.n_skin, scene.n_vertices - scene.n_skin
+    parts_rest = scene.positions(rest)[n_skin:]
+    frames = np.empty((anim.n_frames, n_parts, 3), np.float32)
+    for start in range(0, anim.n_frames if n_parts else 0, PART_BLOCK):
+        skins = anim.mesh_frames(start, min(start + PART_BLOCK, anim.n_frames))
+        for k, skin in enumerate(skins):
+            gaze = anim.gaze[start + k] if anim.gaze is not None else None
+            skin = np.where(np.isfinite(skin), skin, rest)  # a capture's gaps: the rest pose there
+            frames[start + k] = scene.positions(skin, gaze)[n_skin:]
+    targets, weights = principal_targets(frames, parts_rest) if n_parts else (np.zeros((0, 0)), np.zeros((anim.n_frames, 0)))
+    q, scale = quantize(targets)
+    eyes = [list(e) for e in scene.eyeball_vertices]
+    loop = scene.layout.mouth.loop if scene.layout.mouth is not None else np.zeros(0, np.int64)
+    index = np.uint16 if scene.n_vertices <= 65536 else np.uint32  # half the bytes for a mesh of up to 65,536 vertices
+    return {"vertices": int(scene.n_vertices), "faces": _b64(np.asarray(scene.faces, index)),
+            "index_bits": 8 * np.dtype(index).itemsize,
+            "skin_triangles": int(len(anim.faces)),
+            "albedo": _b64(np.asarray(scene.albedo, np.float32)), "eye": _b64(np.asarray(scene.eye, np.float32)),
+            "parts_rest": _b64(np.asarray(parts_rest, np.float32)), "targets": [_b64(row) for row in q],
+            "scales": [float(s) for s in scale], "weights": _b64(np.asarray(weights, np.float32)),
+            "eyes": eyes, "mouth_loop": _b64(np.asarray(loop, np.uint32)), "notes": list(scene.notes),
+            "focus": face_focus(scene)}
 
 
 def _read_audio(path: Path) -> tuple[np.ndarray, int]:

@@ -13,6 +13,12 @@ Units and axes: facesynth's own, stated in the stage metadata: millimetres
 counter-clockwise faces seen from outside. Time: frame i at time code i,
 ``timeCodesPerSecond`` = ``framesPerSecond`` = the animation's rate, ``startTimeCode`` 0 and
 ``endTimeCode`` T - 1.
+
+Provenance: where each frame came from is in ``/Face``'s ``customData`` under
+``facesynth:provenance`` (a dictionary: ``origin``, ``resampling``, per time code the arrays
+``phone``, ``emotion``, ``node``, ``take``, ``source_frame``, ``step``, and the utterance's phones
+as ``segment_phone``, ``segment_emotion``, ``segment_start`` and ``segment_end`` in seconds,
+``segment_node``, ``segment_take``).
 """
 
 from __future__ import annotations
@@ -69,10 +75,31 @@ def _head(prim_xform, head_rotation: np.ndarray, head_translation: np.ndarray) -
         op.Set(Gf.Matrix4d(m.tolist()), float(i))
 
 
+def _provenance(prim, provenance) -> None:
+    """Put a :class:`~facesynth.model.provenance.FrameProvenance` into ``prim``'s customData."""
+    from pxr import Vt
+
+    key = "facesynth:provenance:"
+    f = provenance.to_json()
+    prim.SetCustomDataByKey(key + "origin", f["origin"])
+    prim.SetCustomDataByKey(key + "resampling", f["resampling"])
+    for name, values in f["frames"].items():
+        array = Vt.StringArray(values) if name in ("phone", "emotion", "take") else Vt.IntArray(values)
+        prim.SetCustomDataByKey(key + name, array)
+    segments = f["phones"]
+    for name in ("phone", "emotion", "take"):
+        prim.SetCustomDataByKey(key + "segment_" + name, Vt.StringArray([s[name] for s in segments]))
+    for name in ("start", "end"):
+        prim.SetCustomDataByKey(key + "segment_" + name, Vt.DoubleArray([s[name] for s in segments]))
+    prim.SetCustomDataByKey(key + "segment_node", Vt.IntArray([s["node"] for s in segments]))
+
+
 def write_points(path: Path, rest: np.ndarray, faces: np.ndarray, frames, n_frames: int, fps: float,
-                 head_rotation: np.ndarray | None = None, head_translation: np.ndarray | None = None) -> None:
+                 head_rotation: np.ndarray | None = None, head_translation: np.ndarray | None = None,
+                 provenance=None) -> None:
     """A mesh with time-sampled points. rest : (V, 3) mm; faces : (F, 3); frames : a function
-    (start, stop) -> (n, V, 3) mm giving the animation in blocks (memory stays one block)."""
+    (start, stop) -> (n, V, 3) mm giving the animation in blocks (memory stays one block);
+    provenance : optional FrameProvenance of the frames."""
     from pxr import UsdGeom, Vt
 
     stage = _stage(path, fps, n_frames)
@@ -90,11 +117,14 @@ def write_points(path: Path, rest: np.ndarray, faces: np.ndarray, frames, n_fram
     mesh.GetExtentAttr().Set(Vt.Vec3fArray.FromNumpy(np.stack([lo, hi]).astype(np.float32)))
     if head_rotation is not None:
         _head(root, head_rotation, head_translation)
+    if provenance is not None:
+        _provenance(root.GetPrim(), provenance)
     stage.GetRootLayer().Save()
 
 
 def write_blendshapes(path: Path, rest: np.ndarray, faces: np.ndarray, deltas: np.ndarray, shape_names, weights: np.ndarray,
-                      fps: float, head_rotation: np.ndarray | None = None, head_translation: np.ndarray | None = None) -> None:
+                      fps: float, head_rotation: np.ndarray | None = None, head_translation: np.ndarray | None = None,
+                      provenance=None) -> None:
     """The rig as UsdSkelBlendShapes driven by a SkelAnimation. rest : (V, 3) mm; deltas :
     (E, V, 3) mm; weights : (T, E) in [0, 1]. Each shape stores only the vertices it moves
     (``pointIndices``), as UsdSkel allows."""
@@ -129,4 +159,6 @@ def write_blendshapes(path: Path, rest: np.ndarray, faces: np.ndarray, deltas: n
     binding.CreateBlendShapeTargetsRel().SetTargets(targets)
     if head_rotation is not None:
         _head(UsdGeom.Xformable(root.GetPrim()), head_rotation, head_translation)
+    if provenance is not None:
+        _provenance(root.GetPrim(), provenance)
     stage.GetRootLayer().Save()

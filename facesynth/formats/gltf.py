@@ -13,7 +13,10 @@ frame is the same but in millimetres, so every position and morph-target offset 
 ``x -> R @ x + t`` of the curves. Target names are in ``mesh.extras.targetNames`` (read by
 Blender and three.js). glTF has no ratified audio: the WAV is copied beside the file and named
 in the animation's ``extras.audio`` (``uri``, ``mimeType``, ``startTime_s``), which the
-validator ignores and a player can read.
+validator ignores and a player can read. Where each frame came from (phone, emotion, database
+node, take: :class:`~facesynth.model.provenance.FrameProvenance`) is in the animation's
+``extras.facesynth_provenance``: ``frames`` (one list per field, one entry per keyframe) and
+``phones`` (the utterance's phones with start and end in seconds).
 """
 
 from __future__ import annotations
@@ -78,12 +81,13 @@ class _Blob:
 
 def build(rest_mm: np.ndarray, faces: np.ndarray, deltas_mm: np.ndarray, target_names, times_s: np.ndarray,
           weights: np.ndarray, head_rotation: np.ndarray | None = None, head_translation_mm: np.ndarray | None = None,
-          audio_uri: str | None = None, name: str = "face"):
+          audio_uri: str | None = None, name: str = "face", provenance=None):
     """A pygltflib ``GLTF2`` (buffer not yet attached; see :func:`write`) and its binary buffer.
 
     rest_mm : (V, 3) mm; faces : (F, 3) int; deltas_mm : (E, V, 3) mm morph targets named
     ``target_names``; times_s : (T,) s; weights : (T, E) in [0, 1]; head_rotation : optional
-    (T, 3, 3), head_translation_mm : (T, 3) mm; audio_uri : the WAV's file name beside the file."""
+    (T, 3, 3), head_translation_mm : (T, 3) mm; audio_uri : the WAV's file name beside the file;
+    provenance : optional :class:`~facesynth.model.provenance.FrameProvenance` of the T frames."""
     from pygltflib import (
         GLTF2,
         Animation,
@@ -135,6 +139,8 @@ def build(rest_mm: np.ndarray, faces: np.ndarray, deltas_mm: np.ndarray, target_
     extras: dict[str, object] = {"fps": float(1.0 / np.median(np.diff(times))) if len(times) > 1 else None}
     if audio_uri:
         extras["audio"] = {"uri": audio_uri, "mimeType": "audio/wav", "startTime_s": 0.0}
+    if provenance is not None:
+        extras["facesynth_provenance"] = provenance.to_json()
     gltf.animations.append(Animation(name=f"{name} animation", samplers=samplers, channels=channels, extras=extras))
     data = blob.bytes()
     gltf.buffers.append(Buffer(byteLength=len(data)))

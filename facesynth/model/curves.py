@@ -12,6 +12,7 @@ import numpy as np
 
 from ..artifacts import attr, open_artifact, read, read_strings, write_artifact, write_strings
 from ..errors import InputError
+from .provenance import FrameProvenance
 
 #: What made the curves: a direct solve, key-shape retargeting, a take's true weights, or a file
 #: of weights given by the user.
@@ -36,6 +37,7 @@ class RigCurves:
         the weights (NaN where a frame had no markers).
     method : free text saying how (e.g. ``deformation-gradient``, ``linear``, the key-shape
         selection), empty when nothing more is to say.
+    provenance : optional, where each of the T frames came from (phone, emotion, node, take).
     """
 
     weights: np.ndarray
@@ -50,6 +52,7 @@ class RigCurves:
     intensity: np.ndarray | None = None
     residual: np.ndarray | None = None
     method: str = ""
+    provenance: FrameProvenance | None = None
 
     KIND = "curves"
 
@@ -83,7 +86,7 @@ class RigCurves:
                        read_strings(f, "emotion") if "emotion" in f else None,
                        read(f, "intensity") if "intensity" in f else None,
                        read(f, "residual") if "residual" in f else None,
-                       str(f.attrs.get("method", "")))
+                       str(f.attrs.get("method", "")), FrameProvenance.read(f))
 
     def write(self, out: Path, *, config: str, inputs, overwrite: bool = False) -> None:
         """Write a ``curves`` artifact to ``out``."""
@@ -103,3 +106,5 @@ class RigCurves:
             if self.residual is not None:
                 r = g.create_dataset("residual", data=np.asarray(self.residual, np.float32))
                 r.attrs["units"] = "mm"
+            if self.provenance is not None:
+                self.provenance.fitted(self.n_frames).write(g)

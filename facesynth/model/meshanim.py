@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..artifacts import attr, open_artifact, read, read_strings, stamp, write_artifact, write_strings
+from .provenance import FrameProvenance
 
 if TYPE_CHECKING:
     from scipy import sparse
@@ -24,7 +25,8 @@ class MeshAnimation:
     marker-to-mesh similarity fit, mesh units; gaze : optional (T, 2, 2) float32 radians, per
     frame (yaw, pitch) of the eye at +x (the subject's left) and of the eye at -x, yaw turning
     the gaze toward +x and pitch up; NaN (or None) where the gaze is not known, e.g. from
-    marker motion, and the renderer's eyes then look straight ahead."""
+    marker motion, and the renderer's eyes then look straight ahead; provenance : optional,
+    where each frame came from (phone, emotion, node, take)."""
 
     vertices: np.ndarray
     fps: float
@@ -37,6 +39,7 @@ class MeshAnimation:
     vertex_of: np.ndarray | None = None
     fit_rms: float = float("nan")
     gaze: np.ndarray | None = None
+    provenance: FrameProvenance | None = None
 
     KIND = "meshanim"
 
@@ -47,7 +50,7 @@ class MeshAnimation:
             return cls(read(f, "vertices"), float(attr(f["vertices"], "fps")), read(f, "rest"),
                        read(f, "faces").astype(np.int64), read(f, "markers"), read_strings(f, "marker_names"),
                        fit_rms=float(f.attrs.get("fit_rms", np.nan)),
-                       gaze=read(f, "gaze") if "gaze" in f else None)
+                       gaze=read(f, "gaze") if "gaze" in f else None, provenance=FrameProvenance.read(f))
 
     def write(self, out: Path, *, config: str, inputs, overwrite: bool = False) -> None:
         """Write a ``meshanim`` artifact (with its deformation weights) to ``out``."""
@@ -70,3 +73,5 @@ class MeshAnimation:
             if self.gaze is not None:
                 gz = g.create_dataset("gaze", data=np.asarray(self.gaze, np.float32))
                 gz.attrs.update(fps=self.fps, units="radians")
+            if self.provenance is not None:
+                self.provenance.fitted(len(self.vertices)).write(g)

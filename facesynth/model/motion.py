@@ -10,45 +10,7 @@ import numpy as np
 
 from ..artifacts import attr, open_artifact, read, read_strings, stamp, write_artifact, write_strings
 from ..errors import InputError
-
-
-@dataclass
-class SearchPath:
-    """The search's choice, one row per input phone (T phones).
-
-    node : (T,) int64 chosen node; phone, emotion : asked; node_phone, node_emotion : chosen.
-    start, end : (T,) float64 s. costs : per term ("tc", "oc", "emp", "block"), (T,) float32.
-    total_cost : Eq. 4; non_captured_joins : joins without a captured link; search : "dp" or
-    "greedy"; device : where the search ran, device_reason : why there.
-    """
-
-    node: np.ndarray
-    phone: list[str]
-    emotion: list[str]
-    node_phone: list[str]
-    node_emotion: list[str]
-    start: np.ndarray
-    end: np.ndarray
-    costs: dict[str, np.ndarray]
-    total_cost: float
-    non_captured_joins: int
-    search: str
-    device: str
-    device_reason: str = ""
-
-
-@dataclass
-class Provenance:
-    """Per capture-rate frame (F frames at ``fps``): node, take row, source frame in the
-    database (-1: regenerated silence), input phone index, smoothed flag; and the take names."""
-
-    node: np.ndarray
-    take: np.ndarray
-    take_names: list[str]
-    source_frame: np.ndarray
-    step: np.ndarray
-    smoothed: np.ndarray
-    fps: float
+from .provenance import Provenance, SearchPath, of_motion
 
 
 @dataclass
@@ -116,6 +78,13 @@ class Motion:
                                     read(f, "provenance/step").astype(np.int64),
                                     read(f, "provenance/smoothed").astype(bool), float(attr(v, "fps")))
             return search, provenance
+
+    def frame_provenance(self, path: Path):
+        """Where each output frame came from (a :class:`~facesynth.model.provenance.FrameProvenance`,
+        read from the motion at ``path``); None for a restyled motion, which records nothing."""
+        search, prov = self.read_search(path) if self.source in ("synthesis", "trajectory") else (None, None)
+        return of_motion(search, prov, len(self.markers), self.fps, self.source, self.take, len(self.markers_capture),
+                         self.capture_fps)
 
     def head(self, path: Path) -> tuple[np.ndarray, np.ndarray]:
         """(rotations, translations) at the output rate; a clear error when there is none."""

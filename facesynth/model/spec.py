@@ -440,6 +440,29 @@ MOTION = Kind("motion", SCHEMAS["motion"], (
     variant_attr="source", variants=("synthesis", "capture", "restyle", "trajectory"),
     writers=("facesynth synthesize", "facesynth capture", "facesynth expression restyle"))
 
+FRAME_PROVENANCE = Group("provenance", "frame-provenance", (
+    "where each frame came from, carried from `facesynth synthesize` (its `path` and `provenance`); a frame made "
+    "at another rate than its source has the provenance of the nearest source frame. A captured take carries its "
+    "name and no phones; a restyled motion, and curves or meshes made without a motion, carry no group"), (
+    Dataset("phone", "str", ("Fo",), "the input phone the frame belongs to, empty where none is known"),
+    Dataset("emotion", "str", ("Fo",), "the emotion asked for that phone, empty where none is known"),
+    Dataset("node", "int64", ("Fo",), "source database node, -1 for regenerated silence, a trajectory or a capture",
+            ge=-1),
+    Dataset("take", "str", ("Fo",), "source take name, empty for regenerated silence"),
+    Dataset("source_frame", "int64", ("Fo",), "source frame (a synthesis: row of the database's frames; a capture: "
+            "frame of the take at its capture rate), -1 where none", ge=-1),
+    Dataset("step", "int64", ("Fo",), "the frame's row of `segments`, -1 without phones", ge=-1),
+    Group("segments", "phone-segments", "the synthesized utterance's phones (the motion's `path`)", (
+        Dataset("phone", "str", ("U",), "the phone asked for"),
+        Dataset("emotion", "str", ("U",), "the emotion asked for"),
+        Dataset("start", "float64", ("U",), "the phone's start", "s", (SECONDS,)),
+        Dataset("end", "float64", ("U",), "the phone's end", "s", (SECONDS,)),
+        Dataset("node", "int64", ("U",), "the chosen database node, -1 for none", ge=-1),
+        Dataset("take", "str", ("U",), "the take most of the phone's frames came from, empty for none"),
+    ), required=False),
+), attrs=(Attr("origin", "str", "what made the frames: the motion's source", choices=("synthesis", "trajectory", "capture")),
+          Attr("resampling", "str", "the rule for frames made at another rate, in words")), required=False)
+
 MESHANIM = Kind("meshanim", SCHEMAS["meshanim"], (
     "The face mesh moved by marker motion (paper VII-A), with the deformation weights of Eq. 14-15. "
     "Vertices and markers keep NaN where the driving motion has them (a capture with long gaps)."), (
@@ -461,6 +484,7 @@ MESHANIM = Kind("meshanim", SCHEMAS["meshanim"], (
             "gaze toward +x, pitch up; NaN where the gaze is not known (markers do not record it), and then the "
             "rendered eyes look ahead",
             "radians", (_units("radians"), _fps()), finite=False, required=False),
+    FRAME_PROVENANCE,
 ), attrs=(Attr("fit_rms", "float", "residual of the marker-to-mesh similarity fit, mesh units"),))
 
 _WEIGHT = _units("weight")
@@ -480,6 +504,7 @@ CURVES = Kind("curves", SCHEMAS["curves"], (
     Dataset("intensity", "float32", ("Fo",), "per-frame emotion intensity in [0, 1]", required=False, ge=0),
     Dataset("residual", "float32", ("Fo",), "per-frame RMS marker residual of the fit, NaN where a frame had "
             "no markers", "mm", (MM,), finite=False, required=False),
+    FRAME_PROVENANCE,
 ), attrs=(Attr("rig_name", "str", "the rig (`ict-facekit` for the built-in rig)"),
           Attr("rig_sha256", "str", "sha256 of the rig's data (package data, a user's rig folder or glTF)"),
           Attr("source", "str", "what made the weights", choices=("solve", "retarget", "truth", "import")),

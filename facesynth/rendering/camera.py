@@ -47,11 +47,7 @@ class Camera:
             pitch_deg: float = 0.0, focus: tuple[np.ndarray, float] | None = None) -> "Camera":
         """A camera whose view holds ``vertices`` (V, 3), or the sphere ``focus`` = (centre (3,),
         radius) when given (the face region, so a long neck does not shrink the face)."""
-        if focus is None:
-            lo, hi = np.nanmin(vertices, 0), np.nanmax(vertices, 0)
-            centre, radius = (lo + hi) / 2, 0.5 * float(np.linalg.norm(hi - lo)) * 0.8
-        else:
-            centre, radius = focus
+        centre, radius = framing(vertices, focus)
         return cls.orbit(centre, radius, width, height, fov_deg, yaw_deg, pitch_deg)
 
     def scaled(self, factor: int) -> "Camera":
@@ -75,3 +71,12 @@ class Camera:
         """(n, 3) world directions (normals) -> (n, 4) float32 camera-frame directions (w = 0)."""
         d = np.asarray(vectors, np.float64) @ self.rotation.T
         return np.concatenate([d, np.zeros((len(d), 1))], 1).astype(np.float32)
+
+
+def framing(vertices: np.ndarray, focus: tuple[np.ndarray, float] | None = None) -> tuple[np.ndarray, float]:
+    """The sphere (centre (3,), radius, mesh units) :meth:`Camera.fit` frames: ``focus`` when
+    given, else one about the bounding box of ``vertices`` (V, 3) (0.8 of its half diagonal)."""
+    if focus is not None:
+        return np.asarray(focus[0], np.float64), float(focus[1])
+    lo, hi = np.nanmin(vertices, 0), np.nanmax(vertices, 0)
+    return (lo + hi) / 2, 0.5 * float(np.linalg.norm(hi - lo)) * 0.8

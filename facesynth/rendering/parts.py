@@ -362,6 +362,11 @@ class FaceScene:
         """All vertices, skin and parts."""
         return len(self.albedo)
 
+    @property
+    def eyeball_vertices(self) -> list[tuple[int, int]]:
+        """(first vertex, count) of each eyeball's vertices, the +x eye first."""
+        return [(int(start), len(unit)) for _, _, _, unit, start in self._eyes]
+
     def head_and_jaw(self, skin: np.ndarray) -> tuple[tuple[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray]]:
         """Rigid (R, t) of the skull and of the jaw from the rest mesh to ``skin`` (V, 3)."""
         head = rigid_fit(self._rest[self._skull], skin[self._skull]) if self._skull is not None else (np.eye(3), np.zeros(3))
@@ -402,6 +407,20 @@ class FaceScene:
             for s, low in (m["lower_teeth"], m["tongue"]):
                 out[s:s + len(low)] = low @ jr.T + jt
         return out
+
+
+def face_focus(scene: FaceScene) -> tuple[np.ndarray, float] | None:
+    """The sphere (centre (3,), radius, mesh units) the camera frames when the mesh has eyes
+    and a mouth: from above the brows to below the chin, so the face fills the frame whatever
+    else (neck, shoulders) the mesh holds. None for other meshes (the whole mesh is framed)."""
+    layout = scene.layout
+    if layout.eyes is None or layout.mouth is None:
+        return None
+    eyes = (layout.eyes[0].centre + layout.eyes[1].centre) / 2
+    mouth = layout.mouth.centre
+    span = float(eyes[1] - mouth[1])
+    centre = (eyes + mouth) / 2 + np.array([0.0, 0.05 * span, -0.5 * span])
+    return centre, 1.75 * span
 
 
 def eyeball_centre(rim: np.ndarray, hole: Hole, radius: float, iterations: int = 30) -> np.ndarray:

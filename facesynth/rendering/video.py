@@ -28,25 +28,11 @@ from ..formats.audio import read_audio, resample, write_wav
 from ..model.meshanim import MeshAnimation
 from ..progress import progress
 from .camera import Camera
-from .parts import FaceScene, build_scene, vertex_normals
+from .parts import build_scene, face_focus, vertex_normals
 from .raster import BACKGROUND as BACKGROUND_RGB
 from .raster import rasterizer
 
 BACKGROUND = np.array(BACKGROUND_RGB + (1.0,), np.float32)
-
-
-def face_focus(scene: FaceScene) -> tuple[np.ndarray, float] | None:
-    """The sphere (centre (3,), radius, mesh units) the camera frames when the mesh has eyes
-    and a mouth: from above the brows to below the chin, so the face fills the frame whatever
-    else (neck, shoulders) the mesh holds. None for other meshes (the whole mesh is framed)."""
-    layout = scene.layout
-    if layout.eyes is None or layout.mouth is None:
-        return None
-    eyes = (layout.eyes[0].centre + layout.eyes[1].centre) / 2
-    mouth = layout.mouth.centre
-    span = float(eyes[1] - mouth[1])
-    centre = (eyes + mouth) / 2 + np.array([0.0, 0.05 * span, -0.5 * span])
-    return centre, 1.75 * span
 
 
 def draw_markers(points_px: np.ndarray, width: int, height: int, radius: int = 3) -> np.ndarray:

@@ -36,6 +36,6 @@ def run(motion_path: Path, mesh: Path, binding_path: Path, out: Path, settings: 
     # eyes then look ahead rather than follow an invented gaze.
     gaze = np.full((len(frames), 2, 2), np.nan, np.float32)
     MeshAnimation(frames, motion.fps, vertices, faces, motion.markers, names, bound.weights, bound.markers,
-                  bound.vertex_of, fit["fit_rms"], gaze).write(
+                  bound.vertex_of, fit["fit_rms"], gaze, motion.frame_provenance(motion_path)).write(
         out, config=settings_json(settings), inputs=[motion_path, mesh, binding_path], overwrite=overwrite)
     return {"frames": len(frames), "vertices": len(vertices), "unreached": bound.unreached, **fit}

@@ -105,7 +105,8 @@ def run(artifact: Path, fmt: str, output: Path, settings: ExportSettings, *, fps
         doc, data = gltf.build(anim.rest, anim.faces, anim.rig.deltas, anim.rig.shape_names, anim.times, anim.weights,
                                anim.head_rotation if head_motion else None,
                                anim.head_translation if head_motion else None,
-                               wav.name if wav is not None else None, name=Path(output).stem)
+                               wav.name if wav is not None else None, name=Path(output).stem,
+                               provenance=anim.provenance)
         with published_together():  # the scene and its audio, or neither
             if wav is not None:
                 with atomic_path(wav, overwrite) as tmp:
@@ -120,9 +121,10 @@ def run(artifact: Path, fmt: str, output: Path, settings: ExportSettings, *, fps
         with _named_temporary(output, overwrite) as tmp:
             if anim.weights is not None:
                 usd.write_blendshapes(tmp, anim.rest, anim.faces, anim.rig.deltas, anim.rig.shape_names, anim.weights,
-                                      anim.fps, *head)
+                                      anim.fps, *head, provenance=anim.provenance)
             else:
-                usd.write_points(tmp, anim.rest, anim.faces, anim.mesh_frames, anim.n_frames, anim.fps, *head)
+                usd.write_points(tmp, anim.rest, anim.faces, anim.mesh_frames, anim.n_frames, anim.fps, *head,
+                                 provenance=anim.provenance)
     elif fmt == "c3d":
         from ..formats.mocap import MarkerTake, write_c3d
 

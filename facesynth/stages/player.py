@@ -1,7 +1,9 @@
 """``facesynth player``: a motion, mesh animation or rig curves -> one self-contained HTML page
-that plays it in 3D (three.js, orbit controls) with its audio, a scrub bar and a timeline of the
-phones with their emotion and, for synthesized motion, the take and database node each came from
-(:mod:`facesynth.exports.player`). No network is needed to view it."""
+that plays it in 3D (three.js, orbit controls) with its audio, a scrub bar and, for an artifact
+made from a synthesis, a timeline of the phones with their emotion and the take and database node
+each came from (:mod:`facesynth.exports.player`). A mesh is drawn whole (eyeballs, mouth cavity,
+teeth, tongue) with ``render``'s shading and camera (``[render]`` fov_deg, yaw_deg, pitch_deg),
+and the head moves with the artifact's head motion. No network is needed to view it."""
 
 from __future__ import annotations
 
@@ -9,17 +11,19 @@ import base64
 from pathlib import Path
 
 from ..artifacts import atomic_path, check_output
+from ..config import RenderSettings
 from ..exports.animation import load
 from ..exports.player import live_payload, page, payload
 from ..live.phones import SAMPLE_RATE
 
 
 def run(artifact: Path, output: Path, *, audio: Path | None = None, motion: Path | None = None,
-        overwrite: bool = False) -> dict:
-    """Write the player page of ``artifact`` to ``output``; returns frames, fps, seconds, phones, bytes."""
+        view: RenderSettings | None = None, overwrite: bool = False) -> dict:
+    """Write the player page of ``artifact`` to ``output`` with the camera of ``view`` (``render``'s
+    settings; None: the defaults); returns frames, fps, seconds, phones, bytes."""
     check_output(output, overwrite)
     anim = load(artifact, motion=motion)
-    html = page(payload(anim, audio))
+    html = page(payload(anim, audio, view))
     with atomic_path(output, overwrite) as tmp:
         Path(tmp).write_text(html, encoding="utf-8")
     return {"frames": anim.n_frames, "fps": anim.fps, "seconds": anim.duration_s, "phones": len(anim.phones),

@@ -103,7 +103,8 @@ def run(motion_path: Path, keyshapes_path: Path, out: Path, settings: RetargetSe
                        motion.head_translation, [names[i] for i in dominant],
                        result.emotion_weights[np.arange(len(dominant)), dominant],
                        residual=result.residual[np.arange(len(dominant)), dominant],
-                       method=f"key-shapes ({keyshapes.method}) and keymorphs, Eq. 9")
+                       method=f"key-shapes ({keyshapes.method}) and keymorphs, Eq. 9",
+                       provenance=motion.frame_provenance(motion_path))
     summary = {"frames": len(weights), "keyshapes": int(result.alpha.shape[1]), "rig": rig.name,
                "residual_rms_mm": float(np.sqrt(np.nanmean(curves.residual**2)))}
     anim = None
@@ -115,6 +116,7 @@ def run(motion_path: Path, keyshapes_path: Path, out: Path, settings: RetargetSe
             offsets = (meshes_k - rig.neutral).reshape(len(meshes_k), -1)
             vertices = rig.neutral + (result.alpha @ offsets).reshape(len(result.alpha), -1, 3)
         anim = rig_animation(vertices, motion.fps, rig, motion.marker_names, motion.reference, str(motion_path))
+        anim.provenance = curves.provenance
     with published_together():  # the curves and the mesh animation, or neither
         curves.write(out, config=settings_json(settings), inputs=inputs, overwrite=overwrite)
         if anim is not None:

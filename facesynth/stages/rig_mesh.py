@@ -34,6 +34,6 @@ def run(curves_path: Path, out: Path, rig_path: Path | None = None, binding: Pat
     verts = np.array([rig.binding[n] for n in names], np.int64)
     empty = sparse.csr_matrix((len(rig.neutral), len(names)), dtype=np.float32)
     MeshAnimation(vertices, curves.fps, rig.neutral.astype(np.float32), rig.faces, vertices[:, verts], names, empty,
-                  names, verts, 0.0, np.full((len(vertices), 2, 2), np.nan, np.float32)).write(
+                  names, verts, 0.0, np.full((len(vertices), 2, 2), np.nan, np.float32), curves.provenance).write(
         out, config="{}", inputs=[curves_path], overwrite=overwrite)
     return {"frames": len(vertices), "vertices": len(rig.neutral), "rig": rig.name}

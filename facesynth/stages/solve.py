@@ -75,7 +75,8 @@ def run(motion_path: Path, out: Path, settings: SolveSettings, rig_path: Path | 
     weights, residual, iterations = solve(motion, rig, settings, str(motion_path))
     inputs = [motion_path] + ([rig_path] if rig_path is not None and Path(rig_path).is_file() else [])
     RigCurves(weights, motion.fps, list(rig.shape_names), rig.name, rig.sha256, "solve", motion.head_rotation,
-              motion.head_translation, residual=residual, method="bounded least squares with temporal smoothness").write(
+              motion.head_translation, residual=residual, method="bounded least squares with temporal smoothness",
+              provenance=motion.frame_provenance(motion_path)).write(
         out, config=settings_json(settings), inputs=inputs, overwrite=overwrite)
     marker_mm = per_marker_residual_mm(motion, rig, weights)
     return {"frames": len(weights), "shapes": len(rig.shape_names), "iterations": iterations,

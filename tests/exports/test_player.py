@@ -100,7 +100,7 @@ def test_player_in_headless_chromium(page, tmp_path):
 
     # the timeline: every phone with its emotion, and the take and node it came from
     search, provenance = Motion.read_search(page / "m.h5")
-    phones = re.findall(r'<div class="phone"[^>]*data-take="([^"]*)" data-node="(-?\d+)"[^>]*>([^<]*)<small>([^<]*)</small>', dom)
+    phones = re.findall(r'<div class="phone[^"]*"[^>]*data-take="([^"]*)" data-node="(-?\d+)"[^>]*>([^<]*)<small>([^<]*)</small>', dom)
     assert [p[2] for p in phones] == search.phone and [p[3] for p in phones] == search.emotion
     assert [int(p[1]) for p in phones] == [int(n) for n in search.node]
     for (take, _, phone, _), step in zip(phones, range(len(phones))):
@@ -119,3 +119,31 @@ def test_player_in_headless_chromium(page, tmp_path):
     assert shots[0][view].std() > 10  # something is drawn in the 3D view
     assert np.abs(shots[0][view] - shots[1][view]).max() > 30 and (np.abs(shots[0][view] - shots[1][view]) > 10).sum() > 50
     assert weights.shape[0] == len(a.vertices) and basis.shape[0] >= 1
+
+
+def test_the_face_parts_on_the_page_are_the_renderers(tmp_path):
+    """The eyeballs, cavity, teeth and tongue the page poses (rest + int16 principal targets) are
+    where the renderer places them for every frame, gaze included."""
+    import base64
+
+    from facesynth.facerig import BUILTIN_RIG_NAME, builtin_rig_sha256, load_face_rig
+    from facesynth.model.curves import RigCurves
+    from facesynth.rendering.parts import build_scene, gaze_from_rig_weights
+
+    rig = load_face_rig()
+    rng = np.random.default_rng(0)
+    weights = np.clip(rng.normal(0.2, 0.2, (24, len(rig.shape_names))), 0, 1).astype(np.float32)
+    RigCurves(weights, 30.0, list(rig.shape_names), BUILTIN_RIG_NAME, builtin_rig_sha256(), "solve").write(
+        tmp_path / "c.h5", config="{}", inputs=[])
+    face = player.payload(load(tmp_path / "c.h5"))["face"]
+    f32 = lambda b64: np.frombuffer(base64.b64decode(b64), np.float32)  # noqa: E731
+    rest = f32(face["parts_rest"])
+    k = len(face["targets"])
+    targets = np.stack([np.frombuffer(base64.b64decode(t), np.int16) * s for t, s in zip(face["targets"], face["scales"])])
+    shown = rest + f32(face["weights"]).reshape(-1, k) @ targets
+    scene = build_scene(rig.neutral, rig.faces)
+    gaze = gaze_from_rig_weights(weights, rig.shape_names)
+    skins = rig.evaluate(weights)
+    placed = np.stack([scene.positions(s, g)[scene.n_skin:] for s, g in zip(skins, gaze)]).reshape(len(weights), -1)
+    assert face["vertices"] == scene.n_vertices and np.abs(np.abs(gaze).max()) > 0.05
+    assert np.abs(shown - placed).max() < 0.01  # mm: the principal targets and int16 steps

@@ -110,6 +110,10 @@ def test_anim_and_video_outputs(tiny_corpus, tiny_db, takes, config, client, tmp
     assert (tmp_path / "out" / "one.avi").stat().st_size > 0 and (tmp_path / "out" / "one.anim.h5").exists()
     assert not (tmp_path / "out" / "one.motion.h5").exists()
     assert not list((tmp_path / "out").glob("*.part-*")) and not list((tmp_path / "out").glob("*.tmp-*"))
+    from facesynth.model.meshanim import MeshAnimation
+
+    provenance = MeshAnimation.read(tmp_path / "out" / "one.anim.h5").provenance  # where each frame came from
+    assert provenance.origin == "synthesis" and len(provenance.segments) > 3 and (provenance.node >= 0).any()
 
 
 def test_command_exit_status_and_a_malformed_script(tiny_corpus, tiny_db, takes, tmp_path):
