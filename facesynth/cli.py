@@ -16,7 +16,7 @@ from pathlib import Path
 
 import click
 
-from . import __version__, limits
+from . import __version__, limits, pipeline
 from .config import SAMPLE_CORPUS_PRESETS, Config, choices, parse_override
 from .errors import FacesynthError, OverrideError, UsageError
 
@@ -40,10 +40,7 @@ class PipelineGroup(click.Group):
     """The top-level group: ``facesynth --help`` lists the commands in pipeline order (the
     order of the README and docs/pipeline.md), then any others alphabetically."""
 
-    order = ("sample-corpus", "align", "ingest", "normalize", "pca", "build-db", "db", "check", "prune", "isomap",
-             "synthesize", "suggest", "expression", "head-motion", "deform", "keyshapes", "train-trajectory", "bind",
-             "solve", "retarget", "rig-mesh", "render", "export", "player", "stream", "batch", "capture", "evaluate", "tune",
-             "devices")
+    order = pipeline.COMMAND_ORDER
 
     def list_commands(self, ctx):
         listed = [name for name in self.order if name in self.commands]
@@ -98,45 +95,10 @@ def _configure_logging(verbose: int, quiet: bool) -> None:
     logger.propagate = False
 
 
-#: The configuration sections each command reads, by command path ("isomap build"). A
-#: ``--set`` must name one of them; ``Config.settings`` refuses any other, keeping this true.
-READS: dict[str, tuple[str, ...]] = {
-    "sample-corpus": (),
-    "align": ("align",),
-    "ingest": ("ingest", "align"),
-    "normalize": ("normalize",),
-    "pca": ("pca",),
-    "build-db": ("build_db",),
-    "synthesize": ("synthesize", "ingest", "align", "trajectory"),
-    "suggest": ("synthesize", "ingest"),
-    "deform": ("deform",),
-    "keyshapes": ("keyshapes",),
-    "train-trajectory": ("trajectory",),
-    "solve": ("solve",),
-    "bind": ("bind", "normalize"),
-    "retarget": ("retarget", "keyshapes"),
-    "rig-mesh": (),
-    "render": ("render",),
-    "batch": ("batch", "synthesize", "ingest", "align", "deform", "render"),
-    "evaluate": ("evaluate", "synthesize", "normalize", "trajectory"),
-    "capture": ("normalize", "synthesize"),
-    "tune": ("tune", "synthesize", "build_db", "normalize"),
-    "isomap build": ("isomap",),
-    "isomap pick": (),
-    "db show": (),
-    "prune": ("prune",),
-    "devices": (),
-    "check": (),
-    "expression fit": ("expression",),
-    "expression analyze": ("expression",),
-    "expression restyle": ("expression", "ingest"),
-    "head-motion": ("head_motion",),
-    "export": ("export",),
-    "player": (),
-    "stream": ("stream", "synthesize", "align", "solve"),
-}
-# Every command reads the input bounds (facesynth.limits).
-READS = {name: sections + ("limits",) for name, sections in READS.items()}
+#: The configuration sections each command reads (``[limits]`` included), by command path
+#: ("isomap build"), from the declarations in facesynth.pipeline. A ``--set`` must name one of
+#: them; ``Config.settings`` refuses any other, keeping this true.
+READS = pipeline.READS
 
 
 def _command_path() -> str:
@@ -207,25 +169,24 @@ def _left_behind(published: list[Path]) -> str:
     return f"{names} {'was' if len(published) == 1 else 'were'} written before it (complete); nothing else was."
 
 
-#: Output options that name a folder rather than a file, by command path.
-FOLDER_OUTPUTS: dict[str, dict[str, str]] = {"sample-corpus": {"out_dir": "the corpus"},
-                                             "evaluate": {"output": "the report"}, "isomap build": {"images": "the images"}}
+#: Output options that name a folder rather than a file, by command path (facesynth.pipeline).
+FOLDER_OUTPUTS = pipeline.FOLDER_OUTPUTS
 
 
 def _check_outputs(command: str, kwargs: dict, overwrite: bool) -> None:
-    """Check every output path (``-o``, ``--images``, a corpus folder) for writability and
-    no-clobber before any work, so a wrong path costs nothing."""
+    """Check every output path the command declares (``-o``, ``--images``, a corpus folder) for
+    writability and no-clobber before any work, so a wrong path costs nothing. A folder written
+    in place and kept between runs (batch's) may exist."""
     from .artifacts import check_output, check_output_folder
 
-    folders = FOLDER_OUTPUTS.get(command, {})
-    if command == "export" and kwargs.get("fmt") == "obj-seq":  # the one format that writes a folder
-        folders = {"output": "the OBJ sequence"}
-    for name in ("output", "out_dir", "images"):
+    declared = pipeline.STAGE[command]
+    folders = declared.folders(kwargs)
+    for name in declared.output_options:
         value = kwargs.get(name)
         if value is None:
             continue
         if name in folders:
-            check_output_folder(Path(value), folders[name], overwrite)
+            check_output_folder(Path(value), folders[name].what, None if folders[name].in_place else overwrite)
         else:
             check_output(Path(value), overwrite)
 

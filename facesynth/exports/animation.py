@@ -158,8 +158,8 @@ def load(path: Path, motion: Path | None = None) -> Exportable:
         raise InputError(f"{path}: file not found; pass a motion, mesh animation or curves artifact.")
     if kind not in EXPORTABLE:
         found = f"a '{kind}' artifact" if kind else "no facesynth artifact"
-        raise InputError(f"{path}: is {found}; export reads the output of `{PRODUCERS['motion']}`, "
-                         f"`{PRODUCERS['meshanim']}` or `{PRODUCERS['curves']}`.")
+        raise InputError(f"{path}: is {found}; export reads a 'motion', 'meshanim' or 'curves' "
+                         "artifact (the output of facesynth synthesize, deform or solve, among others).")
     if kind == "motion":
         from ..model.motion import Motion
 
@@ -201,7 +201,7 @@ def load(path: Path, motion: Path | None = None) -> Exportable:
                          gaze=gaze_from_rig_weights(weights, rig.shape_names), emotion=c.emotion)
     if motion is not None:
         if artifact_kind(Path(motion)) != "motion":
-            raise InputError(f"{motion}: is not a motion artifact; pass the output of `{PRODUCERS['motion']}`.")
+            raise InputError(f"{motion}: is not a motion artifact; pass the output of {PRODUCERS['motion']}.")
         phones, emotion = _phones_of(Path(motion), out.fps, out.n_frames)
         out.phones = phones
         if out.emotion is None:
