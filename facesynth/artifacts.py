@@ -30,8 +30,8 @@ import h5py
 import numpy as np
 
 from . import __version__
-from .pipeline import producers
 from .errors import ArtifactError, InputError, OutputExistsError
+from .pipeline import producers
 
 if TYPE_CHECKING:
     from .check import Snapshot
