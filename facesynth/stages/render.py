@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import contextlib
 import time
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -158,11 +159,25 @@ def render_frames(clip: MeshAnimation, settings: RenderSettings, compare: MeshAn
         yield np.concatenate([burn_label(left, masks[0]), burn_label(right, masks[1])], axis=1)
 
 
-def run(anims: list[Path], audios: list[Path], out: Path, settings: RenderSettings, compare: Path | None = None,
-        overwrite: bool = False) -> dict:
-    """Render the animations one after another, each with its audio (none: silence), into the AVI ``out``;
-    returns frames, seconds of video and frames rendered per second.
+@dataclass(frozen=True)
+class RenderResult:
+    """What ``facesynth render`` wrote.
+
+    frames: video frames.
+    seconds: the video's length (s).
+    frames_per_s: frames rendered per second of wall time.
+    notes: what a plain mesh lacks (eye or mouth holes), once each.
     """
+
+    frames: int
+    seconds: float
+    frames_per_s: float
+    notes: list[str]
+
+
+def run(anims: list[Path], audios: list[Path], out: Path, settings: RenderSettings, compare: Path | None = None,
+        overwrite: bool = False) -> RenderResult:
+    """Render the animations one after another, each with its audio (none: silence), into the AVI ``out``."""
     import imageio_ffmpeg
 
     if audios and len(anims) != len(audios):
@@ -205,5 +220,5 @@ def run(anims: list[Path], audios: list[Path], out: Path, settings: RenderSettin
         for frame in progress(frames, "render", length=n_frames):
             writer.send(np.ascontiguousarray(frame))
         writer.close()
-    return {"frames": n_frames, "seconds": n_frames / settings.fps,
-            "frames_per_s": n_frames / (time.perf_counter() - started), "notes": sorted(set(notes))}
+    return RenderResult(n_frames, n_frames / settings.fps, n_frames / (time.perf_counter() - started), sorted(set(notes)))
+
