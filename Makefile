@@ -1,6 +1,6 @@
 # facesynth: `make demo` runs the whole pipeline on the built-in sample corpus,
-# `make test` runs the test suite, `make lint` the linter and type checker, `make report`
-# rebuilds every figure the README quotes.
+# `make test` runs the test suite, `make lint` the linter and type checker, `make docs` the
+# generated parts of docs/, `make report` rebuilds every figure the README quotes.
 # All create the environment with pip alone.
 
 PYTHON ?= python3

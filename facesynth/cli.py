@@ -161,8 +161,12 @@ def _hand_sigterm_on() -> None:
         signal.raise_signal(signal.SIGTERM)
 
 
-def _left_behind(published: list[Path]) -> str:
-    """The end of an interrupted command's message: which outputs it had written (complete)."""
+def _left_behind(published: list[Path], in_place: list[Path] | None = None) -> str:
+    """The end of an interrupted command's message: which outputs it had written (complete), or
+    that a folder it fills in place (batch's) keeps the work finished before the interrupt."""
+    kept = [folder for folder in in_place or () if folder.is_dir()]
+    if kept:
+        return f"{', '.join(map(str, kept))} keeps what was finished before it; a rerun goes on from there."
     if not published:
         return "no output was written."
     names = ", ".join(map(str, published[:3])) + (f" and {len(published) - 3} more" if len(published) > 3 else "")
@@ -205,6 +209,7 @@ def stage(func=None, *, writes: bool = True):
         _configure_logging(verbose, quiet)
         started = time.perf_counter()
         published: list[Path] = []  # what an interrupt leaves behind, for its message
+        in_place: list[Path] = []  # output folders filled in place, kept between runs
         try:
             command = _command_path()
             config = Config.load(config_path, tuple(overrides))
@@ -215,6 +220,8 @@ def stage(func=None, *, writes: bool = True):
                 from .artifacts import recording_published
 
                 _check_outputs(command, kwargs, overwrite)
+                in_place = [Path(kwargs[name]) for name, folder in pipeline.STAGE[command].folders(kwargs).items()
+                            if folder.in_place and kwargs.get(name) is not None]
                 recording = recording_published(published)
             with limits.using(ctx.config.settings("limits")), _sigterm_raises(), recording:
                 func(ctx, **kwargs)
@@ -224,11 +231,11 @@ def stage(func=None, *, writes: bool = True):
             click.echo(f"error: {exc}", err=True)
             sys.exit(1)
         except Terminated:
-            click.echo(f"terminated (SIGTERM); {_left_behind(published)}", err=True)
+            click.echo(f"terminated (SIGTERM); {_left_behind(published, in_place)}", err=True)
             _hand_sigterm_on()
             sys.exit(143)
         except KeyboardInterrupt:
-            click.echo(f"interrupted; {_left_behind(published)}", err=True)
+            click.echo(f"interrupted; {_left_behind(published, in_place)}", err=True)
             sys.exit(130)
         if verbose and not quiet:
             click.echo(f"done in {time.perf_counter() - started:.2f} s", err=True)

@@ -138,3 +138,25 @@ def test_a_folder_filled_in_place_may_exist_before_the_run(tmp_path):
     _check_outputs("batch", {"output": tmp_path / "lines"}, overwrite=False)
     with pytest.raises(OutputExistsError, match="is not empty"):
         _check_outputs("evaluate", {"output": tmp_path / "lines"}, overwrite=False)
+
+
+def test_an_interrupted_batch_says_its_folder_keeps_the_lines_done(tmp_path, monkeypatch):
+    """batch's lines are written into its folder one by one (by worker processes): an interrupt
+    leaves the lines finished, and says so instead of 'no output was written'."""
+    from click.testing import CliRunner
+
+    from facesynth.stages import batch
+
+    def some_lines_then_interrupt(script, db, out_dir, *args, **kwargs):
+        out_dir.mkdir()
+        (out_dir / "l1.motion.h5").write_text("a line done")
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(batch, "run", some_lines_then_interrupt)
+    script, db = tmp_path / "script.csv", tmp_path / "db.h5"
+    script.write_text("id,audio,text\n")
+    db.write_text("")
+    r = CliRunner().invoke(main, ["batch", str(script), "--db", str(db), "-o", str(tmp_path / "lines")])
+    assert r.exit_code == 130, r.output
+    assert r.output.strip().splitlines() == [f"interrupted; {tmp_path / 'lines'} keeps what was finished before it; "
+                                             "a rerun goes on from there."]

@@ -128,7 +128,7 @@ def test_pruned_and_dense_searches_write_the_same_motion(tiny_db, tiny_corpus, h
     from facesynth.config import Config
 
     tg = tiny_corpus / "labels" / f"{held_out_take}.TextGrid"
-    costs = [_run(tiny_db, tg, tmp_path / f"{dp}.h5", Config.load(None, (f"synthesize.dp={dp}", f"synthesize.use_opencl={use_opencl}")))["cost"]
+    costs = [_run(tiny_db, tg, tmp_path / f"{dp}.h5", Config.load(None, (f"synthesize.dp={dp}", f"synthesize.use_opencl={use_opencl}"))).cost
              for dp in ("pruned", "dense")]
     assert costs[0] == costs[1]
     with h5py.File(tmp_path / "pruned.h5") as a, h5py.File(tmp_path / "dense.h5") as b:
