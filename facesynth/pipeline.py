@@ -118,7 +118,7 @@ def _stage(name: str, summary: str, usage: str, module: tuple[str, str | None], 
     return Stage(name, summary, usage, core, result, **kwargs)
 
 
-ARTIFACT = ("motion", "meshanim", "curves")  # what export and player take
+_ANIMATION = ("motion", "meshanim", "curves")  # the kinds export and player take
 
 #: Every command, in pipeline order (the order of ``facesynth --help`` and of docs/pipeline.md).
 STAGES: tuple[Stage, ...] = (
@@ -222,12 +222,12 @@ STAGES: tuple[Stage, ...] = (
            reads=("render",), inputs=("meshanim",), output_options=("output",), takes="audio (none: silent)",
            makes="AVI", paper="VIII"),
     _stage("export", "Write an animation for another tool.", "facesynth export ARTIFACT --format FMT -o OUT",
-           _s("export", "run", "ExportResult"), reads=("export",), inputs=ARTIFACT, output_options=("output",),
+           _s("export", "run", "ExportResult"), reads=("export",), inputs=_ANIMATION, output_options=("output",),
            folder_outputs={"output": Folder("the OBJ sequence", when=("fmt", "obj-seq"))},
            makes="Live Link Face CSV, glTF/GLB (+ WAV), USD, C3D or an OBJ folder (docs/exports.md)"),
     _stage("player", "Write one HTML page that plays the animation in 3D with its audio.",
            "facesynth player ARTIFACT --audio X.wav -o player.html (or --live WS_URL)",
-           _s("player", "run", "PlayerResult"), inputs=ARTIFACT, output_options=("output",),
+           _s("player", "run", "PlayerResult"), inputs=_ANIMATION, output_options=("output",),
            takes="the `motion` it came from (phones, emotion, provenance), WAV", makes="one HTML page"),
     _stage("stream", "Live synthesis: audio in, frames of ARKit curves out.",
            "facesynth stream db.h5 [--audio X.wav | --serve HOST:PORT] [--livelink HOST:PORT]",
