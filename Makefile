@@ -1,6 +1,6 @@
 # facesynth: `make demo` runs the whole pipeline on the built-in sample corpus,
-# `make test` runs the test suite, `make lint` the linter and type checker, `make report`
-# rebuilds every figure the README quotes.
+# `make test` runs the test suite, `make lint` the linter and type checker, `make docs` the
+# generated parts of docs/, `make report` rebuilds every figure the README quotes.
 # All create the environment with pip alone.
 
 PYTHON ?= python3
@@ -13,7 +13,7 @@ CONFIG := configs/default.toml
 PRESET ?= small
 SEED   ?= 0
 
-.PHONY: all demo test test-hostile lint report bench clean
+.PHONY: all demo test test-hostile lint docs report bench clean
 
 all: demo
 
@@ -34,6 +34,12 @@ test: $(STAMP)
 lint: $(STAMP)
 	$(BIN)/ruff check facesynth tests benchmarks
 	$(BIN)/mypy
+
+# The generated parts of the docs: the stage table of docs/pipeline.md (facesynth/pipeline.py)
+# and the artifact reference of docs/file-format.md (facesynth/model/spec.py).
+docs: $(STAMP)
+	$(BIN)/python -m facesynth.pipeline docs/pipeline.md
+	$(BIN)/python -m facesynth.model.spec docs/file-format.md
 
 # The long hostile-input run: every input kind x mutation over five seeds (several minutes;
 # `make test` runs a quick part of it). `benchmarks/hostile.py` prints the same cases as a table.

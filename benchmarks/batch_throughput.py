@@ -89,7 +89,7 @@ def measure(script: Path, db: Path, out: Path, workers: int) -> dict:
         up = time.perf_counter()
         s = batch.run(script, db, out, *settings, client=client)
     wall = time.perf_counter() - started
-    ok = [r for r in s["results"] if r.status == "ok"]
+    ok = [r for r in s.results if r.status == "ok"]
     audio = np.array([r.audio_s for r in ok])
     total = np.array([r.total_s - r.load_s for r in ok])
     # the fixed cost: per-line seconds against seconds of audio, on the lines pocketsphinx
@@ -100,16 +100,16 @@ def measure(script: Path, db: Path, out: Path, workers: int) -> dict:
     cpu = np.array([r.cpu_s for r in ok])
     cpu_slope, cpu_intercept = (np.polyfit(audio[first], cpu[first], 1) if first.sum() > 2
                                 else (float("nan"), float("nan")))
-    inside = float(sum(r.total_s for r in s["results"]))
+    inside = float(sum(r.total_s for r in s.results))
     methods: dict[str, int] = {}
     for r in ok:
         methods[r.method] = methods.get(r.method, 0) + 1
     return {
-        "workers": workers, "lines": s["lines"], "ok": s["ok"], "failed": s["failed"],
-        "failures": sorted({r.reason for r in s["results"] if r.status == "failed"})[:5],
-        "cluster_start_s": round(up - started, 2), "batch_s": round(s["seconds"], 2), "wall_s": round(wall, 2),
-        "lines_per_min": round(60 * s["lines"] / s["seconds"], 1),
-        "lines_per_min_with_start": round(60 * s["lines"] / wall, 1),
+        "workers": workers, "lines": s.lines, "ok": s.ok, "failed": s.failed,
+        "failures": sorted({r.reason for r in s.results if r.status == "failed"})[:5],
+        "cluster_start_s": round(up - started, 2), "batch_s": round(s.seconds, 2), "wall_s": round(wall, 2),
+        "lines_per_min": round(60 * s.lines / s.seconds, 1),
+        "lines_per_min_with_start": round(60 * s.lines / wall, 1),
         "mean_line_s": round(float(total.mean()), 3),
         "mean_line_cpu_s": round(float(np.mean([r.cpu_s for r in ok])), 3),
         "mean_line_cpu_s_by_method": {m: round(float(np.mean([r.cpu_s for r in ok if r.method == m])), 3)

@@ -33,10 +33,10 @@ from facesynth.formats.mocap import MarkerTake, read_mocap, write_c3d
 from facesynth.stages import bind
 
 
-def _summary(s: dict, seconds: float) -> dict:
-    return {"frame": s["frame"], "residual_median_mm": round(s["residual_median_mm"], 3),
-            "residual_p95_mm": round(s["residual_p95_mm"], 3), "flagged": s["flagged"], "scale": round(s["scale"], 4),
-            "rigid": dict(zip(s["rigid"], [round(x, 3) for x in s["rigid_spreads_mm"]])), "seconds": round(seconds, 2)}
+def _summary(s: bind.BindResult, seconds: float) -> dict:
+    return {"frame": s.frame, "residual_median_mm": round(s.residual_median_mm, 3),
+            "residual_p95_mm": round(s.residual_p95_mm, 3), "flagged": s.flagged, "scale": round(s.scale, 4),
+            "rigid": dict(zip(s.rigid, [round(x, 3) for x in s.rigid_spreads_mm])), "seconds": round(seconds, 2)}
 
 
 def main() -> None:
@@ -72,13 +72,13 @@ def main() -> None:
                           "vertex_error_p95_mm": round(float(np.percentile(error, 95)), 3),
                           "vertex_error_max_mm": round(float(error.max()), 3),
                           "on_true_vertex": round(float(np.mean(error == 0)), 3),
-                          "true_rigid_found": true_rigid <= set(s["rigid"])})
+                          "true_rigid_found": true_rigid <= set(s.rigid)})
             out["takes"][row["take"]] = entry
         if args.capture is not None:
             started = time.perf_counter()
             s = bind.run(args.capture, Path(tmp) / "capture.csv", config.settings("bind"), config.settings("normalize"))
             out["capture"] = {"file": args.capture.name, **_summary(s, time.perf_counter() - started),
-                              "residual_mm": {n: round(x, 2) for n, x in s["residual_mm"].items()}}
+                              "residual_mm": {n: round(x, 2) for n, x in s.residual_mm.items()}}
     print(json.dumps(out, indent=1))
 
 

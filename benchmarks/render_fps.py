@@ -90,7 +90,7 @@ def stage_fps(clip: MeshAnimation, settings, work: Path) -> tuple[float, float]:
         clip.write(anim, config="{}", inputs=[], overwrite=True)
         write_wav(wav, np.zeros(int(len(clip.vertices) / FPS * 48000)), 48000)
     cpu, children = time.process_time(), resource.getrusage(resource.RUSAGE_CHILDREN)
-    fps = render.run([anim], [wav], avi, settings, overwrite=True)["frames_per_s"]
+    fps = render.run([anim], [wav], avi, settings, overwrite=True).frames_per_s
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     used = time.process_time() - cpu + (after.ru_utime - children.ru_utime) + (after.ru_stime - children.ru_stime)
     return fps, used / len(clip.vertices) * 1e3

@@ -526,7 +526,7 @@ def _reason(exc: BaseException) -> str:
 def damaged(path: Path, kind: str, where: str, exc: BaseException) -> ArtifactError:
     """The error for an HDF5 part that cannot be read: the file is damaged (e.g. truncated)."""
     return ArtifactError(f"{path}: {where}cannot be read ({_reason(exc)}); the file is damaged or truncated: "
-                         f"make it again with `{PRODUCERS.get(kind, 'facesynth')}`.")
+                         f"make it again with {PRODUCERS.get(kind, '`facesynth`')}.")
 
 
 def artifact_kind(path: Path) -> str | None:
@@ -557,9 +557,9 @@ def open_artifact(path: Path, kind: str) -> h5py.File:
     ArtifactError naming the file, never an HDF5 traceback.
     """
     path = Path(path)
-    producer = PRODUCERS.get(kind, "facesynth")
+    producer = PRODUCERS.get(kind, "`facesynth`")
     if not path.exists():
-        raise InputError(f"{path}: file not found; make it with `{producer}` first.")
+        raise InputError(f"{path}: file not found; make it with {producer} first.")
     if path.is_dir():
         raise InputError(f"{path}: is a folder; expected a facesynth '{kind}' artifact file.")
     try:
@@ -578,12 +578,12 @@ def open_artifact(path: Path, kind: str) -> h5py.File:
         if found != kind:
             found_text = f"a '{found}' artifact" if isinstance(found, str) else "no facesynth artifact"
             raise ArtifactError(
-                f"{path}: found {found_text} but expected '{kind}'; pass the output of `{PRODUCERS[kind]}`.")
+                f"{path}: found {found_text} but expected '{kind}'; pass the output of {PRODUCERS[kind]}.")
         schema = f.attrs.get("facesynth_schema", -1)
         if not isinstance(schema, (int, np.integer)) or int(schema) != SCHEMAS[kind]:
             raise ArtifactError(
                 f"{path}: '{kind}' schema {schema} is not the supported schema {SCHEMAS[kind]}; "
-                f"rebuild it with this version's `{PRODUCERS[kind]}`.")
+                f"rebuild it with this version's {PRODUCERS[kind]}.")
         problems, snapshot = validate(f, path, bounds_in_force())
         if problems:
             # a size past a bound first: it says what to raise, and the rest may follow from it
@@ -591,7 +591,7 @@ def open_artifact(path: Path, kind: str) -> h5py.File:
             more = f" (and {len(problems) - 1} more problem{'s' * (len(problems) > 2)})" if len(problems) > 1 else ""
             message = p.message.rstrip(".")
             todo = "" if "--set limits." in message or "memory" in message else (
-                f"; make it again with `{producer}` (`facesynth check {path}` lists every problem)")
+                f"; make it again with {producer} (`facesynth check {path}` lists every problem)")
             raise ArtifactError(f"{path}: {p.key}: {message}{more}{todo}.")
     except ArtifactError:
         f.close()
@@ -638,7 +638,7 @@ def check_values(f: h5py.File, key: str, data: np.ndarray) -> None:
     problem = value_problem(snapshot, key, data)
     if problem:
         raise ArtifactError(f"{f.filename}: /{key.lstrip('/')}: {problem}; the file is damaged or was changed "
-                            f"by another tool: make it again with `{PRODUCERS.get(snapshot.kind.name, 'facesynth')}`.")
+                            f"by another tool: make it again with {PRODUCERS.get(snapshot.kind.name, '`facesynth`')}.")
 
 
 def read_rows(dataset: h5py.Dataset, rows: slice, out: np.ndarray) -> np.ndarray:

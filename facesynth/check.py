@@ -398,7 +398,7 @@ class _Checker:
             self.report.schema = int(schema)
             if self.report.kind and int(schema) != SCHEMAS[found]:
                 self.say("/", f"'{found}' schema {int(schema)} is not the supported schema {SCHEMAS[found]}; "
-                              f"rebuild it with this version's `{PRODUCERS[found]}`.")
+                              f"rebuild it with this version's {PRODUCERS[found]}.")
         known = self.report.kind is not None and self.report.schema == SCHEMAS.get(self.report.kind)
         if found is not None:
             for a in COMMON_ATTRS:

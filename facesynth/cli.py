@@ -16,7 +16,7 @@ from pathlib import Path
 
 import click
 
-from . import __version__, limits
+from . import __version__, limits, pipeline
 from .config import SAMPLE_CORPUS_PRESETS, Config, choices, parse_override
 from .errors import FacesynthError, OverrideError, UsageError
 
@@ -40,10 +40,7 @@ class PipelineGroup(click.Group):
     """The top-level group: ``facesynth --help`` lists the commands in pipeline order (the
     order of the README and docs/pipeline.md), then any others alphabetically."""
 
-    order = ("sample-corpus", "align", "ingest", "normalize", "pca", "build-db", "db", "check", "prune", "isomap",
-             "synthesize", "suggest", "expression", "head-motion", "deform", "keyshapes", "train-trajectory", "bind",
-             "solve", "retarget", "rig-mesh", "render", "export", "player", "stream", "batch", "capture", "evaluate", "tune",
-             "devices")
+    order = pipeline.COMMAND_ORDER
 
     def list_commands(self, ctx):
         listed = [name for name in self.order if name in self.commands]
@@ -98,46 +95,10 @@ def _configure_logging(verbose: int, quiet: bool) -> None:
     logger.propagate = False
 
 
-#: The configuration sections each command reads, by command path ("isomap build"). A
-#: ``--set`` must name one of them; ``Config.settings`` refuses any other, keeping this true.
-READS: dict[str, tuple[str, ...]] = {
-    "sample-corpus": (),
-    "align": ("align",),
-    "ingest": ("ingest", "align"),
-    "normalize": ("normalize",),
-    "pca": ("pca",),
-    "build-db": ("build_db",),
-    "synthesize": ("synthesize", "ingest", "align", "trajectory"),
-    "suggest": ("synthesize", "ingest"),
-    "deform": ("deform",),
-    "keyshapes": ("keyshapes",),
-    "train-trajectory": ("trajectory",),
-    "solve": ("solve",),
-    "bind": ("bind", "normalize"),
-    "retarget": ("retarget", "keyshapes"),
-    "rig-mesh": (),
-    "render": ("render",),
-    "batch": ("batch", "synthesize", "ingest", "align", "deform", "render"),
-    "evaluate": ("evaluate", "synthesize", "normalize", "trajectory"),
-    "capture": ("normalize", "synthesize"),
-    "tune": ("tune", "synthesize", "build_db", "normalize"),
-    "isomap build": ("isomap",),
-    "isomap pick": (),
-    "isomap page": ("isomap", "ingest"),
-    "db show": (),
-    "prune": ("prune",),
-    "devices": (),
-    "check": (),
-    "expression fit": ("expression",),
-    "expression analyze": ("expression",),
-    "expression restyle": ("expression", "ingest"),
-    "head-motion": ("head_motion",),
-    "export": ("export",),
-    "player": ("render",),
-    "stream": ("stream", "synthesize", "align", "solve"),
-}
-# Every command reads the input bounds (facesynth.limits).
-READS = {name: sections + ("limits",) for name, sections in READS.items()}
+#: The configuration sections each command reads (``[limits]`` included), by command path
+#: ("isomap build"), from the declarations in facesynth.pipeline. A ``--set`` must name one of
+#: them; ``Config.settings`` refuses any other, keeping this true.
+READS = pipeline.READS
 
 
 def _command_path() -> str:
@@ -200,33 +161,36 @@ def _hand_sigterm_on() -> None:
         signal.raise_signal(signal.SIGTERM)
 
 
-def _left_behind(published: list[Path]) -> str:
-    """The end of an interrupted command's message: which outputs it had written (complete)."""
+def _left_behind(published: list[Path], in_place: list[Path] | None = None) -> str:
+    """The end of an interrupted command's message: which outputs it had written (complete), or
+    that a folder it fills in place (batch's) keeps the work finished before the interrupt."""
+    kept = [folder for folder in in_place or () if folder.is_dir()]
+    if kept:
+        return f"{', '.join(map(str, kept))} keeps what was finished before it; a rerun goes on from there."
     if not published:
         return "no output was written."
     names = ", ".join(map(str, published[:3])) + (f" and {len(published) - 3} more" if len(published) > 3 else "")
     return f"{names} {'was' if len(published) == 1 else 'were'} written before it (complete); nothing else was."
 
 
-#: Output options that name a folder rather than a file, by command path.
-FOLDER_OUTPUTS: dict[str, dict[str, str]] = {"sample-corpus": {"out_dir": "the corpus"},
-                                             "evaluate": {"output": "the report"}, "isomap build": {"images": "the images"}}
+#: Output options that name a folder rather than a file, by command path (facesynth.pipeline).
+FOLDER_OUTPUTS = pipeline.FOLDER_OUTPUTS
 
 
 def _check_outputs(command: str, kwargs: dict, overwrite: bool) -> None:
-    """Check every output path (``-o``, ``--images``, a corpus folder) for writability and
-    no-clobber before any work, so a wrong path costs nothing."""
+    """Check every output path the command declares (``-o``, ``--images``, a corpus folder) for
+    writability and no-clobber before any work, so a wrong path costs nothing. A folder written
+    in place and kept between runs (batch's) may exist."""
     from .artifacts import check_output, check_output_folder
 
-    folders = FOLDER_OUTPUTS.get(command, {})
-    if command == "export" and kwargs.get("fmt") == "obj-seq":  # the one format that writes a folder
-        folders = {"output": "the OBJ sequence"}
-    for name in ("output", "out_dir", "images"):
+    declared = pipeline.STAGE[command]
+    folders = declared.folders(kwargs)
+    for name in declared.output_options:
         value = kwargs.get(name)
         if value is None:
             continue
         if name in folders:
-            check_output_folder(Path(value), folders[name], overwrite)
+            check_output_folder(Path(value), folders[name].what, None if folders[name].in_place else overwrite)
         else:
             check_output(Path(value), overwrite)
 
@@ -245,6 +209,7 @@ def stage(func=None, *, writes: bool = True):
         _configure_logging(verbose, quiet)
         started = time.perf_counter()
         published: list[Path] = []  # what an interrupt leaves behind, for its message
+        in_place: list[Path] = []  # output folders filled in place, kept between runs
         try:
             command = _command_path()
             config = Config.load(config_path, tuple(overrides))
@@ -255,6 +220,8 @@ def stage(func=None, *, writes: bool = True):
                 from .artifacts import recording_published
 
                 _check_outputs(command, kwargs, overwrite)
+                in_place = [Path(kwargs[name]) for name, folder in pipeline.STAGE[command].folders(kwargs).items()
+                            if folder.in_place and kwargs.get(name) is not None]
                 recording = recording_published(published)
             with limits.using(ctx.config.settings("limits")), _sigterm_raises(), recording:
                 func(ctx, **kwargs)
@@ -264,11 +231,11 @@ def stage(func=None, *, writes: bool = True):
             click.echo(f"error: {exc}", err=True)
             sys.exit(1)
         except Terminated:
-            click.echo(f"terminated (SIGTERM); {_left_behind(published)}", err=True)
+            click.echo(f"terminated (SIGTERM); {_left_behind(published, in_place)}", err=True)
             _hand_sigterm_on()
             sys.exit(143)
         except KeyboardInterrupt:
-            click.echo(f"interrupted; {_left_behind(published)}", err=True)
+            click.echo(f"interrupted; {_left_behind(published, in_place)}", err=True)
             sys.exit(130)
         if verbose and not quiet:
             click.echo(f"done in {time.perf_counter() - started:.2f} s", err=True)
@@ -321,13 +288,11 @@ def sample_corpus_cmd(ctx: Context, out_dir: Path, preset: str, seed: int):
     Example:
       facesynth sample-corpus corpus/ --preset small --seed 0
     """
-    from .artifacts import atomic_folder
-    from .corpus.generate import generate
+    from .stages import sample_corpus as stage
 
-    with atomic_folder(out_dir, "the corpus", ctx.overwrite) as folder:  # renamed into place when complete
-        summary = generate(folder, preset, seed, overwrite=True)
-    ctx.say(f"wrote {summary['takes']} takes, {summary['seconds']:.1f} s of capture, "
-            f"{summary['train_phones']} training phones, {summary['contamination_events']} contamination events to {out_dir}")
+    summary = stage.run(out_dir, preset, seed, ctx.overwrite)
+    ctx.say(f"wrote {summary.takes} takes, {summary.seconds:.1f} s of capture, "
+            f"{summary.train_phones} training phones, {summary.contamination_events} contamination events to {out_dir}")
 
 
 @main.command()
@@ -358,13 +323,13 @@ def align(ctx: Context, audio: Path, text: str | None, transcript: Path | None, 
         raise UsageError("give one of --text or --transcript, not both.")
     summary = stage_align.run(audio, text if transcript is None else stage_align.read_transcript(transcript), output,
                               ctx.config.settings("align"), dict_path, ctx.overwrite)
-    if summary["recognized"]:
-        ctx.say(f"recognised: {summary['recognized']}")
-    for reason in summary["attempts"]:
+    if summary.recognized:
+        ctx.say(f"recognised: {summary.recognized}")
+    for reason in summary.attempts:
         ctx.detail(f"not used: {reason}")
-    for warning in summary["warnings"]:
+    for warning in summary.warnings:
         ctx.say(f"warning: {warning}")
-    ctx.say(f"aligned {summary['phones']} phones over {summary['seconds']:.2f} s ({summary['method']}) -> {output}")
+    ctx.say(f"aligned {summary.phones} phones over {summary.seconds:.2f} s ({summary.method}) -> {output}")
 
 
 @main.command()
@@ -385,13 +350,13 @@ def ingest(ctx: Context, manifest: Path, output: Path):
         listed = ", ".join(names[:4]) + (", ..." if len(names) > 4 else "")
         return f"{len(names)} take{'s' if len(names) != 1 else ''} ({listed})"
 
-    if s["without_audio"]:
-        ctx.say(f"note: no audio for {takes(s['without_audio'])}; head-motion needs it.")
-    if s["without_phones"]:
-        ctx.say(f"note: no phone timing for {takes(s['without_phones'])}; "
+    if s.without_audio:
+        ctx.say(f"note: no audio for {takes(s.without_audio)}; head-motion needs it.")
+    if s.without_phones:
+        ctx.say(f"note: no phone timing for {takes(s.without_phones)}; "
                 f"build-db and what needs a database leave them out; normalize, pca and solve take them.")
-    ctx.say(f"ingested {s['takes']} takes, {s['frames']} frames of {s['markers']} markers at {s['fps']:g} Hz, "
-            f"{s['phones']} phone segments ({100 * s['missing_fraction']:.2f}% samples missing) -> {output}")
+    ctx.say(f"ingested {s.takes} takes, {s.frames} frames of {s.markers} markers at {s.fps:g} Hz, "
+            f"{s.phones} phone segments ({100 * s.missing_fraction:.2f}% samples missing) -> {output}")
 
 
 @main.command()
@@ -410,18 +375,18 @@ def normalize(ctx: Context, corpus: Path, output: Path):
     from .stages import normalize as stage_normalize
 
     s = stage_normalize.run(corpus, output, ctx.config.settings("normalize"), ctx.overwrite)
-    for take, marker, start, length in s["long_gaps"]:
+    for take, marker, start, length in s.long_gaps:
         ctx.detail(f"take {take!r}, marker {marker}: gap of {length:.3f} s at {start:.3f} s is too long to fill; "
                    "PCA will project those frames from the visible markers.")
-    gaps = (f"; {len(s['long_gaps'])} gaps too long to fill are left for PCA to project (-v lists them)"
-            if s["long_gaps"] else "")
-    for warning in s["warnings"]:
+    gaps = (f"; {len(s.long_gaps)} gaps too long to fill are left for PCA to project (-v lists them)"
+            if s.long_gaps else "")
+    for warning in s.warnings:
         ctx.say(f"warning: {warning}")
-    if s["rigid_source"] == "data":
+    if s.rigid_source == "data":
         ctx.say("no rigid markers are named; found from the data (spread: how much each one's distances to the others "
-                "vary): " + ", ".join(f"{n} {x:.2f} mm" for n, x in zip(s["rigid_markers"], s["rigid_spreads_mm"])))
-    ctx.detail("head pose fitted on " + ", ".join(f"{n} (weight {w:.2f})" for n, w in zip(s["rigid_markers"], s["rigid_weights"])))
-    ctx.say(f"normalized {s['frames']} frames (head pose on {len(s['rigid_markers'])} rigid markers){gaps} -> {output}")
+                "vary): " + ", ".join(f"{n} {x:.2f} mm" for n, x in zip(s.rigid_markers, s.rigid_spreads_mm)))
+    ctx.detail("head pose fitted on " + ", ".join(f"{n} (weight {w:.2f})" for n, w in zip(s.rigid_markers, s.rigid_weights)))
+    ctx.say(f"normalized {s.frames} frames (head pose on {len(s.rigid_markers)} rigid markers){gaps} -> {output}")
 
 
 @main.command()
@@ -438,8 +403,8 @@ def pca(ctx: Context, normalized: Path, output: Path):
     from .stages import pca as stage_pca
 
     s = stage_pca.run(normalized, output, ctx.config.settings("pca"), ctx.overwrite)
-    ctx.say(f"PCA: {s['components']} components cover {100 * s['explained']:.2f}% of the variance "
-            f"(reconstruction RMS {s['rms_error_mm']:.3f} mm per marker) -> {output}")
+    ctx.say(f"PCA: {s.components} components cover {100 * s.explained:.2f}% of the variance "
+            f"(reconstruction RMS {s.rms_error_mm:.3f} mm per marker) -> {output}")
 
 
 @main.command("build-db")
@@ -456,8 +421,8 @@ def build_db(ctx: Context, pca_path: Path, output: Path):
     from .stages import build_db as stage
 
     s = stage.run(pca_path, output, ctx.config.settings("build_db"), ctx.overwrite)
-    ctx.say(f"built {s['nodes']} motion nodes ({s['with_predecessor']} with a captured predecessor); "
-            f"DSC features {s['dsc_s']:.2f} s, boundary states {s['boundary_s']:.2f} s, write {s['write_s']:.2f} s -> {output}")
+    ctx.say(f"built {s.nodes} motion nodes ({s.with_predecessor} with a captured predecessor); "
+            f"DSC features {s.dsc_s:.2f} s, boundary states {s.boundary_s:.2f} s, write {s.write_s:.2f} s -> {output}")
 
 
 @main.command()
@@ -505,13 +470,13 @@ def synthesize(ctx: Context, db: Path, method, phonemes, audio, text, emotions, 
                                  ctx.config.settings("synthesize").output_fps, ctx.config.settings("ingest"),
                                  ctx.config.settings("align"), phones_path=phonemes, emotions_path=emotions, audio=audio,
                                  text=text, head_motion_path=head_motion_path, overwrite=ctx.overwrite)
-        for phone, group in s["fallbacks"].items():
+        for phone, group in s.fallbacks.items():
             ctx.say(f"warning: the trajectory model has no Gaussian of /{phone}/; it uses the pooled Gaussian of its "
                     f"viseme class ({group}).")
-        ctx.detail(f"phases: read model {s['load_s']:.4f} s, solve and back-projection {s['solve_s']:.4f} s, "
-                   f"write {s['write_s']:.3f} s; lambda {s['lambda']:g} per frame")
-        ctx.say(f"synthesized {s['phones']} phones, {s['frames']} frames by the trajectory method, "
-                f"Eq. 6 energy {s['energy']:.2f} -> {output}")
+        ctx.detail(f"phases: read model {s.load_s:.4f} s, solve and back-projection {s.solve_s:.4f} s, "
+                   f"write {s.write_s:.3f} s; lambda {s.lam:g} per frame")
+        ctx.say(f"synthesized {s.phones} phones, {s.frames} frames by the trajectory method, "
+                f"Eq. 6 energy {s.energy:.2f} -> {output}")
         return
 
     settings = ctx.config.settings("synthesize")
@@ -520,14 +485,15 @@ def synthesize(ctx: Context, db: Path, method, phonemes, audio, text, emotions, 
     s = stage.run(db, output, settings, ctx.config.settings("ingest"), ctx.config.settings("align"),
                   phones_path=phonemes, emotions_path=emotions, constraints_path=constraints, audio=audio, text=text,
                   head_motion_path=head_motion_path, overwrite=ctx.overwrite)
-    for phone, how in s["unseen"].items():
+    for phone, how in s.unseen.items():
         ctx.say(f"warning: the database has no node of /{phone}/; it will be covered by {how}.")
     phases = [("read database", "load_s"), ("device choice", "device_choice_s"), ("transition costs", "transition_s"), ("step costs", "steps_s"),
               ("OpenCL set-up", "opencl_setup_s"), ("search", "search_s"), ("post-processing", "postprocess_s"),
               ("input hashes", "hash_wait_s"), ("write", "write_s")]
-    ctx.detail("phases: " + ", ".join(f"{name} {s[key]:.3f} s" for name, key in phases if key in s) + f"; search on {s['device']}")
-    ctx.say(f"synthesized {s['phones']} phones, {s['frames']} frames, cost {s['cost']:.2f}, "
-            f"{s['joins']} non-captured joins -> {output}")
+    ctx.detail("phases: " + ", ".join(f"{name} {getattr(s, key):.3f} s" for name, key in phases
+                                      if getattr(s, key) is not None) + f"; search on {s.device}")
+    ctx.say(f"synthesized {s.phones} phones, {s.frames} frames, cost {s.cost:.2f}, "
+            f"{s.joins} non-captured joins -> {output}")
 
 
 @main.command()
@@ -551,15 +517,16 @@ def suggest(ctx: Context, db: Path, phonemes: Path, at_s: float, emotions, const
 
     if top < 1:
         raise click.BadParameter(f"{top}: list at least one suggestion.", param_hint="--top")
-    info, rows = stage.suggest(db, phonemes, at_s, ctx.config.settings("synthesize"), ctx.config.settings("ingest"),
-                               emotions, constraints)
+    found = stage.suggest(db, phonemes, at_s, ctx.config.settings("synthesize"), ctx.config.settings("ingest"),
+                          emotions, constraints)
+    rows = found.rows
     listed = stage.shown(rows, top, context_only)
     if not listed:  # only --context-only can leave nothing: every phone has at least one node
-        raise InputError(stage.no_context_message(info, at_s) + "; drop --context-only to see the time-correct nodes.")
-    ctx.say(f"phone {info['index']} /{info['phone']}/ in context {info['context']}, relative time {info['relative_time']:.2f}; "
-            f"unconstrained optimum {info['optimum']:.2f} uses node {info['optimal_node']}")
+        raise InputError(stage.no_context_message(found, at_s) + "; drop --context-only to see the time-correct nodes.")
+    ctx.say(f"phone {found.index} /{found.phone}/ in context {found.context}, relative time {found.relative_time:.2f}; "
+            f"unconstrained optimum {found.optimum:.2f} uses node {found.optimal_node}")
     if not any(r.context_correct for r in rows):
-        ctx.say("warning: " + stage.no_context_message(info, at_s) + ".")
+        ctx.say("warning: " + stage.no_context_message(found, at_s) + ".")
     for line in stage.table(rows, top, context_only):
         click.echo(line)
     best = listed[0]
@@ -589,9 +556,9 @@ def deform(ctx: Context, motion: Path, mesh: Path, binding: Path, output: Path):
     from .stages import deform as stage
 
     s = stage.run(motion, mesh, binding, output, ctx.config.settings("deform"), ctx.overwrite)
-    if s["unreached"]:  # eyes, teeth, the back of the head: expected, so only with -v
-        ctx.detail(f"{s['unreached']} vertices are farther than deform.distance_threshold from every marker and stay at rest.")
-    ctx.say(f"deformed {s['vertices']} vertices over {s['frames']} frames (marker fit RMS {s['fit_rms']:.3g} mesh units) -> {output}")
+    if s.unreached:  # eyes, teeth, the back of the head: expected, so only with -v
+        ctx.detail(f"{s.unreached} vertices are farther than deform.distance_threshold from every marker and stay at rest.")
+    ctx.say(f"deformed {s.vertices} vertices over {s.frames} frames (marker fit RMS {s.fit_rms:.3g} mesh units) -> {output}")
 
 
 _RIG_HELP = "A user's rig: a folder with neutral.obj and one OBJ per shape, or a .gltf/.glb with morph targets (default, or 'builtin': the built-in ICT-FaceKit rig)."
@@ -624,8 +591,8 @@ def keyshapes(ctx: Context, db: Path, method, count, sheet, output: Path):
     settings = ctx.config.settings("keyshapes")
     settings = dataclasses.replace(settings, **{k: v for k, v in (("method", method), ("count", count)) if v is not None})
     s = stage.run(db, output, settings, sheet, ctx.overwrite)
-    per = ", ".join(f"{e} {v['count']} ({v['rms_mm']:.2f} mm)" for e, v in s["emotions"].items())
-    ctx.say(f"key-shapes by {s['method']}: {per} -> {output}" + (f" (sheet {sheet})" if sheet else ""))
+    per = ", ".join(f"{e} {v.count} ({v.rms_mm:.2f} mm)" for e, v in s.emotions.items())
+    ctx.say(f"key-shapes by {s.method}: {per} -> {output}" + (f" (sheet {sheet})" if sheet else ""))
 
 
 @main.command("train-trajectory")
@@ -649,9 +616,9 @@ def train_trajectory(ctx: Context, db: Path, keyshapes_path: Path, output: Path)
     from .stages import train_trajectory as stage
 
     s = stage.run(db, keyshapes_path, output, ctx.config.settings("trajectory"), ctx.overwrite)
-    ctx.detail(f"{s['samples']} training frames, weights and Gaussians in {s['train_s']:.2f} s")
-    ctx.say(f"trajectory model: {s['phones']} phones and {s['pairs']} (phone, emotion) Gaussians over {s['keyshapes']} "
-            f"key-shapes (fit RMS {s['fit_rms_mm']:.2f} mm per marker), {s['bytes']} bytes -> {output}")
+    ctx.detail(f"{s.samples} training frames, weights and Gaussians in {s.train_s:.2f} s")
+    ctx.say(f"trajectory model: {s.phones} phones and {s.pairs} (phone, emotion) Gaussians over {s.keyshapes} "
+            f"key-shapes (fit RMS {s.fit_rms_mm:.2f} mm per marker), {s.bytes} bytes -> {output}")
 
 
 @main.command()
@@ -687,23 +654,23 @@ def bind(ctx: Context, capture: Path, rig, frame, up, forward, output: Path):
     if frame is not None:
         settings = dataclasses.replace(settings, frame=frame)
     s = stage.run(capture, output, settings, ctx.config.settings("normalize"), rig, up, forward, ctx.overwrite)
-    for name, r in s["residual_mm"].items():
-        ctx.detail(f"  {name}: {r:.2f} mm from its vertex" + ("  (flagged)" if name in s["flagged"] else ""))
-    if s["unbound"]:
-        ctx.say(f"warning: not seen in frame {s['frame']}, left out: {', '.join(s['unbound'])}; choose another --frame to bind them.")
-    if s["flagged"]:
-        ctx.say(f"warning: {len(s['flagged'])} markers lie more than {s['max_residual_mm']:g} mm from the rig's surface: "
-                + ", ".join(f"{n} {s['residual_mm'][n]:.1f} mm" for n in s["flagged"])
+    for name, r in s.residual_mm.items():
+        ctx.detail(f"  {name}: {r:.2f} mm from its vertex" + ("  (flagged)" if name in s.flagged else ""))
+    if s.unbound:
+        ctx.say(f"warning: not seen in frame {s.frame}, left out: {', '.join(s.unbound)}; choose another --frame to bind them.")
+    if s.flagged:
+        ctx.say(f"warning: {len(s.flagged)} markers lie more than {s.max_residual_mm:g} mm from the rig's surface: "
+                + ", ".join(f"{n} {s.residual_mm[n]:.1f} mm" for n in s.flagged)
                 + "; check them in the CSV (flagged = 1), or delete their rows.")
-    for note in s["notes"]:
+    for note in s.notes:
         ctx.say(f"note: {note}.")
-    if s["shared_vertices"]:
-        ctx.say(f"note: {s['shared_vertices']} markers share their vertex with another; check the CSV.")
-    if s["rigid"]:
+    if s.shared_vertices:
+        ctx.say(f"note: {s.shared_vertices} markers share their vertex with another; check the CSV.")
+    if s.rigid:
         ctx.say("rigid markers (found from the data; spread in mm): "
-                + ", ".join(f"{n} {x:.2f}" for n, x in zip(s["rigid"], s["rigid_spreads_mm"])))
-    ctx.say(f"bound {s['markers']} markers of frame {s['frame']} to rig {s['rig']} (scale {s['scale']:.3g}; residual "
-            f"median {s['residual_median_mm']:.2f} mm, 95th percentile {s['residual_p95_mm']:.2f} mm) -> {output}")
+                + ", ".join(f"{n} {x:.2f}" for n, x in zip(s.rigid, s.rigid_spreads_mm)))
+    ctx.say(f"bound {s.markers} markers of frame {s.frame} to rig {s.rig} (scale {s.scale:.3g}; residual "
+            f"median {s.residual_median_mm:.2f} mm, 95th percentile {s.residual_p95_mm:.2f} mm) -> {output}")
 
 
 @main.command()
@@ -727,9 +694,9 @@ def solve(ctx: Context, motion: Path, rig, binding, take, output: Path):
     from .stages import solve as stage
 
     s = stage.run(motion, output, ctx.config.settings("solve"), rig, binding, ctx.overwrite, take)
-    ctx.say(f"solved {s['shapes']} shapes of rig {s['rig']} over {s['frames']} frames ({s['iterations']} iterations, "
-            f"marker residual RMS {s['residual_rms']:.3g} rig units; per marker median "
-            f"{s['marker_residual_median_mm']:.2f} mm, 95th percentile {s['marker_residual_p95_mm']:.2f} mm) -> {output}")
+    ctx.say(f"solved {s.shapes} shapes of rig {s.rig} over {s.frames} frames ({s.iterations} iterations, "
+            f"marker residual RMS {s.residual_rms:.3g} rig units; per marker median "
+            f"{s.marker_residual_median_mm:.2f} mm, 95th percentile {s.marker_residual_p95_mm:.2f} mm) -> {output}")
 
 
 @main.command()
@@ -764,8 +731,8 @@ def retarget(ctx: Context, motion: Path, keyshapes_path: Path, rig, binding, key
         settings = dataclasses.replace(settings, blend=blend)
     s = stage.run(motion, keyshapes_path, output, settings, ctx.config.settings("keyshapes"), rig, binding, keymorphs,
                   mesh_out, emotion, ctx.overwrite)
-    ctx.say(f"retargeted {s['frames']} frames through {s['keyshapes']} key-shapes onto rig {s['rig']} (key-shape fit RMS "
-            f"{s['residual_rms_mm']:.3g} mm) -> {output}" + (f", {s['blend']} mesh -> {mesh_out}" if mesh_out else ""))
+    ctx.say(f"retargeted {s.frames} frames through {s.keyshapes} key-shapes onto rig {s.rig} (key-shape fit RMS "
+            f"{s.residual_rms_mm:.3g} mm) -> {output}" + (f", {s.blend} mesh -> {mesh_out}" if mesh_out else ""))
 
 
 @main.command("rig-mesh")
@@ -785,7 +752,7 @@ def rig_mesh(ctx: Context, curves: Path, rig, binding, output: Path):
     from .stages import rig_mesh as stage
 
     s = stage.run(curves, output, rig, binding, ctx.overwrite)
-    ctx.say(f"posed rig {s['rig']} ({s['vertices']} vertices) over {s['frames']} frames -> {output}")
+    ctx.say(f"posed rig {s.rig} ({s.vertices} vertices) over {s.frames} frames -> {output}")
 
 
 @main.command()
@@ -811,9 +778,9 @@ def render(ctx: Context, anims, audios, view, compare, output: Path):
     if view:
         settings = dataclasses.replace(settings, view=view)
     s = stage.run(list(anims), list(audios), output, settings, compare, ctx.overwrite)
-    for note in s["notes"]:  # a mesh without eye or mouth holes: expected for plain meshes, so only with -v
+    for note in s.notes:  # a mesh without eye or mouth holes: expected for plain meshes, so only with -v
         ctx.detail(f"render: {note}.")
-    ctx.say(f"rendered {s['frames']} frames ({s['seconds']:.2f} s of video, {s['frames_per_s']:.1f} frames/s) -> {output}")
+    ctx.say(f"rendered {s.frames} frames ({s.seconds:.2f} s of video, {s.frames_per_s:.1f} frames/s) -> {output}")
 
 
 @main.command()
@@ -844,9 +811,9 @@ def export(ctx: Context, artifact: Path, fmt: str, fps: float | None, head_motio
 
     s = stage.run(artifact, fmt, output, ctx.config.settings("export"), fps=fps, head_motion=head_motion, audio=audio,
                   mesh=mesh, overwrite=ctx.overwrite)
-    extra = f" (+ {s['files'][1].name})" if fmt in ("gltf", "glb") and len(s["files"]) > 1 else ""
-    what = f"{len(s['files'])} files" if fmt == "obj-seq" else fmt
-    ctx.say(f"exported {s['frames']} frames ({s['seconds']:.2f} s at {s['fps']:g} frames/s) of the {s['kind']} "
+    extra = f" (+ {s.files[1].name})" if fmt in ("gltf", "glb") and len(s.files) > 1 else ""
+    what = f"{len(s.files)} files" if fmt == "obj-seq" else fmt
+    ctx.say(f"exported {s.frames} frames ({s.seconds:.2f} s at {s.fps:g} frames/s) of the {s.kind} "
             f"as {what} -> {output}{extra}")
 
 
@@ -887,14 +854,14 @@ def player(ctx: Context, artifact: Path | None, audio: Path | None, motion: Path
         if motion is not None:
             raise click.UsageError("--motion is for an ARTIFACT; a live page takes its frames from the stream.")
         s = stage.run_live(live_url, output, audio=audio, overwrite=ctx.overwrite)
-        ctx.say(f"live player for {live_url} ({s['vertices']} vertices, {s['targets']} ARKit morph targets, "
-                f"{s['seconds']:.2f} s of speech to send) -> {output} ({s['bytes'] / 1e6:.1f} MB)")
+        ctx.say(f"live player for {live_url} ({s.vertices} vertices, {s.targets} ARKit morph targets, "
+                f"{s.seconds:.2f} s of speech to send) -> {output} ({s.bytes / 1e6:.1f} MB)")
         return
     assert artifact is not None
     s = stage.run(artifact, output, audio=audio, motion=motion, view=ctx.config.settings("render"),
                   overwrite=ctx.overwrite)
-    ctx.say(f"player of {s['frames']} frames ({s['seconds']:.2f} s at {s['fps']:g} frames/s, "
-            f"{s['phones']} phones) -> {output} ({s['bytes'] / 1e6:.1f} MB)")
+    ctx.say(f"player of {s.frames} frames ({s.seconds:.2f} s at {s.fps:g} frames/s, "
+            f"{s.phones} phones) -> {output} ({s.bytes / 1e6:.1f} MB)")
 
 
 @main.command()
@@ -951,13 +918,13 @@ def batch(ctx: Context, script: Path, db_path: Path, output: Path, outputs: str 
     s = stage.run(script, db_path, output, settings, ctx.config.settings("synthesize"), ctx.config.settings("ingest"),
                   ctx.config.settings("align"), ctx.config.settings("deform"), ctx.config.settings("render"),
                   mesh=mesh, binding=binding, scheduler=scheduler, overwrite=ctx.overwrite, on_result=on_result)
-    skipped = f", {s['skipped']} up to date" if s["skipped"] else ""
-    ctx.say(f"{s['ok']} of {s['lines']} lines done{skipped}, {s['failed']} failed in {s['seconds']:.1f} s; "
-            f"summary: {s['html']}")
-    if s["failed"]:
-        first = next(r for r in s["results"] if r.status == "failed")
-        raise FacesynthError(f"{s['failed']} of {s['lines']} lines failed (first: {first.id}: {first.reason.rstrip('.')}); "
-                             f"every reason is in {s['csv']}.")
+    skipped = f", {s.skipped} up to date" if s.skipped else ""
+    ctx.say(f"{s.ok} of {s.lines} lines done{skipped}, {s.failed} failed in {s.seconds:.1f} s; "
+            f"summary: {s.html}")
+    if s.failed:
+        first = next(r for r in s.results if r.status == "failed")
+        raise FacesynthError(f"{s.failed} of {s.lines} lines failed (first: {first.id}: {first.reason.rstrip('.')}); "
+                             f"every reason is in {s.csv}.")
 
 
 @main.command()
@@ -985,7 +952,7 @@ def evaluate(ctx: Context, db: Path, heldout: Path, truth: Path | None, trajecto
     s = stage.run(db, heldout, output, ctx.config.settings("evaluate"), ctx.config.settings("synthesize"),
                   ctx.config.settings("normalize"), ctx.overwrite, truth=truth, trajectory=trajectory,
                   trajectory_settings=ctx.config.settings("trajectory"))
-    for method, m in s.items():
+    for method, m in s.methods.items():
         f = m.get("figures", {})
         clean = f" (clean truth {f['rms_clean_mm']['value']:.3f} mm)" if f.get("rms_clean_mm", {}).get("value") is not None else ""
         ctx.say(f"{method}: RMS {m['rms_mm']:.3f} mm{clean}, velocity RMS {m['velocity_rms_mm_s']:.1f} mm/s")
@@ -1012,7 +979,7 @@ def capture(ctx: Context, corpus: Path, db_path: Path, take: str, output: Path):
 
     s = stage.run(db_path, corpus, take, output, ctx.config.settings("normalize"),
                       ctx.config.settings("synthesize").output_fps, ctx.overwrite)
-    ctx.say(f"exported take {s['take']} ({s['frames']} frames) -> {output}")
+    ctx.say(f"exported take {s.take} ({s.frames} frames) -> {output}")
 
 
 @main.command()
@@ -1052,17 +1019,17 @@ def tune(ctx: Context, db: Path, validation: Path, output: Path):
     finally:
         if bar is not None:
             bar.close()
-    for warning in s["warnings"]:
+    for warning in s.warnings:
         ctx.say(f"warning: {warning}")
-    ctx.say(f"{s['evaluations']} evaluations in {s['seconds']:.1f} s on {s['validation_sentences']} validation sentences: "
-            f"error {s['validation_err_before']:.4f} -> {s['validation_err_after']:.4f} mm^2")
-    if "test_err_before" in s:
-        (lb, hb), (la, ha) = s["test_ci_before"], s["test_ci_after"]
-        ctx.say(f"on {s['test_sentences']} test sentences not used for tuning: {s['test_err_before']:.4f} [{lb:.4f}, {hb:.4f}] -> "
-                f"{s['test_err_after']:.4f} [{la:.4f}, {ha:.4f}] mm^2 (bootstrap 95%)")
-    ctx.say("weights: " + ", ".join(f"{k}={v:.4g}" for k, v in s["weights"].items())
-            + f"; smoothing_half_window={s['smoothing_half_window']}, boundary_fit_frames={s['boundary_fit_frames']} -> {output}")
-    if s["boundary_fit_changed"]:
+    ctx.say(f"{s.evaluations} evaluations in {s.seconds:.1f} s on {s.validation_sentences} validation sentences: "
+            f"error {s.validation_err_before:.4f} -> {s.validation_err_after:.4f} mm^2")
+    if s.test_err_before is not None:
+        (lb, hb), (la, ha) = s.test_ci_before, s.test_ci_after
+        ctx.say(f"on {s.test_sentences} test sentences not used for tuning: {s.test_err_before:.4f} [{lb:.4f}, {hb:.4f}] -> "
+                f"{s.test_err_after:.4f} [{la:.4f}, {ha:.4f}] mm^2 (bootstrap 95%)")
+    ctx.say("weights: " + ", ".join(f"{k}={v:.4g}" for k, v in s.weights.items())
+            + f"; smoothing_half_window={s.smoothing_half_window}, boundary_fit_frames={s.boundary_fit_frames} -> {output}")
+    if s.boundary_fit_changed:
         ctx.say(f"the boundary-fit length changed: run build-db (and prune) again with --config {output} for it to take effect.")
 
 
@@ -1094,11 +1061,11 @@ def isomap_build(ctx: Context, db: Path, output: Path, images: Path | None):
     from .stages import isomap as stage
 
     s = stage.run(db, output, ctx.config.settings("isomap"), images, ctx.overwrite)
-    for phone, note in s["notes"].items():  # small clusters get fewer neighbours: expected, so only with -v
+    for phone, note in s.notes.items():  # small clusters get fewer neighbours: expected, so only with -v
         ctx.detail(f"/{phone}/: {note}")
     where = f"; images in {images}/index.html" if images else ""
-    ctx.say(f"embedded {s['clusters']} phoneme clusters ({s['frames']} frames, largest {s['largest']}) "
-            f"in {s['embed_s']:.1f} s -> {output}{where}")
+    ctx.say(f"embedded {s.clusters} phoneme clusters ({s.frames} frames, largest {s.largest}) "
+            f"in {s.embed_s:.1f} s -> {output}{where}")
 
 
 # ignore_unknown_options: a negative coordinate ('-1.2') is an argument, not an unknown option.
@@ -1121,9 +1088,9 @@ def isomap_pick(ctx: Context, isomap_path: Path, phoneme: str, x: float, y: floa
     """
     from .stages import isomap as stage
 
-    markers, names, info = stage.pick(isomap_path, phoneme, x, y, pca_map)
-    ctx.detail(f"triangle of frames {info['corners']} (nodes {info['nodes']}), weights {info['weights']}")
-    _echo_lines(stage.markers_csv(markers, names))
+    picked = stage.pick(isomap_path, phoneme, x, y, pca_map)
+    ctx.detail(f"triangle of frames {picked.corners} (nodes {picked.nodes}), weights {picked.weights}")
+    _echo_lines(stage.markers_csv(picked.markers, picked.marker_names))
 
 
 @isomap.command("page")
@@ -1218,13 +1185,13 @@ def expression_fit(ctx: Context, normalized: Path, output: Path):
     from .stages import expression as stage
 
     s = stage.fit(normalized, output, ctx.config.settings("expression"), ctx.overwrite)
-    for note in s["skipped"]:
+    for note in s.skipped:
         ctx.detail(f"skipped {note}.")
-    for n, err in enumerate(s["errors"], 1):
+    for n, err in enumerate(s.errors, 1):
         ctx.detail(f"iteration {n}: mean squared error {err:.6g} mm^2")
-    ctx.say(f"fitted {', '.join(s['emotions'])} on {s['sentences']} sentences ({s['frames']} aligned frames, "
-            f"{s['components']} components, content size {s['content_dim']}); error {s['errors'][-1]:.4g} mm^2 "
-            f"after {len(s['errors'])} iterations -> {output}")
+    ctx.say(f"fitted {', '.join(s.emotions)} on {s.sentences} sentences ({s.frames} aligned frames, "
+            f"{s.components} components, content size {s.content_dim}); error {s.errors[-1]:.4g} mm^2 "
+            f"after {len(s.errors)} iterations -> {output}")
 
 
 @expression.command("analyze")
@@ -1272,8 +1239,8 @@ def expression_restyle(ctx: Context, model: Path, motion: Path, to, emotions, in
         raise UsageError("give exactly one of --to or --emotions.")
     s = stage.restyle(model, motion, output, ctx.config.settings("expression"), ctx.config.settings("ingest"), to=to,
                       intensity=intensity, emotions_path=emotions, overwrite=ctx.overwrite)
-    ctx.say(f"restyled {s['frames']} frames (mostly {s['from']} before) to {to or emotions} at intensity {intensity:g}; "
-            f"RMS marker change {s['change_mm']:.2f} mm -> {output}")
+    ctx.say(f"restyled {s.frames} frames (mostly {s.from_emotion} before) to {to or emotions} at intensity {intensity:g}; "
+            f"RMS marker change {s.change_mm:.2f} mm -> {output}")
 
 
 @main.command("head-motion")
@@ -1300,10 +1267,10 @@ def head_motion(ctx: Context, db: Path, audio: Path, corpus_path: Path, output: 
     from .stages import head_motion as stage
 
     s = stage.run(db, corpus_path, audio, output, ctx.config.settings("head_motion"), ctx.overwrite)
-    for warning in s["warnings"]:
+    for warning in s.warnings:
         ctx.say(f"warning: {warning}")
-    ctx.say(f"head motion for {s['seconds']:.2f} s from {s['segments']} pitch segments ({s['consecutive']} joins "
-            f"kept consecutive), pitch of {s['library_takes']} takes in {s['pitch_s']:.1f} s -> {output}")
+    ctx.say(f"head motion for {s.seconds:.2f} s from {s.segments} pitch segments ({s.consecutive} joins "
+            f"kept consecutive), pitch of {s.library_takes} takes in {s.pitch_s:.1f} s -> {output}")
 
 
 @main.command()
@@ -1329,7 +1296,6 @@ def stream(ctx: Context, db_path: Path, audio: str, serve: str | None, livelink:
     Example:
       facesynth stream db.h5 --audio corpus/audio/neutral_s016.wav > frames.jsonl
     """
-    from .errors import InputError
     from .stages import stream as stage
 
     c = ctx.config
@@ -1338,16 +1304,8 @@ def stream(ctx: Context, db_path: Path, audio: str, serve: str | None, livelink:
         stage.serve(model, c.settings("align"), serve, livelink=livelink, ready=ctx.say, workers=workers)
         ctx.say("stopped.")
         return
-    if str(audio) == "-":
-        frames = stage.run_stdin(model, c.settings("align"), sys.stdin.buffer, click.echo, where="standard input",
-                                 livelink=livelink, markers=markers, realtime=realtime)
-    else:
-        path = Path(audio)
-        if not path.is_file():
-            raise InputError(f"{path}: no such audio file.")
-        with open(path, "rb") as fh:
-            frames = stage.run_stdin(model, c.settings("align"), fh, click.echo, where=str(path), livelink=livelink,
-                                     markers=markers, realtime=realtime)
+    frames = stage.run(model, c.settings("align"), audio, click.echo, livelink=livelink, markers=markers,
+                       realtime=realtime)
     ctx.detail(f"{frames} frames")
 
 
@@ -1369,13 +1327,13 @@ def prune(ctx: Context, db_path: Path, remove: str | None, auto: bool, reason: s
     from .stages import prune as stage
 
     s = stage.run(db_path, output, ctx.config.settings("prune"), remove, auto, reason, ctx.overwrite)
-    if not s["removed"]:
+    if not s.removed:
         ctx.say("nothing to remove; no output written.")
         return
     if auto:
-        ctx.say("found " + ", ".join(f"{v} {k}" for k, v in stage.count_by_kind(s["found"]).items()))
-        ctx.detail("removed: " + ",".join(str(i) for i in s["found"]))
-    ctx.say(f"removed {s['removed']} nodes, kept {s['kept']} ({s['links_cut']} captured links cut) -> {output}")
+        ctx.say("found " + ", ".join(f"{v} {k}" for k, v in stage.count_by_kind(s.found).items()))
+        ctx.detail("removed: " + ",".join(str(i) for i in s.found))
+    ctx.say(f"removed {s.removed} nodes, kept {s.kept} ({s.links_cut} captured links cut) -> {output}")
 
 
 @main.command()

@@ -712,7 +712,7 @@ class Config:
         if self._reads is not None and section not in self._reads:
             # A programming error, not the user's: the command reads a section it does not declare.
             raise RuntimeError(f"[{section}] is not among the sections this command declares ({', '.join(self._reads)}); "
-                               "add it to facesynth.cli.READS")
+                               "add it to the reads of its Stage in facesynth/pipeline.py")
         cls = cls or SECTIONS[section]
         values = {}
         for field in dataclasses.fields(cls):

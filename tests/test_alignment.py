@@ -102,7 +102,7 @@ def test_a_dict_word_the_dictionary_already_has_is_added_beside_it(tiny_corpus, 
     d.write_text(f"{word}  L AE F\n{word}  L AA F\n")  # one already known, one new
     out = tmp_path / "a.TextGrid"
     summary = align.run(tiny_corpus / "audio" / "neutral_s001.wav", text, out, config.settings("align"), dict_path=d)
-    assert summary["phones"] > 0 and out.exists()
+    assert summary.phones > 0 and out.exists()
 
 
 def test_voice_activity_and_the_longest_voiced_pause(config):

@@ -144,8 +144,8 @@ def load(path: Path, motion: Path | None = None) -> Exportable:
         raise InputError(f"{path}: file not found; pass a motion, mesh animation or curves artifact.")
     if kind not in EXPORTABLE:
         found = f"a '{kind}' artifact" if kind else "no facesynth artifact"
-        raise InputError(f"{path}: is {found}; export reads the output of `{PRODUCERS['motion']}`, "
-                         f"`{PRODUCERS['meshanim']}` or `{PRODUCERS['curves']}`.")
+        raise InputError(f"{path}: is {found}; export reads a 'motion', 'meshanim' or 'curves' "
+                         "artifact (the output of facesynth synthesize, deform or solve, among others).")
     if kind == "motion":
         from ..model.motion import Motion
 
@@ -189,7 +189,7 @@ def load(path: Path, motion: Path | None = None) -> Exportable:
         from ..model.motion import Motion
 
         if artifact_kind(Path(motion)) != "motion":
-            raise InputError(f"{motion}: is not a motion artifact; pass the output of `{PRODUCERS['motion']}`.")
+            raise InputError(f"{motion}: is not a motion artifact; pass the output of {PRODUCERS['motion']}.")
         m = Motion.read(Path(motion))
         given = m.frame_provenance(Path(motion))
         return _labelled(out, None if given is None else given.resampled(out.n_frames, m.fps, out.fps))

@@ -1,7 +1,10 @@
 """The artifact kinds: each kind's schema, the commands that make it and the version of the
 group encodings. The data every layer above the formats reads (:mod:`facesynth.artifacts`,
-:mod:`facesynth.check`, :mod:`facesynth.model.spec`); it imports nothing of facesynth.
+:mod:`facesynth.check`, :mod:`facesynth.model.spec`); it imports only the stage declarations
+(:mod:`facesynth.pipeline`, standard library only), whose outputs name the commands that make each kind.
 """
+
+from ..pipeline import producers
 
 #: Current schema of each artifact kind; bumped on an incompatible change.
 SCHEMAS: dict[str, int] = {
@@ -19,21 +22,9 @@ SCHEMAS: dict[str, int] = {
     "trajectory": 1,
 }
 
-#: Which stage makes each kind (used in messages that say what to do).
-PRODUCERS: dict[str, str] = {
-    "corpus": "facesynth ingest",
-    "normalized": "facesynth normalize",
-    "pca": "facesynth pca",
-    "motiondb": "facesynth build-db",
-    "isomap": "facesynth isomap",
-    "motion": "facesynth synthesize",
-    "meshanim": "facesynth deform",
-    "expression": "facesynth expression fit",
-    "headmotion": "facesynth head-motion",
-    "curves": "facesynth solve",
-    "keyshapes": "facesynth keyshapes",
-    "trajectory": "facesynth train-trajectory",
-}
+#: The commands that write each kind, for messages that say what to do ("pass the output of
+#: `facesynth synthesize`, ... or `facesynth capture`"), from the declarations in facesynth.pipeline.
+PRODUCERS: dict[str, str] = {kind: producers(kind) for kind in SCHEMAS}
 
 #: Version of each group encoding (the ``encoding-type`` attribute names the group's layout,
 #: ``encoding-version`` this number); bumped when a group's layout changes incompatibly.

@@ -24,7 +24,8 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
-from .kinds import ENCODING_VERSION, PRODUCERS, SCHEMAS
+from ..pipeline import writers
+from .kinds import ENCODING_VERSION, SCHEMAS
 
 #: What each shape symbol counts.
 SYMBOLS: dict[str, str] = {
@@ -159,8 +160,8 @@ Entry = Dataset | Group
 class Kind:
     """An artifact kind at one schema: its root entries (shared blocks included) and root
     attributes beyond the common ones. ``variant_attr`` names the root attribute that selects
-    a variant (absent: ``variants[0]``); ``writers`` the commands that write it, when more than
-    its producer."""
+    a variant (absent: ``variants[0]``). The commands that write it are declared with the
+    stages (:func:`facesynth.pipeline.writers`)."""
 
     name: str
     schema: int
@@ -169,12 +170,11 @@ class Kind:
     attrs: tuple[Attr, ...] = ()
     variant_attr: str | None = None
     variants: tuple[str, ...] = ()
-    writers: tuple[str, ...] = ()
 
     @property
     def producers(self) -> tuple[str, ...]:
-        """The commands that write this kind."""
-        return self.writers or (PRODUCERS[self.name],)
+        """The commands that write this kind, in pipeline order."""
+        return writers(self.name)
 
     @property
     def root(self) -> tuple[Entry, ...]:
@@ -354,7 +354,7 @@ MOTIONDB = Kind("motiondb", SCHEMAS["motiondb"], (
         Dataset("removed_id", "int64", ("R",), "every removed id, all prunes so far"),
         Dataset("reason", "str", ("R",), "why each was removed"),
     ), required=False),
-), writers=("facesynth build-db", "facesynth prune"))
+))
 
 ISOMAP = Kind("isomap", SCHEMAS["isomap"], (
     "Phoneme-Isomaps (paper IV, Eq. 3, Fig. 7): per phoneme cluster two 2D maps with their Delaunay "
@@ -437,8 +437,7 @@ MOTION = Kind("motion", SCHEMAS["motion"], (
                          "`trajectory` for the trajectory method; absent for a synthesis by search",
                          choices=("capture", "restyle", "trajectory"), required=False),
           Attr("take", "str", "the captured take", required="capture")),
-    variant_attr="source", variants=("synthesis", "capture", "restyle", "trajectory"),
-    writers=("facesynth synthesize", "facesynth capture", "facesynth expression restyle"))
+    variant_attr="source", variants=("synthesis", "capture", "restyle", "trajectory"))
 
 FRAME_PROVENANCE = Group("provenance", "frame-provenance", (
     "where each frame came from, carried from `facesynth synthesize` (its `path` and `provenance`); a frame made "
@@ -508,8 +507,7 @@ CURVES = Kind("curves", SCHEMAS["curves"], (
 ), attrs=(Attr("rig_name", "str", "the rig (`ict-facekit` for the built-in rig)"),
           Attr("rig_sha256", "str", "sha256 of the rig's data (package data, a user's rig folder or glTF)"),
           Attr("source", "str", "what made the weights", choices=("solve", "retarget", "truth", "import")),
-          Attr("method", "str", "how, in words (e.g. `linear`, `deformation-gradient`), or empty")),
-    writers=("facesynth solve", "facesynth retarget"))
+          Attr("method", "str", "how, in words (e.g. `linear`, `deformation-gradient`), or empty")))
 
 KEYSHAPES = Kind("keyshapes", SCHEMAS["keyshapes"], (
     "Key-shapes chosen from a motion database, per emotion (Chuang & Bregler 2005 §4.1 PCA extremes, or "
@@ -705,8 +703,8 @@ def markdown() -> str:
         out += [f"### `{b.name}`", "", b.doc, ""] + _rows(b.entries) + [""]
     out += ["## Kinds", ""]
     for k in KINDS.values():
-        writers = " and ".join(f"`{w}`" for w in k.producers)
-        out += [f"### `{k.name}` (schema {k.schema}, written by {writers})", "", k.doc, ""]
+        by = " and ".join(f"`{w}`" for w in k.producers)
+        out += [f"### `{k.name}` (schema {k.schema}, written by {by})", "", k.doc, ""]
         blocks = [e.name for e in k.entries if isinstance(e, Block)]
         if blocks:
             out += ["Shared blocks: " + ", ".join(f"`{b}`" for b in blocks) + ".", ""]

@@ -11,6 +11,8 @@ node's first). A node is *context-correct* when it has the input phone's triphon
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
 from ..errors import InputError
@@ -67,15 +69,25 @@ def context_name(phones: list[str], c: int) -> str:
     return f"{prev_p}-{phones[c]}+{next_p}"
 
 
-def context_correct_steps(phones: list[str], starts: np.ndarray, ends: np.ndarray, db_contexts: set[tuple[str, str, str]]) -> list[dict]:
-    """The spoken steps of an utterance that have at least one context-correct node: their
-    index, phone, triphone context and mid time (s)."""
+@dataclass(frozen=True)
+class ContextStep:
+    """A spoken phone of the utterance with at least one context-correct node: its ``index`` (step),
+    ``phone``, triphone ``context`` ('prev-phone+next') and mid time ``time_s`` (s)."""
+
+    index: int
+    phone: str
+    context: str
+    time_s: float
+
+
+def context_correct_steps(phones: list[str], starts: np.ndarray, ends: np.ndarray,
+                          db_contexts: set[tuple[str, str, str]]) -> list[ContextStep]:
+    """The spoken steps of an utterance that have at least one context-correct node."""
     out = []
     for c, phone in enumerate(phones):
         if phone == PAU:
             continue
         prev_p, next_p = triphone(phones, c)
         if (prev_p, phone, next_p) in db_contexts:
-            out.append({"index": c, "phone": phone, "context": context_name(phones, c),
-                        "time_s": round(0.5 * (float(starts[c]) + float(ends[c])), 3)})
+            out.append(ContextStep(c, phone, context_name(phones, c), round(0.5 * (float(starts[c]) + float(ends[c])), 3)))
     return out

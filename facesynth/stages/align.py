@@ -5,6 +5,7 @@ phone and word tiers (no word tier when phones were recognised without words).""
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from pathlib import Path
 
 from ..alignment import read_pronunciations
@@ -17,13 +18,30 @@ from ..phonemes import PAU
 from ..recognition import align_or_recognize
 
 
+@dataclass(frozen=True)
+class AlignResult:
+    """What ``facesynth align`` did.
+
+    phones: phones placed, pauses not counted.
+    seconds: the end of the last segment (s), the length of the aligned speech.
+    method: the method that placed the words (``align.methods``: pocketsphinx, a wider beam, ...).
+    attempts: why each earlier method was not used, in order.
+    warnings: e.g. a transcript that seems to lack words.
+    recognized: what was recognised from the speech; empty when the text was given.
+    """
+
+    phones: int
+    seconds: float
+    method: str
+    attempts: list[str]
+    warnings: list[str]
+    recognized: str
+
+
 def run(audio_path: Path, text: str | None, out: Path, settings: AlignSettings, dict_path: Path | None = None,
-        overwrite: bool = False) -> dict:
+        overwrite: bool = False) -> AlignResult:
     """Align ``text`` to the speech of ``audio_path`` (``text`` None: recognise it, by
-    ``settings.recognition``) and write ``out`` (a TextGrid with phone and word tiers). Returns
-    the number of phones, the duration (s), the method that placed the words, why earlier
-    methods were not used (``attempts``), ``warnings`` (a transcript that seems to lack words)
-    and ``recognized`` (what was recognised; empty for a given text)."""
+    ``settings.recognition``) and write ``out`` (a TextGrid with phone and word tiers)."""
     check_output(out, overwrite)
     samples, rate = read_audio(audio_path)
     extra = read_pronunciations(dict_path) if dict_path else {}
@@ -32,8 +50,8 @@ def run(audio_path: Path, text: str | None, out: Path, settings: AlignSettings, 
     tiers = {"phones": segments, "words": result.words} if result.words else {"phones": segments}
     with atomic_path(out, overwrite) as tmp:
         write_textgrid(tmp, tiers, segments[-1].end)
-    return {"phones": sum(s.label != PAU for s in segments), "seconds": segments[-1].end, "method": result.method,
-            "attempts": result.attempts, "warnings": result.warnings, "recognized": result.recognized}
+    return AlignResult(sum(s.label != PAU for s in segments), segments[-1].end, result.method, result.attempts,
+                       result.warnings, result.recognized)
 
 
 def read_transcript(path: Path) -> str:

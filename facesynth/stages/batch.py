@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import time
 from collections.abc import Callable
+from dataclasses import dataclass
 from pathlib import Path
 
 from ..artifacts import check_output_folder, open_artifact, sha256_of
@@ -41,13 +42,33 @@ def prepare(script: Path, db: Path, out_dir: Path, settings: BatchSettings, synt
     return lines, job
 
 
+@dataclass(frozen=True)
+class BatchResult:
+    """What ``facesynth batch`` did.
+
+    ok, skipped, failed: lines by status (skipped: up to date from an earlier run).
+    lines: lines of the script.
+    results: every line's result, in script order.
+    csv, html: the summary's paths.
+    seconds: wall time (s).
+    """
+
+    ok: int
+    skipped: int
+    failed: int
+    lines: int
+    results: list[LineResult]
+    csv: Path
+    html: Path
+    seconds: float
+
+
 def run(script: Path, db: Path, out_dir: Path, settings: BatchSettings, synthesize: SynthesizeSettings,
         ingest: IngestSettings, align: AlignSettings, deform: DeformSettings, render: RenderSettings, *,
         mesh: Path | None = None, binding: Path | None = None, scheduler: str | None = None, overwrite: bool = False,
-        on_result: Callable[[LineResult], None] | None = None, client=None) -> dict:
+        on_result: Callable[[LineResult], None] | None = None, client=None) -> BatchResult:
     """Run every line of ``script`` and write the summary into ``out_dir``. ``client``: an open
-    ``distributed.Client`` to use instead of creating one (tests, notebooks). Returns counts
-    by status, the results, the summary paths and the wall time (s)."""
+    ``distributed.Client`` to use instead of creating one (tests, notebooks)."""
     lines, job = prepare(script, db, out_dir, settings, synthesize, ingest, align, deform, render, mesh=mesh,
                          binding=binding, overwrite=overwrite)
     started = time.perf_counter()
@@ -72,5 +93,6 @@ def run(script: Path, db: Path, out_dir: Path, settings: BatchSettings, synthesi
             results = gather(new_client)
     csv_path, html_path = write_summary(job.out_dir, results, f"facesynth batch {script.name}")
     counts = {s: sum(r.status == s for r in results) for s in ("ok", "skipped", "failed")}
-    return {**counts, "lines": len(results), "results": results, "csv": csv_path, "html": html_path,
-            "seconds": time.perf_counter() - started}
+    return BatchResult(counts["ok"], counts["skipped"], counts["failed"], len(results), results, csv_path, html_path,
+                       time.perf_counter() - started)
+

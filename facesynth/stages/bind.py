@@ -16,6 +16,7 @@ rigid flags (and no jaw sides), with a note.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -30,9 +31,46 @@ from ..retarget.bind import AXES, bind_markers, jaw_sides
 from ..retarget.rig import load_rig_mesh
 
 
+@dataclass(frozen=True)
+class BindResult:
+    """What ``facesynth bind`` placed.
+
+    rig: the rig's name.
+    frame: the capture frame fitted (0-based).
+    markers: markers bound.
+    unbound: markers not seen in that frame, left out.
+    residual_mm: each bound marker's distance from its vertex (mm), by name.
+    flagged: the markers farther than ``max_residual_mm`` from the rig's surface, in capture order.
+    residual_median_mm, residual_p95_mm: the median and 95th percentile of those distances (mm).
+    scale: the similarity's scale from capture millimetres to rig units.
+    start: which start of the closest-point fit won.
+    rigid: the rigid (head) markers found from the data.
+    rigid_spreads_mm: how much each one's distances to the others vary (mm).
+    shared_vertices: markers that share their vertex with another.
+    max_residual_mm: bind.max_residual_mm, the flagging distance (mm).
+    notes: what the user should check.
+    """
+
+    rig: str
+    frame: int
+    markers: int
+    unbound: list[str]
+    residual_mm: dict[str, float]
+    flagged: list[str]
+    residual_median_mm: float
+    residual_p95_mm: float
+    scale: float
+    start: str
+    rigid: list[str]
+    rigid_spreads_mm: list[float]
+    shared_vertices: int
+    max_residual_mm: float
+    notes: list[str]
+
+
 def run(capture: Path, out: Path, settings: BindSettings, normalize_settings: NormalizeSettings,
         rig_path: Path | None = None, up: str | None = None, forward: str | None = None,
-        overwrite: bool = False) -> dict:
+        overwrite: bool = False) -> BindResult:
     """Bind the markers of ``capture`` (C3D, TRC or CSV) to the rig and write the CSV ``out``."""
     check_output(out, overwrite)
     if (up is None) != (forward is None):
@@ -77,10 +115,9 @@ def run(capture: Path, out: Path, settings: BindSettings, normalize_settings: No
     with atomic_path(out, overwrite) as tmp:
         write_binding(tmp, dict(zip(binding.names, binding.vertices.tolist())), rigid, residual, flagged)
     shared = len(binding.vertices) - len(np.unique(binding.vertices))
-    return {"rig": rig_name, "frame": frame, "markers": len(binding.names), "unbound": binding.unbound,
-            "residual_mm": residual, "flagged": sorted(flagged, key=binding.names.index),
-            "residual_median_mm": float(np.median(binding.residual_mm)),
-            "residual_p95_mm": float(np.percentile(binding.residual_mm, 95)), "scale": binding.fit.scale,
-            "start": binding.fit.start, "rigid": [take.names[i] for i in rigid_idx],
-            "rigid_spreads_mm": [float(x) for x in spreads], "shared_vertices": shared,
-            "max_residual_mm": settings.max_residual_mm, "notes": notes}
+    return BindResult(rig_name, frame, len(binding.names), binding.unbound, residual,
+                      sorted(flagged, key=binding.names.index), float(np.median(binding.residual_mm)),
+                      float(np.percentile(binding.residual_mm, 95)), binding.fit.scale, binding.fit.start,
+                      [take.names[i] for i in rigid_idx], [float(x) for x in spreads], shared,
+                      settings.max_residual_mm, notes)
+

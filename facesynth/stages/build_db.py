@@ -11,6 +11,7 @@ relative time in the node, form the phoneme clusters.
 from __future__ import annotations
 
 import time
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -47,13 +48,30 @@ def build(pca: PcaFrames, settings: BuildDbSettings, source: str = "") -> tuple[
     return db, features, timings
 
 
-def run(pca_path: Path, out: Path, settings: BuildDbSettings, overwrite: bool = False) -> dict:
-    """Build the database from ``pca_path`` and write ``out`` (a ``motiondb`` artifact); returns
-    a summary with the time of each part in seconds."""
+@dataclass(frozen=True)
+class BuildDbResult:
+    """What ``facesynth build-db`` built.
+
+    nodes: motion nodes (one per phone segment of the training takes).
+    with_predecessor: nodes with a captured predecessor.
+    dsc_s, boundary_s, write_s: seconds spent on the DSC features, the boundary states and writing.
+    """
+
+    nodes: int
+    with_predecessor: int
+    dsc_s: float
+    boundary_s: float
+    write_s: float
+
+
+def run(pca_path: Path, out: Path, settings: BuildDbSettings, overwrite: bool = False) -> BuildDbResult:
+    """Build the database from ``pca_path`` and write ``out`` (a ``motiondb`` artifact)."""
     pca = PcaFrames.read(pca_path)
     db, features, timings = build(pca, settings, str(pca_path))
     t0 = time.perf_counter()
     db.write(out, features, config=settings_json(settings), inputs=[pca_path], overwrite=overwrite)
     timings["write_s"] = time.perf_counter() - t0
     nodes = db.nodes
-    return {"nodes": len(nodes), "with_predecessor": int((nodes.pre >= 0).sum()), **timings}
+    return BuildDbResult(len(nodes), int((nodes.pre >= 0).sum()), timings["dsc_s"], timings["boundary_s"],
+                         timings["write_s"])
+

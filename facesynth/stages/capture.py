@@ -4,6 +4,7 @@ render beside a synthesis."""
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -18,8 +19,20 @@ from ..model.motiondb import MotionDatabase
 from ..motion.postprocess import downsample
 
 
+@dataclass(frozen=True)
+class CaptureResult:
+    """What ``facesynth capture`` exported.
+
+    take: the captured take's name.
+    frames: frames of the motion at the output rate.
+    """
+
+    take: str
+    frames: int
+
+
 def run(db_path: Path, corpus_path: Path, take: str, out: Path, normalize_settings: NormalizeSettings,
-        output_fps: float, overwrite: bool = False) -> dict:
+        output_fps: float, overwrite: bool = False) -> CaptureResult:
     """Write take ``take`` of ``corpus_path`` to ``out`` at ``output_fps`` (and the capture rate)."""
     check_output(out, overwrite)
     db = MotionDatabase.read(db_path)
@@ -33,4 +46,5 @@ def run(db_path: Path, corpus_path: Path, take: str, out: Path, normalize_settin
                     db.fps, db.marker_names, db.reference, downsample(rel_r, db.fps, output_fps),
                     downsample(rel_t, db.fps, output_fps), source="capture", take=take)
     motion.write(out, config="{}", inputs=[db_path, corpus_path], overwrite=overwrite)
-    return {"frames": int(np.ceil(len(markers) * output_fps / db.fps)), "take": take}
+    return CaptureResult(take, int(np.ceil(len(markers) * output_fps / db.fps)))
+

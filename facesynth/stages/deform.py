@@ -8,6 +8,7 @@ that carries the motion into the mesh's frame), and writes the ``meshanim`` arti
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -20,10 +21,27 @@ from ..model.motion import Motion
 from ..retarget.deform import animate, bind
 
 
+@dataclass(frozen=True)
+class DeformResult:
+    """What ``facesynth deform`` made.
+
+    frames: frames of the mesh animation.
+    vertices: vertices of the mesh.
+    unreached: vertices farther than deform.distance_threshold from every marker (they stay at rest).
+    scale: the similarity's scale from marker millimetres to mesh units.
+    fit_rms: RMS distance of the fitted markers to their vertices (mesh units).
+    """
+
+    frames: int
+    vertices: int
+    unreached: int
+    scale: float
+    fit_rms: float
+
+
 def run(motion_path: Path, mesh: Path, binding_path: Path, out: Path, settings: DeformSettings,
-        overwrite: bool = False) -> dict:
-    """Deform ``mesh`` by the marker motion of ``motion_path`` and write ``out`` (a ``meshanim``
-    artifact); returns a summary with the similarity fit."""
+        overwrite: bool = False) -> DeformResult:
+    """Deform ``mesh`` by the marker motion of ``motion_path`` and write ``out`` (a ``meshanim`` artifact)."""
     check_output(out, overwrite)
     motion = Motion.read(motion_path)
     head = motion.head(motion_path) if settings.apply_head_motion else None
@@ -38,4 +56,5 @@ def run(motion_path: Path, mesh: Path, binding_path: Path, out: Path, settings: 
     MeshAnimation(frames, motion.fps, vertices, faces, motion.markers, names, bound.weights, bound.markers,
                   bound.vertex_of, fit["fit_rms"], gaze, motion.frame_provenance(motion_path)).write(
         out, config=settings_json(settings), inputs=[motion_path, mesh, binding_path], overwrite=overwrite)
-    return {"frames": len(frames), "vertices": len(vertices), "unreached": bound.unreached, **fit}
+    return DeformResult(len(frames), len(vertices), bound.unreached, fit["scale"], fit["fit_rms"])
+

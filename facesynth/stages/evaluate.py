@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import html
 import json
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -162,11 +163,23 @@ def trained_on(model: TrajectoryModel, model_path: Path, db_path: Path) -> None:
                          "with `facesynth train-trajectory` so that every method learns from the same takes.")
 
 
+@dataclass(frozen=True)
+class EvaluateResult:
+    """What ``facesynth evaluate`` measured.
+
+    methods: per method, its overall metrics as metrics.json holds them (``rms_mm`` and
+        ``velocity_rms_mm_s`` in mm and mm/s, ...), with ``figures`` (each a value and its
+        bootstrap interval) where computed.
+    """
+
+    methods: dict[str, dict]
+
+
 def run(db_path: Path, corpus: Path, out_dir: Path, settings: EvaluateSettings, synth: SynthesizeSettings,
         normalize_settings: NormalizeSettings, overwrite: bool = False, truth: Path | None = None,
-        trajectory: Path | None = None, trajectory_settings: TrajectorySettings | None = None) -> dict:
-    """Evaluate the database on the corpus's held-out takes and write the report to ``out_dir``;
-    returns the overall metrics per method (with ``figures`` where computed). ``truth``: the
+        trajectory: Path | None = None, trajectory_settings: TrajectorySettings | None = None) -> EvaluateResult:
+    """Evaluate the database on the corpus's held-out takes and write the report to ``out_dir``.
+    ``truth``: the
     corpus folder with clean ground truth (``groundtruth/``, ``markers.csv``). ``trajectory``: a
     trajectory model trained on ``db_path`` (``facesynth train-trajectory``), synthesized with
     ``trajectory_settings``, adds the trajectory method.
@@ -185,5 +198,6 @@ def run(db_path: Path, corpus: Path, out_dir: Path, settings: EvaluateSettings, 
                 "plot_marker": settings.plot_marker, "closure_mm": settings.closure_mm, "truth": None if truth is None else str(truth),
                 "bootstrap_resamples": settings.bootstrap_resamples}
         write_report(tmp, metrics, images, meta)
-    return {m: {**v["overall"], **({"figures": v["figures"]} if "figures" in v else {})}
-            for m, v in metrics.items() if not m.startswith("_")}
+    return EvaluateResult({m: {**v["overall"], **({"figures": v["figures"]} if "figures" in v else {})}
+                           for m, v in metrics.items() if not m.startswith("_")})
+

@@ -19,6 +19,7 @@ place), never replacing an existing output without ``--overwrite``.
 from __future__ import annotations
 
 import shutil
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -59,10 +60,29 @@ def check(anim: Exportable, fmt: str, head_motion: bool) -> None:
         raise InputError(f"{p}: --head-motion asks for head motion, but {why}; export without --head-motion.")
 
 
+@dataclass(frozen=True)
+class ExportResult:
+    """What ``facesynth export`` wrote.
+
+    frames: frames exported.
+    fps: their rate (frames/s).
+    seconds: the animation's length (s).
+    files: every file written: the output first, then a glTF's audio beside it, or an OBJ
+        sequence's files inside its folder.
+    kind: the kind of artifact exported ('motion', 'meshanim' or 'curves').
+    """
+
+    frames: int
+    fps: float
+    seconds: float
+    files: list[Path]
+    kind: str
+
+
 def run(artifact: Path, fmt: str, output: Path, settings: ExportSettings, *, fps: float | None = None,
         head_motion: bool = False, audio: Path | None = None, mesh: Path | None = None,
-        overwrite: bool = False) -> dict:
-    """Export ``artifact`` as ``fmt`` to ``output``; returns a summary (frames, fps, seconds, files)."""
+        overwrite: bool = False) -> ExportResult:
+    """Export ``artifact`` as ``fmt`` to ``output``."""
     if fmt not in FORMATS:
         raise UsageError(f"unknown format {fmt!r}; choose one of {', '.join(FORMATS)}.")
     if fmt in ("usd", "usda"):
@@ -137,7 +157,8 @@ def run(artifact: Path, fmt: str, output: Path, settings: ExportSettings, *, fps
         with atomic_folder(output, "the OBJ sequence", overwrite) as tmp:
             files = write_sequence(tmp, anim, head_motion)
             files = [output / f.name for f in files]
-    return {"frames": anim.n_frames, "fps": anim.fps, "seconds": anim.duration_s, "files": files, "kind": anim.kind}
+    return ExportResult(anim.n_frames, anim.fps, anim.duration_s, files, anim.kind)
+
 
 
 class _named_temporary:

@@ -9,6 +9,7 @@ that frame c is the same speech in every emotion; the aligned frames are project
 from __future__ import annotations
 
 import logging
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -91,7 +92,43 @@ def fit_model(X: np.ndarray, emotions: list[str], settings: ExpressionSettings) 
                         max_iterations=settings.max_iterations, tolerance=settings.tolerance)
 
 
-def fit(norm_path: Path, out: Path, settings: ExpressionSettings, overwrite: bool = False) -> dict:
+@dataclass(frozen=True)
+class ExpressionFitResult:
+    """What ``facesynth expression fit`` fitted.
+
+    emotions: the styles (emotions) of the model.
+    sentences: sentences spoken in every one of them, aligned phone by phone.
+    frames: aligned frames per emotion.
+    errors: the mean squared error after each alternating least-squares iteration (mm^2).
+    skipped: sentences left out, and why.
+    components: the PCA components the model works in.
+    content_dim: the size of a content vector.
+    """
+
+    emotions: list[str]
+    sentences: int
+    frames: int
+    errors: list[float]
+    skipped: list[str]
+    components: int
+    content_dim: int
+
+
+@dataclass(frozen=True)
+class RestyleResult:
+    """What ``facesynth expression restyle`` did.
+
+    frames: frames restyled (at the motion's output rate).
+    from_emotion: the emotion most frames were nearest to before ('unknown' when none could be analysed).
+    change_mm: RMS marker change (mm).
+    """
+
+    frames: int
+    from_emotion: str
+    change_mm: float
+
+
+def fit(norm_path: Path, out: Path, settings: ExpressionSettings, overwrite: bool = False) -> ExpressionFitResult:
     """``expression fit``: read a ``normalized`` artifact, fit, write an ``expression`` artifact."""
     check_output(out, overwrite)
     norm = NormalizedFrames.read(norm_path)
@@ -100,8 +137,8 @@ def fit(norm_path: Path, out: Path, settings: ExpressionSettings, overwrite: boo
     StyleModel.write(out, model, norm.marker_names, config=settings_json(settings),
                           inputs=[norm_path], aligned_frames=X.shape[1], sentences=used,
                           overwrite=overwrite)
-    return {"emotions": emotions, "sentences": len(used), "frames": X.shape[1], "errors": model.errors.tolist(),
-            "skipped": notes, "components": model.basis.shape[0], "content_dim": model.W.shape[2]}
+    return ExpressionFitResult(emotions, len(used), X.shape[1], model.errors.tolist(), notes, model.basis.shape[0],
+                               model.W.shape[2])
 
 
 def _check_markers(names: list[str], model_names: list[str], motion_path: Path, model_path: Path) -> None:
@@ -170,7 +207,7 @@ def check_request(model: bilinear.BilinearModel, model_path: Path, to: str | Non
 
 
 def restyle(model_path: Path, motion_path: Path, out: Path, settings: ExpressionSettings, ingest: IngestSettings, *,
-            to: str | None, intensity: float, emotions_path: Path | None, overwrite: bool = False) -> dict:
+            to: str | None, intensity: float, emotions_path: Path | None, overwrite: bool = False) -> RestyleResult:
     """``expression restyle``: the motion in another expression (Eq. 7), at the output and
     the capture rate, head motion kept; writes a ``motion`` artifact (``source = restyle``)."""
     check_output(out, overwrite)
@@ -195,5 +232,6 @@ def restyle(model_path: Path, motion_path: Path, out: Path, settings: Expression
                                    overwrite=overwrite)
     ok = np.isfinite(styles).all(axis=1)
     before = nearest_emotion(model, styles[ok]) if ok.any() else []
-    return {"frames": len(markers), "from": max(set(before), key=before.count) if before else "unknown",
-            "change_mm": float(np.sqrt(np.nanmean((markers - motion.markers) ** 2)) * np.sqrt(3))}
+    return RestyleResult(len(markers), max(set(before), key=before.count) if before else "unknown",
+                         float(np.sqrt(np.nanmean((markers - motion.markers) ** 2)) * np.sqrt(3)))
+

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import logging
 import time
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -109,8 +110,28 @@ def synthesize(lib: list[headsynth.LibraryTake], p: np.ndarray, duration_s: floa
     return headsynth.Result(head, s.fps, segs, choices), []
 
 
+@dataclass(frozen=True)
+class HeadMotionResult:
+    """What ``facesynth head-motion`` made.
+
+    seconds: the new speech's length (s).
+    segments: its pitch segments, each given a captured segment.
+    consecutive: joins where the next captured segment follows the previous one in its take.
+    library_takes: captured takes whose pitch was searched.
+    pitch_s: seconds spent on pitch (the speech's and the takes').
+    warnings: e.g. speech without voiced segments (the head keeps its rest pose).
+    """
+
+    seconds: float
+    segments: int
+    consecutive: int
+    library_takes: int
+    pitch_s: float
+    warnings: list[str]
+
+
 def run(db_path: Path, corpus_path: Path, audio_path: Path, out: Path, settings: HeadMotionSettings,
-        overwrite: bool = False) -> dict:
+        overwrite: bool = False) -> HeadMotionResult:
     """Read the database, the corpus audio and the new speech; write a ``headmotion`` artifact."""
     check_output(out, overwrite)
     if settings.pitch_min_hz >= settings.pitch_max_hz:
@@ -141,5 +162,5 @@ def run(db_path: Path, corpus_path: Path, audio_path: Path, out: Path, settings:
                np.array([g.end for g in segs])).write(out, config=settings_json(settings),
                                                       inputs=[db_path, corpus_path, audio_path], overwrite=overwrite)
     consecutive = sum(1 for a, b in zip(res.choices, res.choices[1:]) if a.take == b.take and b.index == a.index + 1)
-    return {"seconds": len(samples) / rate, "segments": len(res.segments), "consecutive": consecutive,
-            "library_takes": len(lib), "pitch_s": pitch_s, "warnings": warnings}
+    return HeadMotionResult(len(samples) / rate, len(res.segments), consecutive, len(lib), pitch_s, warnings)
+

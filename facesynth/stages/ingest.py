@@ -207,9 +207,32 @@ def ingest(rows: list[ManifestRow], settings: IngestSettings, align_settings: Al
     return np.concatenate(markers).astype(np.float32), names, fps, takes, phones, audio
 
 
+@dataclass(frozen=True)
+class IngestResult:
+    """What ``facesynth ingest`` read.
+
+    takes, frames, markers, phones: counts (takes, capture frames, markers per frame, phone segments).
+    fps: the capture's frame rate (Hz).
+    missing_fraction: the share of marker samples missing (gaps), 0 to 1.
+    rigid_markers: the markers the binding file (markers.csv) flags rigid.
+    without_audio: the takes without audio (head-motion needs it).
+    without_phones: the takes without phone timing (left out of the database).
+    """
+
+    takes: int
+    frames: int
+    markers: int
+    phones: int
+    fps: float
+    missing_fraction: float
+    rigid_markers: list[str]
+    without_audio: list[str]
+    without_phones: list[str]
+
+
 def run(manifest: Path, out: Path, settings: IngestSettings, align_settings: AlignSettings,
-        overwrite: bool = False) -> dict:
-    """Read the takes of ``manifest`` and write ``out`` (a ``corpus`` artifact); returns a summary."""
+        overwrite: bool = False) -> IngestResult:
+    """Read the takes of ``manifest`` and write ``out`` (a ``corpus`` artifact)."""
     rows = read_manifest(manifest, settings)
     markers, names, fps, takes, phones, audio = ingest(rows, settings, align_settings)
     rate = next((r for _, r in audio if r is not None), NO_AUDIO_RATE)
@@ -221,7 +244,7 @@ def run(manifest: Path, out: Path, settings: IngestSettings, align_settings: Ali
            np.array([len(s) for s in samples], np.int64), rate, rigid).write(
         out, config=settings_json(settings), inputs=[manifest], overwrite=overwrite)
     missing = float(np.isnan(markers).any(axis=2).mean())
-    return {"takes": len(takes), "frames": int(markers.shape[0]), "markers": len(names), "phones": len(phones),
-            "fps": fps, "missing_fraction": missing, "rigid_markers": rigid,
-            "without_audio": [r.take for r in rows if r.audio is None],
-            "without_phones": [takes.name[i] for i in range(len(takes)) if not (phones.take == i).any()]}
+    return IngestResult(len(takes), int(markers.shape[0]), len(names), len(phones), fps, missing, rigid,
+                        [r.take for r in rows if r.audio is None],
+                        [takes.name[i] for i in range(len(takes)) if not (phones.take == i).any()])
+

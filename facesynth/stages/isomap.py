@@ -271,9 +271,46 @@ def write_index(folder: Path, clusters: list[Cluster], trajectories: dict[str, l
     (folder / "index.html").write_text("\n".join(parts), encoding="utf-8")
 
 
-def run(db_path: Path, out: Path, settings: IsomapSettings, images: Path | None = None, overwrite: bool = False) -> dict:
+@dataclass(frozen=True)
+class IsomapResult:
+    """What ``facesynth isomap build`` embedded.
+
+    clusters: phoneme clusters embedded.
+    frames: frames over all clusters.
+    embed_s: seconds spent embedding them.
+    largest: frames of the largest cluster.
+    notes: per phone, why a small cluster got fewer neighbours (expected; shown with -v).
+    """
+
+    clusters: int
+    frames: int
+    embed_s: float
+    largest: int
+    notes: dict[str, str]
+
+
+@dataclass(frozen=True)
+class Pick:
+    """The frame at a point picked on a phoneme's map (``facesynth isomap pick``).
+
+    markers: (M, 3) the frame's markers, mm.
+    marker_names: their names.
+    corners: the three frames (rows of the cluster) of the triangle around the point.
+    weights: their barycentric weights, summing to 1.
+    nodes: the motion nodes those frames belong to.
+    """
+
+    markers: np.ndarray
+    marker_names: list[str]
+    corners: list[int]
+    weights: list[float]
+    nodes: list[int]
+
+
+def run(db_path: Path, out: Path, settings: IsomapSettings, images: Path | None = None,
+        overwrite: bool = False) -> IsomapResult:
     """Embed every phoneme cluster of ``db_path``, write ``out`` (an ``isomap`` artifact) and,
-    with ``images``, the PNGs and ``index.html`` there; returns a summary."""
+    with ``images``, the PNGs and ``index.html`` there."""
     check_output(out, overwrite)
     if images is not None:
         check_output_folder(images, "the images", overwrite)
@@ -291,11 +328,11 @@ def run(db_path: Path, out: Path, settings: IsomapSettings, images: Path | None 
         PhonemeMaps(db.model, db.marker_names, {c.phone: c for c in clusters}).write(
             out, config=settings_json(settings), inputs=[db_path], overwrite=overwrite)
     small = {c.phone: c.note for c in clusters if c.note}
-    return {"clusters": len(clusters), "frames": int(sum(len(c.frames) for c in clusters)), "embed_s": embed_s,
-            "largest": max(len(c.frames) for c in clusters), "notes": small}
+    return IsomapResult(len(clusters), int(sum(len(c.frames) for c in clusters)), embed_s,
+                        max(len(c.frames) for c in clusters), small)
 
 
-def pick(isomap_path: Path, phone: str, x: float, y: float, use_pca_map: bool = False) -> tuple[np.ndarray, list[str], dict]:
+def pick(isomap_path: Path, phone: str, x: float, y: float, use_pca_map: bool = False) -> Pick:
     """Fig. 7: the frame at a picked 2D point as markers (M, 3) mm, by barycentric
     interpolation of the three captured frames of the covering triangle."""
     maps = PhonemeMaps.read(isomap_path)
@@ -311,8 +348,9 @@ def pick(isomap_path: Path, phone: str, x: float, y: float, use_pca_map: bool = 
         )
     corners, weights = hit
     frame = (weights[:, None] * cluster.coefficients[corners].astype(np.float64)).sum(0)
-    info = {"corners": corners.tolist(), "weights": weights.round(6).tolist(), "nodes": cluster.node[corners].tolist()}
-    return maps.model.reconstruct(frame[None])[0], maps.marker_names, info
+    return Pick(maps.model.reconstruct(frame[None])[0], maps.marker_names, corners.tolist(), weights.round(6).tolist(),
+                cluster.node[corners].tolist())
+
 
 
 def markers_csv(markers: np.ndarray, names: list[str]) -> list[str]:
@@ -322,8 +360,15 @@ def markers_csv(markers: np.ndarray, names: list[str]) -> list[str]:
 
 @dataclass(frozen=True)
 class PageResult:
-    """What ``isomap page`` did: spoken phones of the utterance, maps on the page, spoken
-    phones without a map, constraints given, the page's size (bytes), warnings for the user."""
+    """What ``facesynth isomap page`` wrote.
+
+    phones: spoken phones of the utterance.
+    maps: phoneme maps on the page.
+    missing: spoken phones the database has no node (and so no map) of.
+    constraints: constraints given with ``--constraints``, shown on the page.
+    bytes: the page's size.
+    notes: warnings for the user.
+    """
 
     phones: int
     maps: int

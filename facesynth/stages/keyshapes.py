@@ -9,6 +9,7 @@ reconstructions of the database (no gaps), as displacements from its neutral ref
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -105,8 +106,28 @@ def contact_sheet(keyshapes: KeyShapes, out: Path, tile: int = 192, columns: int
     sheet.save(out, format="PNG")
 
 
+@dataclass(frozen=True)
+class EmotionKeyshapes:
+    """One emotion's key-shapes: ``count`` chosen, fitting its frames with an RMS of ``rms_mm`` (mm)."""
+
+    count: int
+    rms_mm: float
+
+
+@dataclass(frozen=True)
+class KeyshapesResult:
+    """What ``facesynth keyshapes`` chose.
+
+    emotions: per emotion, its key-shapes' count and fit (:class:`EmotionKeyshapes`).
+    method: how they were chosen ('pca' or 'affinity').
+    """
+
+    emotions: dict[str, EmotionKeyshapes]
+    method: str
+
+
 def run(db_path: Path, out: Path, settings: KeyshapesSettings, sheet: Path | None = None,
-        overwrite: bool = False) -> dict:
+        overwrite: bool = False) -> KeyshapesResult:
     """Choose key-shapes from ``db_path`` and write ``out`` (and the contact sheet ``sheet``)."""
     check_output(out, overwrite)
     if sheet is not None:
@@ -120,5 +141,5 @@ def run(db_path: Path, out: Path, settings: KeyshapesSettings, sheet: Path | Non
         if sheet is not None:
             with atomic_path(sheet, overwrite) as tmp:
                 contact_sheet(result, tmp)
-    return {"emotions": {e: {"count": k.count, "rms_mm": k.rms} for e, k in result.emotions.items()},
-            "method": settings.method}
+    return KeyshapesResult({e: EmotionKeyshapes(k.count, k.rms) for e, k in result.emotions.items()}, settings.method)
+

@@ -17,6 +17,7 @@ reference: it is at 0 in the reference frame.
 from __future__ import annotations
 
 import warnings
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -132,8 +133,32 @@ def normalize(markers: np.ndarray, names: list[str], takes: Takes, phones: Phone
     return normalized.astype(np.float32), rotations, translations, reference, origin, long_gaps, choice, weights
 
 
-def run(corpus_path: Path, out: Path, settings: NormalizeSettings, overwrite: bool = False) -> dict:
-    """Normalize ``corpus_path`` and write ``out`` (a ``normalized`` artifact); returns a summary."""
+@dataclass(frozen=True)
+class NormalizeResult:
+    """What ``facesynth normalize`` did.
+
+    frames: capture frames normalized.
+    origin_marker: the marker at the origin of the head frame.
+    long_gaps: gaps too long to fill, as (take, marker, start_s, length_s); PCA projects those frames.
+    rigid_markers: the markers the head pose was fitted on.
+    rigid_weights: each one's weight in that fit.
+    rigid_source: where the rigid markers came from: 'data' (found from the data), or the binding.
+    rigid_spreads_mm: with ``rigid_source`` 'data', how much each one's distances to the others vary (mm).
+    warnings: what the user should know.
+    """
+
+    frames: int
+    origin_marker: str
+    long_gaps: list[tuple[str, str, float, float]]
+    rigid_markers: list[str]
+    rigid_weights: list[float]
+    rigid_source: str
+    rigid_spreads_mm: list[float] | None
+    warnings: list[str]
+
+
+def run(corpus_path: Path, out: Path, settings: NormalizeSettings, overwrite: bool = False) -> NormalizeResult:
+    """Normalize ``corpus_path`` and write ``out`` (a ``normalized`` artifact)."""
     corpus = Corpus.read(corpus_path, audio=False)
     names = corpus.marker_names
     normalized, rotations, translations, reference, origin, long_gaps, choice, weights = normalize(
@@ -142,8 +167,7 @@ def run(corpus_path: Path, out: Path, settings: NormalizeSettings, overwrite: bo
                         translations.astype(np.float32), corpus.fps, names[origin])
     NormalizedFrames(corpus.takes, corpus.phones, names, frames).write(
         out, config=settings_json(settings), inputs=[corpus_path], overwrite=overwrite)
-    return {"frames": len(normalized), "origin_marker": names[origin], "long_gaps": long_gaps,
-            "rigid_markers": [names[k] for k in choice.indices], "rigid_weights": [float(w) for w in weights],
-            "rigid_source": choice.source,
-            "rigid_spreads_mm": None if choice.spreads is None else [float(x) for x in choice.spreads],
-            "warnings": []}
+    return NormalizeResult(len(normalized), names[origin], long_gaps, [names[k] for k in choice.indices],
+                           [float(w) for w in weights], choice.source,
+                           None if choice.spreads is None else [float(x) for x in choice.spreads], [])
+

@@ -7,6 +7,7 @@ coefficients, frames with unfilled gaps by least squares on their visible coordi
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -34,8 +35,24 @@ def fit_pca(frames: np.ndarray, *, n_components: int, variance_target: float = 0
     return PcaModel(mean, basis, variances[:k], float(ratio[k - 1]))
 
 
-def run(normalized: Path, out: Path, settings: PcaSettings, overwrite: bool = False) -> dict:
-    """Fit the PCA to ``normalized`` and write ``out`` (a ``pca`` artifact); returns a summary."""
+@dataclass(frozen=True)
+class PcaResult:
+    """What ``facesynth pca`` fitted.
+
+    components: principal components kept.
+    explained: the share of the training frames' variance they cover, 0 to 1.
+    frames: frames projected.
+    rms_error_mm: reconstruction RMS per marker on the complete training frames (mm).
+    """
+
+    components: int
+    explained: float
+    frames: int
+    rms_error_mm: float
+
+
+def run(normalized: Path, out: Path, settings: PcaSettings, overwrite: bool = False) -> PcaResult:
+    """Fit the PCA to ``normalized`` and write ``out`` (a ``pca`` artifact)."""
     frames = NormalizedFrames.read(normalized)
     markers, takes = frames.frames.markers, frames.takes
     train = np.zeros(len(markers), bool)
@@ -53,4 +70,5 @@ def run(normalized: Path, out: Path, settings: PcaSettings, overwrite: bool = Fa
         out, config=settings_json(settings), inputs=[normalized], overwrite=overwrite)
     recon = model.reconstruct(coeffs[complete])
     rms = float(np.sqrt(np.nanmean(np.sum((recon - markers[complete]) ** 2, axis=2))))
-    return {"components": model.basis.shape[1], "explained": model.explained, "frames": len(coeffs), "rms_error_mm": rms}
+    return PcaResult(model.basis.shape[1], model.explained, len(coeffs), rms)
+

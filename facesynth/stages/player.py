@@ -8,6 +8,7 @@ and the head moves with the artifact's head motion. No network is needed to view
 from __future__ import annotations
 
 import base64
+from dataclasses import dataclass
 from pathlib import Path
 
 from ..artifacts import atomic_path, check_output
@@ -17,27 +18,59 @@ from ..exports.player import live_payload, page, payload
 from ..live.phones import SAMPLE_RATE
 
 
+@dataclass(frozen=True)
+class PlayerResult:
+    """What ``facesynth player ARTIFACT`` wrote.
+
+    frames: frames of the animation.
+    fps: their rate (frames/s).
+    seconds: the animation's length (s).
+    phones: phones on the timeline (none for an artifact not made from a synthesis).
+    bytes: the page's size.
+    """
+
+    frames: int
+    fps: float
+    seconds: float
+    phones: int
+    bytes: int
+
+
+@dataclass(frozen=True)
+class LivePlayerResult:
+    """What ``facesynth player --live`` wrote.
+
+    vertices: the built-in rig's vertices.
+    targets: its ARKit morph targets.
+    seconds: the speech the page sends (s).
+    bytes: the page's size.
+    """
+
+    vertices: int
+    targets: int
+    seconds: float
+    bytes: int
+
+
 def run(artifact: Path, output: Path, *, audio: Path | None = None, motion: Path | None = None,
-        view: RenderSettings | None = None, overwrite: bool = False) -> dict:
+        view: RenderSettings | None = None, overwrite: bool = False) -> PlayerResult:
     """Write the player page of ``artifact`` to ``output`` with the camera of ``view`` (``render``'s
-    settings; None: the defaults); returns frames, fps, seconds, phones, bytes."""
+    settings; None: the defaults)."""
     check_output(output, overwrite)
     anim = load(artifact, motion=motion)
     html = page(payload(anim, audio, view))
     with atomic_path(output, overwrite) as tmp:
         Path(tmp).write_text(html, encoding="utf-8")
-    return {"frames": anim.n_frames, "fps": anim.fps, "seconds": anim.duration_s, "phones": len(anim.phones),
-            "bytes": len(html.encode("utf-8"))}
+    return PlayerResult(anim.n_frames, anim.fps, anim.duration_s, len(anim.phones), len(html.encode("utf-8")))
 
 
-def run_live(url: str, output: Path, *, audio: Path | None = None, overwrite: bool = False) -> dict:
-    """Write a live page (the built-in rig, connecting to the stream server at ``url``) to ``output``;
-    returns vertices, targets, seconds of speech to send and bytes."""
+def run_live(url: str, output: Path, *, audio: Path | None = None, overwrite: bool = False) -> LivePlayerResult:
+    """Write a live page (the built-in rig, connecting to the stream server at ``url``) to ``output``."""
     check_output(output, overwrite)
     data = live_payload(url, audio)
     html = page(data)
     with atomic_path(output, overwrite) as tmp:
         Path(tmp).write_text(html, encoding="utf-8")
     seconds = len(base64.b64decode(data["pcm"])) / 2 / SAMPLE_RATE  # int16 samples at 16 kHz
-    return {"vertices": data["vertices"], "targets": len(data["targets"]), "seconds": seconds,
-            "bytes": len(html.encode("utf-8"))}
+    return LivePlayerResult(data["vertices"], len(data["targets"]), seconds, len(html.encode("utf-8")))
+

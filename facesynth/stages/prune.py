@@ -13,6 +13,7 @@ phoneme cluster) that :func:`facesynth.contamination.detect` finds.
 from __future__ import annotations
 
 import re
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import numpy as np
@@ -47,8 +48,25 @@ def parse_ids(text: str, n: int) -> list[int]:
     return sorted(ids)
 
 
+@dataclass(frozen=True)
+class PruneResult:
+    """What ``facesynth prune`` removed.
+
+    removed: nodes removed (0: nothing to remove, and no output written).
+    kept: nodes kept.
+    links_cut: kept nodes whose captured predecessor was removed.
+    found: the nodes removed, by id in the input, with the kind of contamination (``--auto``)
+        or the reason given (``--remove``).
+    """
+
+    removed: int
+    kept: int
+    links_cut: int
+    found: dict[int, str] = field(default_factory=dict)
+
+
 def prune(db: MotionDatabase, out: Path, remove: list[int], reasons: list[str], settings: PruneSettings,
-          overwrite: bool) -> dict:
+          overwrite: bool) -> PruneResult:
     """Write ``db`` without the nodes ``remove`` (ids in ``db``) to ``out``, recording ``reasons``;
     ``db`` must have been read with its markers."""
     n = len(db.nodes)
@@ -64,10 +82,11 @@ def prune(db: MotionDatabase, out: Path, remove: list[int], reasons: list[str], 
                     before.reason + reasons)
     cleaned = MotionDatabase(db.takes, db.phones, db.marker_names, db.model, db.coeffs, db.frames, kept, pruned)
     cleaned.write(out, features, config=settings_json(settings), inputs=[db.path], overwrite=overwrite)
-    return {"removed": len(remove), "kept": len(keep), "links_cut": int(lost_pre.sum())}
+    return PruneResult(len(remove), len(keep), int(lost_pre.sum()))
 
 
-def run(db_path: Path, out: Path, settings: PruneSettings, remove: str | None, auto: bool, reason: str, overwrite: bool) -> dict:
+def run(db_path: Path, out: Path, settings: PruneSettings, remove: str | None, auto: bool, reason: str,
+        overwrite: bool) -> PruneResult:
     """Remove the nodes ``remove`` ('3,5,10-12') or, with ``auto``, the contaminated ones found
     by :func:`facesynth.contamination.detect`, writing ``out``; nothing is written when there is nothing to remove."""
     if (remove is None) == (not auto):
@@ -81,10 +100,9 @@ def run(db_path: Path, out: Path, settings: PruneSettings, remove: str | None, a
     ids = list(found)
     reasons = [f"auto: {kind}" if auto else kind for kind in found.values()]
     if not ids:
-        return {"removed": 0, "kept": len(db.nodes), "links_cut": 0, "found": {}}
-    summary = prune(db, out, ids, reasons, settings, overwrite)
-    summary["found"] = found
-    return summary
+        return PruneResult(0, len(db.nodes), 0)
+    return replace(prune(db, out, ids, reasons, settings, overwrite), found=found)
+
 
 
 def count_by_kind(found: dict[int, str]) -> dict[str, int]:

@@ -9,14 +9,30 @@ and the eyes look ahead.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from pathlib import Path
 
 from ..config import RenderSettings
 from ..rendering.video import render_video
 
 
+@dataclass(frozen=True)
+class RenderResult:
+    """What ``facesynth render`` wrote.
+
+    frames: video frames.
+    seconds: the video's length (s).
+    frames_per_s: frames rendered per second of wall time.
+    notes: what a plain mesh lacks (eye or mouth holes), once each.
+    """
+
+    frames: int
+    seconds: float
+    frames_per_s: float
+    notes: list[str]
+
+
 def run(anims: list[Path], audios: list[Path], out: Path, settings: RenderSettings, compare: Path | None = None,
-        overwrite: bool = False) -> dict:
-    """Render the animations one after another, each with its audio (none: silence), into the AVI ``out``;
-    returns frames, seconds of video and frames rendered per second."""
-    return render_video(anims, audios, out, settings, compare, overwrite)
+        overwrite: bool = False) -> RenderResult:
+    """Render the animations one after another, each with its audio (none: silence), into the AVI ``out``."""
+    return RenderResult(**render_video(anims, audios, out, settings, compare, overwrite))

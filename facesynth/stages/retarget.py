@@ -11,6 +11,7 @@ weights that best reproduce each keymorph mesh over all its vertices.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -83,9 +84,27 @@ def rig_animation(vertices: np.ndarray, fps: float, rig: Rig, marker_names: list
                          np.full((len(vertices), 2, 2), np.nan, np.float32))
 
 
+@dataclass(frozen=True)
+class RetargetResult:
+    """What ``facesynth retarget`` made.
+
+    frames: frames of the curves.
+    keyshapes: key-shapes the motion was decomposed into (every emotion's).
+    rig: the rig's name.
+    residual_rms_mm: RMS of the key-shape fit's residual (mm).
+    blend: how the mesh animation was blended ('linear' or 'gradient'), or None without one.
+    """
+
+    frames: int
+    keyshapes: int
+    rig: str
+    residual_rms_mm: float
+    blend: str | None = None
+
+
 def run(motion_path: Path, keyshapes_path: Path, out: Path, settings: RetargetSettings, keyshape_settings: KeyshapesSettings,
         rig_path: Path | None = None, binding: Path | None = None, keymorph_path: Path | None = None,
-        mesh_out: Path | None = None, emotion: str | None = None, overwrite: bool = False) -> dict:
+        mesh_out: Path | None = None, emotion: str | None = None, overwrite: bool = False) -> RetargetResult:
     """Retarget ``motion_path`` through ``keyshapes_path`` onto the rig; write ``out`` (and ``mesh_out``)."""
     check_output(out, overwrite)
     if mesh_out is not None:
@@ -105,8 +124,6 @@ def run(motion_path: Path, keyshapes_path: Path, out: Path, settings: RetargetSe
                        residual=result.residual[np.arange(len(dominant)), dominant],
                        method=f"key-shapes ({keyshapes.method}) and keymorphs, Eq. 9",
                        provenance=motion.frame_provenance(motion_path))
-    summary = {"frames": len(weights), "keyshapes": int(result.alpha.shape[1]), "rig": rig.name,
-               "residual_rms_mm": float(np.sqrt(np.nanmean(curves.residual**2)))}
     anim = None
     if mesh_out is not None:
         if settings.blend == "gradient":
@@ -121,5 +138,6 @@ def run(motion_path: Path, keyshapes_path: Path, out: Path, settings: RetargetSe
         curves.write(out, config=settings_json(settings), inputs=inputs, overwrite=overwrite)
         if anim is not None:
             anim.write(mesh_out, config=settings_json(settings), inputs=inputs, overwrite=overwrite)
-            summary["blend"] = settings.blend
-    return summary
+    return RetargetResult(len(weights), int(result.alpha.shape[1]), rig.name,
+                          float(np.sqrt(np.nanmean(curves.residual**2))), settings.blend if anim is not None else None)
+

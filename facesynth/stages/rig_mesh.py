@@ -6,6 +6,7 @@ curves carry is not applied (the face stays in the head frame)."""
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -18,8 +19,22 @@ from ..model.meshanim import MeshAnimation
 from ..retarget.rig import load_rig
 
 
+@dataclass(frozen=True)
+class RigMeshResult:
+    """What ``facesynth rig-mesh`` posed.
+
+    frames: frames of the mesh animation.
+    vertices: the rig's vertices.
+    rig: the rig's name.
+    """
+
+    frames: int
+    vertices: int
+    rig: str
+
+
 def run(curves_path: Path, out: Path, rig_path: Path | None = None, binding: Path | None = None,
-        overwrite: bool = False) -> dict:
+        overwrite: bool = False) -> RigMeshResult:
     """Pose the rig with the curves of ``curves_path`` and write ``out``."""
     check_output(out, overwrite)
     rig = load_rig(rig_path, binding)
@@ -36,4 +51,5 @@ def run(curves_path: Path, out: Path, rig_path: Path | None = None, binding: Pat
     MeshAnimation(vertices, curves.fps, rig.neutral.astype(np.float32), rig.faces, vertices[:, verts], names, empty,
                   names, verts, 0.0, np.full((len(vertices), 2, 2), np.nan, np.float32), curves.provenance).write(
         out, config="{}", inputs=[curves_path], overwrite=overwrite)
-    return {"frames": len(vertices), "vertices": len(rig.neutral), "rig": rig.name}
+    return RigMeshResult(len(vertices), len(rig.neutral), rig.name)
+

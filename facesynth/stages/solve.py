@@ -15,6 +15,7 @@ the take's mean pose as ``capture`` does, and the normalize reference serves as 
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -60,8 +61,32 @@ def take_motion(normalized: NormalizedFrames, take: str | None, output_fps: floa
                   downsample(rel_t, frames.fps, output_fps).astype(np.float32), source="capture", take=take)
 
 
+@dataclass(frozen=True)
+class SolveResult:
+    """What ``facesynth solve`` solved.
+
+    frames: frames of the curves.
+    shapes: the rig's blendshapes.
+    iterations: the solver's iterations.
+    residual_rms: RMS marker residual (rig units).
+    rig: the rig's name.
+    marker_residual_median_mm, marker_residual_p95_mm: the median and 95th percentile of each
+        bound marker's distance from the solved rig, per frame, in the motion's millimetres.
+    take: the solved take (a capture), or None.
+    """
+
+    frames: int
+    shapes: int
+    iterations: int
+    residual_rms: float
+    rig: str
+    marker_residual_median_mm: float
+    marker_residual_p95_mm: float
+    take: str | None
+
+
 def run(motion_path: Path, out: Path, settings: SolveSettings, rig_path: Path | None = None,
-        binding: Path | None = None, overwrite: bool = False, take: str | None = None) -> dict:
+        binding: Path | None = None, overwrite: bool = False, take: str | None = None) -> SolveResult:
     """Solve ``motion_path`` (a ``motion``, or one take of a ``normalized`` artifact) on the rig
     (built-in when ``rig_path`` is None, with ``binding`` when given) and write ``out``."""
     check_output(out, overwrite)
@@ -79,10 +104,9 @@ def run(motion_path: Path, out: Path, settings: SolveSettings, rig_path: Path | 
               provenance=motion.frame_provenance(motion_path)).write(
         out, config=settings_json(settings), inputs=inputs, overwrite=overwrite)
     marker_mm = per_marker_residual_mm(motion, rig, weights)
-    return {"frames": len(weights), "shapes": len(rig.shape_names), "iterations": iterations,
-            "residual_rms": float(np.sqrt(np.nanmean(residual**2))), "rig": rig.name,
-            "marker_residual_median_mm": float(np.nanmedian(marker_mm)),
-            "marker_residual_p95_mm": float(np.nanpercentile(marker_mm, 95)), "take": motion.take}
+    return SolveResult(len(weights), len(rig.shape_names), iterations, float(np.sqrt(np.nanmean(residual**2))),
+                       rig.name, float(np.nanmedian(marker_mm)), float(np.nanpercentile(marker_mm, 95)), motion.take)
+
 
 
 def per_marker_residual_mm(motion: Motion, rig: Rig, weights: np.ndarray) -> np.ndarray:

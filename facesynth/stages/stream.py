@@ -59,7 +59,23 @@ def run_stdin(model: LiveModel, align: AlignSettings, source: BinaryIO, write: C
             sender.close()
 
 
+def run(model: LiveModel, align: AlignSettings, audio: str | Path, write: Callable[[str], None], *,
+        livelink: str | None = None, markers: bool = False, realtime: bool = False) -> int:
+    """Stream the audio file ``audio`` ('-': standard input) through :func:`run_stdin`; returns
+    the number of frames."""
+    if str(audio) == "-":
+        return run_stdin(model, align, sys.stdin.buffer, write, where="standard input", livelink=livelink,
+                         markers=markers, realtime=realtime)
+    path = Path(audio)
+    if not path.is_file():
+        raise InputError(f"{path}: no such audio file.")
+    with open(path, "rb") as fh:
+        return run_stdin(model, align, fh, write, where=str(path), livelink=livelink, markers=markers,
+                         realtime=realtime)
+
+
 class _Paced:
+
     """A byte stream read no faster than 16 kHz 16-bit mono audio plays."""
 
     def __init__(self, source: BinaryIO, chunk_s: float):

@@ -30,6 +30,7 @@ from ..errors import InputError
 from ..model.motiondb import MotionDatabase
 from ..opencl import use_opencl
 from ..search.constraint_choice import (
+    ContextStep,
     context_correct,
     context_correct_steps,
     context_name,
@@ -62,14 +63,34 @@ class Suggestion:
     extra: float                # cost above the unconstrained optimum
 
 
-def suggest(db_path: Path, phones_path: Path, at_s: float, settings: SynthesizeSettings, ingest_settings: IngestSettings,
-            emotions_path: Path | None = None, constraints_path: Path | None = None) -> tuple[dict, list[Suggestion]]:
-    """Nodes of the phone at ``at_s`` (s) ranked by the best total cost through them (forward and
-    backward DP, paper VI-A); returns the phone's description and the ranked suggestions.
+@dataclass(frozen=True)
+class Suggestions:
+    """What ``facesynth suggest`` found for the phone at the asked time.
 
-    The description holds ``context_correct_at``: every spoken phone of the utterance that
-    has context-correct nodes (index, phone, context, mid time in s).
+    index: the phone's step in the utterance.
+    phone: the phone.
+    relative_time: where the time falls within the phone, 0 (start) to 1 (end).
+    context: its triphone context, 'prev-phone+next'.
+    optimum: the cost of the unconstrained optimum (the DP's).
+    optimal_node: the node the optimum uses at this step.
+    context_correct_at: every spoken phone of the utterance that has context-correct nodes.
+    rows: the phone's nodes ranked by the best total cost through them, best first.
     """
+
+    index: int
+    phone: str
+    relative_time: float
+    context: str
+    optimum: float
+    optimal_node: int
+    context_correct_at: list[ContextStep]
+    rows: list[Suggestion]
+
+
+def suggest(db_path: Path, phones_path: Path, at_s: float, settings: SynthesizeSettings, ingest_settings: IngestSettings,
+            emotions_path: Path | None = None, constraints_path: Path | None = None) -> Suggestions:
+    """Nodes of the phone at ``at_s`` (s) ranked by the best total cost through them (forward and
+    backward DP, paper VI-A), with the phone's description."""
     db = MotionDatabase.read(db_path)
     utt, constraints = prepare(db, phones_path, emotions_path, constraints_path, ingest_settings)
     c = spoken_step_at(utt, at_s, str(phones_path))
@@ -96,10 +117,8 @@ def suggest(db_path: Path, phones_path: Path, at_s: float, settings: SynthesizeS
                               float(through[j]), max(0.0, float(through[j] - forward.cost))))
     out.sort(key=lambda s: (s.cost, s.node))
     contexts = set(zip(db.nodes.prev_phone, db.nodes.phone, db.nodes.next_phone))
-    info = {"phone": phone, "index": c, "relative_time": rel, "context": context_name(utt.phones, c),
-            "optimum": forward.cost, "optimal_node": int(forward.path[c]),
-            "context_correct_at": context_correct_steps(utt.phones, utt.starts, utt.ends, contexts)}
-    return info, out
+    return Suggestions(c, phone, rel, context_name(utt.phones, c), forward.cost, int(forward.path[c]),
+                       context_correct_steps(utt.phones, utt.starts, utt.ends, contexts), out)
 
 
 def shown(rows: list[Suggestion], top: int, context_only: bool) -> list[Suggestion]:
@@ -119,20 +138,21 @@ def table(rows: list[Suggestion], top: int, context_only: bool) -> list[str]:
     return lines
 
 
-def elsewhere(info: dict, limit: int = 5) -> str:
+def elsewhere(found: Suggestions, limit: int = 5) -> str:
     """Where the utterance has context-correct nodes, as a phrase for messages."""
-    steps = info["context_correct_at"]
+    steps = found.context_correct_at
     if not steps:
         return "no phone of this utterance shares its triphone context with a database node"
-    listed = ", ".join(f"{s['time_s']:g} s /{s['phone']}/ ({s['context']})" for s in steps[:limit])
+    listed = ", ".join(f"{s.time_s:g} s /{s.phone}/ ({s.context})" for s in steps[:limit])
     more = f" and {len(steps) - limit} more" if len(steps) > limit else ""
     return f"phones with context-correct nodes: {listed}{more}"
 
 
-def no_context_message(info: dict, at_s: float) -> str:
+def no_context_message(found: Suggestions, at_s: float) -> str:
     """The sentence (without its full stop) saying that no node has the asked phone's triphone context."""
-    return (f"no node of /{info['phone']}/ has the context {info['context']} of the phone at {at_s:g} s; "
-            f"{elsewhere(info)}")
+    return (f"no node of /{found.phone}/ has the context {found.context} of the phone at {at_s:g} s; "
+            f"{elsewhere(found)}")
+
 
 
 def use_line(at_s: float, best: Suggestion, constraints_path: Path | None) -> str:

@@ -7,6 +7,7 @@ with ``--method trajectory``, from a compact trajectory model (Huang et al. §5.
 from __future__ import annotations
 
 import time
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -33,16 +34,68 @@ def memory_estimate(nodes: int, phones: int, dp: str = "dense", feature_bytes: i
     return 2.0 * 4 * nodes * nodes + 12.0 * phones * nodes
 
 
+@dataclass(frozen=True)
+class SynthesizeResult:
+    """What ``facesynth synthesize`` (a search of the motion database) made.
+
+    phones: phones of the utterance.
+    cost: the path's total cost.
+    joins: joins between nodes not captured one after the other.
+    device: where the search ran (an OpenCL device's name, or the CPU).
+    unseen: phones the database has no node of, with what covers them.
+    frames: frames of the motion at the output rate.
+    load_s, hash_wait_s, write_s: seconds reading the database, waiting for the inputs' sha256
+        (hashed on another thread meanwhile) and writing.
+    device_choice_s, transition_s, steps_s, opencl_setup_s, search_s, postprocess_s: seconds of the
+        phases of :func:`~facesynth.search.synthesis.synthesize`; None for a phase that did not run.
+    """
+
+    phones: int
+    cost: float
+    joins: int
+    device: str
+    unseen: dict[str, str]
+    frames: int
+    load_s: float
+    hash_wait_s: float
+    write_s: float
+    device_choice_s: float | None = None
+    transition_s: float | None = None
+    steps_s: float | None = None
+    opencl_setup_s: float | None = None
+    search_s: float | None = None
+    postprocess_s: float | None = None
+
+
+@dataclass(frozen=True)
+class TrajectorySynthesisResult:
+    """What ``facesynth synthesize --method trajectory`` made.
+
+    phones: phones of the utterance.
+    frames: frames of the motion at the output rate.
+    energy: the path's Eq. 6 energy.
+    lam: the smoothness weight lambda per frame.
+    fallbacks: unseen phones and the viseme class whose pooled Gaussian covered each.
+    load_s, solve_s, write_s: seconds reading the model, solving the path and back-projecting, writing.
+    """
+
+    phones: int
+    frames: int
+    energy: float
+    lam: float
+    fallbacks: dict[str, str]
+    load_s: float
+    solve_s: float
+    write_s: float
+
+
 def run(db_path: Path, out: Path, settings: SynthesizeSettings, ingest_settings: IngestSettings,
         align_settings: AlignSettings, *,
         phones_path: Path | None = None, emotions_path: Path | None = None, constraints_path: Path | None = None,
         audio: Path | None = None, text: str | None = None, head_motion_path: Path | None = None,
-        overwrite: bool = False) -> dict:
+        overwrite: bool = False) -> SynthesizeResult:
     """Synthesize the utterance (phones from ``phones_path``, or ``audio`` aligned to ``text``)
-    with its emotions and constraints, and write ``out`` (a ``motion`` artifact). The summary's
-    ``*_s`` entries are the seconds of each phase: ``load_s`` (database tables), those of
-    :func:`~facesynth.search.synthesis.synthesize`, ``hash_wait_s`` (waiting for the inputs'
-    sha256, computed on another thread from the start) and ``write_s``. ``head_motion_path`` (a
+    with its emotions and constraints, and write ``out`` (a ``motion`` artifact). ``head_motion_path`` (a
     ``headmotion`` artifact, see ``facesynth head-motion``) replaces the head motion the
     search's source frames carry."""
     if settings.search == "greedy" and constraints_path is not None:
@@ -71,19 +124,18 @@ def run(db_path: Path, out: Path, settings: SynthesizeSettings, ingest_settings:
     motion.write(out, config=settings_json(settings), records=input_records,
                                             overwrite=overwrite)
     write_s = time.perf_counter() - t0
-    return {"phones": len(utt), "cost": res["cost"], "joins": res["non_captured_joins"], "device": res["device"],
-            "unseen": unseen_phones(utt, db), "frames": len(res["markers"]), "load_s": load_s, **res["timings"],
-            "hash_wait_s": hash_wait_s, "write_s": write_s}
+    return SynthesizeResult(len(utt), res["cost"], res["non_captured_joins"], res["device"], unseen_phones(utt, db),
+                            len(res["markers"]), load_s, hash_wait_s, write_s, **res["timings"])
 
 
 def run_trajectory(model_path: Path, out: Path, settings: TrajectorySettings, output_fps: float,
                    ingest_settings: IngestSettings, align_settings: AlignSettings, *,
                    phones_path: Path | None = None, emotions_path: Path | None = None, audio: Path | None = None,
-                   text: str | None = None, head_motion_path: Path | None = None, overwrite: bool = False) -> dict:
+                   text: str | None = None, head_motion_path: Path | None = None,
+                   overwrite: bool = False) -> TrajectorySynthesisResult:
     """Synthesize the utterance from the trajectory model at ``model_path`` (Huang et al. Eq. 6-7)
     and write ``out``, a ``motion`` artifact with ``source = "trajectory"``, markers at
-    ``output_fps``. The summary's ``solve_s`` is the path's solve and back-projection, ``fallbacks``
-    the unseen phones and the viseme class that covered each."""
+    ``output_fps``."""
     check_output(out, overwrite)
     inputs = [p for p in (model_path, phones_path, emotions_path, audio, head_motion_path) if p is not None]
     head = HeadMotion.read(head_motion_path) if head_motion_path is not None else None
@@ -98,6 +150,6 @@ def run_trajectory(model_path: Path, out: Path, settings: TrajectorySettings, ou
         motion.head_rotation, motion.head_translation = head.at(np.arange(len(motion.markers)) / motion.fps)
     t0 = time.perf_counter()
     motion.write(out, config=settings_json(settings), inputs=inputs, overwrite=overwrite)
-    return {"phones": len(utt), "frames": len(motion.markers), "energy": path.energy, "lambda": path.lam,
-            "fallbacks": path.targets.fallbacks, "load_s": load_s, "solve_s": solve_s,
-            "write_s": time.perf_counter() - t0}
+    return TrajectorySynthesisResult(len(utt), len(motion.markers), path.energy, path.lam, path.targets.fallbacks,
+                                     load_s, solve_s, time.perf_counter() - t0)
+

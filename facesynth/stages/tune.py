@@ -255,11 +255,50 @@ def write_config(path: Path, summary: dict, overwrite: bool) -> None:
         tmp.write_text("\n".join(lines) + "\n", encoding="utf-8")
 
 
+@dataclasses.dataclass(frozen=True)
+class TuneResult:
+    """What ``facesynth tune`` found (errors are Eq. 13's, mm^2).
+
+    validation_sentences, test_sentences: sentences tuned on, and held out for the report.
+    evaluations: settings evaluated.
+    seconds: wall time (s).
+    validation_err_before, validation_err_after: the validation error of the start and of the result.
+    improved: whether the result beats the start (if not, the start is written).
+    weights: the tuned cost weights (alpha1..alpha6, PNT) by name.
+    smoothing_half_window: the tuned join smoothing window (frames).
+    boundary_fit_frames: the tuned boundary-fit length (frames).
+    boundary_fit_changed: whether that differs from the start (build-db must run again).
+    warnings: what the user should know.
+    test_err_before, test_err_after: the test error of the start and of the result (None without test takes).
+    test_ci_before, test_ci_after, test_ci_difference: their bootstrap 95% intervals, and that of
+        the difference (after - before), as [low, high].
+    """
+
+    validation_sentences: int
+    test_sentences: int
+    evaluations: int
+    seconds: float
+    validation_err_before: float
+    validation_err_after: float
+    improved: bool
+    weights: dict[str, float]
+    smoothing_half_window: int
+    boundary_fit_frames: int
+    boundary_fit_changed: bool
+    warnings: list[str]
+    test_err_before: float | None = None
+    test_err_after: float | None = None
+    test_ci_before: list[float] | None = None
+    test_ci_after: list[float] | None = None
+    test_ci_difference: list[float] | None = None
+
+
 def run(db_path: Path, corpus: Path, out: Path, settings: TuneSettings, synth: SynthesizeSettings,
         build: BuildDbSettings, normalize_settings: NormalizeSettings, overwrite: bool = False,
-        progress_fn=None) -> dict:
-    """Tune and write ``out``; returns the summary."""
+        progress_fn=None) -> TuneResult:
+    """Tune and write ``out``."""
     check_output(out, overwrite)
     summary = tune(db_path, corpus, settings, synth, build, normalize_settings, progress_fn)
     write_config(out, summary, overwrite)
-    return summary
+    return TuneResult(**summary)
+

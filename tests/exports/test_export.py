@@ -309,3 +309,21 @@ def test_mesh_with_another_vertex_count_is_refused(made, tmp_path):
     assert str(small) in line and not out.exists()
     # the mesh the animation was made on is accepted
     ok("export", made["anim"], "--format", "obj-seq", "--mesh", made["mesh"], "-o", out)
+
+
+def test_ctrl_c_between_the_scene_and_its_audio_leaves_neither(made, tmp_path, monkeypatch):
+    import signal
+
+    from facesynth import artifacts
+
+    publish = artifacts.publish
+
+    def then_interrupt(tmp, path, overwrite):
+        publish(tmp, path, overwrite)
+        os.kill(os.getpid(), signal.SIGINT)
+
+    monkeypatch.setattr(artifacts, "publish", then_interrupt)
+    r = fs("export", made["curves"], "--format", "glb", "--audio", made["audio"], "-o", tmp_path / "face.glb")
+    assert r.exit_code == 130, r.output
+    assert r.output.strip().splitlines() == ["interrupted; no output was written."], r.output
+    assert list(tmp_path.iterdir()) == []

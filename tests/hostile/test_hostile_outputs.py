@@ -185,6 +185,31 @@ def test_ctrl_c_between_the_curves_and_the_mesh_leaves_neither(retarget_inputs, 
     assert sorted(p.name for p in tmp_path.iterdir()) == ["anim.h5", "curves.h5"]
 
 
+@pytest.fixture
+def interrupt_after_first_publish(monkeypatch):
+    """Ctrl-C just after the first output of a command is renamed into place."""
+    publish, publish_folder = artifacts.publish, artifacts._publish_folder
+
+    def then_interrupt(tmp, path, overwrite):
+        publish(tmp, path, overwrite)
+        os.kill(os.getpid(), signal.SIGINT)
+
+    def folder_then_interrupt(tmp, path, overwrite):
+        old = publish_folder(tmp, path, overwrite)
+        os.kill(os.getpid(), signal.SIGINT)
+        return old
+
+    monkeypatch.setattr(artifacts, "publish", then_interrupt)
+    monkeypatch.setattr(artifacts, "_publish_folder", folder_then_interrupt)
+
+
+def test_ctrl_c_between_the_isomap_and_its_images_leaves_neither(tiny_db, tmp_path, interrupt_after_first_publish):
+    r = _run("isomap", tiny_db, "-o", tmp_path / "isomap.h5", "--images", tmp_path / "maps")
+    assert r.exit_code == 130, r.output
+    assert r.output.strip().splitlines() == ["interrupted; no output was written."], r.output
+    assert list(tmp_path.iterdir()) == []
+
+
 def test_an_interrupt_after_the_output_is_written_says_so(tiny_artifacts, tmp_path, monkeypatch):
     from facesynth.stages import pca
 

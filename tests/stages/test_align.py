@@ -68,7 +68,7 @@ def test_unknown_word_is_named_and_a_dictionary_fixes_it(tiny_corpus, config, tm
 def test_text_that_is_not_spoken_is_warned_about(tiny_corpus, config, tmp_path):
     wav = tiny_corpus / "audio" / "neutral_s000.wav"
     summary = align.run(wav, "the water", tmp_path / "x.TextGrid", config.settings("align"))
-    assert any("the text may not be what is said" in w or "may lack words" in w for w in summary["warnings"])
+    assert any("the text may not be what is said" in w or "may lack words" in w for w in summary.warnings)
 
 
 def lexicon_arpabet(word):

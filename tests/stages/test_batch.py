@@ -57,8 +57,8 @@ def test_lines_fail_alone_with_their_reason_and_a_rerun_skips_what_is_done(tiny_
     ])
     out = tmp_path / "out"
     s = batch.run(script, tiny_db, out, *_settings(config), client=client)
-    status = {(r.id, r.row): (r.status, r.reason) for r in s["results"]}
-    assert (s["ok"], s["failed"], s["skipped"]) == (3, 5, 0)
+    status = {(r.id, r.row): (r.status, r.reason) for r in s.results}
+    assert (s.ok, s.failed, s.skipped) == (3, 5, 0)
     assert status[("aligned", 2)][0] == status[("given", 3)][0] == status[("empty", 5)][0] == "ok"
     assert "missing.wav not found" in status[("no_audio", 4)][1]
     assert "unknown emotion 'furious'" in status[("moody", 6)][1]
@@ -82,19 +82,19 @@ def test_lines_fail_alone_with_their_reason_and_a_rerun_skips_what_is_done(tiny_
 
     before = (out / "aligned.motion.h5").stat().st_mtime_ns
     again = batch.run(script, tiny_db, out, *_settings(config), client=client)
-    assert (again["ok"], again["skipped"], again["failed"]) == (0, 3, 5)
-    assert next(r for r in again["results"] if r.id == "empty").recognized == summary[3]["recognized"]
+    assert (again.ok, again.skipped, again.failed) == (0, 3, 5)
+    assert next(r for r in again.results if r.id == "empty").recognized == summary[3]["recognized"]
     assert (out / "aligned.motion.h5").stat().st_mtime_ns == before
 
     changed = _write(tmp_path / "script.csv", [("id", "audio", "text", "emotion"),
                                                ("aligned", audio(a), a["transcript"], "angry")])
     third = batch.run(changed, tiny_db, out, *_settings(config), client=client)
-    assert (third["ok"], third["skipped"]) == (1, 0)
+    assert (third.ok, third.skipped) == (1, 0)
     assert json.loads((out / "aligned.json").read_text())["inputs"]["emotion"] == "angry"
 
     broken = _write(tmp_path / "script.csv", [("id", "audio", "text"), ("aligned", str(tmp_path / "gone.wav"), "x")])
     fourth = batch.run(broken, tiny_db, out, *_settings(config), client=client)
-    assert fourth["failed"] == 1  # and the outputs of the earlier inputs are gone, not left looking current
+    assert fourth.failed == 1  # and the outputs of the earlier inputs are gone, not left looking current
     assert not any((out / f"aligned{suffix}").exists() for suffix in (".motion.h5", ".TextGrid", ".json"))
 
 
@@ -106,7 +106,7 @@ def test_anim_and_video_outputs(tiny_corpus, tiny_db, takes, config, client, tmp
     settings[5] = dataclasses.replace(settings[5], width=64, height=48)
     s = batch.run(script, tiny_db, tmp_path / "out", *settings, mesh=tiny_corpus / "face.obj",
                   binding=tiny_corpus / "markers.csv", client=client)
-    assert s["ok"] == 1, s["results"][0].reason
+    assert s.ok == 1, s.results[0].reason
     assert (tmp_path / "out" / "one.avi").stat().st_size > 0 and (tmp_path / "out" / "one.anim.h5").exists()
     assert not (tmp_path / "out" / "one.motion.h5").exists()
     assert not list((tmp_path / "out").glob("*.part-*")) and not list((tmp_path / "out").glob("*.tmp-*"))

@@ -52,9 +52,9 @@ def test_bind_places_the_capture_on_the_rig(user_capture, tiny_corpus, config, t
     rig = load_face_rig()
     error = np.array([np.linalg.norm(rig.neutral[v] - rig.neutral[truth[n]]) for n, v in binding.items()])
     assert len(binding) == len(truth) and np.median(error) < 1.5 and np.percentile(error, 95) < 8.0
-    assert s["residual_median_mm"] < 2.0 and s["scale"] == pytest.approx(1.0, abs=0.05)
-    assert true_rigid <= set(read_rigid_markers(out)) and set(s["rigid"]) == set(read_rigid_markers(out))
-    assert all(x < 1.0 for x in s["rigid_spreads_mm"])
+    assert s.residual_median_mm < 2.0 and s.scale == pytest.approx(1.0, abs=0.05)
+    assert true_rigid <= set(read_rigid_markers(out)) and set(s.rigid) == set(read_rigid_markers(out))
+    assert all(x < 1.0 for x in s.rigid_spreads_mm)
     header = out.read_text().splitlines()[0]
     assert header == "marker,vertex,rigid,residual_mm,flagged"
 
@@ -103,14 +103,14 @@ def test_capture_without_audio_goes_to_a_silent_video(user_capture, tiny_corpus,
     bind.run(user_capture / "take.c3d", binding, config.settings("bind"), config.settings("normalize"))
     corpus, normalized = tmp_path / "corpus.h5", tmp_path / "normalized.h5"
     s = ingest.run(user_capture / "manifest.csv", corpus, config.settings("ingest"), config.settings("align"))
-    assert s["without_audio"] == ["take"] and s["without_phones"] == ["take"] and s["rigid_markers"] == []
+    assert s.without_audio == ["take"] and s.without_phones == ["take"] and s.rigid_markers == []
     n = normalize.run(corpus, normalized, config.settings("normalize"))
     _, true_rigid = _truth(tiny_corpus)
-    assert n["rigid_source"] == "data" and true_rigid <= set(n["rigid_markers"]) and not n["warnings"]
-    assert len(n["rigid_spreads_mm"]) == len(n["rigid_markers"])
+    assert n.rigid_source == "data" and true_rigid <= set(n.rigid_markers) and not n.warnings
+    assert len(n.rigid_spreads_mm) == len(n.rigid_markers)
     curves, anim = tmp_path / "curves.h5", tmp_path / "anim.h5"
     r = solve.run(normalized, curves, config.settings("solve"), None, binding)
-    assert r["take"] == "take" and r["marker_residual_median_mm"] < 1.5
+    assert r.take == "take" and r.marker_residual_median_mm < 1.5
     c = RigCurves.read(curves)
     assert c.fps == config.settings("solve").output_fps and c.weights.shape[1] == 55
     rig_mesh.run(curves, anim, None, binding)
@@ -123,7 +123,7 @@ def test_capture_without_audio_goes_to_a_silent_video(user_capture, tiny_corpus,
     rig_mesh.run(short_curves, short_anim, "builtin", binding)
     video = tmp_path / "v.avi"
     out = render.run([short_anim], [], video, dataclasses.replace(config.settings("render"), width=96, height=80))
-    assert video.exists() and out["frames"] == 6
+    assert video.exists() and out.frames == 6
 
 
 def test_solve_on_a_normalized_capture_with_several_takes_needs_take(tiny_artifacts, config, tmp_path):
@@ -137,8 +137,8 @@ def test_facial_sing_binds_and_solves(tmp_path):
     config = Config.load()
     binding = tmp_path / "markers.csv"
     s = bind.run(FACIAL_SING, binding, config.settings("bind"), config.settings("normalize"))
-    assert sorted(s["rigid"]) == ["root-1", "root-2", "root-3", "root-4"]
-    assert s["residual_median_mm"] < 4.0 and s["scale"] == pytest.approx(1.0, abs=0.1)
+    assert sorted(s.rigid) == ["root-1", "root-2", "root-3", "root-4"]
+    assert s.residual_median_mm < 4.0 and s.scale == pytest.approx(1.0, abs=0.1)
     # her upper lip (section10-*) rises as she opens her mouth: it must land where the rig's jaw does not reach
     rig = load_face_rig()
     jaw = np.linalg.norm(rig.deltas[rig.shape_index("jawOpen")], axis=1)
@@ -148,9 +148,9 @@ def test_facial_sing_binds_and_solves(tmp_path):
     (tmp_path / "manifest.csv").write_text(f"take,mocap\nsing,{FACIAL_SING}\n")
     ingest.run(tmp_path / "manifest.csv", tmp_path / "corpus.h5", config.settings("ingest"), config.settings("align"))
     n = normalize.run(tmp_path / "corpus.h5", tmp_path / "normalized.h5", config.settings("normalize"))
-    assert n["rigid_source"] == "corpus" and sorted(n["rigid_markers"]) == ["root-1", "root-2", "root-3", "root-4"]
+    assert n.rigid_source == "corpus" and sorted(n.rigid_markers) == ["root-1", "root-2", "root-3", "root-4"]
     r = solve.run(tmp_path / "normalized.h5", tmp_path / "curves.h5", config.settings("solve"), None, binding)
-    assert r["marker_residual_median_mm"] < 1.5 and r["marker_residual_p95_mm"] < 6.0
+    assert r.marker_residual_median_mm < 1.5 and r.marker_residual_p95_mm < 6.0
     weights = RigCurves.read(tmp_path / "curves.h5").weights
     jaw_open, mouth_close = weights[:, rig.shape_index("jawOpen")], weights[:, rig.shape_index("mouthClose")]
     assert np.percentile(jaw_open, 95) > 0.5  # she sings with her mouth open
@@ -171,6 +171,6 @@ def test_bind_on_a_users_obj_rig_matches_the_builtin(user_capture, config, tmp_p
     ours, builtin = tmp_path / "ours.csv", tmp_path / "builtin.csv"
     s = bind.run(user_capture / "take.c3d", ours, config.settings("bind"), config.settings("normalize"), folder)
     bind.run(user_capture / "take.c3d", builtin, config.settings("bind"), config.settings("normalize"), "builtin")
-    assert s["rig"] == "rig"
+    assert s.rig == "rig"
     a, b = read_binding(ours), read_binding(builtin)
     assert np.mean([a[n] == b[n] for n in a]) > 0.95

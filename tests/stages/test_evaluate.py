@@ -54,10 +54,10 @@ def test_tune_writes_weights_synthesize_accepts(tiny_db, tiny_artifacts, tmp_pat
     out = tmp_path / "tuned.toml"
     s = tune.run(tiny_db, tiny_artifacts["corpus"], out, c.settings("tune"), c.settings("synthesize"),
                  c.settings("build_db"), c.settings("normalize"))
-    assert s["validation_err_after"] <= s["validation_err_before"]  # the search starts from the current weights
-    assert "test_err_after" in s and s["test_sentences"] == 4
+    assert s.validation_err_after <= s.validation_err_before  # the search starts from the current weights
+    assert s.test_err_after is not None and s.test_sentences == 4
     tuned = Config.load(out).settings("synthesize")
-    assert tuned.alpha1 == pytest.approx(s["weights"]["alpha1"]) and 0 < tuned.alpha4 < 1
+    assert tuned.alpha1 == pytest.approx(s.weights["alpha1"]) and 0 < tuned.alpha4 < 1
     assert "validation error" in out.read_text()
 
 

@@ -27,8 +27,8 @@ def _cli(*args):
 def test_fit_uses_every_training_sentence_in_every_emotion_and_its_error_never_rises(fitted, config):
     d, s = fitted
     model, names = StyleModel.read(d / "expr.h5")
-    assert s["emotions"][0] == "neutral" and set(s["emotions"]) == {"neutral", "happy", "angry", "sad"}
-    assert s["sentences"] >= 2 and not s["skipped"]
+    assert s.emotions[0] == "neutral" and set(s.emotions) == {"neutral", "happy", "angry", "sad"}
+    assert s.sentences >= 2 and not s.skipped
     assert model.W.shape == (config.settings("expression").components, 4, config.settings("expression").content_dim)
     assert np.all(np.diff(model.errors) <= 1e-9 * model.errors[0])
     assert np.allclose(model.basis @ model.basis.T, np.eye(len(model.basis)), atol=1e-5)

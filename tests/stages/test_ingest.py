@@ -46,7 +46,7 @@ def _refused(d, config, match):
 def test_good_manifest_is_ingested(corpus, config):
     out = corpus / "corpus.h5"
     summary = ingest.run(corpus / "manifest.csv", out, config.settings("ingest"), config.settings("align"))
-    assert summary["takes"] == 3 and summary["markers"] == 91
+    assert summary.takes == 3 and summary.markers == 91
     with h5py.File(out) as f:
         assert f["markers"].attrs["units"] == "mm" and f["markers"].attrs["fps"] == 120
         assert f["audio"].attrs["sample_rate"] == 16000
@@ -199,7 +199,7 @@ def test_a_manifest_of_mocap_alone_is_ingested(corpus, config):
     (corpus / "manifest.csv").write_text("take,mocap\n" + "".join(f"{r['take']},{r['mocap']}\n" for r in rows[:2]))
     out = corpus / "corpus.h5"
     s = ingest.run(corpus / "manifest.csv", out, config.settings("ingest"), config.settings("align"))
-    assert s["without_audio"] == s["without_phones"] == [r["take"] for r in rows[:2]]
+    assert s.without_audio == s.without_phones == [r["take"] for r in rows[:2]]
     from facesynth.model.corpus import Corpus
 
     c = Corpus.read(out)

@@ -60,9 +60,10 @@ def test_pick_interpolates_the_covering_triangle(iso, tiny_db):
         tri = f["clusters"][phone]["isomap_triangles"][()]
     corners = pts[tri[0]]
     centre = corners.mean(0)
-    markers, names, info = isomap.pick(d / "iso.h5", phone, *centre)
-    assert sorted(info["corners"]) == sorted(tri[0].tolist())
-    assert np.allclose(info["weights"], 1 / 3, atol=1e-5)
+    info = isomap.pick(d / "iso.h5", phone, *centre)
+    markers, names = info.markers, info.marker_names
+    assert sorted(info.corners) == sorted(tri[0].tolist())
+    assert np.allclose(info.weights, 1 / 3, atol=1e-5)
     # the picked frame is the mean of the three captured frames (Eq. 11 is affine)
     with h5py.File(d / "iso.h5") as f:
         c = f["clusters"][phone]["coefficients"][()][tri[0]].mean(0)

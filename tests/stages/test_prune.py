@@ -41,7 +41,7 @@ def test_removing_nodes_keeps_links_and_costs_consistent(tiny_db, tmp_path, conf
         dsc_in = f["transition/dsc_in"][()]
     victim = int(np.nonzero((nodes.pre >= 0) & (nodes.suc >= 0))[0][0])  # a node inside a captured run
     s = prune.run(tiny_db, out, config.settings("prune"), str(victim), False, "test", False)
-    assert s == {"removed": 1, "kept": len(nodes) - 1, "links_cut": 1, "found": {victim: "test"}}
+    assert s == prune.PruneResult(removed=1, kept=len(nodes) - 1, links_cut=1, found={victim: "test"})
     assert tiny_db.read_bytes() == before  # the input is never changed
     with h5py.File(out) as f:
         kept = Nodes.read(f)

@@ -207,9 +207,9 @@ def test_avi_has_every_frame_and_audio_of_equal_length(anim, tmp_path):
     out = tmp_path / "x.avi"
     s = render.run([anim[0]], [anim[1]], out, Config.load().settings("render"))
     n_frames, _ = imageio_ffmpeg.count_frames_and_secs(str(out))
-    assert n_frames == s["frames"]
+    assert n_frames == s.frames
     audio, rate = _audio_of(out, tmp_path)
-    assert len(audio) / rate == pytest.approx(s["frames"] / 30.0, abs=1e-3)
+    assert len(audio) / rate == pytest.approx(s.frames / 30.0, abs=1e-3)
     reader = imageio_ffmpeg.read_frames(str(out))
     meta = next(reader)
     assert tuple(meta["size"]) == (640, 480)

@@ -15,10 +15,11 @@ def test_suggested_costs_are_what_the_constrained_search_finds(tiny_db, tiny_cor
     db = synthesize.MotionDatabase.read(tiny_db)
     c = next(k for k, p in enumerate(utt.phones) if p != "pau" and db.nodes.phone.count(p) >= 3)
     at = 0.5 * (utt.starts[c] + utt.ends[c])
-    info, rows = suggest.suggest(tiny_db, tg, at, config.settings("synthesize"), config.settings("ingest"))
-    assert info["index"] == c and info["relative_time"] == pytest.approx(0.5)
+    info = suggest.suggest(tiny_db, tg, at, config.settings("synthesize"), config.settings("ingest"))
+    rows = info.rows
+    assert info.index == c and info.relative_time == pytest.approx(0.5)
     assert {r.node for r in rows} == {j for j, p in enumerate(db.nodes.phone) if p == utt.phones[c]}
-    assert rows[0].extra == pytest.approx(0.0, abs=1e-3) and rows[0].cost == pytest.approx(info["optimum"], rel=1e-6)
+    assert rows[0].extra == pytest.approx(0.0, abs=1e-3) and rows[0].cost == pytest.approx(info.optimum, rel=1e-6)
     assert [r.cost for r in rows] == sorted(r.cost for r in rows)
     for r in rows[1:3]:  # constrain to a suggestion: the search's cost is the suggested cost
         (tmp_path / "c.txt").write_text(f"{c} {r.node}\n")
@@ -34,7 +35,7 @@ def test_suggested_costs_are_what_the_constrained_search_finds(tiny_db, tiny_cor
         assert node_frames[0] <= in_db <= node_frames[1]
         expected = node_frames[0] + round(0.5 * (db.nodes.frame_count[r.node] - 1))
         assert abs(in_db - expected) <= 1
-        assert r.context_correct == (r.context == info["context"])
+        assert r.context_correct == (r.context == info.context)
 
 
 def test_suggest_in_a_pause_is_refused(tiny_db, tiny_corpus, held_out_take, config):
@@ -64,12 +65,13 @@ def test_a_shared_triphone_gives_context_correct_suggestions(tiny_db, tiny_corpu
     db = synthesize.MotionDatabase.read(tiny_db)
     c = 3  # pau, s3, s4, [s5], ...: an inner phone, its neighbours as in the training sentence
     at = 0.5 * (segs[c].start + segs[c].end)
-    info, rows = suggest.suggest(tiny_db, tg, at, config.settings("synthesize"), config.settings("ingest"))
+    info = suggest.suggest(tiny_db, tg, at, config.settings("synthesize"), config.settings("ingest"))
+    rows = info.rows
     context = (segs[c - 1].label, segs[c].label, segs[c + 1].label)
-    assert info["context"] == "{}-{}+{}".format(*context)
+    assert info.context == "{}-{}+{}".format(*context)
     same = {j for j in range(len(db.nodes)) if (db.nodes.prev_phone[j], db.nodes.phone[j], db.nodes.next_phone[j]) == context}
     assert same and {r.node for r in rows if r.context_correct} == same
-    assert [s["index"] for s in info["context_correct_at"]] == [2, 3, 4, 5]  # not the edges, whose context is a pause
+    assert [s.index for s in info.context_correct_at] == [2, 3, 4, 5]  # not the edges, whose context is a pause
 
     r = CliRunner().invoke(main, ["suggest", str(tiny_db), "--phonemes", str(tg), "--at", f"{at}", "--context-only"])
     assert r.exit_code == 0, r.output
@@ -86,7 +88,8 @@ def test_a_filter_that_leaves_nothing_is_an_error(tiny_db, tiny_corpus, held_out
     utt = read_utterance(tg)
     c = next(k for k, p in enumerate(utt.phones) if p != "pau")
     at = 0.5 * (utt.starts[c] + utt.ends[c])
-    info, rows = suggest.suggest(tiny_db, tg, at, config.settings("synthesize"), config.settings("ingest"))
+    info = suggest.suggest(tiny_db, tg, at, config.settings("synthesize"), config.settings("ingest"))
+    rows = info.rows
     if any(r.context_correct for r in rows):
         pytest.skip("this phone of the held-out sentence has context-correct nodes")
     plain = CliRunner().invoke(main, ["suggest", str(tiny_db), "--phonemes", str(tg), "--at", f"{at}"])

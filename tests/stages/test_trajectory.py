@@ -228,8 +228,8 @@ def test_evaluate_lists_the_trajectory_method(tiny_db, tiny_artifacts, model_pat
     s = evaluate.run(tiny_db, tiny_artifacts["corpus"], tmp_path / "report", quick,
                      config.settings("synthesize"), config.settings("normalize"), trajectory=model_path,
                      trajectory_settings=config.settings("trajectory"))
-    assert "trajectory" in s and np.isfinite(s["trajectory"]["rms_mm"])
-    assert "dp_minus.rms_mm" in s["trajectory"]["figures"]
+    assert "trajectory" in s.methods and np.isfinite(s.methods["trajectory"]["rms_mm"])
+    assert "dp_minus.rms_mm" in s.methods["trajectory"]["figures"]
     assert "| trajectory |" in (tmp_path / "report" / "table.md").read_text()
 
 

@@ -81,27 +81,27 @@ def tuned(tiny_db, tiny_artifacts, tmp_path_factory):
 
 def test_tuned_validation_error_is_never_above_the_start(tuned):
     summary, calls, _ = tuned
-    assert summary["validation_sentences"] == 4 and summary["test_sentences"] == 4
-    assert 0 < summary["validation_err_after"] <= summary["validation_err_before"]
+    assert summary.validation_sentences == 4 and summary.test_sentences == 4
+    assert 0 < summary.validation_err_after <= summary.validation_err_before
     # the first evaluation is the start; the reported best is the least of every evaluation
-    assert calls[0][2] == summary["validation_err_before"]
-    assert summary["validation_err_after"] == min(c[2] for c in calls)
-    assert [c[0] for c in calls] == list(range(1, summary["evaluations"] + 1))
+    assert calls[0][2] == summary.validation_err_before
+    assert summary.validation_err_after == min(c[2] for c in calls)
+    assert [c[0] for c in calls] == list(range(1, summary.evaluations + 1))
     # one overall count: the weight budget plus the fit lengths and windows, the best so far with it
     budget = 6 + len(tune.FIT_LENGTHS) - 1 + len(tune.WINDOWS) - 1
-    assert {c[1] for c in calls} == {budget} and summary["evaluations"] <= budget
+    assert {c[1] for c in calls} == {budget} and summary.evaluations <= budget
     assert [c[3] for c in calls] == list(np.minimum.accumulate([c[2] for c in calls]))
 
 
 def test_written_toml_loads_back_and_reproduces_the_weights(tuned):
     summary, _, out = tuned
     text = out.read_text(encoding="utf-8")
-    assert f"{summary['validation_err_before']:.4f} -> {summary['validation_err_after']:.4f}" in text
-    assert f"{summary['test_err_before']:.4f} [" in text and f"-> {summary['test_err_after']:.4f} [" in text
+    assert f"{summary.validation_err_before:.4f} -> {summary.validation_err_after:.4f}" in text
+    assert f"{summary.test_err_before:.4f} [" in text and f"-> {summary.test_err_after:.4f} [" in text
     loaded = Config.load(out)
-    assert {k: getattr(loaded.settings("synthesize"), k) for k in tune.WEIGHTS} == summary["weights"]  # exact: repr
-    assert loaded.settings("synthesize").smoothing_half_window == summary["smoothing_half_window"]
-    assert loaded.settings("build_db").boundary_fit_frames == summary["boundary_fit_frames"]
+    assert {k: getattr(loaded.settings("synthesize"), k) for k in tune.WEIGHTS} == summary.weights  # exact: repr
+    assert loaded.settings("synthesize").smoothing_half_window == summary.smoothing_half_window
+    assert loaded.settings("build_db").boundary_fit_frames == summary.boundary_fit_frames
     # only those are written: every other setting stays at its default
     default = Config.load().settings("synthesize")
     moved = {k: getattr(default, k) for k in tune.WEIGHTS + ("smoothing_half_window",)}
@@ -114,17 +114,17 @@ def test_test_error_is_the_error_on_the_test_takes(tuned, tiny_db, tiny_artifact
     ev = Config.load().settings("evaluate")
     test_ev = dataclasses.replace(ev, split="test")
     before, _ = evaluation.evaluate(tiny_db, tiny_artifacts["corpus"], test_ev, synth, norm, with_baseline=False)
-    assert summary["test_err_before"] == pytest.approx(before["dp"]["overall"]["err_mm2"], rel=1e-9)
-    lo, hi = summary["test_ci_before"]
-    assert lo <= summary["test_err_before"] <= hi
-    if summary["boundary_fit_frames"] == build.boundary_fit_frames:  # the database's features are the tuned ones
+    assert summary.test_err_before == pytest.approx(before["dp"]["overall"]["err_mm2"], rel=1e-9)
+    lo, hi = summary.test_ci_before
+    assert lo <= summary.test_err_before <= hi
+    if summary.boundary_fit_frames == build.boundary_fit_frames:  # the database's features are the tuned ones
         after, _ = evaluation.evaluate(tiny_db, tiny_artifacts["corpus"], test_ev, Config.load(out).settings("synthesize"),
                                        norm, with_baseline=False)
-        assert summary["test_err_after"] == pytest.approx(after["dp"]["overall"]["err_mm2"], rel=1e-9)
+        assert summary.test_err_after == pytest.approx(after["dp"]["overall"]["err_mm2"], rel=1e-9)
     val_ev = dataclasses.replace(ev, split="val")
     on_val, _ = evaluation.evaluate(tiny_db, tiny_artifacts["corpus"], val_ev, synth, norm, with_baseline=False)
-    assert summary["validation_err_before"] == pytest.approx(on_val["dp"]["overall"]["err_mm2"], rel=1e-9)
-    assert summary["test_err_before"] != pytest.approx(summary["validation_err_before"])  # two different sets
+    assert summary.validation_err_before == pytest.approx(on_val["dp"]["overall"]["err_mm2"], rel=1e-9)
+    assert summary.test_err_before != pytest.approx(summary.validation_err_before)  # two different sets
 
 
 def _spy_synthesize(monkeypatch, seen):
@@ -200,8 +200,8 @@ def test_nothing_better_writes_the_start_with_a_warning(tiny_db, tiny_artifacts,
     out = tmp_path / "tuned.toml"
     t, synth, build, norm = _settings()
     summary = tune.run(tiny_db, tiny_artifacts["corpus"], out, t, synth, build, norm)
-    assert not summary["improved"] and summary["warnings"]
-    assert summary["validation_err_after"] == summary["validation_err_before"]
+    assert not summary.improved and summary.warnings
+    assert summary.validation_err_after == summary.validation_err_before
     loaded = Config.load(out)
     assert {k: getattr(loaded.settings("synthesize"), k) for k in tune.WEIGHTS} == pytest.approx(
         {k: getattr(synth, k) for k in tune.WEIGHTS}, rel=1e-12)

@@ -1,0 +1,37 @@
+"""``facesynth sample-corpus``: the built-in virtual actress's capture corpus (C3D, WAV,
+TextGrid, manifest, face mesh, ground truth; :mod:`facesynth.corpus.generate`), written into a
+folder beside the output and renamed into place when complete."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+from ..artifacts import atomic_folder
+from ..corpus.generate import generate
+
+
+@dataclass(frozen=True)
+class SampleCorpusResult:
+    """What ``facesynth sample-corpus`` wrote.
+
+    takes: takes (one C3D, WAV and TextGrid each).
+    frames: capture frames over all takes.
+    seconds: capture length over all takes (s).
+    train_phones: phone segments of the training takes.
+    contamination_events: marker spikes and swaps put into the capture (for prune to find).
+    """
+
+    takes: int
+    frames: int
+    seconds: float
+    train_phones: int
+    contamination_events: int
+
+
+def run(out_dir: Path, preset: str, seed: int, overwrite: bool = False) -> SampleCorpusResult:
+    """Write the corpus of ``preset`` ('tiny', 'small', 'paper') made with ``seed`` into ``out_dir``."""
+    with atomic_folder(out_dir, "the corpus", overwrite) as folder:  # renamed into place when complete
+        summary = generate(folder, preset, seed, overwrite=True)
+    return SampleCorpusResult(summary["takes"], summary["frames"], summary["seconds"], summary["train_phones"],
+                              summary["contamination_events"])
