@@ -482,7 +482,7 @@ CURVES = Kind("curves", SCHEMAS["curves"], (
             "no markers", "mm", (MM,), finite=False, required=False),
 ), attrs=(Attr("rig_name", "str", "the rig (`ict-facekit` for the built-in rig)"),
           Attr("rig_sha256", "str", "sha256 of the rig's data (package data, a user's rig folder or glTF)"),
-          Attr("source", "str", "what made the weights", choices=("solve", "retarget", "truth", "import")),
+          Attr("source", "str", "what made the weights", choices=("solve", "retarget", "truth", "import", "openfacefx")),
           Attr("method", "str", "how, in words (e.g. `linear`, `deformation-gradient`), or empty")),
     writers=("facesynth solve", "facesynth retarget"))
 

@@ -1,39 +1,25 @@
 """``facesynth rig-mesh``: rig weight curves (``solve`` or ``retarget``) -> the rig's mesh animation
-(``meshanim``), so ``facesynth render`` shows a solve or a retargeting on the face.
+(``meshanim``), to keep or inspect the posed mesh as a file. ``facesynth render`` reads curves
+directly (posing the rig in memory the same way), so this step is optional.
 
-The mesh is ``neutral + sum_e w_e deltas_e`` in the rig's frame and units; the head motion the
-curves carry is not applied (the face stays in the head frame)."""
+The mesh is ``neutral + sum_e w_e deltas_e`` in the rig's frame and units
+(:func:`facesynth.retarget.rig.pose_rig`); the head motion the curves carry is not applied (the
+face stays in the head frame); the gaze track comes from the rig's ``eyeLook*`` shapes."""
 
 from __future__ import annotations
 
 from pathlib import Path
 
-import numpy as np
-from scipy import sparse
-
 from ..artifacts import check_output
-from ..errors import InputError
 from ..model.curves import RigCurves
-from ..model.meshanim import MeshAnimation
-from ..retarget.rig import load_rig
+from ..retarget.rig import load_rig, pose_rig
 
 
 def run(curves_path: Path, out: Path, rig_path: Path | None = None, binding: Path | None = None,
         overwrite: bool = False) -> dict:
     """Pose the rig with the curves of ``curves_path`` and write ``out``."""
     check_output(out, overwrite)
-    rig = load_rig(rig_path, binding)
-    curves = RigCurves.read(curves_path)
-    if curves.rig_sha256 != rig.sha256:
-        raise InputError(f"{curves_path}: the curves were made for rig {curves.rig_name!r}, not {rig.name!r}; "
-                         f"give that rig with --rig.")
-    if list(curves.shape_names) != list(rig.shape_names):
-        raise InputError(f"{curves_path}: its shape names differ from rig {rig.name!r}'s; remake the curves on this rig.")
-    vertices = rig.evaluate(curves.weights).astype(np.float32)
-    names = list(rig.binding)
-    verts = np.array([rig.binding[n] for n in names], np.int64)
-    empty = sparse.csr_matrix((len(rig.neutral), len(names)), dtype=np.float32)
-    MeshAnimation(vertices, curves.fps, rig.neutral.astype(np.float32), rig.faces, vertices[:, verts], names, empty,
-                  names, verts, 0.0, np.full((len(vertices), 2, 2), np.nan, np.float32)).write(
-        out, config="{}", inputs=[curves_path], overwrite=overwrite)
-    return {"frames": len(vertices), "vertices": len(rig.neutral), "rig": rig.name}
+    rig = load_rig(rig_path, binding, need_binding=False)
+    anim = pose_rig(RigCurves.read(curves_path), rig, str(curves_path))
+    anim.write(out, config="{}", inputs=[curves_path], overwrite=overwrite)
+    return {"frames": len(anim.vertices), "vertices": len(rig.neutral), "rig": rig.name}
