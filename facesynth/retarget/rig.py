@@ -93,7 +93,7 @@ def arkit_to_rig(rig: Rig, where: str) -> tuple[tuple[str, ...], np.ndarray]:
         if name.lower() in index:
             matrix[a, index[name.lower()]] = 1.0
     if not matrix.any():
-        raise InputError(f"{where}: none of rig {rig.name!r}'s shapes has an ARKit name (jawOpen, mouthClose, "
+        raise InputError(f"{where}: none of the shapes of rig {rig.name!r} has an ARKit name (jawOpen, mouthClose, "
                          f"eyeBlinkLeft, ...); name its blendshapes as ARKit does to drive it with ARKit curves.")
     return names, matrix
 

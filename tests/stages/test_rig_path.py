@@ -198,3 +198,35 @@ def test_curves_of_another_rig_or_a_rig_for_a_mesh_animation_are_refused(made, t
     with pytest.raises(UsageError, match="--rig is for rig curves"):
         render.run([made["anim"]], [], tmp_path / "x.avi", _settings(), rig_path=tmp_path / "rig")
     assert not (tmp_path / "x.avi").exists()
+
+
+@needs_openfacefx
+def test_a_user_s_rig_with_arkit_names_is_driven_and_rendered_with_rig(made, tmp_path):
+    """A rig folder (the built-in mesh with three ARKit-named shapes and one other): openfacefx
+    drives its ARKit shapes by name, and render poses it with --rig (no binding needed)."""
+    from facesynth.formats.mesh import write_obj
+
+    builtin = load_face_rig()
+    folder = tmp_path / "myrig"
+    folder.mkdir()
+    write_obj(folder / "neutral.obj", builtin.neutral, builtin.faces)
+    for name in ("jawOpen", "mouthFunnel", "mouthClose", "wrinkle"):
+        delta = builtin.deltas[builtin.shape_index(name if name != "wrinkle" else "cheekRaiser_L")]
+        write_obj(folder / f"{name}.obj", builtin.neutral + delta, builtin.faces)
+    openfacefx.run(made["motion"], tmp_path / "o.h5", rig_path=folder)
+    c = RigCurves.read(tmp_path / "o.h5")
+    assert c.rig_name == "myrig" and c.shape_names == ["jawOpen", "mouthClose", "mouthFunnel", "wrinkle"]
+    openfacefx.run(made["motion"], tmp_path / "b.h5")
+    on_builtin = RigCurves.read(tmp_path / "b.h5").weights
+    assert np.allclose(c.weights[:, 0], on_builtin[:, builtin.shape_index("jawOpen")], atol=1e-6)
+    assert (c.weights[:, 3] == 0).all()  # no ARKit channel drives it
+    settings = _settings("render.width=96", "render.height=80")
+    s = render.run([tmp_path / "o.h5"], [made["audio"]], tmp_path / "u.avi", settings, rig_path=folder)
+    assert s["frames"] == c.n_frames
+    with pytest.raises(InputError, match="made for rig 'myrig', not 'ict-facekit'; give that rig with --rig"):
+        render.run([tmp_path / "o.h5"], [], tmp_path / "x.avi", settings)
+    for p in folder.glob("*.obj"):
+        if p.stem != "neutral":
+            p.rename(p.with_name(f"shape_{p.name}"))
+    with pytest.raises(InputError, match="myrig: none of the shapes of rig 'myrig' has an ARKit name"):
+        openfacefx.run(made["motion"], tmp_path / "n.h5", rig_path=folder)
