@@ -83,8 +83,11 @@ $(OUT)/db_clean.h5: $(OUT)/db.h5 $(CONFIG)
 $(OUT)/isomap.h5: $(OUT)/db_clean.h5 $(CONFIG)
 	$(FS) isomap $< -o $@ --images $(OUT)/isomaps --overwrite
 
-# Two held-out (test) sentences of the small corpus, each asked for in another emotion.
-DEMO_TAKES := happy_s016 sad_s017
+# Two held-out (test) sentences of the small corpus, each asked for in another emotion, solved
+# onto the built-in rig and rendered beside openfacefx's lip sync of the same phones on the same
+# rig and timing (left "facesynth", right "openfacefx").
+DEMO_TAKES  := happy_s016 sad_s017
+DEMO_LABELS := render.labels=["facesynth","openfacefx"]
 
 $(OUT)/%.emotions.txt:
 	mkdir -p $(OUT)
@@ -93,12 +96,17 @@ $(OUT)/%.emotions.txt:
 $(OUT)/%.motion.h5: $(OUT)/db_clean.h5 $(OUT)/%.emotions.txt $(CONFIG)
 	$(FS) synthesize $< --phonemes $(OUT)/corpus/labels/$*.TextGrid --emotions $(OUT)/$*.emotions.txt -o $@ --overwrite
 
-$(OUT)/%.anim.h5: $(OUT)/%.motion.h5 $(CONFIG)
-	$(FS) deform $< --mesh $(OUT)/corpus/face.obj --binding $(OUT)/corpus/markers.csv -o $@ --overwrite
+# The facial solve: the rig's blendshape weights per frame (rig curves); render poses the rig with them.
+$(OUT)/%.curves.h5: $(OUT)/%.motion.h5 $(CONFIG)
+	$(FS) solve $< -o $@ --overwrite
 
-$(OUT)/demo.avi: $(foreach t,$(DEMO_TAKES),$(OUT)/$(t).anim.h5) $(CONFIG)
-	$(FS) render $(foreach t,$(DEMO_TAKES),$(OUT)/$(t).anim.h5) \
-	    $(foreach t,$(DEMO_TAKES),--audio $(OUT)/corpus/audio/$(t).wav) -o $@ --overwrite
+$(OUT)/%.openfacefx.h5: $(OUT)/%.motion.h5
+	$(FS) openfacefx $< -o $@ --overwrite
+
+$(OUT)/demo.avi: $(foreach t,$(DEMO_TAKES),$(OUT)/$(t).curves.h5 $(OUT)/$(t).openfacefx.h5) $(CONFIG)
+	$(FS) render $(foreach t,$(DEMO_TAKES),$(OUT)/$(t).curves.h5) --view side-by-side \
+	    $(foreach t,$(DEMO_TAKES),--compare $(OUT)/$(t).openfacefx.h5 --audio $(OUT)/corpus/audio/$(t).wav) \
+	    --set '$(DEMO_LABELS)' -o $@ --overwrite
 
 demo: $(OUT)/demo.avi $(OUT)/isomap.h5
 	@echo "demo video: $(OUT)/demo.avi; phoneme-Isomaps: $(OUT)/isomaps/index.html"

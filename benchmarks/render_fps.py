@@ -8,7 +8,9 @@ gaze sweep, 30 fps. Two figures per rasterizer:
 * ``draw_fps``: frames drawn per second (scene placement, normals, projection,
   rasterization, shading), the renderer alone;
 * ``stage_fps`` (OpenCL only, and NumPy with ``--stage-numpy``): the whole ``render`` stage
-  per frame of video, reading the artifact, drawing, MJPEG encoding and muxing the audio.
+  per frame of video, reading the artifact, drawing, MJPEG encoding and muxing the audio;
+  ``curves_stage_fps`` the same from the rig curves of the same animation (the rig posed in
+  memory, as ``solve`` -> ``render`` does).
 
 ``realtime`` is stage (else draw) fps / 30: above 1 is faster than real time. Wall-clock figures depend on what
 else the machine runs (``load_average_1min`` is recorded), so the CPU time per frame is given
@@ -35,6 +37,7 @@ from scipy import sparse
 from facesynth.config import Config
 from facesynth.facerig import load_face_rig
 from facesynth.formats.audio import write_wav
+from facesynth.model.curves import RigCurves
 from facesynth.model.meshanim import MeshAnimation
 from facesynth.opencl import device_description, use_opencl
 from facesynth.rendering import video
@@ -60,15 +63,17 @@ def speaking_weights(frames: int) -> np.ndarray:
     return w
 
 
-def animation(frames: int) -> MeshAnimation:
-    """The rig moved by :func:`speaking_weights`, with a gaze track from its eyeLook weights."""
+def animation(frames: int) -> tuple[MeshAnimation, RigCurves]:
+    """The rig moved by :func:`speaking_weights`, with a gaze track from its eyeLook weights, as a
+    mesh animation and as the rig curves that pose it."""
     rig = load_face_rig()
     w = speaking_weights(frames)
     vertices = rig.evaluate(w).astype(np.float32)
     weights = sparse.csr_matrix((len(rig.neutral), 1), dtype=np.float32)
-    return MeshAnimation(vertices, FPS, rig.neutral.astype(np.float32), rig.faces,
+    clip = MeshAnimation(vertices, FPS, rig.neutral.astype(np.float32), rig.faces,
                          np.zeros((frames, 1, 3), np.float32), ["none"], weights, ["none"], np.array([0]),
                          gaze=gaze_from_rig_weights(w, rig.shape_names).astype(np.float32))
+    return clip, RigCurves(w, FPS, list(rig.shape_names), rig.name, rig.sha256, "import")
 
 
 def draw_fps(clip: MeshAnimation, settings, frames: int) -> tuple[float, float]:
@@ -82,18 +87,20 @@ def draw_fps(clip: MeshAnimation, settings, frames: int) -> tuple[float, float]:
     return frames / (time.perf_counter() - started), (time.process_time() - cpu) / frames * 1e3
 
 
-def stage_fps(clip: MeshAnimation, settings, work: Path) -> tuple[float, float]:
-    """The render stage's own frames per second (its ``frames_per_s``) for the clip on disk, and
-    its CPU time per frame, ms: this process's threads and the ffmpeg encoder it waits for."""
-    anim, wav, avi = work / "bench.anim.h5", work / "bench.wav", work / "bench.avi"
+def stage_fps(clip: MeshAnimation | RigCurves, settings, work: Path) -> tuple[float, float]:
+    """The render stage's own frames per second (its ``frames_per_s``) for the clip (a mesh
+    animation or rig curves) on disk, and its CPU time per frame, ms: this process's threads and
+    the ffmpeg encoder it waits for."""
+    anim, wav, avi = work / f"bench.{clip.KIND}.h5", work / "bench.wav", work / "bench.avi"
+    n_frames = clip.n_frames if isinstance(clip, RigCurves) else len(clip.vertices)
     if not anim.exists():
         clip.write(anim, config="{}", inputs=[], overwrite=True)
-        write_wav(wav, np.zeros(int(len(clip.vertices) / FPS * 48000)), 48000)
+        write_wav(wav, np.zeros(int(n_frames / FPS * 48000)), 48000)
     cpu, children = time.process_time(), resource.getrusage(resource.RUSAGE_CHILDREN)
     fps = render.run([anim], [wav], avi, settings, overwrite=True).frames_per_s
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     used = time.process_time() - cpu + (after.ru_utime - children.ru_utime) + (after.ru_stime - children.ru_stime)
-    return fps, used / len(clip.vertices) * 1e3
+    return fps, used / n_frames * 1e3
 
 
 def main() -> None:
@@ -104,7 +111,7 @@ def main() -> None:
     parser.add_argument("--height", type=int, default=480)
     parser.add_argument("--stage-numpy", action="store_true", help="also run the whole stage on NumPy (slow)")
     args = parser.parse_args()
-    clip = animation(args.frames)
+    clip, curves = animation(args.frames)
     base = (f"render.width={args.width}", f"render.height={args.height}")
     result = {"vertices": int(clip.vertices.shape[1]), "width": args.width, "height": args.height,
               "animation_fps": FPS, "machine": platform.processor() or platform.machine(), "cpus": os.cpu_count()}
@@ -123,6 +130,8 @@ def main() -> None:
                 fps, cpu_ms = stage_fps(clip, settings, Path(tmp))
                 entry.update(stage_fps=round(fps, 2), stage_cpu_ms_per_frame=round(cpu_ms, 2),
                              stage_fps_if_cpus_idle=round(1e3 * (os.cpu_count() or 1) / cpu_ms, 1))
+                fps, cpu_ms = stage_fps(curves, settings, Path(tmp))
+                entry.update(curves_stage_fps=round(fps, 2), curves_stage_cpu_ms_per_frame=round(cpu_ms, 2))
             entry["realtime"] = round(entry.get("stage_fps", entry["draw_fps"]) / FPS, 2)
             result[name] = entry
     result["load_average_1min"] = round(os.getloadavg()[0], 2)  # other work on the machine meanwhile

@@ -267,8 +267,8 @@ def main():
       facesynth pca normalized.h5 -o pca.h5
       facesynth build-db pca.h5 -o db.h5
       facesynth synthesize db.h5 --phonemes corpus/labels/neutral_s016.TextGrid -o motion.h5
-      facesynth deform motion.h5 --mesh corpus/face.obj --binding corpus/markers.csv -o anim.h5
-      facesynth render anim.h5 --audio corpus/audio/neutral_s016.wav -o neutral_s016.avi
+      facesynth solve motion.h5 -o curves.h5
+      facesynth render curves.h5 --audio corpus/audio/neutral_s016.wav -o neutral_s016.avi
     """
 
 
@@ -545,9 +545,11 @@ def suggest(ctx: Context, db: Path, phonemes: Path, at_s: float, emotions, const
 @click.option("-o", "--output", type=PATH, required=True, help="Output anim.h5.")
 @stage
 def deform(ctx: Context, motion: Path, mesh: Path, binding: Path, output: Path):
-    """Deform a face mesh by the synthesized markers, with mesh-distance Gaussian weights.
+    """Deform a plain face mesh, one without blendshapes, by the markers, with mesh-distance Gaussian weights.
 
-    The weights and the deformation are Eq. 14-15 of the paper.
+    The weights and the deformation are Eq. 14-15 of the paper. For a rig (the built-in one, or
+    your own with blendshapes) use `facesynth solve` and render the curves: the rig's own shapes
+    give a clean jaw line where Gaussian weights crease the skin under an open jaw.
 
     \b
     Example:
@@ -742,7 +744,9 @@ def retarget(ctx: Context, motion: Path, keyshapes_path: Path, rig, binding, key
 @click.option("-o", "--output", type=PATH, required=True, help="Output anim.h5.")
 @stage
 def rig_mesh(ctx: Context, curves: Path, rig, binding, output: Path):
-    """Pose the rig with weight curves (solve, retarget) into a mesh animation for render.
+    """Pose the rig with weight curves (solve, retarget) into a mesh animation file.
+
+    Optional: render, player and export read curves directly; this keeps the posed mesh as a file.
 
     \b
     Example:
@@ -756,19 +760,53 @@ def rig_mesh(ctx: Context, curves: Path, rig, binding, output: Path):
 
 
 @main.command()
+@click.argument("motion", type=EXISTING)
+@click.option("--rig", type=PATH, default=None, help="The rig to drive (default: the built-in rig; a user's rig "
+              "whose blendshapes have ARKit names: a folder of OBJ files or a .gltf/.glb file).")
+@click.option("-o", "--output", type=PATH, required=True, help="Output curves.h5.")
+@stage
+def openfacefx(ctx: Context, motion: Path, rig, output: Path):
+    """Write openfacefx's lip sync of a synthesized motion's phones as rig curves, to compare with facesynth.
+
+    The same phones, timing, frame rate and rig; render shows both side by side. Needs the
+    openfacefx package (the 'baselines' extra).
+
+    \b
+    Example:
+      facesynth openfacefx motion.h5 -o openfacefx.h5
+      facesynth render curves.h5 --compare openfacefx.h5 --view side-by-side -o compare.avi
+    """
+    from .stages import openfacefx as stage
+
+    s = stage.run(motion, output, rig, ctx.overwrite)
+    ctx.say(f"openfacefx lip sync of {s.phones} phones on rig {s.rig} over {s.frames} frames "
+            f"({s.fps:g} frames/s) -> {output}")
+
+
+@main.command()
 @click.argument("anims", nargs=-1, required=True, type=EXISTING)
 @click.option("--audio", "audios", multiple=True, type=EXISTING,
               help="Audio of each animation, in order (none: a silent soundtrack).")
 @click.option("--view", type=click.Choice(choices("render", "view")), default=None, help="Default: render.view.")
-@click.option("--compare", type=EXISTING, default=None, help="Second animation for the side-by-side view.")
+@click.option("--compare", multiple=True, type=EXISTING,
+              help="Animation shown beside for the side-by-side view: one for all, or one per animation in order.")
+@click.option("--rig", type=PATH, default=None, help="The rig that rig curves pose (default: the built-in rig; "
+              "a folder of OBJ files or a .gltf/.glb file).")
+@click.option("--binding", type=EXISTING, default=None, help="With --rig: the markers' vertices (the markers view).")
 @click.option("-o", "--output", type=PATH, required=True, help="Output .avi.")
 @stage
-def render(ctx: Context, anims, audios, view, compare, output: Path):
-    """Render mesh animations to an AVI with their audio (several play one after another).
+def render(ctx: Context, anims, audios, view, compare, rig, binding, output: Path):
+    """Render rig curves or mesh animations to an AVI with their audio (several play one after another).
+
+    Rig curves (solve, retarget, openfacefx) pose the rig with its own blendshapes, with eyes,
+    teeth and tongue; a mesh animation (deform, rig-mesh) is drawn as stored.
 
     \b
-    Example:
-      facesynth render anim.h5 --audio corpus/audio/neutral_s016.wav -o neutral_s016.avi
+    Examples:
+      facesynth render curves.h5 --audio corpus/audio/neutral_s016.wav -o neutral_s016.avi
+      facesynth openfacefx motion.h5 -o openfacefx.h5
+      facesynth render curves.h5 --compare openfacefx.h5 --view side-by-side \\
+          --set 'render.labels=["facesynth","openfacefx"]' --audio corpus/audio/neutral_s016.wav -o compare.avi
     """
     import dataclasses
 
@@ -777,7 +815,7 @@ def render(ctx: Context, anims, audios, view, compare, output: Path):
     settings = ctx.config.settings("render")
     if view:
         settings = dataclasses.replace(settings, view=view)
-    s = stage.run(list(anims), list(audios), output, settings, compare, ctx.overwrite)
+    s = stage.run(list(anims), list(audios), output, settings, list(compare), ctx.overwrite, rig, binding)
     for note in s.notes:  # a mesh without eye or mouth holes: expected for plain meshes, so only with -v
         ctx.detail(f"render: {note}.")
     ctx.say(f"rendered {s.frames} frames ({s.seconds:.2f} s of video, {s.frames_per_s:.1f} frames/s) -> {output}")
@@ -805,7 +843,7 @@ def export(ctx: Context, artifact: Path, fmt: str, fps: float | None, head_motio
     \b
     Example:
       facesynth export motion.h5 --format c3d -o motion.c3d
-      facesynth export anim.h5 --format obj-seq -o anim_obj
+      facesynth export curves.h5 --format obj-seq -o anim_obj
     """
     from .stages import export as stage
 
@@ -843,7 +881,7 @@ def player(ctx: Context, artifact: Path | None, audio: Path | None, motion: Path
 
     \b
     Examples:
-      facesynth player anim.h5 --motion motion.h5 --audio corpus/audio/neutral_s016.wav -o player.html
+      facesynth player curves.h5 --motion motion.h5 --audio corpus/audio/neutral_s016.wav -o player.html
       facesynth player --live ws://127.0.0.1:8765 --audio corpus/audio/neutral_s016.wav -o live.html
     """
     from .stages import player as stage
@@ -971,9 +1009,9 @@ def capture(ctx: Context, corpus: Path, db_path: Path, take: str, output: Path):
     \b
     Example:
       facesynth capture corpus.h5 --db db.h5 --take neutral_s016 -o truth.h5
-      facesynth deform truth.h5 --mesh corpus/face.obj --binding corpus/markers.csv -o truth_anim.h5
-      facesynth render anim.h5 --audio corpus/audio/neutral_s016.wav --view side-by-side \\
-          --compare truth_anim.h5 -o compare.avi
+      facesynth solve truth.h5 -o truth_curves.h5
+      facesynth render curves.h5 --audio corpus/audio/neutral_s016.wav --view side-by-side \\
+          --compare truth_curves.h5 -o compare.avi
     """
     from .stages import capture as stage
 

@@ -242,7 +242,7 @@ class DeformSettings:
 @dataclass(frozen=True)
 class RenderSettings:
     """``[render]``: video size (px), frame rate, view, camera (field of view, yaw, pitch; degrees),
-    anti-aliasing, compute device."""
+    anti-aliasing, compute device, head motion of rig curves."""
 
     width: int = setting("not in the paper: video size", unit="px", ge=16)
     height: int = setting("not in the paper: video size", unit="px", ge=16)
@@ -258,6 +258,8 @@ class RenderSettings:
     supersample: int = setting("not in the paper: anti-aliasing, samples per pixel along each axis (1: none)",
                                ge=1, le=4)
     use_opencl: bool = setting("not in the paper: rasterize on OpenCL (NumPy without a device that builds)")
+    head_motion: bool = setting("not in the paper: move the face by the head motion rig curves carry (a mesh "
+                                "animation's is in its vertices where deform put it)")
 
 
 @dataclass(frozen=True)

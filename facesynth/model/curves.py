@@ -1,7 +1,8 @@
 """Rig animation curves and the ``curves`` artifact: per-frame blendshape weights of a named rig,
 written by ``facesynth solve`` (a direct facial solve of marker motion), ``facesynth retarget``
 (key-shape weights applied to keymorphs, Chuang & Bregler 2005 Eq. 9) and by the scoring code
-for a take's true weights. The exporters (ARKit CSV, glTF) and ``facesynth curves-mesh`` read it."""
+for a take's true weights, and by ``facesynth openfacefx`` (openfacefx's lip sync of the same phones).
+``facesynth render``, the exporters (ARKit CSV, glTF), ``facesynth player`` and ``facesynth rig-mesh`` read it."""
 
 from __future__ import annotations
 
@@ -14,9 +15,9 @@ from ..artifacts import attr, open_artifact, read, read_strings, write_artifact,
 from ..errors import InputError
 from .provenance import FrameProvenance
 
-#: What made the curves: a direct solve, key-shape retargeting, a take's true weights, or a file
-#: of weights given by the user.
-SOURCES = ("solve", "retarget", "truth", "import")
+#: What made the curves: a direct solve, key-shape retargeting, a take's true weights, a file
+#: of weights given by the user, or openfacefx's lip sync of a synthesized motion's phones.
+SOURCES = ("solve", "retarget", "truth", "import", "openfacefx")
 
 
 @dataclass

@@ -506,7 +506,7 @@ CURVES = Kind("curves", SCHEMAS["curves"], (
     FRAME_PROVENANCE,
 ), attrs=(Attr("rig_name", "str", "the rig (`ict-facekit` for the built-in rig)"),
           Attr("rig_sha256", "str", "sha256 of the rig's data (package data, a user's rig folder or glTF)"),
-          Attr("source", "str", "what made the weights", choices=("solve", "retarget", "truth", "import")),
+          Attr("source", "str", "what made the weights", choices=("solve", "retarget", "truth", "import", "openfacefx")),
           Attr("method", "str", "how, in words (e.g. `linear`, `deformation-gradient`), or empty")))
 
 KEYSHAPES = Kind("keyshapes", SCHEMAS["keyshapes"], (

@@ -11,6 +11,11 @@ frames brow to chin, otherwise the whole mesh. The eyes follow the animation's g
 it is known and look ahead elsewhere. Several animations render one after another into one
 video, each with its own audio, cut or padded to its frame count, so the first frame is at
 audio time 0 and picture and sound end together.
+
+An animation is a mesh animation (``meshanim``) or rig curves (``curves``, from ``solve``,
+``retarget`` or ``openfacefx``): curves pose their rig in memory (the built-in rig, or a
+user's rig given to :func:`render_video`) as ``rig-mesh`` does, with the rig's gaze from its
+``eyeLook*`` shapes and, with ``render.head_motion``, the head motion the curves carry.
 """
 
 from __future__ import annotations
@@ -21,9 +26,10 @@ from pathlib import Path
 
 import numpy as np
 
-from ..artifacts import atomic_path
+from ..artifacts import artifact_kind, atomic_path
 from ..config import RenderSettings
 from ..errors import InputError, UsageError
+from ..facerig import Rig
 from ..formats.audio import read_audio, resample, write_wav
 from ..model.meshanim import MeshAnimation
 from ..progress import progress
@@ -142,26 +148,59 @@ def render_frames(clip: MeshAnimation, settings: RenderSettings, compare: MeshAn
         yield np.concatenate([burn_label(left, masks[0]), burn_label(right, masks[1])], axis=1)
 
 
-def render_video(anims: list[Path], audios: list[Path], out: Path, settings: RenderSettings, compare: Path | None = None,
-                 overwrite: bool = False) -> dict:
-    """Render the animations one after another, each with its audio (none: silence), into the AVI ``out``;
-    returns frames, seconds of video and frames rendered per second.
+class AnimationReader:
+    """Reads what ``render`` draws: a mesh animation as stored, or rig curves posed on the rig
+    (read once, when the first curves come: the built-in rig when ``rig_path`` is None)."""
+
+    def __init__(self, rig_path: Path | None, binding: Path | None, head_motion: bool):
+        self.rig_path, self.binding, self.head_motion = rig_path, binding, head_motion
+        self._rig: Rig | None = None
+
+    def read(self, path: Path) -> MeshAnimation:
+        """The animation at ``path`` (``meshanim`` or ``curves``) as a mesh animation."""
+        if artifact_kind(path) != "curves":
+            if self.rig_path is not None:
+                raise UsageError(f"--rig is for rig curves; {path} is not curves (a mesh animation carries its mesh).")
+            return MeshAnimation.read(path)
+        from ..model.curves import RigCurves
+        from ..retarget.rig import load_rig, pose_rig
+
+        if self._rig is None:
+            self._rig = load_rig(self.rig_path, self.binding, need_binding=False)
+        return pose_rig(RigCurves.read(path), self._rig, str(path), self.head_motion)
+
+
+def render_video(anims: list[Path], audios: list[Path], out: Path, settings: RenderSettings,
+                 compare: list[Path] | None = None, overwrite: bool = False, rig_path: Path | None = None,
+                 binding: Path | None = None) -> dict:
+    """Render the animations (mesh animations or rig curves) one after another, each with its
+    audio (none: silence), into the AVI ``out``; ``compare``: for the side-by-side view, one
+    animation beside every one, or one per animation. Curves pose the rig ``rig_path`` (None:
+    the built-in rig; ``binding`` its markers for the marker view). Returns frames, seconds of
+    video and frames rendered per second.
     """
     import imageio_ffmpeg
 
     if audios and len(anims) != len(audios):
         raise UsageError(f"give one --audio per animation ({len(anims)} animations, {len(audios)} audio files), "
                          f"or none for a silent video.")
-    if settings.view == "side-by-side" and compare is None:
+    compare = list(compare or [])
+    if settings.view == "side-by-side" and not compare:
         raise UsageError("the side-by-side view needs --compare ANIM (e.g. the ground truth deformed onto the same mesh).")
+    if len(compare) not in (0, 1, len(anims)):
+        raise UsageError(f"give one --compare for all animations or one per animation ({len(anims)} animations, "
+                         f"{len(compare)} --compare).")
     if out.suffix.lower() != ".avi":
         raise InputError(f"{out}: the output must be an .avi file.")
     if settings.width % 16 or settings.height % 16:
         raise InputError(f"render size {settings.width}x{settings.height}: width and height must be multiples of 16.")
     started = time.perf_counter()
-    clips = [MeshAnimation.read(p) for p in anims]
-    other = MeshAnimation.read(compare) if compare else None
-    for path, c in zip(anims, clips):
+    reader = AnimationReader(rig_path, binding, settings.head_motion)
+    clips = [reader.read(p) for p in anims]
+    others = [reader.read(p) for p in compare] if settings.view == "side-by-side" else []
+    if len(others) == 1:
+        others = others * len(clips)
+    for path, c in zip(anims + compare, clips + others):
         if abs(c.fps - settings.fps) > 1e-6:
             raise InputError(f"{path}: animation is at {c.fps:g} fps but render.fps is {settings.fps:g}; set one to the other.")
     rate = 48000
@@ -185,7 +224,7 @@ def render_video(anims: list[Path], audios: list[Path], out: Path, settings: Ren
         cleanup.callback(writer.close)  # on an error ffmpeg is stopped before its audio is removed
         writer.send(None)
         notes: list[str] = []
-        frames = (f for c in clips for f in render_frames(c, settings, other, notes))
+        frames = (f for i, c in enumerate(clips) for f in render_frames(c, settings, others[i] if others else None, notes))
         for frame in progress(frames, "render", length=n_frames):
             writer.send(np.ascontiguousarray(frame))
         writer.close()

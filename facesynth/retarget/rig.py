@@ -22,6 +22,8 @@ from ..errors import InputError
 from ..facerig import BUILTIN_RIG_NAME, Rig, load_face_rig
 from ..formats.gltf import read_morph_mesh
 from ..formats.mesh import read_binding, read_mesh
+from ..model.curves import RigCurves
+from ..model.meshanim import MeshAnimation
 from ..motion.rigid import similarity_fit
 
 #: The ``--rig`` value naming the built-in rig.
@@ -37,12 +39,63 @@ def builtin_rig(binding: dict | None = None) -> Rig:
     return dataclasses.replace(rig, binding=build_marker_set(rig).binding() if binding is None else binding)
 
 
-def load_rig(path: Path | None, binding: Path | None) -> Rig:
+def load_rig(path: Path | None, binding: Path | None, need_binding: bool = True) -> Rig:
     """The built-in rig when ``path`` is None or ``builtin`` (with its own binding, or ``binding``:
-    a user's markers placed on it), else :func:`read_rig`."""
+    a user's markers placed on it), else :func:`read_rig` (``need_binding`` False: a user's rig
+    without ``binding`` is read unbound, for posing it with curves)."""
     if path is None or str(path) == BUILTIN:
         return builtin_rig(read_binding(Path(binding)) if binding is not None else None)
-    return read_rig(Path(path), binding)
+    return read_rig(Path(path), binding, need_binding)
+
+
+def pose_rig(curves: RigCurves, rig: Rig, where: str, head_motion: bool = False) -> MeshAnimation:
+    """The rig posed by ``curves`` as a mesh animation: vertices (T, V, 3) float32
+    ``neutral + sum_e w_e deltas_e`` in the rig's frame and units; with ``head_motion`` each
+    frame also moved by the head pose the curves carry (``x -> R @ x + t``, in the rig's frame,
+    as the exports and the player apply it). The markers are the rig's bound vertices; the gaze
+    comes from the rig's ``eyeLook*`` shapes (unknown, NaN, without them). ``where`` names the
+    curves in errors: curves made for another rig, or with other shape names, are refused."""
+    from scipy import sparse
+
+    from ..rendering.parts import gaze_from_rig_weights
+
+    if curves.rig_sha256 != rig.sha256:
+        raise InputError(f"{where}: the curves were made for rig {curves.rig_name!r}, not {rig.name!r}; "
+                         f"give that rig with --rig.")
+    if list(curves.shape_names) != list(rig.shape_names):
+        raise InputError(f"{where}: its shape names differ from rig {rig.name!r}'s; remake the curves on this rig.")
+    vertices = rig.evaluate(curves.weights).astype(np.float32)
+    if head_motion and curves.head_rotation is not None and curves.head_translation is not None:
+        r = np.asarray(curves.head_rotation, np.float32)
+        t = np.asarray(curves.head_translation, np.float32)
+        vertices = np.einsum("tij,tvj->tvi", r, vertices) + t[:, None, :]
+    names = list(rig.binding)
+    verts = np.array([rig.binding[n] for n in names], np.int64)
+    gaze = gaze_from_rig_weights(curves.weights, rig.shape_names)
+    if gaze is None:
+        gaze = np.full((len(vertices), 2, 2), np.nan)
+    empty = sparse.csr_matrix((len(rig.neutral), len(names)), dtype=np.float32)
+    return MeshAnimation(vertices, curves.fps, rig.neutral.astype(np.float32), rig.faces, vertices[:, verts], names,
+                         empty, names, verts, 0.0, gaze.astype(np.float32))
+
+
+def arkit_to_rig(rig: Rig, where: str) -> tuple[tuple[str, ...], np.ndarray]:
+    """(the 52 ARKit names, the (52, E) matrix taking ARKit weights to ``rig``'s weights): the
+    built-in rig's own table, or for a user's rig each ARKit shape onto the rig shape of the
+    same name (case aside; ARKit channels it lacks drive nothing). ``where`` names the rig in
+    the error for a rig none of whose shapes has an ARKit name."""
+    if rig.arkit_to_rig is not None:
+        return rig.arkit_names, rig.arkit_to_rig
+    names = load_face_rig().arkit_names
+    index = {n.lower(): e for e, n in enumerate(rig.shape_names)}
+    matrix = np.zeros((len(names), len(rig.shape_names)))
+    for a, name in enumerate(names):
+        if name.lower() in index:
+            matrix[a, index[name.lower()]] = 1.0
+    if not matrix.any():
+        raise InputError(f"{where}: none of the shapes of rig {rig.name!r} has an ARKit name (jawOpen, mouthClose, "
+                         f"eyeBlinkLeft, ...); name its blendshapes as ARKit does to drive it with ARKit curves.")
+    return names, matrix
 
 
 #: The shape whose displacement tells which vertices the jaw carries (ARKit's name, ICT's too).
@@ -74,13 +127,14 @@ def _read_rig_files(path: Path, what: str):
     raise InputError(f"{path}: unsupported rig {path.suffix!r}; give a folder of OBJ files or a .gltf/.glb file.")
 
 
-def read_rig(path: Path, binding_path: Path | None) -> Rig:
-    """A user's rig: an OBJ folder or a glTF file, with its marker binding CSV."""
+def read_rig(path: Path, binding_path: Path | None, need_binding: bool = True) -> Rig:
+    """A user's rig: an OBJ folder or a glTF file, with its marker binding CSV (``need_binding``
+    False: optional, the rig unbound without it)."""
     path = Path(path)
-    if path.exists() and binding_path is None:
+    if path.exists() and binding_path is None and need_binding:
         raise InputError(f"{path}: a user's rig needs --binding, a CSV of marker,vertex placing the motion's markers on it.")
     name, digest, neutral, faces, names, deltas = _read_rig_files(path, "a folder of OBJ files or a .gltf/.glb file")
-    binding = read_binding(Path(binding_path))
+    binding = read_binding(Path(binding_path)) if binding_path is not None else {}
     return Rig(name, digest, neutral, faces, tuple(names), deltas, binding)
 
 

@@ -1,10 +1,12 @@
-"""``facesynth render``: mesh animations -> AVI with the audio muxed in.
+"""``facesynth render``: mesh animations or rig curves -> AVI with the audio muxed in.
 
 The views (``shaded``, ``markers``, ``side-by-side``), the camera, the audio fitted to each clip
 and the video writing are :mod:`facesynth.rendering.video` (shared with ``facesynth batch``); the
 left half of ``side-by-side`` is labelled "synthesis", the right half, ``--compare``, "capture",
-or as ``render.labels`` says. Marker motion does not record gaze, so ``deform`` leaves it unknown
-and the eyes look ahead.
+or as ``render.labels`` says. Rig curves (``solve``, ``retarget``, ``openfacefx``) pose their rig
+in memory (the built-in rig, or ``--rig``), with the gaze of the rig's ``eyeLook*`` shapes and the
+head motion they carry (``render.head_motion``). Marker motion does not record gaze, so ``deform``
+leaves it unknown and the eyes of its mesh animation look ahead.
 """
 
 from __future__ import annotations
@@ -32,7 +34,9 @@ class RenderResult:
     notes: list[str]
 
 
-def run(anims: list[Path], audios: list[Path], out: Path, settings: RenderSettings, compare: Path | None = None,
-        overwrite: bool = False) -> RenderResult:
-    """Render the animations one after another, each with its audio (none: silence), into the AVI ``out``."""
-    return RenderResult(**render_video(anims, audios, out, settings, compare, overwrite))
+def run(anims: list[Path], audios: list[Path], out: Path, settings: RenderSettings, compare: list[Path] | None = None,
+        overwrite: bool = False, rig_path: Path | None = None, binding: Path | None = None) -> RenderResult:
+    """Render the animations (mesh animations or rig curves) one after another, each with its audio
+    (none: silence), into the AVI ``out``; ``compare``: one animation beside all, or one per animation
+    (side-by-side view); curves pose ``rig_path`` (None: the built-in rig)."""
+    return RenderResult(**render_video(anims, audios, out, settings, compare, overwrite, rig_path, binding))

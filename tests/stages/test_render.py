@@ -229,7 +229,7 @@ def test_marker_and_side_by_side_views(anim, tmp_path):
         return Config.load(None, ("render.width=320", "render.height=240", f"render.view={name}")).settings("render")
 
     render.run([anim[0]], [anim[1]], tmp_path / "m.avi", view("markers"))
-    render.run([anim[0]], [anim[1]], tmp_path / "s.avi", view("side-by-side"), compare=anim[0])
+    render.run([anim[0]], [anim[1]], tmp_path / "s.avi", view("side-by-side"), compare=[anim[0]])
     assert imageio_ffmpeg.count_frames_and_secs(str(tmp_path / "s.avi"))[0] > 0
     with pytest.raises(UsageError, match="side-by-side view needs --compare"):
         render.run([anim[0]], [anim[1]], tmp_path / "t.avi", view("side-by-side"))
