@@ -13,7 +13,7 @@ from facesynth.cli import main
 from facesynth.errors import InputError
 from facesynth.model.motion import Motion
 from facesynth.model.trajectory import TrajectoryModel
-from facesynth.motion.trajectory import (
+from facesynth.methods.trajectory import (
     dense_system,
     duration_weights,
     effective_lambda,
@@ -160,7 +160,7 @@ def test_an_unseen_phone_falls_back_to_its_viseme_class_with_a_warning(model, ca
     group = next(g for g in VISEME_GROUPS if any(p in have for p in g) and any(p not in have for p in g))
     unseen = next(p for p in group if p not in have)
     phones = ["pau", spoken[0], unseen, "pau"]
-    with caplog.at_level(logging.WARNING, logger="facesynth.motion.trajectory"):
+    with caplog.at_level(logging.WARNING, logger="facesynth.methods.trajectory"):
         t = frame_targets(model, phones, ["neutral"] * 4, np.array([0, 0.2, 0.4, 0.6]), np.array([0.2, 0.4, 0.6, 0.8]),
                           120.0)
     assert unseen in t.fallbacks and f"/{unseen}/" in caplog.text

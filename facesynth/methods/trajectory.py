@@ -42,7 +42,7 @@ import numpy as np
 
 from ..errors import InputError
 from ..phonemes import PAU, VISEME_GROUPS, viseme
-from .postprocess import frame_ranges
+from ..motion.postprocess import frame_ranges
 
 log = logging.getLogger(__name__)
 
@@ -383,7 +383,7 @@ def synthesize_motion(model, utt, settings, output_fps: float, where: str = "the
     -1 (no source frame), ``smoothed`` False. The head does not move (identity rotation, zero
     translation): the model has no head motion. Returns (Motion, Path)."""
     from ..model.motion import Motion, Provenance, SearchPath
-    from .postprocess import downsample
+    from ..motion.postprocess import downsample
 
     path = synthesize_path(model, list(utt.phones), list(utt.emotions), utt.starts, utt.ends,
                            smoothness=settings.smoothness, smoothness_fps=settings.smoothness_fps, fps=settings.fps,
