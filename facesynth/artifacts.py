@@ -49,6 +49,7 @@ SCHEMAS: dict[str, int] = {
     "curves": 1,
     "keyshapes": 1,
     "trajectory": 1,
+    "coarticulation": 1,
 }
 
 #: Which stage makes each kind (used in messages that say what to do).
@@ -65,6 +66,7 @@ PRODUCERS: dict[str, str] = {
     "curves": "facesynth solve",
     "keyshapes": "facesynth keyshapes",
     "trajectory": "facesynth train-trajectory",
+    "coarticulation": "facesynth fit-method coarticulation",
 }
 
 STR = h5py.string_dtype("utf-8")

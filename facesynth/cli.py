@@ -19,8 +19,12 @@ import click
 from . import __version__, limits
 from .config import SAMPLE_CORPUS_PRESETS, Config, choices, parse_override
 from .errors import FacesynthError, OverrideError, UsageError
+from .methods import MEMBERS as METHOD_MEMBERS
 
 PATH = click.Path(path_type=Path)
+#: The members of the method family (facesynth.methods), and those fitted into a model artifact.
+METHOD_NAMES = tuple(METHOD_MEMBERS)
+FITTED_METHOD_NAMES = ("trajectory", "coarticulation")
 EXISTING = click.Path(path_type=Path, dir_okay=False)
 
 
@@ -41,7 +45,7 @@ class PipelineGroup(click.Group):
     order of the README and docs/pipeline.md), then any others alphabetically."""
 
     order = ("sample-corpus", "align", "ingest", "normalize", "pca", "build-db", "db", "check", "prune", "isomap",
-             "synthesize", "suggest", "expression", "head-motion", "deform", "keyshapes", "train-trajectory", "bind",
+             "synthesize", "suggest", "expression", "head-motion", "deform", "keyshapes", "train-trajectory", "fit-method", "bind",
              "solve", "retarget", "rig-mesh", "render", "export", "player", "stream", "batch", "capture", "evaluate", "tune",
              "devices")
 
@@ -107,18 +111,19 @@ READS: dict[str, tuple[str, ...]] = {
     "normalize": ("normalize",),
     "pca": ("pca",),
     "build-db": ("build_db",),
-    "synthesize": ("synthesize", "ingest", "align", "trajectory"),
+    "synthesize": ("synthesize", "ingest", "align", "trajectory", "coarticulation"),
     "suggest": ("synthesize", "ingest"),
     "deform": ("deform",),
     "keyshapes": ("keyshapes",),
     "train-trajectory": ("trajectory",),
+    "fit-method": ("synthesize", "trajectory", "coarticulation"),
     "solve": ("solve",),
     "bind": ("bind", "normalize"),
     "retarget": ("retarget", "keyshapes"),
     "rig-mesh": (),
     "render": ("render",),
-    "batch": ("batch", "synthesize", "ingest", "align", "deform", "render"),
-    "evaluate": ("evaluate", "synthesize", "normalize", "trajectory"),
+    "batch": ("batch", "synthesize", "ingest", "align", "deform", "render", "trajectory", "coarticulation"),
+    "evaluate": ("evaluate", "synthesize", "normalize", "trajectory", "coarticulation"),
     "capture": ("normalize", "synthesize"),
     "tune": ("tune", "synthesize", "build_db", "normalize"),
     "isomap build": ("isomap",),
@@ -461,15 +466,16 @@ def build_db(ctx: Context, pca_path: Path, output: Path):
 
 @main.command()
 @click.argument("db", metavar="DB|MODEL", type=EXISTING)
-@click.option("--method", type=click.Choice(("dp", "trajectory")), default="dp", show_default=True,
-              help="dp: search the motion database (DB); trajectory: the compact key-shape model (MODEL, from "
-                   "facesynth train-trajectory; Huang et al. Eq. 6-7).")
+@click.option("--method", type=click.Choice(METHOD_NAMES), default=None,
+              help="The synthesis method (default: dp, or --search): dp and greedy search the motion database (DB), "
+                   "mean takes its per-(phone, emotion) mean poses; trajectory and coarticulation read a MODEL "
+                   "fitted on it (facesynth fit-method).")
 @click.option("--phonemes", type=EXISTING, default=None, help="The utterance's phone timing (TextGrid or .lab).")
 @click.option("--audio", type=EXISTING, default=None,
               help="Speech to align on the fly (to --text; without it, recognised: align.recognition).")
 @click.option("--text", default=None, help="What --audio says.")
 @click.option("--emotions", type=EXISTING, default=None, help="Emotion spans: 'start_s end_s emotion' lines, or a TextGrid tier 'emotions'.")
-@click.option("--constraints", type=EXISTING, default=None, help="Motion-node constraints: 'INDEX NODE' or 'TIMEs NODE' lines.")
+@click.option("--constraints", type=EXISTING, default=None, help="Motion-node constraints: 'INDEX NODE' or 'TIMEs NODE' lines (dp only).")
 @click.option("--search", type=click.Choice(choices("synthesize", "search")), default=None, help="Search (default: synthesize.search).")
 @click.option("--head-motion", "head_motion_path", type=EXISTING, default=None,
               help="Head motion from `facesynth head-motion` to put on the output instead of the source takes'.")
@@ -479,9 +485,10 @@ def synthesize(ctx: Context, db: Path, method, phonemes, audio, text, emotions, 
                output: Path):
     """Synthesize expressive marker motion for a new utterance (paper VI, Algorithm 1).
 
-    With --method trajectory the first argument is a trajectory model (facesynth
-    train-trajectory) and the motion is the smooth path of Huang et al. Eq. 6-7 through the
-    phones' Gaussians, back-projected from key-shape weights to markers.
+    --method picks the member of the method family: dp (the default; --search greedy or
+    synthesize.search = greedy runs the greedy search instead), greedy, mean, and the fitted
+    trajectory (Huang et al. Eq. 6-7) and coarticulation (Cohen-Massaro) models, whose model file
+    (facesynth fit-method) is then the first argument.
 
     \b
     Example:
@@ -491,42 +498,48 @@ def synthesize(ctx: Context, db: Path, method, phonemes, audio, text, emotions, 
     """
     import dataclasses
 
+    from .methods import MethodSettings
     from .stages import synthesize as stage
 
-    if method == "trajectory":
-        if constraints is not None:
-            raise UsageError("--constraints pick motion nodes, and the trajectory method has none; drop --constraints "
-                             "or use --method dp.")
-        if search is not None:
-            raise UsageError("--search chooses how the motion database is searched; the trajectory method does not "
-                             "search; drop --search or use --method dp.")
-        s = stage.run_trajectory(db, output, ctx.config.settings("trajectory"),
-                                 ctx.config.settings("synthesize").output_fps, ctx.config.settings("ingest"),
-                                 ctx.config.settings("align"), phones_path=phonemes, emotions_path=emotions, audio=audio,
-                                 text=text, head_motion_path=head_motion_path, overwrite=ctx.overwrite)
-        for phone, group in s["fallbacks"].items():
-            ctx.say(f"warning: the trajectory model has no Gaussian of /{phone}/; it uses the pooled Gaussian of its "
-                    f"viseme class ({group}).")
-        ctx.detail(f"phases: read model {s['load_s']:.4f} s, solve and back-projection {s['solve_s']:.4f} s, "
-                   f"write {s['write_s']:.3f} s; lambda {s['lambda']:g} per frame")
-        ctx.say(f"synthesized {s['phones']} phones, {s['frames']} frames by the trajectory method, "
-                f"Eq. 6 energy {s['energy']:.2f} -> {output}")
-        return
-
-    settings = ctx.config.settings("synthesize")
+    settings = MethodSettings.of(ctx.config)
+    name = chosen_method(method, search, settings.synthesize.search)
     if search:
-        settings = dataclasses.replace(settings, search=search)
-    s = stage.run(db, output, settings, ctx.config.settings("ingest"), ctx.config.settings("align"),
+        settings = dataclasses.replace(settings, synthesize=dataclasses.replace(settings.synthesize, search=search))
+    s = stage.run(db, output, settings, ctx.config.settings("ingest"), ctx.config.settings("align"), method=name,
                   phones_path=phonemes, emotions_path=emotions, constraints_path=constraints, audio=audio, text=text,
                   head_motion_path=head_motion_path, overwrite=ctx.overwrite)
-    for phone, how in s["unseen"].items():
-        ctx.say(f"warning: the database has no node of /{phone}/; it will be covered by {how}.")
-    phases = [("read database", "load_s"), ("device choice", "device_choice_s"), ("transition costs", "transition_s"), ("step costs", "steps_s"),
+    on_database = name in ("dp", "greedy", "mean")
+    for phone, how in s.get("unseen", {}).items():
+        ctx.say(f"warning: the {'database has no node of' if on_database else 'model has no'} /{phone}/; "
+                f"it will be covered by {how}.")
+    for phone, group in s.get("fallbacks", {}).items():
+        ctx.say(f"warning: the trajectory model has no Gaussian of /{phone}/; it uses the pooled Gaussian of its "
+                f"viseme class ({group}).")
+    phases = [("read database" if on_database else "read model", "load_s"), ("device choice", "device_choice_s"), ("transition costs", "transition_s"), ("step costs", "steps_s"),
               ("OpenCL set-up", "opencl_setup_s"), ("search", "search_s"), ("post-processing", "postprocess_s"),
               ("input hashes", "hash_wait_s"), ("write", "write_s")]
-    ctx.detail("phases: " + ", ".join(f"{name} {s[key]:.3f} s" for name, key in phases if key in s) + f"; search on {s['device']}")
-    ctx.say(f"synthesized {s['phones']} phones, {s['frames']} frames, cost {s['cost']:.2f}, "
-            f"{s['joins']} non-captured joins -> {output}")
+    ctx.detail("phases: " + ", ".join(f"{label} {s[key]:.3f} s" for label, key in phases if key in s)
+               + (f"; search on {s['device']}" if "device" in s else ""))
+    if "cost" in s:
+        ctx.say(f"synthesized {s['phones']} phones, {s['frames']} frames, cost {s['cost']:.2f}, "
+                f"{s['joins']} non-captured joins -> {output}")
+    elif "energy" in s:
+        ctx.detail(f"lambda {s['lambda']:g} per frame")
+        ctx.say(f"synthesized {s['phones']} phones, {s['frames']} frames by the trajectory method, "
+                f"Eq. 6 energy {s['energy']:.2f} -> {output}")
+    else:
+        ctx.say(f"synthesized {s['phones']} phones, {s['frames']} frames by the {name} method -> {output}")
+
+
+def chosen_method(method: str | None, search: str | None, configured_search: str) -> str:
+    """The member ``synthesize`` (and ``batch``) run: ``--method``, where ``dp`` (and no
+    ``--method``) follows ``--search`` or ``synthesize.search`` as before the family existed."""
+    if method in (None, "dp"):
+        return search or configured_search
+    if search is not None:
+        raise click.UsageError(f"--search chooses how the motion database is searched; the {method} method does not "
+                               "take it: drop --search or use --method dp.")
+    return method
 
 
 @main.command()
@@ -651,6 +664,37 @@ def train_trajectory(ctx: Context, db: Path, keyshapes_path: Path, output: Path)
     ctx.detail(f"{s['samples']} training frames, weights and Gaussians in {s['train_s']:.2f} s")
     ctx.say(f"trajectory model: {s['phones']} phones and {s['pairs']} (phone, emotion) Gaussians over {s['keyshapes']} "
             f"key-shapes (fit RMS {s['fit_rms_mm']:.2f} mm per marker), {s['bytes']} bytes -> {output}")
+
+
+@main.command("fit-method")
+@click.argument("method", type=click.Choice(FITTED_METHOD_NAMES))
+@click.argument("db", type=EXISTING)
+@click.option("--keyshapes", "keyshapes_path", type=EXISTING, default=None,
+              help="Key-shapes (facesynth keyshapes): the trajectory method's weights are over them.")
+@click.option("-o", "--output", type=PATH, required=True, help="Output model .h5.")
+@stage
+def fit_method(ctx: Context, method: str, db: Path, keyshapes_path: Path | None, output: Path):
+    """Fit a synthesis method on the database's training takes and write its model.
+
+    coarticulation: a Cohen-Massaro model per (phone, emotion) (coarticulation.iterations);
+    trajectory: Huang et al.'s Gaussians of key-shape weights (needs --keyshapes; the same as
+    facesynth train-trajectory). `facesynth synthesize --method METHOD MODEL` then needs the model
+    file alone. dp, greedy and mean read the database itself and have nothing to fit.
+
+    \b
+    Example:
+      facesynth fit-method coarticulation db.h5 -o coart.h5
+      facesynth synthesize --method coarticulation coart.h5 --phonemes corpus/labels/sad_s017.TextGrid -o coart_motion.h5
+    """
+    from .methods import MethodSettings
+    from .stages import fit_method as stage
+
+    s = stage.run(method, db, output, MethodSettings.of(ctx.config), keyshapes_path=keyshapes_path,
+                  overwrite=ctx.overwrite)
+    ctx.detail(f"fitted in {s['fit_s']:.2f} s")
+    what = (f"{s['phones']} phones and {s['pairs']} (phone, emotion) Gaussians over {s['keyshapes']} key-shapes"
+            if method == "trajectory" else f"{s['labels']} (phone, emotion) types")
+    ctx.say(f"{method} model: {what} (fit RMS {s['fit_rms_mm']:.2f} mm per marker), {s['bytes']} bytes -> {output}")
 
 
 @main.command()
@@ -983,11 +1027,14 @@ def evaluate(ctx: Context, db: Path, heldout: Path, truth: Path | None, trajecto
     s = stage.run(db, heldout, output, ctx.config.settings("evaluate"), ctx.config.settings("synthesize"),
                   ctx.config.settings("normalize"), ctx.overwrite, truth=truth, trajectory=trajectory,
                   trajectory_settings=ctx.config.settings("trajectory"))
+    recommendation = s.pop("recommendation", "")
     for method, m in s.items():
         f = m.get("figures", {})
         clean = f" (clean truth {f['rms_clean_mm']['value']:.3f} mm)" if f.get("rms_clean_mm", {}).get("value") is not None else ""
         ctx.say(f"{method}: RMS {m['rms_mm']:.3f} mm{clean}, velocity RMS {m['velocity_rms_mm_s']:.1f} mm/s")
     ctx.say(f"report -> {output}/index.html, table -> {output}/table.md")
+    if recommendation:
+        ctx.say(recommendation)
 
 
 @main.command()

@@ -62,6 +62,7 @@ SYMBOLS: dict[str, str] = {
     "Kt": "key-shapes of a trajectory model (every emotion's, joined)",
     "Ph": "phones with a Gaussian in a trajectory model",
     "Pe": "(phone, emotion) pairs with a Gaussian of their own in a trajectory model",
+    "Pc": "phone types of a coarticulation model (`phone|emotion` labels, `pau`)",
 }
 
 #: The largest magnitude of any float in an artifact where numbers must be finite (mm, s, costs,
@@ -547,6 +548,24 @@ TRAJECTORY = Kind("trajectory", SCHEMAS["trajectory"], (
           Attr("fit_rms", "float", "RMS per marker (mm) of the training frames' reconstruction from the weights", ge=0),
           Attr("covariance", "str", "the covariance's form", choices=("diagonal",))))
 
+COARTICULATION = Kind("coarticulation", SCHEMAS["coarticulation"], (
+    "The fitted Cohen-Massaro coarticulation model (Cohen & Massaro 1993, exponent 1): per phone type (a "
+    "`phone|emotion` label; `pau` one type) a target pose in the PCA coefficients of the database it was "
+    "fitted on, a dominance magnitude and a rate; with that PCA model and the rest pose, so that "
+    "`facesynth synthesize --method coarticulation` needs this file alone. The pose at time t is "
+    "`sum_i D_i(t) targets[i] / sum_i D_i(t)` over the utterance's tokens i, with "
+    "`D_i(t) = magnitude * exp(-rate * |t - centre_i|)`, reconstructed through the PCA model (Eq. 11)."), (
+    PCA_MODEL,
+    Dataset("labels", "str", ("Pc",), "phone types (`aa|happy`, `pau`)"),
+    Dataset("targets", "float64", ("Pc", "K"), "target pose of each type, PCA coefficients"),
+    Dataset("magnitude", "float64", ("Pc",), "dominance magnitude alpha", ge=0),
+    Dataset("rate", "float64", ("Pc",), "dominance rate theta", "1/s", (_units("1/s"),), ge=0),
+    Dataset("marker_names", "str", ("M",), "marker order"),
+    Dataset("reference", "float32", ("M", 3), "rest pose, head frame", "mm", (MM,)),
+), attrs=(_fps("capture rate of the training frames, frames/s"),
+          Attr("iterations", "int", "L-BFGS-B iterations allowed to the fit", ge=1),
+          Attr("fit_rms", "float", "RMS per marker (mm) of the fit on the training frames", ge=0)))
+
 #: Every kind's specification at its current schema.
 EXPRESSION = Kind("expression", SCHEMAS["expression"], (
     "A bilinear style/content model of marker frames (Chuang & Bregler 2005, §3, Eq. 4): "
@@ -584,7 +603,8 @@ HEADMOTION = Kind("headmotion", SCHEMAS["headmotion"], (
 ))
 
 KINDS: dict[str, Kind] = {k.name: k for k in (CORPUS, NORMALIZED, PCA, MOTIONDB, ISOMAP, MOTION, MESHANIM, EXPRESSION,
-                                              HEADMOTION, CURVES, KEYSHAPES, TRAJECTORY)}
+                                              HEADMOTION, CURVES, KEYSHAPES, TRAJECTORY,
+                                              COARTICULATION)}
 
 BLOCKS: tuple[Block, ...] = (TABLES, HEAD_FRAMES, PCA_MODEL)
 

@@ -101,7 +101,7 @@ class TrajectoryModel:
                        read(f, "samples"), read_strings(f, "pair_phone"), read_strings(f, "pair_emotion"),
                        read(f, "pair_means"), read(f, "pair_variances"), read(f, "pair_tokens"),
                        read(f, "pair_samples"), float(attr(f, "fps")), sampling, int(attr(f, "min_tokens")),
-                       float(attr(f, "variance_floor")), float(attr(f, "fit_rms")), _records(f))
+                       float(attr(f, "variance_floor")), float(attr(f, "fit_rms")), stored_records(f))
 
     def write(self, out: Path, *, config: str, inputs, overwrite: bool = False) -> None:
         """Write a ``trajectory`` artifact to ``out``."""
@@ -128,7 +128,7 @@ class TrajectoryModel:
             g.create_dataset("pair_samples", data=np.asarray(self.pair_samples, np.int64))
 
 
-def _records(f) -> list[dict]:
+def stored_records(f) -> list[dict]:
     """The ``inputs`` records of an open artifact; [] when they cannot be parsed."""
     try:
         records = json.loads(str(attr(f, "inputs")))

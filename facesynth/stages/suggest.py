@@ -23,14 +23,15 @@ from pathlib import Path
 
 import numpy as np
 
+from .. import methods
 from ..config import IngestSettings, SynthesizeSettings
 from ..errors import InputError
+from ..methods import core
 from ..model.motiondb import MotionDatabase
 from ..opencl import use_opencl
 from ..phonemes import PAU
 from ..search.costs import step_costs
 from ..search.pruned import backward_pruned, dp_pruned
-from ..search.synthesis import prepare
 
 HEADER = "rank\tnode\temotion\ttake\tcontext\tcontext_correct\ttime_correct_take_frame\tcost\textra_cost"
 
@@ -81,7 +82,8 @@ def suggest(db_path: Path, phones_path: Path, at_s: float, settings: SynthesizeS
     has context-correct nodes (index, phone, context, mid time in s).
     """
     db = MotionDatabase.read(db_path)
-    utt, constraints = prepare(db, phones_path, emotions_path, constraints_path, ingest_settings)
+    utt = core.read_utterance(ingest_settings, phones_path=phones_path, emotions_path=emotions_path).utterance
+    constraints = core.constraints_for(methods.get("dp"), db, constraints_path, utt)
     c = utt.index_at(at_s)
     if c is None:
         raise InputError(f"{phones_path}: {at_s:.3f} s is outside the utterance (0 to {utt.ends[-1]:.3f} s).")

@@ -11,8 +11,7 @@ from click.testing import CliRunner
 
 from facesynth.cli import main
 from facesynth.errors import InputError
-from facesynth.model.motion import Motion
-from facesynth.model.trajectory import TrajectoryModel
+from facesynth.methods import MethodSettings
 from facesynth.methods.trajectory import (
     dense_system,
     duration_weights,
@@ -22,6 +21,8 @@ from facesynth.methods.trajectory import (
     solve,
     synthesize_path,
 )
+from facesynth.model.motion import Motion
+from facesynth.model.trajectory import TrajectoryModel
 from facesynth.search.inputs import read_utterance
 from facesynth.stages import keyshapes, synthesize, train_trajectory
 
@@ -116,8 +117,8 @@ def test_a_larger_lambda_gives_a_smoother_path(model, tiny_corpus, held_out_take
 
 
 def _synth(model_path, tg, out, config, **kw):
-    return synthesize.run_trajectory(model_path, out, config.settings("trajectory"), 30.0, config.settings("ingest"),
-                                     config.settings("align"), phones_path=tg, **kw)
+    return synthesize.run(model_path, out, MethodSettings.of(config), config.settings("ingest"),
+                          config.settings("align"), method="trajectory", phones_path=tg, **kw)
 
 
 def test_synthesis_writes_a_motion_that_deform_reads_and_is_deterministic(model_path, tiny_corpus, held_out_take, config,
@@ -201,7 +202,7 @@ def test_bad_input_exits_1_with_one_sentence_and_writes_nothing(model_path, tiny
     (tmp_path / "c.txt").write_text("1 3\n")
     r = runner.invoke(main, ["synthesize", "--method", "trajectory", str(model_path), "--phonemes", str(tg),
                              "--constraints", str(tmp_path / "c.txt"), "-o", str(out)])
-    assert r.exit_code == 2 and "the trajectory method has none" in r.output and not out.exists()
+    assert r.exit_code == 2 and "the trajectory method takes none" in r.output and not out.exists()
     # the database where a model is expected, and the reverse
     r = runner.invoke(main, ["synthesize", str(model_path), "--phonemes", str(tg), "-o", str(out)])
     assert r.exit_code == 1 and "motiondb" in r.output and not out.exists()
