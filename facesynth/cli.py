@@ -941,7 +941,10 @@ def player(ctx: Context, artifact: Path | None, audio: Path | None, motion: Path
 
 @main.command()
 @click.argument("script", type=EXISTING)
-@click.option("--db", "db_path", type=EXISTING, required=True, help="The motion database (db.h5).")
+@click.option("--db", "db_path", type=EXISTING, required=True,
+              help="The motion database (db.h5), or for --method trajectory / coarticulation its fitted model.")
+@click.option("--method", type=click.Choice(METHOD_NAMES), default=None,
+              help="The synthesis method of every line (default: dp, following synthesize.search), as for synthesize.")
 @click.option("-o", "--output", type=PATH, required=True, help="Output folder (per-line files and the summary).")
 @click.option("--outputs", default=None, metavar="KINDS",
               help="Comma-separated: motion, anim, avi (default: batch.outputs).")
@@ -951,8 +954,8 @@ def player(ctx: Context, artifact: Path | None, audio: Path | None, motion: Path
 @click.option("--workers", type=click.IntRange(min=1), default=None,
               help="Local worker processes (default: batch.workers, 0 = one per core).")
 @stage
-def batch(ctx: Context, script: Path, db_path: Path, output: Path, outputs: str | None, mesh, binding,
-          scheduler: str | None, workers: int | None):
+def batch(ctx: Context, script: Path, db_path: Path, method: str | None, output: Path, outputs: str | None, mesh,
+          binding, scheduler: str | None, workers: int | None):
     """Synthesize every line of a dialogue script on Dask, with a summary of what failed.
 
     SCRIPT is a CSV with columns id, audio, text (or alignment: a TextGrid or .lab), and
@@ -990,9 +993,13 @@ def batch(ctx: Context, script: Path, db_path: Path, output: Path, outputs: str 
         else:
             ctx.detail(f"{r.id}: {r.status} ({r.method}, {r.phones} phones, {r.total_s:.2f} s)")
 
-    s = stage.run(script, db_path, output, settings, ctx.config.settings("synthesize"), ctx.config.settings("ingest"),
+    from .methods import MethodSettings
+
+    method_settings = MethodSettings.of(ctx.config)
+    s = stage.run(script, db_path, output, settings, method_settings, ctx.config.settings("ingest"),
                   ctx.config.settings("align"), ctx.config.settings("deform"), ctx.config.settings("render"),
-                  mesh=mesh, binding=binding, scheduler=scheduler, overwrite=ctx.overwrite, on_result=on_result)
+                  method=chosen_method(method, None, method_settings.synthesize.search), mesh=mesh, binding=binding,
+                  scheduler=scheduler, overwrite=ctx.overwrite, on_result=on_result)
     skipped = f", {s['skipped']} up to date" if s["skipped"] else ""
     ctx.say(f"{s['ok']} of {s['lines']} lines done{skipped}, {s['failed']} failed in {s['seconds']:.1f} s; "
             f"summary: {s['html']}")

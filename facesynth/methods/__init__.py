@@ -113,6 +113,10 @@ class Method(ABC):
         """Bytes the synthesis of ``utt`` needs beyond the source (checked before the work)."""
         return 0.0
 
+    def recorded_settings(self, settings: MethodSettings):
+        """The settings section a motion made by this method records as its ``config``."""
+        return settings.synthesize
+
     def memory_what(self, source, utt) -> str:
         """The work :meth:`memory_estimate` sizes, as the memory check's message names it."""
         return f"the {self.name} method for {len(utt)} phones"

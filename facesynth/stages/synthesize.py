@@ -73,8 +73,8 @@ def run(source_path: Path, out: Path, settings: SynthesizeSettings | MethodSetti
     motion = result.motion
     if head is not None:
         motion.head_rotation, motion.head_translation = head.at(np.arange(len(motion.markers)) / motion.fps)
-    config = settings.trajectory if member.name == "trajectory" else settings.synthesize
-    motion.write(out, config=settings_json(config), records=input_records, overwrite=overwrite)
+    motion.write(out, config=settings_json(member.recorded_settings(settings)), records=input_records,
+                 overwrite=overwrite)
     write_s = time.perf_counter() - t0
     return {"method": member.name, **result.summary, "load_s": load_s, "hash_wait_s": hash_wait_s, "write_s": write_s,
             "warnings": read.warnings}
