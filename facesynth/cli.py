@@ -1070,9 +1070,11 @@ def capture(ctx: Context, corpus: Path, db_path: Path, take: str, output: Path):
 @main.command()
 @click.argument("db", type=EXISTING)
 @click.option("--validation", type=EXISTING, required=True, help="The corpus.h5 with val (tuning) and test (report) takes.")
+@click.option("--method", type=click.Choice(METHOD_NAMES), default=None,
+              help="The method whose weights to tune (default: synthesize.search); only dp and greedy have any.")
 @click.option("-o", "--output", type=PATH, required=True, help="Output TOML with the tuned [synthesize] weights.")
 @stage
-def tune(ctx: Context, db: Path, validation: Path, output: Path):
+def tune(ctx: Context, db: Path, validation: Path, method: str | None, output: Path):
     """Tune the cost weights (alpha1..alpha6, PNT), the join smoothing window and the
     boundary-fit length by cross-validation on the validation sentences (paper VI-D).
 
@@ -1100,7 +1102,8 @@ def tune(ctx: Context, db: Path, validation: Path, output: Path):
 
     try:
         s = stage.run(db, validation, output, ctx.config.settings("tune"), ctx.config.settings("synthesize"),
-                      ctx.config.settings("build_db"), ctx.config.settings("normalize"), ctx.overwrite, progress_fn=show)
+                      ctx.config.settings("build_db"), ctx.config.settings("normalize"), ctx.overwrite, progress_fn=show,
+                      method=method)
     finally:
         if bar is not None:
             bar.close()

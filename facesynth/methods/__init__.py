@@ -66,6 +66,16 @@ class MethodSettings:
         ``synthesize``, ``trajectory`` and ``coarticulation``)."""
         return cls(config.settings("synthesize"), config.settings("trajectory"), config.settings("coarticulation"))
 
+    @classmethod
+    def packaged(cls, **given) -> "MethodSettings":
+        """The packaged defaults, with the sections ``given`` (``synthesize=...``) instead (for
+        library callers and commands that read only some sections)."""
+        from ..config import Config
+
+        defaults = Config.load()
+        return cls(**{name: given.get(name) or defaults.settings(name)
+                      for name in ("synthesize", "trajectory", "coarticulation")})
+
 
 @dataclass
 class Synthesis:

@@ -37,7 +37,8 @@ from . import Method, MethodSettings, Synthesis
 
 log = logging.getLogger(__name__)
 
-__all__ = ["UtteranceInput", "emotion_name", "read_utterance", "constraints_for", "synthesize", "frame_motion"]
+__all__ = ["UtteranceInput", "emotion_name", "read_utterance", "constraints_for", "synthesize", "check_memory",
+           "frame_motion"]
 
 
 @dataclass
@@ -108,10 +109,16 @@ def synthesize(method: Method, source, utt: Utterance, settings: MethodSettings,
     """``method``'s motion of ``utt`` from ``source``, after the memory check (its message names
     ``source_where``; the method's own messages name the utterance, ``where``)."""
     method.refuse_constraints(constraints)
+    check_memory(method, source, utt, settings, source_where)
+    return method.synthesize(source, utt, settings, constraints, prepared=prepared, where=where)
+
+
+def check_memory(method: Method, source, utt: Utterance, settings: MethodSettings, where: str) -> None:
+    """Refuse (one sentence naming ``where``, the source) when ``method``'s synthesis of ``utt``
+    needs more memory than is available."""
     need = method.memory_estimate(source, utt, settings)
     if need:
-        require_memory(need, method.memory_what(source, utt), source_where)
-    return method.synthesize(source, utt, settings, constraints, prepared=prepared, where=where)
+        require_memory(need, method.memory_what(source, utt), where)
 
 
 def frame_motion(name: str, utt: Utterance, markers_capture: np.ndarray, coefficients: np.ndarray | None,

@@ -73,4 +73,5 @@ class DpMethod(SearchMethod):
 class GreedyMethod(SearchMethod):
     name = "greedy"
     summary = "Cao et al.'s greedy search of the same database with the same costs"
+    tunable = True
     search = "greedy"

@@ -62,7 +62,7 @@ SYMBOLS: dict[str, str] = {
     "Kt": "key-shapes of a trajectory model (every emotion's, joined)",
     "Ph": "phones with a Gaussian in a trajectory model",
     "Pe": "(phone, emotion) pairs with a Gaussian of their own in a trajectory model",
-    "Pc": "phone types of a coarticulation model (`phone|emotion` labels, `pau`)",
+    "Pc": "phone types of a coarticulation model (a phone with its emotion, or the pause)",
 }
 
 #: The largest magnitude of any float in an artifact where numbers must be finite (mm, s, costs,
@@ -391,7 +391,11 @@ MOTION = Kind("motion", SCHEMAS["motion"], (
     "--method trajectory` writes the `trajectory` variant (`source = \"trajectory\"`: no `coefficients`; "
     "`keyshape_weights`, the path of Huang et al. Eq. 7; `path/node` and the provenance's node, take and source "
     "frame are -1, `path/node_phone` and `node_emotion` name the Gaussian used, `cost_oc` and `cost_tc` hold "
-    "Eq. 6's data and smoothness terms per phone, `cost_emp` and `cost_block` zero; the head does not move)."), (
+    "Eq. 6's data and smoothness terms per phone, `cost_emp` and `cost_block` zero; the head does not move). "
+    "`--method mean` and `--method coarticulation` write the `synthesis` variant without motion nodes: "
+    "`path/search` names the method, `path/node` and the provenance's node, take and source frame are -1, "
+    "`node_phone` / `node_emotion` the phone and emotion whose pose was used ('' for a phone's pose over every "
+    "emotion), the cost terms and `total_cost` zero; the head does not move."), (
     Dataset("markers", "float32", ("Fo", "M", 3), "the motion at the output rate, head frame", "mm",
             (MM, _fps("output rate, frames/s")), finite="synthesis"),
     Dataset("markers_capture", "float32", ("F", "M", 3), "the motion at the capture rate, before down-sampling", "mm",
@@ -423,7 +427,8 @@ MOTION = Kind("motion", SCHEMAS["motion"], (
         Dataset("cost_block", "float32", ("U",), "blocking penalty of Eq. 10"),
     ), attrs=(Attr("total_cost", "float", "Eq. 4 along the path (trajectory: Eq. 6 of Huang et al.)"),
               Attr("non_captured_joins", "int", "joins without a captured predecessor/successor link", ge=0),
-              Attr("search", "str", "the search that chose the path (`dp`, `greedy` or `trajectory`)"),
+              Attr("search", "str", "the method that made the motion (`dp`, `greedy`, `trajectory`, `coarticulation` "
+                   "or `mean`)"),
               Attr("device", "str", "where the search ran"),
               Attr("device_reason", "str", "why that device (the OpenCL choice, or why NumPy)")), required="synthesis"),
     Group("provenance", "provenance", "where each capture-rate frame came from", (

@@ -36,9 +36,7 @@ def prepare(script: Path, db: Path, out_dir: Path, settings: BatchSettings, synt
     for the rest); ``db``: the method's source (the motion database, or its fitted model). The
     job carries the ``[limits]`` in force (:func:`facesynth.limits.current`)."""
     if isinstance(synthesize, SynthesizeSettings):
-        from .synthesize import method_settings
-
-        synthesize = method_settings(synthesize)
+        synthesize = MethodSettings.packaged(synthesize=synthesize)
     member = methods.get(method or synthesize.synthesize.search)
     if set(settings.outputs) & {"anim", "avi"} and (mesh is None or binding is None):
         raise UsageError("the anim and avi outputs need --mesh and --binding (e.g. corpus/face.obj and corpus/markers.csv).")

@@ -21,15 +21,6 @@ from ..methods.search import memory_estimate as memory_estimate  # the DP's esti
 from ..model.headmotion import HeadMotion
 
 
-def method_settings(settings: SynthesizeSettings) -> MethodSettings:
-    """``settings`` with the packaged ``[trajectory]`` and ``[coarticulation]`` (for callers of
-    :func:`run` that give only ``[synthesize]``)."""
-    from ..config import Config
-
-    packaged = Config.load()
-    return MethodSettings(settings, packaged.settings("trajectory"), packaged.settings("coarticulation"))
-
-
 def run(source_path: Path, out: Path, settings: SynthesizeSettings | MethodSettings, ingest_settings: IngestSettings,
         align_settings: AlignSettings, *, method: str | None = None,
         phones_path: Path | None = None, emotions_path: Path | None = None, constraints_path: Path | None = None,
@@ -47,7 +38,7 @@ def run(source_path: Path, out: Path, settings: SynthesizeSettings | MethodSetti
     ``head_motion_path`` (a ``headmotion`` artifact, see ``facesynth head-motion``) replaces the
     head motion of the output (the source takes' for the searches, none for the others)."""
     if isinstance(settings, SynthesizeSettings):
-        settings = method_settings(settings)
+        settings = MethodSettings.packaged(synthesize=settings)
     member = methods.get(method or settings.synthesize.search)
     if constraints_path is not None:
         member.refuse_constraints({0: 0})

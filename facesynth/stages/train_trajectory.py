@@ -16,10 +16,8 @@ from .fit_method import run as fit
 def run(db_path: Path, keyshapes_path: Path, out: Path, settings: TrajectorySettings, overwrite: bool = False) -> dict:
     """Train the model on ``db_path``'s training takes with the key-shapes of ``keyshapes_path``
     and write ``out``; returns a summary (sizes, seconds, the fit's RMS: ``train_s`` the fit's seconds)."""
-    from ..config import Config
     from ..methods import MethodSettings
 
-    packaged = Config.load()
-    both = MethodSettings(packaged.settings("synthesize"), settings, packaged.settings("coarticulation"))
-    s = fit("trajectory", db_path, out, both, keyshapes_path=keyshapes_path, overwrite=overwrite)
+    s = fit("trajectory", db_path, out, MethodSettings.packaged(trajectory=settings), keyshapes_path=keyshapes_path,
+            overwrite=overwrite)
     return {**s, "train_s": s["fit_s"]}
