@@ -70,6 +70,7 @@ from __future__ import annotations
 import dataclasses
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -83,7 +84,7 @@ from .config import (
     TrajectorySettings,
 )
 from .errors import InputError
-from .methods import MethodSettings, core
+from .methods import Method, MethodSettings, core
 from .methods import get as get_method
 from .methods.coarticulation import DominanceModel, fit_dominance, training_sentences
 from .methods.mean import mean_pose_markers
@@ -509,9 +510,9 @@ class Member:
     """A member of the method family as ``evaluate`` runs it: the method, its source (the
     database, or its model) and the work prepared once for every sentence."""
 
-    method: object
-    source: object
-    prepared: object = None
+    method: Method
+    source: Any
+    prepared: Any = None
 
 
 def method_outputs(db: MotionDatabase, s: Sentence, members: dict[str, Member], method_settings: MethodSettings,

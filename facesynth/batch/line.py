@@ -261,6 +261,7 @@ def _do_line(line: Line, job: Job, emotion: str, key: dict, outputs: dict[str, P
     else:  # a line without text is recognised (the script reader makes an empty cell None)
         read = core.read_utterance(job.ingest, audio=line.audio, text=line.text, align=job.align,
                                    emotions_path=line.emotions, emotion=one_emotion, samples=(samples, rate))
+        assert read.alignment is not None  # audio is aligned or recognised
         result.method, result.recognized = read.alignment.method, read.alignment.recognized
     result.warnings = list(read.warnings)
     utt = read.utterance
@@ -276,7 +277,7 @@ def _do_line(line: Line, job: Job, emotion: str, key: dict, outputs: dict[str, P
     result.synthesize_s = time.perf_counter() - t0 - result.load_s
 
     t0 = time.perf_counter()
-    if line.alignment is None:
+    if read.alignment is not None:
         grid = job.out_dir / f"{line.id}.TextGrid"
         with atomic_path(grid, overwrite=True) as tmp:
             segments, words = read.alignment.phones, read.alignment.words

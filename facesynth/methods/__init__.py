@@ -114,6 +114,10 @@ class Method(ABC):
         raise UsageError(f"the {self.name} method reads the motion database itself and has nothing to fit; "
                          f"fit one of {', '.join(n for n in MEMBERS if get(n).fitted)}.")
 
+    def fit_settings(self, settings: MethodSettings):
+        """The settings section a fitted model records as its ``config`` (fitted members)."""
+        return settings.synthesize
+
     def prepare(self, source, settings: MethodSettings):
         """Work that depends only on the source and settings, done once for many utterances
         (the searches' transition costs); passed back to :meth:`synthesize` as ``prepared``."""

@@ -233,6 +233,9 @@ class CoarticulationMethod(Method):
 
         return CoarticulationModel.read(path)
 
+    def fit_settings(self, settings: MethodSettings):
+        return settings.coarticulation
+
     def fit(self, db, settings: MethodSettings, *, keyshapes=None, where: str = "the database"):
         """The model of ``db``'s training takes (``coarticulation.iterations`` L-BFGS-B iterations);
         returns (CoarticulationModel, summary: ``labels``, ``fit_rms_mm``)."""

@@ -28,6 +28,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..alignment import Alignment
 from ..config import AlignSettings, IngestSettings
 from ..errors import UsageError
 from ..limits import require_memory
@@ -48,7 +49,7 @@ class UtteranceInput:
     and words, ``method``, ``recognized``), else None; ``warnings``, sentences for the user."""
 
     utterance: Utterance
-    alignment: object | None = None
+    alignment: Alignment | None = None
     warnings: list[str] = field(default_factory=list)
 
 

@@ -434,6 +434,9 @@ class TrajectoryMethod(Method):
     def recorded_settings(self, settings: MethodSettings):
         return settings.trajectory
 
+    def fit_settings(self, settings: MethodSettings):
+        return settings.trajectory
+
     def fit(self, db, settings: MethodSettings, *, keyshapes=None, where: str = "the database"):
         """The model of ``db``'s training takes over the joint key-shapes of ``keyshapes`` (a
         KeyShapes, needed); returns (TrajectoryModel, summary: ``keyshapes``, ``phones``, ``pairs``,

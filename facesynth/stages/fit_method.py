@@ -8,15 +8,10 @@ itself and have nothing to fit.
 
 from __future__ import annotations
 
-import time
 from pathlib import Path
 
-from .. import methods
-from ..artifacts import check_output
-from ..config import settings_json
 from ..methods import MethodSettings
-from ..model.keyshapes import KeyShapes
-from ..model.motiondb import MotionDatabase
+from ..methods.fitting import fit_to_file
 
 
 def run(method: str, db_path: Path, out: Path, settings: MethodSettings, *, keyshapes_path: Path | None = None,
@@ -24,20 +19,4 @@ def run(method: str, db_path: Path, out: Path, settings: MethodSettings, *, keys
     """Fit ``method`` on ``db_path``'s training takes (the trajectory method over the key-shapes of
     ``keyshapes_path``) and write ``out``; returns the method's summary (sizes, the fit's RMS) with
     ``method``, ``fit_s`` and ``bytes``."""
-    member = methods.get(method)
-    if not member.fitted:
-        member.fit(None, settings)  # says, in one sentence, that there is nothing to fit
-    if keyshapes_path is not None and member.name != "trajectory":
-        from ..errors import UsageError
-
-        raise UsageError(f"--keyshapes is for the trajectory method; the {member.name} method is fitted without them.")
-    check_output(out, overwrite)
-    db = MotionDatabase.read(db_path)
-    keyshapes = KeyShapes.read(keyshapes_path) if keyshapes_path is not None else None
-    t0 = time.perf_counter()
-    model, summary = member.fit(db, settings, keyshapes=keyshapes, where=str(keyshapes_path or db_path))
-    fit_s = time.perf_counter() - t0
-    section = settings.trajectory if member.name == "trajectory" else settings.coarticulation
-    model.write(out, config=settings_json(section), inputs=[p for p in (db_path, keyshapes_path) if p is not None],
-                overwrite=overwrite)
-    return {"method": member.name, **summary, "fit_s": fit_s, "bytes": out.stat().st_size}
+    return fit_to_file(method, db_path, out, settings, keyshapes_path=keyshapes_path, overwrite=overwrite)

@@ -2,7 +2,7 @@
 :mod:`facesynth.methods.trajectory`) of a motion database's training takes, over the joint
 key-shapes of a ``keyshapes`` artifact, written as a ``trajectory`` artifact that
 ``facesynth synthesize --method trajectory`` reads alone. The same as ``facesynth fit-method
-trajectory`` (:mod:`facesynth.stages.fit_method`), kept under its own name.
+trajectory`` (:func:`facesynth.methods.fitting.fit_to_file`), kept under its own name.
 """
 
 from __future__ import annotations
@@ -10,7 +10,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from ..config import TrajectorySettings
-from .fit_method import run as fit
+from ..methods.fitting import fit_to_file
 
 
 def run(db_path: Path, keyshapes_path: Path, out: Path, settings: TrajectorySettings, overwrite: bool = False) -> dict:
@@ -18,6 +18,6 @@ def run(db_path: Path, keyshapes_path: Path, out: Path, settings: TrajectorySett
     and write ``out``; returns a summary (sizes, seconds, the fit's RMS: ``train_s`` the fit's seconds)."""
     from ..methods import MethodSettings
 
-    s = fit("trajectory", db_path, out, MethodSettings.packaged(trajectory=settings), keyshapes_path=keyshapes_path,
+    s = fit_to_file("trajectory", db_path, out, MethodSettings.packaged(trajectory=settings), keyshapes_path=keyshapes_path,
             overwrite=overwrite)
     return {**s, "train_s": s["fit_s"]}
