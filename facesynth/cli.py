@@ -510,8 +510,8 @@ def synthesize(ctx: Context, db: Path, method, phonemes, audio, text, emotions, 
                   head_motion_path=head_motion_path, overwrite=ctx.overwrite)
     on_database = name in ("dp", "greedy", "mean")
     for phone, how in s.get("unseen", {}).items():
-        ctx.say(f"warning: the {'database has no node of' if on_database else 'model has no'} /{phone}/; "
-                f"it will be covered by {how}.")
+        what = f"database has no node of /{phone}/" if on_database else f"model has no {phone}"
+        ctx.say(f"warning: the {what}; it will be covered by {how}.")
     for phone, group in s.get("fallbacks", {}).items():
         ctx.say(f"warning: the trajectory model has no Gaussian of /{phone}/; it uses the pooled Gaussian of its "
                 f"viseme class ({group}).")
@@ -1038,7 +1038,7 @@ def evaluate(ctx: Context, db: Path, heldout: Path, truth: Path | None, trajecto
     for method, m in s.items():
         f = m.get("figures", {})
         clean = f" (clean truth {f['rms_clean_mm']['value']:.3f} mm)" if f.get("rms_clean_mm", {}).get("value") is not None else ""
-        ctx.say(f"{method}: RMS {m['rms_mm']:.3f} mm{clean}, velocity RMS {m['velocity_rms_mm_s']:.1f} mm/s")
+        ctx.say(f"{stage.row_label(method)}: RMS {m['rms_mm']:.3f} mm{clean}, velocity RMS {m['velocity_rms_mm_s']:.1f} mm/s")
     ctx.say(f"report -> {output}/index.html, table -> {output}/table.md")
     if recommendation:
         ctx.say(recommendation)

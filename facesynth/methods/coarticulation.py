@@ -257,7 +257,8 @@ class CoarticulationMethod(Method):
     def synthesize(self, source, utt, settings: MethodSettings, constraints=None, *, prepared=None,
                    where: str = "the utterance") -> Synthesis:
         """The model's poses at the capture rate (Eq. 11 through its PCA model), down-sampled to
-        ``synthesize.output_fps``; the summary's ``unseen`` names the labels the fit never saw."""
+        ``synthesize.output_fps``; the summary's ``unseen`` names the (phone, emotion) pairs the fit never
+        saw ('/aa/ in sad', or '/zh/' for a phone it never saw in any emotion) and what covers each."""
         from ..motion.postprocess import frame_ranges
         from .core import frame_motion
 
@@ -268,8 +269,15 @@ class CoarticulationMethod(Method):
         coeffs = model.predict(labels, utt.starts, utt.ends, total, source.fps)
         markers = source.pca.reconstruct(coeffs)
         known = set(source.labels)
-        unseen = {label: "the mean of its phone's other emotions" if any(k.split("|")[0] == label.split("|")[0] for k in known)
-                  else "the mean of every phone type" for label in dict.fromkeys(labels) if label not in known}
+        seen_phones = {k.split("|")[0] for k in known}
+        unseen = {}
+        for label in dict.fromkeys(labels):
+            if label not in known:
+                phone, _, emotion = label.partition("|")
+                if phone in seen_phones:
+                    unseen[f"/{phone}/ in {emotion}"] = "the mean of that phone's other emotions"
+                else:
+                    unseen[f"/{phone}/"] = "the mean of every phone type"
         motion = frame_motion(self.name, utt, markers, coeffs, source.fps, settings.synthesize.output_fps,
                               source.marker_names, source.reference, list(utt.phones),
                               [e if p != PAU else "" for p, e in zip(utt.phones, utt.emotions)], "cpu (NumPy)")
