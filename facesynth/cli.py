@@ -679,11 +679,12 @@ def fit_method(ctx: Context, method: str, db: Path, keyshapes_path: Path | None,
     coarticulation: a Cohen-Massaro model per (phone, emotion) (coarticulation.iterations);
     trajectory: Huang et al.'s Gaussians of key-shape weights (needs --keyshapes; the same as
     facesynth train-trajectory). `facesynth synthesize --method METHOD MODEL` then needs the model
-    file alone. dp, greedy and mean read the database itself and have nothing to fit.
+    file alone. dp, greedy and mean read the database itself and have nothing to fit. The example
+    asks for a quick fit of 8 iterations; the default is coarticulation.iterations = 40.
 
     \b
     Example:
-      facesynth fit-method coarticulation db.h5 -o coart.h5
+      facesynth fit-method coarticulation db.h5 -o coart.h5 --set coarticulation.iterations=8
       facesynth synthesize --method coarticulation coart.h5 --phonemes corpus/labels/sad_s017.TextGrid -o coart_motion.h5
     """
     from .methods import MethodSettings
