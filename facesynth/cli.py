@@ -123,7 +123,7 @@ READS: dict[str, tuple[str, ...]] = {
     "rig-mesh": (),
     "render": ("render",),
     "batch": ("batch", "synthesize", "ingest", "align", "deform", "render", "trajectory", "coarticulation"),
-    "evaluate": ("evaluate", "synthesize", "normalize", "trajectory", "coarticulation"),
+    "evaluate": ("evaluate", "synthesize", "normalize", "trajectory"),
     "capture": ("normalize", "synthesize"),
     "tune": ("tune", "synthesize", "build_db", "normalize"),
     "isomap build": ("isomap",),
