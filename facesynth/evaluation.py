@@ -62,7 +62,8 @@ Figures (:data:`FIGURES`), each with a bootstrap 95% interval over sentences
   ``non_captured_joins``: joins of nodes that were not captured together (search methods).
 
 The report ends with one sentence recommending a method for the database (:func:`recommend`),
-drawn from the intervals of the RMS error (against the clean truth where there is one).
+drawn from the paired bootstrap intervals of the RMS error (against the clean truth where there
+is one) between the lowest method and each other.
 """
 
 from __future__ import annotations
@@ -552,15 +553,20 @@ class Recommendation:
     sentence: str
 
 
-def recommend(figures: dict[str, dict], row_of: dict[str, str] | None = None) -> Recommendation:
-    """One sentence recommending a method from the report's own intervals.
+def recommend(figures: dict[str, dict], row_of: dict[str, str] | None = None, difference=None) -> Recommendation:
+    """One sentence recommending a method from the report's own bootstrap intervals.
 
     ``figures``: per row, its :data:`FIGURES` entries ({value, low, high}); ``row_of``: member ->
     row (default :data:`MEMBER_ROW`, members absent from ``figures`` ignored). The figure is the
-    RMS error against the clean truth where computed, else against the noisy capture. The method
-    of the lowest value is recommended when its 95% interval lies entirely below the interval of
-    every other method; otherwise the methods whose intervals overlap the best one's are tied, and
-    the simplest and fastest of them (:data:`SIMPLEST_FIRST`) is recommended."""
+    RMS error against the clean truth where computed, else against the noisy capture.
+    ``difference(key, other_row, best_row)``: the paired bootstrap interval of ``other - best``
+    on the same resamples ({value, low, high}); without it the methods' own intervals are compared.
+
+    The method of the lowest value is recommended when it is lower than every other method beyond
+    doubt: the paired interval of each other method minus it lies above 0 (or, without pairs, its
+    own interval lies entirely below every other's). Otherwise the methods not told apart from it
+    (a paired interval holding 0, an overlapping interval) are tied with it, and the simplest and
+    fastest of them (:data:`SIMPLEST_FIRST`) is recommended."""
     row_of = row_of if row_of is not None else MEMBER_ROW
     present = {m: r for m, r in row_of.items() if r in figures}
     for key in ("rms_clean_mm", "rms_mm"):
@@ -574,29 +580,46 @@ def recommend(figures: dict[str, dict], row_of: dict[str, str] | None = None) ->
     order = sorted(scored, key=lambda m: scored[m]["value"])
     best = order[0]
 
-    def low(m):
-        return scored[m]["low"] if scored[m].get("low") is not None else scored[m]["value"]
+    def bound(m: str, side: str) -> float:
+        return scored[m][side] if scored[m].get(side) is not None else scored[m]["value"]
 
-    def high(m):
-        return scored[m]["high"] if scored[m].get("high") is not None else scored[m]["value"]
-
-    def cell(m):
-        return f"{scored[m]['value']:.3f} mm [{low(m):.3f}, {high(m):.3f}]"
+    def cell(m: str) -> str:
+        return f"{scored[m]['value']:.3f} mm [{bound(m, 'low'):.3f}, {bound(m, 'high'):.3f}]"
 
     if len(order) == 1:
         return Recommendation(best, key, f"Recommended for this database: {best}, the only method scored "
                                          f"({label} {cell(best)}).")
-    tied = [m for m in order if m == best or low(m) <= high(best)]
+    if difference is not None:
+        paired = {m: difference(key, present[m], present[best]) for m in order[1:]}
+
+        def apart(m: str) -> bool:
+            return paired[m].get("low") is not None and paired[m]["low"] > 0
+
+        def gap(m: str) -> str:
+            d = paired[m]
+            return f"{m} {d['value']:+.3f} mm [{d['low']:+.3f}, {d['high']:+.3f}]" if d.get("low") is not None else m
+        how = "paired 95% interval"
+    else:
+        def apart(m: str) -> bool:
+            return bound(m, "low") > bound(best, "high")
+
+        def gap(m: str) -> str:
+            return f"{m} {cell(m)}"
+        how = "95% interval"
+    tied = [best] + [m for m in order[1:] if not apart(m)]
     if len(tied) == 1:
-        return Recommendation(best, key, f"Recommended for this database: {best}, whose {label} {cell(best)} has a "
-                                         f"95% interval entirely below every other method's (next: {order[1]}, "
-                                         f"{cell(order[1])}).")
+        return Recommendation(best, key, f"Recommended for this database: {best}, the lowest {label} "
+                                         f"({cell(best)}); every other method is higher beyond its {how} "
+                                         f"(next: {gap(order[1])}).")
     rank = {m: k for k, m in enumerate(SIMPLEST_FIRST)}
     choice = min(tied, key=lambda m: rank.get(m, len(rank)))
-    others = ", ".join(f"{m} {cell(m)}" for m in tied if m != choice)
-    return Recommendation(choice, key, f"Recommended for this database: {choice} ({label} {cell(choice)}); its 95% "
-                                       f"interval overlaps those of {others}, so they are tied, and it is the "
-                                       "simplest and fastest of them.")
+    others = ", ".join(gap(m) for m in tied if m != best)
+    lowest = f"{best} has the lowest {label} ({cell(best)}), but its {how} does not tell it from {others}"
+    if choice == best:
+        return Recommendation(choice, key, f"Recommended for this database: {choice}; {lowest}, and it is the "
+                                           "simplest and fastest of these.")
+    return Recommendation(choice, key, f"Recommended for this database: {choice}, the simplest and fastest of the "
+                                       f"tied methods ({label} {cell(choice)}); {lowest}.")
 
 
 def evaluate(db_path: Path, corpus: Path, settings: EvaluateSettings, synth: SynthesizeSettings,
@@ -705,8 +728,15 @@ def evaluate(db_path: Path, corpus: Path, settings: EvaluateSettings, synth: Syn
     if with_baseline:
         for method, entry in figures(per_method, settings, with_clean).items():
             metrics[method]["figures"] = entry
+        index = resamples(len(sentences), settings.bootstrap_resamples, settings.seed)  # the figures' resamples
+
+        def difference(key: str, other: str, best: str) -> dict:
+            stat = FIGURES[key][1]
+            return paired_difference(lambda idx: stat(per_method[other], idx),
+                                     lambda idx: stat(per_method[best], idx), len(sentences), index)
+
         choice = recommend({r: metrics[r]["figures"] for r in metrics if "figures" in metrics[r]},
-                           {m: MEMBER_ROW[m] for m in members})
+                           {m: MEMBER_ROW[m] for m in members}, difference)
         metrics["_figures"] = {"labels": {key: label for key, (label, _, _, _) in FIGURES.items()},
                                "lower_is_better": {key: lower for key, (_, _, _, lower) in FIGURES.items()},
                                "clean_truth": with_clean, "skipped": skipped,

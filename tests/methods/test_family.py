@@ -189,8 +189,9 @@ def test_the_recommendation_is_the_lowest_rms_whose_interval_stands_clear():
                "baseline_emotion": {"rms_mm": _f(2.5, 2.3, 2.7)}}
     r = recommend(figures)
     assert r.method == "coarticulation" and r.figure == "rms_mm"
-    assert r.sentence.startswith("Recommended for this database: coarticulation, whose RMS vs noisy capture 2.000 mm "
-                                 "[1.900, 2.100] has a 95% interval entirely below every other method's (next: mean")
+    assert r.sentence == ("Recommended for this database: coarticulation, the lowest RMS vs noisy capture (2.000 mm "
+                          "[1.900, 2.100]); every other method is higher beyond its 95% interval (next: mean 2.500 mm "
+                          "[2.300, 2.700]).")
 
 
 def test_tied_intervals_recommend_the_simplest_and_the_clean_truth_decides_where_there_is_one():
@@ -201,10 +202,36 @@ def test_tied_intervals_recommend_the_simplest_and_the_clean_truth_decides_where
     r = recommend(figures)
     # coarticulation has the lowest clean RMS, but dp's and greedy's intervals overlap it; mean's does not
     assert r.figure == "rms_clean_mm" and r.method == "coarticulation"
-    assert "overlaps those of dp 2.200 mm [2.000, 2.400], greedy 2.350 mm [2.290, 2.500], so they are tied" in r.sentence
-    assert "mean" not in r.sentence
+    assert r.sentence == ("Recommended for this database: coarticulation; coarticulation has the lowest RMS vs clean "
+                          "truth (2.100 mm [1.900, 2.300]), but its 95% interval does not tell it from dp 2.200 mm "
+                          "[2.000, 2.400], greedy 2.350 mm [2.290, 2.500], and it is the simplest and fastest of these.")
     figures["baseline_emotion"]["rms_clean_mm"] = _f(2.3, 2.2, 2.4)  # now the mean is tied too, and simplest
-    assert recommend(figures).method == "mean"
+    tied = recommend(figures)
+    assert tied.method == "mean" and tied.sentence.startswith(
+        "Recommended for this database: mean, the simplest and fastest of the tied methods (RMS vs clean truth "
+        "2.300 mm [2.200, 2.400]); coarticulation has the lowest")
     only = recommend({"dp": {"rms_mm": _f(1.0, 0.9, 1.1)}})
     assert only.method == "dp" and "the only method scored" in only.sentence
     assert recommend({}).method == ""
+
+
+def test_paired_intervals_decide_where_the_sentences_share_their_difficulty():
+    """Every method's own interval overlaps the others' (the sentences differ in difficulty), but on the
+    same resamples coarticulation is lower than each other method: it is recommended."""
+    figures = {"dp": {"rms_mm": _f(1.90, 1.67, 2.18)}, "dominance_emotion": {"rms_mm": _f(1.45, 1.25, 1.69)},
+               "baseline_emotion": {"rms_mm": _f(1.76, 1.41, 2.16)}, "trajectory": {"rms_mm": _f(1.69, 1.48, 1.96)}}
+    assert recommend(figures).method == "mean"  # by the methods' own intervals: tied
+    paired = {"dp": _f(0.45, 0.39, 0.51), "baseline_emotion": _f(0.31, 0.12, 0.50), "trajectory": _f(0.24, 0.10, 0.35)}
+    calls = []
+
+    def difference(key, other, best):
+        calls.append((key, other, best))
+        return paired[other]
+
+    r = recommend(figures, difference=difference)
+    assert r.method == "coarticulation" and all(c[0] == "rms_mm" and c[2] == "dominance_emotion" for c in calls)
+    assert r.sentence.endswith("every other method is higher beyond its paired 95% interval (next: trajectory "
+                               "+0.240 mm [+0.100, +0.350]).")
+    paired["trajectory"] = _f(0.24, -0.02, 0.35)  # one paired interval holds 0: tied with it, and it is simpler
+    tied = recommend(figures, difference=difference)
+    assert tied.method == "coarticulation" and "does not tell it from trajectory +0.240 mm [-0.020, +0.350]" in tied.sentence

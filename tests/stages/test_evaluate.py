@@ -5,6 +5,7 @@ import pytest
 from click.testing import CliRunner
 
 from facesynth import evaluation
+from facesynth.bootstrap import paired_difference, resamples
 from facesynth.cli import main
 from facesynth.config import Config
 from facesynth.errors import InputError
@@ -29,7 +30,15 @@ def test_report_has_numbers_per_method_and_plots(tiny_db, tiny_artifacts, tmp_pa
     # the report and the printed output end with the recommendation, the one its own intervals give
     sentence = m["figures_meta"]["recommendation"]["sentence"]
     figures = {row: m[row]["figures"] for row in m if isinstance(m[row], dict) and "figures" in m[row]}
-    assert sentence == evaluation.recommend(figures).sentence and sentence.startswith("Recommended for this database: ")
+    draws = resamples(4, 100, 0)  # the report's resamples: 4 sentences, 100 draws, evaluate.seed
+
+    def difference(key, other, best):  # from the per-sentence errors the report lists
+        stat = evaluation.FIGURES[key][1]
+        return paired_difference(lambda i: stat(m[other]["per_sentence"], i), lambda i: stat(m[best]["per_sentence"], i),
+                                 4, draws)
+
+    assert sentence == evaluation.recommend(figures, difference=difference).sentence
+    assert sentence.startswith("Recommended for this database: ")
     assert r.output.rstrip("\n").splitlines()[-1] == sentence
     assert (tmp_path / "rep" / "table.md").read_text().rstrip("\n").splitlines()[-1] == sentence
     assert index.rstrip().endswith(f"<p><b>{sentence}</b></p>")
