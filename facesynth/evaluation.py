@@ -598,23 +598,23 @@ def recommend(figures: dict[str, dict], row_of: dict[str, str] | None = None, di
         def gap(m: str) -> str:
             d = paired[m]
             return f"{m} {d['value']:+.3f} mm [{d['low']:+.3f}, {d['high']:+.3f}]" if d.get("low") is not None else m
-        how = "paired 95% interval"
+        how = "the paired 95% interval"
     else:
         def apart(m: str) -> bool:
             return bound(m, "low") > bound(best, "high")
 
         def gap(m: str) -> str:
             return f"{m} {cell(m)}"
-        how = "95% interval"
+        how = "its 95% interval"
     tied = [best] + [m for m in order[1:] if not apart(m)]
     if len(tied) == 1:
         return Recommendation(best, key, f"Recommended for this database: {best}, the lowest {label} "
-                                         f"({cell(best)}); every other method is higher beyond its {how} "
+                                         f"({cell(best)}); every other method is higher beyond {how} "
                                          f"(next: {gap(order[1])}).")
     rank = {m: k for k, m in enumerate(SIMPLEST_FIRST)}
     choice = min(tied, key=lambda m: rank.get(m, len(rank)))
     others = ", ".join(gap(m) for m in tied if m != best)
-    lowest = f"{best} has the lowest {label} ({cell(best)}), but its {how} does not tell it from {others}"
+    lowest = f"{best} has the lowest {label} ({cell(best)}), but {how} does not tell it from {others}"
     if choice == best:
         return Recommendation(choice, key, f"Recommended for this database: {choice}; {lowest}, and it is the "
                                            "simplest and fastest of these.")

@@ -230,7 +230,7 @@ def test_paired_intervals_decide_where_the_sentences_share_their_difficulty():
 
     r = recommend(figures, difference=difference)
     assert r.method == "coarticulation" and all(c[0] == "rms_mm" and c[2] == "dominance_emotion" for c in calls)
-    assert r.sentence.endswith("every other method is higher beyond its paired 95% interval (next: trajectory "
+    assert r.sentence.endswith("every other method is higher beyond the paired 95% interval (next: trajectory "
                                "+0.240 mm [+0.100, +0.350]).")
     paired["trajectory"] = _f(0.24, -0.02, 0.35)  # one paired interval holds 0: tied with it, and it is simpler
     tied = recommend(figures, difference=difference)
