@@ -326,11 +326,12 @@ def facesynth_method(db: Path, phones: Path, folder: Path, n: int, lip_markers) 
 
 def actress_mean_method(database, segs: list[Segment], n: int, lip_markers) -> dict[str, np.ndarray]:
     """The actress's per-phone mean pose (``facesynth evaluate``'s ``baseline``) as a mouth opening (n,)."""
-    from facesynth.evaluation import baseline, lip_gaps
+    from facesynth.evaluation import lip_gaps
+    from facesynth.methods.mean import mean_pose_markers
     from facesynth.search.inputs import utterance
 
     utt = utterance([s.label for s in segs], np.array([s.start for s in segs]), np.array([s.end for s in segs]))
-    gap = lip_gaps(baseline(database, utt), list(database.marker_names), lip_markers)
+    gap = lip_gaps(mean_pose_markers(database, utt, by_emotion=False), list(database.marker_names), lip_markers)
     return {"opening": np.interp(np.arange(n) / FPS, np.arange(len(gap)) / database.fps, gap)}
 
 

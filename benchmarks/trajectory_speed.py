@@ -25,8 +25,8 @@ from pathlib import Path
 import numpy as np
 
 from facesynth.config import Config
+from facesynth.methods.trajectory import duration_weights, effective_lambda, frame_targets, solve, synthesize_motion
 from facesynth.model.trajectory import TrajectoryModel
-from facesynth.motion.trajectory import duration_weights, effective_lambda, frame_targets, solve, synthesize_motion
 from facesynth.search.inputs import utterance
 
 

@@ -19,8 +19,12 @@ import click
 from . import __version__, limits, pipeline
 from .config import SAMPLE_CORPUS_PRESETS, Config, choices, parse_override
 from .errors import FacesynthError, OverrideError, UsageError
+from .methods import MEMBERS as METHOD_MEMBERS
 
 PATH = click.Path(path_type=Path)
+#: The members of the method family (facesynth.methods), and those fitted into a model artifact.
+METHOD_NAMES = tuple(METHOD_MEMBERS)
+FITTED_METHOD_NAMES = ("trajectory", "coarticulation")
 EXISTING = click.Path(path_type=Path, dir_okay=False)
 
 
@@ -427,15 +431,16 @@ def build_db(ctx: Context, pca_path: Path, output: Path):
 
 @main.command()
 @click.argument("db", metavar="DB|MODEL", type=EXISTING)
-@click.option("--method", type=click.Choice(("dp", "trajectory")), default="dp", show_default=True,
-              help="dp: search the motion database (DB); trajectory: the compact key-shape model (MODEL, from "
-                   "facesynth train-trajectory; Huang et al. Eq. 6-7).")
+@click.option("--method", type=click.Choice(METHOD_NAMES), default=None,
+              help="The synthesis method (default: dp, or --search): dp and greedy search the motion database (DB), "
+                   "mean takes its per-(phone, emotion) mean poses; trajectory and coarticulation read a MODEL "
+                   "fitted on it (facesynth fit-method).")
 @click.option("--phonemes", type=EXISTING, default=None, help="The utterance's phone timing (TextGrid or .lab).")
 @click.option("--audio", type=EXISTING, default=None,
               help="Speech to align on the fly (to --text; without it, recognised: align.recognition).")
 @click.option("--text", default=None, help="What --audio says.")
 @click.option("--emotions", type=EXISTING, default=None, help="Emotion spans: 'start_s end_s emotion' lines, or a TextGrid tier 'emotions'.")
-@click.option("--constraints", type=EXISTING, default=None, help="Motion-node constraints: 'INDEX NODE' or 'TIMEs NODE' lines.")
+@click.option("--constraints", type=EXISTING, default=None, help="Motion-node constraints: 'INDEX NODE' or 'TIMEs NODE' lines (dp only).")
 @click.option("--search", type=click.Choice(choices("synthesize", "search")), default=None, help="Search (default: synthesize.search).")
 @click.option("--head-motion", "head_motion_path", type=EXISTING, default=None,
               help="Head motion from `facesynth head-motion` to put on the output instead of the source takes'.")
@@ -445,9 +450,10 @@ def synthesize(ctx: Context, db: Path, method, phonemes, audio, text, emotions, 
                output: Path):
     """Synthesize expressive marker motion for a new utterance (paper VI, Algorithm 1).
 
-    With --method trajectory the first argument is a trajectory model (facesynth
-    train-trajectory) and the motion is the smooth path of Huang et al. Eq. 6-7 through the
-    phones' Gaussians, back-projected from key-shape weights to markers.
+    --method picks the member of the method family: dp (the default; --search greedy or
+    synthesize.search = greedy runs the greedy search instead), greedy, mean, and the fitted
+    trajectory (Huang et al. Eq. 6-7) and coarticulation (Cohen-Massaro) models, whose model file
+    (facesynth fit-method) is then the first argument.
 
     \b
     Example:
@@ -457,43 +463,39 @@ def synthesize(ctx: Context, db: Path, method, phonemes, audio, text, emotions, 
     """
     import dataclasses
 
+    from .methods import MethodSettings, core
     from .stages import synthesize as stage
 
-    if method == "trajectory":
-        if constraints is not None:
-            raise UsageError("--constraints pick motion nodes, and the trajectory method has none; drop --constraints "
-                             "or use --method dp.")
-        if search is not None:
-            raise UsageError("--search chooses how the motion database is searched; the trajectory method does not "
-                             "search; drop --search or use --method dp.")
-        s = stage.run_trajectory(db, output, ctx.config.settings("trajectory"),
-                                 ctx.config.settings("synthesize").output_fps, ctx.config.settings("ingest"),
-                                 ctx.config.settings("align"), phones_path=phonemes, emotions_path=emotions, audio=audio,
-                                 text=text, head_motion_path=head_motion_path, overwrite=ctx.overwrite)
-        for phone, group in s.fallbacks.items():
-            ctx.say(f"warning: the trajectory model has no Gaussian of /{phone}/; it uses the pooled Gaussian of its "
-                    f"viseme class ({group}).")
-        ctx.detail(f"phases: read model {s.load_s:.4f} s, solve and back-projection {s.solve_s:.4f} s, "
-                   f"write {s.write_s:.3f} s; lambda {s.lam:g} per frame")
-        ctx.say(f"synthesized {s.phones} phones, {s.frames} frames by the trajectory method, "
-                f"Eq. 6 energy {s.energy:.2f} -> {output}")
-        return
-
-    settings = ctx.config.settings("synthesize")
+    settings = MethodSettings.of(ctx.config)
+    name = core.chosen_method(method, search, settings.synthesize.search)
     if search:
-        settings = dataclasses.replace(settings, search=search)
-    s = stage.run(db, output, settings, ctx.config.settings("ingest"), ctx.config.settings("align"),
+        settings = dataclasses.replace(settings, synthesize=dataclasses.replace(settings.synthesize, search=search))
+    s = stage.run(db, output, settings, ctx.config.settings("ingest"), ctx.config.settings("align"), method=name,
                   phones_path=phonemes, emotions_path=emotions, constraints_path=constraints, audio=audio, text=text,
                   head_motion_path=head_motion_path, overwrite=ctx.overwrite)
+    on_database = s.method in ("dp", "greedy", "mean")
     for phone, how in s.unseen.items():
-        ctx.say(f"warning: the database has no node of /{phone}/; it will be covered by {how}.")
-    phases = [("read database", "load_s"), ("device choice", "device_choice_s"), ("transition costs", "transition_s"), ("step costs", "steps_s"),
-              ("OpenCL set-up", "opencl_setup_s"), ("search", "search_s"), ("post-processing", "postprocess_s"),
-              ("input hashes", "hash_wait_s"), ("write", "write_s")]
-    ctx.detail("phases: " + ", ".join(f"{name} {getattr(s, key):.3f} s" for name, key in phases
-                                      if getattr(s, key) is not None) + f"; search on {s.device}")
-    ctx.say(f"synthesized {s.phones} phones, {s.frames} frames, cost {s.cost:.2f}, "
-            f"{s.joins} non-captured joins -> {output}")
+        what = f"database has no node of /{phone}/" if on_database else f"model has no {phone}"
+        ctx.say(f"warning: the {what}; it will be covered by {how}.")
+    for phone, group in s.fallbacks.items():
+        ctx.say(f"warning: the trajectory model has no Gaussian of /{phone}/; it uses the pooled Gaussian of its "
+                f"viseme class ({group}).")
+    phases = [("device choice", "device_choice_s"), ("transition costs", "transition_s"), ("step costs", "steps_s"),
+              ("OpenCL set-up", "opencl_setup_s"), ("search", "search_s"), ("post-processing", "postprocess_s")]
+    timed = ([("read database" if on_database else "read model", s.load_s)]
+             + [(label, s.phases[key]) for label, key in phases if s.phases.get(key) is not None]
+             + [("input hashes", s.hash_wait_s), ("write", s.write_s)])
+    ctx.detail("phases: " + ", ".join(f"{label} {value:.3f} s" for label, value in timed)
+               + (f"; search on {s.device}" if s.device else ""))
+    if s.cost is not None:
+        ctx.say(f"synthesized {s.phones} phones, {s.frames} frames, cost {s.cost:.2f}, "
+                f"{s.joins} non-captured joins -> {output}")
+    elif s.energy is not None:
+        ctx.detail(f"lambda {s.lam:g} per frame")
+        ctx.say(f"synthesized {s.phones} phones, {s.frames} frames by the trajectory method, "
+                f"Eq. 6 energy {s.energy:.2f} -> {output}")
+    else:
+        ctx.say(f"synthesized {s.phones} phones, {s.frames} frames by the {s.method} method -> {output}")
 
 
 @main.command()
@@ -621,6 +623,38 @@ def train_trajectory(ctx: Context, db: Path, keyshapes_path: Path, output: Path)
     ctx.detail(f"{s.samples} training frames, weights and Gaussians in {s.train_s:.2f} s")
     ctx.say(f"trajectory model: {s.phones} phones and {s.pairs} (phone, emotion) Gaussians over {s.keyshapes} "
             f"key-shapes (fit RMS {s.fit_rms_mm:.2f} mm per marker), {s.bytes} bytes -> {output}")
+
+
+@main.command("fit-method")
+@click.argument("method", type=click.Choice(FITTED_METHOD_NAMES))
+@click.argument("db", type=EXISTING)
+@click.option("--keyshapes", "keyshapes_path", type=EXISTING, default=None,
+              help="Key-shapes (facesynth keyshapes): the trajectory method's weights are over them.")
+@click.option("-o", "--output", type=PATH, required=True, help="Output model .h5.")
+@stage
+def fit_method(ctx: Context, method: str, db: Path, keyshapes_path: Path | None, output: Path):
+    """Fit a synthesis method on the database's training takes and write its model.
+
+    coarticulation: a Cohen-Massaro model per (phone, emotion) (coarticulation.iterations);
+    trajectory: Huang et al.'s Gaussians of key-shape weights (needs --keyshapes; the same as
+    facesynth train-trajectory). `facesynth synthesize --method METHOD MODEL` then needs the model
+    file alone. dp, greedy and mean read the database itself and have nothing to fit. The example
+    asks for a quick fit of 8 iterations; the default is coarticulation.iterations = 40.
+
+    \b
+    Example:
+      facesynth fit-method coarticulation db.h5 -o coart.h5 --set coarticulation.iterations=8
+      facesynth synthesize --method coarticulation coart.h5 --phonemes corpus/labels/sad_s017.TextGrid -o coart_motion.h5
+    """
+    from .methods import MethodSettings
+    from .stages import fit_method as stage
+
+    s = stage.run(method, db, output, MethodSettings.of(ctx.config), keyshapes_path=keyshapes_path,
+                  overwrite=ctx.overwrite)
+    ctx.detail(f"fitted in {s.fit_s:.2f} s")
+    what = (f"{s.phones} phones and {s.pairs} (phone, emotion) Gaussians over {s.keyshapes} key-shapes"
+            if method == "trajectory" else f"{s.labels} (phone, emotion) types")
+    ctx.say(f"{method} model: {what} (fit RMS {s.fit_rms_mm:.2f} mm per marker), {s.bytes} bytes -> {output}")
 
 
 @main.command()
@@ -904,7 +938,10 @@ def player(ctx: Context, artifact: Path | None, audio: Path | None, motion: Path
 
 @main.command()
 @click.argument("script", type=EXISTING)
-@click.option("--db", "db_path", type=EXISTING, required=True, help="The motion database (db.h5).")
+@click.option("--db", "db_path", type=EXISTING, required=True,
+              help="The motion database (db.h5), or for --method trajectory / coarticulation its fitted model.")
+@click.option("--method", type=click.Choice(METHOD_NAMES), default=None,
+              help="The synthesis method of every line (default: dp, following synthesize.search), as for synthesize.")
 @click.option("-o", "--output", type=PATH, required=True, help="Output folder (per-line files and the summary).")
 @click.option("--outputs", default=None, metavar="KINDS",
               help="Comma-separated: motion, anim, avi (default: batch.outputs).")
@@ -914,8 +951,8 @@ def player(ctx: Context, artifact: Path | None, audio: Path | None, motion: Path
 @click.option("--workers", type=click.IntRange(min=1), default=None,
               help="Local worker processes (default: batch.workers, 0 = one per core).")
 @stage
-def batch(ctx: Context, script: Path, db_path: Path, output: Path, outputs: str | None, mesh, binding,
-          scheduler: str | None, workers: int | None):
+def batch(ctx: Context, script: Path, db_path: Path, method: str | None, output: Path, outputs: str | None, mesh,
+          binding, scheduler: str | None, workers: int | None):
     """Synthesize every line of a dialogue script on Dask, with a summary of what failed.
 
     SCRIPT is a CSV with columns id, audio, text (or alignment: a TextGrid or .lab), and
@@ -953,9 +990,13 @@ def batch(ctx: Context, script: Path, db_path: Path, output: Path, outputs: str 
         else:
             ctx.detail(f"{r.id}: {r.status} ({r.method}, {r.phones} phones, {r.total_s:.2f} s)")
 
-    s = stage.run(script, db_path, output, settings, ctx.config.settings("synthesize"), ctx.config.settings("ingest"),
+    from .methods import MethodSettings, core
+
+    method_settings = MethodSettings.of(ctx.config)
+    s = stage.run(script, db_path, output, settings, method_settings, ctx.config.settings("ingest"),
                   ctx.config.settings("align"), ctx.config.settings("deform"), ctx.config.settings("render"),
-                  mesh=mesh, binding=binding, scheduler=scheduler, overwrite=ctx.overwrite, on_result=on_result)
+                  method=core.chosen_method(method, None, method_settings.synthesize.search), mesh=mesh, binding=binding,
+                  scheduler=scheduler, overwrite=ctx.overwrite, on_result=on_result)
     skipped = f", {s.skipped} up to date" if s.skipped else ""
     ctx.say(f"{s.ok} of {s.lines} lines done{skipped}, {s.failed} failed in {s.seconds:.1f} s; "
             f"summary: {s.html}")
@@ -993,8 +1034,10 @@ def evaluate(ctx: Context, db: Path, heldout: Path, truth: Path | None, trajecto
     for method, m in s.methods.items():
         f = m.get("figures", {})
         clean = f" (clean truth {f['rms_clean_mm']['value']:.3f} mm)" if f.get("rms_clean_mm", {}).get("value") is not None else ""
-        ctx.say(f"{method}: RMS {m['rms_mm']:.3f} mm{clean}, velocity RMS {m['velocity_rms_mm_s']:.1f} mm/s")
+        ctx.say(f"{stage.row_label(method)}: RMS {m['rms_mm']:.3f} mm{clean}, velocity RMS {m['velocity_rms_mm_s']:.1f} mm/s")
     ctx.say(f"report -> {output}/index.html, table -> {output}/table.md")
+    if s.recommendation:
+        ctx.say(s.recommendation)
 
 
 @main.command()
@@ -1023,9 +1066,11 @@ def capture(ctx: Context, corpus: Path, db_path: Path, take: str, output: Path):
 @main.command()
 @click.argument("db", type=EXISTING)
 @click.option("--validation", type=EXISTING, required=True, help="The corpus.h5 with val (tuning) and test (report) takes.")
+@click.option("--method", type=click.Choice(METHOD_NAMES), default=None,
+              help="The method whose weights to tune (default: synthesize.search); only dp and greedy have any.")
 @click.option("-o", "--output", type=PATH, required=True, help="Output TOML with the tuned [synthesize] weights.")
 @stage
-def tune(ctx: Context, db: Path, validation: Path, output: Path):
+def tune(ctx: Context, db: Path, validation: Path, method: str | None, output: Path):
     """Tune the cost weights (alpha1..alpha6, PNT), the join smoothing window and the
     boundary-fit length by cross-validation on the validation sentences (paper VI-D).
 
@@ -1053,7 +1098,8 @@ def tune(ctx: Context, db: Path, validation: Path, output: Path):
 
     try:
         s = stage.run(db, validation, output, ctx.config.settings("tune"), ctx.config.settings("synthesize"),
-                      ctx.config.settings("build_db"), ctx.config.settings("normalize"), ctx.overwrite, progress_fn=show)
+                      ctx.config.settings("build_db"), ctx.config.settings("normalize"), ctx.overwrite, progress_fn=show,
+                      method=method)
     finally:
         if bar is not None:
             bar.close()

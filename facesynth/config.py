@@ -214,6 +214,9 @@ class EvaluateSettings:
     closure_mm: float = setting("not in the paper: bilabial closure", unit="mm", gt=0)
     plot_marker: str = setting("paper Figs. 15-16 (marker #79)")
     dominance_iterations: int = setting("not in the paper: L-BFGS-B iterations fitting the Cohen-Massaro baseline", ge=1)
+    methods: tuple[str, ...] = setting("not in the paper: the synthesis methods scored (dp always: the paired "
+                                       "differences are dp minus each); trajectory also needs --trajectory",
+                                       choices=("dp", "greedy", "trajectory", "coarticulation", "mean"))
     bootstrap_resamples: int = setting("not in the paper: resamples of the sentences for every 95% interval", ge=100)
     classifier_frames: int = setting("not in the paper: training frames of the emotion classifier", unit="frames", ge=100)
     seed: int = setting("not in the paper: seeds the bootstrap and the classifier's frame sample", ge=0)
@@ -368,6 +371,14 @@ class TrajectorySettings:
 
 
 @dataclass(frozen=True)
+class CoarticulationSettings:
+    """``[coarticulation]``: fitting the Cohen-Massaro coarticulation method (``facesynth fit-method
+    coarticulation``): a target pose, dominance magnitude and rate per (phone, emotion)."""
+
+    iterations: int = setting("not in the paper: L-BFGS-B iterations of the fit (variable projection)", ge=1)
+
+
+@dataclass(frozen=True)
 class SolveSettings:
     """``[solve]``: the direct facial solve, rig weights in [0, 1] per frame (a production facial solve)."""
 
@@ -461,6 +472,7 @@ SECTIONS: dict[str, type] = {
     "deform": DeformSettings,
     "keyshapes": KeyshapesSettings,
     "trajectory": TrajectorySettings,
+    "coarticulation": CoarticulationSettings,
     "solve": SolveSettings,
     "bind": BindSettings,
     "retarget": RetargetSettings,

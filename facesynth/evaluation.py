@@ -15,17 +15,20 @@ timing and emotion, with no constraints, and compared at the capture rate with
   ``rms_clean_mm``, ``velocity_rms_clean_mm_s``, the mouth-opening Pearson r (inner-lip gap
   of ``lip_markers``), and lip-closure timing.
 
-Methods, each given the same phone timing (and emotions):
+Methods, each given the same phone timing (and emotions): the members of the method family
+named by ``evaluate.methods`` (:mod:`facesynth.methods`; ``dp`` always), each synthesized through
+the shared core (:func:`facesynth.methods.core.synthesize`), scored under the row names of
+earlier reports (:data:`MEMBER_ROW`), and two per-phone variants as ablations:
 
-* ``dp``: the paper's search; ``greedy``: Cao et al.'s greedy search (``synthesize.search =
-  greedy``) on the same database and cost terms;
-* ``baseline``: the per-phoneme mean pose (mean PCA frame of all the database's frames of
-  that phone) placed at each phone's centre and interpolated linearly, the rest pose in pauses;
-  ``baseline_emotion``: the same with the mean pose per (phone, emotion);
-* ``dominance`` / ``dominance_emotion``: a Cohen-Massaro coarticulation model
-  (:mod:`facesynth.motion.dominance`) fitted on the database's training takes, per phone /
-  per (phone, emotion);
-* ``trajectory``: Huang et al.'s compact key-shape trajectory model (:mod:`facesynth.motion.trajectory`),
+* ``dp``: the paper's search; ``greedy``: Cao et al.'s greedy search on the same database and
+  cost terms;
+* ``baseline_emotion`` (the ``mean`` method): the mean pose per (phone, emotion) placed at each
+  phone's centre and interpolated linearly, the rest pose in pauses; ``baseline``: the same with
+  the per-phoneme mean pose (:mod:`facesynth.methods.mean`);
+* ``dominance_emotion`` (the ``coarticulation`` method): a Cohen-Massaro coarticulation model
+  per (phone, emotion) fitted on the database's training takes (``evaluate.dominance_iterations``);
+  ``dominance``: the same per phone (:mod:`facesynth.methods.coarticulation`);
+* ``trajectory``: Huang et al.'s compact key-shape trajectory model (:mod:`facesynth.methods.trajectory`),
   when a model trained on the same database is given (``facesynth evaluate --trajectory``): the
   smooth path of Eq. 6-7 through per-(phone, emotion) Gaussians of key-shape weights, scored at
   phone boundaries like the other non-search methods;
@@ -57,6 +60,10 @@ Figures (:data:`FIGURES`), each with a bootstrap 95% interval over sentences
   the recognisability of real motion.
 * ``emotion_agreement``: the fraction of spoken phones whose node has the asked emotion;
   ``non_captured_joins``: joins of nodes that were not captured together (search methods).
+
+The report ends with one sentence recommending a method for the database (:func:`recommend`),
+drawn from the paired bootstrap intervals of the RMS error (against the clean truth where there
+is one) between the lowest method and each other.
 """
 
 from __future__ import annotations
@@ -64,24 +71,32 @@ from __future__ import annotations
 import dataclasses
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
 from .baselines import fit_rigid, openfacefx_arkit, openfacefx_missing, rig_markers
 from .bootstrap import interval, paired_difference, resamples
-from .config import EvaluateSettings, NormalizeSettings, SynthesizeSettings, TrajectorySettings
+from .config import (
+    CoarticulationSettings,
+    EvaluateSettings,
+    NormalizeSettings,
+    SynthesizeSettings,
+    TrajectorySettings,
+)
 from .errors import InputError
+from .methods import Method, MethodSettings, core
+from .methods import get as get_method
+from .methods.coarticulation import DominanceModel, fit_dominance, training_sentences
+from .methods.mean import mean_pose_markers
 from .model.corpus import Corpus
 from .model.motiondb import MotionDatabase
-from .motion.dominance import DominanceModel, emotion_labels, fit_dominance, training_sentences
 from .motion.postprocess import frame_ranges
 from .motion.rigid import choose_rigid, fill_gaps, head_pose
-from .motion.trajectory import synthesize_motion
 from .opencl import use_opencl
-from .phonemes import PAU, viseme
+from .phonemes import PAU
 from .progress import progress
 from .search.inputs import Utterance, utterance
-from .search.synthesis import synthesize
 
 BILABIALS = ("p", "b", "m")
 
@@ -93,6 +108,14 @@ JOIN_PERCENTILE = 99.0
 #: The search methods (their joins are the non-captured ones) and the references.
 SEARCHES = ("dp", "greedy")
 REFERENCES = ("capture", "clean")
+#: The row of the report that scores each member of the method family (the names of earlier
+#: reports), and the per-phone ablation rows each member brings.
+MEMBER_ROW = {"dp": "dp", "greedy": "greedy", "mean": "baseline_emotion", "coarticulation": "dominance_emotion",
+              "trajectory": "trajectory"}
+ABLATIONS = {"mean": "baseline", "coarticulation": "dominance"}
+#: Members from the simplest and fastest to the most elaborate: among tied methods the recommendation
+#: prefers the first (no fitting and a closed form; fitted, closed form; fitted, a banded solve; searches).
+SIMPLEST_FIRST = ("mean", "coarticulation", "trajectory", "greedy", "dp")
 
 
 @dataclass
@@ -197,42 +220,11 @@ def heldout(corpus_path: Path, db: MotionDatabase, split: str, normalize_setting
     return out
 
 
-def baseline(db: MotionDatabase, utt: Utterance, by_emotion: bool = False) -> np.ndarray:
-    """Per-phoneme (or, with ``by_emotion``, per (phone, emotion)) mean pose at phone centres,
-    linearly interpolated. (T, M, 3) at capture rate."""
-    phones = np.array(db.nodes.phone)
-    emotions = np.array(db.nodes.emotion)
-    means: dict[tuple[str, str], np.ndarray] = {}
-    rest = db.model.project(db.reference[None])[0].astype(np.float64)
-
-    def mean_pose(p: str, emotion: str) -> np.ndarray:
-        key = (p, emotion if by_emotion else "")
-        if key not in means:
-            sel = np.nonzero(phones == p)[0]
-            if by_emotion and (emotions[sel] == emotion).any():
-                sel = sel[emotions[sel] == emotion]
-            if len(sel) == 0:  # an unseen phone: its viseme's nodes, else every node
-                sel = np.nonzero(db.nodes.viseme == viseme(p))[0]
-                sel = sel if len(sel) else np.arange(len(phones))
-            rows = np.concatenate([np.arange(db.nodes.frame_start[k], db.nodes.frame_start[k] + db.nodes.frame_count[k]) for k in sel])
-            means[key] = db.coeffs[rows].astype(np.float64).mean(0)
-        return means[key]
-
-    ranges = frame_ranges(utt.starts, utt.ends, db.fps)
-    total = ranges[-1][1]
-    centres = np.array([(a + b - 1) / 2.0 for a, b in ranges])
-    poses = np.stack([rest if p == PAU else mean_pose(p, e) for p, e in zip(utt.phones, utt.emotions)])
-    frames = np.arange(total)
-    coeffs = np.stack([np.interp(frames, centres, poses[:, k]) for k in range(poses.shape[1])], 1)
-    return db.model.reconstruct(coeffs)
-
-
-def dominance_baseline(db: MotionDatabase, model: DominanceModel, utt: Utterance, by_emotion: bool = False) -> np.ndarray:
-    """The fitted Cohen-Massaro model's markers (T, M, 3) mm at the capture rate (``by_emotion``:
-    a model fitted per (phone, emotion))."""
+def dominance_baseline(db: MotionDatabase, model: DominanceModel, utt: Utterance) -> np.ndarray:
+    """The per-phone Cohen-Massaro model's markers (T, M, 3) mm at the capture rate (the ``dominance``
+    ablation row; the per-(phone, emotion) model is the ``coarticulation`` method)."""
     total = frame_ranges(utt.starts, utt.ends, db.fps)[-1][1]
-    labels = emotion_labels(utt.phones, utt.emotions) if by_emotion else utt.phones
-    return db.model.reconstruct(model.predict(labels, utt.starts, utt.ends, total, db.fps))
+    return db.model.reconstruct(model.predict(utt.phones, utt.starts, utt.ends, total, db.fps))
 
 
 def openfacefx_baseline(db: MotionDatabase, utt: Utterance, rig, vertices: np.ndarray,
@@ -514,31 +506,120 @@ def _needed(key: str) -> str:
             "join_d2_p99": "_d2", "interior_d2_p99": "_d2_interior", "emotion_accuracy": "emotion_correct"}[key]
 
 
-def method_outputs(db: MotionDatabase, s: Sentence, synth: SynthesizeSettings, tc, baselines: tuple[str, ...],
-                   dominance: dict, settings: EvaluateSettings, rig=None, vertices=None,
-                   trajectory: tuple | None = None) -> tuple[dict, dict]:
-    """Every method's markers (T, M, 3) mm at the capture rate for one sentence, and per method
-    its extra fields (search methods: path, joins). ``trajectory``: (TrajectoryModel,
-    TrajectorySettings) to add the trajectory method."""
+@dataclass
+class Member:
+    """A member of the method family as ``evaluate`` runs it: the method, its source (the
+    database, or its model) and the work prepared once for every sentence."""
+
+    method: Method
+    source: Any
+    prepared: Any = None
+
+
+def method_outputs(db: MotionDatabase, s: Sentence, members: dict[str, Member], method_settings: MethodSettings,
+                   ablations: dict[str, DominanceModel | None], rig=None, vertices=None, source_where: str = "the database"
+                   ) -> tuple[dict, dict]:
+    """Every row's markers (T, M, 3) mm at the capture rate for one sentence, and per row its extra
+    fields (search methods: emotion agreement, joins). ``members``: by name, run through the shared
+    core; ``ablations``: the per-phone rows to add (``baseline``; ``dominance`` with its model)."""
     outputs, extra = {}, {}
-    for method in ("dp",) + tuple(b for b in baselines if b == "greedy"):
-        res = synthesize(db, s.utterance, {}, synth if method == "dp" else dataclasses.replace(synth, search="greedy"), tc=tc)
-        spoken = [k for k, p in enumerate(s.utterance.phones) if p != PAU]
-        outputs[method] = res["markers_capture"]
-        extra[method] = {"emotion_agreement": float(np.mean([db.nodes.emotion[res["path"][k]] == s.utterance.emotions[k] for k in spoken])),
-                         "non_captured_joins": res["non_captured_joins"], "joins": search_joins(db, s.utterance, res["path"])}
-    for method in baselines:
-        if method.startswith("dominance"):
-            by = method == "dominance_emotion"
-            outputs[method] = dominance_baseline(db, dominance[by], s.utterance, by_emotion=by)
-        elif method.startswith("baseline"):
-            outputs[method] = baseline(db, s.utterance, by_emotion=(method == "baseline_emotion"))
-        elif method == "openfacefx":
-            outputs[method] = openfacefx_baseline(db, s.utterance, rig, vertices, s.to_reference)
-    if trajectory is not None:
-        motion, _ = synthesize_motion(trajectory[0], s.utterance, trajectory[1], synth.output_fps, s.take)
-        outputs["trajectory"] = motion.markers_capture
+    for name, m in members.items():
+        result = core.synthesize(m.method, m.source, s.utterance, method_settings, prepared=m.prepared,
+                                 source_where=source_where, where=s.take)
+        motion, row = result.motion, MEMBER_ROW[name]
+        outputs[row] = motion.markers_capture
+        if name in SEARCHES:
+            spoken = [k for k, p in enumerate(s.utterance.phones) if p != PAU]
+            extra[row] = {"emotion_agreement": float(np.mean([motion.path.node_emotion[k] == s.utterance.emotions[k]
+                                                              for k in spoken])),
+                          "non_captured_joins": motion.path.non_captured_joins,
+                          "joins": search_joins(db, s.utterance, motion.path.node)}
+    if "baseline" in ablations:
+        outputs["baseline"] = mean_pose_markers(db, s.utterance, by_emotion=False)
+    if ablations.get("dominance") is not None:
+        outputs["dominance"] = dominance_baseline(db, ablations["dominance"], s.utterance)
+    if rig is not None:
+        outputs["openfacefx"] = openfacefx_baseline(db, s.utterance, rig, vertices, s.to_reference)
     return outputs, extra
+
+
+@dataclass(frozen=True)
+class Recommendation:
+    """The method :func:`recommend` chose (a member's name; '' when no figure was computed), the
+    figure it compared and the sentence that says why."""
+
+    method: str
+    figure: str
+    sentence: str
+
+
+def recommend(figures: dict[str, dict], row_of: dict[str, str] | None = None, difference=None) -> Recommendation:
+    """One sentence recommending a method from the report's own bootstrap intervals.
+
+    ``figures``: per row, its :data:`FIGURES` entries ({value, low, high}); ``row_of``: member ->
+    row (default :data:`MEMBER_ROW`, members absent from ``figures`` ignored). The figure is the
+    RMS error against the clean truth where computed, else against the noisy capture.
+    ``difference(key, other_row, best_row)``: the paired bootstrap interval of ``other - best``
+    on the same resamples ({value, low, high}); without it the methods' own intervals are compared.
+
+    The method of the lowest value is recommended when it is lower than every other method beyond
+    doubt: the paired interval of each other method minus it lies above 0 (or, without pairs, its
+    own interval lies entirely below every other's). Otherwise the methods not told apart from it
+    (a paired interval holding 0, an overlapping interval) are tied with it, and the simplest and
+    fastest of them (:data:`SIMPLEST_FIRST`) is recommended."""
+    row_of = row_of if row_of is not None else MEMBER_ROW
+    present = {m: r for m, r in row_of.items() if r in figures}
+    for key in ("rms_clean_mm", "rms_mm"):
+        scored = {m: figures[r][key] for m, r in present.items()
+                  if figures[r].get(key, {}).get("value") is not None and np.isfinite(figures[r][key]["value"])}
+        if scored:
+            break
+    else:
+        return Recommendation("", "", "No method could be recommended: no RMS figure was computed.")
+    label = FIGURES[key][0].replace(" (mm)", "")
+    order = sorted(scored, key=lambda m: scored[m]["value"])
+    best = order[0]
+
+    def bound(m: str, side: str) -> float:
+        return scored[m][side] if scored[m].get(side) is not None else scored[m]["value"]
+
+    def cell(m: str) -> str:
+        return f"{scored[m]['value']:.3f} mm [{bound(m, 'low'):.3f}, {bound(m, 'high'):.3f}]"
+
+    if len(order) == 1:
+        return Recommendation(best, key, f"Recommended for this database: {best}, the only method scored "
+                                         f"({label} {cell(best)}).")
+    if difference is not None:
+        paired = {m: difference(key, present[m], present[best]) for m in order[1:]}
+
+        def apart(m: str) -> bool:
+            return paired[m].get("low") is not None and paired[m]["low"] > 0
+
+        def gap(m: str) -> str:
+            d = paired[m]
+            return f"{m} {d['value']:+.3f} mm [{d['low']:+.3f}, {d['high']:+.3f}]" if d.get("low") is not None else m
+        how = "the paired 95% interval"
+    else:
+        def apart(m: str) -> bool:
+            return bound(m, "low") > bound(best, "high")
+
+        def gap(m: str) -> str:
+            return f"{m} {cell(m)}"
+        how = "its 95% interval"
+    tied = [best] + [m for m in order[1:] if not apart(m)]
+    if len(tied) == 1:
+        return Recommendation(best, key, f"Recommended for this database: {best}, the lowest {label} "
+                                         f"({cell(best)}); every other method is higher beyond {how} "
+                                         f"(next: {gap(order[1])}).")
+    rank = {m: k for k, m in enumerate(SIMPLEST_FIRST)}
+    choice = min(tied, key=lambda m: rank.get(m, len(rank)))
+    others = ", ".join(gap(m) for m in tied if m != best)
+    lowest = f"{best} has the lowest {label} ({cell(best)}), but {how} does not tell it from {others}"
+    if choice == best:
+        return Recommendation(choice, key, f"Recommended for this database: {choice}; {lowest}, and it is the "
+                                           "simplest and fastest of these.")
+    return Recommendation(choice, key, f"Recommended for this database: {choice}, the simplest and fastest of the "
+                                       f"tied methods ({label} {cell(choice)}); {lowest}.")
 
 
 def evaluate(db_path: Path, corpus: Path, settings: EvaluateSettings, synth: SynthesizeSettings,
@@ -546,16 +627,19 @@ def evaluate(db_path: Path, corpus: Path, settings: EvaluateSettings, synth: Syn
              db: MotionDatabase | None = None, tc=None, with_baseline: bool = True,
              truth: Path | None = None, trajectory=None,
              trajectory_settings: TrajectorySettings | None = None) -> tuple[dict, list[dict]]:
-    """Returns (metrics per method, per-sentence records with the curves to plot).
+    """Returns (metrics per row, per-sentence records with the curves to plot).
 
-    ``with_baseline=False`` evaluates the DP alone against the noisy capture (tune leaves the
-    baselines and figures out of its many evaluations). ``truth``: a corpus folder with clean
-    ground truth (:class:`TruthFolder`), which adds the clean-truth figures, the ``openfacefx``
-    baseline and the ``capture`` / ``clean`` references. Metrics per method: ``overall``,
-    ``per_emotion``, ``per_sentence`` as before, and ``figures`` (with intervals); under
-    ``"_figures"`` the table's meta (labels, skipped baselines and why). ``trajectory``: a
-    TrajectoryModel trained on ``db`` (with ``trajectory_settings``) adds the ``trajectory`` method
-    (only with the baselines)."""
+    The members of ``settings.methods`` (``dp`` always) are scored, the ``mean`` and
+    ``coarticulation`` members with their per-phone ablations. ``with_baseline=False`` evaluates
+    the DP alone against the noisy capture (tune leaves the other methods and figures out of its
+    many evaluations). ``truth``: a corpus folder with clean ground truth (:class:`TruthFolder`),
+    which adds the clean-truth figures, the ``openfacefx`` baseline and the ``capture`` / ``clean``
+    references. Metrics per row: ``overall``, ``per_emotion``, ``per_sentence``, and ``figures``
+    (with intervals); under ``"_figures"`` the table's meta (labels, skipped methods and why, the
+    :class:`Recommendation` as ``recommendation``). ``trajectory``: a TrajectoryModel trained on
+    ``db`` (with ``trajectory_settings``) adds the ``trajectory`` member (only with the others)."""
+    from .config import Config
+
     db = db or MotionDatabase.read(db_path)
     for name in tuple(settings.lip_markers) + (settings.plot_marker,):
         if name not in db.marker_names:
@@ -563,45 +647,61 @@ def evaluate(db_path: Path, corpus: Path, settings: EvaluateSettings, synth: Syn
     folder = TruthFolder.open(truth, db.marker_names, normalize_settings) if truth is not None else None
     sentences = sentences if sentences is not None else heldout(corpus, db, settings.split, normalize_settings, folder)
     with_clean = folder is not None and all(s.clean is not None for s in sentences)
-    if tc is None:
-        tc = db.transition_costs(synth, use_opencl(synth.use_opencl))
+    method_settings = MethodSettings(synth, trajectory_settings or Config.load().settings("trajectory"),
+                                     CoarticulationSettings(iterations=settings.dominance_iterations))
+    wanted = ("dp",) + tuple(m for m in settings.methods if m != "dp") if with_baseline else ("dp",)
     skipped = {}
-    baselines: tuple[str, ...] = ()
+    members: dict[str, Member] = {}
+    for name in MEMBER_ROW:  # the report's order
+        if name not in wanted:
+            continue
+        method = get_method(name)
+        if name == "trajectory":
+            if trajectory is None:
+                skipped["trajectory"] = "give a model trained on this database with --trajectory (facesynth train-trajectory)"
+                continue
+            if trajectory.fps != db.fps or list(trajectory.marker_names) != list(db.marker_names):
+                raise InputError("evaluate: the trajectory model's markers or capture rate are not the database's; "
+                                 "train it on this database with `facesynth train-trajectory`.")
+            members[name] = Member(method, trajectory)
+        elif name == "coarticulation":
+            members[name] = Member(method, method.fit(db, method_settings, where=str(db_path))[0])
+        else:
+            if tc is None:
+                tc = db.transition_costs(synth, use_opencl(synth.use_opencl))
+            members[name] = Member(method, db, tc if name in SEARCHES else None)
+    ablations: dict[str, DominanceModel | None] = {}
+    if "mean" in members:
+        ablations["baseline"] = None
+    if "coarticulation" in members:
+        ablations["dominance"] = fit_dominance(training_sentences(db, by_emotion=False), db.fps, settings.dominance_iterations)
     rig = vertices = None
     if with_baseline:
-        baselines = ("greedy", "baseline", "baseline_emotion", "dominance", "dominance_emotion")
         missing = "it needs the clean truth folder (--truth), which holds the rig's marker binding" if not with_clean else openfacefx_missing()
         if missing is None:
             from .facerig import load_face_rig
 
             rig, vertices = load_face_rig(), folder.vertices(db.marker_names)
-            baselines += ("openfacefx",)
         else:
             skipped["openfacefx"] = missing
-        if trajectory is not None:
-            if trajectory.fps != db.fps or list(trajectory.marker_names) != list(db.marker_names):
-                raise InputError("evaluate: the trajectory model's markers or capture rate are not the database's; "
-                                 "train it on this database with `facesynth train-trajectory`.")
-            baselines += ("trajectory",)
-        else:
-            skipped["trajectory"] = "give a model trained on this database with --trajectory (facesynth train-trajectory)"
+    rows = [MEMBER_ROW[m] for m in members]
+    order = ["dp", "greedy", "baseline", "baseline_emotion", "dominance", "dominance_emotion", "openfacefx", "trajectory"]
+    present = set(rows) | set(ablations) | ({"openfacefx"} if rig is not None else set())
     references = (REFERENCES if with_clean else ("capture",)) if with_baseline else ()
-    per_method: dict[str, list[dict]] = {m: [] for m in ("dp",) + baselines + references}
-    dominance = {by: fit_dominance(training_sentences(db, by_emotion=by), db.fps, settings.dominance_iterations)
-                 for by in (False, True)} if with_baseline else {}
+    per_method: dict[str, list[dict]] = {m: [] for m in [r for r in order if r in present] + list(references)}
     classifier = EmotionClassifier(db, settings.classifier_frames, settings.seed) if with_baseline else None
     k = db.marker_names.index(settings.plot_marker)
     records = []
     for s in progress(sentences, "evaluate"):
-        outputs, extra = method_outputs(db, s, synth, tc, baselines, dominance, settings, rig, vertices,
-                                        (trajectory, trajectory_settings) if "trajectory" in baselines else None)
+        outputs, extra = method_outputs(db, s, members, method_settings, ablations, rig, vertices, str(db_path))
         if "capture" in references:
             outputs["capture"] = s.truth
         if "clean" in references:
             outputs["clean"] = s.clean
         record = {"take": s.take, "emotion": s.emotion, "fps": db.fps, "truth": (s.clean if with_clean else s.truth)[:, k]}
         boundaries = phone_boundaries(s.utterance, db.fps)
-        for method, markers in outputs.items():
+        for method in per_method:
+            markers = outputs[method]
             m = sentence_metrics(markers, s.truth, s.utterance, db.fps, db.marker_names, settings)
             m.update(take=s.take, emotion=s.emotion)
             m.update({key: v for key, v in extra.get(method, {}).items() if key != "joins"})
@@ -619,17 +719,27 @@ def evaluate(db_path: Path, corpus: Path, settings: EvaluateSettings, synth: Syn
                 record[method] = markers[:, k]
         records.append(record)
     metrics: dict[str, dict] = {}
-    for method, rows in per_method.items():
-        emotions = sorted({r["emotion"] for r in rows})
-        public = [{key: v for key, v in r.items() if not key.startswith("_")} for r in rows]
-        metrics[method] = {"overall": aggregate(rows),
-                           "per_emotion": {e: aggregate([r for r in rows if r["emotion"] == e]) for e in emotions},
+    for method, rows_of in per_method.items():
+        emotions = sorted({r["emotion"] for r in rows_of})
+        public = [{key: v for key, v in r.items() if not key.startswith("_")} for r in rows_of]
+        metrics[method] = {"overall": aggregate(rows_of),
+                           "per_emotion": {e: aggregate([r for r in rows_of if r["emotion"] == e]) for e in emotions},
                            "per_sentence": public}
     if with_baseline:
         for method, entry in figures(per_method, settings, with_clean).items():
             metrics[method]["figures"] = entry
+        index = resamples(len(sentences), settings.bootstrap_resamples, settings.seed)  # the figures' resamples
+
+        def difference(key: str, other: str, best: str) -> dict:
+            stat = FIGURES[key][1]
+            return paired_difference(lambda idx: stat(per_method[other], idx),
+                                     lambda idx: stat(per_method[best], idx), len(sentences), index)
+
+        choice = recommend({r: metrics[r]["figures"] for r in metrics if "figures" in metrics[r]},
+                           {m: MEMBER_ROW[m] for m in members}, difference)
         metrics["_figures"] = {"labels": {key: label for key, (label, _, _, _) in FIGURES.items()},
                                "lower_is_better": {key: lower for key, (_, _, _, lower) in FIGURES.items()},
                                "clean_truth": with_clean, "skipped": skipped,
-                               "classifier_emotions": classifier.emotions}
+                               "classifier_emotions": classifier.emotions,
+                               "recommendation": dataclasses.asdict(choice)}
     return metrics, records

@@ -19,6 +19,7 @@ from click.testing import CliRunner
 from facesynth import check
 from facesynth.artifacts import SCHEMAS, input_record
 from facesynth.cli import main
+from facesynth.methods import MethodSettings
 from facesynth.model import spec
 
 DOC = Path(__file__).resolve().parents[1] / "docs" / "file-format.md"
@@ -31,6 +32,7 @@ def written(tiny_corpus, tiny_artifacts, tiny_db, held_out_take, config, tmp_pat
         capture,
         deform,
         expression,
+        fit_method,
         head_motion,
         isomap,
         keyshapes,
@@ -69,8 +71,15 @@ def written(tiny_corpus, tiny_artifacts, tiny_db, held_out_take, config, tmp_pat
     rig_mesh.run(out["curves"], out["rig_mesh"])
     out["trajectory"], out["trajectory_motion"] = d / "traj.h5", d / "traj_motion.h5"
     train_trajectory.run(tiny_db, out["keyshapes"], out["trajectory"], config.settings("trajectory"))
-    synthesize.run_trajectory(out["trajectory"], out["trajectory_motion"], config.settings("trajectory"), 30.0,
-                              config.settings("ingest"), config.settings("align"), phones_path=tg)
+    every = MethodSettings.of(config)
+    synthesize.run(out["trajectory"], out["trajectory_motion"], every, config.settings("ingest"), config.settings("align"),
+                   method="trajectory", phones_path=tg)
+    out["coarticulation"], out["coarticulation_motion"], out["mean_motion"] = d / "coart.h5", d / "coart_motion.h5", d / "mean.h5"
+    fit_method.run("coarticulation", tiny_db, out["coarticulation"],
+                   dataclasses.replace(every, coarticulation=dataclasses.replace(every.coarticulation, iterations=5)))
+    for name, source in (("coarticulation", out["coarticulation"]), ("mean", tiny_db)):
+        synthesize.run(source, out[f"{name}_motion"], every, config.settings("ingest"), config.settings("align"),
+                       method=name, phones_path=tg)
     return out
 
 
@@ -116,7 +125,8 @@ def test_the_specification_covers_every_kind_at_its_schema():
 
 @pytest.mark.parametrize("name", ["corpus", "normalized", "pca", "motiondb", "pruned", "isomap", "motion", "greedy",
                                   "capture", "meshanim", "expression", "restyle", "headmotion", "keyshapes", "curves",
-                                  "retargeted", "rig_mesh", "trajectory", "trajectory_motion"])
+                                  "retargeted", "rig_mesh", "trajectory", "trajectory_motion", "coarticulation",
+                                  "coarticulation_motion", "mean_motion"])
 def test_every_kind_written_by_its_stage_checks_clean(written, name):
     report = check.check_file(written[name])
     assert report.problems == []
@@ -204,7 +214,7 @@ DAMAGES = {
                        "`facesynth ingest`."),
     "an unknown kind": ("pca", lambda f: f.attrs.__setitem__("facesynth_kind", "wireframe"),
                         "/: unknown kind 'wireframe'; facesynth writes corpus, normalized, pca, motiondb, isomap, "
-                        "motion, meshanim, expression, headmotion, curves, keyshapes, trajectory."),
+                        "motion, meshanim, expression, headmotion, curves, keyshapes, trajectory, coarticulation."),
     "a capture without its take": ("capture", lambda f: f.attrs.__delitem__("take"),
                                    "/: missing attribute 'take' (str: the captured take)."),
 }

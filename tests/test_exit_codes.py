@@ -134,7 +134,7 @@ def test_bad_config_file_value_stays_bad_input(tiny_artifacts, tmp_path):
 def test_set_for_a_section_the_command_does_not_read(tiny_db, utterance, tmp_path):
     r = _run("synthesize", tiny_db, "--phonemes", utterance[0], "-o", tmp_path / "m.h5", "--set", "deform.sigma=3")
     _is_error(r, 2, "--set deform.sigma=3: [deform] is read by facesynth deform, facesynth batch; facesynth synthesize reads "
-                    "[synthesize], [ingest], [align], [trajectory], so this setting would be ignored.")
+                    "[synthesize], [ingest], [align], [trajectory], [coarticulation], so this setting would be ignored.")
     assert not (tmp_path / "m.h5").exists()
     r = _run("db", "show", tiny_db, "--set", "synthesize.alpha1=3")
     _is_error(r, 2, "is read by facesynth synthesize, facesynth suggest", "facesynth db show reads no settings")

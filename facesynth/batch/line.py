@@ -1,9 +1,12 @@
-"""One line of a batch, done in a Dask worker process: align (when no alignment is given; a
-line without text is recognised first, :mod:`facesynth.recognition`), synthesize, write the
-asked outputs, record a manifest.
+"""One line of a batch, done in a Dask worker process: the utterance read (its alignment, or its
+audio aligned to its text, or recognised when there is none) and synthesized by the job's
+method through the shared core (:mod:`facesynth.methods.core`: the same transcript-mismatch
+policy, emotion names, memory check and method code as ``facesynth synthesize``), under the
+job's ``[limits]``; then the asked outputs and a manifest.
 
-State kept per worker process (never shipped with a task): the motion database and its
-transition costs, read once per database file (:func:`database`), the mesh bound to the
+State kept per worker process (never shipped with a task): the method's source (the motion
+database, or its fitted model) and what the method prepares from it (the searches' transition
+costs), read once per file (:func:`database`), the mesh bound to the
 markers (:func:`bound_mesh`) and, through :mod:`facesynth.opencl`, the OpenCL context. The
 caches are keyed by the file's path, size and modification time (and the settings), so a
 database rebuilt between two batches on a long-lived cluster is read again.
@@ -25,15 +28,15 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from .. import __version__
-from ..alignment import AlignmentFailed
+from .. import __version__, methods
 from ..artifacts import atomic_path, sha256_of
-from ..config import AlignSettings, DeformSettings, IngestSettings, RenderSettings, SynthesizeSettings, settings_json
+from ..config import AlignSettings, DeformSettings, IngestSettings, LimitsSettings, RenderSettings, settings_json
 from ..errors import FacesynthError, InputError
 from ..formats.audio import read_audio
-from ..formats.labels import Segment, read_phone_segments, write_textgrid
-from ..phonemes import PAU, map_phones
-from ..recognition import align_or_recognize
+from ..formats.labels import write_textgrid
+from ..limits import using
+from ..methods import MethodSettings, core
+from ..phonemes import PAU
 from .script import Line
 
 #: Output kinds and the file each writes, by line id.
@@ -44,20 +47,25 @@ SUFFIXES = {"motion": ".motion.h5", "anim": ".anim.h5", "avi": ".avi"}
 class Job:
     """What every line of one batch shares: inputs by path, settings, and what to write.
 
-    ``db_sha256`` is the database's sha256, computed once by the client; ``mesh`` and
-    ``binding`` are needed for the ``anim`` and ``avi`` outputs; ``redo`` (``--overwrite``)
-    redoes lines whose manifest matches.
+    ``method``: the member of the method family every line is synthesized by, ``db`` its source
+    (the motion database, or the method's fitted model), ``db_sha256`` that file's sha256,
+    computed once by the client; ``settings`` the methods' settings; ``limits`` the command's
+    ``[limits]``, put in force in the worker for each line; ``mesh`` and ``binding`` are needed
+    for the ``anim`` and ``avi`` outputs; ``redo`` (``--overwrite``) redoes lines whose manifest
+    matches.
     """
 
     db: Path
     db_sha256: str
     out_dir: Path
     outputs: tuple[str, ...]
-    synthesize: SynthesizeSettings
+    settings: MethodSettings
     ingest: IngestSettings
     align: AlignSettings
     deform: DeformSettings
     render: RenderSettings
+    limits: LimitsSettings
+    method: str = "dp"
     mesh: Path | None = None
     binding: Path | None = None
     redo: bool = False
@@ -98,23 +106,22 @@ def _file_key(path: Path) -> tuple:
     return (str(Path(path).resolve()), st.st_size, st.st_mtime_ns)
 
 
-def database(path: Path, settings: SynthesizeSettings):
-    """(MotionDatabase, transition costs for ``settings``), read once per worker process and file
-    version; returns the seconds spent loading (0 when cached) as a third item."""
-    from ..model.motiondb import MotionDatabase
-    from ..opencl import use_opencl
-
-    key = ("db", _file_key(path), settings_json(settings))
+def database(path: Path, method: str, settings: MethodSettings):
+    """(the method's source read from ``path``, what the method prepares from it for ``settings``),
+    read once per worker process, method and file version; returns the seconds spent loading (0
+    when cached) as a third item."""
+    member = methods.get(method)
+    key = ("db", method, _file_key(path), settings_json(member.recorded_settings(settings)))
     if key not in _CACHE:
         started = time.perf_counter()
-        for old in [k for k in _CACHE if k[0] == "db"]:  # one database per worker at a time
+        for old in [k for k in _CACHE if k[0] == "db"]:  # one source per worker at a time
             del _CACHE[old]
-        db = MotionDatabase.read(path)
-        tc = db.transition_costs(settings, use_opencl(settings.use_opencl))
-        _CACHE[key] = (db, tc, time.perf_counter() - started)
+        source = member.read(path)
+        prepared = member.prepare(source, settings)
+        _CACHE[key] = (source, prepared, time.perf_counter() - started)
         return _CACHE[key]
-    db, tc, _ = _CACHE[key]
-    return db, tc, 0.0
+    source, prepared, _ = _CACHE[key]
+    return source, prepared, 0.0
 
 
 def bound_mesh(mesh: Path, binding: Path, marker_names: list[str], settings: DeformSettings):
@@ -142,8 +149,9 @@ def input_key(line: Line, job: Job) -> dict:
         files.update(mesh=job.mesh, binding=job.binding)
     key: dict[str, object] = {name: sha256_of(p) for name, p in files.items() if p is not None}
     key.update(db=job.db_sha256, text=_text_sha(line.text) if line.alignment is None else "", emotion=line.emotion or "",
-               outputs=sorted(job.outputs), version=__version__,
-               settings={"synthesize": settings_json(job.synthesize), "ingest": settings_json(job.ingest),
+               outputs=sorted(job.outputs), version=__version__, method=job.method,
+               settings={"synthesize": settings_json(job.settings.synthesize), "ingest": settings_json(job.ingest),
+                         "method": settings_json(methods.get(job.method).recorded_settings(job.settings)),
                          "align": settings_json(job.align) if line.alignment is None else "",
                          "deform": settings_json(job.deform) if set(job.outputs) & {"anim", "avi"} else "",
                          "render": settings_json(job.render) if "avi" in job.outputs else ""})
@@ -173,16 +181,20 @@ def _check_inputs(line: Line, job: Job) -> str:
             raise InputError(f"{name} file {p} not found; check the path (relative to the script's folder).")
     if line.emotion and line.emotions:
         raise InputError("both an emotion and an emotions file are given; give one.")
-    name = (line.emotion or "neutral").strip().lower()
-    name = dict(job.ingest.emotion_aliases).get(name, name)
-    if name not in job.ingest.emotions:
-        raise InputError(f"unknown emotion {line.emotion!r}; use one of {', '.join(job.ingest.emotions)}.")
-    return name
+    if line.constraints is not None:
+        methods.get(job.method).refuse_constraints({0: 0})
+    return core.emotion_name(line.emotion or "neutral", job.ingest.emotions, job.ingest.emotion_aliases,
+                             "the emotion column")
 
 
 def run_line(line: Line, job: Job) -> LineResult:
-    """Do one line; never raises for a problem of the line's inputs (the result says why it
-    failed). A bug still raises, so the runner records its traceback."""
+    """Do one line under the job's ``[limits]``; never raises for a problem of the line's inputs
+    (the result says why it failed). A bug still raises, so the runner records its traceback."""
+    with using(job.limits):
+        return _run_line(line, job)
+
+
+def _run_line(line: Line, job: Job) -> LineResult:
     started, cpu = time.perf_counter(), time.process_time()
     result = LineResult(line.id, line.row, "failed", worker=f"pid {os.getpid()}")
     old = key = None
@@ -234,61 +246,51 @@ def _read_manifest(path: Path) -> dict | None:
 
 
 def _do_line(line: Line, job: Job, emotion: str, key: dict, outputs: dict[str, Path], result: LineResult) -> None:
-    from ..search.inputs import apply_emotions, read_constraints, utterance
-    from ..search.synthesis import as_motion, synthesize
-
     t0 = time.perf_counter()
     samples, rate = read_audio(line.audio)
     result.audio_s = len(samples) / rate
+    one_emotion = None if line.emotions is not None else emotion
     if line.alignment is not None:
-        segments = read_phone_segments(line.alignment, job.ingest.phone_tiers)
-        labels = map_phones([s.label for s in segments], str(line.alignment), [s.start for s in segments])
-        segments = [Segment(s.start, s.end, label) for s, label in zip(segments, labels)]
+        read = core.read_utterance(job.ingest, phones_path=line.alignment, emotions_path=line.emotions,
+                                   emotion=one_emotion)
         result.method = "given"
-        if segments[-1].end > result.audio_s + job.ingest.max_audio_mismatch_s:
-            raise InputError(f"the alignment {line.alignment} ends at {segments[-1].end:.2f} s, after the audio "
+        end = float(read.utterance.ends[-1])
+        if end > result.audio_s + job.ingest.max_audio_mismatch_s:
+            raise InputError(f"the alignment {line.alignment} ends at {end:.2f} s, after the audio "
                              f"({result.audio_s:.2f} s); give the alignment of this audio.")
-    else:
-        try:  # a line without text is recognised (the script reader makes an empty cell None)
-            aligned = align_or_recognize(samples, rate, line.text, settings=job.align, where=str(line.audio))
-        except AlignmentFailed as exc:
-            raise InputError(str(exc)) from None
-        segments, result.method, result.warnings = aligned.phones, aligned.method, list(aligned.warnings)
-        result.recognized = aligned.recognized
-        # a given transcript that misses speech is the user's to fix; recognised words that miss
-        # some are only warned about (the summary lists the warnings)
-        if aligned.mismatch and not aligned.recognized:
-            raise InputError("the transcript does not match the speech: " + "; ".join(aligned.warnings))
-        aligned_words = aligned.words
-    result.phones = sum(s.label != PAU for s in segments)
+    else:  # a line without text is recognised (the script reader makes an empty cell None)
+        read = core.read_utterance(job.ingest, audio=line.audio, text=line.text, align=job.align,
+                                   emotions_path=line.emotions, emotion=one_emotion, samples=(samples, rate))
+        assert read.alignment is not None  # audio is aligned or recognised
+        result.method, result.recognized = read.alignment.method, read.alignment.recognized
+    result.warnings = list(read.warnings)
+    utt = read.utterance
+    result.phones = sum(p != PAU for p in utt.phones)
     result.align_s = time.perf_counter() - t0
 
     t0 = time.perf_counter()
-    db, tc, result.load_s = database(job.db, job.synthesize)
-    utt = utterance([s.label for s in segments], [s.start for s in segments], [s.end for s in segments])
-    if line.emotions is not None:
-        apply_emotions(utt, line.emotions, job.ingest.emotions, job.ingest.emotion_aliases)
-    else:
-        utt.emotions = [emotion] * len(utt)
-    constraints = read_constraints(line.constraints, utt, db.nodes.phone) if line.constraints else {}
-    res = synthesize(db, utt, constraints, job.synthesize, tc=tc)
-    motion = as_motion(db, utt, res, job.synthesize)
+    member = methods.get(job.method)
+    source, prepared, result.load_s = database(job.db, job.method, job.settings)
+    constraints = core.constraints_for(member, source, line.constraints, utt)
+    motion = core.synthesize(member, source, utt, job.settings, constraints, prepared=prepared,
+                             source_where=str(job.db), where=str(line.alignment or line.audio)).motion
     result.synthesize_s = time.perf_counter() - t0 - result.load_s
 
     t0 = time.perf_counter()
-    if line.alignment is None:
+    if read.alignment is not None:
         grid = job.out_dir / f"{line.id}.TextGrid"
         with atomic_path(grid, overwrite=True) as tmp:
-            write_textgrid(tmp, {"phones": segments, "words": aligned_words} if aligned_words else {"phones": segments},
-                           segments[-1].end)
+            segments, words = read.alignment.phones, read.alignment.words
+            write_textgrid(tmp, {"phones": segments, "words": words} if words else {"phones": segments}, segments[-1].end)
         result.outputs.append(grid.name)
-    records = [{"path": str(job.db), "kind": "motiondb", "sha256": job.db_sha256}]
+    records = [{"path": str(job.db), "kind": member.source_kind, "sha256": job.db_sha256}]
     records += [{"path": str(p), "kind": None, "sha256": key[name]}
                 for name, p in (("audio", line.audio), ("alignment", line.alignment), ("emotions", line.emotions),
                                 ("constraints", line.constraints)) if p is not None]
     motion_path = outputs.get("motion") or job.out_dir / f"{line.id}.motion.h5.part-{os.getpid()}"
     keep_motion = "motion" in outputs
-    motion.write(motion_path, config=settings_json(job.synthesize), records=records, overwrite=True)
+    motion.write(motion_path, config=settings_json(member.recorded_settings(job.settings)), records=records,
+                 overwrite=True)
     if keep_motion:
         result.outputs.append(motion_path.name)
     try:

@@ -20,6 +20,7 @@ SCHEMAS: dict[str, int] = {
     "curves": 1,
     "keyshapes": 1,
     "trajectory": 1,
+    "coarticulation": 1,
 }
 
 #: The commands that write each kind, for messages that say what to do ("pass the output of

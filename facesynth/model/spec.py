@@ -63,6 +63,7 @@ SYMBOLS: dict[str, str] = {
     "Kt": "key-shapes of a trajectory model (every emotion's, joined)",
     "Ph": "phones with a Gaussian in a trajectory model",
     "Pe": "(phone, emotion) pairs with a Gaussian of their own in a trajectory model",
+    "Pc": "phone types of a coarticulation model (a phone with its emotion, or the pause)",
 }
 
 #: The largest magnitude of any float in an artifact where numbers must be finite (mm, s, costs,
@@ -390,7 +391,11 @@ MOTION = Kind("motion", SCHEMAS["motion"], (
     "--method trajectory` writes the `trajectory` variant (`source = \"trajectory\"`: no `coefficients`; "
     "`keyshape_weights`, the path of Huang et al. Eq. 7; `path/node` and the provenance's node, take and source "
     "frame are -1, `path/node_phone` and `node_emotion` name the Gaussian used, `cost_oc` and `cost_tc` hold "
-    "Eq. 6's data and smoothness terms per phone, `cost_emp` and `cost_block` zero; the head does not move)."), (
+    "Eq. 6's data and smoothness terms per phone, `cost_emp` and `cost_block` zero; the head does not move). "
+    "`--method mean` and `--method coarticulation` write the `synthesis` variant without motion nodes: "
+    "`path/search` names the method, `path/node` and the provenance's node, take and source frame are -1, "
+    "`node_phone` / `node_emotion` the phone and emotion whose pose was used ('' for a phone's pose over every "
+    "emotion), the cost terms and `total_cost` zero; the head does not move."), (
     Dataset("markers", "float32", ("Fo", "M", 3), "the motion at the output rate, head frame", "mm",
             (MM, _fps("output rate, frames/s")), finite="synthesis"),
     Dataset("markers_capture", "float32", ("F", "M", 3), "the motion at the capture rate, before down-sampling", "mm",
@@ -422,7 +427,8 @@ MOTION = Kind("motion", SCHEMAS["motion"], (
         Dataset("cost_block", "float32", ("U",), "blocking penalty of Eq. 10"),
     ), attrs=(Attr("total_cost", "float", "Eq. 4 along the path (trajectory: Eq. 6 of Huang et al.)"),
               Attr("non_captured_joins", "int", "joins without a captured predecessor/successor link", ge=0),
-              Attr("search", "str", "the search that chose the path (`dp`, `greedy` or `trajectory`)"),
+              Attr("search", "str", "the method that made the motion (`dp`, `greedy`, `trajectory`, `coarticulation` "
+                   "or `mean`)"),
               Attr("device", "str", "where the search ran"),
               Attr("device_reason", "str", "why that device (the OpenCL choice, or why NumPy)")), required="synthesis"),
     Group("provenance", "provenance", "where each capture-rate frame came from", (
@@ -570,6 +576,24 @@ TRAJECTORY = Kind("trajectory", SCHEMAS["trajectory"], (
           Attr("fit_rms", "float", "RMS per marker (mm) of the training frames' reconstruction from the weights", ge=0),
           Attr("covariance", "str", "the covariance's form", choices=("diagonal",))))
 
+COARTICULATION = Kind("coarticulation", SCHEMAS["coarticulation"], (
+    "The fitted Cohen-Massaro coarticulation model (Cohen & Massaro 1993, exponent 1): per phone type (a "
+    "`phone|emotion` label; `pau` one type) a target pose in the PCA coefficients of the database it was "
+    "fitted on, a dominance magnitude and a rate; with that PCA model and the rest pose, so that "
+    "`facesynth synthesize --method coarticulation` needs this file alone. The pose at time t is "
+    "`sum_i D_i(t) targets[i] / sum_i D_i(t)` over the utterance's tokens i, with "
+    "`D_i(t) = magnitude * exp(-rate * |t - centre_i|)`, reconstructed through the PCA model (Eq. 11)."), (
+    PCA_MODEL,
+    Dataset("labels", "str", ("Pc",), "phone types (`aa|happy`, `pau`)"),
+    Dataset("targets", "float64", ("Pc", "K"), "target pose of each type, PCA coefficients"),
+    Dataset("magnitude", "float64", ("Pc",), "dominance magnitude alpha", ge=0),
+    Dataset("rate", "float64", ("Pc",), "dominance rate theta", "1/s", (_units("1/s"),), ge=0),
+    Dataset("marker_names", "str", ("M",), "marker order"),
+    Dataset("reference", "float32", ("M", 3), "rest pose, head frame", "mm", (MM,)),
+), attrs=(_fps("capture rate of the training frames, frames/s"),
+          Attr("iterations", "int", "L-BFGS-B iterations allowed to the fit", ge=1),
+          Attr("fit_rms", "float", "RMS per marker (mm) of the fit on the training frames", ge=0)))
+
 #: Every kind's specification at its current schema.
 EXPRESSION = Kind("expression", SCHEMAS["expression"], (
     "A bilinear style/content model of marker frames (Chuang & Bregler 2005, §3, Eq. 4): "
@@ -607,7 +631,8 @@ HEADMOTION = Kind("headmotion", SCHEMAS["headmotion"], (
 ))
 
 KINDS: dict[str, Kind] = {k.name: k for k in (CORPUS, NORMALIZED, PCA, MOTIONDB, ISOMAP, MOTION, MESHANIM, EXPRESSION,
-                                              HEADMOTION, CURVES, KEYSHAPES, TRAJECTORY)}
+                                              HEADMOTION, CURVES, KEYSHAPES, TRAJECTORY,
+                                              COARTICULATION)}
 
 BLOCKS: tuple[Block, ...] = (TABLES, HEAD_FRAMES, PCA_MODEL)
 

@@ -1,7 +1,7 @@
 """The compact key-shape trajectory model and the ``trajectory`` artifact (Huang et al. §5.4):
 per phone, and per (phone, emotion) where the training data allow, a Gaussian (mean and diagonal
 covariance) of the key-shape weights, with the key-shapes themselves, so that a whole utterance
-is synthesized from this file alone (:mod:`facesynth.motion.trajectory`). Written by
+is synthesized from this file alone (:mod:`facesynth.methods.trajectory`). Written by
 ``facesynth train-trajectory``; read by ``facesynth synthesize --method trajectory``.
 
 Key-shapes: one joint set, the union of every emotion's key-shapes of a ``keyshapes`` artifact;
@@ -101,7 +101,7 @@ class TrajectoryModel:
                        read(f, "samples"), read_strings(f, "pair_phone"), read_strings(f, "pair_emotion"),
                        read(f, "pair_means"), read(f, "pair_variances"), read(f, "pair_tokens"),
                        read(f, "pair_samples"), float(attr(f, "fps")), sampling, int(attr(f, "min_tokens")),
-                       float(attr(f, "variance_floor")), float(attr(f, "fit_rms")), _records(f))
+                       float(attr(f, "variance_floor")), float(attr(f, "fit_rms")), stored_records(f))
 
     def write(self, out: Path, *, config: str, inputs, overwrite: bool = False) -> None:
         """Write a ``trajectory`` artifact to ``out``."""
@@ -128,7 +128,7 @@ class TrajectoryModel:
             g.create_dataset("pair_samples", data=np.asarray(self.pair_samples, np.int64))
 
 
-def _records(f) -> list[dict]:
+def stored_records(f) -> list[dict]:
     """The ``inputs`` records of an open artifact; [] when they cannot be parsed."""
     try:
         records = json.loads(str(attr(f, "inputs")))

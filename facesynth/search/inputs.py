@@ -57,7 +57,9 @@ def read_utterance(phones_path: Path, tier_names=("phones",)) -> Utterance:
     return utterance(labels, [s.start for s in segs], [s.end for s in segs])
 
 
-def _emotion_name(raw: str, emotions, aliases, where: str) -> str:
+def emotion_name(raw: str, emotions, aliases, where: str) -> str:
+    """The emotion called ``raw`` (case-insensitive, aliases too: ``ingest.emotion_aliases``); an
+    InputError naming ``where`` and the known emotions otherwise."""
     name = raw.strip().lower()
     name = {k.lower(): v for k, v in aliases.items()}.get(name, name)
     if name not in emotions:
@@ -107,7 +109,7 @@ def apply_emotions(utt: Utterance, path: Path, emotions, aliases) -> None:
         if e <= first or s >= last:
             raise InputError(f"{where}: the emotion span {s:g} to {e:g} s lies outside the utterance "
                              f"({first:.3f} to {last:.3f} s); give its start and end in seconds within it.")
-    names = [(s, e, _emotion_name(lab, emotions, aliases, where), where) for s, e, lab, where in spans]
+    names = [(s, e, emotion_name(lab, emotions, aliases, where), where) for s, e, lab, where in spans]
     mids = 0.5 * (utt.starts + utt.ends)
     for s, e, name, where in names:
         held = (s <= mids) & (mids < e)

@@ -12,11 +12,10 @@ from __future__ import annotations
 import threading
 import time
 from collections.abc import Callable
-from pathlib import Path
 
 import numpy as np
 
-from ..config import AlignSettings, IngestSettings, SynthesizeSettings
+from ..config import SynthesizeSettings
 from ..errors import UsageError
 from ..model.motion import Motion, Provenance, SearchPath
 from ..model.motiondb import MotionDatabase, Nodes
@@ -25,7 +24,7 @@ from ..motion.postprocess import concatenate, downsample
 from ..opencl import use_opencl
 from ..phonemes import PAU, viseme
 from .costs import StepCosts, path_terms, step_costs
-from .inputs import Utterance, apply_emotions, read_constraints, read_utterance, utterance
+from .inputs import Utterance
 
 
 def unseen_phones(utt: Utterance, db: MotionDatabase) -> dict[str, str]:
@@ -192,44 +191,6 @@ def render_path(db: MotionDatabase, utt: Utterance, path: np.ndarray, settings: 
             "non_captured_joins": joins, "take": take,
             "head_rotation": downsample(head_r, db.fps, settings.output_fps),
             "head_translation": downsample(head_t, db.fps, settings.output_fps)}
-
-
-def prepare(db: MotionDatabase | None, phones_path: Path | None, emotions_path: Path | None, constraints_path: Path | None,
-            ingest_settings: IngestSettings, audio: Path | None = None, text: str | None = None,
-            align_settings: AlignSettings | None = None) -> tuple[Utterance, dict[int, int]]:
-    """The utterance (phones read from ``phones_path``, or ``audio`` aligned to ``text``, or
-    recognised from ``audio`` alone when ``text`` is None, with ``align_settings``, which both
-    need) with its emotions, and its constraints by phone index (``db`` is needed only for
-    constraints)."""
-    if phones_path is not None and (audio is not None or text is not None):
-        raise UsageError("give the utterance's phones with --phonemes or with --audio (and --text), not both.")
-    if phones_path is not None:
-        utt = read_utterance(phones_path, ingest_settings.phone_tiers)
-    elif audio is not None:
-        import logging
-
-        from ..formats.audio import read_audio
-        from ..recognition import align_or_recognize
-
-        if align_settings is None:
-            raise TypeError("prepare: aligning audio needs align_settings")
-        samples, rate = read_audio(audio)
-        aligned = align_or_recognize(samples, rate, text, settings=align_settings, where=str(audio))
-        log = logging.getLogger(__name__)
-        if aligned.recognized:
-            log.info("%s: recognised: %s", audio, aligned.recognized)
-        for warning in aligned.warnings:
-            log.warning(warning)
-        segs = aligned.phones
-        utt = utterance([s.label for s in segs], [s.start for s in segs], [s.end for s in segs])
-    elif text is not None:
-        raise UsageError("--text says what --audio says; give --audio too (or the phones with --phonemes).")
-    else:
-        raise UsageError("give the utterance's phones with --phonemes, or the speech with --audio (and --text).")
-    if emotions_path is not None:
-        apply_emotions(utt, emotions_path, ingest_settings.emotions, ingest_settings.emotion_aliases)
-    constraints = read_constraints(constraints_path, utt, db.nodes.phone) if constraints_path else {}
-    return utt, constraints
 
 
 def as_motion(db: MotionDatabase, utt: Utterance, res: dict, settings: SynthesizeSettings) -> Motion:

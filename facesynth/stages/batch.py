@@ -1,7 +1,10 @@
 """``facesynth batch``: a script of dialogue lines -> per-line motion (and mesh animation,
 video) on Dask, with a summary of every line (see :mod:`facesynth.batch`).
 
-The script is checked first: a file without the required columns is refused before any work
+Every line is synthesized by one member of the method family (``method``: default
+``synthesize.search``, i.e. the DP) through the same shared core as ``facesynth synthesize``
+(:mod:`facesynth.methods.core`), under the command's ``[limits]``, which the job carries to the
+workers. The script is checked first: a file without the required columns is refused before any work
 (and before a cluster is started). Each line then runs as one task; the summary
 (``summary.csv``, ``summary.html``) lists status, the alignment method, phone count, timings
 and the reason of every failure.
@@ -14,6 +17,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
+from .. import limits, methods
 from ..artifacts import check_output_folder, open_artifact, sha256_of
 from ..batch.line import Job, LineResult
 from ..batch.report import write_summary
@@ -21,24 +25,32 @@ from ..batch.runner import dask_client, run_lines
 from ..batch.script import read_script
 from ..config import AlignSettings, BatchSettings, DeformSettings, IngestSettings, RenderSettings, SynthesizeSettings
 from ..errors import InputError, UsageError
+from ..methods import MethodSettings
 from ..progress import progress
 
 
-def prepare(script: Path, db: Path, out_dir: Path, settings: BatchSettings, synthesize: SynthesizeSettings,
+def prepare(script: Path, db: Path, out_dir: Path, settings: BatchSettings, synthesize: SynthesizeSettings | MethodSettings,
             ingest: IngestSettings, align: AlignSettings, deform: DeformSettings, render: RenderSettings, *,
-            mesh: Path | None = None, binding: Path | None = None, overwrite: bool = False):
-    """Check the request and read the script; returns (lines, Job). Creates ``out_dir``."""
+            method: str | None = None, mesh: Path | None = None, binding: Path | None = None, overwrite: bool = False):
+    """Check the request and read the script; returns (lines, Job). Creates ``out_dir``.
+    ``synthesize``: the :class:`MethodSettings`, or ``[synthesize]`` alone (the packaged defaults
+    for the rest); ``db``: the method's source (the motion database, or its fitted model). The
+    job carries the ``[limits]`` in force (:func:`facesynth.limits.current`)."""
+    if isinstance(synthesize, SynthesizeSettings):
+        synthesize = MethodSettings.packaged(synthesize=synthesize)
+    member = methods.get(method or synthesize.synthesize.search)
     if set(settings.outputs) & {"anim", "avi"} and (mesh is None or binding is None):
         raise UsageError("the anim and avi outputs need --mesh and --binding (e.g. corpus/face.obj and corpus/markers.csv).")
-    if "avi" in settings.outputs and abs(render.fps - synthesize.output_fps) > 1e-6:
-        raise InputError(f"render.fps ({render.fps:g}) differs from synthesize.output_fps ({synthesize.output_fps:g}); "
+    if "avi" in settings.outputs and abs(render.fps - synthesize.synthesize.output_fps) > 1e-6:
+        raise InputError(f"render.fps ({render.fps:g}) differs from synthesize.output_fps ({synthesize.synthesize.output_fps:g}); "
                          "set one to the other for the avi output.")
     lines = read_script(script)
-    open_artifact(db, "motiondb").close()
+    open_artifact(db, member.source_kind).close()
     check_output_folder(out_dir, "the batch outputs")
     out_dir.mkdir(parents=True, exist_ok=True)
     job = Job(db.resolve(), sha256_of(db), out_dir.resolve(), tuple(settings.outputs), synthesize, ingest, align,
-              deform, render, mesh.resolve() if mesh else None, binding.resolve() if binding else None, overwrite)
+              deform, render, limits.current(), member.name, mesh.resolve() if mesh else None,
+              binding.resolve() if binding else None, overwrite)
     return lines, job
 
 
@@ -63,14 +75,14 @@ class BatchResult:
     seconds: float
 
 
-def run(script: Path, db: Path, out_dir: Path, settings: BatchSettings, synthesize: SynthesizeSettings,
+def run(script: Path, db: Path, out_dir: Path, settings: BatchSettings, synthesize: SynthesizeSettings | MethodSettings,
         ingest: IngestSettings, align: AlignSettings, deform: DeformSettings, render: RenderSettings, *,
-        mesh: Path | None = None, binding: Path | None = None, scheduler: str | None = None, overwrite: bool = False,
-        on_result: Callable[[LineResult], None] | None = None, client=None) -> BatchResult:
+        method: str | None = None, mesh: Path | None = None, binding: Path | None = None, scheduler: str | None = None,
+        overwrite: bool = False, on_result: Callable[[LineResult], None] | None = None, client=None) -> BatchResult:
     """Run every line of ``script`` and write the summary into ``out_dir``. ``client``: an open
     ``distributed.Client`` to use instead of creating one (tests, notebooks)."""
-    lines, job = prepare(script, db, out_dir, settings, synthesize, ingest, align, deform, render, mesh=mesh,
-                         binding=binding, overwrite=overwrite)
+    lines, job = prepare(script, db, out_dir, settings, synthesize, ingest, align, deform, render, method=method,
+                         mesh=mesh, binding=binding, overwrite=overwrite)
     started = time.perf_counter()
     counts = {"ok": 0, "skipped": 0, "failed": 0}
 

@@ -14,7 +14,7 @@ import numpy as np
 from ..artifacts import atomic_folder, check_output_folder, sha256_of
 from ..config import EvaluateSettings, NormalizeSettings, SynthesizeSettings, TrajectorySettings
 from ..errors import InputError, OutputExistsError
-from ..evaluation import FIGURES, REFERENCES, evaluate
+from ..evaluation import FIGURES, MEMBER_ROW, REFERENCES, evaluate
 from ..model.trajectory import TrajectoryModel
 
 
@@ -59,6 +59,13 @@ def _cell(f: dict | None, decimals: int = 3) -> str:
     return f"{f['value']:.{decimals}f} [{f['low']:.{decimals}f}, {f['high']:.{decimals}f}]"
 
 
+def row_label(row: str) -> str:
+    """A row's name in the tables: the member of the method family it scores, where the row keeps
+    an older name ('baseline_emotion (mean)')."""
+    member = next((m for m, r in MEMBER_ROW.items() if r == row and m != r), None)
+    return f"{row} ({member})" if member else row
+
+
 def figure_rows(metrics: dict) -> tuple[list[str], list[str], list[list[str]], list[list[str]]]:
     """The table of figures: (figure keys shown, their labels, a row of cells per method with
     intervals, a row per baseline of paired differences dp - baseline). Methods in ``metrics``
@@ -67,7 +74,7 @@ def figure_rows(metrics: dict) -> tuple[list[str], list[str], list[list[str]], l
     methods = [m for m in methods if m not in REFERENCES] + [m for m in methods if m in REFERENCES]
     keys = [k for k in FIGURES if any(k in metrics[m]["figures"] for m in methods)]
     labels = [FIGURES[k][0] for k in keys]
-    rows = [[m] + [_cell(metrics[m]["figures"].get(k)) for k in keys] for m in methods]
+    rows = [[row_label(m)] + [_cell(metrics[m]["figures"].get(k)) for k in keys] for m in methods]
     diffs = [[f"dp − {m}"] + [_cell(metrics[m]["figures"].get(f"dp_minus.{k}")) for k in keys]
              for m in methods if m != "dp" and m not in REFERENCES]
     return keys, labels, rows, diffs
@@ -83,17 +90,19 @@ def markdown_table(metrics: dict, meta: dict) -> str:
     body = "".join("| " + " | ".join(r) + " |\n" for r in rows)
     dbody = "".join("| " + " | ".join(r) + " |\n" for r in diffs)
     skipped = "".join(f"\n*{m} not run:* {why}.\n" for m, why in meta.get("skipped", {}).items())
+    recommendation = f"\n{meta['recommendation']}\n" if meta.get("recommendation") else ""
     return (f"Held-out sentences: {meta['sentences']} (split '{meta['split']}'); value [bootstrap 95% interval over "
             f"sentences, {meta['bootstrap_resamples']} resamples]. Closure threshold {meta['closure_mm']:g} mm.\n\n"
             + head + body + "\nPaired differences (DP minus each baseline, same resamples):\n\n" + head.replace("| method |", "| difference |")
-            + dbody + skipped)
+            + dbody + skipped + recommendation)
 
 
 def write_report(folder: Path, metrics: dict, images: list[str], meta: dict) -> None:
     """Write ``metrics.json``, ``table.md`` and ``index.html`` (the table of figures with
     intervals, tables per method and emotion, the plots) to ``folder``."""
     extra = metrics.get("_figures", {})
-    meta = {**meta, "skipped": extra.get("skipped", {})}
+    meta = {**meta, "skipped": extra.get("skipped", {}),
+            "recommendation": extra.get("recommendation", {}).get("sentence", "")}
     methods = {m: v for m, v in metrics.items() if not m.startswith("_")}
     (folder / "metrics.json").write_text(json.dumps({**methods, "figures_meta": extra, "meta": meta}, indent=2, sort_keys=True),
                                          encoding="utf-8")
@@ -119,9 +128,11 @@ def write_report(folder: Path, metrics: dict, images: list[str], meta: dict) -> 
              "<style>body{font-family:sans-serif} table{border-collapse:collapse;margin:8px 0} td,th{border:1px solid #ccc;padding:3px 8px;text-align:right} td:first-child{text-align:left}</style>",
              f"<h1>Evaluation on {meta['sentences']} held-out sentences</h1>",
              f"<p>Database {html.escape(meta['db'])}; ground truth {html.escape(meta['heldout'])} (split '{meta['split']}'). "
-             "Baselines: <i>baseline</i>, the per-phoneme mean pose, linearly interpolated; <i>baseline_emotion</i>, the mean "
-             "pose per (phone, emotion); <i>dominance</i>, a Cohen-Massaro coarticulation model fitted on the training takes; <i>dominance_emotion</i>, the same "
-             "per (phone, emotion); <i>greedy</i>, Cao et al.'s greedy search on the same database; <i>trajectory</i>, Huang et "
+             "Methods (<code>facesynth synthesize --method NAME</code>): <i>dp</i>, the paper's search; <i>baseline_emotion</i> "
+             "(<i>mean</i>), the mean pose per (phone, emotion), linearly interpolated; <i>baseline</i>, the same per phone; "
+             "<i>dominance_emotion</i> (<i>coarticulation</i>), a Cohen-Massaro coarticulation model per (phone, emotion) "
+             "fitted on the training takes; <i>dominance</i>, the same per phone; "
+             "<i>greedy</i>, Cao et al.'s greedy search on the same database; <i>trajectory</i>, Huang et "
              "al.'s smooth path through per-(phone, emotion) Gaussians of key-shape weights (Eq. 6-7), trained on the same "
              "takes; <i>openfacefx</i>, the external "
              "text-driven lip-sync from the same phone timing through the face rig to the markers. References: <i>capture</i>, the "
@@ -135,11 +146,14 @@ def write_report(folder: Path, metrics: dict, images: list[str], meta: dict) -> 
                   "<table>" + head + "".join("<tr>" + "".join(f"<td>{html.escape(c)}</td>" for c in r) + "</tr>" for r in diffs) + "</table>"]
         parts += [f"<p><i>{html.escape(m)}</i> not run: {html.escape(why)}.</p>" for m, why in meta["skipped"].items()]
     parts += ["<h2>Overall (against the noisy capture)</h2>", table(lambda m: m["overall"])]
+
     emotions = sorted(next(iter(metrics.values()))["per_emotion"])
     for e in emotions:
         parts += [f"<h2>{html.escape(e)}</h2>", table(lambda m, e=e: m["per_emotion"][e])]
     parts.append(f"<h2>Lower-lip marker {html.escape(meta['plot_marker'])} (paper Figs. 15-16)</h2>")
     parts += [f"<p><img src='{html.escape(name)}'></p>" for name in images]
+    if meta.get("recommendation"):
+        parts += ["<h2>Recommendation</h2>", f"<p><b>{html.escape(meta['recommendation'])}</b></p>"]
     (folder / "index.html").write_text("\n".join(parts), encoding="utf-8")
 
 
@@ -170,9 +184,12 @@ class EvaluateResult:
     methods: per method, its overall metrics as metrics.json holds them (``rms_mm`` and
         ``velocity_rms_mm_s`` in mm and mm/s, ...), with ``figures`` (each a value and its
         bootstrap interval) where computed.
+    recommendation: the report's last sentence, recommending a method for this database from
+        the paired bootstrap intervals ('' when there is nothing to compare).
     """
 
     methods: dict[str, dict]
+    recommendation: str = ""
 
 
 def run(db_path: Path, corpus: Path, out_dir: Path, settings: EvaluateSettings, synth: SynthesizeSettings,
@@ -199,5 +216,6 @@ def run(db_path: Path, corpus: Path, out_dir: Path, settings: EvaluateSettings, 
                 "bootstrap_resamples": settings.bootstrap_resamples}
         write_report(tmp, metrics, images, meta)
     return EvaluateResult({m: {**v["overall"], **({"figures": v["figures"]} if "figures" in v else {})}
-                           for m, v in metrics.items() if not m.startswith("_")})
+                           for m, v in metrics.items() if not m.startswith("_")},
+                          metrics.get("_figures", {}).get("recommendation", {}).get("sentence", ""))
 

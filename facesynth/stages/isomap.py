@@ -386,9 +386,10 @@ def page(isomap_path: Path, db_path: Path, phones_path: Path, out: Path, setting
     the synthesized ``motion_path``."""
     import io
 
+    from .. import methods
     from ..exports import isomap_page as export
+    from ..methods import core
     from ..model.motion import Motion
-    from ..search.synthesis import prepare
 
     check_output(out, overwrite)
     maps = PhonemeMaps.read(isomap_path)
@@ -396,7 +397,8 @@ def page(isomap_path: Path, db_path: Path, phones_path: Path, out: Path, setting
     export.require_same_database(isomap_path, PhonemeMaps.KIND, "was built", db_path,
                                  f"run facesynth isomap build {db_path} -o ISOMAP.h5 and use that")
     export.check_maps(maps, db, isomap_path, db_path)
-    utt, constraints = prepare(db, phones_path, emotions_path, constraints_path, ingest_settings)
+    utt = core.read_utterance(ingest_settings, phones_path=phones_path, emotions_path=emotions_path).utterance
+    constraints = core.constraints_for(methods.get("dp"), db, constraints_path, utt)
     missing = export.require_some_map(utt, maps, phones_path, db_path)
     path, notes = None, []
     if motion_path is not None:

@@ -25,8 +25,10 @@ from pathlib import Path
 
 import numpy as np
 
+from .. import methods
 from ..config import IngestSettings, SynthesizeSettings
 from ..errors import InputError
+from ..methods import core
 from ..model.motiondb import MotionDatabase
 from ..opencl import use_opencl
 from ..search.constraint_choice import (
@@ -40,7 +42,6 @@ from ..search.constraint_choice import (
 )
 from ..search.costs import step_costs
 from ..search.pruned import backward_pruned, dp_pruned
-from ..search.synthesis import prepare
 
 HEADER = "rank\tnode\temotion\ttake\tcontext\tcontext_correct\ttime_correct_take_frame\tcost\textra_cost"
 
@@ -92,7 +93,8 @@ def suggest(db_path: Path, phones_path: Path, at_s: float, settings: SynthesizeS
     """Nodes of the phone at ``at_s`` (s) ranked by the best total cost through them (forward and
     backward DP, paper VI-A), with the phone's description."""
     db = MotionDatabase.read(db_path)
-    utt, constraints = prepare(db, phones_path, emotions_path, constraints_path, ingest_settings)
+    utt = core.read_utterance(ingest_settings, phones_path=phones_path, emotions_path=emotions_path).utterance
+    constraints = core.constraints_for(methods.get("dp"), db, constraints_path, utt)
     c = spoken_step_at(utt, at_s, str(phones_path))
     phone = utt.phones[c]
     candidates = np.nonzero(np.array(db.nodes.phone) == phone)[0]

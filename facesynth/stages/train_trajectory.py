@@ -1,20 +1,17 @@
 """``facesynth train-trajectory``: the compact key-shape trajectory model (Huang et al. §5.4;
-:mod:`facesynth.motion.trajectory`) of a motion database's training takes, over the joint
+:mod:`facesynth.methods.trajectory`) of a motion database's training takes, over the joint
 key-shapes of a ``keyshapes`` artifact, written as a ``trajectory`` artifact that
-``facesynth synthesize --method trajectory`` reads alone.
+``facesynth synthesize --method trajectory`` reads alone. The same as ``facesynth fit-method
+trajectory`` (:func:`facesynth.methods.fitting.fit_to_file`), kept under its own name.
 """
 
 from __future__ import annotations
 
-import time
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..artifacts import check_output
-from ..config import TrajectorySettings, settings_json
-from ..model.keyshapes import KeyShapes
-from ..model.motiondb import MotionDatabase
-from ..motion.trajectory import train_model
+from ..config import TrajectorySettings
+from ..methods.fitting import fit_to_file
 
 
 @dataclass(frozen=True)
@@ -43,13 +40,10 @@ def run(db_path: Path, keyshapes_path: Path, out: Path, settings: TrajectorySett
         overwrite: bool = False) -> TrainTrajectoryResult:
     """Train the model on ``db_path``'s training takes with the key-shapes of ``keyshapes_path``
     and write ``out``."""
-    check_output(out, overwrite)
-    db = MotionDatabase.read(db_path)
-    keyshapes = KeyShapes.read(keyshapes_path)
-    t0 = time.perf_counter()
-    model, samples = train_model(db, keyshapes, settings, f"{keyshapes_path}")
-    train_s = time.perf_counter() - t0
-    model.write(out, config=settings_json(settings), inputs=[db_path, keyshapes_path], overwrite=overwrite)
-    return TrainTrajectoryResult(model.count, len(model.phones), len(model.pair_phone), len(samples.rows),
-                                 model.fit_rms, train_s, out.stat().st_size)
+    from ..methods import MethodSettings
+
+    s = fit_to_file("trajectory", db_path, out, MethodSettings.packaged(trajectory=settings), keyshapes_path=keyshapes_path,
+                    overwrite=overwrite)
+    return TrainTrajectoryResult(s["keyshapes"], s["phones"], s["pairs"], s["samples"], s["fit_rms_mm"], s["fit_s"],
+                                 s["bytes"])
 

@@ -40,11 +40,13 @@ import numpy as np
 from scipy.optimize import minimize
 from scipy.special import expit
 
+from .. import methods
 from ..artifacts import atomic_path, check_output
 from ..config import BuildDbSettings, NormalizeSettings, SynthesizeSettings, TuneSettings
-from ..errors import InputError
+from ..errors import InputError, UsageError
 from ..evaluation import heldout
 from ..limits import mem_available
+from ..methods import MethodSettings, core
 from ..model.motiondb import MotionDatabase
 from ..opencl import use_opencl
 from ..search.pairs import PairTerms, TransitionCosts, boundary_states
@@ -145,12 +147,24 @@ class Objective:
         return out
 
 
+def tunable(method: str | None, synth: SynthesizeSettings):
+    """The member of the method family to tune (default ``synthesize.search``) and ``synth`` with
+    its search; a usage error for a method without the search's cost weights."""
+    member = methods.get(method or synth.search)
+    if not member.tunable:
+        tunables = [n for n in methods.names() if methods.get(n).tunable]
+        raise UsageError(f"facesynth tune tunes the cost weights of the database searches (alpha1..alpha6, PNT); "
+                         f"the {member.name} method has no weights to tune: use --method {' or '.join(tunables)}.")
+    return member, dataclasses.replace(synth, search=member.name)
+
+
 def tune(db_path: Path, corpus: Path, settings: TuneSettings, synth: SynthesizeSettings, build: BuildDbSettings,
-         normalize_settings: NormalizeSettings, progress_fn=None) -> dict:
-    """Tune the weights, the boundary-fit length and the smoothing window on the validation
-    takes of ``corpus``; returns the settings and the errors (mm^2) before and after on the
-    validation and test takes. ``progress_fn(done, total, error, best)`` is called after each
-    evaluation."""
+         normalize_settings: NormalizeSettings, progress_fn=None, method: str | None = None) -> dict:
+    """Tune the weights, the boundary-fit length and the smoothing window of ``method`` (a search
+    member, default ``synthesize.search``) on the validation takes of ``corpus``; returns the
+    settings and the errors (mm^2) before and after on the validation and test takes.
+    ``progress_fn(done, total, error, best)`` is called after each evaluation."""
+    member, synth = tunable(method, synth)
     for name in WEIGHTS:
         if getattr(synth, name) <= 0:
             raise InputError(f"synthesize.{name} must be positive to tune it (got {getattr(synth, name)}).")
@@ -158,6 +172,8 @@ def tune(db_path: Path, corpus: Path, settings: TuneSettings, synth: SynthesizeS
     db = MotionDatabase.read(db_path)
     validation = heldout(corpus, db, "val", normalize_settings)
     test = heldout(corpus, db, "test", normalize_settings)
+    longest = max(validation + test, key=lambda sentence: len(sentence.utterance)).utterance
+    core.check_memory(member, db, longest, MethodSettings.packaged(synthesize=synth), str(db_path))
     objective = Objective(db, synth, use_opencl(synth.use_opencl))
     fits = [f for f in FIT_LENGTHS if f != build.boundary_fit_frames]
     windows = [w for w in WINDOWS if w != synth.smoothing_half_window]
@@ -211,7 +227,7 @@ def tune(db_path: Path, corpus: Path, settings: TuneSettings, synth: SynthesizeS
         best_s, best_fit, best_f = start, fit0, before_val
     summary = {"validation_sentences": len(validation), "test_sentences": len(test), "evaluations": state["done"],
                "seconds": time.perf_counter() - t0, "validation_err_before": before_val, "validation_err_after": best_f,
-               "improved": improved, "weights": {k: getattr(best_s, k) for k in WEIGHTS},
+               "improved": improved, "method": member.name, "weights": {k: getattr(best_s, k) for k in WEIGHTS},
                "smoothing_half_window": best_s.smoothing_half_window, "boundary_fit_frames": best_fit,
                "boundary_fit_changed": best_fit != fit0,
                "warnings": [] if improved else [
@@ -248,6 +264,8 @@ def write_config(path: Path, summary: dict, overwrite: bool) -> None:
                      f"{summary['test_err_after']:.4f} [{lo_a:.4f}, {hi_a:.4f}] (bootstrap 95% over sentences)")
     lines += [f"# warning: {w}" for w in summary["warnings"]]
     lines += ["", "[synthesize]"] + [f"{k} = {v!r}" for k, v in summary["weights"].items()]
+    if summary.get("method", "dp") != "dp":  # tuned for another search: the file says which
+        lines.append(f"search = {summary['method']!r}")
     lines.append(f"smoothing_half_window = {summary['smoothing_half_window']}")
     lines += ["", "# Takes effect when the database is built again: facesynth build-db ... --config this file.",
               "[build_db]", f"boundary_fit_frames = {summary['boundary_fit_frames']}"]
@@ -264,6 +282,7 @@ class TuneResult:
     seconds: wall time (s).
     validation_err_before, validation_err_after: the validation error of the start and of the result.
     improved: whether the result beats the start (if not, the start is written).
+    method: the search tuned (dp or greedy; both use the same cost weights).
     weights: the tuned cost weights (alpha1..alpha6, PNT) by name.
     smoothing_half_window: the tuned join smoothing window (frames).
     boundary_fit_frames: the tuned boundary-fit length (frames).
@@ -281,6 +300,7 @@ class TuneResult:
     validation_err_before: float
     validation_err_after: float
     improved: bool
+    method: str
     weights: dict[str, float]
     smoothing_half_window: int
     boundary_fit_frames: int
@@ -295,10 +315,11 @@ class TuneResult:
 
 def run(db_path: Path, corpus: Path, out: Path, settings: TuneSettings, synth: SynthesizeSettings,
         build: BuildDbSettings, normalize_settings: NormalizeSettings, overwrite: bool = False,
-        progress_fn=None) -> TuneResult:
-    """Tune and write ``out``."""
+        progress_fn=None, method: str | None = None) -> TuneResult:
+    """Tune ``method`` (a search member; default ``synthesize.search``) and write ``out``."""
+    tunable(method, synth)  # refused before anything is read
     check_output(out, overwrite)
-    summary = tune(db_path, corpus, settings, synth, build, normalize_settings, progress_fn)
+    summary = tune(db_path, corpus, settings, synth, build, normalize_settings, progress_fn, method)
     write_config(out, summary, overwrite)
     return TuneResult(**summary)
 

@@ -5,6 +5,7 @@ import pytest
 from click.testing import CliRunner
 
 from facesynth import evaluation
+from facesynth.bootstrap import paired_difference, resamples
 from facesynth.cli import main
 from facesynth.config import Config
 from facesynth.errors import InputError
@@ -26,6 +27,32 @@ def test_report_has_numbers_per_method_and_plots(tiny_db, tiny_artifacts, tmp_pa
     index = (tmp_path / "rep" / "index.html").read_text()
     pngs = list((tmp_path / "rep").glob("*.png"))
     assert len(pngs) == 4 and all(p.name in index for p in pngs)
+    # the report and the printed output end with the recommendation, the one its own intervals give
+    sentence = m["figures_meta"]["recommendation"]["sentence"]
+    figures = {row: m[row]["figures"] for row in m if isinstance(m[row], dict) and "figures" in m[row]}
+    draws = resamples(4, 100, 0)  # the report's resamples: 4 sentences, 100 draws, evaluate.seed
+
+    def difference(key, other, best):  # from the per-sentence errors the report lists
+        stat = evaluation.FIGURES[key][1]
+        return paired_difference(lambda i: stat(m[other]["per_sentence"], i), lambda i: stat(m[best]["per_sentence"], i),
+                                 4, draws)
+
+    assert sentence == evaluation.recommend(figures, difference=difference).sentence
+    assert sentence.startswith("Recommended for this database: ")
+    assert r.output.rstrip("\n").splitlines()[-1] == sentence
+    assert (tmp_path / "rep" / "table.md").read_text().rstrip("\n").splitlines()[-1] == sentence
+    assert index.rstrip().endswith(f"<p><b>{sentence}</b></p>")
+
+
+def test_evaluate_scores_the_methods_it_is_asked_for(tiny_db, tiny_artifacts, tmp_path):
+    r = CliRunner().invoke(main, ["evaluate", str(tiny_db), "--heldout", str(tiny_artifacts["corpus"]), "-o", str(tmp_path / "rep"),
+                                  "--set", "evaluate.bootstrap_resamples=100", "--set", "evaluate.methods=['mean']"])
+    assert r.exit_code == 0, r.output
+    m = json.loads((tmp_path / "rep" / "metrics.json").read_text())
+    # dp always (the paired differences are dp minus each), the mean method with its per-phone variant
+    assert set(m) - {"figures_meta", "meta"} == {"dp", "baseline", "baseline_emotion", "capture"}
+    assert "baseline_emotion (mean): RMS" in r.output
+    assert m["figures_meta"]["recommendation"]["method"] in ("dp", "mean")
 
 
 def test_metrics_worked_by_hand():

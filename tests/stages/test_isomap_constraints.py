@@ -131,9 +131,9 @@ def _expected(tiny_db, tg, text: str):
     from facesynth.config import Config
 
     config = Config.load()
-    info, rows = suggest.suggest(tiny_db, tg, float(text), config.settings("synthesize"), config.settings("ingest"))
-    return (info["index"], " ".join(str(n) for n in sorted(r.node for r in rows if r.context_correct)),
-            {r.node: r.time_correct_frame for r in rows})
+    found = suggest.suggest(tiny_db, tg, float(text), config.settings("synthesize"), config.settings("ingest"))
+    return (found.index, " ".join(str(n) for n in sorted(r.node for r in found.rows if r.context_correct)),
+            {r.node: r.time_correct_frame for r in found.rows})
 
 
 def _time_correct(state: dict) -> dict[int, int]:

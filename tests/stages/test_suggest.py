@@ -5,6 +5,7 @@ from click.testing import CliRunner
 from facesynth.cli import main
 from facesynth.errors import InputError
 from facesynth.formats.labels import Segment, read_phone_segments, write_textgrid
+from facesynth.model.motiondb import MotionDatabase
 from facesynth.search.inputs import read_utterance
 from facesynth.stages import suggest, synthesize
 
@@ -12,7 +13,7 @@ from facesynth.stages import suggest, synthesize
 def test_suggested_costs_are_what_the_constrained_search_finds(tiny_db, tiny_corpus, held_out_take, config, tmp_path):
     tg = tiny_corpus / "labels" / f"{held_out_take}.TextGrid"
     utt = read_utterance(tg)
-    db = synthesize.MotionDatabase.read(tiny_db)
+    db = MotionDatabase.read(tiny_db)
     c = next(k for k, p in enumerate(utt.phones) if p != "pau" and db.nodes.phone.count(p) >= 3)
     at = 0.5 * (utt.starts[c] + utt.ends[c])
     info = suggest.suggest(tiny_db, tg, at, config.settings("synthesize"), config.settings("ingest"))
@@ -62,7 +63,7 @@ def _spliced_sentence(tiny_corpus, tmp_path):
 
 def test_a_shared_triphone_gives_context_correct_suggestions(tiny_db, tiny_corpus, config, tmp_path):
     tg, segs = _spliced_sentence(tiny_corpus, tmp_path)
-    db = synthesize.MotionDatabase.read(tiny_db)
+    db = MotionDatabase.read(tiny_db)
     c = 3  # pau, s3, s4, [s5], ...: an inner phone, its neighbours as in the training sentence
     at = 0.5 * (segs[c].start + segs[c].end)
     info = suggest.suggest(tiny_db, tg, at, config.settings("synthesize"), config.settings("ingest"))

@@ -5,6 +5,7 @@ from click.testing import CliRunner
 
 from facesynth.cli import main
 from facesynth.errors import InputError, SearchError
+from facesynth.model.motiondb import MotionDatabase
 from facesynth.stages import synthesize
 
 
@@ -35,7 +36,7 @@ def test_motion_artifact_holds_both_rates_path_costs_and_provenance(tiny_db, tin
 
 def test_constraints_are_met_and_emotions_steer_the_search(tiny_db, tiny_corpus, held_out_take, config, tmp_path):
     tg = tiny_corpus / "labels" / f"{held_out_take}.TextGrid"
-    db = synthesize.MotionDatabase.read(tiny_db)
+    db = MotionDatabase.read(tiny_db)
     from facesynth.search.inputs import read_utterance
 
     utt = read_utterance(tg)
@@ -69,7 +70,7 @@ def test_bad_constraints_are_named(tiny_db, tiny_corpus, held_out_take, config, 
 def test_constraint_with_a_node_of_another_phone(tiny_db, tiny_corpus, held_out_take, config, tmp_path):
     from facesynth.search.inputs import read_utterance
 
-    db = synthesize.MotionDatabase.read(tiny_db)
+    db = MotionDatabase.read(tiny_db)
     utt = read_utterance(tiny_corpus / "labels" / f"{held_out_take}.TextGrid")
     node = next(j for j, p in enumerate(db.nodes.phone) if p != utt.phones[1])
     (tmp_path / "c.txt").write_text(f"1 {node}\n")
@@ -95,7 +96,7 @@ def test_cli_warns_about_phones_without_nodes(tiny_db, tiny_corpus, tmp_path):
     write_textgrid(tg, {"phones": [Segment(0, 0.2, "pau"), Segment(0.2, 0.3, "zh"), Segment(0.3, 0.5, "oy"), Segment(0.5, 0.7, "pau")]})
     r = CliRunner().invoke(main, ["synthesize", str(tiny_db), "--phonemes", str(tg), "-o", str(tmp_path / "m.h5")])
     assert r.exit_code == 0, r.output
-    db = synthesize.MotionDatabase.read(tiny_db)
+    db = MotionDatabase.read(tiny_db)
     for phone in ("zh", "oy"):
         if phone not in db.nodes.phone:
             assert f"no node of /{phone}/" in r.output

@@ -11,9 +11,8 @@ from click.testing import CliRunner
 
 from facesynth.cli import main
 from facesynth.errors import InputError
-from facesynth.model.motion import Motion
-from facesynth.model.trajectory import TrajectoryModel
-from facesynth.motion.trajectory import (
+from facesynth.methods import MethodSettings
+from facesynth.methods.trajectory import (
     dense_system,
     duration_weights,
     effective_lambda,
@@ -22,6 +21,8 @@ from facesynth.motion.trajectory import (
     solve,
     synthesize_path,
 )
+from facesynth.model.motion import Motion
+from facesynth.model.trajectory import TrajectoryModel
 from facesynth.search.inputs import read_utterance
 from facesynth.stages import keyshapes, synthesize, train_trajectory
 
@@ -116,8 +117,8 @@ def test_a_larger_lambda_gives_a_smoother_path(model, tiny_corpus, held_out_take
 
 
 def _synth(model_path, tg, out, config, **kw):
-    return synthesize.run_trajectory(model_path, out, config.settings("trajectory"), 30.0, config.settings("ingest"),
-                                     config.settings("align"), phones_path=tg, **kw)
+    return synthesize.run(model_path, out, MethodSettings.of(config), config.settings("ingest"),
+                          config.settings("align"), method="trajectory", phones_path=tg, **kw)
 
 
 def test_synthesis_writes_a_motion_that_deform_reads_and_is_deterministic(model_path, tiny_corpus, held_out_take, config,
@@ -160,7 +161,7 @@ def test_an_unseen_phone_falls_back_to_its_viseme_class_with_a_warning(model, ca
     group = next(g for g in VISEME_GROUPS if any(p in have for p in g) and any(p not in have for p in g))
     unseen = next(p for p in group if p not in have)
     phones = ["pau", spoken[0], unseen, "pau"]
-    with caplog.at_level(logging.WARNING, logger="facesynth.motion.trajectory"):
+    with caplog.at_level(logging.WARNING, logger="facesynth.methods.trajectory"):
         t = frame_targets(model, phones, ["neutral"] * 4, np.array([0, 0.2, 0.4, 0.6]), np.array([0.2, 0.4, 0.6, 0.8]),
                           120.0)
     assert unseen in t.fallbacks and f"/{unseen}/" in caplog.text
@@ -201,7 +202,7 @@ def test_bad_input_exits_1_with_one_sentence_and_writes_nothing(model_path, tiny
     (tmp_path / "c.txt").write_text("1 3\n")
     r = runner.invoke(main, ["synthesize", "--method", "trajectory", str(model_path), "--phonemes", str(tg),
                              "--constraints", str(tmp_path / "c.txt"), "-o", str(out)])
-    assert r.exit_code == 2 and "the trajectory method has none" in r.output and not out.exists()
+    assert r.exit_code == 2 and "the trajectory method takes none" in r.output and not out.exists()
     # the database where a model is expected, and the reverse
     r = runner.invoke(main, ["synthesize", str(model_path), "--phonemes", str(tg), "-o", str(out)])
     assert r.exit_code == 1 and "motiondb" in r.output and not out.exists()

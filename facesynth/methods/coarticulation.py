@@ -1,4 +1,4 @@
-"""A fitted Cohen-Massaro coarticulation model: the parametric baseline for the DP search.
+"""The ``coarticulation`` method: a fitted Cohen-Massaro coarticulation model per (phone, emotion).
 
 Cohen & Massaro (1993): every phone type p has a target pose ``T_p`` and a dominance
 function ``D_i(t) = alpha_p * exp(-theta_p * |t - c_i|)`` around the centre ``c_i`` of each of
@@ -15,6 +15,12 @@ Fitting (:func:`fit_dominance`) on training sentences: for given magnitudes ``al
 rates ``theta`` the targets enter linearly, so they are solved exactly by (ridge) least
 squares (with a small ridge, :data:`RELATIVE_RIDGE`), and the 2P log-parameters are optimized on the remaining residual (variable
 projection) with L-BFGS-B, whose gradient is exact at the solved targets (Golub & Pereyra).
+
+As a member of the family (:class:`CoarticulationMethod`) the model is fitted per (phone, emotion)
+(:func:`emotion_labels`) on a database's training takes and written as a ``coarticulation``
+artifact (:class:`~facesynth.model.coarticulation.CoarticulationModel`, ``facesynth fit-method
+coarticulation``); synthesis reads that file alone. A label the fit never saw takes the mean target
+of that phone's other emotions, else of every type, with the median magnitude and rate.
 """
 
 from __future__ import annotations
@@ -25,6 +31,7 @@ import numpy as np
 from scipy.optimize import minimize
 
 from ..phonemes import PAU
+from . import Method, MethodSettings, Synthesis
 
 #: Ridge on the targets, relative to the mean diagonal of the design's Gram matrix at the
 #: start: without it a type with a tiny magnitude gets a huge target that only fits the
@@ -196,3 +203,82 @@ def training_sentences(db, by_emotion: bool = False) -> list[tuple[list[str], np
                 mask[a:b] = True
         out.append((labels, phones.start[rows], phones.end[rows], db.coeffs[sl], mask))
     return out
+
+
+def fit_rms(model: DominanceModel, sentences, fps: float, basis: np.ndarray) -> float:
+    """RMS per marker (mm) of ``model`` on the fitted frames of ``sentences`` (as for
+    :func:`fit_dominance`); ``basis`` (3M, K) orthonormal, so coefficient errors are marker errors."""
+    total, count = 0.0, 0
+    for phones, starts, ends, poses, mask in sentences:
+        keep = np.nonzero(mask & np.isfinite(poses).all(axis=1))[0]
+        if not len(keep):
+            continue
+        fitted = model.predict(phones, starts, ends, int(keep.max()) + 1, fps)[keep]
+        total += float(((fitted - poses[keep]) ** 2).sum())
+        count += len(keep)
+    markers = basis.shape[0] // 3
+    return float(np.sqrt(total / max(count * markers, 1)))
+
+
+class CoarticulationMethod(Method):
+    """The fitted Cohen-Massaro model per (phone, emotion); source: a ``coarticulation`` artifact."""
+
+    name = "coarticulation"
+    summary = "a Cohen-Massaro dominance model per (phone, emotion), fitted on the training takes"
+    source_kind = "coarticulation"
+    fitted = True
+
+    def read(self, path):
+        from ..model.coarticulation import CoarticulationModel
+
+        return CoarticulationModel.read(path)
+
+    def fit_settings(self, settings: MethodSettings):
+        return settings.coarticulation
+
+    def fit(self, db, settings: MethodSettings, *, keyshapes=None, where: str = "the database"):
+        """The model of ``db``'s training takes (``coarticulation.iterations`` L-BFGS-B iterations);
+        returns (CoarticulationModel, summary: ``labels``, ``fit_rms_mm``)."""
+        from ..model.coarticulation import CoarticulationModel
+
+        sentences = training_sentences(db, by_emotion=True)
+        if not sentences:
+            from ..errors import InputError
+
+            raise InputError(f"{where}: no take has split 'train'; the coarticulation model is fitted on the "
+                             "training takes.")
+        model = fit_dominance(sentences, db.fps, settings.coarticulation.iterations)
+        rms = fit_rms(model, sentences, db.fps, db.model.basis)
+        out = CoarticulationModel(list(model.phones), model.targets, model.magnitude, model.rate, db.model,
+                                  list(db.marker_names), np.asarray(db.reference, np.float32), float(db.fps),
+                                  int(settings.coarticulation.iterations), rms)
+        return out, {"labels": len(model.phones), "fit_rms_mm": rms}
+
+    def synthesize(self, source, utt, settings: MethodSettings, constraints=None, *, prepared=None,
+                   where: str = "the utterance") -> Synthesis:
+        """The model's poses at the capture rate (Eq. 11 through its PCA model), down-sampled to
+        ``synthesize.output_fps``; the summary's ``unseen`` names the (phone, emotion) pairs the fit never
+        saw ('/aa/ in sad', or '/zh/' for a phone it never saw in any emotion) and what covers each."""
+        from ..motion.postprocess import frame_ranges
+        from .core import frame_motion
+
+        self.refuse_constraints(constraints)
+        model = DominanceModel(tuple(source.labels), source.targets, source.magnitude, source.rate)
+        labels = emotion_labels(list(utt.phones), list(utt.emotions))
+        total = frame_ranges(utt.starts, utt.ends, source.fps)[-1][1]
+        coeffs = model.predict(labels, utt.starts, utt.ends, total, source.fps)
+        markers = source.pca.reconstruct(coeffs)
+        known = set(source.labels)
+        seen_phones = {k.split("|")[0] for k in known}
+        unseen = {}
+        for label in dict.fromkeys(labels):
+            if label not in known:
+                phone, _, emotion = label.partition("|")
+                if phone in seen_phones:
+                    unseen[f"/{phone}/ in {emotion}"] = "the mean of that phone's other emotions"
+                else:
+                    unseen[f"/{phone}/"] = "the mean of every phone type"
+        motion = frame_motion(self.name, utt, markers, coeffs, source.fps, settings.synthesize.output_fps,
+                              source.marker_names, source.reference, list(utt.phones),
+                              [e if p != PAU else "" for p, e in zip(utt.phones, utt.emotions)], "cpu (NumPy)")
+        return Synthesis(motion, {"phones": len(utt), "frames": len(motion.markers), "unseen": unseen})

@@ -41,8 +41,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
+from ..motion.postprocess import frame_ranges
 from ..phonemes import PAU, VISEME_GROUPS, viseme
-from .postprocess import frame_ranges
+from . import Method, MethodSettings, Synthesis
 
 log = logging.getLogger(__name__)
 
@@ -383,7 +384,7 @@ def synthesize_motion(model, utt, settings, output_fps: float, where: str = "the
     -1 (no source frame), ``smoothed`` False. The head does not move (identity rotation, zero
     translation): the model has no head motion. Returns (Motion, Path)."""
     from ..model.motion import Motion, Provenance, SearchPath
-    from .postprocess import downsample
+    from ..motion.postprocess import downsample
 
     path = synthesize_path(model, list(utt.phones), list(utt.emotions), utt.starts, utt.ends,
                            smoothness=settings.smoothness, smoothness_fps=settings.smoothness_fps, fps=settings.fps,
@@ -414,3 +415,46 @@ def synthesize_motion(model, utt, settings, output_fps: float, where: str = "the
                     provenance, source="trajectory", keyshape_weights=weights.astype(np.float32),
                     keyshape_names=list(model.keyshape_names))
     return motion, path
+
+
+class TrajectoryMethod(Method):
+    """Huang et al.'s key-shape trajectory; source: a ``trajectory`` artifact (fitted with the
+    key-shapes of a ``keyshapes`` artifact)."""
+
+    name = "trajectory"
+    summary = "Huang et al.'s smooth key-shape path through per-(phone, emotion) Gaussians (Eq. 6-7)"
+    source_kind = "trajectory"
+    fitted = True
+
+    def read(self, path):
+        from ..model.trajectory import TrajectoryModel
+
+        return TrajectoryModel.read(path)
+
+    def recorded_settings(self, settings: MethodSettings):
+        return settings.trajectory
+
+    def fit_settings(self, settings: MethodSettings):
+        return settings.trajectory
+
+    def fit(self, db, settings: MethodSettings, *, keyshapes=None, where: str = "the database"):
+        """The model of ``db``'s training takes over the joint key-shapes of ``keyshapes`` (a
+        KeyShapes, needed); returns (TrajectoryModel, summary: ``keyshapes``, ``phones``, ``pairs``,
+        ``samples``, ``fit_rms_mm``)."""
+        from ..errors import UsageError
+
+        if keyshapes is None:
+            raise UsageError("the trajectory method is fitted over key-shapes; give them with --keyshapes "
+                             "(facesynth keyshapes).")
+        model, samples = train_model(db, keyshapes, settings.trajectory, where)
+        return model, {"keyshapes": model.count, "phones": len(model.phones), "pairs": len(model.pair_phone),
+                       "samples": len(samples.rows), "fit_rms_mm": model.fit_rms}
+
+    def synthesize(self, source, utt, settings: MethodSettings, constraints=None, *, prepared=None,
+                   where: str = "the utterance") -> Synthesis:
+        """The path of Eq. 6-7 (:func:`synthesize_motion`); the summary holds the Eq. 6 ``energy``,
+        ``lambda`` and the ``fallbacks`` (unseen phones and the viseme class that covered each)."""
+        self.refuse_constraints(constraints)
+        motion, path = synthesize_motion(source, utt, settings.trajectory, settings.synthesize.output_fps, where)
+        return Synthesis(motion, {"phones": len(utt), "frames": len(motion.markers), "energy": path.energy,
+                                  "lambda": path.lam, "fallbacks": path.targets.fallbacks})
