@@ -1,5 +1,7 @@
-"""Every figure the README quotes, rebuilt from fresh sample corpora over several seeds;
-writes ``results.md`` (tables) and ``results.json`` (every number, with the host).
+"""The report of docs/results.md (the virtual actress's figures the README quotes), rebuilt
+from fresh sample corpora over several seeds; writes it between the report markers of
+``results.md`` (the hand-written text around them stays) and ``results.json`` (every number,
+with the host).
 
 For each corpus seed the real pipeline runs through the installed ``facesynth`` command
 (sample-corpus, ingest, normalize, pca, build-db, prune --auto, evaluate), then
