@@ -209,7 +209,11 @@ def _left_behind(published: list[Path]) -> str:
 
 #: Output options that name a folder rather than a file, by command path.
 FOLDER_OUTPUTS: dict[str, dict[str, str]] = {"sample-corpus": {"out_dir": "the corpus"},
-                                             "evaluate": {"output": "the report"}, "isomap build": {"images": "the images"}}
+                                             "evaluate": {"output": "the report"}, "isomap build": {"images": "the images"},
+                                             "batch": {"output": "the batch outputs"}}
+#: Commands whose output folder a rerun adds to (batch skips the lines that are done), so a
+#: folder with files in it is no clash.
+RESUMED_IN_PLACE = {"batch"}
 
 
 def _check_outputs(command: str, kwargs: dict, overwrite: bool) -> None:
@@ -225,7 +229,7 @@ def _check_outputs(command: str, kwargs: dict, overwrite: bool) -> None:
         if value is None:
             continue
         if name in folders:
-            check_output_folder(Path(value), folders[name], overwrite)
+            check_output_folder(Path(value), folders[name], None if command in RESUMED_IN_PLACE else overwrite)
         else:
             check_output(Path(value), overwrite)
 

@@ -206,8 +206,8 @@ def test_readme_block_runs(tmp_path):
     done = run_bash(block, tmp_path)
     assert done.returncode == 0, done.stderr[-4000:]
     steps = [shlex.split(line)[1] for line in block.splitlines() if line.lstrip().startswith("$fs ")]
-    assert steps[0] == "sample-corpus" and steps[-1] == "render"
-    assert {"ingest", "normalize", "pca", "build-db", "synthesize", "deform"} <= set(steps)
+    assert steps[0] == "sample-corpus"
+    assert {"ingest", "normalize", "pca", "build-db", "synthesize", "deform", "render"} <= set(steps)
     videos = list(tmp_path.rglob("*.avi"))
     assert videos and all(v.stat().st_size > 0 for v in videos)
 
