@@ -1,6 +1,6 @@
 # facesynth: `make demo` runs the whole pipeline on the built-in sample corpus,
 # `make test` runs the test suite, `make lint` the linter and type checker, `make docs` the
-# generated parts of docs/, `make report` rebuilds every figure the README quotes.
+# generated parts of docs/, `make report` rebuilds the report of docs/results.md.
 # All create the environment with pip alone.
 
 PYTHON ?= python3
@@ -46,8 +46,9 @@ docs: $(STAMP)
 test-hostile: $(STAMP)
 	$(BIN)/python -m pytest -q -n $(TEST_WORKERS) -m hostile_long tests/hostile
 
-# Every figure the README quotes, from fresh sample corpora over several seeds (mean and
-# spread), with the host's processor and memory bandwidth -> docs/results.md, docs/results.json.
+# The report of docs/results.md (its seed-0 table is the README's), from fresh sample corpora
+# over several seeds (mean and spread), with the host's processor and memory bandwidth
+# -> docs/results.md (between its report markers), docs/results.json.
 # Not part of `make test`: it runs the whole pipeline per seed (10 to 12 min for 3 seeds on 2 cores).
 SEEDS            ?= 0 1 2
 REPORT_PRESET    ?= paper

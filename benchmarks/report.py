@@ -1,5 +1,7 @@
-"""Every figure the README quotes, rebuilt from fresh sample corpora over several seeds;
-writes ``results.md`` (tables) and ``results.json`` (every number, with the host).
+"""The report of docs/results.md (the virtual actress's figures the README quotes), rebuilt
+from fresh sample corpora over several seeds; writes it between the report markers of
+``results.md`` (the hand-written text around them stays) and ``results.json`` (every number,
+with the host).
 
 For each corpus seed the real pipeline runs through the installed ``facesynth`` command
 (sample-corpus, ingest, normalize, pca, build-db, prune --auto, evaluate), then
@@ -433,6 +435,24 @@ def _fmt(v, decimals: int) -> str:
     return f"{v:,.{decimals}f}" if decimals else f"{round(v):,d}"
 
 
+#: The lines around the report in results.md; the text before and after them is written by hand.
+REPORT_BEGIN = "<!-- report:begin: written by `make report` (benchmarks/report.py); edit above this line -->"
+REPORT_END = "<!-- report:end -->"
+
+
+def publish(path: Path, report_markdown: str) -> None:
+    """Put the report into ``path`` between :data:`REPORT_BEGIN` and :data:`REPORT_END`, keeping
+    the hand-written text before and after them; a file without them (or no file) gets a title
+    and the report, between the markers."""
+    text = path.read_text(encoding="utf-8") if path.exists() else ""
+    if REPORT_BEGIN in text and REPORT_END in text.split(REPORT_BEGIN, 1)[1]:
+        before, rest = text.split(REPORT_BEGIN, 1)
+        after = rest.split(REPORT_END, 1)[1]
+    else:
+        before, after = "# Results\n\n", "\n"
+    path.write_text(f"{before}{REPORT_BEGIN}\n{report_markdown.rstrip()}\n{REPORT_END}{after}", encoding="utf-8")
+
+
 def markdown(results: dict) -> str:
     """results.md from the report's JSON: host, quality over seeds, sentence bootstrap,
     tuning, searches and speed."""
@@ -440,7 +460,7 @@ def markdown(results: dict) -> str:
     seeds = ", ".join(map(str, results["seeds"]))
     n = len(results["seeds"])
     lines = [
-        "# Results",
+        "## The report: fresh corpora over several seeds",
         "",
         f"Rebuilt by `make report` (`benchmarks/report.py`) from fresh sample corpora: preset "
         f"`{results['preset']}`, seeds {seeds}; tuning budget {results['tune_evaluations']} evaluations. "
@@ -453,7 +473,7 @@ def markdown(results: dict) -> str:
         "digits). Timings are this host's; speed is given as a ratio to a floor measured in the same run "
         "where one exists.",
         "",
-        "## Host",
+        "### Host",
         "",
         "| processor | logical cores (usable) | memory | copy bandwidth | OpenCL device | load (1 min, at start) |",
         "|---|---|---|---|---|---|",
@@ -463,7 +483,7 @@ def markdown(results: dict) -> str:
         "",
         "Copy bandwidth: bytes read plus bytes written per second by a NumPy copy of a 512 MiB array.",
         "",
-        f"## Quality over {n} seed{'s' if n > 1 else ''}",
+        f"### Quality over {n} seed{'s' if n > 1 else ''}",
         "",
         "`facesynth evaluate` on each seed's held-out (test) sentences, the database cleaned by "
         "`prune --auto`. Spread: sample standard deviation and min–max over seeds; 95% CI: "
@@ -494,7 +514,7 @@ def markdown(results: dict) -> str:
     if results.get("methods"):
         lines += [
             "",
-            "## Methods against baselines, with intervals",
+            "### Methods against baselines, with intervals",
             "",
             "`facesynth evaluate --truth` on each seed's held-out sentences: errors against the clean ground truth "
             "and the noisy capture (both in the database's normalized head frame), velocity error, mouth-opening "
@@ -506,7 +526,7 @@ def markdown(results: dict) -> str:
         ]
     lines += [
         "",
-        "## Tuning",
+        "### Tuning",
         "",
         f"`facesynth tune --set tune.starts=1 --set tune.max_evaluations={results['tune_evaluations']}`: "
         "Nelder-Mead from the default weights on the validation sentences; the tuned weights are then "
@@ -520,7 +540,7 @@ def markdown(results: dict) -> str:
                      f"{t['test_before']:.4f} → {t['test_after']:.4f} |")
     lines += [
         "",
-        "## Searches compared",
+        "### Searches compared",
         "",
         "`benchmarks/search_comparison.py` on each seed's cleaned database and three of its held-out sentences "
         "(the script's choice: spoken length closest to 22 phones). RMS error against the capture and Eq. 4 cost are deterministic; "
@@ -539,7 +559,7 @@ def markdown(results: dict) -> str:
         f"The DP has the lowest Eq. 4 cost in {q['search.dp_lowest_cost']['mean']:.0%} of the compared sentences "
         f"and the lowest RMS error in {q['search.dp_lowest_rms']['mean']:.0%}.",
         "",
-        "## Speed",
+        "### Speed",
         "",
         f"On the host above. The dense DP (`benchmarks/dp_table_v.py`; the reference, `synthesize.dp = \"dense\"`) on "
         f"seed {results['seeds'][0]}'s paper-preset database ({dpt['nodes']:,} nodes, transition matrix "
@@ -644,7 +664,7 @@ def main(argv: list[str] | None = None) -> int:
                "reused_seeds": reused}
     args.out.mkdir(parents=True, exist_ok=True)
     (args.out / "results.json").write_text(json.dumps(results, indent=2) + "\n", encoding="utf-8")
-    (args.out / "results.md").write_text(markdown(results), encoding="utf-8")
+    publish(args.out / "results.md", markdown(results))
     say(f"wrote {args.out / 'results.md'} and results.json in {results['report_s'] / 60:.1f} min")
     return 0
 

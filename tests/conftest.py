@@ -51,19 +51,19 @@ def pytest_collection_modifyitems(session, config, items):
     """Order the suite for pytest-xdist's work stealing (``make test`` runs ``--dist worksteal``):
     the first half of the list goes to one worker and the second half to the other, and a worker
     that runs out takes tests from the end of the other's list. The two longest pieces of work,
-    the whole chain on the small corpus (built by the first test that needs it) and the README
-    block, each start one half, followed by half of the tests that read that chain; the short
-    tests come after them and are what gets taken. Without xdist the order only changes when
-    the chain is built."""
-    chain = [item for item in items if "chain" in getattr(item, "fixturenames", ())]
-    readme = [item for item in items if item.name == "test_readme_block_runs"]
-    if not chain or not readme:
+    the whole chain on the small corpus (built by the first test that needs it) and the manual's
+    examples (docs/pipeline.md, a session of their own), each start one half, followed by half of
+    the tests that read that chain; the short tests come after them and are what gets taken.
+    Without xdist the order only changes when the chain is built."""
+    manual = [item for item in items if item.name == "test_doc_blocks_run[pipeline.md]"]
+    chain = [item for item in items if "chain" in getattr(item, "fixturenames", ()) and item not in manual]
+    if not chain or not manual:
         return
-    moved = {id(item) for item in chain + readme}
+    moved = {id(item) for item in chain + manual}
     rest = [item for item in items if id(item) not in moved]
     first, second = chain[0::2], chain[1::2]
     fill = max(0, len(items) // 2 - len(first))
-    items[:] = first + rest[:fill] + readme + second + rest[fill:]
+    items[:] = first + rest[:fill] + manual + second + rest[fill:]
 
 
 @pytest.fixture

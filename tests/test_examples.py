@@ -1,5 +1,6 @@
-"""Examples are tests: every example in every ``--help`` and every line of the README's shell
-block runs as written, so that a changed option breaks the build, not the user.
+"""Examples are tests: every example in every ``--help``, every line of the README's shell
+block and every shell block of ``docs/*.md`` runs as written, so that a changed option breaks
+the build, not the user.
 
 The top-level help's example (the whole chain on the ``small`` sample corpus) runs once per
 session in an empty folder; it is the folder the top-level help promises every other command's
@@ -7,6 +8,12 @@ example runs in. Each command's example then runs in a fresh folder holding link
 that chain left, except the outputs the example writes. The README block runs with bash in an
 empty folder of its own, with ``.venv/bin/facesynth`` (its first line) pointing at this
 installation.
+
+The shell blocks of a page of ``docs/`` (fenced ``sh``, ``bash`` or ``console``) run with bash,
+in order, in one such linked folder per page, with ``facesynth`` on the ``PATH``. A block that
+cannot run here says so in an HTML comment on the line before it, ``<!-- not run: REASON -->``
+(the reason is reported); every other block runs. Links between the README and the pages of
+``docs/`` must resolve, anchors included.
 """
 
 from __future__ import annotations
@@ -14,8 +21,11 @@ from __future__ import annotations
 import os
 import re
 import shlex
+import signal
 import subprocess
 import sys
+import tempfile
+from dataclasses import dataclass
 from pathlib import Path
 
 import click
@@ -154,17 +164,198 @@ def readme_block() -> str:
     return block
 
 
+def facesynth_launcher(path: Path) -> Path:
+    """An executable ``path`` that runs this installation's ``facesynth`` (what ``pip install``
+    puts in ``.venv/bin``)."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(f"#!/bin/sh\nexec {shlex.quote(sys.executable)} -c "
+                    "'from facesynth.cli import main; main(prog_name=\"facesynth\")' \"$@\"\n")
+    path.chmod(0o755)
+    return path
+
+
+def run_bash(script: str, folder: Path, path_first: Path | None = None, timeout_s: float = 1200):
+    """Run ``script`` with ``bash -euo pipefail`` in ``folder`` (``path_first`` ahead on the
+    PATH), in a session of its own whose processes left behind (a server started with ``&``)
+    are ended when it returns."""
+    env = dict(os.environ)
+    if path_first is not None:
+        env["PATH"] = f"{path_first}{os.pathsep}{env.get('PATH', '')}"
+    # files, not pipes: a process left in the background keeps a pipe open after bash ends
+    with tempfile.TemporaryFile("w+") as out, tempfile.TemporaryFile("w+") as err:
+        process = subprocess.Popen(["bash", "-euo", "pipefail", "-x", "-c", script], cwd=folder, env=env,
+                                   stdout=out, stderr=err, text=True, start_new_session=True)
+        try:
+            process.wait(timeout=timeout_s)
+        finally:
+            try:
+                os.killpg(process.pid, signal.SIGTERM)
+            except ProcessLookupError:
+                pass
+            if process.poll() is None:
+                process.kill()
+                process.wait()
+        out.seek(0)
+        err.seek(0)
+        return subprocess.CompletedProcess(process.args, process.returncode, out.read(), err.read())
+
+
 def test_readme_block_runs(tmp_path):
     block = readme_block()
-    launcher = tmp_path / ".venv" / "bin" / "facesynth"
-    launcher.parent.mkdir(parents=True)
-    launcher.write_text(f"#!/bin/sh\nexec {shlex.quote(sys.executable)} -c "
-                        "'from facesynth.cli import main; main(prog_name=\"facesynth\")' \"$@\"\n")
-    launcher.chmod(0o755)
-    done = subprocess.run(["bash", "-euo", "pipefail", "-x", "-c", block], cwd=tmp_path, capture_output=True, text=True)
+    facesynth_launcher(tmp_path / ".venv" / "bin" / "facesynth")
+    done = run_bash(block, tmp_path)
     assert done.returncode == 0, done.stderr[-4000:]
-    commands = [line for line in block.splitlines() if line.lstrip().startswith("$fs ")]
-    assert len(commands) >= 20 and (tmp_path / "compare.avi").stat().st_size > 0
+    steps = [shlex.split(line)[1] for line in block.splitlines() if line.lstrip().startswith("$fs ")]
+    assert steps[0] == "sample-corpus"
+    assert {"ingest", "normalize", "pca", "build-db", "synthesize", "deform", "render"} <= set(steps)
+    videos = list(tmp_path.rglob("*.avi"))
+    assert videos and all(v.stat().st_size > 0 for v in videos)
+
+
+# --- the shell blocks of docs/ -------------------------------------------------------------
+
+DOCS = ROOT / "docs"
+SHELL_LANGUAGES = ("sh", "bash", "console")
+NOT_RUN = re.compile(r"^<!--\s*not run:\s*(?P<reason>.*?)\s*-->$")
+
+
+@dataclass(frozen=True)
+class Block:
+    """A fenced code block of a Markdown page: its language tag ('' for none), its text
+    (dedented to the fence), the line of its opening fence, and the reason given before it
+    for not running it (None: it runs)."""
+
+    page: Path
+    line: int
+    language: str
+    text: str
+    not_run: str | None
+
+    @property
+    def where(self) -> str:
+        return f"{self.page.relative_to(ROOT)}:{self.line}"
+
+    def script(self) -> str:
+        """The shell commands: the block itself, or a console block's ``$ `` lines."""
+        if self.language != "console":
+            return self.text
+        return "".join(line[2:] + "\n" for line in self.text.splitlines() if line.startswith("$ "))
+
+
+def fenced_blocks(page: Path) -> list[Block]:
+    """Every fenced code block of ``page``, in order (fences may be indented, as in a list)."""
+    lines, blocks, i = page.read_text(encoding="utf-8").splitlines(), [], 0
+    while i < len(lines):
+        opening = re.match(r"^(\s*)```\s*([\w-]*)\s*$", lines[i])
+        if not opening:
+            i += 1
+            continue
+        indent, language = opening.group(1), opening.group(2).lower()
+        before = next((line.strip() for line in reversed(lines[:i]) if line.strip()), "")
+        reason = NOT_RUN.match(before)
+        body, j = [], i + 1
+        while j < len(lines) and lines[j].strip() != "```":
+            body.append(lines[j][len(indent):] if lines[j].startswith(indent) else lines[j].lstrip())
+            j += 1
+        assert j < len(lines), f"{page.relative_to(ROOT)}:{i + 1}: a code block that is never closed"
+        blocks.append(Block(page, i + 1, language, "".join(line + "\n" for line in body),
+                            reason.group("reason") if reason else None))
+        i = j + 1
+    return blocks
+
+
+def doc_pages() -> list[Path]:
+    return sorted(DOCS.glob("*.md"))
+
+
+def shell_blocks(page: Path) -> list[Block]:
+    return [b for b in fenced_blocks(page) if b.language in SHELL_LANGUAGES]
+
+
+def test_every_not_run_mark_gives_its_reason_and_stands_before_a_shell_block():
+    for page in [ROOT / "README.md", *doc_pages()]:
+        text = page.read_text(encoding="utf-8")
+        marks = [m for m in re.finditer(r"<!--\s*not run\b[^>]*-->", text)]
+        marked = [b for b in fenced_blocks(page) if b.not_run is not None]
+        assert len(marks) == len(marked), f"{page.name}: a '<!-- not run: ... -->' that is not on the line before a block"
+        for block in marked:
+            assert block.language in SHELL_LANGUAGES, f"{block.where}: 'not run' marks a block that is not a shell block"
+            assert len(block.not_run.split()) >= 3, f"{block.where}: say why the block cannot run here"
+
+
+def test_no_command_hides_in_an_untagged_block():
+    """A block holding facesynth command lines is tagged ``sh`` (so it runs) or another
+    language; an untagged one would escape this test."""
+    for page in [ROOT / "README.md", *doc_pages()]:
+        for block in fenced_blocks(page):
+            if block.language == "":
+                commands = [line for line in block.text.splitlines() if re.match(r"^\s*(\$ )?facesynth\s", line)]
+                assert not commands, f"{block.where}: tag this block ```sh (it then runs as a test): {commands[0]!r}"
+
+
+def _tree(folder: Path) -> dict[str, tuple[int, int]]:
+    return {str(p.relative_to(folder)): (p.stat().st_size, p.stat().st_mtime_ns)
+            for p in sorted(folder.rglob("*")) if p.is_file()}
+
+
+def _written(blocks: list[Block]) -> set[str]:
+    """The files and folders the blocks' facesynth lines write (shell syntax aside)."""
+    written = set()
+    for block in blocks:
+        for line in block.script().splitlines():
+            try:
+                words = shlex.split(line, comments=True)
+            except ValueError:
+                continue
+            if words[:1] == ["facesynth"]:
+                written.update(outputs(shlex.join(words)))
+    return written
+
+
+@pytest.mark.parametrize("page", [p.name for p in doc_pages() if any(b.not_run is None for b in shell_blocks(p))])
+def test_doc_blocks_run(page, chain, tmp_path):
+    """The page's shell blocks, in order, in one folder linked to what the chain left."""
+    blocks = shell_blocks(DOCS / page)
+    runnable = [b for b in blocks if b.not_run is None]
+    folder = tmp_path / "work"
+    folder.mkdir()
+    written = _written(runnable)
+    for entry in chain.iterdir():
+        if entry.name not in written:
+            (folder / entry.name).symlink_to(entry, target_is_directory=entry.is_dir())
+    launcher = facesynth_launcher(tmp_path / "bin" / "facesynth")
+    before = _tree(chain)
+    for block in runnable:
+        done = run_bash(block.script(), folder, path_first=launcher.parent)
+        assert done.returncode == 0, f"{block.where}\n{block.script()}\n{done.stderr[-4000:]}"
+    assert _tree(chain) == before, f"{page}: a block wrote into the shared chain folder (write to new names instead)"
+
+
+# --- links ----------------------------------------------------------------------------------
+
+def _anchors(page: Path) -> set[str]:
+    """The anchors GitHub gives the page's headings."""
+    anchors = set()
+    for heading in re.findall(r"^#{1,6}\s+(.*?)\s*#*\s*$", page.read_text(encoding="utf-8"), flags=re.M):
+        slug = re.sub(r"[^\w\- ]", "", heading.lower().replace("`", "")).replace(" ", "-")
+        anchors.add(slug)
+    return anchors
+
+
+def test_links_between_readme_and_docs_resolve():
+    broken = []
+    for page in [ROOT / "README.md", *doc_pages()]:
+        text = re.sub(r"```.*?```", "", page.read_text(encoding="utf-8"), flags=re.S)
+        for target in re.findall(r"\]\(([^)\s]+)\)", text):
+            if re.match(r"^[a-z]+:", target):
+                continue
+            file, _, anchor = target.partition("#")
+            linked = (page.parent / file).resolve() if file else page
+            if not linked.exists():
+                broken.append(f"{page.name}: {target} (no such file)")
+            elif anchor and linked.suffix == ".md" and anchor not in _anchors(linked):
+                broken.append(f"{page.name}: {target} (no such heading)")
+    assert not broken
 
 
 def test_isomap_pick_takes_negative_coordinates(tiny_db, tmp_path):

@@ -1,4 +1,4 @@
-"""Exit statuses as the README documents them (0 ok, 1 bad input or data, 2 bad usage, 130
+"""Exit statuses as docs/pipeline.md documents them (0 ok, 1 bad input or data, 2 bad usage, 130
 interrupted), and the ordinary mistakes that used to end in a traceback or do nothing: each
 through click's CliRunner, checking the status, the message and that nothing was written."""
 

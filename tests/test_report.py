@@ -107,3 +107,15 @@ def test_method_tables_carry_the_figures_with_intervals():
     text = "\n".join(report.method_tables(methods))
     assert "| dp | 1.500 [1.200, 1.900] |" in text and "| dp − baseline | -0.500 [-0.700, -0.300] |" in text
     assert "openfacefx not run" in text
+
+
+def test_publish_replaces_only_the_report_between_its_markers(tmp_path):
+    results = tmp_path / "results.md"
+    report.publish(results, "## The report\n\nold figures\n")
+    assert results.read_text().startswith("# Results\n\n" + report.REPORT_BEGIN + "\n## The report\n")
+    hand = "# Results\n\nWritten by hand: 0.27 [0.23, 0.30].\n\n"
+    results.write_text(hand + results.read_text().split("\n\n", 1)[1] + "\nAfter, by hand.\n")
+    report.publish(results, "## The report\n\nnew figures\n")
+    text = results.read_text()
+    assert text.startswith(hand + report.REPORT_BEGIN) and text.endswith(report.REPORT_END + "\n\nAfter, by hand.\n")
+    assert "new figures" in text and "old figures" not in text

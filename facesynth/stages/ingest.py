@@ -71,7 +71,7 @@ def read_manifest(path: Path, settings: IngestSettings) -> list[ManifestRow]:
         columns = set(reader.fieldnames or [])
         missing = [c for c in REQUIRED_COLUMNS if c not in columns]
         if missing:
-            raise InputError(f"{path}: the manifest lacks the column(s) {', '.join(missing)}; see the README for its columns.")
+            raise InputError(f"{path}: the manifest lacks the column(s) {', '.join(missing)}; see docs/inputs.md for its columns.")
         rows, seen = [], set()
         aliases = {k.lower(): v for k, v in settings.emotion_aliases.items()}
         for line, raw in enumerate(reader, 2):

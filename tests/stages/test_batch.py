@@ -131,6 +131,9 @@ def test_command_exit_status_and_a_malformed_script(tiny_corpus, tiny_db, takes,
                                   "--workers", "2"])
     assert r.exit_code == 1 and "1 of 2 lines failed (first: bad: audio file" in r.output
     assert "Traceback" not in r.output and (tmp_path / "o" / "ok.motion.h5").exists()
+    again = CliRunner().invoke(main, ["batch", str(script), "--db", str(tiny_db), "-o", str(tmp_path / "o"),
+                                      "--workers", "1"])  # a rerun into the same folder, as docs/pipeline.md does
+    assert again.exit_code == 1 and "1 of 2 lines failed (first: bad: audio file" in again.output, again.output
 
 
 def test_the_job_carries_the_limits_to_the_workers(tiny_corpus, tiny_db, takes, config, client, tmp_path):
