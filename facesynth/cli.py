@@ -101,7 +101,7 @@ def _configure_logging(verbose: int, quiet: bool) -> None:
 #: The configuration sections each command reads, by command path ("isomap build"). A
 #: ``--set`` must name one of them; ``Config.settings`` refuses any other, keeping this true.
 READS: dict[str, tuple[str, ...]] = {
-    "sample-corpus": (),
+    "sample-corpus": ("sample_corpus",),
     "align": ("align",),
     "ingest": ("ingest", "align"),
     "normalize": ("normalize",),
@@ -324,7 +324,7 @@ def sample_corpus_cmd(ctx: Context, out_dir: Path, preset: str, seed: int):
     from .corpus.generate import generate
 
     with atomic_folder(out_dir, "the corpus", ctx.overwrite) as folder:  # renamed into place when complete
-        summary = generate(folder, preset, seed, overwrite=True)
+        summary = generate(folder, preset, seed, overwrite=True, settings=ctx.config.settings("sample_corpus"))
     ctx.say(f"wrote {summary['takes']} takes, {summary['seconds']:.1f} s of capture, "
             f"{summary['train_phones']} training phones, {summary['contamination_events']} contamination events to {out_dir}")
 
