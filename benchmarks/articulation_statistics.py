@@ -2,7 +2,7 @@
 Prints JSON.
 
     python benchmarks/articulation_statistics.py --facegood FACEGOOD_DIR [--phones WORK] \
-        [--capture LLF.csv] [--before benchmarks/data/actress_uncalibrated.toml]
+        [--capture LLF.csv] [--before benchmarks/data/actress_uncalibrated.toml] [--calibrate]
 
 Sources, each summarised by :func:`facesynth.corpus.statistics.articulation_statistics`:
 
@@ -27,7 +27,14 @@ divided by its own source's 5th..95th percentile range (over all the source's fr
 velocities are in ranges per second, accelerations in ranges per second squared, and per-class
 openings in fractions of the range, whether the source is in millimetres or weights. The raw
 ranges are reported in the source's unit. The audio envelope is the log-RMS envelope of
-``real_speech_lipsync.energy_envelope`` (0.1 s moving average).
+``real_speech_lipsync.energy_envelope`` (0.1 s moving average). Speed, events and the span are
+taken over speech (pauses of 0.25 s or more left out) where the phones are known.
+
+``--calibrate`` also searches the grid :data:`GRID` of the actress's ``[sample_corpus]``
+settings (the pause settings as in the defaults) for the point whose statistics come closest
+to the calibration takes' (:func:`calibration_distance`, on :data:`CALIBRATION_STATISTICS`
+and the audio lag), on 24 performances of the actress (:func:`quick_actress`), and reports
+every point's distance, best first. The defaults of ``[sample_corpus]`` are its best point.
 """
 
 from __future__ import annotations
@@ -61,6 +68,19 @@ CALIBRATION_TAKES = ("1114_2_01", "1114_2_02", "1114_2_03")
 SCORED_TAKES = ("1114_2_04", "1114_2_05", "1114_3_15", "1114_3_16")
 ASSETS = HERE.parents[1] / "shared" / "assets"
 ENVELOPE_SMOOTH_S = 0.1
+#: The settings searched by ``--calibrate`` (every combination). The jaw stops at 12 Hz (90% of a
+#: step in 62 ms, the fast end of jaw gestures in speech): past it the distance keeps falling
+#: slowly (0.023 at 16 Hz, 0.015 at 24 Hz) as the jaw comes to follow its step targets at once,
+#: which fits the solve's frame-to-frame motion rather than an articulator.
+GRID = {"jaw_stiffness_hz": (4.5, 6.0, 8.0, 10.0, 12.0), "lip_stiffness_scale": (1.0, 1.5, 2.0),
+        "target_lead_s": (0.015, 0.03)}
+#: The statistics ``--calibrate`` matches (paths into :func:`summarise`'s result).
+CALIBRATION_STATISTICS = (("opening", "velocity", "p95"), ("opening", "acceleration", "p50"),
+                          ("opening", "acceleration", "p95"), ("jaw", "velocity", "p95"),
+                          ("jaw", "acceleration", "p50"), ("jaw", "acceleration", "p95"),
+                          ("events", "openings_per_s"), ("coarticulation_span_s",))
+#: The audio lag difference (s) that counts as much as a factor e in one statistic.
+LAG_SCALE_S = 0.02
 
 
 def _phones(segments) -> list[tuple[float, float, str]]:
@@ -140,6 +160,70 @@ def summarise(source: dict) -> dict:
     return {"unit": source["unit"], "takes": source["takes"], **stats}
 
 
+def _get(stats: dict, path: tuple[str, ...]) -> float:
+    for key in path:
+        stats = stats[key]
+    return float(stats)  # type: ignore[arg-type]
+
+
+def calibration_distance(actress: dict, real: dict) -> float:
+    """How far the actress's statistics are from the real ones: the mean over
+    :data:`CALIBRATION_STATISTICS` of the squared log ratio, plus the squared audio-lag
+    difference in units of :data:`LAG_SCALE_S` over their count."""
+    logs = [np.log(_get(actress, p) / _get(real, p)) ** 2 for p in CALIBRATION_STATISTICS]
+    lag = (actress["audio_lag"]["lag_s"] - real["audio_lag"]["lag_s"]) / LAG_SCALE_S
+    return float(np.mean(logs) + lag**2 / len(logs))
+
+
+def quick_actress(settings, lip_markers: list[str], takes: int = 24, seed: int = 5) -> dict:
+    """The actress's statistics from ``takes`` performances (sentences of the ``small`` preset's
+    length, the four emotions in turn) with ``settings``, without writing a corpus."""
+    from facesynth.corpus.articulation import ContactSolver
+    from facesynth.corpus.expression import EMOTIONS
+    from facesynth.corpus.generate import CAPTURE_FPS, PRESETS, perform
+    from facesynth.corpus.markers import build_marker_set
+    from facesynth.corpus.speech import STYLES, design_sentences, synthesize_audio
+
+    rig = load_face_rig()
+    markers = build_marker_set(rig)
+    solver = ContactSolver(rig, markers.lip_pairs)
+    lips = np.array([markers.vertices[list(markers.names).index(m)] for m in lip_markers])
+    jaw = list(rig.arkit_names).index("jawOpen")
+    preset = PRESETS["small"]
+    sentences = design_sentences(takes, np.random.default_rng(seed), preset.min_phones, preset.max_phones)
+    source: dict = {"openings": [], "jaw": [], "envelopes": [], "phones": [], "unit": "mm (inner-lip gap)", "takes": takes}
+    for k, words in enumerate(sentences):
+        emotion = EMOTIONS[k % len(EMOTIONS)]
+        rng = np.random.default_rng([seed, k])
+        perf = perform(words, emotion, rng, rig, solver, preset.pause_prob, CAPTURE_FPS, settings=settings)
+        points = rig.evaluate(perf.weights, vertices=lips)
+        gap = np.linalg.norm(points[:, 0] - points[:, 1], axis=1)
+        curves = resample(np.stack([gap, rig.to_arkit(perf.weights)[:, jaw]], 1), CAPTURE_FPS, ARTICULATION_FPS)
+        audio = synthesize_audio(perf.utterance, perf.f0, CAPTURE_FPS, STYLES[emotion], 16000, rng)
+        utt = perf.utterance
+        source["openings"].append(curves[:, 0])
+        source["jaw"].append(curves[:, 1])
+        source["envelopes"].append(lipsync.energy_envelope(audio, 16000, len(curves), ARTICULATION_FPS,
+                                                           ENVELOPE_SMOOTH_S))
+        source["phones"].append(list(zip(utt.starts.tolist(), utt.ends.tolist(), utt.phones)))
+    return summarise(source)
+
+
+def calibrate(real: dict, lip_markers: list[str]) -> list[dict]:
+    """Every point of :data:`GRID` (the other settings as in the defaults) with its
+    :func:`calibration_distance` to the real statistics ``real``, best first."""
+    import dataclasses
+    import itertools
+
+    base = Config.load().settings("sample_corpus")
+    rows = []
+    for values in itertools.product(*GRID.values()):
+        point = dict(zip(GRID, values))
+        stats = quick_actress(dataclasses.replace(base, **point), lip_markers)
+        rows.append({**point, "distance": round(calibration_distance(stats, real), 4)})
+    return sorted(rows, key=lambda r: r["distance"])
+
+
 def main(argv=None) -> dict:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--facegood", type=Path, default=ASSETS / "real-speech" / "facegood",
@@ -152,6 +236,7 @@ def main(argv=None) -> dict:
                     help="settings file of the actress before calibration")
     ap.add_argument("--preset", default="small")
     ap.add_argument("--seed", type=int, default=0)
+    ap.add_argument("--calibrate", action="store_true", help="also search GRID against the calibration takes")
     args = ap.parse_args(argv)
     started = time.perf_counter()
     lip_markers = list(Config.load().settings("evaluate").lip_markers)
@@ -170,6 +255,8 @@ def main(argv=None) -> dict:
         if args.capture.exists():
             result["live_link_face"] = summarise(live_link_face_source(args.capture, lip_markers,
                                                                        corpora["actress_after"]))
+    if args.calibrate and "facegood_calibration" in result:
+        result["calibration"] = calibrate(result["facegood_calibration"], lip_markers)
     result["seconds"] = round(time.perf_counter() - started, 1)
     return result
 

@@ -105,6 +105,8 @@ PHONE_CLASSES: dict[str, tuple[str, ...]] = {
 
 #: Phone labels that mean silence.
 PAUSE_LABELS = frozenset({"pau", "sil", "sp", ""})
+#: Silences at least this long (s) are pauses, left out of the speech statistics.
+MIN_PAUSE_S = 0.25
 
 
 def normalise_by_range(curves: list[np.ndarray], low_pct: float = 5.0, high_pct: float = 95.0):
@@ -179,18 +181,25 @@ def audio_lag(envelopes: list[np.ndarray], openings: list[np.ndarray], fps: floa
     return {"lag_s": float((lags[best] + shift) / fps), "r": float(r[best]), "r_at_0": float(r[max_lag])}
 
 
-def autocorrelation_span(curves: list[np.ndarray], fps: float = ARTICULATION_FPS, level: float = 0.5) -> float:
-    """Coarticulation span (s): the lag at which the autocorrelation of the mouth opening (each
-    take's curve (T,) minus its mean, pooled over takes) first falls to ``level``, interpolated
-    between frames. How long one articulatory gesture keeps the curve like itself."""
+def autocorrelation_span(curves: list[np.ndarray], fps: float = ARTICULATION_FPS, level: float = 0.5,
+                         masks: list[np.ndarray] | None = None) -> float:
+    """Coarticulation span (s): the lag at which the autocorrelation of the mouth opening first
+    falls to ``level``, interpolated between frames; how long one articulatory gesture keeps the
+    curve like itself. Pooled over takes (each (T,)); with ``masks`` (each (T,) bool) only the
+    pairs of frames that are both inside the masks count, about the mean of the masked frames."""
+    masks = masks if masks is not None else [np.ones(len(c), bool) for c in curves]
+    frames = np.concatenate([np.asarray(c, np.float64)[m] for c, m in zip(curves, masks)])
+    mean = float(frames.mean())
     n_max = max(len(c) for c in curves)
-    num, den = np.zeros(n_max), 0.0
-    for c in curves:
-        x = np.asarray(c, np.float64) - np.mean(c)
+    num, pairs = np.zeros(n_max), np.zeros(n_max)
+    for c, m in zip(curves, masks):
+        x = (np.asarray(c, np.float64) - mean) * m
         full = np.correlate(x, x, mode="full")[len(x) - 1:]
+        count = np.correlate(m.astype(float), m.astype(float), mode="full")[len(m) - 1:]
         num[: len(full)] += full
-        den += float(x @ x)
-    acf = num / den
+        pairs[: len(count)] += count
+    with np.errstate(invalid="ignore", divide="ignore"):
+        acf = (num / pairs) / (num[0] / pairs[0])
     below = np.flatnonzero(acf <= level)
     if len(below) == 0:
         return float("nan")
@@ -219,17 +228,27 @@ def phone_class_opening(curves: list[np.ndarray], phones: list[list[tuple[float,
     return {name: (sums[name] / counts[name] if counts[name] else None) for name in sums}
 
 
-def speech_masks(phones: list[list[tuple[float, float, str]]], lengths: list[int],
-                 fps: float = ARTICULATION_FPS) -> list[np.ndarray]:
-    """Per take, (T,) bool: the frames inside a phone that is not a pause (``pau``, ``sil``,
-    ``sp`` or empty); phones per take as (start s, end s, label), ``lengths`` the takes' T."""
+def speech_masks(phones: list[list[tuple[float, float, str]]], lengths: list[int], fps: float = ARTICULATION_FPS,
+                 min_pause_s: float = MIN_PAUSE_S) -> list[np.ndarray]:
+    """Per take, (T,) bool: the frames of speech, i.e. outside every pause (consecutive phones
+    labelled ``pau``, ``sil``, ``sp`` or empty, merged) of at least ``min_pause_s``; shorter
+    silences (stop closures, recogniser slips) count as speech. Phones per take as (start s,
+    end s, label); ``lengths`` the takes' T."""
     masks = []
     for segs, n in zip(phones, lengths):
         t = np.arange(n) / fps
-        mask = np.zeros(n, bool)
+        mask = np.ones(n, bool)
+        pauses: list[list[float]] = []
         for a, b, label in segs:
             if label not in PAUSE_LABELS:
-                mask |= (t >= a) & (t < b)
+                continue
+            if pauses and abs(pauses[-1][1] - a) < 1e-6:
+                pauses[-1][1] = b
+            else:
+                pauses.append([a, b])
+        for a, b in pauses:
+            if b - a >= min_pause_s:
+                mask &= ~((t >= a) & (t < b))
         masks.append(mask)
     return masks
 
@@ -259,7 +278,7 @@ def articulation_statistics(openings: list[np.ndarray], jaw: list[np.ndarray], f
         "opening": motion_statistics(normalised, fps, masks),
         "jaw": motion_statistics(jaw_normalised, fps, masks),
         "events": opening_events(normalised, fps, masks=masks),
-        "coarticulation_span_s": autocorrelation_span(normalised, fps),
+        "coarticulation_span_s": autocorrelation_span(normalised, fps, masks=masks),
         "audio_lag": audio_lag(envelopes, normalised, fps) if envelopes is not None else None,
         "phone_class_opening": phone_class_opening(normalised, phones, fps) if phones is not None else None,
     }
