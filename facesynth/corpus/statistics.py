@@ -168,9 +168,11 @@ def audio_lag(envelopes: list[np.ndarray], openings: list[np.ndarray], fps: floa
         for env, x in zip(envelopes, openings):
             n = min(len(env), len(x))
             if k >= 0:
-                a.append(env[: n - k]), b.append(x[k:n])
+                a.append(env[: n - k])
+                b.append(x[k:n])
             else:
-                a.append(env[-k:n]), b.append(x[: n + k])
+                a.append(env[-k:n])
+                b.append(x[: n + k])
         r[i] = np.corrcoef(np.concatenate(a), np.concatenate(b))[0, 1]
     best = int(np.argmax(r))
     shift = 0.0

@@ -120,7 +120,7 @@ def test_the_settings_reach_the_articulation(rig, marker_set):
     settings keep the lips apart in a pause."""
     settings = Config.load().settings("sample_corpus")
     assert channel_stiffness_hz("jawOpen", settings) == settings.jaw_stiffness_hz
-    scaled = dataclasses.replace(settings, lip_stiffness_scale=2.0)
+    scaled = dataclasses.replace(settings, lip_stiffness_scale=2.0 * settings.lip_stiffness_scale)
     assert channel_stiffness_hz("pucker", scaled) == pytest.approx(2.0 * channel_stiffness_hz("pucker", settings))
     assert channel_stiffness_hz("jawForward", scaled) == channel_stiffness_hz("jawForward", settings)
     solver = ContactSolver(rig, marker_set.lip_pairs)
