@@ -28,6 +28,8 @@ Methods, all at 30 frames/s on the take's whole length, no lag (none is searched
   ``facesynth synthesize`` on a database built once from the built-in actress (``small``
   preset, seed 0, cached in ``--work``), then ``facesynth solve`` onto the built-in rig.
   Mouth opening = its inner-lip gap (``evaluate.lip_markers``); channels = the solve's curves.
+- ``facesynth_before`` (with ``--before-work``): the same from the database of an earlier run
+  (e.g. the actress before calibration), so that the two are paired on the same phones.
 - ``actress_mean``: the built-in actress's mean pose per phone (``facesynth evaluate``'s
   ``baseline``) at phone centres, interpolated, from the same database and phones; mouth
   opening only. It shows how much of facesynth's score is lost in the search itself.
@@ -53,7 +55,13 @@ a method's closures are the same minima of its own opening curve; the recall is 
 of real closures with a method closure within +-``--closure-tolerance-frames``, the precision
 the fraction of method closures with a real one that near.
 
-    python benchmarks/real_speech_lipsync.py --data FACEGOOD_DIR --work WORK [--takes 1114_3_15,1114_3_16] [--out table.md]
+    python benchmarks/real_speech_lipsync.py --data FACEGOOD_DIR --work WORK [--takes 1114_3_15,1114_3_16] [--out table.md] \
+        [--corpus-config benchmarks/data/actress_uncalibrated.toml]
+
+The actress is calibrated on takes 1114_2_01..03 (``benchmarks/articulation_statistics.py``);
+her figures on real speech are the ones on the other takes, 1114_2_04, 1114_2_05, 1114_3_15 and
+1114_3_16. ``--corpus-config`` builds her corpus with other settings (a ``--config`` file for
+``facesynth sample-corpus``), e.g. the ones before calibration.
 """
 
 from __future__ import annotations
@@ -82,7 +90,7 @@ TABLE = Path(__file__).resolve().parent / "data" / "facegood_arkit.tsv"
 #: The real mouth opening: FACEGOOD's two jaw-opening channels (see the module docstring).
 REAL_OPENING = ("mouth_stretch_c", "mouth_oh_c")
 CHANNELS = ("opening", "jawOpen", "mouthClose", "mouthFunnel", "mouthPucker", "mouthPress")
-METHODS = ("facesynth", "actress_mean", "openfacefx", "energy", "phone_mean")
+METHODS = ("facesynth", "facesynth_before", "actress_mean", "openfacefx", "energy", "phone_mean")
 #: The rig shapes (built-in rig, ICT names) behind each channel of the facial solve.
 RIG_SHAPES = {"jawOpen": ("jawOpen",), "mouthClose": ("mouthClose",), "mouthFunnel": ("mouthFunnel",),
               "mouthPucker": ("mouthPucker",), "mouthPress": ("mouthPress_L", "mouthPress_R")}
@@ -282,13 +290,15 @@ def facesynth_cli(*args: str) -> None:
         raise SystemExit(f"facesynth {' '.join(args)} failed: {done.stderr.strip() or done.stdout.strip()}")
 
 
-def build_database(work: Path) -> Path:
-    """The built-in actress's database (``small`` preset, seed 0) in ``work``, built once."""
+def build_database(work: Path, corpus_config: Path | None = None) -> Path:
+    """The built-in actress's database (``small`` preset, seed 0) in ``work``, built once; the
+    actress's settings from ``corpus_config`` (a ``--config`` file) where given."""
     db = work / "db.h5"
     if not db.exists():
         corpus = work / "corpus"
         if not (corpus / "manifest.csv").exists():
-            facesynth_cli("sample-corpus", str(corpus), "--preset", "small", "--seed", "0")
+            config = ["--config", str(corpus_config)] if corpus_config else []
+            facesynth_cli("sample-corpus", str(corpus), "--preset", "small", "--seed", "0", *config)
         steps = [("ingest", corpus / "manifest.csv", "corpus.h5"), ("normalize", "corpus.h5", "normalized.h5"),
                  ("pca", "normalized.h5", "pca.h5"), ("build-db", "pca.h5", "db.h5")]
         for command, src, dst in steps:
@@ -397,6 +407,11 @@ def main(argv=None) -> dict:
     ap.add_argument("--work", type=Path, required=True,
                     help="cache: the database, phones, motion and curves (empty it after changing facesynth)")
     ap.add_argument("--takes", default=None, help="comma-separated take names (default: every wav/*.wav)")
+    ap.add_argument("--before-work", type=Path, default=None,
+                    help="the --work folder of an earlier run (e.g. with --corpus-config): its database scored "
+                         "again on these phones as method facesynth_before, paired with facesynth")
+    ap.add_argument("--corpus-config", type=Path, default=None,
+                    help="a settings file for the actress's corpus (e.g. benchmarks/data/actress_uncalibrated.toml)")
     ap.add_argument("--window-s", type=float, default=10.0)
     ap.add_argument("--energy-smooth-s", type=float, default=0.1)
     ap.add_argument("--closure-depth", type=float, default=0.25)
@@ -422,7 +437,7 @@ def main(argv=None) -> dict:
     table = read_table()
     started = time.perf_counter()
     args.work.mkdir(parents=True, exist_ok=True)
-    db = build_database(args.work)
+    db = build_database(args.work, args.corpus_config)
 
     from facesynth.facerig import load_face_rig
     from facesynth.formats.mesh import read_binding
@@ -449,6 +464,11 @@ def main(argv=None) -> dict:
         methods = {"facesynth": facesynth_method(db, folder / "phones.TextGrid", folder, n, lip_markers),
                    "actress_mean": actress_mean_method(database, segs, n, lip_markers),
                    "openfacefx": openfacefx_method(segs, n, rig, lip_vertices)}
+        if args.before_work:
+            before = args.before_work / "takes" / take
+            before.mkdir(parents=True, exist_ok=True)
+            methods["facesynth_before"] = facesynth_method(build_database(args.before_work), folder / "phones.TextGrid",
+                                                           before, n, lip_markers)
         env = energy_envelope(samples, rate, n, FPS, args.energy_smooth_s)
         methods["energy"] = {"opening": env, "jawOpen": env}
         takes.append({"take": take, "n": n, "segs": segs, "real": real, "methods": methods,
@@ -498,7 +518,8 @@ def main(argv=None) -> dict:
         "settings": {"fps": FPS, "window_s": args.window_s, "lag_frames": 0, "energy_smooth_s": args.energy_smooth_s,
                      "closure_depth": args.closure_depth, "closure_prominence": args.closure_prominence,
                      "closure_tolerance_frames": args.closure_tolerance_frames, "resamples": args.resamples,
-                     "seed": args.seed, "phone_mean_fit": "alternate takes, two folds"},
+                     "seed": args.seed, "phone_mean_fit": "alternate takes, two folds",
+                     "corpus_config": args.corpus_config.name if args.corpus_config else "defaults"},
         **summary,
         "real_closures_per_minute": round(sum(p["real_closures"] for p in per_take.values()) / seconds * 60, 1),
         "per_take": per_take,

@@ -5,7 +5,7 @@ openfacefx (PyPI, MIT, NumPy only) is the text-driven lip-sync a user would pick
 facesynth: from time-stamped phones it builds Oculus-viseme curves with its own
 coarticulation, retargeted to the 52 ARKit blendshapes (its ``arkit`` preset). Here it is
 given the same phone timing as the DP; its ARKit curves are sampled at the capture rate, put
-through the corpus's face rig (:meth:`FaceRig.from_arkit`, :meth:`FaceRig.evaluate` at the
+through the corpus's face rig (:meth:`Rig.from_arkit`, :meth:`Rig.evaluate` at the
 marker vertices of ``markers.csv``) and moved into the normalized head frame with the same
 rigid transform as the clean ground truth (:func:`fit_rigid`), so that both are compared
 in one frame. It is optional: :func:`openfacefx_missing` says why it cannot run.

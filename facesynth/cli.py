@@ -294,7 +294,7 @@ def sample_corpus_cmd(ctx: Context, out_dir: Path, preset: str, seed: int):
     """
     from .stages import sample_corpus as stage
 
-    summary = stage.run(out_dir, preset, seed, ctx.overwrite)
+    summary = stage.run(out_dir, preset, seed, ctx.config.settings("sample_corpus"), ctx.overwrite)
     ctx.say(f"wrote {summary.takes} takes, {summary.seconds:.1f} s of capture, "
             f"{summary.train_phones} training phones, {summary.contamination_events} contamination events to {out_dir}")
 

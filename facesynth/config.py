@@ -458,6 +458,25 @@ class StreamSettings:
                                      unit="bytes", ge=1024, le=1 << 26)
 
 
+@dataclass(frozen=True)
+class SampleCorpusSettings:
+    """``[sample_corpus]``: the virtual actress's articulation (``facesynth sample-corpus``),
+    calibrated on real speech captures (docs/real-speech.md, benchmarks/articulation_statistics.py)."""
+
+    jaw_stiffness_hz: float = setting("calibrated on real speech: natural frequency of the jaw's critically damped "
+                                      "motion (higher: a faster jaw that undershoots less)", unit="Hz", gt=0, le=30)
+    lip_stiffness_scale: float = setting("calibrated on real speech: multiplier of the lip articulators' natural "
+                                         "frequencies (funnel, pucker, roll, press, stretch, raise, lower, shrug, spread)",
+                                         gt=0, le=5)
+    target_lead_s: float = setting("calibrated on real speech: the articulators' targets lead the phone boundaries "
+                                   "(and the sound) by this much", unit="s", ge=0, le=0.2)
+    pause_jaw_open: float = setting("calibrated on real speech: the jaw's target in a pause", unit="weight", ge=0, le=1)
+    pause_lips_closed: bool = setting("calibrated on real speech: the lips close in pauses of at least "
+                                      "pause_closure_min_s (as at rest), rather than staying apart")
+    pause_closure_min_s: float = setting("not measured: the shortest pause in which the lips close", unit="s",
+                                         ge=0, le=10)
+
+
 SECTIONS: dict[str, type] = {
     "ingest": IngestSettings,
     "align": AlignSettings,
@@ -483,6 +502,7 @@ SECTIONS: dict[str, type] = {
     "head_motion": HeadMotionSettings,
     "export": ExportSettings,
     "stream": StreamSettings,
+    "sample_corpus": SampleCorpusSettings,
 }
 
 S = TypeVar("S")

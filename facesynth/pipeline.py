@@ -124,7 +124,7 @@ _ANIMATION = ("motion", "meshanim", "curves")  # the kinds export and player tak
 STAGES: tuple[Stage, ...] = (
     _stage("sample-corpus", "Write the built-in virtual actress's capture corpus.",
            "facesynth sample-corpus DIR", _s("sample_corpus", "run", "SampleCorpusResult"),
-           output_options=("out_dir",), folder_outputs={"out_dir": Folder("the corpus")},
+           reads=("sample_corpus",), output_options=("out_dir",), folder_outputs={"out_dir": Folder("the corpus")},
            makes="C3D, WAV, TextGrid (phones, words, emotion), manifest, face.obj (the rig), markers.csv (with rigid "
                  "flags), groundtruth/ (per-frame rig weights, head, clean markers)",
            paper="III (a virtual capture)"),

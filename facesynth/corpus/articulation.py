@@ -12,9 +12,10 @@ Not one dominance blend, but a small articulatory model with separate, coupled a
   between, decaying per intervening phone; an unrounded vowel blocks it. Rounding also
   carries over weakly into the consonants after a rounded vowel.
 * **Dynamics**: each articulator is a critically damped second-order system driven by the
-  piecewise-constant target sequence, with its own stiffness (:data:`STIFFNESS_HZ`; the jaw is
-  slower than the lips), scaled per frame by the emotion. Short phones therefore undershoot
-  their targets, and fast (angry) speech with stiffer articulators undershoots less.
+  piecewise-constant target sequence (leading the phones by ``target_lead_s``), with its own
+  stiffness (:data:`STIFFNESS_HZ`; the jaw's and the lips' scale are settings), scaled per
+  frame by the emotion. Short phones therefore undershoot their targets, and fast (angry)
+  speech with stiffer articulators undershoots less.
 * **Bilabial contact**: lip closure is a contact, not a pose. A closure drive aims at a
   virtual target beyond contact (so even a short /p/ reaches it); where the drive reaches
   contact, ``mouthClose`` is solved on the rig (linear in the weights) so that the inner-lip
@@ -22,8 +23,14 @@ Not one dominance blend, but a small articulatory model with separate, coupled a
   shapes do; the drive's excess beyond contact becomes lip press. The jaw keeps its own
   trajectory through the closure. The closure moves the lower lip no faster than
   :data:`MAX_LIP_SPEED_MM_S`: from a wide-open vowel it starts earlier and releases later.
+  In pauses the jaw goes to ``pause_jaw_open`` and, where ``pause_lips_closed``, the lips
+  close lightly (drive :data:`PAUSE_CLOSURE_TARGET`) as at rest.
 * **Left/right asymmetry**: every sided channel (``_L``/``_R``) gets a per-take gain and a
   per-token jitter on each side.
+
+The settings named here are those of ``[sample_corpus]``
+(:class:`facesynth.config.SampleCorpusSettings`), calibrated on real speech captures
+(``benchmarks/articulation_statistics.py``).
 
 Weights are at the capture rate, shape (T, E) in the rig's shape order, 0..1.
 """
@@ -34,6 +41,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..config import SampleCorpusSettings
 from ..facerig import Rig
 from ..phonemes import PAU, VOWELS
 
@@ -50,7 +58,9 @@ CHANNELS: dict[str, tuple[str, ...]] = {
 CHANNEL_NAMES = tuple(CHANNELS)
 _C = {name: i for i, name in enumerate(CHANNEL_NAMES)}
 
-#: Stiffness of each articulator, as the natural frequency (Hz) of its critically damped system.
+#: Stiffness of each articulator, as the natural frequency (Hz) of its critically damped system,
+#: before the settings: the jaw's is replaced by ``jaw_stiffness_hz``, the lips' (all but the two
+#: jaw channels) are multiplied by ``lip_stiffness_scale``.
 STIFFNESS_HZ = {"jawOpen": 4.5, "jawForward": 3.5, "funnel": 6.0, "pucker": 5.0, "rollLower": 7.0,
                 "rollUpper": 7.0, "press": 7.0, "stretch": 6.0, "upperUp": 6.5, "lowerDown": 6.5,
                 "shrugLower": 5.0, "shrugUpper": 5.0, "spread": 5.5}
@@ -69,8 +79,11 @@ MAX_LIP_SPEED_MM_S = 200.0
 #: How far ahead (s) a consonant looks for a rounded vowel, and the decay per phone in between.
 ROUNDING_LOOKAHEAD_S = 0.35
 ROUNDING_DECAY = 0.85
-#: The target sequence leads the phone boundaries by this much (s): the articulators lag their input.
-TARGET_LEAD_S = 0.03
+#: The closure drive in a pause whose lips close (``pause_lips_closed``): just past contact, so
+#: the lips meet with little press.
+PAUSE_CLOSURE_TARGET = 1.15
+#: The articulators that are not the lips' (``lip_stiffness_scale`` leaves them alone).
+_JAW_CHANNELS = frozenset({"jawOpen", "jawForward"})
 
 _ROUNDED = {"uw": 0.9, "ow": 0.75, "uh": 0.55, "ao": 0.5, "oy": 0.6, "w": 1.0, "er": 0.45, "axr": 0.4, "aw": 0.35,
             "r": 0.45, "sh": 0.5, "zh": 0.5, "ch": 0.5, "jh": 0.5}
@@ -119,11 +132,13 @@ class TokenVariation:
 
 
 def token_targets(phones: list[str], starts: np.ndarray, ends: np.ndarray, stress: np.ndarray,
-                  amplitude: np.ndarray, rng: np.random.Generator, variation: TokenVariation = TokenVariation()):
+                  amplitude: np.ndarray, rng: np.random.Generator, variation: TokenVariation = TokenVariation(),
+                  pause_jaw_open: float = VISEME_TARGETS[PAU]["jawOpen"]):
     """Targets of every phone token.
 
     phones : n Festival phones; starts, ends : (n,) s; stress : (n,) 0/1;
-    amplitude : (n,) articulation amplitude of the emotion at each phone.
+    amplitude : (n,) articulation amplitude of the emotion at each phone; pause_jaw_open : the
+    jaw's target (weight) in a pause.
     Returns (targets (n, C) over :data:`CHANNEL_NAMES`, side gains (n, C, 2) for left/right,
     closure (n,) bool, the bilabial tokens).
     """
@@ -132,6 +147,8 @@ def token_targets(phones: list[str], starts: np.ndarray, ends: np.ndarray, stres
     for i, p in enumerate(phones):
         for name, v in VISEME_TARGETS.get(p, {}).items():
             targets[i, _C[name]] = v
+        if p == PAU:
+            targets[i, _C["jawOpen"]] = pause_jaw_open
     # Anticipatory rounding by look-ahead, carry-over after a rounded vowel.
     centres = 0.5 * (starts + ends)
     rounding = np.array([_ROUNDED.get(p, 0.0) for p in phones])
@@ -185,9 +202,11 @@ def critically_damped(inputs: np.ndarray, omega: np.ndarray, fps: float, substep
     return out
 
 
-def target_sequence(values: np.ndarray, starts: np.ndarray, ends: np.ndarray, n_frames: int, fps: float) -> np.ndarray:
-    """Per frame, the target of the phone whose (lead-shifted) interval holds it. values : (n, ...)."""
-    t = np.arange(n_frames) / fps + TARGET_LEAD_S
+def target_sequence(values: np.ndarray, starts: np.ndarray, ends: np.ndarray, n_frames: int, fps: float,
+                    lead_s: float) -> np.ndarray:
+    """Per frame, the target of the phone whose interval, moved ``lead_s`` seconds earlier, holds
+    it. values : (n, ...)."""
+    t = np.arange(n_frames) / fps + lead_s
     idx = np.clip(np.searchsorted(ends, t, side="right"), 0, len(ends) - 1)
     return values[idx]
 
@@ -226,18 +245,20 @@ class ContactSolver:
 
 def articulate(phones: list[str], starts: np.ndarray, ends: np.ndarray, stress: np.ndarray, n_frames: int, fps: float,
                amplitude: np.ndarray, stiffness: np.ndarray, take_sides: np.ndarray, rng: np.random.Generator,
-               rig: Rig, variation: TokenVariation = TokenVariation()):
+               rig: Rig, settings: SampleCorpusSettings, variation: TokenVariation = TokenVariation()):
     """Speech weights of one take before the lip contact is solved.
 
     amplitude : (n,) per phone; stiffness : (T,) per-frame multiplier of every articulator's
-    natural frequency; take_sides : (C, 2) per-take left/right gains.
+    natural frequency; take_sides : (C, 2) per-take left/right gains; settings : the articulation
+    settings (jaw and lip stiffness, target lead, pauses).
     Returns (weights (T, E) rig weights without mouthClose, closure drive (T,) where 1 is contact
     and above 1 presses).
     """
-    targets, sides, closure = token_targets(phones, starts, ends, stress, amplitude, rng, variation)
-    omega = 2 * np.pi * np.array([STIFFNESS_HZ[c] for c in CHANNEL_NAMES])
-    per_frame = target_sequence(targets, starts, ends, n_frames, fps)
-    side_frames = target_sequence(sides, starts, ends, n_frames, fps) * take_sides[None]
+    targets, sides, closure = token_targets(phones, starts, ends, stress, amplitude, rng, variation,
+                                            settings.pause_jaw_open)
+    omega = 2 * np.pi * np.array([channel_stiffness_hz(c, settings) for c in CHANNEL_NAMES])
+    per_frame = target_sequence(targets, starts, ends, n_frames, fps, settings.target_lead_s)
+    side_frames = target_sequence(sides, starts, ends, n_frames, fps, settings.target_lead_s) * take_sides[None]
     channels = np.clip(critically_damped(per_frame, stiffness[:, None] * omega[None], fps), 0.0, None)
     weights = np.zeros((n_frames, len(rig.shape_names)))
     for c, name in enumerate(CHANNEL_NAMES):
@@ -249,10 +270,22 @@ def articulate(phones: list[str], starts: np.ndarray, ends: np.ndarray, stress: 
             weights[:, rig.shape_index(shapes[0])] = channels[:, c]
     t = np.arange(n_frames) / fps
     drive_input = np.zeros(n_frames)
+    if settings.pause_lips_closed:
+        for a, b, p in zip(starts, ends, phones):
+            if p == PAU and b - a >= settings.pause_closure_min_s:
+                drive_input[(t >= a) & (t < b - CLOSURE_OFFSET_LEAD_S)] = PAUSE_CLOSURE_TARGET
     for a, b in zip(starts[closure], ends[closure]):
         drive_input[(t >= a - CLOSURE_ONSET_LEAD_S) & (t < b - CLOSURE_OFFSET_LEAD_S)] = CLOSURE_VIRTUAL_TARGET
     drive = critically_damped(drive_input[:, None], stiffness[:, None] * 2 * np.pi * CLOSURE_HZ, fps)[:, 0]
     return weights, drive
+
+
+def channel_stiffness_hz(channel: str, settings: SampleCorpusSettings) -> float:
+    """The natural frequency (Hz) of one articulatory channel of :data:`CHANNEL_NAMES` under
+    ``settings`` (before the emotion's per-frame multiplier)."""
+    if channel == "jawOpen":
+        return settings.jaw_stiffness_hz
+    return STIFFNESS_HZ[channel] * (1.0 if channel in _JAW_CHANNELS else settings.lip_stiffness_scale)
 
 
 def slew_limited(values: np.ndarray, max_step: float) -> np.ndarray:

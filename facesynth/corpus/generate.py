@@ -35,6 +35,7 @@ from pathlib import Path
 import numpy as np
 
 from ..artifacts import check_output_folder
+from ..config import Config, SampleCorpusSettings
 from ..errors import InputError
 from ..facerig import Rig, load_face_rig
 from ..formats.audio import write_wav
@@ -108,8 +109,11 @@ class Performance:
 
 
 def perform(words: list[str], emotion: str, rng: np.random.Generator, rig: Rig, solver: ContactSolver,
-            pause_prob: float, fps: float = 120.0, change_probability: float = EMOTION_CHANGE_PROBABILITY) -> Performance:
-    """The actress reads ``words`` in ``emotion`` (sometimes changing to another at a word boundary)."""
+            pause_prob: float, fps: float = 120.0, change_probability: float = EMOTION_CHANGE_PROBABILITY,
+            settings: SampleCorpusSettings | None = None) -> Performance:
+    """The actress reads ``words`` in ``emotion`` (sometimes changing to another at a word boundary),
+    articulating with ``settings`` (default: ``[sample_corpus]`` of configs/default.toml)."""
+    settings = settings or default_settings()
     second, switch_word = None, None
     if len(words) >= 3 and rng.random() < change_probability:
         second = str(rng.choice([e for e in EMOTIONS if e != emotion]))
@@ -132,7 +136,7 @@ def perform(words: list[str], emotion: str, rng: np.random.Generator, rig: Rig, 
 
     take_sides = np.exp(rng.normal(0.0, TokenVariation().take_side_sigma, (len(CHANNEL_NAMES), 2)))
     weights, drive = articulate(utt.phones, utt.starts, utt.ends, utt.stress, n_frames, fps, amplitude, stiffness,
-                                take_sides, rng, rig)
+                                take_sides, rng, rig, settings)
     weights += emotion_weights(rig, track, fps, rng)
     pauses = [(float(a), float(b)) for a, b, p in zip(utt.starts, utt.ends, utt.phones) if p == PAU]
     blink_scale = float(np.mean(track.blend @ np.array([s.blink_duration for s in style_rows])))
@@ -220,8 +224,16 @@ def _capture(clean: np.ndarray, rotations: np.ndarray, translations: np.ndarray,
     return captured + rng.normal(0.0, MARKER_NOISE_MM, captured.shape)
 
 
-def generate(out_dir: Path, preset: str = "small", seed: int = 0, overwrite: bool = False) -> dict:
-    """Write the sample corpus into ``out_dir``. Returns a summary (takes, frames, nodes...)."""
+def default_settings() -> SampleCorpusSettings:
+    """The ``[sample_corpus]`` settings of configs/default.toml."""
+    return Config.load().settings("sample_corpus")
+
+
+def generate(out_dir: Path, preset: str = "small", seed: int = 0, overwrite: bool = False,
+             settings: SampleCorpusSettings | None = None) -> dict:
+    """Write the sample corpus into ``out_dir``, the actress articulating with ``settings``
+    (default: :func:`default_settings`). Returns a summary (takes, frames, nodes...)."""
+    settings = settings or default_settings()
     if preset not in PRESETS:
         raise InputError(f"unknown preset {preset!r}; choose tiny, small or paper.")
     out_dir = Path(out_dir)
@@ -250,7 +262,7 @@ def generate(out_dir: Path, preset: str = "small", seed: int = 0, overwrite: boo
     for (emotion, s), take_seed in progress(list(zip(jobs, take_seeds)), "sample-corpus"):
         rng = np.random.default_rng(take_seed)
         take = f"{emotion}_s{s:03d}"
-        perf = perform(sentences[s], emotion, rng, rig, solver, spec.pause_prob, CAPTURE_FPS)
+        perf = perform(sentences[s], emotion, rng, rig, solver, spec.pause_prob, CAPTURE_FPS, settings=settings)
         utt = perf.utterance
         clean = rig.evaluate(perf.weights, vertices=markers.vertices)  # (T, M, 3) head frame, mm
         captured = _capture(clean, perf.rotations, perf.translations, rng)

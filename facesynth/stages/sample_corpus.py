@@ -8,6 +8,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..artifacts import atomic_folder
+from ..config import SampleCorpusSettings
 from ..corpus.generate import generate
 
 
@@ -29,9 +30,11 @@ class SampleCorpusResult:
     contamination_events: int
 
 
-def run(out_dir: Path, preset: str, seed: int, overwrite: bool = False) -> SampleCorpusResult:
-    """Write the corpus of ``preset`` ('tiny', 'small', 'paper') made with ``seed`` into ``out_dir``."""
+def run(out_dir: Path, preset: str, seed: int, settings: SampleCorpusSettings | None = None,
+        overwrite: bool = False) -> SampleCorpusResult:
+    """Write the corpus of ``preset`` ('tiny', 'small', 'paper') made with ``seed`` into ``out_dir``,
+    the actress articulating with ``settings`` (``[sample_corpus]``; None: the defaults)."""
     with atomic_folder(out_dir, "the corpus", overwrite) as folder:  # renamed into place when complete
-        summary = generate(folder, preset, seed, overwrite=True)
+        summary = generate(folder, preset, seed, overwrite=True, settings=settings)
     return SampleCorpusResult(summary["takes"], summary["frames"], summary["seconds"], summary["train_phones"],
                               summary["contamination_events"])
