@@ -207,7 +207,7 @@ def test_readme_block_runs(tmp_path):
     assert done.returncode == 0, done.stderr[-4000:]
     steps = [shlex.split(line)[1] for line in block.splitlines() if line.lstrip().startswith("$fs ")]
     assert steps[0] == "sample-corpus"
-    assert {"ingest", "normalize", "pca", "build-db", "synthesize", "deform", "render"} <= set(steps)
+    assert {"ingest", "normalize", "pca", "build-db", "synthesize", "solve", "render"} <= set(steps)
     videos = list(tmp_path.rglob("*.avi"))
     assert videos and all(v.stat().st_size > 0 for v in videos)
 
