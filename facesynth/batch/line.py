@@ -280,7 +280,8 @@ def _run_line(line: Line, job: Job) -> LineResult:
             for name in ("method", "phones", "audio_s", "warnings", "recognized"):
                 if name in recorded:
                     setattr(result, name, recorded[name])
-            result.status, result.outputs = "skipped", sorted(p.name for p in outputs.values())
+            result.status = "skipped"
+            result.outputs = sorted(p.name for p in list(outputs.values()) + extra_paths(job, line.id))
             result.total_s, result.cpu_s = time.perf_counter() - started, time.process_time() - cpu
             return result
         made_here = set(recorded_outputs(old)) if old is not None else set()
