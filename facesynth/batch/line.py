@@ -162,13 +162,21 @@ def bound_mesh(mesh: Path, binding: Path, marker_names: list[str], settings: Def
 
 
 def rig_of(job: Job):
-    """The job's rig (built-in, or the user's with its binding), read once per worker process."""
-    from ..retarget.rig import load_rig
+    """The job's rig (built-in, or the user's with its binding), read once per worker process.
+    For the arkit output a user's rig gets the ARKit map by shape name, as ``openfacefx`` drives
+    it (:func:`facesynth.retarget.rig.arkit_to_rig`)."""
+    import dataclasses
 
-    files = tuple(_file_key(p) for p in (job.rig, job.rig_binding) if p is not None)
-    key = ("rig", str(job.rig), files)
+    from ..retarget.rig import arkit_to_rig, load_rig
+
+    files = tuple(_file_key(p) for p in (job.rig, job.rig_binding) if p is not None and p.is_file())
+    key = ("rig", str(job.rig), files, "arkit" in job.outputs)
     if key not in _CACHE:
-        _CACHE[key] = load_rig(job.rig, job.rig_binding)
+        rig = load_rig(job.rig, job.rig_binding)
+        if "arkit" in job.outputs and rig.arkit_to_rig is None:
+            names, matrix = arkit_to_rig(rig, str(job.rig))
+            rig = dataclasses.replace(rig, arkit_names=names, arkit_to_rig=matrix)
+        _CACHE[key] = rig
     return _CACHE[key]
 
 

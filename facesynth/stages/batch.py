@@ -82,15 +82,14 @@ def prepare(script: Path, db: Path, out_dir: Path, settings: BatchSettings, synt
 def _check_rig(rig: Path | None, rig_binding: Path | None, outputs) -> str:
     """Read the rig of the rig outputs once, before any work (a user's rig without its binding, or
     without the ARKit names an arkit output needs, is refused); returns its sha256."""
-    from ..retarget.rig import BUILTIN, load_rig
+    from ..retarget.rig import BUILTIN, arkit_to_rig, load_rig
 
     if rig is not None and str(rig) != BUILTIN and rig_binding is None:
         raise UsageError(f"{rig}: a user's rig needs --rig-binding, a CSV of marker,vertex placing the motion's "
                          "markers on it.")
     loaded = load_rig(rig, rig_binding)
-    if "arkit" in outputs and loaded.arkit_to_rig is None:
-        raise InputError(f"{rig}: rig {loaded.name!r} has no ARKit shape names, which the arkit output needs; "
-                         "drop arkit from --outputs, or name the rig's shapes as ARKit does.")
+    if "arkit" in outputs:
+        arkit_to_rig(loaded, str(rig))  # a rig none of whose shapes has an ARKit name is refused
     return loaded.sha256
 
 

@@ -315,3 +315,50 @@ def test_the_command_renders_the_rig_without_a_mesh(tiny_corpus, tiny_db, takes,
     r = CliRunner().invoke(main, ["batch", str(script), "--db", str(tiny_db), "-o", str(tmp_path / "p"),
                                   "--outputs", "anim"])
     assert r.exit_code == 2 and "the anim output needs --mesh and --binding" in r.output
+
+
+def test_a_user_s_rig_takes_the_rig_outputs(tiny_corpus, tiny_db, takes, config, tmp_path):
+    """--rig FOLDER --rig-binding CSV: the line solves onto that rig (its ARKit-named shapes drive
+    the ARKit CSV by name, the others none), and the video poses it; a user's rig without its
+    binding, or without one ARKit-named shape for the arkit output, is refused before any work."""
+    import imageio_ffmpeg
+    import numpy as np
+
+    from facesynth.batch.line import run_line
+    from facesynth.batch.script import read_script
+    from facesynth.errors import InputError, UsageError
+    from facesynth.facerig import load_face_rig
+    from facesynth.formats.mesh import write_obj
+    from facesynth.model.curves import RigCurves
+    from facesynth.retarget.rig import builtin_rig
+
+    builtin = load_face_rig()
+    folder = tmp_path / "myrig"
+    folder.mkdir()
+    write_obj(folder / "neutral.obj", builtin.neutral, builtin.faces)
+    for name, shape in (("jawOpen", "jawOpen"), ("mouthFunnel", "mouthFunnel"), ("wrinkle", "cheekRaiser_L")):
+        write_obj(folder / f"{name}.obj", builtin.neutral + builtin.deltas[builtin.shape_index(shape)], builtin.faces)
+    binding = _write(tmp_path / "binding.csv", [("marker", "vertex")] + sorted(builtin_rig().binding.items()))
+    row = takes["neutral_s001"]
+    script = _write(tmp_path / "s.csv", [("id", "audio", "alignment"),
+                                         ("one", str(tiny_corpus / row["audio"]), str(tiny_corpus / row["alignment"]))])
+    values = _settings(config, outputs=("curves", "arkit", "gltf", "avi"))
+    values[5] = dataclasses.replace(values[5], width=64, height=48)
+    _, job = batch.prepare(script, tiny_db, tmp_path / "out", *values, rig=folder, rig_binding=binding)
+    result = run_line(read_script(script)[0], job)
+    assert result.status == "ok", result.reason
+    curves = RigCurves.read(tmp_path / "out" / "one.curves.h5")
+    assert curves.rig_name == "myrig" and curves.shape_names == ["jawOpen", "mouthFunnel", "wrinkle"]
+    assert curves.weights[:, 0].max() > 0.05  # the jaw opens in speech
+    table = list(csv.DictReader(open(tmp_path / "out" / "one.arkit.csv")))
+    assert max(float(r["JawOpen"]) for r in table) > 0.05 and all(float(r["EyeBlinkLeft"]) == 0 for r in table)
+    assert imageio_ffmpeg.count_frames_and_secs(str(tmp_path / "out" / "one.avi"))[0] == curves.n_frames
+    assert np.isfinite(curves.weights).all()
+
+    with pytest.raises(UsageError, match="a user's rig needs --rig-binding"):
+        batch.prepare(script, tiny_db, tmp_path / "o2", *values, rig=folder)
+    for p in folder.glob("*.obj"):
+        if p.stem != "neutral":
+            p.rename(p.with_name(f"shape_{p.name}"))
+    with pytest.raises(InputError, match="none of the shapes of rig 'myrig' has an ARKit name"):
+        batch.prepare(script, tiny_db, tmp_path / "o3", *values, rig=folder, rig_binding=binding)
