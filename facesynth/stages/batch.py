@@ -38,6 +38,7 @@ from ..config import (
 from ..errors import InputError, UsageError
 from ..methods import MethodSettings
 from ..progress import progress
+from ..retarget.rig import BUILTIN
 
 
 def prepare(script: Path, db: Path, out_dir: Path, settings: BatchSettings, synthesize: SynthesizeSettings | MethodSettings,
@@ -58,6 +59,8 @@ def prepare(script: Path, db: Path, out_dir: Path, settings: BatchSettings, synt
     if "anim" in settings.outputs and (mesh is None or binding is None):
         raise UsageError("the anim output needs --mesh and --binding (e.g. corpus/face.obj and corpus/markers.csv).")
     rig_sha256 = ""
+    if rig is not None and str(rig) == BUILTIN:
+        rig = None
     if RIG_OUTPUTS & set(settings.outputs):
         rig_sha256 = _check_rig(rig, rig_binding, settings.outputs)
     elif rig is not None or rig_binding is not None:
@@ -82,9 +85,9 @@ def prepare(script: Path, db: Path, out_dir: Path, settings: BatchSettings, synt
 def _check_rig(rig: Path | None, rig_binding: Path | None, outputs) -> str:
     """Read the rig of the rig outputs once, before any work (a user's rig without its binding, or
     without the ARKit names an arkit output needs, is refused); returns its sha256."""
-    from ..retarget.rig import BUILTIN, arkit_to_rig, load_rig
+    from ..retarget.rig import arkit_to_rig, load_rig
 
-    if rig is not None and str(rig) != BUILTIN and rig_binding is None:
+    if rig is not None and rig_binding is None:
         raise UsageError(f"{rig}: a user's rig needs --rig-binding, a CSV of marker,vertex placing the motion's "
                          "markers on it.")
     loaded = load_rig(rig, rig_binding)

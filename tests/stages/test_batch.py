@@ -355,6 +355,7 @@ def test_a_user_s_rig_takes_the_rig_outputs(tiny_corpus, tiny_db, takes, config,
     assert imageio_ffmpeg.count_frames_and_secs(str(tmp_path / "out" / "one.avi"))[0] == curves.n_frames
     assert np.isfinite(curves.weights).all()
 
+    assert batch.prepare(script, tiny_db, tmp_path / "o1", *values, rig=Path("builtin"))[1].rig is None
     with pytest.raises(UsageError, match="a user's rig needs --rig-binding"):
         batch.prepare(script, tiny_db, tmp_path / "o2", *values, rig=folder)
     for p in folder.glob("*.obj"):
