@@ -55,7 +55,8 @@ from facesynth.model.motiondb import MotionDatabase
 from facesynth.motion.postprocess import downsample
 from facesynth.retarget import deform
 from facesynth.retarget.gradients import GradientBlender
-from facesynth.stages import capture, keyshapes, retarget, solve, synthesize
+from facesynth.retarget.solve import solve_motion
+from facesynth.stages import capture, keyshapes, retarget, synthesize
 
 BILABIALS = ("p", "b", "m")
 
@@ -165,7 +166,7 @@ def main(argv: list[str]) -> int:
     per = {k: [] for k in ("solve_rms", "solve_corr", "solve_mesh", "deform_mesh", "truth_gap", "solve_gap", "deform_gap",
                            "truth_closed", "solve_closed", "deform_closed", "syn_solve_resid", "syn_solve_gap")}
     for key, d in takes.items():
-        w, _, _ = solve.solve(d["motion"], target, ssolve, key)
+        w, _, _ = solve_motion(d["motion"], target, ssolve, key)
         w = w[: d["n"]]
         rms, corr = weight_scores(rig, w, d["truth"])
         tv, sv = rig.evaluate(d["truth"]), rig.evaluate(w)
@@ -180,7 +181,7 @@ def main(argv: list[str]) -> int:
         per["truth_closed"].append(closed(tv[b], ms))
         per["solve_closed"].append(closed(sv[b], ms))
         per["deform_closed"].append(closed(d["gauss"][b], ms))
-        ws, rs, _ = solve.solve(d["synth"], target, ssolve, key)
+        ws, rs, _ = solve_motion(d["synth"], target, ssolve, key)
         d["synth_solve"] = ws
         per["syn_solve_resid"].append(float(np.sqrt(np.nanmean(rs**2))))
         sb = bilabial_frames(d["corpus"], d["take"], fps, len(ws))

@@ -39,7 +39,8 @@ from facesynth.model.motion import Motion
 from facesynth.opencl import device_description
 from facesynth.retarget.gradients import GradientBlender
 from facesynth.retarget.rig import builtin_rig
-from facesynth.stages import retarget, solve
+from facesynth.retarget.solve import solve_motion
+from facesynth.stages import retarget
 
 
 class Clock:
@@ -93,7 +94,7 @@ def main(argv: list[str]) -> int:
         clock.run("curves", lambda: np.clip(r.alpha @ weights_k, 0, 1))
         clock.run("linear_mesh", lambda: blender.linear(r.alpha))
         clock.run("gradient_mesh", lambda: blender.blend(r.alpha))
-    _, _, iterations = clock.run("direct_solve", lambda: solve.solve(clip, rig, config.settings("solve"), str(args.motion)))
+    _, _, iterations = clock.run("direct_solve", lambda: solve_motion(clip, rig, config.settings("solve"), str(args.motion)))
     out = {"frames": n, "fps": motion.fps, "vertices": len(rig.neutral), "triangles": len(rig.faces),
            "keyshapes": int(r.alpha.shape[1]), "keyshapes_used": int(r.alpha.any(0).sum()),
            "gradient_device": device_description(blender.use_opencl), **clock.report()}

@@ -944,22 +944,28 @@ def player(ctx: Context, artifact: Path | None, audio: Path | None, motion: Path
               help="The synthesis method of every line (default: dp, following synthesize.search), as for synthesize.")
 @click.option("-o", "--output", type=PATH, required=True, help="Output folder (per-line files and the summary).")
 @click.option("--outputs", default=None, metavar="KINDS",
-              help="Comma-separated: motion, anim, avi (default: batch.outputs).")
-@click.option("--mesh", type=EXISTING, default=None, help="Face mesh for anim and avi (.obj or .ply).")
-@click.option("--binding", type=EXISTING, default=None, help="CSV 'marker,vertex' binding, for anim and avi.")
+              help="Comma-separated: motion, curves, arkit, gltf, usd, avi, anim (default: batch.outputs).")
+@click.option("--rig", type=PATH, default=None,
+              help="The rig of curves, arkit, gltf, usd and avi: a folder of OBJ files or a .gltf/.glb (default: built-in).")
+@click.option("--rig-binding", type=EXISTING, default=None,
+              help="CSV 'marker,vertex' placing the markers on --rig (a user's rig needs it).")
+@click.option("--mesh", type=EXISTING, default=None, help="A plain face mesh for anim (.obj or .ply).")
+@click.option("--binding", type=EXISTING, default=None, help="CSV 'marker,vertex' binding of --mesh, for anim.")
 @click.option("--scheduler", default=None, metavar="ADDRESS", help="An existing Dask scheduler (tcp://host:8786).")
 @click.option("--workers", type=click.IntRange(min=1), default=None,
               help="Local worker processes (default: batch.workers, 0 = one per core).")
 @stage
-def batch(ctx: Context, script: Path, db_path: Path, method: str | None, output: Path, outputs: str | None, mesh,
-          binding, scheduler: str | None, workers: int | None):
+def batch(ctx: Context, script: Path, db_path: Path, method: str | None, output: Path, outputs: str | None,
+          rig: Path | None, rig_binding: Path | None, mesh, binding, scheduler: str | None, workers: int | None):
     """Synthesize every line of a dialogue script on Dask, with a summary of what failed.
 
     SCRIPT is a CSV with columns id, audio, text (or alignment: a TextGrid or .lab), and
     optionally emotion (or emotions: a per-phone emotion file) and constraints; paths are
     relative to its folder. Each line is aligned (when no alignment is given), synthesized and
-    written to OUTPUT as ID.motion.h5 (ID.anim.h5, ID.avi as asked), ID.TextGrid and ID.json
-    (its manifest); a rerun skips lines whose outputs exist and whose inputs did not change.
+    written to OUTPUT as ID.motion.h5, and as asked ID.curves.h5 (the facial solve on the rig),
+    ID.arkit.csv, ID.gltf with ID.wav, ID.usd, ID.avi (the rig rendered) and ID.anim.h5 (a plain
+    mesh deformed), with ID.TextGrid and ID.json (its manifest: every file with its sha256); a
+    rerun skips lines whose outputs are unchanged and whose inputs did not change.
     OUTPUT/summary.csv and summary.html list every line's status, alignment method, phone
     count, timings and the reason of each failure. Exit status 1 when any line failed.
 
@@ -968,6 +974,7 @@ def batch(ctx: Context, script: Path, db_path: Path, method: str | None, output:
       echo id,audio,text,emotion > script.csv
       echo l1,corpus/audio/neutral_s000.wav,beautiful he men from began pretty strong,happy >> script.csv
       facesynth batch script.csv --db db.h5 -o lines/ --workers 1
+      facesynth batch script.csv --db db.h5 -o lines/ --outputs curves,gltf,avi
     """
     import dataclasses
 
@@ -976,9 +983,10 @@ def batch(ctx: Context, script: Path, db_path: Path, method: str | None, output:
     settings = ctx.config.settings("batch")
     if outputs is not None:
         kinds = tuple(k.strip() for k in outputs.split(",") if k.strip())
-        unknown = [k for k in kinds if k not in ("motion", "anim", "avi")]
+        choices = ("motion", "curves", "arkit", "gltf", "usd", "avi", "anim")
+        unknown = [k for k in kinds if k not in choices]
         if unknown or not kinds:
-            raise click.BadParameter(f"{outputs!r}: give a comma-separated list of motion, anim, avi.",
+            raise click.BadParameter(f"{outputs!r}: give a comma-separated list of {', '.join(choices)}.",
                                      param_hint="--outputs")
         settings = dataclasses.replace(settings, outputs=kinds)
     if workers is not None:
@@ -996,7 +1004,8 @@ def batch(ctx: Context, script: Path, db_path: Path, method: str | None, output:
     s = stage.run(script, db_path, output, settings, method_settings, ctx.config.settings("ingest"),
                   ctx.config.settings("align"), ctx.config.settings("deform"), ctx.config.settings("render"),
                   method=core.chosen_method(method, None, method_settings.synthesize.search), mesh=mesh, binding=binding,
-                  scheduler=scheduler, overwrite=ctx.overwrite, on_result=on_result)
+                  scheduler=scheduler, overwrite=ctx.overwrite, on_result=on_result, solve=ctx.config.settings("solve"),
+                  export=ctx.config.settings("export"), rig=rig, rig_binding=rig_binding)
     skipped = f", {s.skipped} up to date" if s.skipped else ""
     ctx.say(f"{s.ok} of {s.lines} lines done{skipped}, {s.failed} failed in {s.seconds:.1f} s; "
             f"summary: {s.html}")

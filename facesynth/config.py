@@ -286,8 +286,8 @@ class LimitsSettings:
 class BatchSettings:
     """``[batch]``: what each line of ``facesynth batch`` writes and how many Dask workers run them."""
 
-    outputs: tuple[str, ...] = setting("not in the paper: per-line outputs", choices=("motion", "anim", "avi"),
-                                       min_items=1)
+    outputs: tuple[str, ...] = setting("not in the paper: per-line outputs",
+                                       choices=("motion", "curves", "arkit", "gltf", "usd", "avi", "anim"), min_items=1)
     workers: int = setting("not in the paper: local Dask worker processes; 0: one per core", unit="processes", ge=0)
 
 

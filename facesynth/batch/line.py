@@ -11,12 +11,17 @@ markers (:func:`bound_mesh`) and, through :mod:`facesynth.opencl`, the OpenCL co
 caches are keyed by the file's path, size and modification time (and the settings), so a
 database rebuilt between two batches on a long-lived cluster is read again.
 
-Outputs of line ``ID`` in the batch folder: ``ID.motion.h5``, ``ID.anim.h5``, ``ID.avi`` (as
-asked), ``ID.TextGrid`` (the alignment, when the line was aligned) and ``ID.json``, the
-manifest written last: the sha256 of every input, the settings and the outputs. A rerun
-skips a line whose manifest matches its inputs and whose outputs all exist. Every file is
-written to a temporary name in the folder and renamed into place, so a killed worker
-leaves no half-written output, and no manifest for a line it did not finish.
+Outputs of line ``ID`` in the batch folder, as asked: ``ID.motion.h5``; ``ID.curves.h5`` (the rig
+curves of the facial solve of the motion, on the built-in rig or the job's rig, as ``facesynth
+solve`` makes them), ``ID.arkit.csv`` (their Live Link Face CSV), ``ID.gltf`` with ``ID.wav``
+(the rig with its morph targets, the weights animation and the line's audio), ``ID.usd`` (UsdSkel
+blendshapes) and ``ID.avi`` (the rig posed by the curves, rendered with the line's audio), all
+made from the one solve; ``ID.anim.h5`` (the Gaussian deformation of the job's plain mesh);
+``ID.TextGrid`` (the alignment, when the line was aligned) and ``ID.json``, the manifest written
+last: the sha256 of every input, the settings, the outputs asked, and every file written with its
+sha256. A rerun skips a line whose manifest matches its inputs and whose files are all there
+unchanged. Every file is written to a temporary name in the folder and renamed into place, so a
+killed worker leaves no half-written output, and no manifest for a line it did not finish.
 """
 
 from __future__ import annotations
@@ -30,7 +35,16 @@ from pathlib import Path
 
 from .. import __version__, methods
 from ..artifacts import atomic_path, sha256_of
-from ..config import AlignSettings, DeformSettings, IngestSettings, LimitsSettings, RenderSettings, settings_json
+from ..config import (
+    AlignSettings,
+    DeformSettings,
+    ExportSettings,
+    IngestSettings,
+    LimitsSettings,
+    RenderSettings,
+    SolveSettings,
+    settings_json,
+)
 from ..errors import FacesynthError, InputError
 from ..formats.audio import read_audio
 from ..formats.labels import write_textgrid
@@ -39,8 +53,12 @@ from ..methods import MethodSettings, core
 from ..phonemes import PAU
 from .script import Line
 
-#: Output kinds and the file each writes, by line id.
-SUFFIXES = {"motion": ".motion.h5", "anim": ".anim.h5", "avi": ".avi"}
+#: Output kinds and the file each writes, by line id (``gltf`` also writes ``ID.wav`` beside it).
+SUFFIXES = {"motion": ".motion.h5", "curves": ".curves.h5", "arkit": ".arkit.csv", "gltf": ".gltf", "usd": ".usd",
+            "avi": ".avi", "anim": ".anim.h5"}
+
+#: The outputs made from the rig curves of the facial solve.
+RIG_OUTPUTS = frozenset({"curves", "arkit", "gltf", "usd", "avi"})
 
 
 @dataclass(frozen=True)
@@ -51,8 +69,10 @@ class Job:
     (the motion database, or the method's fitted model), ``db_sha256`` that file's sha256,
     computed once by the client; ``settings`` the methods' settings; ``limits`` the command's
     ``[limits]``, put in force in the worker for each line; ``mesh`` and ``binding`` are needed
-    for the ``anim`` and ``avi`` outputs; ``redo`` (``--overwrite``) redoes lines whose manifest
-    matches.
+    for the ``anim`` output; ``redo`` (``--overwrite``) redoes lines whose manifest matches.
+    The rig outputs (:data:`RIG_OUTPUTS`) solve on ``rig`` (None: the built-in rig) with
+    ``rig_binding`` (the markers placed on a user's rig), whose data ``rig_sha256`` identifies,
+    under ``solve``; ``export`` gives the ARKit CSV's rate.
     """
 
     db: Path
@@ -69,6 +89,11 @@ class Job:
     mesh: Path | None = None
     binding: Path | None = None
     redo: bool = False
+    solve: SolveSettings | None = None
+    export: ExportSettings | None = None
+    rig: Path | None = None
+    rig_binding: Path | None = None
+    rig_sha256: str = ""
 
 
 @dataclass
@@ -136,6 +161,25 @@ def bound_mesh(mesh: Path, binding: Path, marker_names: list[str], settings: Def
     return _CACHE[key]
 
 
+def rig_of(job: Job):
+    """The job's rig (built-in, or the user's with its binding), read once per worker process.
+    For the arkit output a user's rig gets the ARKit map by shape name, as ``openfacefx`` drives
+    it (:func:`facesynth.retarget.rig.arkit_to_rig`)."""
+    import dataclasses
+
+    from ..retarget.rig import arkit_to_rig, load_rig
+
+    files = tuple(_file_key(p) for p in (job.rig, job.rig_binding) if p is not None and p.is_file())
+    key = ("rig", str(job.rig), files, "arkit" in job.outputs)
+    if key not in _CACHE:
+        rig = load_rig(job.rig, job.rig_binding)
+        if "arkit" in job.outputs and rig.arkit_to_rig is None:
+            names, matrix = arkit_to_rig(rig, str(job.rig))
+            rig = dataclasses.replace(rig, arkit_names=names, arkit_to_rig=matrix)
+        _CACHE[key] = rig
+    return _CACHE[key]
+
+
 def _text_sha(text: str | None) -> str:
     return hashlib.sha256((text or "").encode("utf-8")).hexdigest()
 
@@ -145,16 +189,23 @@ def input_key(line: Line, job: Job) -> dict:
     emotion, the settings, the outputs asked and the facesynth version."""
     files = {"audio": line.audio, "alignment": line.alignment, "emotions": line.emotions,
              "constraints": line.constraints}
-    if set(job.outputs) & {"anim", "avi"}:
+    if "anim" in job.outputs:
         files.update(mesh=job.mesh, binding=job.binding)
+    rig_outputs = bool(RIG_OUTPUTS & set(job.outputs))
+    if rig_outputs:
+        files.update(rig_binding=job.rig_binding)
     key: dict[str, object] = {name: sha256_of(p) for name, p in files.items() if p is not None}
     key.update(db=job.db_sha256, text=_text_sha(line.text) if line.alignment is None else "", emotion=line.emotion or "",
                outputs=sorted(job.outputs), version=__version__, method=job.method,
                settings={"synthesize": settings_json(job.settings.synthesize), "ingest": settings_json(job.ingest),
                          "method": settings_json(methods.get(job.method).recorded_settings(job.settings)),
                          "align": settings_json(job.align) if line.alignment is None else "",
-                         "deform": settings_json(job.deform) if set(job.outputs) & {"anim", "avi"} else "",
-                         "render": settings_json(job.render) if "avi" in job.outputs else ""})
+                         "deform": settings_json(job.deform) if "anim" in job.outputs else "",
+                         "render": settings_json(job.render) if "avi" in job.outputs else "",
+                         "solve": settings_json(job.solve) if rig_outputs and job.solve is not None else "",
+                         "export": settings_json(job.export) if "arkit" in job.outputs and job.export else ""})
+    if rig_outputs:
+        key["rig"] = job.rig_sha256
     return key
 
 
@@ -163,7 +214,29 @@ def manifest_path(job: Job, line_id: str) -> Path:
 
 
 def output_paths(job: Job, line_id: str) -> dict[str, Path]:
+    """The file of every output asked, by kind (a glTF's WAV: :func:`extra_paths`)."""
     return {kind: job.out_dir / f"{line_id}{SUFFIXES[kind]}" for kind in job.outputs}
+
+
+def extra_paths(job: Job, line_id: str) -> list[Path]:
+    """Files an output writes beside its own: the glTF's audio, ``ID.wav``."""
+    return [job.out_dir / f"{line_id}.wav"] if "gltf" in job.outputs else []
+
+
+def recorded_outputs(manifest: dict) -> dict[str, str | None]:
+    """The files a manifest names, with their sha256 (None in a manifest of an older version,
+    which listed names only)."""
+    outputs = manifest.get("outputs", {})
+    return dict(outputs) if isinstance(outputs, dict) else {name: None for name in outputs}
+
+
+def _unchanged(job: Job, recorded: dict[str, str | None]) -> bool:
+    """Whether every recorded file is there with its recorded sha256."""
+    for name, digest in recorded.items():
+        path = job.out_dir / name
+        if not path.is_file() or (digest is not None and sha256_of(path) != digest):
+            return False
+    return True
 
 
 def _write_json(path: Path, data: dict) -> None:
@@ -183,6 +256,10 @@ def _check_inputs(line: Line, job: Job) -> str:
         raise InputError("both an emotion and an emotions file are given; give one.")
     if line.constraints is not None:
         methods.get(job.method).refuse_constraints({0: 0})
+    if "usd" in job.outputs:
+        from ..exports.files import require_usd
+
+        require_usd()
     return core.emotion_name(line.emotion or "neutral", job.ingest.emotions, job.ingest.emotion_aliases,
                              "the emotion column")
 
@@ -206,16 +283,17 @@ def _run_line(line: Line, job: Job) -> LineResult:
         key = input_key(line, job)
         outputs = output_paths(job, line.id)
         if not job.redo and old is not None and old.get("inputs") == key and old.get("status") == "ok" \
-                and all(p.exists() for p in outputs.values()):
+                and all(p.exists() for p in outputs.values()) and _unchanged(job, recorded_outputs(old)):
             recorded = old.get("result", {})
             for name in ("method", "phones", "audio_s", "warnings", "recognized"):
                 if name in recorded:
                     setattr(result, name, recorded[name])
-            result.status, result.outputs = "skipped", sorted(p.name for p in outputs.values())
+            result.status = "skipped"
+            result.outputs = sorted(p.name for p in list(outputs.values()) + extra_paths(job, line.id))
             result.total_s, result.cpu_s = time.perf_counter() - started, time.process_time() - cpu
             return result
-        made_here = set(old.get("outputs", [])) if old is not None else set()
-        for p in list(outputs.values()) + [job.out_dir / f"{line.id}.TextGrid"]:
+        made_here = set(recorded_outputs(old)) if old is not None else set()
+        for p in list(outputs.values()) + extra_paths(job, line.id) + [job.out_dir / f"{line.id}.TextGrid"]:
             if p.exists() and p.name not in made_here and not job.redo:
                 raise InputError(f"{p} exists and was not written by this batch; remove it or pass --overwrite.")
         _do_line(line, job, emotion, key, outputs, result)
@@ -233,7 +311,7 @@ def _remove_partial(job: Job, line_id: str, written: list[str], stale: dict | No
     """After a line failed: remove what this attempt wrote, and the outputs and manifest of an
     earlier run from other inputs (``stale``), so the folder never shows outputs that do not
     belong to the script's line."""
-    names = set(written) | (set(stale.get("outputs", [])) | {f"{line_id}.json"} if stale is not None else set())
+    names = set(written) | (set(recorded_outputs(stale)) | {f"{line_id}.json"} if stale is not None else set())
     for name in names:
         (job.out_dir / name).unlink(missing_ok=True)
 
@@ -294,41 +372,91 @@ def _do_line(line: Line, job: Job, emotion: str, key: dict, outputs: dict[str, P
     if keep_motion:
         result.outputs.append(motion_path.name)
     try:
-        if set(job.outputs) & {"anim", "avi"}:
+        if RIG_OUTPUTS & set(job.outputs):
+            _rig_outputs(line, job, motion_path, outputs, (samples, rate), result)
+        if "anim" in job.outputs:
             _mesh_outputs(line, job, motion, motion_path, outputs, result)
     finally:
         if not keep_motion:
             motion_path.unlink(missing_ok=True)
     result.outputs_s = time.perf_counter() - t0
     _write_json(manifest_path(job, line.id), {
-        "id": line.id, "status": "ok", "inputs": key, "outputs": sorted(result.outputs),
+        "id": line.id, "status": "ok", "inputs": key,
+        "outputs": {name: sha256_of(job.out_dir / name) for name in sorted(result.outputs)},
         "result": {"method": result.method, "phones": result.phones, "audio_s": result.audio_s,
                    "warnings": result.warnings, "recognized": result.recognized}})
 
 
-def _mesh_outputs(line: Line, job: Job, motion, motion_path: Path, outputs: dict[str, Path], result: LineResult) -> None:
-    """The mesh animation (Eq. 14-15) and its video with the line's audio."""
-    from ..model.meshanim import MeshAnimation
+def _rig_outputs(line: Line, job: Job, motion_path: Path, outputs: dict[str, Path], audio: tuple, result: LineResult) -> None:
+    """The facial solve of the line's motion (as written at ``motion_path``, so the curves are
+    those ``facesynth solve`` makes of it) on the job's rig, and what is made of its curves: the
+    curves themselves, the Live Link Face CSV (at ``export.arkit_fps``), the glTF with the line's
+    audio beside it, the USD and the video (``audio``: the line's samples and rate, for a glTF
+    beside an audio file that is no WAV)."""
+    import shutil
+
+    from ..artifacts import published_together
+    from ..exports import files
+    from ..exports.animation import from_curves
+    from ..formats.audio import write_wav
+    from ..model.motion import Motion
     from ..rendering.video import render_video
+    from ..retarget.solve import solve_motion, solved_curves
+
+    assert job.solve is not None and job.export is not None  # prepare() fills them
+    rig = rig_of(job)
+    motion = Motion.read(motion_path)
+    where = str(line.alignment or line.audio)
+    weights, residual, _ = solve_motion(motion, rig, job.solve, where)
+    curves = solved_curves(motion, rig, weights, residual, motion.frame_provenance(motion_path))
+    curves_path = outputs.get("curves") or job.out_dir / f"{line.id}.curves.h5.part-{os.getpid()}"
+    inputs = [motion_path] + ([job.rig] if job.rig is not None and job.rig.is_file() else [])
+    curves.write(curves_path, config=settings_json(job.solve), inputs=inputs, overwrite=True)
+    try:
+        if "curves" in outputs:
+            result.outputs.append(curves_path.name)
+        anim = from_curves(curves, rig, curves_path)
+        if "arkit" in outputs:
+            with atomic_path(outputs["arkit"], overwrite=True) as tmp:
+                files.write_arkit_csv(anim.resampled(job.export.arkit_fps), tmp)
+            result.outputs.append(outputs["arkit"].name)
+        if "gltf" in outputs:
+            wav = files.audio_path(outputs["gltf"])
+            with published_together():  # the scene and its audio, or neither
+                with atomic_path(wav, overwrite=True) as tmp:
+                    if line.audio.suffix.lower() == ".wav":
+                        shutil.copyfile(line.audio, tmp)
+                    else:
+                        write_wav(tmp, *audio)
+                with atomic_path(outputs["gltf"], overwrite=True) as tmp:
+                    files.write_gltf(anim, tmp, wav.name, name=line.id)
+            result.outputs += [outputs["gltf"].name, wav.name]
+        if "usd" in outputs:
+            with files.named_temporary(outputs["usd"], overwrite=True) as tmp:
+                files.write_usd(anim, tmp)
+            result.outputs.append(outputs["usd"].name)
+        if "avi" in outputs:
+            render_video([curves_path], [line.audio], outputs["avi"], job.render, None, overwrite=True,
+                         rig_path=job.rig, binding=job.rig_binding)
+            result.outputs.append(outputs["avi"].name)
+    finally:
+        if "curves" not in outputs:
+            curves_path.unlink(missing_ok=True)
+
+
+def _mesh_outputs(line: Line, job: Job, motion, motion_path: Path, outputs: dict[str, Path], result: LineResult) -> None:
+    """The mesh animation of the job's plain mesh (Gaussian deformation, Eq. 14-15)."""
+    from ..model.meshanim import MeshAnimation
     from ..retarget.deform import animate
 
     if job.mesh is None or job.binding is None:
-        raise InputError("the anim and avi outputs need --mesh and --binding.")
+        raise InputError("the anim output needs --mesh and --binding.")
     bound = bound_mesh(job.mesh, job.binding, motion.marker_names, job.deform)
     head = motion.head(motion_path) if job.deform.apply_head_motion else None
     frames, fit = animate(bound, motion.markers, motion.marker_names, motion.reference, head)
     anim = MeshAnimation(frames, motion.fps, bound.rest, bound.faces, motion.markers, motion.marker_names,
                          bound.weights, bound.markers, bound.vertex_of, fit["fit_rms"],
                          provenance=motion.frame_provenance(motion_path))
-    anim_path = outputs.get("anim") or job.out_dir / f"{line.id}.anim.h5.part-{os.getpid()}"
-    anim.write(anim_path, config=settings_json(job.deform), inputs=[motion_path, job.mesh, job.binding],
+    anim.write(outputs["anim"], config=settings_json(job.deform), inputs=[motion_path, job.mesh, job.binding],
                overwrite=True)
-    if "anim" in outputs:
-        result.outputs.append(anim_path.name)
-    try:
-        if "avi" in outputs:
-            render_video([anim_path], [line.audio], outputs["avi"], job.render, None, overwrite=True)
-            result.outputs.append(outputs["avi"].name)
-    finally:
-        if "anim" not in outputs:
-            anim_path.unlink(missing_ok=True)
+    result.outputs.append(outputs["anim"].name)

@@ -13,6 +13,7 @@ import numpy as np
 from ..artifacts import PRODUCERS, artifact_kind
 from ..errors import InputError
 from ..facerig import BUILTIN_RIG_NAME, Rig, builtin_rig_sha256, load_face_rig
+from ..model.curves import RigCurves
 from ..model.provenance import FrameProvenance, PhoneSegment
 
 #: Artifact kinds ``facesynth export`` and ``facesynth player`` read.
@@ -164,27 +165,11 @@ def load(path: Path, motion: Path | None = None) -> Exportable:
                          rest=a.rest.astype(np.float64), faces=a.faces.astype(np.int64), vertices=a.vertices,
                          gaze=a.gaze, provenance=a.provenance)
     else:
-        from ..model.curves import RigCurves
-        from ..rendering.parts import gaze_from_rig_weights
-
         c = RigCurves.read(path)
         if c.rig_name != BUILTIN_RIG_NAME or c.rig_sha256 != builtin_rig_sha256():
             raise InputError(f"{path}: the curves drive the rig '{c.rig_name}', not the built-in {BUILTIN_RIG_NAME} rig "
                              "this version exports; solve the motion again on the built-in rig (`facesynth solve`).")
-        rig = load_face_rig()
-        if list(c.shape_names) != list(rig.shape_names):
-            index = {n: i for i, n in enumerate(c.shape_names)}
-            missing = [n for n in rig.shape_names if n not in index]
-            if missing:
-                raise InputError(f"{path}: /shape_names lacks the rig's shape '{missing[0]}'; "
-                                 "write the curves again with `facesynth solve`.")
-            weights = c.weights[:, [index[n] for n in rig.shape_names]]
-        else:
-            weights = c.weights
-        out = Exportable("curves", path, c.fps, c.n_frames, rest=rig.neutral, faces=rig.faces, weights=weights, rig=rig,
-                         head_rotation=c.head_rotation, head_translation=c.head_translation,
-                         gaze=gaze_from_rig_weights(weights, rig.shape_names), emotion=c.emotion,
-                         provenance=c.provenance)
+        out = from_curves(c, load_face_rig(), path)
     if motion is not None:
         from ..model.motion import Motion
 
@@ -194,6 +179,28 @@ def load(path: Path, motion: Path | None = None) -> Exportable:
         given = m.frame_provenance(Path(motion))
         return _labelled(out, None if given is None else given.resampled(out.n_frames, m.fps, out.fps))
     return _labelled(out, out.provenance)
+
+
+def from_curves(c: RigCurves, rig: Rig, path: Path) -> Exportable:
+    """Rig curves ``c`` (read from, or to be written at, ``path``) on ``rig`` as an
+    :class:`Exportable`: the rig's neutral mesh and faces, the weights (T, E) in the rig's shape
+    order, the head motion, the gaze from the rig's ``eyeLook*`` shapes, emotion and provenance
+    (the phones of the timeline are added by :func:`load`). Curves lacking one of the rig's
+    shapes are refused."""
+    from ..rendering.parts import gaze_from_rig_weights
+
+    if list(c.shape_names) != list(rig.shape_names):
+        index = {n: i for i, n in enumerate(c.shape_names)}
+        missing = [n for n in rig.shape_names if n not in index]
+        if missing:
+            raise InputError(f"{path}: /shape_names lacks the rig's shape '{missing[0]}'; "
+                             "write the curves again with `facesynth solve`.")
+        weights = c.weights[:, [index[n] for n in rig.shape_names]]
+    else:
+        weights = c.weights
+    return Exportable("curves", Path(path), c.fps, c.n_frames, rest=rig.neutral, faces=rig.faces, weights=weights,
+                      rig=rig, head_rotation=c.head_rotation, head_translation=c.head_translation,
+                      gaze=gaze_from_rig_weights(weights, rig.shape_names), emotion=c.emotion, provenance=c.provenance)
 
 
 def use_mesh(anim: Exportable, mesh: Path) -> Exportable:

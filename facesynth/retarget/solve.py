@@ -12,15 +12,26 @@
   the squared weights, by accelerated projected gradient (FISTA with restart) on the whole (T, E)
   array, the misfit's gradient through the E x E Gram matrix of the rig's shapes; missing markers
   (NaN) drop out of their frame's misfit.
+* :func:`solve_motion`: that solve for a marker motion on a rig (the markers carried into the
+  rig's frame and units), the one path from motion to the rig that ``facesynth solve`` and
+  ``facesynth batch`` share; :func:`solved_curves` makes the ``curves`` artifact of it.
 """
 
 from __future__ import annotations
 
 import functools
+from typing import TYPE_CHECKING
 
 import numpy as np
 from scipy.linalg import solve_triangular
 from scipy.optimize import lsq_linear, nnls
+
+if TYPE_CHECKING:
+    from ..config import SolveSettings
+    from ..facerig import Rig
+    from ..model.curves import RigCurves
+    from ..model.motion import Motion
+    from ..model.provenance import FrameProvenance
 
 
 @functools.lru_cache(maxsize=1)
@@ -254,3 +265,32 @@ def _solve_curves(frames: np.ndarray, basis: np.ndarray, *, smooth: float, ridge
     with np.errstate(invalid="ignore", divide="ignore"):
         rms = np.where(counts > 0, np.sqrt((r**2).sum(1) / np.maximum(counts, 1)), np.nan)
     return w, rms, it
+
+
+def solve_motion(motion: "Motion", rig: "Rig", settings: "SolveSettings", where: str) -> tuple[np.ndarray, np.ndarray, int]:
+    """The direct facial solve of ``motion`` on ``rig``: (T, E) rig weights in [0, 1], (T,) RMS
+    marker residual in rig units and the iterations used. The motion's markers (T, M, 3) mm are
+    bound to the rig's marker vertices and carried into the rig's frame and units by a similarity
+    fitted from the motion's neutral reference to the rig's neutral at those vertices
+    (:func:`facesynth.retarget.rig.marker_map`); the solve fits displacements from the reference
+    (:func:`solve_curves` with ``settings``' smooth, ridge, iterations and tolerance). ``where``
+    names the motion in errors."""
+    from .rig import marker_map
+
+    mmap = marker_map(rig, motion.marker_names, motion.reference, where)
+    disp = mmap.displacements(motion.markers, motion.reference)
+    basis = rig.deltas[:, mmap.vertices]
+    return solve_curves(disp, basis, smooth=settings.smooth, ridge=settings.ridge, iterations=settings.iterations,
+                        tolerance=settings.tolerance)
+
+
+def solved_curves(motion: "Motion", rig: "Rig", weights: np.ndarray, residual: np.ndarray,
+                  provenance: "FrameProvenance | None") -> "RigCurves":
+    """The ``curves`` artifact of a solve of ``motion`` on ``rig`` (:func:`solve_motion`'s
+    weights (T, E) and residual (T,)): ``source = "solve"``, at the motion's rate, with its head
+    motion and ``provenance`` (where each frame came from)."""
+    from ..model.curves import RigCurves
+
+    return RigCurves(weights, motion.fps, list(rig.shape_names), rig.name, rig.sha256, "solve", motion.head_rotation,
+                     motion.head_translation, residual=residual,
+                     method="bounded least squares with temporal smoothness", provenance=provenance)

@@ -1,5 +1,6 @@
-"""``facesynth batch``: a script of dialogue lines -> per-line motion (and mesh animation,
-video) on Dask, with a summary of every line (see :mod:`facesynth.batch`).
+"""``facesynth batch``: a script of dialogue lines -> per-line motion (and what pipelines import:
+rig curves, ARKit CSV, glTF with the audio, USD, a video; or a plain mesh's animation) on Dask,
+with a summary of every line (see :mod:`facesynth.batch`).
 
 Every line is synthesized by one member of the method family (``method``: default
 ``synthesize.search``, i.e. the DP) through the same shared core as ``facesynth synthesize``
@@ -19,28 +20,54 @@ from pathlib import Path
 
 from .. import limits, methods
 from ..artifacts import check_output_folder, open_artifact, sha256_of
-from ..batch.line import Job, LineResult
+from ..batch.line import RIG_OUTPUTS, Job, LineResult
 from ..batch.report import write_summary
 from ..batch.runner import dask_client, run_lines
 from ..batch.script import read_script
-from ..config import AlignSettings, BatchSettings, DeformSettings, IngestSettings, RenderSettings, SynthesizeSettings
+from ..config import (
+    AlignSettings,
+    BatchSettings,
+    Config,
+    DeformSettings,
+    ExportSettings,
+    IngestSettings,
+    RenderSettings,
+    SolveSettings,
+    SynthesizeSettings,
+)
 from ..errors import InputError, UsageError
 from ..methods import MethodSettings
 from ..progress import progress
+from ..retarget.rig import BUILTIN
 
 
 def prepare(script: Path, db: Path, out_dir: Path, settings: BatchSettings, synthesize: SynthesizeSettings | MethodSettings,
             ingest: IngestSettings, align: AlignSettings, deform: DeformSettings, render: RenderSettings, *,
-            method: str | None = None, mesh: Path | None = None, binding: Path | None = None, overwrite: bool = False):
+            method: str | None = None, mesh: Path | None = None, binding: Path | None = None, overwrite: bool = False,
+            solve: SolveSettings | None = None, export: ExportSettings | None = None, rig: Path | None = None,
+            rig_binding: Path | None = None):
     """Check the request and read the script; returns (lines, Job). Creates ``out_dir``.
     ``synthesize``: the :class:`MethodSettings`, or ``[synthesize]`` alone (the packaged defaults
-    for the rest); ``db``: the method's source (the motion database, or its fitted model). The
-    job carries the ``[limits]`` in force (:func:`facesynth.limits.current`)."""
+    for the rest); ``db``: the method's source (the motion database, or its fitted model);
+    ``solve``, ``export``: ``[solve]`` and ``[export]`` (None: the packaged defaults); ``rig``,
+    ``rig_binding``: the rig of the curves, arkit, gltf, usd and avi outputs (None: the built-in
+    rig) and the markers placed on it. The job carries the ``[limits]`` in force
+    (:func:`facesynth.limits.current`)."""
     if isinstance(synthesize, SynthesizeSettings):
         synthesize = MethodSettings.packaged(synthesize=synthesize)
     member = methods.get(method or synthesize.synthesize.search)
-    if set(settings.outputs) & {"anim", "avi"} and (mesh is None or binding is None):
-        raise UsageError("the anim and avi outputs need --mesh and --binding (e.g. corpus/face.obj and corpus/markers.csv).")
+    if "anim" in settings.outputs and (mesh is None or binding is None):
+        raise UsageError("the anim output needs --mesh and --binding (e.g. corpus/face.obj and corpus/markers.csv).")
+    rig_sha256 = ""
+    if rig is not None and str(rig) == BUILTIN:
+        rig = None
+    if RIG_OUTPUTS & set(settings.outputs):
+        rig_sha256 = _check_rig(rig, rig_binding, settings.outputs)
+    elif rig is not None or rig_binding is not None:
+        raise UsageError(f"--rig is for the {', '.join(sorted(RIG_OUTPUTS))} outputs; add one to --outputs.")
+    if solve is None or export is None:
+        packaged = Config.load()
+        solve, export = solve or packaged.settings("solve"), export or packaged.settings("export")
     if "avi" in settings.outputs and abs(render.fps - synthesize.synthesize.output_fps) > 1e-6:
         raise InputError(f"render.fps ({render.fps:g}) differs from synthesize.output_fps ({synthesize.synthesize.output_fps:g}); "
                          "set one to the other for the avi output.")
@@ -50,8 +77,23 @@ def prepare(script: Path, db: Path, out_dir: Path, settings: BatchSettings, synt
     out_dir.mkdir(parents=True, exist_ok=True)
     job = Job(db.resolve(), sha256_of(db), out_dir.resolve(), tuple(settings.outputs), synthesize, ingest, align,
               deform, render, limits.current(), member.name, mesh.resolve() if mesh else None,
-              binding.resolve() if binding else None, overwrite)
+              binding.resolve() if binding else None, overwrite, solve, export, rig.resolve() if rig else None,
+              rig_binding.resolve() if rig_binding else None, rig_sha256)
     return lines, job
+
+
+def _check_rig(rig: Path | None, rig_binding: Path | None, outputs) -> str:
+    """Read the rig of the rig outputs once, before any work (a user's rig without its binding, or
+    without the ARKit names an arkit output needs, is refused); returns its sha256."""
+    from ..retarget.rig import arkit_to_rig, load_rig
+
+    if rig is not None and rig_binding is None:
+        raise UsageError(f"{rig}: a user's rig needs --rig-binding, a CSV of marker,vertex placing the motion's "
+                         "markers on it.")
+    loaded = load_rig(rig, rig_binding)
+    if "arkit" in outputs:
+        arkit_to_rig(loaded, str(rig))  # a rig none of whose shapes has an ARKit name is refused
+    return loaded.sha256
 
 
 @dataclass(frozen=True)
@@ -78,11 +120,15 @@ class BatchResult:
 def run(script: Path, db: Path, out_dir: Path, settings: BatchSettings, synthesize: SynthesizeSettings | MethodSettings,
         ingest: IngestSettings, align: AlignSettings, deform: DeformSettings, render: RenderSettings, *,
         method: str | None = None, mesh: Path | None = None, binding: Path | None = None, scheduler: str | None = None,
-        overwrite: bool = False, on_result: Callable[[LineResult], None] | None = None, client=None) -> BatchResult:
+        overwrite: bool = False, on_result: Callable[[LineResult], None] | None = None, client=None,
+        solve: SolveSettings | None = None, export: ExportSettings | None = None, rig: Path | None = None,
+        rig_binding: Path | None = None) -> BatchResult:
     """Run every line of ``script`` and write the summary into ``out_dir``. ``client``: an open
-    ``distributed.Client`` to use instead of creating one (tests, notebooks)."""
+    ``distributed.Client`` to use instead of creating one (tests, notebooks); the rest as
+    :func:`prepare`."""
     lines, job = prepare(script, db, out_dir, settings, synthesize, ingest, align, deform, render, method=method,
-                         mesh=mesh, binding=binding, overwrite=overwrite)
+                         mesh=mesh, binding=binding, overwrite=overwrite, solve=solve, export=export, rig=rig,
+                         rig_binding=rig_binding)
     started = time.perf_counter()
     counts = {"ok": 0, "skipped": 0, "failed": 0}
 

@@ -24,18 +24,14 @@ from pathlib import Path
 
 import numpy as np
 
-from ..artifacts import atomic_folder, atomic_path, check_output, publish, published_together, temporary_path
+from ..artifacts import atomic_folder, atomic_path, check_output, published_together
 from ..config import ExportSettings
 from ..errors import InputError, UsageError
-from ..exports import livelink
+from ..exports import files as files_
 from ..exports.animation import Exportable, load, use_mesh
+from ..exports.files import audio_path, named_temporary
 
 FORMATS = ("arkit-csv", "gltf", "glb", "usd", "usda", "c3d", "obj-seq")
-
-
-def audio_path(output: Path) -> Path:
-    """Where the WAV beside a glTF output goes: the output's name with ``.wav``."""
-    return Path(output).with_suffix(".wav")
 
 
 def check(anim: Exportable, fmt: str, head_motion: bool) -> None:
@@ -86,11 +82,7 @@ def run(artifact: Path, fmt: str, output: Path, settings: ExportSettings, *, fps
     if fmt not in FORMATS:
         raise UsageError(f"unknown format {fmt!r}; choose one of {', '.join(FORMATS)}.")
     if fmt in ("usd", "usda"):
-        from ..exports import usd
-
-        if not usd.available():
-            raise InputError(f"{fmt} export needs Pixar's usd-core, which is not installed; "
-                             "run `pip install 'facesynth[usd]'` (or `pip install usd-core`).")
+        files_.require_usd(fmt)
     if audio is not None and fmt not in ("gltf", "glb"):
         raise UsageError("--audio goes with gltf and glb (the other formats carry no audio reference).")
     if fmt == "obj-seq":
@@ -114,37 +106,21 @@ def run(artifact: Path, fmt: str, output: Path, settings: ExportSettings, *, fps
     anim = anim.resampled(rate)
     files = [output]
     if fmt == "arkit-csv":
-        head = livelink.head_angles(anim.head_rotation) if head_motion else None
-        eyes = livelink.eye_angles(anim.gaze) if anim.gaze is not None else None
         with atomic_path(output, overwrite) as tmp:
-            livelink.write(tmp, anim.rig.arkit_names, anim.rig.to_arkit(anim.weights), anim.fps, head, eyes)
+            files_.write_arkit_csv(anim, tmp, head_motion)
     elif fmt in ("gltf", "glb"):
-        from ..formats import gltf
-
         wav = audio_path(output) if audio is not None else None
-        doc, data = gltf.build(anim.rest, anim.faces, anim.rig.deltas, anim.rig.shape_names, anim.times, anim.weights,
-                               anim.head_rotation if head_motion else None,
-                               anim.head_translation if head_motion else None,
-                               wav.name if wav is not None else None, name=Path(output).stem,
-                               provenance=anim.provenance)
         with published_together():  # the scene and its audio, or neither
             if wav is not None:
                 with atomic_path(wav, overwrite) as tmp:
                     shutil.copyfile(audio, tmp)
                 files.append(wav)
             with atomic_path(output, overwrite) as tmp:
-                gltf.write(tmp, doc, data, binary=fmt == "glb")
+                files_.write_gltf(anim, tmp, wav.name if wav is not None else None, head_motion, binary=fmt == "glb",
+                                  name=Path(output).stem)
     elif fmt in ("usd", "usda"):
-        from ..exports import usd
-
-        head = (anim.head_rotation, anim.head_translation) if head_motion else (None, None)
-        with _named_temporary(output, overwrite) as tmp:
-            if anim.weights is not None:
-                usd.write_blendshapes(tmp, anim.rest, anim.faces, anim.rig.deltas, anim.rig.shape_names, anim.weights,
-                                      anim.fps, *head, provenance=anim.provenance)
-            else:
-                usd.write_points(tmp, anim.rest, anim.faces, anim.mesh_frames, anim.n_frames, anim.fps, *head,
-                                 provenance=anim.provenance)
+        with named_temporary(output, overwrite) as tmp:
+            files_.write_usd(anim, tmp, head_motion)
     elif fmt == "c3d":
         from ..formats.mocap import MarkerTake, write_c3d
 
@@ -159,25 +135,3 @@ def run(artifact: Path, fmt: str, output: Path, settings: ExportSettings, *, fps
             files = [output / f.name for f in files]
     return ExportResult(anim.n_frames, anim.fps, anim.duration_s, files, anim.kind)
 
-
-
-class _named_temporary:
-    """A temporary file with the output's own name (libraries such as USD pick the format by the
-    extension) inside a temporary folder beside the output, published at the output on success."""
-
-    def __init__(self, output: Path, overwrite: bool):
-        self.output, self.overwrite = Path(output), overwrite
-        self.folder = temporary_path(self.output)
-
-    def __enter__(self) -> Path:
-        if self.folder.exists():
-            shutil.rmtree(self.folder)
-        self.folder.mkdir()
-        return self.folder / self.output.name
-
-    def __exit__(self, exc_type, exc, tb) -> None:
-        try:
-            if exc_type is None:
-                publish(self.folder / self.output.name, self.output, self.overwrite)
-        finally:
-            shutil.rmtree(self.folder, ignore_errors=True)

@@ -1,6 +1,6 @@
 """``facesynth solve``: a direct facial solve. Per frame, the rig weights in [0, 1] that best
 explain the motion's markers at the rig's marker vertices, with a small temporal smoothness term
-(:func:`facesynth.retarget.solve.solve_curves`), written as ``curves`` (``source = "solve"``).
+(:func:`facesynth.retarget.solve.solve_motion`), written as ``curves`` (``source = "solve"``).
 
 The markers are carried into the rig's frame and units by a similarity fitted from the motion's
 neutral reference to the rig's neutral at the bound vertices (as ``deform`` does); the solve fits
@@ -24,21 +24,11 @@ from ..artifacts import artifact_kind, check_output
 from ..config import SolveSettings, settings_json
 from ..errors import InputError
 from ..facerig import Rig
-from ..model.curves import RigCurves
 from ..model.frames import NormalizedFrames, relative_to_take
 from ..model.motion import Motion
 from ..motion.postprocess import downsample
 from ..retarget.rig import load_rig, marker_map
-from ..retarget.solve import solve_curves
-
-
-def solve(motion: Motion, rig: Rig, settings: SolveSettings, where: str) -> tuple[np.ndarray, np.ndarray, int]:
-    """(T, E) rig weights, (T,) RMS marker residual in rig units and iterations for ``motion``."""
-    mmap = marker_map(rig, motion.marker_names, motion.reference, where)
-    disp = mmap.displacements(motion.markers, motion.reference)
-    basis = rig.deltas[:, mmap.vertices]
-    return solve_curves(disp, basis, smooth=settings.smooth, ridge=settings.ridge, iterations=settings.iterations,
-                        tolerance=settings.tolerance)
+from ..retarget.solve import solve_motion, solved_curves
 
 
 def take_motion(normalized: NormalizedFrames, take: str | None, output_fps: float, where: str) -> Motion:
@@ -97,11 +87,9 @@ def run(motion_path: Path, out: Path, settings: SolveSettings, rig_path: Path | 
         if take is not None:
             raise InputError(f"{motion_path}: --take picks a take of a normalized capture; a motion artifact has one.")
         motion = Motion.read(motion_path)
-    weights, residual, iterations = solve(motion, rig, settings, str(motion_path))
+    weights, residual, iterations = solve_motion(motion, rig, settings, str(motion_path))
     inputs = [motion_path] + ([rig_path] if rig_path is not None and Path(rig_path).is_file() else [])
-    RigCurves(weights, motion.fps, list(rig.shape_names), rig.name, rig.sha256, "solve", motion.head_rotation,
-              motion.head_translation, residual=residual, method="bounded least squares with temporal smoothness",
-              provenance=motion.frame_provenance(motion_path)).write(
+    solved_curves(motion, rig, weights, residual, motion.frame_provenance(motion_path)).write(
         out, config=settings_json(settings), inputs=inputs, overwrite=overwrite)
     marker_mm = per_marker_residual_mm(motion, rig, weights)
     return SolveResult(len(weights), len(rig.shape_names), iterations, float(np.sqrt(np.nanmean(residual**2))),

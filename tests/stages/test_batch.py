@@ -2,7 +2,11 @@
 
 import csv
 import dataclasses
+import hashlib
+import importlib.util
 import json
+import subprocess
+from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
@@ -186,3 +190,176 @@ def test_a_line_checks_memory_matches_aliases_in_any_case_and_refuses_constraint
     starved = run_line(joy, dataclasses.replace(job, redo=True))
     assert starved.status == "failed" and "of memory but 1.0 kB is available" in starved.reason
     assert "the search over" in starved.reason
+
+
+def _validate_gltf(path):
+    """The Khronos validator's report of ``path``, through the export tests' helper (which skips
+    where node or the validator is missing)."""
+    spec = importlib.util.spec_from_file_location("export_tests", Path(__file__).parents[1] / "exports" / "test_export.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module._validate(path)
+
+
+def test_rig_outputs_from_one_solve_named_in_the_manifest(tiny_corpus, tiny_db, takes, config, client, tmp_path):
+    """curves, arkit, gltf, usd and avi of one line: each written, each in the manifest with its
+    sha256, the curves exactly those `facesynth solve` makes of the line's motion; a rerun skips the
+    line, a new output asked redoes it."""
+    import imageio_ffmpeg
+    import numpy as np
+    import soundfile as sf
+
+    from facesynth.exports import livelink
+    from facesynth.model.curves import RigCurves
+    from facesynth.stages import solve
+
+    row = takes["neutral_s001"]
+    script = _write(tmp_path / "s.csv", [("id", "audio", "alignment"),
+                                         ("one", str(tiny_corpus / row["audio"]), str(tiny_corpus / row["alignment"]))])
+    kinds = ("motion", "curves", "arkit", "gltf", "avi")
+    settings = _settings(config, outputs=kinds)
+    settings[5] = dataclasses.replace(settings[5], width=64, height=48)
+    out = tmp_path / "out"
+    s = batch.run(script, tiny_db, out, *settings, client=client)
+    assert s.ok == 1, s.results[0].reason
+    names = ["one.motion.h5", "one.curves.h5", "one.arkit.csv", "one.gltf", "one.wav", "one.avi"]
+    _check_manifest(out, "one", names)
+
+    solve.run(out / "one.motion.h5", tmp_path / "solved.h5", config.settings("solve"))
+    mine, theirs = RigCurves.read(out / "one.curves.h5"), RigCurves.read(tmp_path / "solved.h5")
+    assert mine.shape_names == theirs.shape_names and mine.rig_sha256 == theirs.rig_sha256
+    assert np.array_equal(mine.weights, theirs.weights) and mine.weights.std() > 0.01
+    assert np.array_equal(mine.head_rotation, theirs.head_rotation)
+    n = mine.n_frames
+
+    arkit = list(csv.reader(open(out / "one.arkit.csv")))
+    assert arkit[0] == livelink.columns(arkit[0][2:54]) and len(arkit[0]) == 2 + 61
+    assert len(arkit) - 1 == int(np.floor(n / mine.fps * config.settings("export").arkit_fps + 1e-6))
+
+    assert (out / "one.wav").read_bytes() == (tiny_corpus / row["audio"]).read_bytes()
+    doc = json.loads((out / "one.gltf").read_text())
+    assert doc["animations"][0]["extras"]["audio"]["uri"] == "one.wav"
+    assert len(doc["meshes"][0]["primitives"][0]["targets"]) == len(mine.shape_names)
+
+    n_frames, _ = imageio_ffmpeg.count_frames_and_secs(str(out / "one.avi"))
+    assert n_frames == n
+    wav = tmp_path / "back.wav"
+    subprocess.run([imageio_ffmpeg.get_ffmpeg_exe(), "-loglevel", "error", "-y", "-i", str(out / "one.avi"), str(wav)],
+                   check=True)
+    audio, rate = sf.read(wav)
+    assert len(audio) / rate == pytest.approx(n / mine.fps, abs=1e-3) and np.abs(audio).max() > 0.01
+
+    again = batch.run(script, tiny_db, out, *settings, client=client)
+    assert (again.ok, again.skipped) == (0, 1)
+    reordered = [dataclasses.replace(settings[0], outputs=tuple(reversed(kinds)))] + settings[1:]
+    assert batch.run(script, tiny_db, out, *reordered, client=client).skipped == 1  # the same outputs asked
+    report = _validate_gltf(out / "one.gltf")
+    assert report["issues"]["numErrors"] == 0, report["issues"]
+
+    pytest.importorskip("pxr", reason="usd-core is not installed (pip install 'facesynth[usd]')")
+    from pxr import Usd, UsdSkel
+
+    with_usd = [dataclasses.replace(settings[0], outputs=kinds + ("usd",))] + settings[1:]
+    redone = batch.run(script, tiny_db, out, *with_usd, client=client)  # a new output asked: the line is redone
+    assert (redone.ok, redone.skipped) == (1, 0), redone.results[0].reason
+    _check_manifest(out, "one", names + ["one.usd"])
+    stage = Usd.Stage.Open(str(out / "one.usd"))
+    assert stage.GetEndTimeCode() == n - 1
+    animation = next(p for p in stage.Traverse() if p.GetTypeName() == "SkelAnimation")
+    weights = np.array(UsdSkel.Animation(animation).GetBlendShapeWeightsAttr().Get(10))
+    assert np.allclose(weights, mine.weights[10], atol=1e-6)
+
+
+def _check_manifest(out, line_id, names):
+    """The line's manifest names exactly ``names``, each with its file's sha256; no temporary left."""
+    manifest = json.loads((out / f"{line_id}.json").read_text())
+    assert set(manifest["outputs"]) == set(names)
+    for name in names:
+        assert manifest["outputs"][name] == hashlib.sha256((out / name).read_bytes()).hexdigest(), name
+    assert not list(out.glob("*.part-*")) and not list(out.glob("*.tmp-*"))
+
+
+def test_a_line_without_usd_core_fails_alone_in_one_sentence(tiny_corpus, tiny_db, takes, config, tmp_path,
+                                                              monkeypatch):
+    from facesynth.batch.line import run_line
+    from facesynth.batch.script import read_script
+    from facesynth.exports import usd
+
+    row = takes["neutral_s001"]
+    script = _write(tmp_path / "s.csv", [("id", "audio", "alignment"),
+                                         ("one", str(tiny_corpus / row["audio"]), str(tiny_corpus / row["alignment"]))])
+    monkeypatch.setattr(usd, "available", lambda: False)
+    _, job = batch.prepare(script, tiny_db, tmp_path / "out", *_settings(config, outputs=("curves", "usd")))
+    result = run_line(read_script(script)[0], job)
+    assert result.status == "failed" and result.reason == (
+        "usd export needs Pixar's usd-core, which is not installed; run `pip install 'facesynth[usd]'` "
+        "(or `pip install usd-core`).")
+    assert not list((tmp_path / "out").iterdir())
+
+
+def test_the_command_renders_the_rig_without_a_mesh(tiny_corpus, tiny_db, takes, tmp_path):
+    import imageio_ffmpeg
+
+    row = takes["neutral_s001"]
+    script = _write(tmp_path / "s.csv", [("id", "audio", "alignment"),
+                                         ("one", str(tiny_corpus / row["audio"]), str(tiny_corpus / row["alignment"]))])
+    out = tmp_path / "o"
+    r = CliRunner().invoke(main, ["batch", str(script), "--db", str(tiny_db), "-o", str(out), "--outputs", "curves,avi",
+                                  "--workers", "1", "--set", "render.width=64", "--set", "render.height=48"])
+    assert r.exit_code == 0, r.output
+    from facesynth.model.curves import RigCurves
+
+    n = RigCurves.read(out / "one.curves.h5").n_frames
+    assert imageio_ffmpeg.count_frames_and_secs(str(out / "one.avi"))[0] == n
+    assert not (out / "one.motion.h5").exists()
+    r = CliRunner().invoke(main, ["batch", str(script), "--db", str(tiny_db), "-o", str(tmp_path / "p"),
+                                  "--outputs", "anim"])
+    assert r.exit_code == 2 and "the anim output needs --mesh and --binding" in r.output
+
+
+def test_a_user_s_rig_takes_the_rig_outputs(tiny_corpus, tiny_db, takes, config, tmp_path):
+    """--rig FOLDER --rig-binding CSV: the line solves onto that rig (its ARKit-named shapes drive
+    the ARKit CSV by name, the others none), and the video poses it; a user's rig without its
+    binding, or without one ARKit-named shape for the arkit output, is refused before any work."""
+    import imageio_ffmpeg
+    import numpy as np
+
+    from facesynth.batch.line import run_line
+    from facesynth.batch.script import read_script
+    from facesynth.errors import InputError, UsageError
+    from facesynth.facerig import load_face_rig
+    from facesynth.formats.mesh import write_obj
+    from facesynth.model.curves import RigCurves
+    from facesynth.retarget.rig import builtin_rig
+
+    builtin = load_face_rig()
+    folder = tmp_path / "myrig"
+    folder.mkdir()
+    write_obj(folder / "neutral.obj", builtin.neutral, builtin.faces)
+    for name, shape in (("jawOpen", "jawOpen"), ("mouthFunnel", "mouthFunnel"), ("wrinkle", "cheekRaiser_L")):
+        write_obj(folder / f"{name}.obj", builtin.neutral + builtin.deltas[builtin.shape_index(shape)], builtin.faces)
+    binding = _write(tmp_path / "binding.csv", [("marker", "vertex")] + sorted(builtin_rig().binding.items()))
+    row = takes["neutral_s001"]
+    script = _write(tmp_path / "s.csv", [("id", "audio", "alignment"),
+                                         ("one", str(tiny_corpus / row["audio"]), str(tiny_corpus / row["alignment"]))])
+    values = _settings(config, outputs=("curves", "arkit", "gltf", "avi"))
+    values[5] = dataclasses.replace(values[5], width=64, height=48)
+    _, job = batch.prepare(script, tiny_db, tmp_path / "out", *values, rig=folder, rig_binding=binding)
+    result = run_line(read_script(script)[0], job)
+    assert result.status == "ok", result.reason
+    curves = RigCurves.read(tmp_path / "out" / "one.curves.h5")
+    assert curves.rig_name == "myrig" and curves.shape_names == ["jawOpen", "mouthFunnel", "wrinkle"]
+    assert curves.weights[:, 0].max() > 0.05  # the jaw opens in speech
+    table = list(csv.DictReader(open(tmp_path / "out" / "one.arkit.csv")))
+    assert max(float(r["JawOpen"]) for r in table) > 0.05 and all(float(r["EyeBlinkLeft"]) == 0 for r in table)
+    assert imageio_ffmpeg.count_frames_and_secs(str(tmp_path / "out" / "one.avi"))[0] == curves.n_frames
+    assert np.isfinite(curves.weights).all()
+
+    assert batch.prepare(script, tiny_db, tmp_path / "o1", *values, rig=Path("builtin"))[1].rig is None
+    with pytest.raises(UsageError, match="a user's rig needs --rig-binding"):
+        batch.prepare(script, tiny_db, tmp_path / "o2", *values, rig=folder)
+    for p in folder.glob("*.obj"):
+        if p.stem != "neutral":
+            p.rename(p.with_name(f"shape_{p.name}"))
+    with pytest.raises(InputError, match="none of the shapes of rig 'myrig' has an ARKit name"):
+        batch.prepare(script, tiny_db, tmp_path / "o3", *values, rig=folder, rig_binding=binding)
