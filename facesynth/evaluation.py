@@ -69,6 +69,7 @@ is one) between the lowest method and each other.
 from __future__ import annotations
 
 import dataclasses
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -76,7 +77,7 @@ from typing import Any
 import numpy as np
 
 from .baselines import fit_rigid, openfacefx_arkit, openfacefx_missing, rig_markers
-from .bootstrap import interval, paired_difference, resamples
+from .bootstrap import Statistic, interval, paired_difference, pooled_percentile, resamples
 from .config import (
     CoarticulationSettings,
     EvaluateSettings,
@@ -428,6 +429,11 @@ def _weighted_root(key: str):
     return stat
 
 
+def _of_rows(stat: Callable[[list[dict], np.ndarray], float]) -> Callable[[list[dict]], Statistic]:
+    """A figure ``stat(rows, idx)`` as :data:`FIGURES` holds it: rows -> (idx -> float)."""
+    return lambda rows: lambda idx: stat(rows, idx)
+
+
 def _mean_r(rows, idx):
     values = np.array([rows[i]["mouth_r"] for i in idx], float)
     return float(np.nanmean(values)) if np.isfinite(values).any() else float("nan")
@@ -445,32 +451,32 @@ def _closure_delay(rows, idx):
     return float(1000.0 * np.abs(a[both] - b[both]).mean()) if both.any() else float("nan")
 
 
-def _join_p99(rows, idx):
-    values = np.concatenate([rows[i]["_d2"] for i in idx])
-    return float(np.percentile(values, JOIN_PERCENTILE)) if len(values) else float("nan")
+def _join_p99(rows: list[dict]) -> Statistic:
+    return pooled_percentile([r["_d2"] for r in rows], JOIN_PERCENTILE)
 
 
-def _interior_p99(rows, idx):
-    values = np.concatenate([rows[i]["_d2_interior"] for i in idx])
-    return float(np.percentile(values, JOIN_PERCENTILE)) if len(values) else float("nan")
+def _interior_p99(rows: list[dict]) -> Statistic:
+    return pooled_percentile([r["_d2_interior"] for r in rows], JOIN_PERCENTILE)
 
 
 def _emotion_accuracy(rows, idx):
     return float(sum(rows[i]["emotion_correct"] for i in idx) / max(1, sum(rows[i]["frames"] for i in idx)))
 
 
-#: key -> (label, statistic over the sentences ``idx`` of a method's rows, needs the clean truth,
-#: lower is better).
-FIGURES = {
-    "rms_clean_mm": ("RMS vs clean truth (mm)", _weighted_root("err_clean_mm2"), True, True),
-    "rms_mm": ("RMS vs noisy capture (mm)", _weighted_root("err_mm2"), False, True),
-    "velocity_rms_clean_mm_s": ("velocity RMS error vs clean (mm/s)", _weighted_root("velocity_ms_clean"), True, True),
-    "mouth_r": ("mouth-opening Pearson r", _mean_r, True, False),
-    "closure_rate": ("/p b m/ closed within the phone", _closure_rate, True, False),
-    "closure_delay_ms": ("|closure onset - truth's| (ms)", _closure_delay, True, True),
+#: key -> (label, statistic, needs the clean truth, lower is better). The statistic takes a
+#: method's rows (one per sentence) and returns the figure of the sentences ``idx`` of a resample
+#: (:data:`facesynth.bootstrap.Statistic`), prepared once for the thousands of resamples.
+FIGURES: dict[str, tuple[str, Callable[[list[dict]], Statistic], bool, bool]] = {
+    "rms_clean_mm": ("RMS vs clean truth (mm)", _of_rows(_weighted_root("err_clean_mm2")), True, True),
+    "rms_mm": ("RMS vs noisy capture (mm)", _of_rows(_weighted_root("err_mm2")), False, True),
+    "velocity_rms_clean_mm_s": ("velocity RMS error vs clean (mm/s)", _of_rows(_weighted_root("velocity_ms_clean")),
+                                True, True),
+    "mouth_r": ("mouth-opening Pearson r", _of_rows(_mean_r), True, False),
+    "closure_rate": ("/p b m/ closed within the phone", _of_rows(_closure_rate), True, False),
+    "closure_delay_ms": ("|closure onset - truth's| (ms)", _of_rows(_closure_delay), True, True),
     "join_d2_p99": ("join 2nd difference, 99th pct (mm/frame²)", _join_p99, False, True),
     "interior_d2_p99": ("2nd difference away from joins, 99th pct (mm/frame²)", _interior_p99, False, True),
-    "emotion_accuracy": ("emotion recognised (frames)", _emotion_accuracy, False, False),
+    "emotion_accuracy": ("emotion recognised (frames)", _of_rows(_emotion_accuracy), False, False),
 }
 
 
@@ -486,11 +492,10 @@ def figures(per_method: dict[str, list[dict]], settings: EvaluateSettings, with_
         for key, (_, stat, clean, _) in FIGURES.items():
             if (clean and not with_clean) or any(_needed(key) not in r for r in rows):
                 continue
-            entry[key] = interval(lambda idx, stat=stat, rows=rows: stat(rows, idx), n, index)  # type: ignore[misc]
+            entry[key] = interval(stat(rows), n, index)
             if method != "dp" and method not in REFERENCES and key in out.get("dp", {}):
                 dp_rows = per_method["dp"]
-                entry[f"dp_minus.{key}"] = paired_difference(lambda idx, s=stat: s(dp_rows, idx),  # type: ignore[misc]
-                                                             lambda idx, s=stat, r=rows: s(r, idx), n, index)  # type: ignore[misc]
+                entry[f"dp_minus.{key}"] = paired_difference(stat(dp_rows), stat(rows), n, index)
         if with_clean and all("_sweep" in r for r in rows):
             sweep = np.concatenate([r["_sweep"] for r in rows], axis=1)
             entry["closure_sweep"] = {f"{k * settings.closure_mm:g}": (float(sweep[j].mean()) if sweep.shape[1] else None)
@@ -732,8 +737,7 @@ def evaluate(db_path: Path, corpus: Path, settings: EvaluateSettings, synth: Syn
 
         def difference(key: str, other: str, best: str) -> dict:
             stat = FIGURES[key][1]
-            return paired_difference(lambda idx: stat(per_method[other], idx),
-                                     lambda idx: stat(per_method[best], idx), len(sentences), index)
+            return paired_difference(stat(per_method[other]), stat(per_method[best]), len(sentences), index)
 
         choice = recommend({r: metrics[r]["figures"] for r in metrics if "figures" in metrics[r]},
                            {m: MEMBER_ROW[m] for m in members}, difference)

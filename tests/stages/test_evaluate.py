@@ -34,8 +34,7 @@ def test_report_has_numbers_per_method_and_plots(tiny_db, tiny_artifacts, tmp_pa
 
     def difference(key, other, best):  # from the per-sentence errors the report lists
         stat = evaluation.FIGURES[key][1]
-        return paired_difference(lambda i: stat(m[other]["per_sentence"], i), lambda i: stat(m[best]["per_sentence"], i),
-                                 4, draws)
+        return paired_difference(stat(m[other]["per_sentence"]), stat(m[best]["per_sentence"]), 4, draws)
 
     assert sentence == evaluation.recommend(figures, difference=difference).sentence
     assert sentence.startswith("Recommended for this database: ")
