@@ -35,11 +35,13 @@ lint: $(STAMP)
 	$(BIN)/ruff check facesynth tests benchmarks
 	$(BIN)/mypy
 
-# The generated parts of the docs: the stage table of docs/pipeline.md (facesynth/pipeline.py)
-# and the artifact reference of docs/file-format.md (facesynth/model/spec.py).
+# The generated parts of the docs: the stage table of docs/pipeline.md (facesynth/pipeline.py),
+# the artifact reference of docs/file-format.md (facesynth/model/spec.py) and the settings
+# reference docs/configuration.md (facesynth/config.py).
 docs: $(STAMP)
 	$(BIN)/python -m facesynth.pipeline docs/pipeline.md
 	$(BIN)/python -m facesynth.model.spec docs/file-format.md
+	$(BIN)/python -m facesynth.config > docs/configuration.md
 
 # The long hostile-input run: every input kind x mutation over five seeds (several minutes;
 # `make test` runs a quick part of it). `benchmarks/hostile.py` prints the same cases as a table.

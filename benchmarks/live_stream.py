@@ -1,14 +1,15 @@
 """Live synthesis (``facesynth stream``): latency, concurrent real-time streams, and the live output
 against the batch output of the same utterance.
 
-    .venv/bin/python benchmarks/live_stream.py --db db.h5 --corpus corpus/ [--takes 8] \
-        [--streams 1,4,8,12] [--seconds 8] > benchmarks/live_stream.json
+    .venv/bin/python benchmarks/live_stream.py --db db.h5 --corpus corpus/ [--trajectory traj.h5] \
+        [--takes 8] [--streams 1,4,8,12] [--seconds 8] > benchmarks/live_stream.json
 
 ``--db`` is a database built from the sample corpus ``--corpus`` (its held-out takes are the
-utterances; their clean ground truth scores the mouth).
+utterances; their clean ground truth scores the mouth); ``--trajectory``, a trajectory model
+trained on it (``facesynth train-trajectory``), adds the rows of the trajectory method.
 
 1. ``offline``: each held-out take streamed through a session in 20 ms chunks, for every
-   configuration (``method`` dp or greedy, ``lookahead`` phones, ``phones``: ``recognize``d live
+   configuration (``method`` dp, greedy or trajectory, ``lookahead`` phones, ``phones``: ``recognize``d live
    from the audio, or ``given`` by a TTS engine as it speaks: each phone's timing sent with the
    chunk where the phone starts, or ``given_ahead``: all of them before the audio, as an engine that
    plans a sentence before speaking it can; the last message says the phones are complete). Time
@@ -22,7 +23,9 @@ utterances; their clean ground truth scores the mouth).
    (mm), mouth-opening r (inner-lip gap ``ULI_C``-``LLI_C``) between live and batch, the ARKit
    curves' RMS and jawOpen r against ``facesynth solve``'s curves of the batch markers, and the
    mouth-opening r of each against the clean ground truth (``quality_ratio`` = live r / batch r).
-   ``path_differs``: the fraction of spoken steps whose node differs from the whole-utterance path.
+   ``path_differs``: the fraction of spoken steps whose node differs from the whole-utterance path
+   (none for the trajectory method, which has no nodes: its batch is ``synthesize --method
+   trajectory``, solved at the model's capture rate over the whole utterance).
    Rows ending ``_pauses_wait`` hold a pause's frames back until its next phone is decided (the
    frames batch renders there); the others send them ``stream.pause_wait_s`` after their audio.
 2. ``concurrent``: ``facesynth stream --serve 127.0.0.1:0 --workers W`` in its own processes; K
@@ -55,7 +58,9 @@ from facesynth.config import Config
 from facesynth.evaluation import TruthFolder
 from facesynth.live.core import LiveModel
 from facesynth.live.session import Session
+from facesynth.methods.trajectory import synthesize_motion
 from facesynth.model.motiondb import MotionDatabase
+from facesynth.model.trajectory import TrajectoryModel
 from facesynth.motion.postprocess import downsample
 from facesynth.phonemes import PAU
 from facesynth.search.inputs import read_utterance, utterance
@@ -65,7 +70,8 @@ CHUNK_S = 0.02
 #: (method, look-ahead phones, recognition hold phones, stream.pause_wait_s: None the default; a
 #: wait longer than any pause makes a pause's frames wait for the next phone, as batch renders them)
 CONFIGS = [("dp", 0, 1, None), ("dp", 0, 1, 3600.0), ("dp", 1, 1, None), ("dp", 1, 1, 3600.0), ("dp", 2, 1, None),
-           ("dp", 2, 2, None), ("dp", 4, 1, None), ("greedy", 1, 1, None)]
+           ("dp", 2, 2, None), ("dp", 4, 1, None), ("greedy", 1, 1, None), ("trajectory", 0, 1, None),
+           ("trajectory", 1, 1, None)]
 #: How the phones arrive: recognised from the audio; given by a TTS engine with the chunk where
 #: each starts; given for the whole utterance before its audio (a TTS engine that plans a sentence).
 MODES = ("recognize", "given", "given_ahead")
@@ -127,17 +133,21 @@ def stream_offline(model: LiveModel, align, pcm: bytes, phones_given: list[dict]
     return np.stack(frames), np.array(times), np.array(latency), busy, cpu, session
 
 
-def offline(db_path: Path, corpus: Path, takes: list[str], config: Config) -> dict:
+def offline(db_path: Path, corpus: Path, takes: list[str], config: Config, trajectory_path: Path | None) -> dict:
     db = MotionDatabase.read(db_path)
+    trajectory = TrajectoryModel.read(trajectory_path) if trajectory_path is not None else None
     truth = TruthFolder.open(corpus, db.marker_names, config.settings("normalize"))
     align = config.settings("align")
     names = db.marker_names
     out = {}
     for method, lookahead, hold, pause_wait in CONFIGS:
+        if method == "trajectory" and trajectory is None:
+            continue
         stream = replace(config.settings("stream"), method=method, lookahead_phones=lookahead, recognition_hold=hold)
         if pause_wait is not None:
             stream = replace(stream, pause_wait_s=pause_wait)
-        model = LiveModel(db, config.settings("synthesize"), stream, config.settings("solve"))
+        model = LiveModel(trajectory if method == "trajectory" else db, config.settings("synthesize"), stream,
+                          config.settings("solve"), config.settings("trajectory"))
         for mode in MODES:
             if mode != "recognize" and hold != 1:
                 continue  # the hold only matters to recognition
@@ -161,11 +171,15 @@ def offline(db_path: Path, corpus: Path, takes: list[str], config: Config) -> di
                 audio_s += len(pcm) / 32000
                 decisions += session.synth.decision_s
                 utt = utterance(s.phones, s.starts, s.ends, s.emotions)
-                batch = synthesize(db, utt, {}, replace(model.synth, search=method))
+                if method == "trajectory":
+                    batch = {"markers": synthesize_motion(trajectory, utt, config.settings("trajectory"),
+                                                          model.stream.fps)[0].markers}
+                else:
+                    batch = synthesize(db, utt, {}, replace(model.synth, search=method))
+                    keep = np.array([p != PAU for p in utt.phones])
+                    differ += int(((np.array(s.committed) != batch["path"]) & keep).sum())
+                    spoken += int(keep.sum())
                 assert batch["markers"].shape == live.shape, (take, batch["markers"].shape, live.shape)
-                keep = np.array([p != PAU for p in utt.phones])
-                differ += int(((np.array(s.committed) != batch["path"]) & keep).sum())
-                spoken += int(keep.sum())
                 rms.append(float(np.sqrt(((live - batch["markers"]) ** 2).sum(-1).mean())))
                 # the curves: the live per-batch solve against `facesynth solve` of the batch markers
                 batch_arkit = model.arkit(model.solve(batch["markers"], None))
@@ -194,7 +208,7 @@ def offline(db_path: Path, corpus: Path, takes: list[str], config: Config) -> di
                 "rtf": round(busy / audio_s, 4), "rtf_cpu": round(cpu_s / audio_s, 4),
                 "decision_median_ms": round(1000 * float(np.median(decisions)), 2),
                 "decision_p95_ms": round(1000 * float(np.percentile(decisions, 95)), 2),
-                "path_differs": round(differ / max(spoken, 1), 3),
+                "path_differs": round(differ / spoken, 3) if spoken else None,
                 "rms_vs_batch_mm": round(float(np.mean(rms)), 3),
                 "arkit_rms_vs_batch": round(float(np.mean(arkit_rms)), 4),
                 "jaw_open_r_vs_batch": round(float(np.nanmean(jaw_r)), 3),
@@ -270,6 +284,7 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--db", type=Path, required=True)
     ap.add_argument("--corpus", type=Path, required=True)
+    ap.add_argument("--trajectory", type=Path, default=None, help="a trajectory model of --db: its rows too")
     ap.add_argument("--takes", type=int, default=8, help="held-out takes streamed (first ones in the manifest)")
     ap.add_argument("--streams", default="1,4,8,12", help="concurrent stream counts, the first the reference")
     ap.add_argument("--seconds", type=float, default=8.0, help="audio per concurrent stream")
@@ -283,7 +298,7 @@ def main() -> None:
     result = {"db": args.db.name, "takes": takes, "chunk_s": CHUNK_S, "fps": config.settings("stream").fps,
               "cpus": os.cpu_count(), "load_average": os.getloadavg()}
     if not args.skip_offline:
-        result["offline"] = offline(args.db, args.corpus, takes, config)
+        result["offline"] = offline(args.db, args.corpus, takes, config, args.trajectory)
     if not args.skip_concurrent:
         counts = [int(x) for x in args.streams.split(",")]
         pcm = read_pcm(args.corpus / "audio" / f"{takes[0]}.wav")

@@ -1382,6 +1382,7 @@ def stream(ctx: Context, db_path: Path, audio: str, serve: str | None, livelink:
            lookahead: int | None, markers: bool, realtime: bool, workers: int):
     """Live synthesis: audio in as it arrives, frames of ARKit curves out with a fixed latency
     (JSON lines on standard output, or WebSocket messages), never revised (docs/live.md).
+    DB is the motion database, or with --method trajectory a trajectory model (train-trajectory).
     With --serve it serves WebSocket clients until Ctrl-C or SIGTERM, e.g.
     `facesynth stream db.h5 --serve 127.0.0.1:8765 --livelink 127.0.0.1:11111`.
 
@@ -1392,7 +1393,8 @@ def stream(ctx: Context, db_path: Path, audio: str, serve: str | None, livelink:
     from .stages import stream as stage
 
     c = ctx.config
-    model = stage.load_model(db_path, c.settings("synthesize"), c.settings("stream"), c.settings("solve"), method, lookahead)
+    model = stage.load_model(db_path, c.settings("synthesize"), c.settings("stream"), c.settings("solve"), method, lookahead,
+                             c.settings("trajectory"))
     if serve is not None:
         stage.serve(model, c.settings("align"), serve, livelink=livelink, ready=ctx.say, workers=workers)
         ctx.say("stopped.")

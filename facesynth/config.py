@@ -436,8 +436,9 @@ class StreamSettings:
     """``[stream]``: live synthesis (``facesynth stream``): decisions with a bounded look-ahead,
     incremental phones, the transports' bounds (docs/live.md)."""
 
-    method: str = setting("paper Algorithm 1 on a sliding window (dp, fixed-lag) or Cao et al.'s greedy tiling",
-                          choices=("dp", "greedy"))
+    method: str = setting("paper Algorithm 1 on a sliding window (dp, fixed-lag), Cao et al.'s greedy tiling, or "
+                          "Huang et al.'s key-shape trajectory solved with the sent frames fixed (trajectory: streams "
+                          "from a trajectory model)", choices=("dp", "greedy", "trajectory"))
     lookahead_phones: int = setting("not in the papers: phones known past a step before it is committed (the "
                                     "fixed lag); more: closer to the whole-utterance DP, later frames", unit="phones",
                                     ge=0, le=64)

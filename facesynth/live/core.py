@@ -14,8 +14,18 @@ Decisions (``stream.method``):
 - ``greedy``: Cao et al.'s greedy tiling (:class:`facesynth.search.greedy.Greedy`) of the
   uncommitted spoken phones, its first run tied to the last committed node; steps older than
   the look-ahead are committed.
+- ``trajectory``: the key-shape trajectory model (Huang et al. §5.4, a ``trajectory`` artifact
+  instead of a database), solved on the output grid. At each decision Eq. 7 is solved over the
+  unsent frames up to the end of the known phones, with the last frame sent fixed
+  (:func:`facesynth.methods.trajectory.solve`'s ``before``): the path is a Gauss-Markov chain, so
+  this is the exact minimizer of Eq. 6 given what was sent and the phones known, and equal to
+  the whole-utterance solve when the look-ahead covers the utterance (tested). Frames before the
+  first uncommitted phone are sent. Two differences from batch synthesis: the path is solved at
+  the output rate, not the model's capture rate (lambda scaled as ``trajectory.fps`` scales it),
+  and Eq. 6's duration normalization divides by the frames known at the decision, since the
+  utterance's length is not known yet.
 
-Frames: the committed path is rendered as batch synthesis renders a path
+Frames (``dp`` and ``greedy``): the committed path is rendered as batch synthesis renders a path
 (:func:`facesynth.search.synthesis.render_path`: time-warp, the join smoothing of VII-B, pauses
 regenerated, Eq. 11, down-sampling). A frame is sent only when nothing uncommitted can change
 it: it must lie before the first uncommitted phone by more than the join smoothing's reach
@@ -45,9 +55,11 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from ..config import SolveSettings, StreamSettings, SynthesizeSettings
+from ..config import SolveSettings, StreamSettings, SynthesizeSettings, TrajectorySettings
 from ..errors import InputError
+from ..methods import trajectory as trajectory_method
 from ..model.motiondb import MotionDatabase
+from ..model.trajectory import TrajectoryModel
 from ..phonemes import PAU
 from ..search.costs import step_costs
 from ..search.dp import dp_numpy
@@ -69,42 +81,70 @@ class Frame:
 
 
 class LiveModel:
-    """What every stream of one database shares (read once): the database, the dense transition
-    costs (Table I, (N, N) float32), the greedy search and the facial solve's basis.
+    """What every stream of one source shares (read once): for ``dp`` and ``greedy`` the database,
+    the dense transition costs (Table I, (N, N) float32) and the greedy search; for
+    ``trajectory`` the trajectory model; and the facial solve's basis.
 
-    db : a read :class:`MotionDatabase`; synth : the search and post-processing settings
-    (smoothing, output rate are taken from ``stream`` where it has them); solve : the facial solve's.
+    source : a read :class:`MotionDatabase`, or for ``stream.method = "trajectory"`` a read
+    :class:`~facesynth.model.trajectory.TrajectoryModel`; synth : the search and post-processing
+    settings (smoothing, output rate are taken from ``stream`` where it has them); solve : the
+    facial solve's; trajectory : the trajectory method's (its smoothness and duration
+    normalization; needed for ``trajectory``).
     """
 
-    def __init__(self, db: MotionDatabase, synth: SynthesizeSettings, stream: StreamSettings, solve: SolveSettings):
+    def __init__(self, source, synth: SynthesizeSettings, stream: StreamSettings, solve: SolveSettings,
+                 trajectory: TrajectorySettings | None = None):
         from ..facerig import load_face_rig
         from ..retarget.rig import builtin_rig, marker_map
 
-        self.db = db
         self.stream = stream
         self.solve_settings = solve
         self.synth = replace(synth, output_fps=stream.fps, postprocess="deng", use_opencl=False)
-        self.tc = db.transition_costs(self.synth, False)
-        self.dense = np.ascontiguousarray(self.tc.dense(), np.float32)
-        self.emotions = sorted(set(db.nodes.emotion))
         self.greedy = None
-        if stream.method == "greedy":
-            from ..search.greedy import Greedy, anime_graph, cluster_graph, motion_features
+        self.db: MotionDatabase | None = None
+        self.trajectory: TrajectoryModel | None = None
+        if stream.method == "trajectory":
+            if not isinstance(source, TrajectoryModel):
+                raise InputError("stream.method 'trajectory' streams from a trajectory model: give the output of "
+                                 "`facesynth train-trajectory` in place of the database.")
+            if trajectory is None:
+                raise ValueError("the trajectory method needs its [trajectory] settings")  # a caller's bug
+            self.trajectory, self.trajectory_settings = source, trajectory
+            self.marker_names, self.reference = list(source.marker_names), np.asarray(source.reference, np.float32)
+            #: frames/s of the grid phones are placed on: the output grid, where the path is solved
+            self.grid_fps = float(stream.fps)
+            self.emotions = sorted(set(source.keyshape_emotion) | set(source.pair_emotion))
+            #: (M, 3) mm: the rest pose (all key-shape weights 0)
+            self.rest_markers = self.reference.copy()
+        else:
+            if not isinstance(source, MotionDatabase):
+                raise InputError(f"stream.method {stream.method!r} streams from a motion database: give the output of "
+                                 "`facesynth build-db` (or `prune`).")
+            db = self.db = source
+            self.marker_names, self.reference = list(db.marker_names), db.reference
+            self.grid_fps = float(db.fps)  # the capture grid, where the path is rendered
+            self.tc = db.transition_costs(self.synth, False)
+            self.dense = np.ascontiguousarray(self.tc.dense(), np.float32)
+            self.emotions = sorted(set(db.nodes.emotion))
+            if stream.method == "greedy":
+                from ..search.greedy import Greedy, anime_graph, cluster_graph, motion_features
 
-            if self.synth.greedy_clusters > 0:
-                features = motion_features(db.coeffs, db.nodes.frame_start, db.nodes.frame_count)
-                graph = cluster_graph(db.nodes.phone, db.nodes.emotion, db.nodes.suc, features, self.synth.greedy_clusters)
-            else:
-                graph = anime_graph(db.nodes.phone, db.nodes.emotion, db.nodes.suc)
-            # the dense matrix, read-only: streams on several threads share it
-            self.greedy = Greedy(graph, db.nodes.viseme, db.nodes.emotion, self.dense, self.synth.alpha6 * self.synth.pnt)
+                if self.synth.greedy_clusters > 0:
+                    features = motion_features(db.coeffs, db.nodes.frame_start, db.nodes.frame_count)
+                    graph = cluster_graph(db.nodes.phone, db.nodes.emotion, db.nodes.suc, features,
+                                          self.synth.greedy_clusters)
+                else:
+                    graph = anime_graph(db.nodes.phone, db.nodes.emotion, db.nodes.suc)
+                # the dense matrix, read-only: streams on several threads share it
+                self.greedy = Greedy(graph, db.nodes.viseme, db.nodes.emotion, self.dense, self.synth.alpha6 * self.synth.pnt)
+            rest_coeffs = db.model.project(db.reference[None])[0]
+            #: (M, 3) mm: the rest pose as the PCA model reconstructs it (where silences settle)
+            self.rest_markers = db.model.reconstruct(rest_coeffs[None])[0].astype(np.float32)
         rig = builtin_rig()
         self.face = load_face_rig()
-        self.marker_map = marker_map(rig, db.marker_names, db.reference, "the motion database")
+        self.marker_map = marker_map(rig, self.marker_names, self.reference,
+                                     "the trajectory model" if self.db is None else "the motion database")
         self.basis = rig.deltas[:, self.marker_map.vertices]
-        self.rest_coeffs = db.model.project(db.reference[None])[0]
-        #: (M, 3) mm: the rest pose as the PCA model reconstructs it (where silences settle)
-        self.rest_markers = db.model.reconstruct(self.rest_coeffs[None])[0].astype(np.float32)
 
     @property
     def arkit_names(self) -> tuple[str, ...]:
@@ -118,7 +158,7 @@ class LiveModel:
         from ..retarget.solve import solve_curves
 
         frames = markers if previous is None else np.concatenate([previous[0][None], markers])
-        disp = self.marker_map.displacements(frames, self.db.reference)
+        disp = self.marker_map.displacements(frames, self.reference)
         w, _, _ = solve_curves(disp, self.basis, smooth=self.solve_settings.smooth, ridge=self.solve_settings.ridge,
                                iterations=self.solve_settings.iterations, tolerance=self.solve_settings.tolerance,
                                initial=None if previous is None else previous[1])
@@ -153,6 +193,7 @@ class LiveSynthesizer:
     _open_pause: int | None = None     # the step of a pause whose frames went out before its next phone was decided
     _pause_left: tuple[int, np.ndarray] | None = None  # the open pause's starting frame: (index, (M, 3) markers)
     _silence_growing: bool = False     # the last phone is a pause from :meth:`extend_silence`: its end is not known
+    _solved: tuple[int, np.ndarray] | None = None  # trajectory: the last frame sent from the solve, (index, (K,) weights)
 
     def __post_init__(self):
         self.set_emotion(self.emotion)
@@ -226,6 +267,9 @@ class LiveSynthesizer:
         c = len(self.committed)
         if upto <= c:
             return
+        if self.model.trajectory is not None:  # no nodes: a committed phone's frames may be sent
+            self.committed.extend([-1] * (upto - c))
+            return
         first = max(0, c - 1)
         phones = self.phones[first:]
         emotions = self.emotions[first:]
@@ -277,14 +321,16 @@ class LiveSynthesizer:
             return 0
         if self.phones_complete and c == len(self.phones):
             return self._total_frames()
-        db, s = self.model.db, self.model.synth
-        if self.phones[c - 1] == PAU:
-            limit = int(round(self.starts[c - 1] * db.fps))
+        grid, s = self.model.grid_fps, self.model.synth
+        if self.model.trajectory is not None:
+            limit = int(round(self.ends[c - 1] * grid))  # the solve reaches every frame: no join to wait for
+        elif self.phones[c - 1] == PAU:
+            limit = int(round(self.starts[c - 1] * grid))
         else:
-            limit = int(round(self.ends[c - 1] * db.fps))
+            limit = int(round(self.ends[c - 1] * grid))
             if c == len(self.phones) or self.phones[c] != PAU:
                 limit -= s.smoothing_half_window
-        ratio = db.fps / self.model.stream.fps
+        ratio = grid / self.model.stream.fps
         if abs(ratio - round(ratio)) > 1e-9:
             limit -= 1  # the down-sampling interpolates with the next capture frame
         return max(0, int(np.ceil(limit / ratio - 1e-9)))
@@ -321,10 +367,10 @@ class LiveSynthesizer:
     def _output_range(self, step: int) -> tuple[int, int]:
         """Output frames [first, stop) of ``step``: those whose capture frame lies in the step's
         capture frames (:func:`~facesynth.motion.postprocess.frame_ranges`' rounding)."""
-        db = self.model.db
-        ratio = db.fps / self.model.stream.fps
-        a = int(round(self.starts[step] * db.fps))
-        b = int(round(self.ends[step] * db.fps))
+        grid = self.model.grid_fps
+        ratio = grid / self.model.stream.fps
+        a = int(round(self.starts[step] * grid))
+        b = int(round(self.ends[step] * grid))
         return int(np.ceil(a / ratio - 1e-9)), int(np.ceil(b / ratio - 1e-9))
 
     def _pause_frames(self, now: float) -> np.ndarray:
@@ -384,17 +430,20 @@ class LiveSynthesizer:
 
     def _total_frames(self) -> int:
         """Frames batch synthesis gives the whole utterance (its down-sampling of the capture frames)."""
-        db = self.model.db
+        grid = self.model.grid_fps
         if not self.phones:
             return 0
-        n_capture = int(round(self.ends[-1] * db.fps))
-        ratio = db.fps / self.model.stream.fps
+        n_capture = int(round(self.ends[-1] * grid))
+        ratio = grid / self.model.stream.fps
         return int(np.floor((n_capture - 1) / ratio)) + 1 if n_capture > 0 else 0
 
     def _render(self, first: int, stop: int) -> np.ndarray:
         """Markers (stop - first, M, 3) mm of output frames [first, stop), rendering the committed
         steps from two spoken phones before the step of frame ``first``."""
+        if self.model.trajectory is not None:
+            return self._solve(first, stop)
         db = self.model.db
+        assert db is not None
         fps = self.model.stream.fps
         c = len(self.committed)
         starts = np.array(self.starts[:c])
@@ -422,3 +471,30 @@ class LiveSynthesizer:
         if lo < 0 or hi > len(out):
             raise AssertionError(f"render window [{lo}, {hi}) outside its {len(out)} frames")  # a bug, not input
         return out[lo:hi].astype(np.float32)
+
+    def _solve(self, first: int, stop: int) -> np.ndarray:
+        """Trajectory: markers (stop - first, M, 3) mm of output frames [first, stop), from Eq. 7
+        solved over the frames after the last one sent from a solve up to the end of the known
+        phones, that frame fixed (the frames between, sent while a pause waited, are solved
+        again but not sent again). Keeps the weights of frame ``stop - 1`` for the next solve."""
+        model, settings = self.model.trajectory, self.model.trajectory_settings
+        assert model is not None
+        fps = self.model.stream.fps
+        begin, before = (0, None) if self._solved is None else (self._solved[0] + 1, self._solved[1])
+        k = max(0, int(np.searchsorted(np.array(self.starts), begin / fps + 1e-9, side="right")) - 1)
+        while k > 0 and self._output_range(k)[0] > begin:
+            k -= 1
+        targets = trajectory_method.frame_targets(model, self.phones[k:], self.emotions[k:], np.array(self.starts[k:]),
+                                                  np.array(self.ends[k:]), fps, "the stream")
+        ranges = targets.ranges  # on the stream's grid: the targets start at frame ranges[0][0]
+        offset, known = ranges[0][0], ranges[-1][1]
+        # Eq. 6's D with T the frames known so far (the utterance's length is not known yet)
+        d = trajectory_method.duration_weights(ranges, known, settings.duration_normalization)[offset:]
+        lo = begin - offset
+        precisions = d[lo:, None] / targets.variances[lo:]
+        lam = trajectory_method.effective_lambda(settings.smoothness, fps, settings.smoothness_fps)
+        x = trajectory_method.solve(targets.means[lo:], precisions, lam, before)
+        if stop > known or stop <= begin:
+            raise AssertionError(f"solve window [{begin}, {known}) does not hold frames [{first}, {stop})")  # a bug
+        self._solved = (stop - 1, x[stop - 1 - begin])
+        return model.markers(x[first - begin : stop - begin])

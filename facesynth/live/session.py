@@ -54,7 +54,7 @@ class Session:
         """The first message a client gets: what the frames hold."""
         return {"type": "hello", "fps": self.model.stream.fps, "method": self.model.stream.method,
                 "lookahead_phones": self.model.stream.lookahead_phones, "sample_rate": SAMPLE_RATE,
-                "arkit_names": list(self.model.arkit_names), "marker_names": list(self.model.db.marker_names),
+                "arkit_names": list(self.model.arkit_names), "marker_names": list(self.model.marker_names),
                 "emotions": self.model.emotions}
 
     def audio(self, pcm: bytes) -> list[dict]:

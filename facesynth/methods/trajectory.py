@@ -238,26 +238,33 @@ def effective_lambda(smoothness: float, fps: float, smoothness_fps: float) -> fl
     return smoothness * (fps / smoothness_fps) ** 2
 
 
-def solve(means: np.ndarray, precisions: np.ndarray, lam: float) -> np.ndarray:
+def solve(means: np.ndarray, precisions: np.ndarray, lam: float, before: np.ndarray | None = None) -> np.ndarray:
     """Eq. 7 for a diagonal Sigma: x (T, K) float64 minimizing
     ``sum_t,k precisions[t,k] (x[t,k] - means[t,k])^2 + lam sum_t,k (x[t,k] - x[t-1,k])^2``.
 
     means, precisions : (T, K), precisions = D^T Sigma^-1 D's diagonal (> 0). One banded solve of
-    the K tridiagonal systems stacked weight-major (half bandwidth 1)."""
+    the K tridiagonal systems stacked weight-major (half bandwidth 1). ``before`` (K,): the frame
+    before the first, fixed (live synthesis continues a path already sent): its smoothness term
+    ``lam (x[0] - before)^2`` joins the sum. The path is a Gauss-Markov chain, so this is the
+    exact minimizer of the whole path's Eq. 6 given the frames up to ``before``."""
     mu = np.asarray(means, np.float64)
     p = np.asarray(precisions, np.float64)
     t, k = mu.shape
     if t == 0:
         return np.zeros((0, k))
     ab = np.empty((2, k, t))
-    ww = np.full(t, 2.0)  # diagonal of W^T W: 1, 2, ..., 2, 1 (0 for one frame)
-    ww[0] = ww[-1] = 1.0
-    if t == 1:
-        ww[0] = 0.0
+    ww = np.zeros(t)  # diagonal of W^T W: 1, 2, ..., 2, 1 (0 for one frame), +1 at the start after `before`
+    ww[1:] += 1.0
+    ww[:-1] += 1.0
+    if before is not None:
+        ww[0] += 1.0
     ab[1] = p.T + lam * ww[None]
     ab[0] = -lam
     ab[0, :, 0] = 0.0  # no coupling across weights (and ab[0, 0, 0] is unused)
-    rhs = (p * mu).T.ravel()
+    weighted = p * mu
+    if before is not None:
+        weighted[0] += lam * np.asarray(before, np.float64)
+    rhs = weighted.T.ravel()
     from scipy.linalg import solveh_banded  # here: `synthesize` of the DP method never loads SciPy
 
     x = solveh_banded(ab.reshape(2, k * t), rhs, overwrite_ab=True, overwrite_b=True, check_finite=False)

@@ -14,7 +14,7 @@ from dataclasses import replace
 from pathlib import Path
 from typing import BinaryIO, cast
 
-from ..config import AlignSettings, SolveSettings, StreamSettings, SynthesizeSettings
+from ..config import AlignSettings, SolveSettings, StreamSettings, SynthesizeSettings, TrajectorySettings
 from ..errors import InputError
 from ..live.core import LiveModel
 from ..live.livelink import LiveLinkSender
@@ -30,16 +30,22 @@ def parse_address(text: str, what: str) -> tuple[str, int]:
     return host.strip("[]"), int(port)
 
 
-def load_model(db_path: Path, synth: SynthesizeSettings, stream: StreamSettings, solve: SolveSettings,
-               method: str | None = None, lookahead: int | None = None) -> LiveModel:
-    """The shared live model of ``db_path`` (``method``/``lookahead`` override ``stream``'s)."""
+def load_model(source_path: Path, synth: SynthesizeSettings, stream: StreamSettings, solve: SolveSettings,
+               method: str | None = None, lookahead: int | None = None,
+               trajectory: TrajectorySettings | None = None) -> LiveModel:
+    """The shared live model of ``source_path``: the motion database, or for the ``trajectory``
+    method its trained model (``method``/``lookahead`` override ``stream``'s)."""
     if method is not None:
         stream = replace(stream, method=method)
     if lookahead is not None:
         if lookahead < 0:
             raise InputError(f"--lookahead {lookahead}: give 0 or more phones.")
         stream = replace(stream, lookahead_phones=lookahead)
-    return LiveModel(MotionDatabase.read(db_path), synth, stream, solve)
+    if stream.method == "trajectory":
+        from ..model.trajectory import TrajectoryModel
+
+        return LiveModel(TrajectoryModel.read(source_path), synth, stream, solve, trajectory)
+    return LiveModel(MotionDatabase.read(source_path), synth, stream, solve)
 
 
 def run_stdin(model: LiveModel, align: AlignSettings, source: BinaryIO, write: Callable[[str], None], *,

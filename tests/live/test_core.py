@@ -211,3 +211,75 @@ def test_the_recogniser_restarts_in_silences_and_keeps_tiling(tiny_corpus, held_
     spoken = lambda phones: [p[0] for p in phones if p[0] != "pau"]  # noqa: E731
     # each restart falls in a silence: the sentences' phones come out as without restarts, near enough
     assert abs(len(spoken(split)) - len(spoken(whole))) <= 3
+
+
+# --- the trajectory method ---------------------------------------------------------------------
+
+@pytest.fixture(scope="module")
+def trajectory_model(tiny_db, config, tmp_path_factory):
+    from facesynth.model.trajectory import TrajectoryModel
+    from facesynth.stages import keyshapes, train_trajectory
+
+    d = tmp_path_factory.mktemp("live-trajectory")
+    ks = replace(config.settings("keyshapes"), count=4, curve_frames=200)
+    keyshapes.run(tiny_db, d / "keyshapes.h5", ks)
+    train_trajectory.run(tiny_db, d / "keyshapes.h5", d / "traj.h5", config.settings("trajectory"))
+    return TrajectoryModel.read(d / "traj.h5")
+
+
+def _trajectory_model(model, config, **stream):
+    return LiveModel(model, config.settings("synthesize"), replace(config.settings("stream"), method="trajectory", **stream),
+                     config.settings("solve"), config.settings("trajectory"))
+
+
+def _whole_solve(model, utt, config, fps):
+    """The whole utterance's Eq. 7 on the stream's grid, as batch solves it: markers (T, M, 3)."""
+    from facesynth.methods.trajectory import synthesize_path
+
+    t = config.settings("trajectory")
+    path = synthesize_path(model, list(utt.phones), list(utt.emotions), utt.starts, utt.ends, smoothness=t.smoothness,
+                           smoothness_fps=t.smoothness_fps, fps=fps, duration_normalization=t.duration_normalization)
+    return model.markers(path.weights)
+
+
+def test_trajectory_with_the_whole_lookahead_is_the_whole_utterance_solve(trajectory_model, utt, config):
+    live, frames, _ = _stream(_trajectory_model(trajectory_model, config, lookahead_phones=len(utt),
+                                                pause_wait_s=3600.0), utt)
+    whole = _whole_solve(trajectory_model, utt, config, live.model.stream.fps)
+    assert [f.index for f in frames] == list(range(len(whole)))
+    np.testing.assert_allclose(np.stack([f.markers for f in frames]), whole, atol=1e-4)
+
+
+def test_trajectory_frames_follow_the_solve_given_what_was_sent(trajectory_model, utt, config):
+    """Frames go out in order before the end, each from Eq. 7 solved with the frame before it fixed;
+    the fixed-lag path stays close to the whole utterance's, and closer with more look-ahead."""
+    deviation = []
+    for lookahead in (0, 1, 3):
+        model = _trajectory_model(trajectory_model, config, lookahead_phones=lookahead, pause_wait_s=3600.0)
+        live, frames, _ = _stream(model, utt)
+        whole = _whole_solve(trajectory_model, utt, config, model.stream.fps)
+        markers = np.stack([f.markers for f in frames])
+        assert [f.index for f in frames] == list(range(len(whole)))
+        assert len([f for f in frames if f.ready_at < utt.ends[-1]]) > len(frames) // 2
+        spread = np.sqrt(((whole - whole.mean(0)) ** 2).sum(-1).mean())  # the utterance's own motion, mm
+        deviation.append(np.sqrt(((markers - whole) ** 2).sum(-1).mean()) / spread)
+        jaw = np.stack([f.arkit for f in frames])[:, model.arkit_names.index("jawOpen")]
+        assert jaw.max() > 0.1 and jaw.min() < 0.5 * jaw.max()  # the mouth opens and closes
+    assert 0 < deviation[0] < 0.25 and deviation[1] < 0.05 and deviation[2] <= deviation[1] <= deviation[0], deviation
+
+
+def test_trajectory_pauses_ease_toward_rest_without_waiting(trajectory_model, utt, config):
+    model = _trajectory_model(trajectory_model, config, lookahead_phones=1)
+    live, frames, _ = _stream(model, utt)
+    assert [f.index for f in frames] == list(range(len(frames)))
+    markers = np.stack([f.markers for f in frames])
+    jumps = np.linalg.norm(np.diff(markers, axis=0), axis=-1).max()
+    whole = _whole_solve(trajectory_model, utt, config, model.stream.fps)
+    assert jumps <= np.linalg.norm(np.diff(whole, axis=0), axis=-1).max() + 0.5  # no jump at a pause's end
+
+
+def test_the_trajectory_method_needs_a_trajectory_model(db, trajectory_model, config):
+    with pytest.raises(InputError, match="train-trajectory"):
+        _trajectory_model(db, config)
+    with pytest.raises(InputError, match="build-db"):
+        _model(trajectory_model, config, method="dp")
