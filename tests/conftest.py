@@ -6,6 +6,8 @@ from __future__ import annotations
 import functools
 import os
 import shutil
+import signal
+import threading
 from collections.abc import Callable
 from pathlib import Path
 
@@ -91,6 +93,42 @@ def opencl_device(request, monkeypatch):
     opencl.reset()
     yield device
     opencl.reset()
+
+
+def _interrupt_signals_state() -> tuple[str, ...]:
+    """How this process handles SIGINT and SIGTERM, as the kernel sees it (ignored or blocked in
+    the main thread: /proc/self/status, Linux) and as Python does (the handlers)."""
+    kernel: tuple[str, ...] = ()
+    try:
+        status = Path("/proc/self/status").read_text()
+    except OSError:
+        pass
+    else:
+        masks = dict(line.split(":\t", 1) for line in status.splitlines() if line.startswith(("SigBlk", "SigIgn")))
+        bits = {name: int(masks.get(name, "0"), 16) for name in ("SigBlk", "SigIgn")}
+        kernel = tuple(f"{name} {signum.name}" for name, mask in bits.items()
+                       for signum in (signal.SIGINT, signal.SIGTERM) if mask >> (signum - 1) & 1)
+    return kernel + tuple(f"{signum.name} -> {signal.getsignal(signum)!r}" for signum in (signal.SIGINT, signal.SIGTERM))
+
+
+@pytest.fixture(autouse=True)
+def _interrupts_are_left_as_found(request):
+    """Every test leaves Ctrl-C and SIGTERM as it found them: a test (or a library it drives) that
+    ignores, blocks or replaces them would silently break the interrupt tests that follow it in
+    the same process, and their subprocesses, which inherit an ignored or blocked signal. Such a
+    test fails here, naming what it changed, and the process's state is put back."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    before, handlers = _interrupt_signals_state(), {s: signal.getsignal(s) for s in (signal.SIGINT, signal.SIGTERM)}
+    yield
+    after = _interrupt_signals_state()
+    if after != before:
+        for signum, handler in handlers.items():
+            if handler is not None:
+                signal.signal(signum, handler)
+        signal.pthread_sigmask(signal.SIG_UNBLOCK, [signal.SIGINT, signal.SIGTERM])
+        pytest.fail(f"the test changed how this process handles interrupts: {before} -> {after} (put back)")
 
 
 @pytest.fixture(scope="session")
