@@ -429,8 +429,9 @@ class LiveSynthesizer:
         return out
 
     def _total_frames(self) -> int:
-        """Frames batch synthesis gives the whole utterance (its down-sampling of the capture frames)."""
-        grid = self.model.grid_fps
+        """Frames batch synthesis gives the whole utterance (its down-sampling of the capture frames;
+        the trajectory method's batch synthesis counts them on its model's capture grid too)."""
+        grid = self.model.grid_fps if self.model.trajectory is None else self.model.trajectory.fps
         if not self.phones:
             return 0
         n_capture = int(round(self.ends[-1] * grid))
@@ -486,14 +487,20 @@ class LiveSynthesizer:
             k -= 1
         targets = trajectory_method.frame_targets(model, self.phones[k:], self.emotions[k:], np.array(self.starts[k:]),
                                                   np.array(self.ends[k:]), fps, "the stream")
-        ranges = targets.ranges  # on the stream's grid: the targets start at frame ranges[0][0]
+        ranges = list(targets.ranges)  # on the stream's grid: the targets start at frame ranges[0][0]
+        means, variances = targets.means, targets.variances
         offset, known = ranges[0][0], ranges[-1][1]
+        if stop > known:  # the end: batch counts its frames on the capture grid, which can give one more
+            extra = stop - known
+            means = np.concatenate([means, np.repeat(means[-1:], extra, axis=0)])
+            variances = np.concatenate([variances, np.repeat(variances[-1:], extra, axis=0)])
+            ranges[-1], known = (ranges[-1][0], stop), stop
         # Eq. 6's D with T the frames known so far (the utterance's length is not known yet)
         d = trajectory_method.duration_weights(ranges, known, settings.duration_normalization)[offset:]
         lo = begin - offset
-        precisions = d[lo:, None] / targets.variances[lo:]
+        precisions = d[lo:, None] / variances[lo:]
         lam = trajectory_method.effective_lambda(settings.smoothness, fps, settings.smoothness_fps)
-        x = trajectory_method.solve(targets.means[lo:], precisions, lam, before)
+        x = trajectory_method.solve(means[lo:], precisions, lam, before)
         if stop > known or stop <= begin:
             raise AssertionError(f"solve window [{begin}, {known}) does not hold frames [{first}, {stop})")  # a bug
         self._solved = (stop - 1, x[stop - 1 - begin])

@@ -9,6 +9,7 @@ import pytest
 from facesynth.errors import InputError
 from facesynth.live.core import LiveModel, LiveSynthesizer
 from facesynth.live.phones import given_phones
+from facesynth.methods.trajectory import synthesize_motion
 from facesynth.model.motiondb import MotionDatabase
 from facesynth.search.inputs import read_utterance
 from facesynth.search.synthesis import render_path, synthesize
@@ -233,13 +234,21 @@ def _trajectory_model(model, config, **stream):
 
 
 def _whole_solve(model, utt, config, fps):
-    """The whole utterance's Eq. 7 on the stream's grid, as batch solves it: markers (T, M, 3)."""
-    from facesynth.methods.trajectory import synthesize_path
+    """The whole utterance's Eq. 7 on the stream's grid, as batch solves it, over as many frames as
+    batch synthesis gives (counted on the model's capture grid: the last phone may take one frame
+    more than on this grid): markers (T, M, 3)."""
+    from facesynth.methods import trajectory as method
 
     t = config.settings("trajectory")
-    path = synthesize_path(model, list(utt.phones), list(utt.emotions), utt.starts, utt.ends, smoothness=t.smoothness,
-                           smoothness_fps=t.smoothness_fps, fps=fps, duration_normalization=t.duration_normalization)
-    return model.markers(path.weights)
+    targets = method.frame_targets(model, list(utt.phones), list(utt.emotions), utt.starts, utt.ends, fps)
+    n = int((round(utt.ends[-1] * model.fps) - 1) // (model.fps / fps)) + 1
+    extra = n - len(targets.means)
+    means = np.concatenate([targets.means, np.repeat(targets.means[-1:], extra, axis=0)])
+    variances = np.concatenate([targets.variances, np.repeat(targets.variances[-1:], extra, axis=0)])
+    ranges = targets.ranges[:-1] + [(targets.ranges[-1][0], n)]
+    d = method.duration_weights(ranges, n, t.duration_normalization)
+    x = method.solve(means, d[:, None] / variances, method.effective_lambda(t.smoothness, fps, t.smoothness_fps))
+    return model.markers(x)
 
 
 def test_trajectory_with_the_whole_lookahead_is_the_whole_utterance_solve(trajectory_model, utt, config):
@@ -248,6 +257,9 @@ def test_trajectory_with_the_whole_lookahead_is_the_whole_utterance_solve(trajec
     whole = _whole_solve(trajectory_model, utt, config, live.model.stream.fps)
     assert [f.index for f in frames] == list(range(len(whole)))
     np.testing.assert_allclose(np.stack([f.markers for f in frames]), whole, atol=1e-4)
+    # as many frames as batch synthesis of the same utterance
+    batch, _ = synthesize_motion(trajectory_model, utt, config.settings("trajectory"), live.model.stream.fps)
+    assert len(frames) == len(batch.markers)
 
 
 def test_trajectory_frames_follow_the_solve_given_what_was_sent(trajectory_model, utt, config):
