@@ -15,15 +15,14 @@ Decisions (``stream.method``):
   uncommitted spoken phones, its first run tied to the last committed node; steps older than
   the look-ahead are committed.
 - ``trajectory``: the key-shape trajectory model (Huang et al. §5.4, a ``trajectory`` artifact
-  instead of a database), solved on the output grid. At each decision Eq. 7 is solved over the
-  unsent frames up to the end of the known phones, with the last frame sent fixed
-  (:func:`facesynth.methods.trajectory.solve`'s ``before``): the path is a Gauss-Markov chain, so
-  this is the exact minimizer of Eq. 6 given what was sent and the phones known, and equal to
-  the whole-utterance solve when the look-ahead covers the utterance (tested). Frames before the
-  first uncommitted phone are sent. Two differences from batch synthesis: the path is solved at
-  the output rate, not the model's capture rate (lambda scaled as ``trajectory.fps`` scales it),
-  and Eq. 6's duration normalization divides by the frames known at the decision, since the
-  utterance's length is not known yet.
+  instead of a database). At each decision Eq. 7 is solved on the model's capture grid over the
+  capture frames after the last one a sent frame used, up to the end of the known phones, with
+  that frame fixed (:func:`facesynth.methods.trajectory.solve`'s ``before``), and down-sampled to
+  the output rate as batch synthesis down-samples: the path is a Gauss-Markov chain, so this is
+  the exact minimizer of Eq. 6 given what was sent and the phones known, and batch synthesis's
+  frames when the look-ahead covers the utterance (tested). Frames before the first uncommitted
+  phone are sent. One difference from batch synthesis: Eq. 6's duration normalization divides
+  by the frames known at the decision, since the utterance's length is not known yet.
 
 Frames (``dp`` and ``greedy``): the committed path is rendered as batch synthesis renders a path
 (:func:`facesynth.search.synthesis.render_path`: time-warp, the join smoothing of VII-B, pauses
@@ -111,8 +110,9 @@ class LiveModel:
                 raise ValueError("the trajectory method needs its [trajectory] settings")  # a caller's bug
             self.trajectory, self.trajectory_settings = source, trajectory
             self.marker_names, self.reference = list(source.marker_names), np.asarray(source.reference, np.float32)
-            #: frames/s of the grid phones are placed on: the output grid, where the path is solved
-            self.grid_fps = float(stream.fps)
+            #: frames/s of the grid phones are placed on and the path is solved on: the model's capture
+            #: rate, as batch synthesis solves it (``trajectory.fps`` 0); output frames are down-sampled
+            self.grid_fps = float(source.fps)
             self.emotions = sorted(set(source.keyshape_emotion) | set(source.pair_emotion))
             #: (M, 3) mm: the rest pose (all key-shape weights 0)
             self.rest_markers = self.reference.copy()
@@ -429,9 +429,8 @@ class LiveSynthesizer:
         return out
 
     def _total_frames(self) -> int:
-        """Frames batch synthesis gives the whole utterance (its down-sampling of the capture frames;
-        the trajectory method's batch synthesis counts them on its model's capture grid too)."""
-        grid = self.model.grid_fps if self.model.trajectory is None else self.model.trajectory.fps
+        """Frames batch synthesis gives the whole utterance (its down-sampling of the capture frames)."""
+        grid = self.model.grid_fps
         if not self.phones:
             return 0
         n_capture = int(round(self.ends[-1] * grid))
@@ -475,33 +474,40 @@ class LiveSynthesizer:
 
     def _solve(self, first: int, stop: int) -> np.ndarray:
         """Trajectory: markers (stop - first, M, 3) mm of output frames [first, stop), from Eq. 7
-        solved over the frames after the last one sent from a solve up to the end of the known
-        phones, that frame fixed (the frames between, sent while a pause waited, are solved
-        again but not sent again). Keeps the weights of frame ``stop - 1`` for the next solve."""
+        solved on the model's capture grid over the frames after the last one a sent frame used,
+        up to the end of the known phones, that frame fixed (the frames between, used only by
+        frames sent while a pause waited, are solved again), and down-sampled as batch synthesis
+        down-samples. Keeps the last capture frame the sent frames use for the next solve."""
         model, settings = self.model.trajectory, self.model.trajectory_settings
         assert model is not None
-        fps = self.model.stream.fps
+        grid = self.model.grid_fps
+        ratio = grid / self.model.stream.fps
         begin, before = (0, None) if self._solved is None else (self._solved[0] + 1, self._solved[1])
-        k = max(0, int(np.searchsorted(np.array(self.starts), begin / fps + 1e-9, side="right")) - 1)
-        while k > 0 and self._output_range(k)[0] > begin:
+        k = max(0, int(np.searchsorted(np.array(self.starts), begin / grid + 1e-9, side="right")) - 1)
+        while k > 0 and int(round(self.starts[k] * grid)) > begin:
             k -= 1
         targets = trajectory_method.frame_targets(model, self.phones[k:], self.emotions[k:], np.array(self.starts[k:]),
-                                                  np.array(self.ends[k:]), fps, "the stream")
-        ranges = list(targets.ranges)  # on the stream's grid: the targets start at frame ranges[0][0]
-        means, variances = targets.means, targets.variances
+                                                  np.array(self.ends[k:]), grid, "the stream")
+        ranges = targets.ranges  # on the capture grid: the targets start at frame ranges[0][0]
         offset, known = ranges[0][0], ranges[-1][1]
-        if stop > known:  # the end: batch counts its frames on the capture grid, which can give one more
-            extra = stop - known
-            means = np.concatenate([means, np.repeat(means[-1:], extra, axis=0)])
-            variances = np.concatenate([variances, np.repeat(variances[-1:], extra, axis=0)])
-            ranges[-1], known = (ranges[-1][0], stop), stop
         # Eq. 6's D with T the frames known so far (the utterance's length is not known yet)
         d = trajectory_method.duration_weights(ranges, known, settings.duration_normalization)[offset:]
         lo = begin - offset
-        precisions = d[lo:, None] / variances[lo:]
-        lam = trajectory_method.effective_lambda(settings.smoothness, fps, settings.smoothness_fps)
-        x = trajectory_method.solve(means[lo:], precisions, lam, before)
-        if stop > known or stop <= begin:
+        precisions = d[lo:, None] / targets.variances[lo:]
+        lam = trajectory_method.effective_lambda(settings.smoothness, grid, settings.smoothness_fps)
+        x = trajectory_method.solve(targets.means[lo:], precisions, lam, before)
+        # down-sampling (postprocess.downsample): output frame i is capture frame i * ratio, or
+        # the interpolation of the two around it
+        at = np.arange(first, stop) * ratio
+        below = np.floor(at + 1e-9).astype(np.int64)
+        w = np.where(np.abs(at - np.round(at)) < 1e-9, 0.0, at - below)
+        above = np.minimum(below + (w > 0), known - 1)
+        if below[0] < begin or above[-1] >= known:
             raise AssertionError(f"solve window [{begin}, {known}) does not hold frames [{first}, {stop})")  # a bug
-        self._solved = (stop - 1, x[stop - 1 - begin])
-        return model.markers(x[first - begin : stop - begin])
+        used = np.arange(below[0], above[-1] + 1)
+        capture = model.markers(x[used - begin])
+        w3 = w[:, None, None]
+        markers = capture[below - used[0]] if not w.any() else \
+            (capture[below - used[0]] * (1 - w3) + capture[above - used[0]] * w3).astype(capture.dtype)
+        self._solved = (int(above[-1]), x[above[-1] - begin])
+        return markers

@@ -234,32 +234,17 @@ def _trajectory_model(model, config, **stream):
 
 
 def _whole_solve(model, utt, config, fps):
-    """The whole utterance's Eq. 7 on the stream's grid, as batch solves it, over as many frames as
-    batch synthesis gives (counted on the model's capture grid: the last phone may take one frame
-    more than on this grid): markers (T, M, 3)."""
-    from facesynth.methods import trajectory as method
-
-    t = config.settings("trajectory")
-    targets = method.frame_targets(model, list(utt.phones), list(utt.emotions), utt.starts, utt.ends, fps)
-    n = int((round(utt.ends[-1] * model.fps) - 1) // (model.fps / fps)) + 1
-    extra = n - len(targets.means)
-    means = np.concatenate([targets.means, np.repeat(targets.means[-1:], extra, axis=0)])
-    variances = np.concatenate([targets.variances, np.repeat(targets.variances[-1:], extra, axis=0)])
-    ranges = targets.ranges[:-1] + [(targets.ranges[-1][0], n)]
-    d = method.duration_weights(ranges, n, t.duration_normalization)
-    x = method.solve(means, d[:, None] / variances, method.effective_lambda(t.smoothness, fps, t.smoothness_fps))
-    return model.markers(x)
+    """The whole utterance's trajectory as batch synthesis makes it: markers (T, M, 3) at ``fps``."""
+    return synthesize_motion(model, utt, config.settings("trajectory"), fps)[0].markers
 
 
-def test_trajectory_with_the_whole_lookahead_is_the_whole_utterance_solve(trajectory_model, utt, config):
-    live, frames, _ = _stream(_trajectory_model(trajectory_model, config, lookahead_phones=len(utt),
+@pytest.mark.parametrize("fps", [30, 25, 60])
+def test_trajectory_with_the_whole_lookahead_is_batch_synthesis(trajectory_model, utt, config, fps):
+    live, frames, _ = _stream(_trajectory_model(trajectory_model, config, lookahead_phones=len(utt), fps=fps,
                                                 pause_wait_s=3600.0), utt)
     whole = _whole_solve(trajectory_model, utt, config, live.model.stream.fps)
     assert [f.index for f in frames] == list(range(len(whole)))
     np.testing.assert_allclose(np.stack([f.markers for f in frames]), whole, atol=1e-4)
-    # as many frames as batch synthesis of the same utterance
-    batch, _ = synthesize_motion(trajectory_model, utt, config.settings("trajectory"), live.model.stream.fps)
-    assert len(frames) == len(batch.markers)
 
 
 def test_trajectory_frames_follow_the_solve_given_what_was_sent(trajectory_model, utt, config):
@@ -277,7 +262,7 @@ def test_trajectory_frames_follow_the_solve_given_what_was_sent(trajectory_model
         deviation.append(np.sqrt(((markers - whole) ** 2).sum(-1).mean()) / spread)
         jaw = np.stack([f.arkit for f in frames])[:, model.arkit_names.index("jawOpen")]
         assert jaw.max() > 0.1 and jaw.min() < 0.5 * jaw.max()  # the mouth opens and closes
-    assert 0 < deviation[0] < 0.25 and deviation[1] < 0.05 and deviation[2] <= deviation[1] <= deviation[0], deviation
+    assert 0 < deviation[0] < 0.35 and deviation[1] < 0.05 and deviation[2] <= deviation[1] <= deviation[0], deviation
 
 
 def test_trajectory_pauses_ease_toward_rest_without_waiting(trajectory_model, utt, config):
