@@ -193,7 +193,7 @@ class LiveSynthesizer:
     _open_pause: int | None = None     # the step of a pause whose frames went out before its next phone was decided
     _pause_left: tuple[int, np.ndarray] | None = None  # the open pause's starting frame: (index, (M, 3) markers)
     _silence_growing: bool = False     # the last phone is a pause from :meth:`extend_silence`: its end is not known
-    _solved: tuple[int, np.ndarray] | None = None  # trajectory: the last frame sent from the solve, (index, (K,) weights)
+    _solved: tuple[int, np.ndarray] | None = None  # trajectory: the last capture frame a sent frame used, (index, (K,) weights)
 
     def __post_init__(self):
         self.set_emotion(self.emotion)

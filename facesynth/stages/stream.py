@@ -14,6 +14,7 @@ from dataclasses import replace
 from pathlib import Path
 from typing import BinaryIO, cast
 
+from ..artifacts import artifact_kind
 from ..config import AlignSettings, SolveSettings, StreamSettings, SynthesizeSettings, TrajectorySettings
 from ..errors import InputError
 from ..live.core import LiveModel
@@ -45,6 +46,9 @@ def load_model(source_path: Path, synth: SynthesizeSettings, stream: StreamSetti
         from ..model.trajectory import TrajectoryModel
 
         return LiveModel(TrajectoryModel.read(source_path), synth, stream, solve, trajectory)
+    if artifact_kind(source_path) == "trajectory":
+        raise InputError(f"{source_path}: a trajectory model streams with the trajectory method; add --method "
+                         "trajectory, or give the motion database.")
     return LiveModel(MotionDatabase.read(source_path), synth, stream, solve)
 
 
