@@ -6,7 +6,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from facesynth.errors import InputError
+from facesynth.errors import ArtifactError, InputError
 from facesynth.live.core import LiveModel, LiveSynthesizer
 from facesynth.live.phones import given_phones
 from facesynth.methods.trajectory import synthesize_motion
@@ -289,7 +289,7 @@ def test_the_trajectory_method_needs_a_trajectory_model(db, trajectory_model, tr
     with pytest.raises(InputError, match="build-db"):
         _model(trajectory_model, config, method="dp")
     settings = [config.settings(s) for s in ("synthesize", "stream", "solve")]
-    with pytest.raises(InputError, match="expected 'trajectory'"):
+    with pytest.raises(ArtifactError, match="expected .trajectory."):
         load_model(tiny_db, *settings, method="trajectory", trajectory=config.settings("trajectory"))
     with pytest.raises(InputError, match="add --method trajectory"):
         load_model(trajectory_path, *settings, method="dp")
