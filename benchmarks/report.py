@@ -411,18 +411,21 @@ def run_speed(fs: str, work: Path, paper_folder: Path) -> dict:
 
 
 def time_render(fs: str, demo: Path) -> dict:
-    """Render the demo's animations again and time the whole command: frames per second
-    (wall time, start-up included) and that as a multiple of real time (the video's rate)."""
-    from facesynth.model.meshanim import MeshAnimation
+    """Render the demo's rig curves again (posed through the built-in rig, as ``make demo``
+    renders them) and time the whole command: frames per second (wall time, start-up included)
+    and that as a multiple of real time (the video's rate)."""
+    from facesynth.facerig import load_face_rig
+    from facesynth.model.curves import RigCurves
 
-    anims = sorted(demo.glob("*.anim.h5"))
+    clips = sorted(demo.glob("*.curves.h5"))
     frames, fps = 0, None
-    for a in anims:
-        clip = MeshAnimation.read(a)
-        frames += len(clip.vertices)
-        fps, triangles = clip.fps, len(clip.faces)
-    audio = [x for a in anims for x in ("--audio", str(demo / "corpus" / "audio" / (a.name.split(".")[0] + ".wav")))]
-    seconds, _ = run([fs, "render", *map(str, anims), *audio, "-o", "render_timed.avi", "--overwrite", "-q"], demo)
+    for c in clips:
+        curves = RigCurves.read(c)
+        frames += len(curves.weights)
+        fps = curves.fps
+    triangles = len(load_face_rig().faces)
+    audio = [x for c in clips for x in ("--audio", str(demo / "corpus" / "audio" / (c.name.split(".")[0] + ".wav")))]
+    seconds, _ = run([fs, "render", *map(str, clips), *audio, "-o", "render_timed.avi", "--overwrite", "-q"], demo)
     return {"frames": frames, "video_fps": fps, "triangles": triangles, "wall_s": seconds,
             "frames_per_s": frames / seconds, "times_real_time": frames / seconds / fps}
 
