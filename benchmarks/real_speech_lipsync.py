@@ -30,6 +30,10 @@ Methods, all at 30 frames/s on the take's whole length, no lag (none is searched
   Mouth opening = its inner-lip gap (``evaluate.lip_markers``); channels = the solve's curves.
 - ``facesynth_before`` (with ``--before-work``): the same from the database of an earlier run
   (e.g. the actress before calibration), so that the two are paired on the same phones.
+- ``coarticulation``: the same chain with ``synthesize --method coarticulation`` (the
+  Cohen-Massaro model fitted per phone and emotion on the same database with ``facesynth
+  fit-method``, its defaults; the method ``evaluate`` recommends on the virtual actress). Paired
+  differences are facesynth's against every other method and this one's against the baselines.
 - ``actress_mean``: the built-in actress's mean pose per phone (``facesynth evaluate``'s
   ``baseline``) at phone centres, interpolated, from the same database and phones; mouth
   opening only. It shows how much of facesynth's score is lost in the search itself.
@@ -90,7 +94,7 @@ TABLE = Path(__file__).resolve().parent / "data" / "facegood_arkit.tsv"
 #: The real mouth opening: FACEGOOD's two jaw-opening channels (see the module docstring).
 REAL_OPENING = ("mouth_stretch_c", "mouth_oh_c")
 CHANNELS = ("opening", "jawOpen", "mouthClose", "mouthFunnel", "mouthPucker", "mouthPress")
-METHODS = ("facesynth", "facesynth_before", "actress_mean", "openfacefx", "energy", "phone_mean")
+METHODS = ("facesynth", "facesynth_before", "coarticulation", "actress_mean", "openfacefx", "energy", "phone_mean")
 #: The rig shapes (built-in rig, ICT names) behind each channel of the facial solve.
 RIG_SHAPES = {"jawOpen": ("jawOpen",), "mouthClose": ("mouthClose",), "mouthFunnel": ("mouthFunnel",),
               "mouthPucker": ("mouthPucker",), "mouthPress": ("mouthPress_L", "mouthPress_R")}
@@ -184,10 +188,10 @@ def summarize(r: dict, closures: dict, groups: np.ndarray, resample_count: int, 
         overall, differences = {}, {}
         for channel, per in r.items():
             overall[channel] = {m: interval(wrap(mean_r_statistic(v)), count, idx) for m, v in per.items()}
-            if "facesynth" in per:
-                differences[channel] = {f"facesynth - {m}": paired_difference(wrap(mean_r_statistic(per["facesynth"])),
-                                                                              wrap(mean_r_statistic(v)), count, idx)
-                                        for m, v in per.items() if m != "facesynth"}
+            differences[channel] = {
+                f"{lead} - {m}": paired_difference(wrap(mean_r_statistic(per[lead])), wrap(mean_r_statistic(v)), count, idx)
+                for lead in ("facesynth", "coarticulation") if lead in per
+                for m, v in per.items() if m != lead and not (lead == "coarticulation" and m == "facesynth")}
         out["r" + suffix], out["paired" + suffix] = overall, differences
     out["closures"] = {m: {"recall": interval(ratio_statistic(c[:, 1], c[:, 0]), n, index),
                            "precision": interval(ratio_statistic(c[:, 3], c[:, 2]), n, index),
@@ -307,21 +311,23 @@ def build_database(work: Path, corpus_config: Path | None = None) -> Path:
     return db
 
 
-def facesynth_method(db: Path, phones: Path, folder: Path, n: int, lip_markers) -> dict[str, np.ndarray]:
-    """facesynth's channels (n,) for a take: synthesize, solve onto the built-in rig, read back."""
+def facesynth_method(db: Path, phones: Path, folder: Path, n: int, lip_markers, method: str = "dp") -> dict[str, np.ndarray]:
+    """facesynth's channels (n,) for a take: synthesize with ``method`` from ``db`` (the database,
+    or the method's fitted model), solve onto the built-in rig, read back."""
     from facesynth.evaluation import lip_gaps
     from facesynth.model.curves import RigCurves
     from facesynth.model.motion import Motion
 
-    motion, curves = folder / "motion.h5", folder / "curves.h5"
+    tag = "" if method == "dp" else f".{method}"
+    motion, curves = folder / f"motion{tag}.h5", folder / f"curves{tag}.h5"
     # The cached motion holds only for the phones it was made from.
-    stamp, digest = folder / "phones.sha256", hashlib.sha256(phones.read_bytes()).hexdigest()
+    stamp, digest = folder / f"phones{tag}.sha256", hashlib.sha256(phones.read_bytes()).hexdigest()
     if not stamp.exists() or stamp.read_text() != digest:
         motion.unlink(missing_ok=True)
         curves.unlink(missing_ok=True)
         stamp.write_text(digest)
     if not motion.exists():
-        facesynth_cli("synthesize", str(db), "--phonemes", str(phones), "-o", str(motion))
+        facesynth_cli("synthesize", "--method", method, str(db), "--phonemes", str(phones), "-o", str(motion))
     if not curves.exists():
         facesynth_cli("solve", str(motion), "-o", str(curves))
     m, c = Motion.read(motion), RigCurves.read(curves)
@@ -444,6 +450,9 @@ def main(argv=None) -> dict:
     from facesynth.model.motiondb import MotionDatabase
 
     rig, database = load_face_rig(), MotionDatabase.read(db)
+    coarticulation = args.work / "coarticulation.h5"  # the fitted Cohen-Massaro model, a member users can choose
+    if not coarticulation.exists():
+        facesynth_cli("fit-method", "coarticulation", str(db), "-o", str(coarticulation))
     binding = read_binding(args.work / "corpus" / "markers.csv")
     lip_vertices = np.array([binding[m] for m in lip_markers])
 
@@ -462,6 +471,8 @@ def main(argv=None) -> dict:
         segs, source = phones_from_audio(wav, folder / "phones.TextGrid", align_settings)
         sources.add(source)
         methods = {"facesynth": facesynth_method(db, folder / "phones.TextGrid", folder, n, lip_markers),
+                   "coarticulation": facesynth_method(coarticulation, folder / "phones.TextGrid", folder, n, lip_markers,
+                                                      "coarticulation"),
                    "actress_mean": actress_mean_method(database, segs, n, lip_markers),
                    "openfacefx": openfacefx_method(segs, n, rig, lip_vertices)}
         if args.before_work:
