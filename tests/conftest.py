@@ -229,3 +229,23 @@ def small_db_and_truth(tmp_path_factory, config) -> tuple[Path, Path]:
 
     d = _built_once(tmp_path_factory, "small", build)
     return d / "db.h5", d / "corpus" / "contamination.csv"
+
+
+@pytest.fixture(scope="session")
+def held_out_synthesized(tiny_db, tiny_corpus, held_out_take, config, tmp_path_factory) -> dict[str, Path]:
+    """The held-out sentence synthesized from the tiny database with the default settings and
+    carried on, built once for the tests that only read them: ``motion`` (motion.h5), ``curves``
+    (solved onto the built-in rig), ``anim`` (the tiny corpus's face.obj deformed by the motion),
+    and its ``audio``."""
+    from facesynth.stages import deform, solve, synthesize
+
+    def build(d: Path) -> None:
+        synthesize.run(tiny_db, d / "m.h5", config.settings("synthesize"), config.settings("ingest"),
+                       config.settings("align"), phones_path=tiny_corpus / "labels" / f"{held_out_take}.TextGrid")
+        solve.run(d / "m.h5", d / "c.h5", config.settings("solve"))
+        deform.run(d / "m.h5", tiny_corpus / "face.obj", tiny_corpus / "markers.csv", d / "a.h5",
+                   config.settings("deform"))
+
+    d = _built_once(tmp_path_factory, "held-out-synthesized", build)
+    return {"motion": d / "m.h5", "curves": d / "c.h5", "anim": d / "a.h5",
+            "audio": tiny_corpus / "audio" / f"{held_out_take}.wav"}

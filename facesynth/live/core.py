@@ -59,6 +59,7 @@ from ..errors import InputError
 from ..methods import trajectory as trajectory_method
 from ..model.motiondb import MotionDatabase
 from ..model.trajectory import TrajectoryModel
+from ..motion.postprocess import downsample_sources
 from ..phonemes import PAU
 from ..search.costs import step_costs
 from ..search.dp import dp_numpy
@@ -492,22 +493,18 @@ class LiveSynthesizer:
         offset, known = ranges[0][0], ranges[-1][1]
         # Eq. 6's D with T the frames known so far (the utterance's length is not known yet)
         d = trajectory_method.duration_weights(ranges, known, settings.duration_normalization)[offset:]
-        lo = begin - offset
-        precisions = d[lo:, None] / targets.variances[lo:]
+        skip = begin - offset  # the targets' frames before the window
+        precisions = d[skip:, None] / targets.variances[skip:]
         lam = trajectory_method.effective_lambda(settings.smoothness, grid, settings.smoothness_fps)
-        x = trajectory_method.solve(targets.means[lo:], precisions, lam, before)
-        # down-sampling (postprocess.downsample): output frame i is capture frame i * ratio, or
-        # the interpolation of the two around it
-        at = np.arange(first, stop) * ratio
-        below = np.floor(at + 1e-9).astype(np.int64)
-        w = np.where(np.abs(at - np.round(at)) < 1e-9, 0.0, at - below)
-        above = np.minimum(below + (w > 0), known - 1)
+        x = trajectory_method.solve(targets.means[skip:], precisions, lam, before)
+        # the capture frames batch's down-sampling takes output frames [first, stop) from
+        below, above, w = downsample_sources(np.arange(first, stop), ratio, known)
         if below[0] < begin or above[-1] >= known:
             raise AssertionError(f"solve window [{begin}, {known}) does not hold frames [{first}, {stop})")  # a bug
-        used = np.arange(below[0], above[-1] + 1)
-        capture = model.markers(x[used - begin])
-        w3 = w[:, None, None]
-        markers = capture[below - used[0]] if not w.any() else \
-            (capture[below - used[0]] * (1 - w3) + capture[above - used[0]] * w3).astype(capture.dtype)
-        self._solved = (int(above[-1]), x[above[-1] - begin])
+        last = int(above[-1] if w[-1] > 0 else below[-1])  # the last capture frame a sent frame uses
+        capture = model.markers(x[below[0] - begin : last + 1 - begin])
+        lo, w3 = capture[below - below[0]], w[:, None, None]
+        markers = lo if not w.any() else (lo * (1 - w3) + capture[np.minimum(above, last) - below[0]] * w3
+                                          ).astype(capture.dtype)
+        self._solved = (last, x[last - begin])
         return markers

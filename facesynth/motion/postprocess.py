@@ -237,14 +237,24 @@ def hermite(left: np.ndarray, right: np.ndarray, v_left: np.ndarray, v_right: np
     return h00 * left[None] + h10 * span * v_left[None] + h01 * right[None] + h11 * span * v_right[None]
 
 
+def downsample_sources(indices: np.ndarray, ratio: float, n_in: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Where :func:`downsample` by ``ratio`` (fps_in / fps_out) of ``n_in`` frames takes its output
+    frames ``indices`` from: input frames lo and hi (int64) and the weight of hi (float64; 0 when
+    the ratio is whole, where output frame k is input frame k * ratio)."""
+    x = np.asarray(indices) * ratio
+    if abs(ratio - round(ratio)) < 1e-9:
+        lo = np.asarray(indices, np.int64) * int(round(ratio))
+        return lo, lo, np.zeros(len(lo))
+    lo = np.floor(x).astype(np.int64)
+    return lo, np.minimum(lo + 1, n_in - 1), x - lo
+
+
 def downsample(frames: np.ndarray, fps_in: float, fps_out: float) -> np.ndarray:
     """Frames at fps_out covering the same duration (frame k at time k / fps_out)."""
     ratio = fps_in / fps_out
     n_out = int(np.floor((len(frames) - 1) / ratio)) + 1
     if abs(ratio - round(ratio)) < 1e-9:
         return frames[:: int(round(ratio))][:n_out].copy()
-    x = np.arange(n_out) * ratio
-    lo = np.floor(x).astype(int)
-    hi = np.minimum(lo + 1, len(frames) - 1)
-    w = (x - lo).reshape(-1, *([1] * (frames.ndim - 1)))
+    lo, hi, w = downsample_sources(np.arange(n_out), ratio, len(frames))
+    w = w.reshape(-1, *([1] * (frames.ndim - 1)))
     return (frames[lo] * (1 - w) + frames[hi] * w).astype(frames.dtype)

@@ -14,13 +14,13 @@ from dataclasses import replace
 from pathlib import Path
 from typing import BinaryIO, cast
 
+from .. import methods
 from ..artifacts import artifact_kind
 from ..config import AlignSettings, SolveSettings, StreamSettings, SynthesizeSettings, TrajectorySettings
 from ..errors import InputError
 from ..live.core import LiveModel
 from ..live.livelink import LiveLinkSender
 from ..live.server import StreamServer, run_pipe
-from ..model.motiondb import MotionDatabase
 
 
 def parse_address(text: str, what: str) -> tuple[str, int]:
@@ -42,14 +42,11 @@ def load_model(source_path: Path, synth: SynthesizeSettings, stream: StreamSetti
         if lookahead < 0:
             raise InputError(f"--lookahead {lookahead}: give 0 or more phones.")
         stream = replace(stream, lookahead_phones=lookahead)
-    if stream.method == "trajectory":
-        from ..model.trajectory import TrajectoryModel
-
-        return LiveModel(TrajectoryModel.read(source_path), synth, stream, solve, trajectory)
-    if artifact_kind(source_path) == "trajectory":
+    if stream.method != "trajectory" and artifact_kind(source_path) == "trajectory":
         raise InputError(f"{source_path}: a trajectory model streams with the trajectory method; add --method "
                          "trajectory, or give the motion database.")
-    return LiveModel(MotionDatabase.read(source_path), synth, stream, solve)
+    # each method reads its own source, as `synthesize --method` does
+    return LiveModel(methods.get(stream.method).read(source_path), synth, stream, solve, trajectory)
 
 
 def run_stdin(model: LiveModel, align: AlignSettings, source: BinaryIO, write: Callable[[str], None], *,

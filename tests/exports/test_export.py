@@ -16,7 +16,6 @@ import pytest
 from click.testing import CliRunner
 
 from facesynth.cli import main
-from facesynth.config import Config
 from facesynth.corpus.generate import CAPTURE_FPS
 from facesynth.corpus.truth import read_truth
 from facesynth.exports import livelink
@@ -27,7 +26,6 @@ from facesynth.model.curves import RigCurves
 from facesynth.model.meshanim import MeshAnimation
 from facesynth.model.motion import Motion
 from facesynth.rendering.parts import gaze_from_rig_weights
-from facesynth.stages import deform, synthesize
 
 ROOT = Path(__file__).resolve().parents[2]
 VALIDATOR = Path(os.environ.get("FACESYNTH_GLTF_VALIDATOR", ROOT / ".cache" / "npm" / "node_modules" / "gltf-validator"))
@@ -46,16 +44,12 @@ def write_truth_curves(truth_csv: Path, out: Path) -> RigCurves:
 
 
 @pytest.fixture(scope="module")
-def made(tiny_db, tiny_corpus, held_out_take, tmp_path_factory):
+def made(held_out_synthesized, tiny_corpus, held_out_take, tmp_path_factory):
     """A synthesized motion, its mesh animation and the held-out take's true curves."""
-    config = Config.load()
     d = tmp_path_factory.mktemp("export")
-    synthesize.run(tiny_db, d / "m.h5", config.settings("synthesize"), config.settings("ingest"),
-                   config.settings("align"), phones_path=tiny_corpus / "labels" / f"{held_out_take}.TextGrid")
-    deform.run(d / "m.h5", tiny_corpus / "face.obj", tiny_corpus / "markers.csv", d / "a.h5", config.settings("deform"))
     write_truth_curves(tiny_corpus / "groundtruth" / f"{held_out_take}_truth.csv", d / "c.h5")
-    return {"motion": d / "m.h5", "anim": d / "a.h5", "curves": d / "c.h5",
-            "audio": tiny_corpus / "audio" / f"{held_out_take}.wav", "mesh": tiny_corpus / "face.obj"}
+    return {"motion": held_out_synthesized["motion"], "anim": held_out_synthesized["anim"], "curves": d / "c.h5",
+            "audio": held_out_synthesized["audio"], "mesh": tiny_corpus / "face.obj"}
 
 
 def fs(*args):

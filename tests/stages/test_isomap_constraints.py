@@ -5,7 +5,6 @@ suggest`` lists as time-correct and context-correct, the synthesized path's node
 and a click on a node writes the constraint line that makes ``synthesize`` use that node."""
 
 import contextlib
-import csv
 import itertools
 import json
 import re
@@ -31,29 +30,15 @@ CHROMIUM = shutil.which("chromium")
 needs_chromium = pytest.mark.skipif(CHROMIUM is None, reason="headless Chromium (Debian package 'chromium') is not installed")
 
 
-def _spliced_sentence(tiny_corpus, folder):
-    """A new sentence made of a stretch of a training sentence between silences: its inner
-    phones keep their training triphones, so context-correct nodes exist for them."""
-    row = next(r for r in csv.DictReader(open(tiny_corpus / "manifest.csv")) if r["split"] == "train")
-    segs = [s for s in read_phone_segments(tiny_corpus / row["alignment"]) if s.label not in ("pau", "sil", "")]
-    stretch = segs[3:9]
-    t0 = stretch[0].start - 0.2
-    out = [Segment(0.0, 0.2, "pau")] + [Segment(s.start - t0, s.end - t0, s.label) for s in stretch]
-    out.append(Segment(out[-1].end, out[-1].end + 0.2, "pau"))
-    path = folder / "spliced.TextGrid"
-    write_textgrid(path, {"phones": out})
-    return path
-
-
 def _cli(*args):
     return CliRunner().invoke(main, [str(a) for a in args])
 
 
 @pytest.fixture(scope="module")
-def made(tiny_db, tiny_corpus, tmp_path_factory):
+def made(tiny_db, spliced_sentence, tmp_path_factory):
     """The isomap, a spliced sentence, its synthesized motion and its constraint page."""
     d = tmp_path_factory.mktemp("isoconstraints")
-    tg = _spliced_sentence(tiny_corpus, d)
+    tg, _ = spliced_sentence
     for args in (["isomap", "build", tiny_db, "-o", d / "iso.h5"],
                  ["synthesize", tiny_db, "--phonemes", tg, "-o", d / "motion.h5"],
                  ["isomap", "page", d / "iso.h5", tiny_db, "--phonemes", tg, "--motion", d / "motion.h5", "-o", d / "page.html"]):

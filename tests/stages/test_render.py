@@ -13,17 +13,12 @@ from facesynth.model.meshanim import MeshAnimation
 from facesynth.rendering import parts, video
 from facesynth.rendering.camera import Camera
 from facesynth.rendering.raster import NumpyRasterizer, OpenCLRasterizer
-from facesynth.stages import deform, render, synthesize
+from facesynth.stages import render
 
 
 @pytest.fixture(scope="module")
-def anim(tiny_db, tiny_corpus, held_out_take, tmp_path_factory):
-    config = Config.load()
-    d = tmp_path_factory.mktemp("render")
-    synthesize.run(tiny_db, d / "m.h5", config.settings("synthesize"), config.settings("ingest"),
-                   config.settings("align"), phones_path=tiny_corpus / "labels" / f"{held_out_take}.TextGrid")
-    deform.run(d / "m.h5", tiny_corpus / "face.obj", tiny_corpus / "markers.csv", d / "a.h5", config.settings("deform"))
-    return d / "a.h5", tiny_corpus / "audio" / f"{held_out_take}.wav"
+def anim(held_out_synthesized):
+    return held_out_synthesized["anim"], held_out_synthesized["audio"]
 
 
 def _scene_frame(clip_rest, faces, vertices, width, height, samples=2, yaw=25.0, pitch=6.0, gaze=None):

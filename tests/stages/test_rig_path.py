@@ -19,22 +19,15 @@ from facesynth.model.motion import Motion
 from facesynth.rendering import video
 from facesynth.rendering.parts import gaze_from_rig_weights
 from facesynth.retarget.rig import builtin_rig, pose_rig
-from facesynth.stages import deform, openfacefx, render, rig_mesh, solve, synthesize
+from facesynth.stages import openfacefx, render, rig_mesh
 
 needs_openfacefx = pytest.mark.skipif(openfacefx_missing() is not None, reason=str(openfacefx_missing()))
 
 
 @pytest.fixture(scope="module")
-def made(tiny_db, tiny_corpus, held_out_take, tmp_path_factory):
+def made(held_out_synthesized):
     """A held-out sentence synthesized, solved onto the built-in rig and deformed (the old way)."""
-    config = Config.load()
-    d = tmp_path_factory.mktemp("rigpath")
-    synthesize.run(tiny_db, d / "m.h5", config.settings("synthesize"), config.settings("ingest"),
-                   config.settings("align"), phones_path=tiny_corpus / "labels" / f"{held_out_take}.TextGrid")
-    solve.run(d / "m.h5", d / "c.h5", config.settings("solve"))
-    deform.run(d / "m.h5", tiny_corpus / "face.obj", tiny_corpus / "markers.csv", d / "a.h5", config.settings("deform"))
-    return {"motion": d / "m.h5", "curves": d / "c.h5", "anim": d / "a.h5",
-            "audio": tiny_corpus / "audio" / f"{held_out_take}.wav"}
+    return dict(held_out_synthesized)
 
 
 def _settings(*overrides):

@@ -4,7 +4,6 @@ from click.testing import CliRunner
 
 from facesynth.cli import main
 from facesynth.errors import InputError
-from facesynth.formats.labels import Segment, read_phone_segments, write_textgrid
 from facesynth.model.motiondb import MotionDatabase
 from facesynth.search.inputs import read_utterance
 from facesynth.stages import suggest, synthesize
@@ -45,24 +44,8 @@ def test_suggest_in_a_pause_is_refused(tiny_db, tiny_corpus, held_out_take, conf
         suggest.suggest(tiny_db, tg, 0.01, config.settings("synthesize"), config.settings("ingest"))
 
 
-def _spliced_sentence(tiny_corpus, tmp_path):
-    """A new sentence made of a stretch of a training sentence between silences: its inner
-    phones keep their training triphones, so context-correct nodes must exist for them."""
-    import csv
-
-    row = next(r for r in csv.DictReader(open(tiny_corpus / "manifest.csv")) if r["split"] == "train")
-    segs = [s for s in read_phone_segments(tiny_corpus / row["alignment"]) if s.label not in ("pau", "sil", "")]
-    stretch = segs[3:9]
-    t0 = stretch[0].start - 0.2
-    out = [Segment(0.0, 0.2, "pau")] + [Segment(s.start - t0, s.end - t0, s.label) for s in stretch]
-    out.append(Segment(out[-1].end, out[-1].end + 0.2, "pau"))
-    path = tmp_path / "spliced.TextGrid"
-    write_textgrid(path, {"phones": out})
-    return path, out
-
-
-def test_a_shared_triphone_gives_context_correct_suggestions(tiny_db, tiny_corpus, config, tmp_path):
-    tg, segs = _spliced_sentence(tiny_corpus, tmp_path)
+def test_a_shared_triphone_gives_context_correct_suggestions(tiny_db, spliced_sentence, config):
+    tg, segs = spliced_sentence
     db = MotionDatabase.read(tiny_db)
     c = 3  # pau, s3, s4, [s5], ...: an inner phone, its neighbours as in the training sentence
     at = 0.5 * (segs[c].start + segs[c].end)
