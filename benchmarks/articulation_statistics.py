@@ -27,7 +27,7 @@ divided by its own source's 5th..95th percentile range (over all the source's fr
 velocities are in ranges per second, accelerations in ranges per second squared, and per-class
 openings in fractions of the range, whether the source is in millimetres or weights. The raw
 ranges are reported in the source's unit. The audio envelope is the log-RMS envelope of
-``real_speech_lipsync.energy_envelope`` (0.1 s moving average). Speed, events and the span are
+``facesynth.motion.loudness.envelope`` (0.1 s moving average). Speed, events and the span are
 taken over speech (pauses of 0.25 s or more left out) where the phones are known.
 
 ``--calibrate`` also searches the grid :data:`GRID` of the actress's ``[sample_corpus]``
@@ -56,6 +56,7 @@ from facesynth.corpus.truth import read_truth
 from facesynth.facerig import load_face_rig
 from facesynth.formats.audio import read_audio
 from facesynth.formats.labels import read_phone_segments
+from facesynth.motion.loudness import envelope
 
 HERE = Path(__file__).resolve().parent
 _SPEC = importlib.util.spec_from_file_location("real_speech_lipsync", HERE / "real_speech_lipsync.py")
@@ -105,7 +106,7 @@ def actress_source(corpus: Path, lip_markers: list[str]) -> dict:
         samples, rate = read_audio(corpus / row["audio"])
         openings.append(curves[:, 0])
         jaws.append(curves[:, 1])
-        envelopes.append(lipsync.energy_envelope(samples, rate, len(curves), ARTICULATION_FPS, ENVELOPE_SMOOTH_S))
+        envelopes.append(envelope(samples, rate, len(curves), ARTICULATION_FPS, ENVELOPE_SMOOTH_S))
         phones.append(_phones(read_phone_segments(corpus / row["alignment"])))
     return {"openings": openings, "jaw": jaws, "envelopes": envelopes, "phones": phones,
             "unit": "mm (inner-lip gap)", "takes": len(openings)}
@@ -129,7 +130,7 @@ def facegood_source(folder: Path, takes: tuple[str, ...], phones_work: Path | No
             segs, _ = lipsync.phones_from_audio(folder / "wav" / f"{take}.wav", work / f"{take}.TextGrid", settings)
         openings.append(real["opening"])
         jaws.append(real["jawOpen"])
-        envelopes.append(lipsync.energy_envelope(samples, rate, n, ARTICULATION_FPS, ENVELOPE_SMOOTH_S))
+        envelopes.append(envelope(samples, rate, n, ARTICULATION_FPS, ENVELOPE_SMOOTH_S))
         phones.append(_phones(segs))
     return {"openings": openings, "jaw": jaws, "envelopes": envelopes, "phones": phones,
             "unit": "weight (mouth_stretch_c + mouth_oh_c)", "takes": len(takes), "take_names": list(takes)}
@@ -203,7 +204,7 @@ def quick_actress(settings, lip_markers: list[str], takes: int = 24, seed: int =
         utt = perf.utterance
         source["openings"].append(curves[:, 0])
         source["jaw"].append(curves[:, 1])
-        source["envelopes"].append(lipsync.energy_envelope(audio, 16000, len(curves), ARTICULATION_FPS,
+        source["envelopes"].append(envelope(audio, 16000, len(curves), ARTICULATION_FPS,
                                                            ENVELOPE_SMOOTH_S))
         source["phones"].append(list(zip(utt.starts.tolist(), utt.ends.tolist(), utt.phones)))
     return summarise(source)

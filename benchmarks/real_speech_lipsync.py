@@ -87,6 +87,7 @@ from facesynth.bootstrap import interval, paired_difference, resamples
 from facesynth.config import Config
 from facesynth.formats.audio import read_audio, resample
 from facesynth.formats.labels import Segment, read_phone_segments, write_textgrid
+from facesynth.motion.loudness import envelope
 from facesynth.phonemes import PAU, to_festival
 
 FPS = 30.0
@@ -94,7 +95,8 @@ TABLE = Path(__file__).resolve().parent / "data" / "facegood_arkit.tsv"
 #: The real mouth opening: FACEGOOD's two jaw-opening channels (see the module docstring).
 REAL_OPENING = ("mouth_stretch_c", "mouth_oh_c")
 CHANNELS = ("opening", "jawOpen", "mouthClose", "mouthFunnel", "mouthPucker", "mouthPress")
-METHODS = ("facesynth", "facesynth_before", "coarticulation", "actress_mean", "openfacefx", "energy", "phone_mean")
+METHODS = ("facesynth", "facesynth_phones", "facesynth_before", "coarticulation", "coarticulation_phones",
+           "actress_mean", "openfacefx", "energy", "phone_mean")
 #: The rig shapes (built-in rig, ICT names) behind each channel of the facial solve.
 RIG_SHAPES = {"jawOpen": ("jawOpen",), "mouthClose": ("mouthClose",), "mouthFunnel": ("mouthFunnel",),
               "mouthPucker": ("mouthPucker",), "mouthPress": ("mouthPress_L", "mouthPress_R")}
@@ -225,20 +227,6 @@ def real_curves(values: np.ndarray, names: list[str], table: dict[str, list[str]
     return out
 
 
-def energy_envelope(samples: np.ndarray, rate: int, n: int, fps: float, smooth_s: float) -> np.ndarray:
-    """(n,) log-RMS of the audio around each frame time f / fps (windows of 2 / fps s), smoothed by
-    a moving average of ``smooth_s``; silence floored at 1e-4 of the loudest frame."""
-    x = np.asarray(samples, np.float64)
-    half = int(round(rate / fps))
-    centres = (np.arange(n) * rate / fps).round().astype(int)
-    c2 = np.concatenate([[0.0], np.cumsum(x * x)])
-    a, b = np.clip(centres - half, 0, len(x)), np.clip(centres + half, 0, len(x))
-    rms = np.sqrt((c2[b] - c2[a]) / np.maximum(b - a, 1))
-    env = np.log(np.maximum(rms, 1e-4 * max(rms.max(), 1e-12)))
-    k = max(1, int(round(smooth_s * fps)))
-    return np.convolve(np.pad(env, (k // 2, k - 1 - k // 2), mode="edge"), np.ones(k) / k, mode="valid")
-
-
 # ---------------------------------------------------------------- phones from audio
 
 def phone_loop(samples: np.ndarray, rate: int, settings) -> list[Segment]:
@@ -311,23 +299,28 @@ def build_database(work: Path, corpus_config: Path | None = None) -> Path:
     return db
 
 
-def facesynth_method(db: Path, phones: Path, folder: Path, n: int, lip_markers, method: str = "dp") -> dict[str, np.ndarray]:
+def facesynth_method(db: Path, phones: Path, folder: Path, n: int, lip_markers, method: str = "dp",
+                     audio: Path | None = None) -> dict[str, np.ndarray]:
     """facesynth's channels (n,) for a take: synthesize with ``method`` from ``db`` (the database,
-    or the method's fitted model), solve onto the built-in rig, read back."""
+    or the method's fitted model) on the recognised ``phones``, with the take's ``audio`` (its
+    loudness moves the mouth too, ``synthesize.loudness_weight``) or without it (phones alone),
+    solve onto the built-in rig, read back."""
     from facesynth.evaluation import lip_gaps
     from facesynth.model.curves import RigCurves
     from facesynth.model.motion import Motion
 
-    tag = "" if method == "dp" else f".{method}"
+    tag = ("" if method == "dp" else f".{method}") + ("" if audio is not None else ".phones")
     motion, curves = folder / f"motion{tag}.h5", folder / f"curves{tag}.h5"
-    # The cached motion holds only for the phones it was made from.
-    stamp, digest = folder / f"phones{tag}.sha256", hashlib.sha256(phones.read_bytes()).hexdigest()
+    # The cached motion holds only for the phones and audio it was made from.
+    given = ["--phonemes", str(phones)] + (["--audio", str(audio)] if audio is not None else [])
+    digest = hashlib.sha256(phones.read_bytes() + (audio.read_bytes() if audio is not None else b"")).hexdigest()
+    stamp = folder / f"inputs{tag}.sha256"
     if not stamp.exists() or stamp.read_text() != digest:
         motion.unlink(missing_ok=True)
         curves.unlink(missing_ok=True)
         stamp.write_text(digest)
     if not motion.exists():
-        facesynth_cli("synthesize", "--method", method, str(db), "--phonemes", str(phones), "-o", str(motion))
+        facesynth_cli("synthesize", "--method", method, str(db), *given, "-o", str(motion))
     if not curves.exists():
         facesynth_cli("solve", str(motion), "-o", str(curves))
     m, c = Motion.read(motion), RigCurves.read(curves)
@@ -470,17 +463,21 @@ def main(argv=None) -> dict:
         real = {k: v[:n] for k, v in real.items()}
         segs, source = phones_from_audio(wav, folder / "phones.TextGrid", align_settings)
         sources.add(source)
-        methods = {"facesynth": facesynth_method(db, folder / "phones.TextGrid", folder, n, lip_markers),
-                   "coarticulation": facesynth_method(coarticulation, folder / "phones.TextGrid", folder, n, lip_markers,
-                                                      "coarticulation"),
+        phones = folder / "phones.TextGrid"
+        methods = {"facesynth": facesynth_method(db, phones, folder, n, lip_markers, audio=wav),
+                   "facesynth_phones": facesynth_method(db, phones, folder, n, lip_markers),
+                   "coarticulation": facesynth_method(coarticulation, phones, folder, n, lip_markers, "coarticulation",
+                                                      audio=wav),
+                   "coarticulation_phones": facesynth_method(coarticulation, phones, folder, n, lip_markers,
+                                                             "coarticulation"),
                    "actress_mean": actress_mean_method(database, segs, n, lip_markers),
                    "openfacefx": openfacefx_method(segs, n, rig, lip_vertices)}
         if args.before_work:
             before = args.before_work / "takes" / take
             before.mkdir(parents=True, exist_ok=True)
-            methods["facesynth_before"] = facesynth_method(build_database(args.before_work), folder / "phones.TextGrid",
-                                                           before, n, lip_markers)
-        env = energy_envelope(samples, rate, n, FPS, args.energy_smooth_s)
+            methods["facesynth_before"] = facesynth_method(build_database(args.before_work), phones, before, n,
+                                                           lip_markers, audio=wav)
+        env = envelope(samples, rate, n, FPS, args.energy_smooth_s)
         methods["energy"] = {"opening": env, "jawOpen": env}
         takes.append({"take": take, "n": n, "segs": segs, "real": real, "methods": methods,
                       "spans": windows(n, FPS, args.window_s)})

@@ -437,7 +437,8 @@ def build_db(ctx: Context, pca_path: Path, output: Path):
                    "fitted on it (facesynth fit-method).")
 @click.option("--phonemes", type=EXISTING, default=None, help="The utterance's phone timing (TextGrid or .lab).")
 @click.option("--audio", type=EXISTING, default=None,
-              help="Speech to align on the fly (to --text; without it, recognised: align.recognition).")
+              help="The speech: aligned on the fly to --text (without it, recognised: align.recognition), or "
+                   "with --phonemes its timing; the mouth opens with its loudness too (synthesize.loudness_weight).")
 @click.option("--text", default=None, help="What --audio says.")
 @click.option("--emotions", type=EXISTING, default=None, help="Emotion spans: 'start_s end_s emotion' lines, or a TextGrid tier 'emotions'.")
 @click.option("--constraints", type=EXISTING, default=None, help="Motion-node constraints: 'INDEX NODE' or 'TIMEs NODE' lines (dp only).")
@@ -453,7 +454,8 @@ def synthesize(ctx: Context, db: Path, method, phonemes, audio, text, emotions, 
     --method picks the member of the method family: dp (the default; --search greedy or
     synthesize.search = greedy runs the greedy search instead), greedy, mean, and the fitted
     trajectory (Huang et al. Eq. 6-7) and coarticulation (Cohen-Massaro) models, whose model file
-    (facesynth fit-method) is then the first argument.
+    (facesynth fit-method) is then the first argument. With --audio, the mouth opens with the
+    voice's loudness as well as with the phones (synthesize.loudness_weight; 0: phones alone).
 
     \b
     Example:

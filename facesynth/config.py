@@ -202,6 +202,13 @@ class SynthesizeSettings:
                                       "neighbours; 3600: never", unit="s", gt=0, le=3600)
     pause_rest_ramp_s: float = setting("not in the paper: time such a pause takes to ease from the last phone to "
                                        "rest, and from rest into the next phone", unit="s", gt=0, le=2)
+    loudness_weight: float = setting("not in the paper (JALI, Edwards et al. 2016: the jaw follows the voice's "
+                                     "loudness): with the audio given, the share of the mouth opening taken from "
+                                     "its loudness; 0: the phones alone", ge=0, le=1)
+    loudness_smoothing_s: float = setting("not in the paper: moving average of the audio's loudness envelope",
+                                          unit="s", gt=0, le=1)
+    loudness_lip_markers: tuple[str, ...] = setting("not in the paper: upper and lower inner-lip markers whose "
+                                                    "gap the loudness moves", min_items=2, max_items=2)
 
 
 @dataclass(frozen=True)

@@ -92,6 +92,7 @@ from .methods.coarticulation import DominanceModel, fit_dominance, training_sent
 from .methods.mean import mean_pose_markers
 from .model.corpus import Corpus
 from .model.motiondb import MotionDatabase
+from .motion.loudness import lip_gaps
 from .motion.postprocess import frame_ranges
 from .motion.rigid import choose_rigid, fill_gaps, head_pose
 from .opencl import use_opencl
@@ -236,12 +237,6 @@ def openfacefx_baseline(db: MotionDatabase, utt: Utterance, rig, vertices: np.nd
     arkit = openfacefx_arkit(utt.phones, utt.starts, utt.ends, total, db.fps, rig.arkit_names)
     r, t = to_reference
     return (rig_markers(rig, arkit, vertices) @ r + t).astype(np.float32)
-
-
-def lip_gaps(markers: np.ndarray, names: list[str], lip_markers: tuple[str, ...]) -> np.ndarray:
-    """Per frame, the distance (mm) between the two ``lip_markers`` of marker frames (T, M, 3) mm."""
-    i, j = (names.index(n) for n in lip_markers)
-    return np.linalg.norm(markers[:, i] - markers[:, j], axis=1)
 
 
 def bilabial_frames(utt: Utterance, fps: float, n: int) -> list[tuple[int, int]]:

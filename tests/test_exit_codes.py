@@ -86,7 +86,7 @@ def test_synthesize_without_phones_is_usage(tiny_db, tmp_path):
 
 def test_synthesize_phones_twice_is_usage(tiny_db, utterance, anim, tmp_path):
     _is_error(_run("synthesize", tiny_db, "--phonemes", utterance[0], "--audio", anim[1], "--text", "a b",
-                   "-o", tmp_path / "m.h5"), 2, "not both")
+                   "-o", tmp_path / "m.h5"), 2, "leave out --text")
     assert not (tmp_path / "m.h5").exists()
 
 

@@ -119,16 +119,6 @@ def test_real_curves_follow_facegood_table():
     assert real["mouthPress"] == pytest.approx([0.0, 0.3])
 
 
-def test_energy_envelope_follows_loudness():
-    rate, fps = 16000, 30.0
-    t = np.arange(rate * 2) / rate
-    loud = (t >= 1.0).astype(float)
-    samples = np.sin(2 * np.pi * 200 * t) * (0.01 + 0.5 * loud)
-    env = bench.energy_envelope(samples, rate, 60, fps, 0.1)
-    assert env.shape == (60,)
-    assert env[40:].mean() - env[:20].mean() == pytest.approx(np.log(0.51 / 0.01), rel=0.05)
-
-
 def test_phone_means_fit_and_interpolate():
     segs = [Segment(0.0, 1.0, "aa"), Segment(1.0, 2.0, "m")]
     n = 60

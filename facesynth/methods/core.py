@@ -30,7 +30,7 @@ import numpy as np
 
 from ..alignment import Alignment
 from ..config import AlignSettings, IngestSettings
-from ..errors import UsageError
+from ..errors import InputError, UsageError
 from ..limits import require_memory
 from ..search.inputs import Utterance, apply_emotions, emotion_name, read_constraints, utterance
 from ..search.inputs import read_utterance as read_phone_file
@@ -46,11 +46,13 @@ __all__ = ["UtteranceInput", "emotion_name", "read_utterance", "constraints_for"
 class UtteranceInput:
     """An utterance read for synthesis: ``utterance``; ``alignment``, the
     :class:`~facesynth.alignment.Alignment` when it was aligned or recognised from audio (its phones
-    and words, ``method``, ``recognized``), else None; ``warnings``, sentences for the user."""
+    and words, ``method``, ``recognized``), else None; ``warnings``, sentences for the user;
+    ``audio``, the speech ((n,) float32 mono, rate Hz) when it was given, else None."""
 
     utterance: Utterance
     alignment: Alignment | None = None
     warnings: list[str] = field(default_factory=list)
+    audio: tuple[np.ndarray, int] | None = None
 
 
 def read_utterance(ingest: IngestSettings, *, phones_path: Path | None = None, audio: Path | None = None,
@@ -59,23 +61,35 @@ def read_utterance(ingest: IngestSettings, *, phones_path: Path | None = None, a
                    where: str | None = None) -> UtteranceInput:
     """The utterance: phones from ``phones_path``, or ``audio`` aligned to ``text`` (recognised when
     ``text`` is None) with ``align``; ``samples`` ((n,) float32, rate Hz) when the audio is already
-    read. Emotions from the span file ``emotions_path``, or one ``emotion`` name for every phone, or
-    neutral. ``where`` names the audio in messages (default its path)."""
-    if phones_path is not None and (audio is not None or text is not None):
-        raise UsageError("give the utterance's phones with --phonemes or with --audio (and --text), not both.")
+    read. With both ``phones_path`` and ``audio``, the phones are the file's and the audio is only
+    read (for its loudness, :mod:`facesynth.motion.loudness`). Emotions from the span file
+    ``emotions_path``, or one ``emotion`` name for every phone, or neutral. ``where`` names the
+    audio in messages (default its path)."""
+    if phones_path is not None and text is not None:
+        raise UsageError("--text is aligned to --audio; with the phones given by --phonemes, leave out --text.")
     if emotions_path is not None and emotion is not None:
         raise UsageError("give one emotion for the whole utterance or an emotions file, not both.")
     aligned = None
     warnings: list[str] = []
+    data: np.ndarray | None = None
+    rate = 0
+    if audio is not None:
+        from ..formats.audio import read_audio
+
+        data, rate = samples if samples is not None else read_audio(audio)
     if phones_path is not None:
         utt = read_phone_file(phones_path, ingest.phone_tiers)
+        if data is not None:
+            end, audio_s = float(utt.ends[-1]), len(data) / rate
+            if end > audio_s + ingest.max_audio_mismatch_s:
+                raise InputError(f"the alignment {phones_path} ends at {end:.2f} s, after the audio {audio} "
+                                 f"({audio_s:.2f} s); give the alignment of this audio.")
     elif audio is not None:
-        from ..formats.audio import read_audio
         from ..recognition import align_or_recognize
 
         if align is None:
             raise TypeError("read_utterance: aligning audio needs the [align] settings")
-        data, rate = samples if samples is not None else read_audio(audio)
+        assert data is not None
         aligned = align_or_recognize(data, rate, text, settings=align, where=where or str(audio))
         if aligned.recognized:
             log.info("%s: recognised: %s", where or audio, aligned.recognized)
@@ -93,7 +107,7 @@ def read_utterance(ingest: IngestSettings, *, phones_path: Path | None = None, a
     elif emotion is not None:
         name = emotion_name(emotion, ingest.emotions, ingest.emotion_aliases, where or "the emotion")
         utt.emotions = [name] * len(utt)
-    return UtteranceInput(utt, aligned, warnings)
+    return UtteranceInput(utt, aligned, warnings, None if data is None else (data, rate))
 
 
 def constraints_for(method: Method, source, path: Path | None, utt: Utterance) -> dict[int, int]:
@@ -106,12 +120,26 @@ def constraints_for(method: Method, source, path: Path | None, utt: Utterance) -
 
 
 def synthesize(method: Method, source, utt: Utterance, settings: MethodSettings, constraints: dict[int, int] | None = None,
-               *, prepared=None, source_where: str = "the source", where: str = "the utterance") -> Synthesis:
+               *, prepared=None, source_where: str = "the source", where: str = "the utterance",
+               audio: tuple[np.ndarray, int] | None = None) -> Synthesis:
     """``method``'s motion of ``utt`` from ``source``, after the memory check (its message names
-    ``source_where``; the method's own messages name the utterance, ``where``)."""
+    ``source_where``; the method's own messages name the utterance, ``where``). With the
+    utterance's ``audio`` ((n,) mono samples, rate Hz) and ``synthesize.loudness_weight`` above 0,
+    the mouth opening then follows the audio's loudness too (:mod:`facesynth.motion.loudness`); a
+    motion without the lip markers is left as it is, and the summary's ``warnings`` say so."""
     method.refuse_constraints(constraints)
     check_memory(method, source, utt, settings, source_where)
-    return method.synthesize(source, utt, settings, constraints, prepared=prepared, where=where)
+    result = method.synthesize(source, utt, settings, constraints, prepared=prepared, where=where)
+    if audio is not None and settings.synthesize.loudness_weight > 0:
+        from ..motion import loudness
+
+        result.motion, warning = loudness.follow(result.motion, *audio, utt.starts, utt.ends, list(utt.phones),
+                                                 settings.synthesize)
+        result.summary["loudness_weight"] = settings.synthesize.loudness_weight if warning is None else 0.0
+        if warning is not None:
+            log.warning("%s: %s", where, warning)
+            result.summary.setdefault("warnings", []).append(warning)
+    return result
 
 
 def check_memory(method: Method, source, utt: Utterance, settings: MethodSettings, where: str) -> None:

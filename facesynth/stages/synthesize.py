@@ -90,7 +90,7 @@ def run(source_path: Path, out: Path, settings: SynthesizeSettings | MethodSetti
     utt = read.utterance
     constraints = core.constraints_for(member, source, constraints_path, utt)
     result = core.synthesize(member, source, utt, settings, constraints, source_where=str(source_path),
-                             where=str(phones_path or audio))
+                             where=str(phones_path or audio), audio=read.audio)
     t0 = time.perf_counter()
     input_records = records()
     hash_wait_s = time.perf_counter() - t0
@@ -103,6 +103,6 @@ def run(source_path: Path, out: Path, settings: SynthesizeSettings | MethodSetti
     write_s = time.perf_counter() - t0
     summary = result.summary
     return SynthesizeResult(member.name, summary["phones"], summary["frames"], dict(summary.get("unseen", {})),
-                            list(read.warnings), load_s, hash_wait_s, write_s, summary.get("cost"), summary.get("joins"),
+                            list(read.warnings) + list(summary.get("warnings", [])), load_s, hash_wait_s, write_s, summary.get("cost"), summary.get("joins"),
                             summary.get("device"), summary.get("energy"), summary.get("lambda"),
                             dict(summary.get("fallbacks", {})), {k: v for k, v in summary.items() if k.endswith("_s")})
