@@ -86,8 +86,8 @@ $(OUT)/db_clean.h5: $(OUT)/db.h5 $(CONFIG)
 $(OUT)/isomap.h5: $(OUT)/db_clean.h5 $(CONFIG)
 	$(FS) isomap $< -o $@ --images $(OUT)/isomaps --overwrite
 
-# Two held-out (test) sentences of the small corpus, each asked for in another emotion, solved
-# onto the built-in rig and rendered beside openfacefx's lip sync of the same phones on the same
+# Two held-out (test) sentences of the small corpus, each asked for in another emotion (the
+# mouth opening with the phones and the voice's loudness), solved onto the built-in rig and rendered beside openfacefx's lip sync of the same phones on the same
 # rig and timing (left "facesynth", right "openfacefx").
 DEMO_TAKES  := happy_s016 sad_s017
 DEMO_LABELS := render.labels=["facesynth","openfacefx"]
@@ -97,7 +97,8 @@ $(OUT)/%.emotions.txt:
 	echo "0 1000 $(firstword $(subst _, ,$*))" > $@
 
 $(OUT)/%.motion.h5: $(OUT)/db_clean.h5 $(OUT)/%.emotions.txt $(CONFIG)
-	$(FS) synthesize $< --phonemes $(OUT)/corpus/labels/$*.TextGrid --emotions $(OUT)/$*.emotions.txt -o $@ --overwrite
+	$(FS) synthesize $< --phonemes $(OUT)/corpus/labels/$*.TextGrid --audio $(OUT)/corpus/audio/$*.wav \
+	    --emotions $(OUT)/$*.emotions.txt -o $@ --overwrite
 
 # The facial solve: the rig's blendshape weights per frame (rig curves); render poses the rig with them.
 $(OUT)/%.curves.h5: $(OUT)/%.motion.h5 $(CONFIG)
