@@ -8,6 +8,7 @@ import json
 import subprocess
 from pathlib import Path
 
+import numpy as np
 import pytest
 from click.testing import CliRunner
 
@@ -74,6 +75,14 @@ def test_lines_fail_alone_with_their_reason_and_a_rerun_skips_what_is_done(tiny_
                  "empty.motion.h5", "empty.TextGrid", "empty.json"):
         assert (out / name).exists(), name
     assert not (out / "given.TextGrid").exists() and (out / "partial.motion.h5").exists()
+    # a line is synthesize with its audio: the given phones, and the mouth opening with the voice's loudness
+    spans = _write(tmp_path / "sad.txt", [("0 1000 sad",)])
+    r = CliRunner().invoke(main, ["synthesize", str(tiny_db), "--phonemes", str(tiny_corpus / b["alignment"]),
+                                  "--audio", audio(b), "--emotions", str(spans), "-o", str(tmp_path / "given.h5"), "-q"])
+    assert r.exit_code == 0, r.output
+    from facesynth.model.motion import Motion
+
+    np.testing.assert_array_equal(Motion.read(out / "given.motion.h5").markers, Motion.read(tmp_path / "given.h5").markers)
     summary = list(csv.DictReader(open(out / "summary.csv")))
     assert [r["id"] for r in summary] == ["aligned", "given", "no_audio", "empty", "moody", "aligned", "partial",
                                           "too_short"]
