@@ -22,7 +22,8 @@ class Motion:
     marker_names : M names; reference : (M, 3) float32 mm rest pose.
     head_rotation : (T, 3, 3) float32, head_translation : (T, 3) float32 mm, at ``fps``: the head
         pose relative to the source take's mean (x -> head_rotation @ x + head_translation).
-    coefficients : (F, K) float32 PCA coefficients at ``capture_fps`` (synthesis only).
+    coefficients : (F, K) float32 PCA coefficients at ``capture_fps`` (synthesis only; as the method
+        made them: the voice's loudness moves the markers only).
     path, provenance : the search and where each frame came from (synthesis only).
     source : "synthesis", "capture", "restyle" or "trajectory"; take : the captured take (capture only).
     keyshape_weights : (F, Kt) float32 key-shape weights at ``capture_fps``, keyshape_names : Kt
