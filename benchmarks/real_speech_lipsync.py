@@ -25,15 +25,19 @@ mouth_oh_c``: the two channels that open the jaw in FACEGOOD's rig (unrounded an
 Methods, all at 30 frames/s on the take's whole length, no lag (none is searched):
 
 - ``facesynth``: the phones recognised from the audio (see :func:`phones_from_audio`),
-  ``facesynth synthesize`` on a database built once from the built-in actress (``small``
-  preset, seed 0, cached in ``--work``), then ``facesynth solve`` onto the built-in rig.
-  Mouth opening = its inner-lip gap (``evaluate.lip_markers``); channels = the solve's curves.
+  ``facesynth synthesize --phonemes PHONES --audio TAKE.wav`` on a database built once from the
+  built-in actress (``small`` preset, seed 0, cached in ``--work``), then ``facesynth solve``
+  onto the built-in rig: facesynth as it ships, the mouth opening with the voice's loudness too
+  (``synthesize.loudness_weight``). Mouth opening = its inner-lip gap (``evaluate.lip_markers``);
+  channels = the solve's curves.
+- ``facesynth_phones``: the same from the phones alone (no ``--audio``): what the loudness adds.
 - ``facesynth_before`` (with ``--before-work``): the same from the database of an earlier run
   (e.g. the actress before calibration), so that the two are paired on the same phones.
 - ``coarticulation``: the same chain with ``synthesize --method coarticulation`` (the
   Cohen-Massaro model fitted per phone and emotion on the same database with ``facesynth
-  fit-method``, its defaults; the method ``evaluate`` recommends on the virtual actress). Paired
-  differences are facesynth's against every other method and this one's against the baselines.
+  fit-method``, its defaults; the method ``evaluate`` recommends on the virtual actress), with
+  the audio; ``coarticulation_phones`` the same from the phones alone. Paired differences are
+  facesynth's against every other method and this one's against the baselines.
 - ``actress_mean``: the built-in actress's mean pose per phone (``facesynth evaluate``'s
   ``baseline``) at phone centres, interpolated, from the same database and phones; mouth
   opening only. It shows how much of facesynth's score is lost in the search itself.
@@ -62,8 +66,9 @@ the fraction of method closures with a real one that near.
     python benchmarks/real_speech_lipsync.py --data FACEGOOD_DIR --work WORK [--takes 1114_3_15,1114_3_16] [--out table.md] \
         [--corpus-config benchmarks/data/actress_uncalibrated.toml]
 
-The actress is calibrated on takes 1114_2_01..03 (``benchmarks/articulation_statistics.py``);
-her figures on real speech are the ones on the other takes, 1114_2_04, 1114_2_05, 1114_3_15 and
+The actress is calibrated on takes 1114_2_01..03 (``benchmarks/articulation_statistics.py``),
+and ``synthesize.loudness_weight`` was chosen on the same three; her figures on real speech are
+the ones on the other takes, 1114_2_04, 1114_2_05, 1114_3_15 and
 1114_3_16. ``--corpus-config`` builds her corpus with other settings (a ``--config`` file for
 ``facesynth sample-corpus``), e.g. the ones before calibration.
 """
