@@ -4,7 +4,8 @@ the truth is known. Prints JSON.
 Her held-out sentences (``--split``, default ``test``) are synthesized twice by the DP from her
 database, from their phones alone and with their audio too (the default weight), and each
 synthesized inner-lip gap (``synthesize.loudness_lip_markers``, capture rate) is compared with
-her clean truth's: Pearson r and RMS (mm) per sentence, the mean over sentences with a
+her clean truth's (Pearson r and RMS, mm), and every marker with the clean truth's (RMS over
+markers and frames, mm: what moving the jaw does to the rest of the face), per sentence, the mean over sentences with a
 bootstrap 95% interval, and the paired difference (with audio minus phones alone) on the same
 resamples. Her audio is made by the sample corpus from her own articulation, so this says what
 the loudness does on a voice that is not a real speaker's; ``real_speech_lipsync.py`` is the
@@ -56,7 +57,7 @@ def main(argv=None) -> dict:
     member = methods.get("dp")
     source, prepared = member.read(args.work / "db.h5"), None
     prepared = member.prepare(source, settings)
-    rows = {"phones": {"r": [], "rms_mm": []}, "audio": {"r": [], "rms_mm": []}}
+    rows = {name: {"r": [], "rms_mm": [], "face_rms_mm": []} for name in ("phones", "audio")}
     for s in sentences:
         audio = read_audio(args.work / "corpus" / "audio" / f"{s.take}.wav")
         true_gap = lip_gaps(s.clean, db.marker_names, lips).astype(np.float64)
@@ -66,10 +67,12 @@ def main(argv=None) -> dict:
             n = min(len(gap), len(true_gap))
             rows[name]["r"].append(float(np.corrcoef(gap[:n], true_gap[:n])[0, 1]))
             rows[name]["rms_mm"].append(float(np.sqrt(np.mean((gap[:n] - true_gap[:n]) ** 2))))
+            error = motion.markers_capture[:n].astype(np.float64) - s.clean[:n]
+            rows[name]["face_rms_mm"].append(float(np.sqrt(np.nanmean(np.sum(error ** 2, axis=-1)))))
     index = resamples(len(sentences), args.resamples, args.seed)
     out: dict = {"sentences": len(sentences), "split": args.split, "lip_markers": list(lips),
                  "loudness_weight": settings.synthesize.loudness_weight}
-    for figure in ("r", "rms_mm"):
+    for figure in ("r", "rms_mm", "face_rms_mm"):
         a, b = np.array(rows["audio"][figure]), np.array(rows["phones"][figure])
         out[figure] = {"phones_alone": interval(mean_of(b), len(b), index),
                        "with_audio": interval(mean_of(a), len(a), index),
