@@ -305,19 +305,24 @@ def build_database(work: Path, corpus_config: Path | None = None) -> Path:
 
 
 def facesynth_method(db: Path, phones: Path, folder: Path, n: int, lip_markers, method: str = "dp",
-                     audio: Path | None = None) -> dict[str, np.ndarray]:
+                     audio: Path | None = None, loudness_weight: float | None = None,
+                     solve: bool = True) -> dict[str, np.ndarray]:
     """facesynth's channels (n,) for a take: synthesize with ``method`` from ``db`` (the database,
     or the method's fitted model) on the recognised ``phones``, with the take's ``audio`` (its
-    loudness moves the mouth too, ``synthesize.loudness_weight``) or without it (phones alone),
-    solve onto the built-in rig, read back."""
+    loudness moves the mouth too: ``synthesize.loudness_weight``, or ``loudness_weight`` where
+    given) or without it (phones alone), solve onto the built-in rig (unless ``solve`` is False:
+    the mouth opening alone), read back."""
     from facesynth.evaluation import lip_gaps
     from facesynth.model.curves import RigCurves
     from facesynth.model.motion import Motion
 
-    tag = ("" if method == "dp" else f".{method}") + ("" if audio is not None else ".phones")
+    tag = (("" if method == "dp" else f".{method}") + ("" if audio is not None else ".phones")
+           + ("" if loudness_weight is None else f".w{loudness_weight:g}"))
     motion, curves = folder / f"motion{tag}.h5", folder / f"curves{tag}.h5"
-    # The cached motion holds only for the phones and audio it was made from.
     given = ["--phonemes", str(phones)] + (["--audio", str(audio)] if audio is not None else [])
+    if loudness_weight is not None:
+        given += ["--set", f"synthesize.loudness_weight={loudness_weight:g}"]
+    # The cached motion holds only for the phones and audio it was made from.
     digest = hashlib.sha256(phones.read_bytes() + (audio.read_bytes() if audio is not None else b"")).hexdigest()
     stamp = folder / f"inputs{tag}.sha256"
     if not stamp.exists() or stamp.read_text() != digest:
@@ -326,15 +331,17 @@ def facesynth_method(db: Path, phones: Path, folder: Path, n: int, lip_markers, 
         stamp.write_text(digest)
     if not motion.exists():
         facesynth_cli("synthesize", "--method", method, str(db), *given, "-o", str(motion))
-    if not curves.exists():
-        facesynth_cli("solve", str(motion), "-o", str(curves))
-    m, c = Motion.read(motion), RigCurves.read(curves)
-    if m.fps != FPS or c.fps != FPS:
+    m = Motion.read(motion)
+    if m.fps != FPS:
         raise SystemExit(f"{motion}: output at {m.fps} frames/s; the benchmark needs synthesize.output_fps = {FPS:g}")
     out = {"opening": lip_gaps(m.markers, list(m.marker_names), lip_markers)}
-    names = list(c.shape_names)
-    for channel, shapes in RIG_SHAPES.items():
-        out[channel] = c.weights[:, [names.index(s) for s in shapes]].mean(1)
+    if solve:
+        if not curves.exists():
+            facesynth_cli("solve", str(motion), "-o", str(curves))
+        c = RigCurves.read(curves)
+        names = list(c.shape_names)
+        for channel, shapes in RIG_SHAPES.items():
+            out[channel] = c.weights[:, [names.index(s) for s in shapes]].mean(1)
     return {k: fit_length(v, n) for k, v in out.items()}
 
 
@@ -416,6 +423,9 @@ def main(argv=None) -> dict:
                          "again on these phones as method facesynth_before, paired with facesynth")
     ap.add_argument("--corpus-config", type=Path, default=None,
                     help="a settings file for the actress's corpus (e.g. benchmarks/data/actress_uncalibrated.toml)")
+    ap.add_argument("--loudness-weights", default=None,
+                    help="comma-separated values of synthesize.loudness_weight: the DP's mouth-opening r with each "
+                         "(loudness_sweep in the JSON), e.g. on the takes the weight is chosen on")
     ap.add_argument("--window-s", type=float, default=10.0)
     ap.add_argument("--energy-smooth-s", type=float, default=0.1)
     ap.add_argument("--closure-depth", type=float, default=0.25)
@@ -455,6 +465,8 @@ def main(argv=None) -> dict:
     lip_vertices = np.array([binding[m] for m in lip_markers])
 
     takes, sources = [], set()
+    sweep: dict[float, list[np.ndarray]] = {float(w): [] for w in args.loudness_weights.split(",")} \
+        if args.loudness_weights else {}
     for take in take_names:
         folder = args.work / "takes" / take
         folder.mkdir(parents=True, exist_ok=True)
@@ -482,6 +494,10 @@ def main(argv=None) -> dict:
             before.mkdir(parents=True, exist_ok=True)
             methods["facesynth_before"] = facesynth_method(build_database(args.before_work), phones, before, n,
                                                            lip_markers, audio=wav)
+        for weight in sweep:
+            sweep[weight].append(window_r(facesynth_method(db, phones, folder, n, lip_markers, audio=wav,
+                                                           loudness_weight=weight, solve=False)["opening"],
+                                          real["opening"], windows(n, FPS, args.window_s)))
         env = envelope(samples, rate, n, FPS, args.energy_smooth_s)
         methods["energy"] = {"opening": env, "jawOpen": env}
         takes.append({"take": take, "n": n, "segs": segs, "real": real, "methods": methods,
@@ -524,6 +540,10 @@ def main(argv=None) -> dict:
     groups = np.concatenate([np.full(len(t["spans"]), i) for i, t in enumerate(takes)])
     summary = summarize(complete, closures, groups, args.resamples, args.seed)
     seconds = sum(t["n"] for t in takes) / FPS
+    if sweep:
+        index = resamples(len(groups), args.resamples, args.seed)
+        summary["loudness_sweep"] = {f"{w:g}": interval(mean_r_statistic(np.concatenate(v)), len(groups), index)
+                                     for w, v in sweep.items()}
     result = {
         "data": {"source": "FACEGOOD Audio2Face training takes (MIT)", "takes": take_names,
                  "seconds": round(seconds, 1), "real_opening": " + ".join(REAL_OPENING)},
@@ -568,6 +588,9 @@ def markdown(result: dict) -> str:
               "| method | recall | precision | closures |", "|---|---|---|---|"]
     for m, c in result["closures"].items():
         lines.append(f"| {m} | {_fmt(c['recall'])} | {_fmt(c['precision'])} | {c['closures']} |")
+    if result.get("loudness_sweep"):
+        lines += ["", "| synthesize.loudness_weight | facesynth's mouth-opening r [95%] |", "|---|---|"]
+        lines += [f"| {w} | {_fmt(cell)} |" for w, cell in result["loudness_sweep"].items()]
     lines += ["", "| take | seconds | " + " | ".join(f"{m} opening r" for m in methods) + " |",
               "|---|---|" + "---|" * len(methods)]
     for take, p in result["per_take"].items():

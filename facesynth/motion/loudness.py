@@ -25,7 +25,8 @@ both:
 
 Choices: the quantile mapping instead of a fitted linear map (no unit, no gain, no fitting on the
 speaker); the weight 0.6 chosen on three real takes (FACEGOOD 1114_2_01..03, the actress's
-calibration takes), none of those scored in docs/real-speech.md's fair test.
+calibration takes; ``benchmarks/real_speech_lipsync.py --loudness-weights``), none of those
+scored in docs/real-speech.md's fair test.
 """
 
 from __future__ import annotations
