@@ -34,8 +34,6 @@ from __future__ import annotations
 from dataclasses import replace
 
 import numpy as np
-from scipy.ndimage import maximum_filter1d, uniform_filter1d
-from scipy.stats import rankdata
 
 from ..config import SynthesizeSettings
 from .postprocess import downsample, frame_ranges
@@ -55,8 +53,7 @@ def envelope(samples: np.ndarray, rate: int, n: int, fps: float, smooth_s: float
     a, b = np.clip(centres - half, 0, len(x)), np.clip(centres + half, 0, len(x))
     rms = np.sqrt((c2[b] - c2[a]) / np.maximum(b - a, 1))
     env = np.log(np.maximum(rms, 1e-4 * max(float(rms.max(initial=0.0)), 1e-12)))
-    k = max(1, int(round(smooth_s * fps)))
-    return np.convolve(np.pad(env, (k // 2, k - 1 - k // 2), mode="edge"), np.ones(k) / k, mode="valid")
+    return moving_average(env, max(1, int(round(smooth_s * fps))))
 
 
 def lip_gaps(markers: np.ndarray, names: list[str], lip_markers: tuple[str, ...]) -> np.ndarray:
@@ -65,11 +62,31 @@ def lip_gaps(markers: np.ndarray, names: list[str], lip_markers: tuple[str, ...]
     return np.linalg.norm(markers[:, i] - markers[:, j], axis=-1)
 
 
+def mean_ranks(values: np.ndarray) -> np.ndarray:
+    """(T,) float64 ranks 1..T of ``values`` (T,), ties sharing their mean rank (as
+    ``scipy.stats.rankdata``, without importing scipy.stats, which takes half a second)."""
+    values = np.asarray(values)
+    order = np.argsort(values, kind="stable")
+    ordered = values[order]
+    first = np.concatenate([[True], ordered[1:] != ordered[:-1]]) if len(values) else np.zeros(0, bool)
+    starts = np.flatnonzero(first)
+    counts = np.diff(np.append(starts, len(values)))
+    ranks = np.empty(len(values))
+    ranks[order] = np.repeat(starts + (counts + 1) / 2.0, counts)
+    return ranks
+
+
 def quantile_map(loudness: np.ndarray, opening: np.ndarray) -> np.ndarray:
     """(T,) the opening at the quantile of each frame's ``loudness`` rank in the distribution of
     ``opening`` (T,) (ties share their mean rank)."""
-    q = (rankdata(loudness) - 0.5) / len(loudness)
+    q = (mean_ranks(loudness) - 0.5) / len(loudness)
     return np.quantile(np.asarray(opening, np.float64), q)
+
+
+def moving_average(x: np.ndarray, k: int) -> np.ndarray:
+    """(n,) centred moving average of ``x`` (n,) over ``k`` samples (the window [i - k // 2,
+    i + (k - 1) // 2]), the ends repeated beyond the edges."""
+    return np.convolve(np.pad(x, (k // 2, k - 1 - k // 2), mode="edge"), np.ones(k) / k, mode="valid")
 
 
 def weights(n: int, pinned: list[tuple[int, int]], weight: float, ease: int) -> np.ndarray:
@@ -79,7 +96,8 @@ def weights(n: int, pinned: list[tuple[int, int]], weight: float, ease: int) -> 
     for a, b in pinned:
         mask[a:b] = 1.0
     if ease > 1 and mask.any():
-        mask = uniform_filter1d(maximum_filter1d(mask, 2 * (ease // 2) + 1), ease, mode="nearest")
+        reach = ease // 2  # dilate by the moving average's reach, so that the pinned frames stay at 0
+        mask = moving_average((np.convolve(mask, np.ones(2 * reach + 1), mode="same") > 0).astype(float), ease)
     return weight * (1.0 - np.clip(mask, 0.0, 1.0))
 
 

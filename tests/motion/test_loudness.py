@@ -142,3 +142,23 @@ def test_synthesize_refuses_phones_that_outlast_the_audio(tiny_db, tiny_corpus, 
     assert r.exit_code == 1
     assert "ends at" in r.output and "after the audio" in r.output and "Traceback" not in r.output
     assert not (tmp_path / "m.h5").exists()
+
+
+def test_ranks_and_filters_are_scipys():
+    from scipy.ndimage import maximum_filter1d, uniform_filter1d
+    from scipy.stats import rankdata
+
+    rng = np.random.default_rng(1)
+    values = np.round(rng.normal(size=300), 1)  # many ties
+    np.testing.assert_array_equal(loudness.mean_ranks(values), rankdata(values))
+    assert loudness.mean_ranks(np.zeros(0)).shape == (0,)
+    x = rng.normal(size=50)
+    for k in (1, 2, 3, 4, 7):
+        np.testing.assert_allclose(loudness.moving_average(x, k), uniform_filter1d(x, k, mode="nearest"), atol=1e-12)
+    pinned = [(5, 9), (30, 31)]
+    mask = np.zeros(60)
+    for a, b in pinned:
+        mask[a:b] = 1
+    for ease in (2, 3, 6):
+        expect = 0.6 * (1 - uniform_filter1d(maximum_filter1d(mask, 2 * (ease // 2) + 1), ease, mode="nearest"))
+        np.testing.assert_allclose(loudness.weights(60, pinned, 0.6, ease), expect, atol=1e-12)
