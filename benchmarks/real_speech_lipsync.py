@@ -89,7 +89,7 @@ import numpy as np
 
 from facesynth.baselines import openfacefx_arkit, openfacefx_missing, rig_markers
 from facesynth.bootstrap import interval, paired_difference, resamples
-from facesynth.config import Config
+from facesynth.config import Config, settings_json
 from facesynth.formats.audio import read_audio, resample
 from facesynth.formats.labels import Segment, read_phone_segments, write_textgrid
 from facesynth.motion.loudness import envelope
@@ -322,8 +322,10 @@ def facesynth_method(db: Path, phones: Path, folder: Path, n: int, lip_markers, 
     given = ["--phonemes", str(phones)] + (["--audio", str(audio)] if audio is not None else [])
     if loudness_weight is not None:
         given += ["--set", f"synthesize.loudness_weight={loudness_weight:g}"]
-    # The cached motion holds only for the phones and audio it was made from.
-    digest = hashlib.sha256(phones.read_bytes() + (audio.read_bytes() if audio is not None else b"")).hexdigest()
+    # The cached motion holds only for the phones, audio, options and [synthesize] settings it was made from.
+    made_from = [phones.read_bytes(), audio.read_bytes() if audio is not None else b"", " ".join(given).encode(),
+                 settings_json(Config.load().settings("synthesize")).encode()]
+    digest = hashlib.sha256(b"\0".join(made_from)).hexdigest()
     stamp = folder / f"inputs{tag}.sha256"
     if not stamp.exists() or stamp.read_text() != digest:
         motion.unlink(missing_ok=True)

@@ -193,7 +193,8 @@ class SynthesizeSettings:
     high_phones: tuple[str, ...] = setting("Table IV", choices=_SPOKEN_PHONES)
     low_phones: tuple[str, ...] = setting("Table IV", choices=_SPOKEN_PHONES)
     pinned_phones: tuple[str, ...] = setting("not in the paper: phones the join blend leaves unchanged against "
-                                             "an unpinned neighbour (lip closures stay closed)", choices=_SPOKEN_PHONES)
+                                             "an unpinned neighbour, and whose lip gap the voice's loudness leaves "
+                                             "as the method made it (lip closures stay closed)", choices=_SPOKEN_PHONES)
     output_fps: float = setting("paper VII-B (30 frames/s)", unit="frames/s", gt=0, le=1000)
     silence_interpolation: str = setting("paper VII-B (linear); hermite: velocities matched on both sides",
                                          choices=("linear", "cubic", "cosine", "hermite"))
@@ -205,8 +206,8 @@ class SynthesizeSettings:
     loudness_weight: float = setting("not in the paper (JALI, Edwards et al. 2016: the jaw follows the voice's "
                                      "loudness): with the audio given, the share of the mouth opening taken from "
                                      "its loudness; 0: the phones alone", ge=0, le=1)
-    loudness_smoothing_s: float = setting("not in the paper: moving average of the audio's loudness envelope",
-                                          unit="s", gt=0, le=1)
+    loudness_smoothing_s: float = setting("not in the paper: moving average of the audio's loudness envelope, "
+                                          "and the ease of its weight around pinned_phones", unit="s", gt=0, le=1)
     loudness_lip_markers: tuple[str, ...] = setting("not in the paper: upper and lower inner-lip markers whose "
                                                     "gap the loudness moves", min_items=2, max_items=2)
 

@@ -366,7 +366,7 @@ def _do_line(line: Line, job: Job, emotion: str, key: dict, outputs: dict[str, P
                                 ("constraints", line.constraints)) if p is not None]
     motion_path = outputs.get("motion") or job.out_dir / f"{line.id}.motion.h5.part-{os.getpid()}"
     keep_motion = "motion" in outputs
-    motion.write(motion_path, config=settings_json(member.recorded_settings(job.settings)), records=records,
+    motion.write(motion_path, config=core.recorded_config(member, job.settings, True), records=records,
                  overwrite=True)
     if keep_motion:
         result.outputs.append(motion_path.name)

@@ -22,6 +22,7 @@ available (:func:`facesynth.limits.require_memory`) before doing it.
 
 from __future__ import annotations
 
+import json
 import logging
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -29,7 +30,7 @@ from pathlib import Path
 import numpy as np
 
 from ..alignment import Alignment
-from ..config import AlignSettings, IngestSettings
+from ..config import AlignSettings, IngestSettings, settings_json
 from ..errors import InputError, UsageError
 from ..limits import require_memory
 from ..search.inputs import Utterance, apply_emotions, emotion_name, read_constraints, utterance
@@ -38,8 +39,8 @@ from . import Method, MethodSettings, Synthesis
 
 log = logging.getLogger(__name__)
 
-__all__ = ["UtteranceInput", "emotion_name", "read_utterance", "constraints_for", "synthesize", "check_memory",
-           "frame_motion"]
+__all__ = ["UtteranceInput", "emotion_name", "read_utterance", "constraints_for", "synthesize", "recorded_config",
+           "check_memory", "frame_motion"]
 
 
 @dataclass
@@ -61,8 +62,9 @@ def read_utterance(ingest: IngestSettings, *, phones_path: Path | None = None, a
                    where: str | None = None) -> UtteranceInput:
     """The utterance: phones from ``phones_path``, or ``audio`` aligned to ``text`` (recognised when
     ``text`` is None) with ``align``; ``samples`` ((n,) float32, rate Hz) when the audio is already
-    read. With both ``phones_path`` and ``audio``, the phones are the file's and the audio is only
-    read (for its loudness, :mod:`facesynth.motion.loudness`). Emotions from the span file
+    read. With both ``phones_path`` and ``audio``, the phones are the file's (refused when they end
+    more than ``ingest.max_audio_mismatch_s`` after the audio) and the audio is read for its
+    loudness (:mod:`facesynth.motion.loudness`). Emotions from the span file
     ``emotions_path``, or one ``emotion`` name for every phone, or neutral. ``where`` names the
     audio in messages (default its path)."""
     if phones_path is not None and text is not None:
@@ -82,8 +84,9 @@ def read_utterance(ingest: IngestSettings, *, phones_path: Path | None = None, a
         if data is not None:
             end, audio_s = float(utt.ends[-1]), len(data) / rate
             if end > audio_s + ingest.max_audio_mismatch_s:
-                raise InputError(f"the alignment {phones_path} ends at {end:.2f} s, after the audio {audio} "
-                                 f"({audio_s:.2f} s); give the alignment of this audio.")
+                raise InputError(f"the phone timing {phones_path} ends at {end:.2f} s, after the audio {audio} "
+                                 f"({audio_s:.2f} s, ingest.max_audio_mismatch_s = {ingest.max_audio_mismatch_s:g} s "
+                                 "allowed); give the phone timing of this audio.")
     elif audio is not None:
         from ..recognition import align_or_recognize
 
@@ -140,6 +143,20 @@ def synthesize(method: Method, source, utt: Utterance, settings: MethodSettings,
             log.warning("%s: %s", where, warning)
             result.summary.setdefault("warnings", []).append(warning)
     return result
+
+
+def recorded_config(method: Method, settings: MethodSettings, with_audio: bool) -> str:
+    """The ``config`` a motion made by ``method`` records (JSON): its settings section, and, with
+    the audio given to a method whose section is not ``[synthesize]`` (``trajectory``), the
+    settings of the loudness step that moved its mouth as ``synthesize.<name>`` keys."""
+    section = method.recorded_settings(settings)
+    config = json.loads(settings_json(section))
+    if with_audio and section is not settings.synthesize:
+        s = settings.synthesize
+        for name in ("loudness_weight", "loudness_smoothing_s", "loudness_lip_markers", "pinned_phones"):
+            value = getattr(s, name)
+            config[f"synthesize.{name}"] = list(value) if isinstance(value, tuple) else value
+    return json.dumps(config, sort_keys=True)
 
 
 def check_memory(method: Method, source, utt: Utterance, settings: MethodSettings, where: str) -> None:

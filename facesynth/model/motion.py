@@ -27,7 +27,8 @@ class Motion:
     path, provenance : the search and where each frame came from (synthesis only).
     source : "synthesis", "capture", "restyle" or "trajectory"; take : the captured take (capture only).
     keyshape_weights : (F, Kt) float32 key-shape weights at ``capture_fps``, keyshape_names : Kt
-        names (trajectory synthesis only: the path of Eq. 7 the markers were back-projected from).
+        names (trajectory synthesis only: the path of Eq. 7 the markers were back-projected from,
+        before the voice's loudness moved them).
     """
 
     markers: np.ndarray

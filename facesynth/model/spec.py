@@ -401,7 +401,7 @@ MOTION = Kind("motion", SCHEMAS["motion"], (
     Dataset("markers_capture", "float32", ("F", "M", 3), "the motion at the capture rate, before down-sampling", "mm",
             (MM, _fps("capture rate, frames/s")), finite="synthesis"),
     Dataset("coefficients", "float32", ("F", "K"), "the concatenated, smoothed PCA frames (as the method made them: the voice's loudness, "
-            "`synthesize.loudness_weight`, moves the markers only)", "mm",
+            "`synthesize.loudness_weight`, moves the markers only; so for `keyshape_weights`)", "mm",
             (_fps("capture rate, frames/s"),), required="synthesis"),
     Dataset("keyshape_weights", "float32", ("F", "Kt"), "key-shape weights of the trajectory (Huang et al. Eq. 7), "
             "interpolated to the capture rate", "weight", (_units("weight"), _fps("capture rate, frames/s")), ge=0,

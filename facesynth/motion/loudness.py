@@ -13,15 +13,23 @@ both:
 2. **Loudness.** The audio's log-RMS around each frame (:func:`envelope`), smoothed over
    ``synthesize.loudness_smoothing_s``.
 3. **Target.** The loudness mapped onto the distribution of ``o`` in this utterance by rank
-   (quantile mapping: the loudest frame gets the widest opening the method made, the quietest its
-   narrowest, whatever the microphone's gain), blended with ``o``: ``(1 - w) o + w q``, ``w`` =
-   ``synthesize.loudness_weight``. The range of openings is the method's own; only when the mouth
-   opens wide changes. Within the phones of ``synthesize.pinned_phones`` (/p b m/) ``w`` falls to 0
-   (eased over the smoothing window), so a bilabial still closes the lips.
-4. **Motion.** Every marker moves along the direction in which this utterance's frames move as the
-   mouth opens (the least-squares slope of the markers on ``o``: jaw, lips and chin together), by
-   the amount that brings the gap to the target (:func:`move_to_gaps`). The frames at the capture
-   rate change; the output frames are down-sampled from them again.
+   (quantile mapping: louder frames get wider openings of those the method made, quieter ones
+   narrower, whatever the microphone's gain), blended with ``o``: ``(1 - w) o + w q``, ``w`` =
+   ``synthesize.loudness_weight``. The targets stay within the method's own range of openings;
+   only when the mouth opens wide changes. Within the phones of ``synthesize.pinned_phones``
+   (/p b m/, each at least one frame) ``w`` falls to 0, eased over the smoothing window, so a
+   bilabial still closes the lips.
+4. **Motion.** Each marker moves along the direction in which it moves as the mouth opens in this
+   utterance (its least-squares slope on ``o``, scaled by the share of its motion that ``o``
+   explains, so that the jaw, lips and chin move and markers the opening does not drive, such as
+   the brows, nearly stay), by the amount that brings the gap to the target (:func:`move_to_gaps`;
+   where the target cannot be reached along that direction, as far toward it as the direction
+   allows). The frames at the capture rate change; the output frames are down-sampled from them
+   again.
+
+Audio whose loudness hardly varies (the 5th..95th percentile spread of the log-RMS envelope below
+:data:`MIN_SPREAD`: silence, a placeholder file, a tone) says nothing about the mouth; the step is
+then skipped with a warning instead of flattening the opening toward its median.
 
 Choices: the quantile mapping instead of a fitted linear map (no unit, no gain, no fitting on the
 speaker); the weight 0.6 chosen on three real takes (FACEGOOD 1114_2_01..03, the actress's
@@ -38,8 +46,9 @@ import numpy as np
 from ..config import SynthesizeSettings
 from .postprocess import downsample, frame_ranges
 
-#: Iterations of :func:`move_to_gaps` (each one a Newton step of every frame's gap along the direction).
-GAP_ITERATIONS = 3
+#: The least 5th..95th percentile spread (nats of log-RMS; 1 is a factor e in loudness) of an
+#: audio's envelope for the loudness to move the mouth; speech spans several.
+MIN_SPREAD = 1.0
 
 
 def envelope(samples: np.ndarray, rate: int, n: int, fps: float, smooth_s: float) -> np.ndarray:
@@ -91,40 +100,52 @@ def moving_average(x: np.ndarray, k: int) -> np.ndarray:
 
 def weights(n: int, pinned: list[tuple[int, int]], weight: float, ease: int) -> np.ndarray:
     """(n,) the loudness's share of the opening per frame: ``weight``, 0 within the frame ranges
-    ``pinned`` ([a, b) each), eased between over ``ease`` frames outside them."""
+    ``pinned`` ([a, b) each, at least frame a), eased between over ``ease`` frames outside them."""
     mask = np.zeros(n)
     for a, b in pinned:
-        mask[a:b] = 1.0
+        mask[a:max(b, a + 1)] = 1.0
     if ease > 1 and mask.any():
         reach = ease // 2  # dilate by the moving average's reach, so that the pinned frames stay at 0
-        mask = moving_average((np.convolve(mask, np.ones(2 * reach + 1), mode="same") > 0).astype(float), ease)
+        dilated = np.convolve(mask, np.ones(2 * reach + 1), mode="full")[reach:reach + n] > 0
+        mask = moving_average(dilated.astype(float), ease)
     return weight * (1.0 - np.clip(mask, 0.0, 1.0))
 
 
 def opening_direction(markers: np.ndarray, opening: np.ndarray) -> np.ndarray:
-    """(M, 3) the least-squares slope of the marker frames (T, M, 3) mm on ``opening`` (T,) mm:
-    how every marker moves per mm of lip gap in these frames; zeros when the opening never changes."""
+    """(M, 3) how every marker moves per mm of lip gap in the marker frames (T, M, 3) mm: its
+    least-squares slope on ``opening`` (T,) mm, scaled by the share of the marker's variance that
+    the opening explains (R², 0..1: a marker the opening does not drive nearly stays); zeros when
+    the opening never changes."""
     o = np.asarray(opening, np.float64) - np.mean(opening)
     var = float(o @ o)
     if var <= 1e-12 * max(len(o), 1):
         return np.zeros(markers.shape[1:])
     x = np.asarray(markers, np.float64)
-    return np.tensordot(o, x - x.mean(0), axes=(0, 0)) / var
+    x = x - x.mean(0)
+    slope = np.tensordot(o, x, axes=(0, 0)) / var
+    explained = np.sum(slope * slope, axis=-1) * var / np.maximum(np.sum(x * x, axis=(0, 2)), 1e-12)
+    return slope * np.clip(explained, 0.0, 1.0)[:, None]
 
 
 def move_to_gaps(markers: np.ndarray, direction: np.ndarray, lips: tuple[int, int], target: np.ndarray) -> np.ndarray:
-    """Marker frames (T, M, 3) mm moved along ``direction`` (M, 3) so that the distance between
-    markers ``lips`` (indices) is ``target`` (T,) mm: a few Newton steps of each frame's step
-    length along the direction (frames where the gap does not change along it stay)."""
+    """Marker frames (T, M, 3) mm moved along ``direction`` (M, 3) by the step s (per frame) that
+    makes the distance between markers ``lips`` (indices) ``target`` (T,) mm: the root of
+    |v + s du|² = target² nearest 0 (v the lip vector, du the lips' relative direction). Where no
+    step reaches the target (the part of the gap off that line is wider: lips apart front to
+    back, as in /f v/), the step that brings the gap closest to it; where the gap does not change
+    along the direction, none."""
     x = np.asarray(markers, np.float64)
     du = direction[lips[0]] - direction[lips[1]]
-    step = np.zeros(len(x))
-    for _ in range(GAP_ITERATIONS):
-        v = x[:, lips[0]] - x[:, lips[1]] + step[:, None] * du
-        gap = np.linalg.norm(v, axis=-1)
-        slope = (v @ du) / np.maximum(gap, 1e-9)
-        ok = np.abs(slope) > 1e-6
-        step[ok] += (target[ok] - gap[ok]) / slope[ok]
+    a = float(du @ du)
+    if a <= 1e-18:
+        return np.asarray(markers).copy()
+    v = x[:, lips[0]] - x[:, lips[1]]
+    b = v @ du
+    c = np.sum(v * v, axis=-1) - np.asarray(target, np.float64) ** 2
+    disc = b * b - a * c
+    root = np.sqrt(np.maximum(disc, 0.0))
+    near = np.where(np.abs(-b + root) <= np.abs(-b - root), -b + root, -b - root) / a
+    step = np.where(disc >= 0, near, -b / a)
     return (x + step[:, None, None] * direction[None]).astype(np.asarray(markers).dtype)
 
 
@@ -133,7 +154,8 @@ def follow(motion, samples: np.ndarray, rate: int, starts: np.ndarray, ends: np.
     """``motion`` (a :class:`~facesynth.model.motion.Motion` of an utterance with ``phones`` from
     ``starts`` to ``ends`` s) with its mouth opening following the loudness of ``samples`` (mono,
     ``rate`` Hz) as the module docstring says; returns (the motion, a warning or None). The
-    motion is returned unchanged, with a warning, when it lacks the lip markers."""
+    motion is returned unchanged, with a warning, when it lacks the lip markers or the audio's
+    loudness hardly varies."""
     names = list(motion.marker_names)
     missing = [m for m in settings.loudness_lip_markers if m not in names]
     if missing:
@@ -144,6 +166,11 @@ def follow(motion, samples: np.ndarray, rate: int, starts: np.ndarray, ends: np.
     frames, fps = motion.markers_capture, motion.capture_fps
     opening = lip_gaps(frames, names, settings.loudness_lip_markers).astype(np.float64)
     loud = envelope(samples, rate, len(frames), fps, settings.loudness_smoothing_s)
+    spread = float(np.subtract(*np.percentile(loud, [95, 5]))) if len(loud) else 0.0
+    if spread < MIN_SPREAD:
+        return motion, (f"the audio's loudness was not applied to the mouth: it hardly varies (its log-RMS spans "
+                        f"{spread:.2f} between the 5th and 95th percentiles, under {MIN_SPREAD:g}); give the "
+                        "utterance's speech, or set synthesize.loudness_weight = 0.")
     ranges = frame_ranges(np.asarray(starts, float), np.asarray(ends, float), fps)
     pinned = [r for r, p in zip(ranges, phones) if p in settings.pinned_phones]
     w = weights(len(frames), pinned, settings.loudness_weight, max(1, int(round(settings.loudness_smoothing_s * fps))))

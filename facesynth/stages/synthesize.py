@@ -16,7 +16,7 @@ import numpy as np
 
 from .. import methods
 from ..artifacts import check_output, input_records_in_background
-from ..config import AlignSettings, IngestSettings, SynthesizeSettings, settings_json
+from ..config import AlignSettings, IngestSettings, SynthesizeSettings
 from ..methods import MethodSettings, core
 from ..methods.search import memory_estimate as memory_estimate  # the DP's estimate, where it always was
 from ..model.headmotion import HeadMotion
@@ -98,7 +98,7 @@ def run(source_path: Path, out: Path, settings: SynthesizeSettings | MethodSetti
     motion = result.motion
     if head is not None:
         motion.head_rotation, motion.head_translation = head.at(np.arange(len(motion.markers)) / motion.fps)
-    motion.write(out, config=settings_json(member.recorded_settings(settings)), records=input_records,
+    motion.write(out, config=core.recorded_config(member, settings, read.audio is not None), records=input_records,
                  overwrite=overwrite)
     write_s = time.perf_counter() - t0
     summary = result.summary

@@ -46,6 +46,9 @@ def test_weights_are_zero_in_pinned_phones_and_eased_outside():
     assert np.all(w[:30] == pytest.approx(0.6)) and np.all(w[60:] == pytest.approx(0.6))
     assert np.abs(np.diff(w)).max() <= 0.6 / 5 + 1e-12  # eased: no jump larger than one step of the ramp
     np.testing.assert_array_equal(loudness.weights(10, [], 0.6, 5), np.full(10, 0.6))
+    # motions shorter than the ease, and a bilabial shorter than a frame, still hold the lips
+    np.testing.assert_array_equal(loudness.weights(1, [(0, 1)], 0.6, 12), [0.0])
+    assert loudness.weights(3, [(1, 1)], 0.6, 12)[1] == 0
 
 
 def _face(n=120, seed=0):
@@ -71,6 +74,17 @@ def test_direction_is_the_jaw_and_moving_reaches_the_target_gaps():
     moved = loudness.move_to_gaps(x, d, (0, 1), target)
     np.testing.assert_allclose(np.linalg.norm(moved[:, 0] - moved[:, 1], axis=-1), target, atol=1e-6)
     np.testing.assert_allclose(moved[:, 3], x[:, 3], atol=0.05 * np.abs(target - gap).max())
+    # a target the direction cannot reach (the lips apart front to back, as in /f v/): as close as
+    # it gets, never past the gap it had
+    sideways = np.zeros((1, 2, 3))
+    sideways[0, 1] = [0.0, -2.69, -7.54]  # the lower lip below and behind the upper
+    du = np.zeros((2, 3))
+    du[1] = [0.04, -0.91, -0.41]
+    moved = loudness.move_to_gaps(sideways, du, (0, 1), np.array([5.5]))
+    gap = np.linalg.norm(moved[0, 0] - moved[0, 1])
+    before = np.linalg.norm(sideways[0, 1])
+    closest = np.linalg.norm(np.cross(sideways[0, 1], du[1])) / np.linalg.norm(du[1])
+    assert gap == pytest.approx(closest, abs=1e-9) and 5.5 < gap < before
     # nothing to regress on: no direction, nothing moves
     still = np.repeat(x[:1], 10, axis=0)
     assert not loudness.opening_direction(still, np.full(10, 2.0)).any()
@@ -100,6 +114,14 @@ def test_the_opening_follows_the_voice_and_bilabials_stay_as_they_were(synthesiz
     for a, b in pinned:  # /p b m/ close as the method closed them
         np.testing.assert_allclose(out.markers_capture[a:b], motion.markers_capture[a:b], atol=1e-3)
     np.testing.assert_array_equal(out.markers, downsample(out.markers_capture, motion.capture_fps, motion.fps))
+
+
+def test_audio_whose_loudness_hardly_varies_leaves_the_motion_with_a_warning(synthesized, config):
+    motion, utt, (samples, rate) = synthesized
+    s = config.settings("synthesize")
+    for flat in (np.zeros_like(samples), 0.3 * np.sin(np.arange(len(samples)) * 2 * np.pi * 220 / rate)):
+        out, warning = loudness.follow(motion, flat.astype(np.float32), rate, utt.starts, utt.ends, list(utt.phones), s)
+        assert out is motion and "hardly varies" in warning and "synthesize.loudness_weight = 0" in warning
 
 
 def test_a_motion_without_the_lip_markers_is_left_with_a_warning(synthesized, config):
@@ -140,7 +162,7 @@ def test_synthesize_refuses_phones_that_outlast_the_audio(tiny_db, tiny_corpus, 
     soundfile.write(short, samples[: rate // 2], rate)
     r = _synthesize(tiny_db, "--phonemes", labels, "--audio", short, "-o", tmp_path / "m.h5")
     assert r.exit_code == 1
-    assert "ends at" in r.output and "after the audio" in r.output and "Traceback" not in r.output
+    assert "ends at" in r.output and f"after the audio {short}" in r.output and "Traceback" not in r.output
     assert not (tmp_path / "m.h5").exists()
 
 

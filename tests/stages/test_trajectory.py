@@ -2,6 +2,7 @@
 through the CLI, evaluation, and bad input."""
 
 import dataclasses
+import json
 import logging
 
 import h5py
@@ -140,6 +141,16 @@ def test_synthesis_writes_a_motion_that_deform_reads_and_is_deterministic(model_
     deform.run(tmp_path / "a.h5", tiny_corpus / "face.obj", tiny_corpus / "markers.csv", tmp_path / "anim.h5",
                config.settings("deform"))
     assert (tmp_path / "anim.h5").stat().st_size > 0
+    # with the audio, the voice's loudness moves the mouth, and the motion records the settings it used
+    _synth(model_path, tg, tmp_path / "loud.h5", config, emotions_path=tmp_path / "e.txt",
+           audio=tiny_corpus / "audio" / f"{held_out_take}.wav")
+    loud = Motion.read(tmp_path / "loud.h5")
+    assert np.abs(loud.markers - a.markers).max() > 0.1
+    with h5py.File(tmp_path / "a.h5") as f, h5py.File(tmp_path / "loud.h5") as g:
+        plain, with_audio = json.loads(f.attrs["config"]), json.loads(g.attrs["config"])
+    loudness_keys = {k for k in with_audio if k.startswith("synthesize.")}
+    assert "synthesize.loudness_weight" in loudness_keys and not any(k.startswith("synthesize.") for k in plain)
+    assert {k: v for k, v in with_audio.items() if k not in loudness_keys} == plain
 
 
 def _textgrid(path, phones):
