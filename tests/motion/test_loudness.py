@@ -184,3 +184,21 @@ def test_ranks_and_filters_are_scipys():
     for ease in (2, 3, 6):
         expect = 0.6 * (1 - uniform_filter1d(maximum_filter1d(mask, 2 * (ease // 2) + 1), ease, mode="nearest"))
         np.testing.assert_allclose(loudness.weights(60, pinned, 0.6, ease), expect, atol=1e-12)
+
+
+def test_aligned_audio_is_kept_for_its_loudness(tiny_corpus, held_out_take, config):
+    import csv
+
+    from facesynth.methods import core
+
+    row = next(r for r in csv.DictReader(open(tiny_corpus / "manifest.csv")) if r["take"] == held_out_take)
+    wav = tiny_corpus / row["audio"]
+    read = core.read_utterance(config.settings("ingest"), audio=wav, text=row["transcript"],
+                               align=config.settings("align"))
+    samples, rate = read_audio(wav)
+    assert read.alignment is not None and read.audio is not None and read.audio[1] == rate
+    np.testing.assert_array_equal(read.audio[0], samples)
+    # phones from a file: the audio is read for its loudness only
+    given = core.read_utterance(config.settings("ingest"), phones_path=tiny_corpus / row["alignment"], audio=wav)
+    assert given.alignment is None and given.audio is not None and len(given.audio[0]) == len(samples)
+    assert core.read_utterance(config.settings("ingest"), phones_path=tiny_corpus / row["alignment"]).audio is None
