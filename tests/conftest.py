@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import os
 import shutil
@@ -205,6 +206,19 @@ def tiny_db(tiny_artifacts, config, tmp_path_factory) -> Path:
         build_db.run(tiny_artifacts["pca"], d / "db.h5", config.settings("build_db"))
 
     return _built_once(tmp_path_factory, "tiny-db", build) / "db.h5"
+
+
+@pytest.fixture(scope="session")
+def tiny_trajectory(tiny_db, config, tmp_path_factory) -> Path:
+    """A trajectory model (traj.h5) trained on the tiny database with 4 key-shapes, built once."""
+    from facesynth.stages import keyshapes, train_trajectory
+
+    def build(d: Path) -> None:
+        ks = dataclasses.replace(config.settings("keyshapes"), count=4, curve_frames=200)
+        keyshapes.run(tiny_db, d / "keyshapes.h5", ks)
+        train_trajectory.run(tiny_db, d / "keyshapes.h5", d / "traj.h5", config.settings("trajectory"))
+
+    return _built_once(tmp_path_factory, "tiny-trajectory", build) / "traj.h5"
 
 
 @pytest.fixture(scope="session")

@@ -138,7 +138,6 @@ def synthesize(method: Method, source, utt: Utterance, settings: MethodSettings,
 
         result.motion, warning = loudness.follow(result.motion, *audio, utt.starts, utt.ends, list(utt.phones),
                                                  settings.synthesize)
-        result.summary["loudness_weight"] = settings.synthesize.loudness_weight if warning is None else 0.0
         if warning is not None:
             log.warning("%s: %s", where, warning)
             result.summary.setdefault("warnings", []).append(warning)

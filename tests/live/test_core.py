@@ -217,21 +217,10 @@ def test_the_recogniser_restarts_in_silences_and_keeps_tiling(tiny_corpus, held_
 # --- the trajectory method ---------------------------------------------------------------------
 
 @pytest.fixture(scope="module")
-def trajectory_path(tiny_db, config, tmp_path_factory):
-    from facesynth.stages import keyshapes, train_trajectory
-
-    d = tmp_path_factory.mktemp("live-trajectory")
-    ks = replace(config.settings("keyshapes"), count=4, curve_frames=200)
-    keyshapes.run(tiny_db, d / "keyshapes.h5", ks)
-    train_trajectory.run(tiny_db, d / "keyshapes.h5", d / "traj.h5", config.settings("trajectory"))
-    return d / "traj.h5"
-
-
-@pytest.fixture(scope="module")
-def trajectory_model(trajectory_path):
+def trajectory_model(tiny_trajectory):
     from facesynth.model.trajectory import TrajectoryModel
 
-    return TrajectoryModel.read(trajectory_path)
+    return TrajectoryModel.read(tiny_trajectory)
 
 
 def _trajectory_model(model, config, **stream):
@@ -281,7 +270,7 @@ def test_trajectory_pauses_ease_toward_rest_without_waiting(trajectory_model, ut
     assert jumps <= np.linalg.norm(np.diff(whole, axis=0), axis=-1).max() + 0.5  # no jump at a pause's end
 
 
-def test_the_trajectory_method_needs_a_trajectory_model(db, trajectory_model, trajectory_path, config, tiny_db):
+def test_the_trajectory_method_needs_a_trajectory_model(db, trajectory_model, tiny_trajectory, config, tiny_db):
     from facesynth.stages.stream import load_model
 
     with pytest.raises(InputError, match="train-trajectory"):
@@ -292,4 +281,4 @@ def test_the_trajectory_method_needs_a_trajectory_model(db, trajectory_model, tr
     with pytest.raises(ArtifactError, match="expected .trajectory."):
         load_model(tiny_db, *settings, method="trajectory", trajectory=config.settings("trajectory"))
     with pytest.raises(InputError, match="add --method trajectory"):
-        load_model(trajectory_path, *settings, method="dp")
+        load_model(tiny_trajectory, *settings, method="dp")

@@ -25,21 +25,12 @@ from facesynth.methods.trajectory import (
 from facesynth.model.motion import Motion
 from facesynth.model.trajectory import TrajectoryModel
 from facesynth.search.inputs import read_utterance
-from facesynth.stages import keyshapes, synthesize, train_trajectory
+from facesynth.stages import synthesize
 
 
 @pytest.fixture(scope="module")
-def model_path(tiny_db, config, tmp_path_factory):
-    d = tmp_path_factory.mktemp("trajectory")
-    ks = dataclasses.replace(config.settings("keyshapes"), count=4, curve_frames=200)
-    keyshapes.run(tiny_db, d / "keyshapes.h5", ks)
-    train_trajectory.run(tiny_db, d / "keyshapes.h5", d / "traj.h5", config.settings("trajectory"))
-    return d / "traj.h5"
-
-
-@pytest.fixture(scope="module")
-def model(model_path):
-    return TrajectoryModel.read(model_path)
+def model(tiny_trajectory):
+    return TrajectoryModel.read(tiny_trajectory)
 
 
 def _problem(seed, t=40, k=5):
@@ -122,14 +113,14 @@ def _synth(model_path, tg, out, config, **kw):
                           config.settings("align"), method="trajectory", phones_path=tg, **kw)
 
 
-def test_synthesis_writes_a_motion_that_deform_reads_and_is_deterministic(model_path, tiny_corpus, held_out_take, config,
+def test_synthesis_writes_a_motion_that_deform_reads_and_is_deterministic(tiny_trajectory, tiny_corpus, held_out_take, config,
                                                                          tmp_path):
     from facesynth.stages import deform
 
     tg = tiny_corpus / "labels" / f"{held_out_take}.TextGrid"
     (tmp_path / "e.txt").write_text("0 100 sad\n")
-    _synth(model_path, tg, tmp_path / "a.h5", config, emotions_path=tmp_path / "e.txt")
-    _synth(model_path, tg, tmp_path / "b.h5", config, emotions_path=tmp_path / "e.txt")
+    _synth(tiny_trajectory, tg, tmp_path / "a.h5", config, emotions_path=tmp_path / "e.txt")
+    _synth(tiny_trajectory, tg, tmp_path / "b.h5", config, emotions_path=tmp_path / "e.txt")
     a, b = Motion.read(tmp_path / "a.h5"), Motion.read(tmp_path / "b.h5")
     assert a.source == "trajectory" and a.fps == 30 and a.capture_fps == 120
     assert np.array_equal(a.markers, b.markers) and np.isfinite(a.markers).all()
@@ -142,7 +133,7 @@ def test_synthesis_writes_a_motion_that_deform_reads_and_is_deterministic(model_
                config.settings("deform"))
     assert (tmp_path / "anim.h5").stat().st_size > 0
     # with the audio, the voice's loudness moves the mouth, and the motion records the settings it used
-    _synth(model_path, tg, tmp_path / "loud.h5", config, emotions_path=tmp_path / "e.txt",
+    _synth(tiny_trajectory, tg, tmp_path / "loud.h5", config, emotions_path=tmp_path / "e.txt",
            audio=tiny_corpus / "audio" / f"{held_out_take}.wav")
     loud = Motion.read(tmp_path / "loud.h5")
     assert np.abs(loud.markers - a.markers).max() > 0.1
@@ -198,7 +189,7 @@ def test_a_zero_length_phone_is_refused_by_the_core(model):
                       120.0)
 
 
-def test_bad_input_exits_1_with_one_sentence_and_writes_nothing(model_path, tiny_db, tiny_corpus, held_out_take, tmp_path):
+def test_bad_input_exits_1_with_one_sentence_and_writes_nothing(tiny_trajectory, tiny_db, tiny_corpus, held_out_take, tmp_path):
     tg = tiny_corpus / "labels" / f"{held_out_take}.TextGrid"
     out = tmp_path / "m.h5"
     runner = CliRunner()
@@ -207,23 +198,23 @@ def test_bad_input_exits_1_with_one_sentence_and_writes_nothing(model_path, tiny
     assert r.exit_code == 1 and "trajectory" in r.output and "Traceback" not in r.output and not out.exists()
     # a zero-length phone (the label reader names it)
     bad = _textgrid(tmp_path / "zero.TextGrid", [("pau", 0.0, 0.2), ("aa", 0.2, 0.2), ("m", 0.2, 0.5)])
-    r = runner.invoke(main, ["synthesize", "--method", "trajectory", str(model_path), "--phonemes", str(bad), "-o", str(out)])
+    r = runner.invoke(main, ["synthesize", "--method", "trajectory", str(tiny_trajectory), "--phonemes", str(bad), "-o", str(out)])
     assert r.exit_code == 1 and "segment 'aa' ends at or before it starts" in r.output and not out.exists()
     # constraints have no meaning without nodes
     (tmp_path / "c.txt").write_text("1 3\n")
-    r = runner.invoke(main, ["synthesize", "--method", "trajectory", str(model_path), "--phonemes", str(tg),
+    r = runner.invoke(main, ["synthesize", "--method", "trajectory", str(tiny_trajectory), "--phonemes", str(tg),
                              "--constraints", str(tmp_path / "c.txt"), "-o", str(out)])
     assert r.exit_code == 2 and "the trajectory method takes none" in r.output and not out.exists()
     # the database where a model is expected, and the reverse
-    r = runner.invoke(main, ["synthesize", str(model_path), "--phonemes", str(tg), "-o", str(out)])
+    r = runner.invoke(main, ["synthesize", str(tiny_trajectory), "--phonemes", str(tg), "-o", str(out)])
     assert r.exit_code == 1 and "motiondb" in r.output and not out.exists()
     r = runner.invoke(main, ["train-trajectory", str(tiny_db), "--keyshapes", str(tiny_db), "-o", str(out)])
     assert r.exit_code == 1 and "keyshapes" in r.output and not out.exists()
 
 
-def test_the_cli_trains_and_synthesizes(tiny_db, tiny_corpus, held_out_take, model_path, tmp_path):
+def test_the_cli_trains_and_synthesizes(tiny_db, tiny_corpus, held_out_take, tiny_trajectory, tmp_path):
     tg = tiny_corpus / "labels" / f"{held_out_take}.TextGrid"
-    ks = model_path.parent / "keyshapes.h5"
+    ks = tiny_trajectory.parent / "keyshapes.h5"
     r = CliRunner().invoke(main, ["train-trajectory", str(tiny_db), "--keyshapes", str(ks), "-o", str(tmp_path / "t.h5")])
     assert r.exit_code == 0 and "trajectory model:" in r.output
     r = CliRunner().invoke(main, ["synthesize", "--method", "trajectory", str(tmp_path / "t.h5"), "--phonemes", str(tg),
@@ -233,25 +224,25 @@ def test_the_cli_trains_and_synthesizes(tiny_db, tiny_corpus, held_out_take, mod
         assert f.attrs["source"] == "trajectory"
 
 
-def test_evaluate_lists_the_trajectory_method(tiny_db, tiny_artifacts, model_path, config, tmp_path):
+def test_evaluate_lists_the_trajectory_method(tiny_db, tiny_artifacts, tiny_trajectory, config, tmp_path):
     from facesynth.stages import evaluate
 
     quick = dataclasses.replace(config.settings("evaluate"), bootstrap_resamples=100)  # the intervals' width is not tested here
     s = evaluate.run(tiny_db, tiny_artifacts["corpus"], tmp_path / "report", quick,
-                     config.settings("synthesize"), config.settings("normalize"), trajectory=model_path,
+                     config.settings("synthesize"), config.settings("normalize"), trajectory=tiny_trajectory,
                      trajectory_settings=config.settings("trajectory"))
     assert "trajectory" in s.methods and np.isfinite(s.methods["trajectory"]["rms_mm"])
     assert "dp_minus.rms_mm" in s.methods["trajectory"]["figures"]
     assert "| trajectory |" in (tmp_path / "report" / "table.md").read_text()
 
 
-def test_evaluate_refuses_a_model_of_another_database(tiny_artifacts, model_path, config, tmp_path):
+def test_evaluate_refuses_a_model_of_another_database(tiny_artifacts, tiny_trajectory, config, tmp_path):
     from facesynth.stages import build_db, evaluate
 
     other = tmp_path / "other_db.h5"
     build_db.run(tiny_artifacts["pca"], other, dataclasses.replace(config.settings("build_db"), dsc_samples=6))
     with pytest.raises(InputError, match="was trained on another database"):
         evaluate.run(other, tiny_artifacts["corpus"], tmp_path / "report", config.settings("evaluate"),
-                     config.settings("synthesize"), config.settings("normalize"), trajectory=model_path,
+                     config.settings("synthesize"), config.settings("normalize"), trajectory=tiny_trajectory,
                      trajectory_settings=config.settings("trajectory"))
     assert not (tmp_path / "report").exists()
