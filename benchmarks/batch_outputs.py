@@ -26,15 +26,15 @@ from pathlib import Path
 import numpy as np
 from batch_throughput import build_db
 
-from facesynth.config import Config
+from facesynth.base.config import Config
 
 OUTPUTS = ("motion", "curves", "arkit", "gltf", "usd", "avi", "anim")
 
 
 def measure(corpus: Path, db: Path, take: str, work: Path, repeats: int) -> dict:
-    from facesynth.batch.line import run_line
-    from facesynth.batch.script import read_script
-    from facesynth.exports import usd
+    from facesynth.domain.batch.line import run_line
+    from facesynth.domain.batch.script import read_script
+    from facesynth.domain.exports import usd
     from facesynth.stages import batch
 
     row = next(r for r in csv.DictReader(open(corpus / "manifest.csv", encoding="utf-8")) if r["take"] == take)

@@ -34,14 +34,14 @@ from pathlib import Path
 
 import numpy as np
 
-from facesynth.config import Config
+from facesynth.base.config import Config
 
 EMOTIONS = ("neutral", "happy", "angry", "sad")
 
 
 def build_db(folder: Path, preset: str) -> Path:
     """Sample corpus ``preset`` -> ... -> db.h5 (reused when present)."""
-    from facesynth.corpus.generate import generate
+    from facesynth.domain.corpus.generate import generate
     from facesynth.stages import build_db, ingest, normalize, pca
 
     db = folder / "db.h5"

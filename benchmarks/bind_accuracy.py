@@ -25,9 +25,9 @@ from pathlib import Path
 import numpy as np
 from scipy.spatial.transform import Rotation
 
-from facesynth.config import Config
-from facesynth.corpus.generate import generate
-from facesynth.facerig import load_face_rig
+from facesynth.base.config import Config
+from facesynth.domain.corpus.generate import generate
+from facesynth.domain.rig.face import load_face_rig
 from facesynth.formats.mesh import read_binding, read_rigid_markers
 from facesynth.formats.mocap import MarkerTake, read_mocap, write_c3d
 from facesynth.stages import bind

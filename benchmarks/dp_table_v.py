@@ -22,14 +22,15 @@ from pathlib import Path
 
 import numpy as np
 
-from facesynth.config import Config
+from facesynth.base.config import Config
+from facesynth.base.opencl import build, choice, context, queue, use_opencl
+from facesynth.base.phonemes import PAU, cmudict, to_festival
+from facesynth.domain.search.costs import step_costs
+from facesynth.domain.search.dp import PANEL, OpenCLDp, PanelMatrix, dp_numpy
+from facesynth.domain.search.pairs import transition_costs
+from facesynth.domain.search.pruned import dp_pruned
 from facesynth.formats.labels import Segment, write_textgrid
 from facesynth.model.motiondb import MotionDatabase
-from facesynth.opencl import build, choice, context, queue, use_opencl
-from facesynth.phonemes import PAU, cmudict, to_festival
-from facesynth.search.costs import step_costs
-from facesynth.search.dp import PANEL, OpenCLDp, PanelMatrix, dp_numpy
-from facesynth.search.pruned import dp_pruned
 
 PHRASES = {  # paper Table V
     14: "I know you meant it",
@@ -52,7 +53,7 @@ def byte_compile() -> None:
 
 def build_paper_db(folder: Path) -> Path:
     """Sample corpus 'paper' -> ... -> db.h5 (reused when present)."""
-    from facesynth.corpus.generate import generate
+    from facesynth.domain.corpus.generate import generate
     from facesynth.stages import build_db, ingest, normalize, pca
 
     db = folder / "db.h5"
@@ -128,7 +129,7 @@ def main() -> None:
     db_path = args.db or build_paper_db(args.work)
     db = MotionDatabase.read(db_path)
     s = Config.load().settings("synthesize")
-    costs = db.transition_costs(s)
+    costs = transition_costs(db, s)
     tc = costs.dense()  # the dense DP's matrix, computed once from the per-node features
     on_device = use_opencl(True)
     matrix = PanelMatrix.from_matrix(tc) if on_device else None

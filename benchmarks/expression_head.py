@@ -31,13 +31,13 @@ from pathlib import Path
 
 import numpy as np
 
-from facesynth.config import Config
+from facesynth.base.config import Config
+from facesynth.domain.expression import bilinear
 from facesynth.model.corpus import Corpus
 from facesynth.model.frames import NormalizedFrames, relative_to_take
 from facesynth.model.motiondb import MotionDatabase
 from facesynth.stages import expression as expr_stage
 from facesynth.stages import head_motion as head_stage
-from facesynth.style import bilinear
 
 HELD_OUT = ("val", "test")
 INTENSITIES = (0.25, 0.5, 1.0)

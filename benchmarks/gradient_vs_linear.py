@@ -16,9 +16,9 @@ import sys
 
 import numpy as np
 
-from facesynth.corpus.markers import build_marker_set
-from facesynth.facerig import load_face_rig
-from facesynth.retarget.gradients import GradientBlender
+from facesynth.domain.retarget.gradients import GradientBlender
+from facesynth.domain.rig.face import load_face_rig
+from facesynth.domain.rig.markers import build_marker_set
 
 
 def main() -> int:

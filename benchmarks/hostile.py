@@ -32,7 +32,7 @@ def main() -> None:
     parser.add_argument("--markdown", action="store_true")
     parser.add_argument("--failures", action="store_true", help="list each case that failed, with why")
     a = parser.parse_args()
-    from facesynth.corpus.generate import generate
+    from facesynth.domain.corpus.generate import generate
 
     a.work.mkdir(parents=True, exist_ok=True)
     corpus = a.work / "corpus"

@@ -22,13 +22,14 @@ from pathlib import Path
 
 import numpy as np
 
-from facesynth.config import Config
-from facesynth.evaluation import heldout, normalized_take
+from facesynth.base.config import Config
+from facesynth.base.phonemes import PAU
+from facesynth.domain.evaluation.held_out import heldout, normalized_take
+from facesynth.domain.search.pairs import transition_costs
+from facesynth.domain.search.synthesis import synthesize
 from facesynth.formats.mocap import read_mocap
 from facesynth.model.corpus import Corpus
 from facesynth.model.motiondb import MotionDatabase
-from facesynth.phonemes import PAU
-from facesynth.search.synthesis import synthesize
 
 
 def second_differences(x: np.ndarray) -> np.ndarray:
@@ -48,7 +49,7 @@ def measure(db_path: Path, corpus_path: Path, clean_dir: Path, split: str, overr
     db = MotionDatabase.read(db_path)
     corpus = Corpus.read(corpus_path, audio=False)
     sentences = heldout(corpus_path, db, split, norm)
-    tc = db.transition_costs(synth, False)
+    tc = transition_costs(db, synth, False)
     at_joins, clean_d2, rows = [], [], []
     t0 = time.perf_counter()
     for s in sentences:

@@ -54,17 +54,17 @@ from pathlib import Path
 
 import numpy as np
 
-from facesynth.config import Config
-from facesynth.evaluation import TruthFolder
-from facesynth.live.core import LiveModel
-from facesynth.live.session import Session
-from facesynth.methods.trajectory import synthesize_motion
+from facesynth.base.config import Config
+from facesynth.base.phonemes import PAU
+from facesynth.domain.evaluation.held_out import TruthFolder
+from facesynth.domain.live.core import LiveModel
+from facesynth.domain.live.session import Session
+from facesynth.domain.methods.trajectory import synthesize_motion
+from facesynth.domain.postprocess.concatenation import downsample
+from facesynth.domain.search.inputs import read_utterance, utterance
+from facesynth.domain.search.synthesis import synthesize
 from facesynth.model.motiondb import MotionDatabase
 from facesynth.model.trajectory import TrajectoryModel
-from facesynth.motion.postprocess import downsample
-from facesynth.phonemes import PAU
-from facesynth.search.inputs import read_utterance, utterance
-from facesynth.search.synthesis import synthesize
 
 CHUNK_S = 0.02
 #: (method, look-ahead phones, recognition hold phones, stream.pause_wait_s: None the default; a

@@ -26,14 +26,14 @@ from pathlib import Path
 
 import numpy as np
 
-from facesynth import methods
-from facesynth.bootstrap import interval, paired_difference, resamples
-from facesynth.config import Config
-from facesynth.evaluation import TruthFolder, heldout
+from facesynth.base.config import Config
+from facesynth.domain import methods
+from facesynth.domain.evaluation.bootstrap import interval, paired_difference, resamples
+from facesynth.domain.evaluation.held_out import TruthFolder, heldout
+from facesynth.domain.methods import MethodSettings, core
+from facesynth.domain.speech.loudness import lip_gaps
 from facesynth.formats.audio import read_audio
-from facesynth.methods import MethodSettings, core
 from facesynth.model.motiondb import MotionDatabase
-from facesynth.motion.loudness import lip_gaps
 
 
 def mean_of(values: np.ndarray):

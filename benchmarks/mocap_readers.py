@@ -35,7 +35,7 @@ from pathlib import Path
 
 import numpy as np
 
-from facesynth.errors import InputError
+from facesynth.base.errors import InputError
 from facesynth.formats.c3dfile import read_points
 from facesynth.formats.mocap import read_mocap
 

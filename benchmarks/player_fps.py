@@ -36,7 +36,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "tests" / "expor
 from chromium_page import CHROMIUM, ChromiumPage  # noqa: E402
 from render_fps import FPS, animation, speaking_weights  # noqa: E402
 
-from facesynth.facerig import BUILTIN_RIG_NAME, builtin_rig_sha256, load_face_rig  # noqa: E402
+from facesynth.domain.rig.face import BUILTIN_RIG_NAME, builtin_rig_sha256, load_face_rig  # noqa: E402
 from facesynth.model.curves import RigCurves  # noqa: E402
 from facesynth.stages import player  # noqa: E402
 

@@ -11,8 +11,8 @@ import json
 import time
 from pathlib import Path
 
-from facesynth.config import Config
-from facesynth.contamination import contaminated_nodes, detect
+from facesynth.base.config import Config
+from facesynth.domain.database.contamination import contaminated_nodes, detect
 from facesynth.model.motiondb import MotionDatabase
 
 

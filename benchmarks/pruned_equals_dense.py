@@ -15,6 +15,8 @@ import sys
 import time
 from pathlib import Path
 
+from facesynth.domain.search.pairs import transition_costs
+
 HERE = Path(__file__).resolve().parent
 EMOTIONS = ("neutral", "angry", "sad", "happy")
 
@@ -27,17 +29,17 @@ def main() -> None:
     sys.path.insert(0, str(HERE))
     from dp_table_v import PHRASES, phrase_phones
 
-    from facesynth.config import Config
+    from facesynth.base.config import Config
+    from facesynth.base.opencl import use_opencl
+    from facesynth.domain.search.costs import step_costs
+    from facesynth.domain.search.dp import OpenCLDp, dp_numpy
+    from facesynth.domain.search.pruned import dp_pruned
     from facesynth.model.motiondb import MotionDatabase
-    from facesynth.opencl import use_opencl
-    from facesynth.search.costs import step_costs
-    from facesynth.search.dp import OpenCLDp, dp_numpy
-    from facesynth.search.pruned import dp_pruned
 
     s = Config.load(None, tuple(args.overrides)).settings("synthesize")
     db = MotionDatabase.read(args.db)
     opencl = use_opencl(s.use_opencl)
-    tc = db.transition_costs(s, opencl)
+    tc = transition_costs(db, s, opencl)
     t0 = time.perf_counter()
     dense_tc = tc.panels() if opencl else tc.dense()
     report = {"db": str(args.db), "nodes": tc.n, "settings": args.overrides, "opencl": opencl,

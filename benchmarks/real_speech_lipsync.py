@@ -53,7 +53,7 @@ Methods, all at 30 frames/s on the take's whole length, no lag (none is searched
 
 Scores: Pearson r between each method's curve and the real one in windows of about
 ``--window-s`` seconds (each take cut into equal windows), the mean over windows with a
-bootstrap 95% interval over windows (percentile method, :mod:`facesynth.bootstrap`), and
+bootstrap 95% interval over windows (percentile method, :mod:`facesynth.domain.evaluation.bootstrap`), and
 paired differences (facesynth minus each other method) on the same resamples; the same again
 with the takes resampled instead (``r_takes``, ``paired_takes``: wider, since windows of one
 take are not independent).
@@ -87,13 +87,13 @@ from pathlib import Path
 
 import numpy as np
 
-from facesynth.baselines import openfacefx_arkit, openfacefx_missing, rig_markers
-from facesynth.bootstrap import interval, paired_difference, resamples
-from facesynth.config import Config, settings_json
+from facesynth.base.config import Config, settings_json
+from facesynth.base.phonemes import PAU, to_festival
+from facesynth.domain.evaluation.baselines import openfacefx_arkit, openfacefx_missing, rig_markers
+from facesynth.domain.evaluation.bootstrap import interval, paired_difference, resamples
+from facesynth.domain.speech.loudness import envelope
 from facesynth.formats.audio import read_audio, resample
 from facesynth.formats.labels import Segment, read_phone_segments, write_textgrid
-from facesynth.motion.loudness import envelope
-from facesynth.phonemes import PAU, to_festival
 
 FPS = 30.0
 TABLE = Path(__file__).resolve().parent / "data" / "facegood_arkit.tsv"
@@ -312,7 +312,7 @@ def facesynth_method(db: Path, phones: Path, folder: Path, n: int, lip_markers, 
     loudness moves the mouth too: ``synthesize.loudness_weight``, or ``loudness_weight`` where
     given) or without it (phones alone), solve onto the built-in rig (unless ``solve`` is False:
     the mouth opening alone), read back."""
-    from facesynth.evaluation import lip_gaps
+    from facesynth.domain.evaluation.held_out import lip_gaps
     from facesynth.model.curves import RigCurves
     from facesynth.model.motion import Motion
 
@@ -349,9 +349,9 @@ def facesynth_method(db: Path, phones: Path, folder: Path, n: int, lip_markers, 
 
 def actress_mean_method(database, segs: list[Segment], n: int, lip_markers) -> dict[str, np.ndarray]:
     """The actress's per-phone mean pose (``facesynth evaluate``'s ``baseline``) as a mouth opening (n,)."""
-    from facesynth.evaluation import lip_gaps
-    from facesynth.methods.mean import mean_pose_markers
-    from facesynth.search.inputs import utterance
+    from facesynth.domain.evaluation.held_out import lip_gaps
+    from facesynth.domain.methods.mean import mean_pose_markers
+    from facesynth.domain.search.inputs import utterance
 
     utt = utterance([s.label for s in segs], np.array([s.start for s in segs]), np.array([s.end for s in segs]))
     gap = lip_gaps(mean_pose_markers(database, utt, by_emotion=False), list(database.marker_names), lip_markers)
@@ -455,7 +455,7 @@ def main(argv=None) -> dict:
     args.work.mkdir(parents=True, exist_ok=True)
     db = build_database(args.work, args.corpus_config)
 
-    from facesynth.facerig import load_face_rig
+    from facesynth.domain.rig.face import load_face_rig
     from facesynth.formats.mesh import read_binding
     from facesynth.model.motiondb import MotionDatabase
 

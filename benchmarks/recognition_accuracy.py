@@ -1,5 +1,5 @@
 """Phones from audio alone (``align.recognition``: ``words`` or ``phones``, see
-:mod:`facesynth.recognition`) against the text-given alignment, on the recordings of
+:mod:`facesynth.domain.speech.recognition`) against the text-given alignment, on the recordings of
 ``benchmarks/alignment_accuracy.py`` (the sample corpus; praatio's and the Montreal Forced
 Aligner's real speech). Prints JSON (and writes it with ``--out``).
 
@@ -42,12 +42,12 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from alignment_accuracy import festival, load_sources, speech_arguments
 
-from facesynth.alignment import AlignmentFailed, normalize_text
-from facesynth.config import Config
-from facesynth.errors import InputError
+from facesynth.base.config import Config
+from facesynth.base.errors import InputError
+from facesynth.base.phonemes import PAU, VOWELS, pronunciations, to_festival, viseme
+from facesynth.domain.speech.alignment import AlignmentFailed, normalize_text
+from facesynth.domain.speech.recognition import align_or_recognize
 from facesynth.formats.audio import read_audio
-from facesynth.phonemes import PAU, VOWELS, pronunciations, to_festival, viseme
-from facesynth.recognition import align_or_recognize
 
 #: Phone classes for the confusion summary (Festival phones).
 CLASSES = {"vowel": VOWELS, "stop": {"p", "b", "t", "d", "k", "g"},

@@ -34,14 +34,13 @@ from pathlib import Path
 import numpy as np
 from scipy import sparse
 
-from facesynth.config import Config
-from facesynth.facerig import load_face_rig
+from facesynth.base.config import Config
+from facesynth.base.opencl import device_description, use_opencl
+from facesynth.domain.rendering import video
+from facesynth.domain.rig.face import gaze_from_rig_weights, load_face_rig
 from facesynth.formats.audio import write_wav
 from facesynth.model.curves import RigCurves
 from facesynth.model.meshanim import MeshAnimation
-from facesynth.opencl import device_description, use_opencl
-from facesynth.rendering import video
-from facesynth.rendering.parts import gaze_from_rig_weights
 from facesynth.stages import render
 
 FPS = 30.0

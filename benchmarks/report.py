@@ -288,7 +288,7 @@ def copy_bandwidth(n_bytes: int = 512 * 2**20, repeats: int = 5) -> float:
 
 def opencl_device() -> dict:
     """The OpenCL device facesynth uses here (``facesynth devices``), with its platform and why."""
-    from facesynth.opencl import OpenCLUnavailable, choice
+    from facesynth.base.opencl import OpenCLUnavailable, choice
 
     try:
         chosen = choice()
@@ -414,7 +414,7 @@ def time_render(fs: str, demo: Path) -> dict:
     """Render the demo's rig curves again (posed through the built-in rig, as ``make demo``
     renders them) and time the whole command: frames per second (wall time, start-up included)
     and that as a multiple of real time (the video's rate)."""
-    from facesynth.facerig import load_face_rig
+    from facesynth.domain.rig.face import load_face_rig
     from facesynth.model.curves import RigCurves
 
     clips = sorted(demo.glob("*.curves.h5"))

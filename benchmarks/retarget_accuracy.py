@@ -44,18 +44,18 @@ from pathlib import Path
 
 import numpy as np
 
-from facesynth.config import Config
-from facesynth.corpus.markers import build_marker_set
-from facesynth.corpus.truth import read_truth
-from facesynth.facerig import load_face_rig
+from facesynth.base.config import Config
+from facesynth.domain.corpus.truth import read_truth
+from facesynth.domain.postprocess.concatenation import downsample
+from facesynth.domain.retarget import deform
+from facesynth.domain.retarget.gradients import GradientBlender
+from facesynth.domain.retarget.solve import solve_motion
+from facesynth.domain.rig.face import load_face_rig
+from facesynth.domain.rig.markers import build_marker_set
 from facesynth.formats.mesh import read_binding, read_mesh
 from facesynth.model.corpus import Corpus
 from facesynth.model.motion import Motion
 from facesynth.model.motiondb import MotionDatabase
-from facesynth.motion.postprocess import downsample
-from facesynth.retarget import deform
-from facesynth.retarget.gradients import GradientBlender
-from facesynth.retarget.solve import solve_motion
 from facesynth.stages import capture, keyshapes, retarget, synthesize
 
 BILABIALS = ("p", "b", "m")
@@ -157,7 +157,7 @@ def main(argv: list[str]) -> int:
     for i, (corpus_dir, corpus_h5, db_path) in enumerate(zip(args.corpus, args.corpus_h5, args.db)):
         takes.update(load_takes(f"c{i}", corpus_dir, corpus_h5, db_path, args.takes, config, tmp, fps))
 
-    from facesynth.retarget.rig import builtin_rig
+    from facesynth.domain.rig.loading import builtin_rig
 
     target = builtin_rig()
     ssolve = config.settings("solve")

@@ -33,13 +33,13 @@ from pathlib import Path
 
 import numpy as np
 
-from facesynth.config import Config
+from facesynth.base.config import Config
+from facesynth.base.opencl import device_description
+from facesynth.domain.retarget.gradients import GradientBlender
+from facesynth.domain.retarget.solve import solve_motion
+from facesynth.domain.rig.loading import builtin_rig
 from facesynth.model.keyshapes import KeyShapes
 from facesynth.model.motion import Motion
-from facesynth.opencl import device_description
-from facesynth.retarget.gradients import GradientBlender
-from facesynth.retarget.rig import builtin_rig
-from facesynth.retarget.solve import solve_motion
 from facesynth.stages import retarget
 
 

@@ -30,6 +30,8 @@ from pathlib import Path
 
 import numpy as np
 
+from facesynth.domain.search.pairs import transition_costs
+
 HERE = Path(__file__).resolve().parent
 LENGTHS = (14, 24, 53, 63)
 
@@ -103,8 +105,8 @@ def replicate(pca_in: Path, pca_out: Path, copies: int, seed: int = 0) -> dict:
 
 def paper_pca(work: Path) -> Path:
     """The paper preset's pca.h5 (seed 0), made once."""
-    from facesynth.config import Config
-    from facesynth.corpus.generate import generate
+    from facesynth.base.config import Config
+    from facesynth.domain.corpus.generate import generate
     from facesynth.stages import ingest, normalize, pca
 
     out = work / "pca.h5"
@@ -148,16 +150,16 @@ def search_figures(db_path: Path, work: Path, overrides: list[str]) -> dict:
     columns evaluated; and the dense floor (one plain read of N x N float32 per step) where it fits."""
     from dp_table_v import PHRASES, phrase_phones
 
-    from facesynth.config import Config
+    from facesynth.base.config import Config
+    from facesynth.base.opencl import use_opencl
+    from facesynth.domain.search.costs import step_costs
+    from facesynth.domain.search.pruned import dp_pruned
     from facesynth.model.motiondb import MotionDatabase
-    from facesynth.opencl import use_opencl
-    from facesynth.search.costs import step_costs
-    from facesynth.search.pruned import dp_pruned
 
     s = Config.load(None, tuple(overrides)).settings("synthesize")
     db = MotionDatabase.read(db_path)
     n = len(db.nodes)
-    tc = db.transition_costs(s, use_opencl(s.use_opencl))
+    tc = transition_costs(db, s, use_opencl(s.use_opencl))
     rows = []
     for length in LENGTHS:
         phones = phrase_phones(PHRASES[length], length)
@@ -185,8 +187,8 @@ def read_floor(n: int, steps: int, repeats: int = 2) -> float:
     ``kernels/read_panels.cl`` (the dense DP's floor), from page-aligned host memory."""
     import pyopencl as cl
 
-    from facesynth.opencl import aligned_empty, build, context, queue
-    from facesynth.search.dp import PANEL
+    from facesynth.base.opencl import aligned_empty, build, context, queue
+    from facesynth.domain.search.dp import PANEL
 
     ctx, q = context(), queue()
     n_panels = -(-n // PANEL)
@@ -263,7 +265,7 @@ def host() -> dict:
     """The processor count, memory and load average of the machine, and the OpenCL device."""
     import os
 
-    from facesynth.opencl import choice
+    from facesynth.base.opencl import choice
 
     mem = next((int(line.split()[1]) for line in Path("/proc/meminfo").read_text().splitlines()
                 if line.startswith("MemTotal:")), 0)

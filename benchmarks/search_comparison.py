@@ -14,14 +14,15 @@ from pathlib import Path
 
 import numpy as np
 
-from facesynth.config import Config
-from facesynth.evaluation import heldout, sentence_metrics
+from facesynth.base.config import Config
+from facesynth.base.opencl import use_opencl
+from facesynth.domain.evaluation.held_out import heldout, sentence_metrics
+from facesynth.domain.search.costs import path_terms, step_costs
+from facesynth.domain.search.dp import PanelMatrix, dp_bounded, dp_numpy, dp_opencl
+from facesynth.domain.search.greedy import Greedy, anime_graph, cluster_graph, motion_features, pq_matching
+from facesynth.domain.search.pairs import transition_costs
+from facesynth.domain.search.synthesis import render_path
 from facesynth.model.motiondb import MotionDatabase
-from facesynth.opencl import use_opencl
-from facesynth.search.costs import path_terms, step_costs
-from facesynth.search.dp import PanelMatrix, dp_bounded, dp_numpy, dp_opencl
-from facesynth.search.greedy import Greedy, anime_graph, cluster_graph, motion_features, pq_matching
-from facesynth.search.synthesis import render_path
 
 
 def timed(fn, repeats: int):
@@ -44,7 +45,7 @@ def main() -> None:
     s, ev = config.settings("synthesize"), config.settings("evaluate")
     db = MotionDatabase.read(args.db)
     on_device = use_opencl(s.use_opencl)
-    tc_full = db.transition(s)  # the dense DP's matrix, computed once from the per-node features
+    tc_full = transition_costs(db, s).dense()  # the dense DP's matrix, computed once from the per-node features
     tc = PanelMatrix.from_matrix(tc_full) if on_device else tc_full
     dp, device = (dp_opencl, "OpenCL") if on_device else (dp_numpy, "NumPy")
     penalty = s.alpha6 * s.pnt

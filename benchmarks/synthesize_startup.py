@@ -32,8 +32,8 @@ from pathlib import Path
 import numpy as np
 from dp_table_v import PHRASES, build_paper_db, byte_compile, phrase_phones, read_floor, write_phrase
 
+from facesynth.base.opencl import device_name
 from facesynth.model.motiondb import MotionDatabase
-from facesynth.opencl import device_name
 
 PHONES = 63
 PHASE = re.compile(r"([A-Za-z][A-Za-z -]*?) (\d+\.\d+) s\b")
@@ -78,8 +78,8 @@ def main() -> None:
     db = MotionDatabase.read(db_path)
     # The dense DP's floor: N x N float32 in the panel-major layout, streamed once per step (the
     # values do not matter to a read, so the matrix is not computed).
-    from facesynth.opencl import aligned_empty
-    from facesynth.search.dp import PANEL
+    from facesynth.base.opencl import aligned_empty
+    from facesynth.domain.search.dp import PANEL
 
     n = len(db.nodes)
     panels = aligned_empty((-(-n // PANEL), n, PANEL), np.float32)

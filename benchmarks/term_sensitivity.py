@@ -20,16 +20,17 @@ from pathlib import Path
 
 import numpy as np
 
-from facesynth.config import Config
-from facesynth.evaluation import heldout
+from facesynth.base.config import Config
+from facesynth.base.phonemes import PAU
+from facesynth.domain.evaluation.held_out import heldout
+from facesynth.domain.search.pairs import transition_costs
+from facesynth.domain.search.synthesis import synthesize
 from facesynth.model.motiondb import MotionDatabase
-from facesynth.phonemes import PAU
-from facesynth.search.synthesis import synthesize
 
 
 def run(db: MotionDatabase, sentences, settings) -> tuple[list[np.ndarray], list[float], float]:
     """Paths, DP costs and the pooled RMS error (mm) against the capture of every sentence."""
-    tc = db.transition_costs(settings, False)
+    tc = transition_costs(db, settings, False)
     paths, costs, squared, frames = [], [], 0.0, 0
     for s in sentences:
         res = synthesize(db, s.utterance, {}, settings, tc=tc)

@@ -24,10 +24,16 @@ from pathlib import Path
 
 import numpy as np
 
-from facesynth.config import Config
-from facesynth.methods.trajectory import duration_weights, effective_lambda, frame_targets, solve, synthesize_motion
+from facesynth.base.config import Config
+from facesynth.domain.methods.trajectory import (
+    duration_weights,
+    effective_lambda,
+    frame_targets,
+    solve,
+    synthesize_motion,
+)
+from facesynth.domain.search.inputs import utterance
 from facesynth.model.trajectory import TrajectoryModel
-from facesynth.search.inputs import utterance
 
 
 def ten_seconds(model: TrajectoryModel, seed: int = 0, seconds: float = 10.0):

@@ -19,6 +19,7 @@ from pathlib import Path
 import numpy as np
 from scipy.stats import rankdata
 
+from facesynth.domain.search.pairs import node_features
 from facesynth.model.motiondb import MotionDatabase
 
 
@@ -31,7 +32,7 @@ def auc(negative: np.ndarray, positive: np.ndarray) -> float:
 
 def measure(db_path: Path, any_phone: bool, seed: int, boot: int = 500) -> dict:
     db = MotionDatabase.read(db_path)
-    features = db.read_features()
+    features = node_features(db)
     nodes = db.nodes
     rng = np.random.default_rng(seed)
     j = np.nonzero(nodes.pre >= 0)[0]

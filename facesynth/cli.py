@@ -16,13 +16,14 @@ from pathlib import Path
 
 import click
 
-from . import __version__, limits, pipeline
-from .config import SAMPLE_CORPUS_PRESETS, Config, choices, parse_override
-from .errors import FacesynthError, OverrideError, UsageError
-from .methods import MEMBERS as METHOD_MEMBERS
+from facesynth import __version__
+from facesynth.base import limits, pipeline
+from facesynth.base.config import SAMPLE_CORPUS_PRESETS, Config, choices, parse_override
+from facesynth.base.errors import FacesynthError, OverrideError, UsageError
+from facesynth.domain.methods import MEMBERS as METHOD_MEMBERS
 
 PATH = click.Path(path_type=Path)
-#: The members of the method family (facesynth.methods), and those fitted into a model artifact.
+#: The members of the method family (facesynth.domain.methods), and those fitted into a model artifact.
 METHOD_NAMES = tuple(METHOD_MEMBERS)
 FITTED_METHOD_NAMES = ("trajectory", "coarticulation")
 EXISTING = click.Path(path_type=Path, dir_okay=False)
@@ -100,7 +101,7 @@ def _configure_logging(verbose: int, quiet: bool) -> None:
 
 
 #: The configuration sections each command reads (``[limits]`` included), by command path
-#: ("isomap build"), from the declarations in facesynth.pipeline. A ``--set`` must name one of
+#: ("isomap build"), from the declarations in facesynth.base.pipeline. A ``--set`` must name one of
 #: them; ``Config.settings`` refuses any other, keeping this true.
 READS = pipeline.READS
 
@@ -177,7 +178,7 @@ def _left_behind(published: list[Path], in_place: list[Path] | None = None) -> s
     return f"{names} {'was' if len(published) == 1 else 'were'} written before it (complete); nothing else was."
 
 
-#: Output options that name a folder rather than a file, by command path (facesynth.pipeline).
+#: Output options that name a folder rather than a file, by command path (facesynth.base.pipeline).
 FOLDER_OUTPUTS = pipeline.FOLDER_OUTPUTS
 
 
@@ -185,7 +186,7 @@ def _check_outputs(command: str, kwargs: dict, overwrite: bool) -> None:
     """Check every output path the command declares (``-o``, ``--images``, a corpus folder) for
     writability and no-clobber before any work, so a wrong path costs nothing. A folder written
     in place and kept between runs (batch's) may exist."""
-    from .artifacts import check_output, check_output_folder
+    from facesynth.model.artifacts import check_output, check_output_folder
 
     declared = pipeline.STAGE[command]
     folders = declared.folders(kwargs)
@@ -204,7 +205,7 @@ def stage(func=None, *, writes: bool = True):
     its errors to exit statuses: UsageError (bad usage, e.g. a bad ``--set``) to click's usage
     message and 2, any other FacesynthError to one line and 1, Ctrl-C to 130, SIGTERM to 143.
     Before the command runs, its output paths are checked (writable, no clobbering) and the
-    ``[limits]`` section is put in force (:mod:`facesynth.limits`)."""
+    ``[limits]`` section is put in force (:mod:`facesynth.base.limits`)."""
     if func is None:
         return functools.partial(stage, writes=writes)
 
@@ -221,7 +222,7 @@ def stage(func=None, *, writes: bool = True):
             ctx = Context(config.only(READS[command]), verbose, quiet, overwrite)
             recording: contextlib.AbstractContextManager = contextlib.nullcontext()
             if writes:
-                from .artifacts import recording_published
+                from facesynth.model.artifacts import recording_published
 
                 _check_outputs(command, kwargs, overwrite)
                 in_place = [Path(kwargs[name]) for name, folder in pipeline.STAGE[command].folders(kwargs).items()
@@ -292,7 +293,7 @@ def sample_corpus_cmd(ctx: Context, out_dir: Path, preset: str, seed: int):
     Example:
       facesynth sample-corpus corpus/ --preset small --seed 0
     """
-    from .stages import sample_corpus as stage
+    from facesynth.stages import sample_corpus as stage
 
     summary = stage.run(out_dir, preset, seed, ctx.config.settings("sample_corpus"), ctx.overwrite)
     ctx.say(f"wrote {summary.takes} takes, {summary.seconds:.1f} s of capture, "
@@ -321,7 +322,7 @@ def align(ctx: Context, audio: Path, text: str | None, transcript: Path | None, 
       facesynth align corpus/audio/neutral_s000.wav --text "beautiful he men from began pretty strong" \\
           -o s000.TextGrid
     """
-    from .stages import align as stage_align
+    from facesynth.stages import align as stage_align
 
     if text is not None and transcript is not None:
         raise UsageError("give one of --text or --transcript, not both.")
@@ -347,7 +348,7 @@ def ingest(ctx: Context, manifest: Path, output: Path):
     Example:
       facesynth ingest corpus/manifest.csv -o corpus.h5
     """
-    from .stages import ingest as stage_ingest
+    from facesynth.stages import ingest as stage_ingest
 
     s = stage_ingest.run(manifest, output, ctx.config.settings("ingest"), ctx.config.settings("align"), ctx.overwrite)
     def takes(names: list[str]) -> str:
@@ -376,7 +377,7 @@ def normalize(ctx: Context, corpus: Path, output: Path):
     Example:
       facesynth normalize corpus.h5 -o normalized.h5
     """
-    from .stages import normalize as stage_normalize
+    from facesynth.stages import normalize as stage_normalize
 
     s = stage_normalize.run(corpus, output, ctx.config.settings("normalize"), ctx.overwrite)
     for take, marker, start, length in s.long_gaps:
@@ -404,7 +405,7 @@ def pca(ctx: Context, normalized: Path, output: Path):
     Example:
       facesynth pca normalized.h5 -o pca.h5 --set pca.n_components=25
     """
-    from .stages import pca as stage_pca
+    from facesynth.stages import pca as stage_pca
 
     s = stage_pca.run(normalized, output, ctx.config.settings("pca"), ctx.overwrite)
     ctx.say(f"PCA: {s.components} components cover {100 * s.explained:.2f}% of the variance "
@@ -422,7 +423,7 @@ def build_db(ctx: Context, pca_path: Path, output: Path):
     Example:
       facesynth build-db pca.h5 -o db.h5
     """
-    from .stages import build_db as stage
+    from facesynth.stages import build_db as stage
 
     s = stage.run(pca_path, output, ctx.config.settings("build_db"), ctx.overwrite)
     ctx.say(f"built {s.nodes} motion nodes ({s.with_predecessor} with a captured predecessor); "
@@ -465,8 +466,8 @@ def synthesize(ctx: Context, db: Path, method, phonemes, audio, text, emotions, 
     """
     import dataclasses
 
-    from .methods import MethodSettings, core
-    from .stages import synthesize as stage
+    from facesynth.domain.methods import MethodSettings, core
+    from facesynth.stages import synthesize as stage
 
     settings = MethodSettings.of(ctx.config)
     name = core.chosen_method(method, search, settings.synthesize.search)
@@ -516,8 +517,8 @@ def suggest(ctx: Context, db: Path, phonemes: Path, at_s: float, emotions, const
     Example:
       facesynth suggest db.h5 --phonemes corpus/labels/sad_s017.TextGrid --at 1.25
     """
-    from .errors import InputError
-    from .stages import suggest as stage
+    from facesynth.base.errors import InputError
+    from facesynth.stages import suggest as stage
 
     if top < 1:
         raise click.BadParameter(f"{top}: list at least one suggestion.", param_hint="--top")
@@ -559,7 +560,7 @@ def deform(ctx: Context, motion: Path, mesh: Path, binding: Path, output: Path):
     Example:
       facesynth deform motion.h5 --mesh corpus/face.obj --binding corpus/markers.csv -o anim.h5
     """
-    from .stages import deform as stage
+    from facesynth.stages import deform as stage
 
     s = stage.run(motion, mesh, binding, output, ctx.config.settings("deform"), ctx.overwrite)
     if s.unreached:  # eyes, teeth, the back of the head: expected, so only with -v
@@ -592,7 +593,7 @@ def keyshapes(ctx: Context, db: Path, method, count, sheet, output: Path):
     """
     import dataclasses
 
-    from .stages import keyshapes as stage
+    from facesynth.stages import keyshapes as stage
 
     settings = ctx.config.settings("keyshapes")
     settings = dataclasses.replace(settings, **{k: v for k, v in (("method", method), ("count", count)) if v is not None})
@@ -619,7 +620,7 @@ def train_trajectory(ctx: Context, db: Path, keyshapes_path: Path, output: Path)
       facesynth train-trajectory db.h5 --keyshapes keyshapes.h5 -o traj.h5
       facesynth synthesize --method trajectory traj.h5 --phonemes corpus/labels/sad_s017.TextGrid -o traj_motion.h5
     """
-    from .stages import train_trajectory as stage
+    from facesynth.stages import train_trajectory as stage
 
     s = stage.run(db, keyshapes_path, output, ctx.config.settings("trajectory"), ctx.overwrite)
     ctx.detail(f"{s.samples} training frames, weights and Gaussians in {s.train_s:.2f} s")
@@ -648,8 +649,8 @@ def fit_method(ctx: Context, method: str, db: Path, keyshapes_path: Path | None,
       facesynth fit-method coarticulation db.h5 -o coart.h5 --set coarticulation.iterations=8
       facesynth synthesize --method coarticulation coart.h5 --phonemes corpus/labels/sad_s017.TextGrid -o coart_motion.h5
     """
-    from .methods import MethodSettings
-    from .stages import fit_method as stage
+    from facesynth.domain.methods import MethodSettings
+    from facesynth.stages import fit_method as stage
 
     s = stage.run(method, db, output, MethodSettings.of(ctx.config), keyshapes_path=keyshapes_path,
                   overwrite=ctx.overwrite)
@@ -686,7 +687,7 @@ def bind(ctx: Context, capture: Path, rig, frame, up, forward, output: Path):
     """
     import dataclasses
 
-    from .stages import bind as stage
+    from facesynth.stages import bind as stage
 
     settings = ctx.config.settings("bind")
     if frame is not None:
@@ -729,7 +730,7 @@ def solve(ctx: Context, motion: Path, rig, binding, take, output: Path):
       facesynth solve motion.h5 -o solved.h5
       facesynth rig-mesh solved.h5 -o solved_anim.h5
     """
-    from .stages import solve as stage
+    from facesynth.stages import solve as stage
 
     s = stage.run(motion, output, ctx.config.settings("solve"), rig, binding, ctx.overwrite, take)
     ctx.say(f"solved {s.shapes} shapes of rig {s.rig} over {s.frames} frames ({s.iterations} iterations, "
@@ -762,7 +763,7 @@ def retarget(ctx: Context, motion: Path, keyshapes_path: Path, rig, binding, key
     """
     import dataclasses
 
-    from .stages import retarget as stage
+    from facesynth.stages import retarget as stage
 
     settings = ctx.config.settings("retarget")
     if blend:
@@ -789,7 +790,7 @@ def rig_mesh(ctx: Context, curves: Path, rig, binding, output: Path):
       facesynth solve motion.h5 -o solved.h5
       facesynth rig-mesh solved.h5 -o solved_anim.h5
     """
-    from .stages import rig_mesh as stage
+    from facesynth.stages import rig_mesh as stage
 
     s = stage.run(curves, output, rig, binding, ctx.overwrite)
     ctx.say(f"posed rig {s.rig} ({s.vertices} vertices) over {s.frames} frames -> {output}")
@@ -812,7 +813,7 @@ def openfacefx(ctx: Context, motion: Path, rig, output: Path):
       facesynth openfacefx motion.h5 -o openfacefx.h5
       facesynth render curves.h5 --compare openfacefx.h5 --view side-by-side -o compare.avi
     """
-    from .stages import openfacefx as stage
+    from facesynth.stages import openfacefx as stage
 
     s = stage.run(motion, output, rig, ctx.overwrite)
     ctx.say(f"openfacefx lip sync of {s.phones} phones on rig {s.rig} over {s.frames} frames "
@@ -846,7 +847,7 @@ def render(ctx: Context, anims, audios, view, compare, rig, binding, output: Pat
     """
     import dataclasses
 
-    from .stages import render as stage
+    from facesynth.stages import render as stage
 
     settings = ctx.config.settings("render")
     if view:
@@ -881,7 +882,7 @@ def export(ctx: Context, artifact: Path, fmt: str, fps: float | None, head_motio
       facesynth export motion.h5 --format c3d -o motion.c3d
       facesynth export curves.h5 --format obj-seq -o anim_obj
     """
-    from .stages import export as stage
+    from facesynth.stages import export as stage
 
     s = stage.run(artifact, fmt, output, ctx.config.settings("export"), fps=fps, head_motion=head_motion, audio=audio,
                   mesh=mesh, overwrite=ctx.overwrite)
@@ -920,7 +921,7 @@ def player(ctx: Context, artifact: Path | None, audio: Path | None, motion: Path
       facesynth player curves.h5 --motion motion.h5 --audio corpus/audio/neutral_s016.wav -o player.html
       facesynth player --live ws://127.0.0.1:8765 --audio corpus/audio/neutral_s016.wav -o live.html
     """
-    from .stages import player as stage
+    from facesynth.stages import player as stage
 
     if (artifact is None) == (live_url is None):
         raise click.UsageError("give either an ARTIFACT to play or --live WS_URL (a live page), not both or neither.")
@@ -980,7 +981,7 @@ def batch(ctx: Context, script: Path, db_path: Path, method: str | None, output:
     """
     import dataclasses
 
-    from .stages import batch as stage
+    from facesynth.stages import batch as stage
 
     settings = ctx.config.settings("batch")
     if outputs is not None:
@@ -1000,7 +1001,7 @@ def batch(ctx: Context, script: Path, db_path: Path, method: str | None, output:
         else:
             ctx.detail(f"{r.id}: {r.status} ({r.method}, {r.phones} phones, {r.total_s:.2f} s)")
 
-    from .methods import MethodSettings, core
+    from facesynth.domain.methods import MethodSettings, core
 
     method_settings = MethodSettings.of(ctx.config)
     s = stage.run(script, db_path, output, settings, method_settings, ctx.config.settings("ingest"),
@@ -1037,7 +1038,7 @@ def evaluate(ctx: Context, db: Path, heldout: Path, truth: Path | None, trajecto
     Example:
       facesynth evaluate db.h5 --heldout corpus.h5 --truth corpus/ -o report/
     """
-    from .stages import evaluate as stage
+    from facesynth.stages import evaluate as stage
 
     s = stage.run(db, heldout, output, ctx.config.settings("evaluate"), ctx.config.settings("synthesize"),
                   ctx.config.settings("normalize"), ctx.overwrite, truth=truth, trajectory=trajectory,
@@ -1067,7 +1068,7 @@ def capture(ctx: Context, corpus: Path, db_path: Path, take: str, output: Path):
       facesynth render curves.h5 --audio corpus/audio/neutral_s016.wav --view side-by-side \\
           --compare truth_curves.h5 -o compare.avi
     """
-    from .stages import capture as stage
+    from facesynth.stages import capture as stage
 
     s = stage.run(db_path, corpus, take, output, ctx.config.settings("normalize"),
                       ctx.config.settings("synthesize").output_fps, ctx.overwrite)
@@ -1096,8 +1097,8 @@ def tune(ctx: Context, db: Path, validation: Path, method: str | None, output: P
       facesynth tune db.h5 --validation corpus.h5 -o tuned.toml --set tune.max_evaluations=12 --set tune.starts=3
       facesynth synthesize db.h5 --phonemes corpus/labels/neutral_s016.TextGrid --config tuned.toml -o tuned.h5
     """
-    from .progress import Overall
-    from .stages import tune as stage
+    from facesynth.base.progress import Overall
+    from facesynth.stages import tune as stage
 
     bar = None
 
@@ -1153,7 +1154,7 @@ def isomap_build(ctx: Context, db: Path, output: Path, images: Path | None):
     Example:
       facesynth isomap build db.h5 -o isomap.h5 --images isomaps/
     """
-    from .stages import isomap as stage
+    from facesynth.stages import isomap as stage
 
     s = stage.run(db, output, ctx.config.settings("isomap"), images, ctx.overwrite)
     for phone, note in s.notes.items():  # small clusters get fewer neighbours: expected, so only with -v
@@ -1181,7 +1182,7 @@ def isomap_pick(ctx: Context, isomap_path: Path, phoneme: str, x: float, y: floa
       facesynth isomap db.h5 -o isomap.h5
       facesynth isomap pick isomap.h5 aa 0.5 -1.2 > frame.csv
     """
-    from .stages import isomap as stage
+    from facesynth.stages import isomap as stage
 
     picked = stage.pick(isomap_path, phoneme, x, y, pca_map)
     ctx.detail(f"triangle of frames {picked.corners} (nodes {picked.nodes}), weights {picked.weights}")
@@ -1211,7 +1212,7 @@ def isomap_page(ctx: Context, isomap_path: Path, db: Path, phonemes: Path, emoti
       facesynth isomap page isomap.h5 db.h5 --phonemes corpus/labels/neutral_s016.TextGrid \\
           --motion motion.h5 -o constraints.html
     """
-    from .stages import isomap as stage
+    from facesynth.stages import isomap as stage
 
     s = stage.page(isomap_path, db, phonemes, output, ctx.config.settings("isomap"), ctx.config.settings("ingest"),
                    emotions, constraints, motion, ctx.overwrite)
@@ -1246,7 +1247,7 @@ def db_show(ctx: Context, db_path: Path, phoneme: str | None, node: int | None):
     Example:
       facesynth db show db.h5 --node 42
     """
-    from .model.motiondb import MotionDatabase, describe
+    from facesynth.model.motiondb import MotionDatabase, describe
 
     _echo_lines(describe(MotionDatabase.read(db_path), phoneme, node))
 
@@ -1277,7 +1278,7 @@ def expression_fit(ctx: Context, normalized: Path, output: Path):
     Example:
       facesynth expression fit normalized.h5 -o expr.h5
     """
-    from .stages import expression as stage
+    from facesynth.stages import expression as stage
 
     s = stage.fit(normalized, output, ctx.config.settings("expression"), ctx.overwrite)
     for note in s.skipped:
@@ -1301,7 +1302,7 @@ def expression_analyze(ctx: Context, model: Path, motion: Path):
       facesynth expression fit normalized.h5 -o expr.h5
       facesynth expression analyze expr.h5 motion.h5 > styles.csv
     """
-    from .stages import expression as stage
+    from facesynth.stages import expression as stage
 
     _echo_lines(stage.analyze(model, motion, ctx.config.settings("expression")))
 
@@ -1328,7 +1329,7 @@ def expression_restyle(ctx: Context, model: Path, motion: Path, to, emotions, in
       echo "0.5 1.5 angry" > spans.txt
       facesynth expression restyle expr.h5 motion.h5 --emotions spans.txt --intensity 1 -o angry.h5
     """
-    from .stages import expression as stage
+    from facesynth.stages import expression as stage
 
     if (to is None) == (emotions is None):
         raise UsageError("give exactly one of --to or --emotions.")
@@ -1359,7 +1360,7 @@ def head_motion(ctx: Context, db: Path, audio: Path, corpus_path: Path, output: 
       facesynth deform moving.h5 --mesh corpus/face.obj --binding corpus/markers.csv \\
           --set deform.apply_head_motion=true -o moving_anim.h5
     """
-    from .stages import head_motion as stage
+    from facesynth.stages import head_motion as stage
 
     s = stage.run(db, corpus_path, audio, output, ctx.config.settings("head_motion"), ctx.overwrite)
     for warning in s.warnings:
@@ -1392,7 +1393,7 @@ def stream(ctx: Context, db_path: Path, audio: str, serve: str | None, livelink:
     Example:
       facesynth stream db.h5 --audio corpus/audio/neutral_s016.wav > frames.jsonl
     """
-    from .stages import stream as stage
+    from facesynth.stages import stream as stage
 
     c = ctx.config
     model = stage.load_model(db_path, c.settings("synthesize"), c.settings("stream"), c.settings("solve"), method, lookahead,
@@ -1421,7 +1422,7 @@ def prune(ctx: Context, db_path: Path, remove: str | None, auto: bool, reason: s
       facesynth prune db.h5 --auto -o db_clean.h5
       facesynth prune db.h5 --remove 12,40-42 --reason "lip marker swap" -o db_hand.h5
     """
-    from .stages import prune as stage
+    from facesynth.stages import prune as stage
 
     s = stage.run(db_path, output, ctx.config.settings("prune"), remove, auto, reason, ctx.overwrite)
     if not s.removed:
@@ -1443,7 +1444,7 @@ def devices(ctx: Context):
     Example:
       facesynth devices
     """
-    from .opencl import describe_devices
+    from facesynth.base.opencl import describe_devices
 
     for line in describe_devices():
         click.echo(line)
@@ -1462,7 +1463,7 @@ def check(ctx: Context, files: tuple[Path, ...]):
     Example:
       facesynth check corpus.h5 db.h5 motion.h5
     """
-    from .check import check_files
+    from facesynth.model.check import check_files
 
     reports = check_files(files)
     for report in reports:

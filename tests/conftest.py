@@ -16,7 +16,7 @@ import pytest
 import threadpoolctl
 from filelock import FileLock
 
-from facesynth.config import Config
+from facesynth.base.config import Config
 
 SHARED_ASSETS = Path(__file__).resolve().parents[2] / "shared" / "assets"
 
@@ -32,14 +32,14 @@ threadpoolctl.threadpool_limits(1)
 
 @functools.lru_cache(maxsize=1)
 def _opencl_probes():
-    from facesynth import opencl
+    from facesynth.base import opencl
 
     return [opencl.probe(d) for d in opencl.candidate_order(opencl.list_devices())]
 
 
 def pytest_report_header(config):
     """Which OpenCL devices the OpenCL-versus-reference tests run on, and what the rest uses."""
-    from facesynth import opencl
+    from facesynth.base import opencl
 
     probes = _opencl_probes()
     lines = [f"OpenCL {p.device.spec} {p.device.describe()}: " + ("builds" if p.ok else f"does not build ({p.reason})")
@@ -83,7 +83,7 @@ def pytest_collection_modifyitems(session, config, items):
 def opencl_device(request, monkeypatch):
     """Run the test with facesynth's OpenCL code on one device (``PYOPENCL_CTX``); skip with the
     reason when no device builds."""
-    from facesynth import opencl
+    from facesynth.base import opencl
 
     device = request.param
     if device is None:
@@ -179,7 +179,7 @@ def built_once(tmp_path_factory) -> Callable[[str, Callable[[Path], None]], Path
 
 @pytest.fixture(scope="session")
 def tiny_corpus(tmp_path_factory) -> Path:
-    from facesynth.corpus.generate import generate
+    from facesynth.domain.corpus.generate import generate
 
     return _built_once(tmp_path_factory, "tiny", lambda d: generate(d / "corpus", "tiny", seed=0)) / "corpus"
 
@@ -231,7 +231,7 @@ def held_out_take(tiny_corpus) -> str:
 @pytest.fixture(scope="session")
 def small_db_and_truth(tmp_path_factory, config) -> tuple[Path, Path]:
     """The 'small' preset's database (about 1,700 nodes) and its contamination ground truth."""
-    from facesynth.corpus.generate import generate
+    from facesynth.domain.corpus.generate import generate
     from facesynth.stages import build_db, ingest, normalize, pca
 
     def build(d: Path) -> None:

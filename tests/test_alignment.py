@@ -1,4 +1,4 @@
-"""facesynth.alignment: the fallbacks, the transcript-mismatch check, non-speech marks and
+"""facesynth.domain.speech.alignment: the fallbacks, the transcript-mismatch check, non-speech marks and
 user pronunciations, on the tiny sample corpus's speech (exact timing known)."""
 
 import csv
@@ -7,7 +7,8 @@ import dataclasses
 import numpy as np
 import pytest
 
-from facesynth.alignment import (
+from facesynth.base.errors import InputError
+from facesynth.domain.speech.alignment import (
     AlignmentFailed,
     align_robust,
     longest_voiced_pause,
@@ -16,7 +17,6 @@ from facesynth.alignment import (
     voice_activity,
     voicing,
 )
-from facesynth.errors import InputError
 from facesynth.formats.audio import read_audio
 from facesynth.formats.labels import Segment
 from facesynth.stages import align

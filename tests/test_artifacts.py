@@ -5,8 +5,8 @@ import h5py
 import numpy as np
 import pytest
 
-from facesynth.artifacts import SCHEMAS, open_artifact, read, write_artifact
-from facesynth.errors import ArtifactError, OutputExistsError
+from facesynth.base.errors import ArtifactError, OutputExistsError
+from facesynth.model.artifacts import SCHEMAS, open_artifact, read, write_artifact
 
 
 def test_stamps_and_provenance(tmp_path):
@@ -71,7 +71,7 @@ def test_existing_output_is_not_replaced_without_overwrite(tmp_path):
 
 
 def test_read_rows_fills_the_given_buffer(tmp_path):
-    from facesynth.artifacts import read_rows
+    from facesynth.model.artifacts import read_rows
 
     data = np.arange(7 * 5, dtype=np.float32).reshape(7, 5)
     with h5py.File(tmp_path / "x.h5", "w") as f:
@@ -90,14 +90,14 @@ def test_read_rows_fills_the_given_buffer(tmp_path):
 def test_sha256_of_any_file(tmp_path, content):
     import hashlib
 
-    from facesynth.artifacts import sha256_of
+    from facesynth.model.artifacts import sha256_of
 
     (tmp_path / "f").write_bytes(content)
     assert sha256_of(tmp_path / "f") == hashlib.sha256(content).hexdigest()
 
 
 def test_input_records_in_background_give_the_records_or_the_error(tmp_path):
-    from facesynth.artifacts import input_record, input_records_in_background
+    from facesynth.model.artifacts import input_record, input_records_in_background
 
     (tmp_path / "a.txt").write_text("hello")
     wait = input_records_in_background([tmp_path / "a.txt"])
@@ -110,7 +110,7 @@ def test_large_file_digests_are_remembered_until_the_file_changes(tmp_path, monk
     import hashlib
     import time
 
-    from facesynth import hashing
+    from facesynth.base import hashing
 
     monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "cache"))
     monkeypatch.setattr(hashing, "HASH_CACHE_MIN_BYTES", 4)
@@ -147,7 +147,7 @@ def test_large_file_digests_are_remembered_until_the_file_changes(tmp_path, monk
     ({"chunks": (3, 5), "dtype": ">f4"}, False),         # big-endian
 ])
 def test_row_reader_maps_plain_chunks_and_reads_anything_else(tmp_path, layout, mapped):
-    from facesynth.artifacts import RowReader
+    from facesynth.model.artifacts import RowReader
 
     data = np.arange(8 * 5, dtype=np.float32).reshape(8, 5) / 7
     with h5py.File(tmp_path / "x.h5", "w") as f:
@@ -167,14 +167,14 @@ def test_row_reader_maps_plain_chunks_and_reads_anything_else(tmp_path, layout, 
 # --- several outputs published together ----------------------------------------------------
 
 def _write(path, text, overwrite=False):
-    from facesynth.artifacts import atomic_path
+    from facesynth.model.artifacts import atomic_path
 
     with atomic_path(path, overwrite) as tmp:
         tmp.write_text(text)
 
 
 def test_outputs_of_a_group_appear_together_when_it_ends(tmp_path):
-    from facesynth.artifacts import atomic_folder, published_together, recording_published
+    from facesynth.model.artifacts import atomic_folder, published_together, recording_published
 
     published = []
     with recording_published(published), published_together():
@@ -188,7 +188,7 @@ def test_outputs_of_a_group_appear_together_when_it_ends(tmp_path):
 
 
 def test_an_error_in_a_group_leaves_none_of_its_outputs(tmp_path):
-    from facesynth.artifacts import published_together
+    from facesynth.model.artifacts import published_together
 
     with pytest.raises(RuntimeError, match="failed after the first"):
         with published_together():
@@ -200,7 +200,7 @@ def test_an_error_in_a_group_leaves_none_of_its_outputs(tmp_path):
 def test_a_group_that_cannot_publish_one_output_takes_back_the_others(tmp_path):
     """The second output's name is taken by another process while the group is written: the
     first, already in place, is taken back and the file it replaced returns."""
-    from facesynth.artifacts import published_together
+    from facesynth.model.artifacts import published_together
 
     (tmp_path / "a.h5").write_text("old a")
     with pytest.raises(OutputExistsError, match=r"b\.png: another process wrote this output"):
@@ -215,7 +215,7 @@ def test_a_group_that_cannot_publish_one_output_takes_back_the_others(tmp_path):
 def test_an_interrupt_while_a_group_is_published_leaves_none(tmp_path, monkeypatch):
     """Ctrl-C between the renames of two outputs is held until the group is back to nothing
     (the replaced output restored), then raised."""
-    from facesynth import artifacts
+    from facesynth.model import artifacts
 
     (tmp_path / "a.h5").write_text("old a")
     publish = artifacts.publish

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from facesynth.bootstrap import interval, pooled_percentile, resamples
+from facesynth.domain.evaluation.bootstrap import interval, pooled_percentile, resamples
 
 
 @pytest.mark.parametrize("q", [0.0, 2.5, 33.3, 49.9, 50.0, 97.5, 99.0, 100.0])

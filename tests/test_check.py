@@ -16,11 +16,10 @@ import numpy as np
 import pytest
 from click.testing import CliRunner
 
-from facesynth import check
-from facesynth.artifacts import SCHEMAS, input_record
 from facesynth.cli import main
-from facesynth.methods import MethodSettings
-from facesynth.model import spec
+from facesynth.domain.methods import MethodSettings
+from facesynth.model import check, spec
+from facesynth.model.artifacts import SCHEMAS, input_record
 
 DOC = Path(__file__).resolve().parents[1] / "docs" / "file-format.md"
 

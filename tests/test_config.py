@@ -4,8 +4,7 @@ from pathlib import Path
 import pytest
 from click.testing import CliRunner
 
-from facesynth.cli import main
-from facesynth.config import (
+from facesynth.base.config import (
     DECLARATIONS,
     SAMPLE_CORPUS_PRESETS,
     SECTIONS,
@@ -14,7 +13,8 @@ from facesynth.config import (
     default_config,
     reference_markdown,
 )
-from facesynth.errors import ConfigError
+from facesynth.base.errors import ConfigError
+from facesynth.cli import main
 
 DOCS = Path(__file__).resolve().parents[1] / "docs" / "configuration.md"
 
@@ -122,7 +122,7 @@ def test_bad_toml_file_is_named(tmp_path):
 
 
 def test_click_choices_come_from_the_declarations():
-    from facesynth.corpus.generate import PRESETS
+    from facesynth.domain.corpus.generate import PRESETS
 
     def option(command, name):
         return next(p for p in command.params if p.name == name)
@@ -137,7 +137,7 @@ def test_click_choices_come_from_the_declarations():
 
 def test_the_settings_reference_is_up_to_date():
     assert DOCS.read_text("utf-8") == reference_markdown(), (
-        "docs/configuration.md is stale; rewrite it with `python -m facesynth.config > docs/configuration.md`.")
+        "docs/configuration.md is stale; rewrite it with `python -m facesynth.base.config > docs/configuration.md`.")
     for declared in DECLARATIONS.values():
         for name in declared:
             assert f"| `{name}` |" in reference_markdown()

@@ -7,11 +7,11 @@ import pytest
 import soundfile as sf
 from click.testing import CliRunner
 
+from facesynth.base.config import SECTIONS
+from facesynth.base.errors import InputError
 from facesynth.cli import READS, main
-from facesynth.config import SECTIONS
-from facesynth.errors import InputError
+from facesynth.domain.rendering import video
 from facesynth.formats.labels import read_phone_segments
-from facesynth.rendering import video
 
 
 def _run(*args):
@@ -212,7 +212,7 @@ def test_emotion_span_partly_outside_is_fine(tiny_db, utterance, tmp_path):
 
 
 def test_emotion_span_between_midpoints_is_warned_about(tiny_db, utterance, tmp_path):
-    from facesynth.search.inputs import read_utterance
+    from facesynth.domain.search.inputs import read_utterance
 
     utt = read_utterance(utterance[0], ("phones",))
     spans = tmp_path / "spans.txt"

@@ -6,7 +6,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from facesynth.facerig import load_face_rig
+from facesynth.domain.rig.face import load_face_rig
 
 ASSET = Path(__file__).resolve().parents[2] / "shared" / "assets" / "ict-face"
 

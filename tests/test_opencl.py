@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 from click.testing import CliRunner
 
-from facesynth import opencl
+from facesynth.base import opencl
 from facesynth.cli import main
 
 BROKEN = "error: unknown target CPU 'generic'"

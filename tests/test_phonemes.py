@@ -1,7 +1,7 @@
 import pytest
 
-from facesynth.errors import InputError
-from facesynth.phonemes import PHONES, VISEME_GROUPS, map_phones, to_festival, viseme
+from facesynth.base.errors import InputError
+from facesynth.base.phonemes import PHONES, VISEME_GROUPS, map_phones, to_festival, viseme
 
 
 def test_cmu_stress_marks_are_dropped_and_unstressed_ah_becomes_schwa():

@@ -1,4 +1,4 @@
-"""The stage declarations (facesynth.pipeline) agree with the commands, the artifact kinds,
+"""The stage declarations (facesynth.base.pipeline) agree with the commands, the artifact kinds,
 the settings and the docs generated from them."""
 
 import dataclasses
@@ -8,11 +8,11 @@ from pathlib import Path
 import click
 import pytest
 
-from facesynth import pipeline
-from facesynth.artifacts import PRODUCERS, SCHEMAS
+from facesynth.base import pipeline
+from facesynth.base.config import SECTIONS
+from facesynth.base.pipeline import STAGE, STAGES
 from facesynth.cli import main
-from facesynth.config import SECTIONS
-from facesynth.pipeline import STAGE, STAGES
+from facesynth.model.artifacts import PRODUCERS, SCHEMAS
 
 DOC = Path(__file__).resolve().parents[1] / "docs" / "pipeline.md"
 
@@ -94,8 +94,8 @@ def test_every_kind_has_its_writers_named():
 
 
 def test_a_wrong_kind_names_every_command_that_makes_the_right_one(tmp_path):
-    from facesynth.artifacts import open_artifact, write_artifact
-    from facesynth.errors import ArtifactError
+    from facesynth.base.errors import ArtifactError
+    from facesynth.model.artifacts import open_artifact, write_artifact
 
     with write_artifact(tmp_path / "c.h5", "curves"):
         pass
@@ -113,7 +113,7 @@ def test_the_folder_of_an_obj_sequence_is_a_folder_only_for_that_format():
 def test_pipeline_md_stage_table_is_generated_from_the_declarations():
     text = DOC.read_text(encoding="utf-8")
     assert text == pipeline.document(text), ("docs/pipeline.md is out of date: run make docs "
-                                             "(python -m facesynth.pipeline docs/pipeline.md)")
+                                             "(python -m facesynth.base.pipeline docs/pipeline.md)")
     for stage in STAGES:
         assert f"`{stage.usage.replace('|', chr(92) + '|')}`" in text
 
@@ -130,8 +130,8 @@ def test_the_declarations_import_nothing_of_facesynth():
 def test_a_folder_filled_in_place_may_exist_before_the_run(tmp_path):
     """batch writes into its folder line by line and a rerun skips the lines done: the check made
     before any work accepts the existing folder (it refused it as 'a folder, but this output is one file')."""
+    from facesynth.base.errors import OutputExistsError
     from facesynth.cli import _check_outputs
-    from facesynth.errors import OutputExistsError
 
     (tmp_path / "lines").mkdir()
     (tmp_path / "lines" / "l1.motion.h5").write_text("done before")

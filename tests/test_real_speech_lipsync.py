@@ -134,7 +134,7 @@ def test_phones_from_audio_prefers_facesynths_own_audio_only_alignment(tmp_path,
     import click
 
     import facesynth.cli
-    from facesynth.config import Config
+    from facesynth.base.config import Config
     from facesynth.formats.audio import write_wav
     from facesynth.formats.labels import write_textgrid
 
@@ -160,7 +160,7 @@ def test_phones_from_audio_prefers_facesynths_own_audio_only_alignment(tmp_path,
 
 def test_phones_from_audio_tiles_the_audio(tmp_path):
     pytest.importorskip("pocketsphinx", reason="pocketsphinx is needed for phone recognition")
-    from facesynth.config import Config
+    from facesynth.base.config import Config
     from facesynth.formats.audio import write_wav
 
     rate = 16000

@@ -1,4 +1,4 @@
-"""facesynth.recognition: phones from audio alone (recognised words aligned, or a phone loop),
+"""facesynth.domain.speech.recognition: phones from audio alone (recognised words aligned, or a phone loop),
 on real speech (praatio's ``bobby``, hand-labelled) and the tiny sample corpus; a given text
 always wins; silence is refused in one sentence."""
 
@@ -10,12 +10,12 @@ import numpy as np
 import pytest
 from click.testing import CliRunner
 
-from facesynth import recognition
-from facesynth.alignment import AlignmentFailed
+from facesynth.base.phonemes import PAU, to_festival
 from facesynth.cli import main
+from facesynth.domain.speech import recognition
+from facesynth.domain.speech.alignment import AlignmentFailed
 from facesynth.formats.audio import read_audio
 from facesynth.formats.labels import read_textgrid
-from facesynth.phonemes import PAU, to_festival
 
 SPEECH = Path(__file__).parent / "data" / "speech"
 
@@ -129,7 +129,7 @@ def test_synthesize_from_audio_alone_writes_a_motion(tiny_db, tiny_corpus, held_
 
 
 def _settings_of_cli():
-    from facesynth.config import Config
+    from facesynth.base.config import Config
 
     return Config.load().settings("align")
 

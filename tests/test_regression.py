@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from facesynth import evaluation
+from facesynth.domain.evaluation import held_out as evaluation
 
 EXPECTED = json.loads((Path(__file__).parent / "regression" / "expected_tiny.json").read_text())
 HIGHER_IS_BETTER = {"lip_closure_rate", "emotion_agreement"}

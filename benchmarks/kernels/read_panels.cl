@@ -2,7 +2,7 @@
 // matrix once, with the same access pattern as min_plus_panels, and keep a sum so the
 // reads cannot be optimized away. Used by benchmarks/dp_table_v.py as the reference.
 #ifndef PANEL
-#error "build with -DPANEL=<columns per panel> (facesynth.search.dp.PANEL)"
+#error "build with -DPANEL=<columns per panel> (facesynth.domain.search.dp.PANEL)"
 #endif
 #define NVEC (PANEL / 8)
 

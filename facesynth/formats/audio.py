@@ -7,8 +7,8 @@ from pathlib import Path
 import numpy as np
 import soundfile as sf
 
-from .. import limits
-from ..errors import InputError
+from facesynth.base import limits
+from facesynth.base.errors import InputError
 
 
 def read_audio(path: Path) -> tuple[np.ndarray, int]:

@@ -22,7 +22,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..errors import InputError
+from facesynth.base.errors import InputError
 
 BLOCK = 512
 #: The parameter section's 4th byte: 83 + processor type.

@@ -29,7 +29,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..errors import InputError
+from facesynth.base.errors import InputError
 
 MM_TO_M = 1e-3
 

@@ -8,8 +8,8 @@ from pathlib import Path
 
 import numpy as np
 
-from .. import limits
-from ..errors import InputError
+from facesynth.base import limits
+from facesynth.base.errors import InputError
 
 
 def read_mesh(path: Path) -> tuple[np.ndarray, np.ndarray]:

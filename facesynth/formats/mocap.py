@@ -15,8 +15,9 @@ from pathlib import Path
 
 import numpy as np
 
-from .. import limits
-from ..errors import InputError
+from facesynth.base import limits
+from facesynth.base.errors import InputError
+
 from .c3dfile import MODEL_OUTPUT_GROUPS, C3dPoints, read_points
 
 log = logging.getLogger(__name__)

@@ -7,7 +7,7 @@
 // Plain operators only: this PoCL build does not inline fmin/select/vload.
 
 #ifndef PANEL
-#error "build with -DPANEL=<columns per panel> (facesynth.search.dp.PANEL)"
+#error "build with -DPANEL=<columns per panel> (facesynth.domain.search.dp.PANEL)"
 #endif
 #define NVEC (PANEL / 8)
 

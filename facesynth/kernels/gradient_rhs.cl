@@ -1,4 +1,4 @@
-// Right-hand sides of deformation-gradient blending (facesynth/retarget/gradients.py), for a
+// Right-hand sides of deformation-gradient blending (facesynth/domain/retarget/gradients.py), for a
 // group of T frames (a multiple of 16; each work-item takes 8 or 16 neighbouring frames as a vector):
 // each triangle's two blended edges R (S e) minus the same edges of the linear blend, then
 // summed onto the vertices (E^T) by a gather over each vertex's triangles (no atomics).

@@ -6,12 +6,12 @@
 //   VGap(i, j) = sum_k || first_vel[j, k] - last_vel[i, k] ||          (Eq. 9)
 //   TC(i, j)   = 0 if pre[j] == i; (alpha3 PGap + VGap) + alpha1 PNT if pre[j] < 0; else ((alpha2 DSC + alpha3 PGap) + VGap) + PNT [viseme(i) != viseme(pre(j))]
 //
-// Layout (facesynth.search.pairs.DeviceLayout): x and y are (N, DIMS8 * 8), zero-padded; the
+// Layout (facesynth.domain.search.pairs.DeviceLayout): x and y are (N, DIMS8 * 8), zero-padded; the
 // boundary states are (N, 3, MQ * 8), the x, y and z coordinates of the markers in planes,
 // zero-padded (a padded marker adds sqrt(0) = 0). Each sum runs in eight lanes (element or
 // marker d goes to lane d % 8, front to back), and the lanes are added as
 // ((l0 + l1) + (l2 + l3)) + ((l4 + l5) + (l6 + l7)); no contraction, correctly rounded sqrt.
-// The NumPy reference (facesynth.search.pairs) does the same operations in the same order, so
+// The NumPy reference (facesynth.domain.search.pairs) does the same operations in the same order, so
 // the values are bit-identical. The host passes alpha1 * PNT already rounded to float32.
 #pragma OPENCL FP_CONTRACT OFF
 
@@ -155,7 +155,7 @@ __kernel void tc_block(FEATURE_PARAMS,
 // all rows (only rows whose lower bound reaches the current best are skipped, and best only
 // takes computed values); evals[c] counts the pair costs computed.
 //
-// The rows come in groups of rows close in pivot space (facesynth.search.pairs.row_groups):
+// The rows come in groups of rows close in pivot space (facesynth.domain.search.pairs.row_groups):
 // group g is rows[group_start[g] .. group_start[g + 1]), sorted by phi ascending inside, the
 // groups by their smallest phi. Per group the host gives the range [lo, hi] of each pivot
 // distance over its rows and the set of row visemes (a bit mask; all bits when a viseme is
@@ -335,7 +335,7 @@ __kernel void pruned_columns(FEATURE_PARAMS, const float slack, __global const u
 }
 
 // The device layout of a boundary state: (n, 3M) interleaved x, y, z per marker ->
-// (n, 3, MQ * 8) coordinate planes, zero-padded (facesynth.search.pairs.DeviceLayout).
+// (n, 3, MQ * 8) coordinate planes, zero-padded (facesynth.domain.search.pairs.DeviceLayout).
 __kernel void to_planes(__global const float *src, const int n, const int m, __global float *dst)
 {
     const int node = get_global_id(0);

@@ -9,7 +9,7 @@
 //                triangle, else shade every sample and average them.
 // screen: per vertex (x, y, depth, 0) in sample units; normals: per vertex, camera frame;
 // albedo: per vertex linear (r, g, b, specular); eye: per vertex cosine to the cornea's axis
-// (< -1.5 off the eyeballs); params: the lights and eye colours (facesynth/rendering/raster.py).
+// (< -1.5 off the eyeballs); params: the lights and eye colours (facesynth/domain/rendering/raster.py).
 #pragma OPENCL FP_CONTRACT OFF
 
 #ifndef SAMPLES

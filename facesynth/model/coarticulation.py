@@ -1,7 +1,7 @@
 """The fitted Cohen-Massaro coarticulation model and the ``coarticulation`` artifact: per phone type
 (a ``phone|emotion`` label, or ``pau``) a target pose in the database's PCA coefficients, a dominance
 magnitude and a rate, with the PCA model and the rest pose, so that an utterance is synthesized from
-this file alone (:mod:`facesynth.methods.coarticulation`). Written by ``facesynth fit-method
+this file alone (:mod:`facesynth.domain.methods.coarticulation`). Written by ``facesynth fit-method
 coarticulation``; read by ``facesynth synthesize --method coarticulation``.
 """
 
@@ -12,7 +12,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..artifacts import attr, open_artifact, read, read_strings, write_artifact, write_strings
+from .artifacts import attr, open_artifact, read, read_strings, write_artifact, write_strings
 from .pca import PcaModel
 from .trajectory import stored_records
 

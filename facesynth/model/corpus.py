@@ -7,8 +7,9 @@ from pathlib import Path
 
 import numpy as np
 
-from ..artifacts import attr, open_artifact, read, stamp, write_artifact
-from ..errors import InputError
+from facesynth.base.errors import InputError
+
+from .artifacts import attr, open_artifact, read, stamp, write_artifact
 from .tables import Phones, Takes, read_tables, write_tables
 
 

@@ -11,8 +11,9 @@ from pathlib import Path
 
 import numpy as np
 
-from ..artifacts import attr, open_artifact, read, read_strings, write_artifact, write_strings
-from ..errors import InputError
+from facesynth.base.errors import InputError
+
+from .artifacts import attr, open_artifact, read, read_strings, write_artifact, write_strings
 from .provenance import FrameProvenance
 
 #: What made the curves: a direct solve, key-shape retargeting, a take's true weights, a file

@@ -14,7 +14,7 @@ from pathlib import Path
 import h5py
 import numpy as np
 
-from ..artifacts import attr, open_artifact, read, write_artifact
+from .artifacts import attr, open_artifact, read, write_artifact
 from .tables import Phones, Takes, read_tables, write_tables
 
 

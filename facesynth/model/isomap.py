@@ -7,8 +7,9 @@ from pathlib import Path
 
 import numpy as np
 
-from ..artifacts import open_artifact, read, read_strings, stamp, write_artifact, write_strings
-from ..errors import InputError
+from facesynth.base.errors import InputError
+
+from .artifacts import open_artifact, read, read_strings, stamp, write_artifact, write_strings
 from .pca import PcaModel
 
 MAP_KINDS = ("isomap", "pca_map")

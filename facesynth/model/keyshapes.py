@@ -11,7 +11,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..artifacts import attr, attr_choice, open_artifact, read, read_strings, stamp, write_artifact, write_strings
+from .artifacts import attr, attr_choice, open_artifact, read, read_strings, stamp, write_artifact, write_strings
 
 #: The ways key-shapes are chosen.
 METHODS = ("pca", "affinity")

@@ -1,10 +1,10 @@
 """The artifact kinds: each kind's schema, the commands that make it and the version of the
-group encodings. The data every layer above the formats reads (:mod:`facesynth.artifacts`,
-:mod:`facesynth.check`, :mod:`facesynth.model.spec`); it imports only the stage declarations
-(:mod:`facesynth.pipeline`, standard library only), whose outputs name the commands that make each kind.
+group encodings. The data every layer above the formats reads (:mod:`facesynth.model.artifacts`,
+:mod:`facesynth.model.check`, :mod:`facesynth.model.spec`); it imports only the stage declarations
+(:mod:`facesynth.base.pipeline`, standard library only), whose outputs name the commands that make each kind.
 """
 
-from ..pipeline import producers
+from facesynth.base.pipeline import producers
 
 #: Current schema of each artifact kind; bumped on an incompatible change.
 SCHEMAS: dict[str, int] = {
@@ -24,7 +24,7 @@ SCHEMAS: dict[str, int] = {
 }
 
 #: The commands that write each kind, for messages that say what to do ("pass the output of
-#: `facesynth synthesize`, ... or `facesynth capture`"), from the declarations in facesynth.pipeline.
+#: `facesynth synthesize`, ... or `facesynth capture`"), from the declarations in facesynth.base.pipeline.
 PRODUCERS: dict[str, str] = {kind: producers(kind) for kind in SCHEMAS}
 
 #: Version of each group encoding (the ``encoding-type`` attribute names the group's layout,

@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ..artifacts import attr, open_artifact, read, read_strings, stamp, write_artifact, write_strings
+from .artifacts import attr, open_artifact, read, read_strings, stamp, write_artifact, write_strings
 from .provenance import FrameProvenance
 
 if TYPE_CHECKING:

@@ -8,8 +8,9 @@ from pathlib import Path
 
 import numpy as np
 
-from ..artifacts import attr, open_artifact, read, read_strings, stamp, write_artifact, write_strings
-from ..errors import InputError
+from facesynth.base.errors import InputError
+
+from .artifacts import attr, open_artifact, read, read_strings, stamp, write_artifact, write_strings
 from .provenance import Provenance, SearchPath, of_motion
 
 

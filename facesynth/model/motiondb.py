@@ -2,7 +2,7 @@
 
 One motion node per phone occurrence of the training takes, the frames they index (the
 phoneme clusters), and per node the features from which the transition terms of Table I
-(DSC, PGap, VGap) of any pair are computed on demand (:mod:`facesynth.search.pairs`): the
+(DSC, PGap, VGap) of any pair are computed on demand (:mod:`facesynth.domain.search.pairs`): the
 file grows linearly with the number of nodes. Databases of schema 1 stored (N, N) pair
 tables instead; reading one fails with a sentence that says to rebuild it with build-db.
 """
@@ -17,9 +17,11 @@ from pathlib import Path
 import h5py
 import numpy as np
 
-from ..artifacts import attr, open_artifact, read, read_strings, stamp, write_artifact, write_strings
-from ..errors import InputError
-from ..phonemes import to_festival
+from facesynth.base.errors import InputError
+from facesynth.base.opencl import HOST_ALIGNMENT
+from facesynth.base.phonemes import to_festival
+
+from .artifacts import attr, open_artifact, read, read_strings, stamp, write_artifact, write_strings
 from .frames import HeadFrames, relative_to_take, write_head_frames
 from .pca import PcaModel
 from .tables import Phones, Takes, read_tables, write_tables
@@ -102,6 +104,24 @@ def node_frames(nodes: Nodes, n_frames: int) -> tuple[np.ndarray, np.ndarray]:
         node[sl] = k
         relative[sl] = np.linspace(0.0, 1.0, sl.stop - sl.start)
     return node, relative
+
+
+@dataclass(frozen=True)
+class TransitionArrays:
+    """The per-node transition features a ``motiondb`` stores (N nodes, M markers, D DSC terms):
+    ``first_pos``, ``last_pos`` (N, 3M) float32 mm and ``first_vel``, ``last_vel`` (N, 3M)
+    float32 mm/frame (each node's first and last frame); ``dsc_out``, ``dsc_in`` (N, D) float32
+    mm and ``dsc_scale`` (N,) float32 1/frame^3 (paper Eq. 6); ``pivot_distances``, four (N, P)
+    float32 arrays (mm, mm, mm/frame, mm/frame) for the search's bounds."""
+
+    first_pos: np.ndarray
+    last_pos: np.ndarray
+    first_vel: np.ndarray
+    last_vel: np.ndarray
+    dsc_out: np.ndarray
+    dsc_in: np.ndarray
+    dsc_scale: np.ndarray
+    pivot_distances: tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]
 
 
 @dataclass
@@ -213,41 +233,23 @@ class MotionDatabase:
             keys = [f"boundary/{k}" for k in BOUNDARY_KEYS] + [f"transition/{k}" for k in DSC_KEYS + PIVOT_KEYS]
             return int(sum(f[k].size * f[k].dtype.itemsize for k in keys))
 
-    def read_features(self):
-        """The per-node transition features (a :class:`~facesynth.search.pairs.PairFeatures`)."""
-        from ..opencl import HOST_ALIGNMENT
-        from ..search.pairs import PairFeatures
-
-        with self._opened() as f:  # page-aligned: an OpenCL CPU device reads them in place
-            boundary = [read(f, f"boundary/{k}", HOST_ALIGNMENT) for k in BOUNDARY_KEYS]
-            first_pos, last_pos, first_vel, last_vel = boundary
-            return PairFeatures(first_pos, last_pos, first_vel, last_vel,
-                                *(read(f, f"transition/{k}", HOST_ALIGNMENT) for k in DSC_KEYS), self.nodes.viseme,
-                                self.nodes.pre, tuple(read(f, f"transition/{k}") for k in PIVOT_KEYS))
-
-    def transition_costs(self, settings, opencl: bool | None = None):
-        """Table I's costs for ``settings`` (SynthesizeSettings), computed on demand
-        (a :class:`~facesynth.search.pairs.TransitionCosts`); on OpenCL when ``opencl`` (default:
-        ``settings.use_opencl`` and a device that builds)."""
-        from ..opencl import use_opencl
-        from ..search.pairs import TransitionCosts
-
-        if opencl is None:
-            opencl = use_opencl(settings.use_opencl)
-        return TransitionCosts(self.read_features(), settings, opencl)
-
-    def transition(self, settings) -> np.ndarray:
-        """The full (N, N) float32 TC matrix of Table I for ``settings`` (SynthesizeSettings);
-        N^2 memory, for small databases and the dense reference DP."""
-        return self.transition_costs(settings).dense()
-
-    def transition_panels(self, settings):
-        """The full TC matrix in the panel-major layout of the dense OpenCL DP (a PanelMatrix)."""
-        return self.transition_costs(settings).panels()
+    def transition_arrays(self) -> TransitionArrays:
+        """The per-node transition features as stored (the search builds its pair terms from
+        them: :func:`facesynth.domain.search.pairs.node_features`), page-aligned so that an
+        OpenCL CPU device reads them in place."""
+        with self._opened() as f:
+            first_pos, last_pos, first_vel, last_vel = (read(f, f"boundary/{k}", HOST_ALIGNMENT) for k in BOUNDARY_KEYS)
+            dsc_out, dsc_in, dsc_scale = (read(f, f"transition/{k}", HOST_ALIGNMENT) for k in DSC_KEYS)
+            pivots = tuple(read(f, f"transition/{k}") for k in PIVOT_KEYS)
+            return TransitionArrays(first_pos, last_pos, first_vel, last_vel, dsc_out, dsc_in, dsc_scale,
+                                    pivots)  # type: ignore[arg-type]
 
     def write(self, path: Path, features, *, config: str, inputs, overwrite: bool = False) -> None:
-        """Write the database with its transition ``features`` (PairFeatures); ``frames.markers``
-        must be loaded."""
+        """Write the database with its transition ``features`` (anything with the fields of
+        :class:`TransitionArrays`, such as the search's ``PairFeatures``, its pivot distances
+        computed); ``frames.markers`` must be loaded."""
+        if features.pivot_distances is None:
+            raise ValueError("MotionDatabase.write: the features' pivot distances are not computed")
         with write_artifact(path, self.KIND, config=config, inputs=inputs, overwrite=overwrite) as g:
             write_tables(g, self.takes, self.phones, self.marker_names)
             self.model.write(g)
@@ -267,10 +269,7 @@ class MotionDatabase:
             tr.create_dataset("dsc_out", data=np.asarray(features.dsc_out, np.float32)).attrs["units"] = "mm"
             tr.create_dataset("dsc_in", data=np.asarray(features.dsc_in, np.float32)).attrs["units"] = "mm"
             tr.create_dataset("dsc_scale", data=np.asarray(features.dsc_scale, np.float32)).attrs["units"] = "1/frame^3"
-            from ..search.pairs import pivot_distances
-
-            distances = features.pivot_distances if features.pivot_distances is not None else pivot_distances(features)
-            for key, value, units in zip(PIVOT_KEYS, distances, ("mm", "mm", "mm/frame", "mm/frame")):
+            for key, value, units in zip(PIVOT_KEYS, features.pivot_distances, ("mm", "mm", "mm/frame", "mm/frame")):
                 tr.create_dataset(key, data=np.asarray(value, np.float32)).attrs["units"] = units
             if self.pruned is not None:
                 q = stamp(g.create_group("pruned"), "pruned")

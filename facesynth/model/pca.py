@@ -8,7 +8,7 @@ from pathlib import Path
 import h5py
 import numpy as np
 
-from ..artifacts import open_artifact, read, stamp, write_artifact
+from .artifacts import open_artifact, read, stamp, write_artifact
 from .frames import HeadFrames, read_head_frames, write_head_frames
 from .tables import Phones, Takes, read_tables, write_tables
 

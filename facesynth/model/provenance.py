@@ -16,7 +16,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..artifacts import read, read_strings, stamp, write_strings
+from .artifacts import read, read_strings, stamp, write_strings
 
 #: What made the frames the provenance describes (the motion's ``source``).
 ORIGINS = ("synthesis", "trajectory", "capture")

@@ -24,7 +24,8 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..pipeline import writers
+from facesynth.base.pipeline import writers
+
 from .kinds import ENCODING_VERSION, SCHEMAS
 
 #: What each shape symbol counts.
@@ -162,7 +163,7 @@ class Kind:
     """An artifact kind at one schema: its root entries (shared blocks included) and root
     attributes beyond the common ones. ``variant_attr`` names the root attribute that selects
     a variant (absent: ``variants[0]``). The commands that write it are declared with the
-    stages (:func:`facesynth.pipeline.writers`)."""
+    stages (:func:`facesynth.base.pipeline.writers`)."""
 
     name: str
     schema: int

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 import h5py
 import numpy as np
 
-from ..artifacts import read, read_strings, stamp, write_strings
+from .artifacts import read, read_strings, stamp, write_strings
 
 
 @dataclass

@@ -1,7 +1,7 @@
 """The compact key-shape trajectory model and the ``trajectory`` artifact (Huang et al. §5.4):
 per phone, and per (phone, emotion) where the training data allow, a Gaussian (mean and diagonal
 covariance) of the key-shape weights, with the key-shapes themselves, so that a whole utterance
-is synthesized from this file alone (:mod:`facesynth.methods.trajectory`). Written by
+is synthesized from this file alone (:mod:`facesynth.domain.methods.trajectory`). Written by
 ``facesynth train-trajectory``; read by ``facesynth synthesize --method trajectory``.
 
 Key-shapes: one joint set, the union of every emotion's key-shapes of a ``keyshapes`` artifact;
@@ -20,7 +20,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..artifacts import attr, attr_choice, open_artifact, read, read_strings, write_artifact, write_strings
+from .artifacts import attr, attr_choice, open_artifact, read, read_strings, write_artifact, write_strings
 
 #: Which frames of a phone token feed its Gaussian.
 SAMPLINGS = ("span", "centre")

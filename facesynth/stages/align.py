@@ -1,6 +1,6 @@
 """``facesynth align``: phone-level forced alignment of speech to its text (see
-:mod:`facesynth.alignment`: pocketsphinx with fallbacks), or, without a text, phones
-recognised from the speech alone (:mod:`facesynth.recognition`), written as a TextGrid with
+:mod:`facesynth.domain.speech.alignment`: pocketsphinx with fallbacks), or, without a text, phones
+recognised from the speech alone (:mod:`facesynth.domain.speech.recognition`), written as a TextGrid with
 phone and word tiers (no word tier when phones were recognised without words)."""
 
 from __future__ import annotations
@@ -8,14 +8,14 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..alignment import read_pronunciations
-from ..artifacts import atomic_path, check_output
-from ..config import AlignSettings
-from ..errors import InputError
-from ..formats.audio import read_audio
-from ..formats.labels import write_textgrid
-from ..phonemes import PAU
-from ..recognition import align_or_recognize
+from facesynth.base.config import AlignSettings
+from facesynth.base.errors import InputError
+from facesynth.base.phonemes import PAU
+from facesynth.domain.speech.alignment import read_pronunciations
+from facesynth.domain.speech.recognition import align_or_recognize
+from facesynth.formats.audio import read_audio
+from facesynth.formats.labels import write_textgrid
+from facesynth.model.artifacts import atomic_path, check_output
 
 
 @dataclass(frozen=True)

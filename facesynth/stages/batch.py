@@ -1,10 +1,10 @@
 """``facesynth batch``: a script of dialogue lines -> per-line motion (and what pipelines import:
 rig curves, ARKit CSV, glTF with the audio, USD, a video; or a plain mesh's animation) on Dask,
-with a summary of every line (see :mod:`facesynth.batch`).
+with a summary of every line (see :mod:`facesynth.domain.batch`).
 
 Every line is synthesized by one member of the method family (``method``: default
 ``synthesize.search``, i.e. the DP) through the same shared core as ``facesynth synthesize``
-(:mod:`facesynth.methods.core`), under the command's ``[limits]``, which the job carries to the
+(:mod:`facesynth.domain.methods.core`), under the command's ``[limits]``, which the job carries to the
 workers. The script is checked first: a file without the required columns is refused before any work
 (and before a cluster is started). Each line then runs as one task; the summary
 (``summary.csv``, ``summary.html``) lists status, the alignment method, phone count, timings
@@ -18,13 +18,8 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
-from .. import limits, methods
-from ..artifacts import check_output_folder, open_artifact, sha256_of
-from ..batch.line import RIG_OUTPUTS, Job, LineResult
-from ..batch.report import write_summary
-from ..batch.runner import dask_client, run_lines
-from ..batch.script import read_script
-from ..config import (
+from facesynth.base import limits
+from facesynth.base.config import (
     AlignSettings,
     BatchSettings,
     Config,
@@ -35,10 +30,16 @@ from ..config import (
     SolveSettings,
     SynthesizeSettings,
 )
-from ..errors import InputError, UsageError
-from ..methods import MethodSettings
-from ..progress import progress
-from ..retarget.rig import BUILTIN
+from facesynth.base.errors import InputError, UsageError
+from facesynth.base.progress import progress
+from facesynth.domain import methods
+from facesynth.domain.batch.line import RIG_OUTPUTS, Job, LineResult
+from facesynth.domain.batch.report import write_summary
+from facesynth.domain.batch.runner import dask_client, run_lines
+from facesynth.domain.batch.script import read_script
+from facesynth.domain.methods import MethodSettings
+from facesynth.domain.rig.loading import BUILTIN
+from facesynth.model.artifacts import check_output_folder, open_artifact, sha256_of
 
 
 def prepare(script: Path, db: Path, out_dir: Path, settings: BatchSettings, synthesize: SynthesizeSettings | MethodSettings,
@@ -52,7 +53,7 @@ def prepare(script: Path, db: Path, out_dir: Path, settings: BatchSettings, synt
     ``solve``, ``export``: ``[solve]`` and ``[export]`` (None: the packaged defaults); ``rig``,
     ``rig_binding``: the rig of the curves, arkit, gltf, usd and avi outputs (None: the built-in
     rig) and the markers placed on it. The job carries the ``[limits]`` in force
-    (:func:`facesynth.limits.current`)."""
+    (:func:`facesynth.base.limits.current`)."""
     if isinstance(synthesize, SynthesizeSettings):
         synthesize = MethodSettings.packaged(synthesize=synthesize)
     member = methods.get(method or synthesize.synthesize.search)
@@ -85,7 +86,7 @@ def prepare(script: Path, db: Path, out_dir: Path, settings: BatchSettings, synt
 def _check_rig(rig: Path | None, rig_binding: Path | None, outputs) -> str:
     """Read the rig of the rig outputs once, before any work (a user's rig without its binding, or
     without the ARKit names an arkit output needs, is refused); returns its sha256."""
-    from ..retarget.rig import arkit_to_rig, load_rig
+    from facesynth.domain.rig.loading import arkit_to_rig, load_rig
 
     if rig is not None and rig_binding is None:
         raise UsageError(f"{rig}: a user's rig needs --rig-binding, a CSV of marker,vertex placing the motion's "

@@ -1,8 +1,8 @@
 """``facesynth build-db``: the motion-node database (paper III, VI-B).
 
 The nodes (one per phone occurrence of the training takes) and their DSC features (Eq. 6) are
-:mod:`facesynth.search.nodes`; the boundary states of PGap and VGap (Eq. 8-9) are
-:func:`facesynth.search.pairs.boundary_states`. The transition cost (Table I) of any ordered
+:mod:`facesynth.domain.search.nodes`; the boundary states of PGap and VGap (Eq. 8-9) are
+:func:`facesynth.domain.search.pairs.boundary_states`. The transition cost (Table I) of any ordered
 pair is computed on demand from these small per-node features; no (N, N) table is stored, so
 the database grows linearly with the number of nodes N. The frames of all nodes, with their
 relative time in the node, form the phoneme clusters.
@@ -16,12 +16,12 @@ from pathlib import Path
 
 import numpy as np
 
-from ..config import BuildDbSettings, settings_json
-from ..limits import bound, require_memory
-from ..model.motiondb import MotionDatabase
-from ..model.pca import PcaFrames
-from ..search.nodes import build_nodes, dsc_features
-from ..search.pairs import PairFeatures, boundary_states
+from facesynth.base.config import BuildDbSettings, settings_json
+from facesynth.base.limits import bound, require_memory
+from facesynth.domain.search.nodes import build_nodes, dsc_features
+from facesynth.domain.search.pairs import PairFeatures, boundary_states, pivot_distances
+from facesynth.model.motiondb import MotionDatabase
+from facesynth.model.pca import PcaFrames
 
 
 def build(pca: PcaFrames, settings: BuildDbSettings, source: str = "") -> tuple[MotionDatabase, PairFeatures, dict]:
@@ -44,6 +44,7 @@ def build(pca: PcaFrames, settings: BuildDbSettings, source: str = "") -> tuple[
     features = PairFeatures(*(np.ascontiguousarray(a, np.float32) for a in states[:2]),  # type: ignore[arg-type, call-arg]
                             *(np.ascontiguousarray(a, np.float32) for a in states[2:]), x, y, scale,
                             nodes.viseme, nodes.pre)
+    features.pivot_distances = pivot_distances(features)
     db = MotionDatabase(pca.takes, pca.phones, pca.marker_names, pca.model, coeffs, pca.frames, nodes)
     return db, features, timings
 

@@ -9,14 +9,14 @@ from pathlib import Path
 
 import numpy as np
 
-from ..artifacts import check_output
-from ..config import NormalizeSettings
-from ..evaluation import normalized_take
-from ..model.corpus import Corpus
-from ..model.frames import relative_to_take
-from ..model.motion import Motion
-from ..model.motiondb import MotionDatabase
-from ..motion.postprocess import downsample
+from facesynth.base.config import NormalizeSettings
+from facesynth.domain.evaluation.held_out import normalized_take
+from facesynth.domain.postprocess.concatenation import downsample
+from facesynth.model.artifacts import check_output
+from facesynth.model.corpus import Corpus
+from facesynth.model.frames import relative_to_take
+from facesynth.model.motion import Motion
+from facesynth.model.motiondb import MotionDatabase
 
 
 @dataclass(frozen=True)

@@ -1,7 +1,7 @@
 """``facesynth deform``: marker motion -> face-mesh animation (paper VII-A, Eq. 14-15).
 
 Reads the motion, the mesh and the binding, binds the mesh to the markers and animates it
-(:mod:`facesynth.retarget.deform`: mesh-distance weights, Eq. 14-15, and the similarity fit
+(:mod:`facesynth.domain.retarget.deform`: mesh-distance weights, Eq. 14-15, and the similarity fit
 that carries the motion into the mesh's frame), and writes the ``meshanim`` artifact. With
 ``apply_head_motion`` the motion's rigid head motion is put back through the same transform.
 """
@@ -13,12 +13,12 @@ from pathlib import Path
 
 import numpy as np
 
-from ..artifacts import check_output
-from ..config import DeformSettings, settings_json
-from ..formats.mesh import read_binding, read_mesh
-from ..model.meshanim import MeshAnimation
-from ..model.motion import Motion
-from ..retarget.deform import animate, bind
+from facesynth.base.config import DeformSettings, settings_json
+from facesynth.domain.retarget.deform import animate, bind
+from facesynth.formats.mesh import read_binding, read_mesh
+from facesynth.model.artifacts import check_output
+from facesynth.model.meshanim import MeshAnimation
+from facesynth.model.motion import Motion
 
 
 @dataclass(frozen=True)

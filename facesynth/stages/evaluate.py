@@ -1,6 +1,6 @@
 """``facesynth evaluate``: synthesized motion against captured ground truth (paper VI-D, VIII),
 written as ``metrics.json``, plots, an HTML report and a Markdown table ``table.md`` (the
-metrics, baselines and intervals: :mod:`facesynth.evaluation`)."""
+metrics, baselines and intervals: :mod:`facesynth.domain.evaluation.held_out`)."""
 
 from __future__ import annotations
 
@@ -11,11 +11,11 @@ from pathlib import Path
 
 import numpy as np
 
-from ..artifacts import atomic_folder, check_output_folder, sha256_of
-from ..config import EvaluateSettings, NormalizeSettings, SynthesizeSettings, TrajectorySettings
-from ..errors import InputError, OutputExistsError
-from ..evaluation import FIGURES, MEMBER_ROW, REFERENCES, evaluate
-from ..model.trajectory import TrajectoryModel
+from facesynth.base.config import EvaluateSettings, NormalizeSettings, SynthesizeSettings, TrajectorySettings
+from facesynth.base.errors import InputError, OutputExistsError
+from facesynth.domain.evaluation.held_out import FIGURES, MEMBER_ROW, REFERENCES, evaluate
+from facesynth.model.artifacts import atomic_folder, check_output_folder, sha256_of
+from facesynth.model.trajectory import TrajectoryModel
 
 
 def plot(records: list[dict], folder: Path, marker: str) -> list[str]:

@@ -1,5 +1,5 @@
 """``facesynth expression fit|analyze|restyle``: the bilinear style/content model of Chuang &
-Bregler (2005) §3 on marker motion (the math is :mod:`facesynth.style.bilinear`).
+Bregler (2005) §3 on marker motion (the math is :mod:`facesynth.domain.expression.bilinear`).
 
 fit: the takes of each sentence in every emotion are time-warped phone by phone onto one
 timeline (the neutral take's when there is one; pauses placed differently are warped over), so
@@ -14,14 +14,14 @@ from pathlib import Path
 
 import numpy as np
 
-from ..artifacts import check_output
-from ..config import ExpressionSettings, IngestSettings, settings_json
-from ..errors import InputError
-from ..model.frames import NormalizedFrames
-from ..model.motion import Motion
-from ..model.style import StyleModel
-from ..phonemes import PAU
-from ..style import bilinear
+from facesynth.base.config import ExpressionSettings, IngestSettings, settings_json
+from facesynth.base.errors import InputError
+from facesynth.base.phonemes import PAU
+from facesynth.domain.expression import bilinear
+from facesynth.model.artifacts import check_output
+from facesynth.model.expression import StyleModel
+from facesynth.model.frames import NormalizedFrames
+from facesynth.model.motion import Motion
 
 log = logging.getLogger(__name__)
 
@@ -178,7 +178,7 @@ def targets(model: bilinear.BilinearModel, model_path: Path, n: int, fps: float,
     span of the emotion file (frames outside every span keep their own expression)."""
     from scipy.ndimage import gaussian_filter1d
 
-    from ..search.inputs import Utterance, apply_emotions
+    from facesynth.domain.search.inputs import Utterance, apply_emotions
 
     I = model.styles.shape[1]
     if emotions_path is None:

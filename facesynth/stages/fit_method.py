@@ -1,4 +1,4 @@
-"""``facesynth fit-method``: fit a member of the method family (:mod:`facesynth.methods`) on a
+"""``facesynth fit-method``: fit a member of the method family (:mod:`facesynth.domain.methods`) on a
 motion database's training takes and write its model artifact, which ``facesynth synthesize
 --method NAME`` (and ``batch``) then read alone: ``trajectory`` (Huang et al. §5.4, over the
 key-shapes of a ``keyshapes`` artifact; ``facesynth train-trajectory`` is the same) and
@@ -11,8 +11,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..methods import MethodSettings
-from ..methods.fitting import fit_to_file
+from facesynth.domain.methods import MethodSettings
+from facesynth.domain.methods.fitting import fit_to_file
 
 
 @dataclass(frozen=True)

@@ -1,5 +1,5 @@
 """``facesynth head-motion``: head motion for new speech, chosen from the captured takes by
-pitch (Chuang & Bregler 2005 §5; the method is :mod:`facesynth.motion.headsynth`).
+pitch (Chuang & Bregler 2005 §5; the method is :mod:`facesynth.domain.head_motion.synthesis`).
 
 The database holds every take's head motion (normalize keeps it); the takes' audio comes
 from the corpus artifact the database was built from (``--corpus corpus.h5``, written by
@@ -16,15 +16,15 @@ from pathlib import Path
 
 import numpy as np
 
-from ..artifacts import check_output
-from ..config import HeadMotionSettings, settings_json
-from ..errors import InputError
-from ..formats.audio import read_audio
-from ..model.corpus import Corpus
-from ..model.headmotion import HeadMotion
-from ..model.motiondb import MotionDatabase
-from ..motion import headsynth
-from ..motion import pitch as P
+from facesynth.base.config import HeadMotionSettings, settings_json
+from facesynth.base.errors import InputError
+from facesynth.domain.head_motion import synthesis as headsynth
+from facesynth.domain.speech import pitch as P
+from facesynth.formats.audio import read_audio
+from facesynth.model.artifacts import check_output
+from facesynth.model.corpus import Corpus
+from facesynth.model.head_motion import HeadMotion
+from facesynth.model.motiondb import MotionDatabase
 
 log = logging.getLogger(__name__)
 

@@ -3,7 +3,7 @@
 The manifest is a CSV with the columns ``take, mocap, audio, alignment, transcript,
 emotion, sentence, split`` (paths relative to the manifest); only ``take`` and ``mocap`` are
 required. A take with an empty ``alignment`` and a ``transcript`` is aligned with
-:mod:`facesynth.alignment`. A take with neither has no phones, and one with an empty ``audio``
+:mod:`facesynth.domain.speech.alignment`. A take with neither has no phones, and one with an empty ``audio``
 no audio: ``normalize``, ``pca``, ``solve`` (on the normalized takes), ``rig-mesh`` and
 ``render`` (silent) accept such takes; ``build-db`` (and what needs a database) needs phone
 timing, and ``head-motion`` audio. An empty ``emotion`` is neutral.
@@ -28,16 +28,16 @@ from pathlib import Path
 
 import numpy as np
 
-from ..config import AlignSettings, IngestSettings, settings_json
-from ..errors import InputError
-from ..formats.audio import read_audio, resample
-from ..formats.labels import Segment, check_segments, read_phone_segments, read_textgrid
-from ..formats.mesh import read_rigid_markers
-from ..formats.mocap import read_mocap
-from ..model.corpus import Corpus
-from ..model.tables import Phones, Takes
-from ..phonemes import map_phones
-from ..progress import progress
+from facesynth.base.config import AlignSettings, IngestSettings, settings_json
+from facesynth.base.errors import InputError
+from facesynth.base.phonemes import map_phones
+from facesynth.base.progress import progress
+from facesynth.formats.audio import read_audio, resample
+from facesynth.formats.labels import Segment, check_segments, read_phone_segments, read_textgrid
+from facesynth.formats.mesh import read_rigid_markers
+from facesynth.formats.mocap import read_mocap
+from facesynth.model.corpus import Corpus
+from facesynth.model.tables import Phones, Takes
 
 REQUIRED_COLUMNS = ("take", "mocap")
 #: The sample rate recorded for a corpus none of whose takes has audio (no samples are stored).
@@ -116,7 +116,7 @@ def _segments_for(row: ManifestRow, settings: IngestSettings, align_settings: Al
         if not row.alignment.exists():
             raise InputError(f"{where}: alignment file {row.alignment} not found; fix the manifest's alignment column.")
         return read_phone_segments(row.alignment, settings.phone_tiers)
-    from ..alignment import align_samples
+    from facesynth.domain.speech.alignment import align_samples
 
     return align_samples(samples, rate, row.transcript, settings=align_settings, where=where)
 

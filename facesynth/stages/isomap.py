@@ -2,7 +2,7 @@
 
 The embeddings (for each phoneme cluster a 2D Isomap, the PCA map beside it and their Delaunay
 triangulations; landmark Isomap for large clusters) and the barycentric pick of Fig. 7 are
-:mod:`facesynth.embedding`; this stage reads the database, writes the ``isomap`` artifact and
+:mod:`facesynth.domain.database.embedding`; this stage reads the database, writes the ``isomap`` artifact and
 the images.
 
 Images (``--images DIR``): per phoneme a PNG of the Isomap and one of the PCA map,
@@ -26,15 +26,15 @@ from pathlib import Path
 import numpy as np
 from scipy.ndimage import gaussian_filter
 
-from ..artifacts import atomic_folder, atomic_path, check_output, check_output_folder, published_together
-from ..config import IngestSettings, IsomapSettings, settings_json
-from ..embedding import barycentric_pick, build_clusters, memory_estimate
-from ..errors import InputError
-from ..limits import require_memory
-from ..model.isomap import Cluster, PhonemeMaps
-from ..model.motiondb import MotionDatabase
-from ..phonemes import PAU
-from ..progress import progress
+from facesynth.base.config import IngestSettings, IsomapSettings, settings_json
+from facesynth.base.errors import InputError
+from facesynth.base.limits import require_memory
+from facesynth.base.phonemes import PAU
+from facesynth.base.progress import progress
+from facesynth.domain.database.embedding import barycentric_pick, build_clusters, memory_estimate
+from facesynth.model.artifacts import atomic_folder, atomic_path, check_output, check_output_folder, published_together
+from facesynth.model.isomap import Cluster, PhonemeMaps
+from facesynth.model.motiondb import MotionDatabase
 
 EMOTION_COLOURS = {"neutral": (0, 0, 0), "angry": (220, 30, 30), "sad": (20, 160, 40), "happy": (30, 70, 230)}
 
@@ -381,15 +381,15 @@ class PageResult:
 def page(isomap_path: Path, db_path: Path, phones_path: Path, out: Path, settings: IsomapSettings,
          ingest_settings: IngestSettings, emotions_path: Path | None = None, constraints_path: Path | None = None,
          motion_path: Path | None = None, overwrite: bool = False) -> PageResult:
-    """Write the constraint page (paper VI-A, Fig. 9; :mod:`facesynth.exports.isomap_page`) of
+    """Write the constraint page (paper VI-A, Fig. 9; :mod:`facesynth.domain.exports.isomap_page`) of
     an utterance over the maps of ``isomap_path`` built from ``db_path``, marking the path of
     the synthesized ``motion_path``."""
     import io
 
-    from .. import methods
-    from ..exports import isomap_page as export
-    from ..methods import core
-    from ..model.motion import Motion
+    from facesynth.domain import methods
+    from facesynth.domain.exports import isomap_page as export
+    from facesynth.domain.methods import core
+    from facesynth.model.motion import Motion
 
     check_output(out, overwrite)
     maps = PhonemeMaps.read(isomap_path)

@@ -1,5 +1,5 @@
 """``facesynth keyshapes``: key-shapes per emotion from a motion database (Chuang & Bregler 2005
-§4.1 or Huang et al. §5.2; :mod:`facesynth.retarget.keyshapes`), the frames' NNLS
+§4.1 or Huang et al. §5.2; :mod:`facesynth.domain.retarget.keyshapes`), the frames' NNLS
 reconstruction error (Eq. 8) and each key-shape's keymorph fitted on the built-in rig, with an
 optional contact sheet of the keymorphs rendered on the rig.
 
@@ -14,14 +14,14 @@ from pathlib import Path
 
 import numpy as np
 
-from ..artifacts import atomic_path, check_output, published_together
-from ..config import KeyshapesSettings, settings_json
-from ..errors import InputError
-from ..model.keyshapes import EmotionKeyShapes, KeyShapes
-from ..model.motiondb import MotionDatabase
-from ..retarget.keyshapes import Selection, select_affinity, select_pca
-from ..retarget.rig import builtin_rig, marker_map
-from ..retarget.solve import fit_rig_weights
+from facesynth.base.config import KeyshapesSettings, settings_json
+from facesynth.base.errors import InputError
+from facesynth.domain.retarget.keyshapes import Selection, select_affinity, select_pca
+from facesynth.domain.retarget.solve import fit_rig_weights
+from facesynth.domain.rig.loading import builtin_rig, marker_map
+from facesynth.model.artifacts import atomic_path, check_output, published_together
+from facesynth.model.keyshapes import EmotionKeyShapes, KeyShapes
+from facesynth.model.motiondb import MotionDatabase
 
 #: Key-shapes per emotion when ``count`` is 0 and the method is PCA (Chuang & Bregler §6: "about 20").
 PCA_DEFAULT_COUNT = 20
@@ -82,9 +82,9 @@ def contact_sheet(keyshapes: KeyShapes, out: Path, tile: int = 192, columns: int
     """A PNG grid of every keymorph rendered on the built-in rig, one row per emotion, labelled."""
     from PIL import Image, ImageDraw
 
-    from ..rendering.camera import Camera
-    from ..rendering.parts import build_scene, vertex_normals
-    from ..rendering.raster import rasterizer
+    from facesynth.domain.rendering.camera import Camera
+    from facesynth.domain.rendering.parts import build_scene, vertex_normals
+    from facesynth.domain.rendering.raster import rasterizer
 
     rig = builtin_rig()
     scene = build_scene(rig.neutral, rig.faces)

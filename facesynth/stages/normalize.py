@@ -1,7 +1,7 @@
 """``facesynth normalize``: remove head motion from the markers (paper III, Eq. 1-2).
 
 Short gaps are filled; every frame is rigidly aligned onto a neutral closed-mouth reference
-frame (:mod:`facesynth.motion.rigid`); the per-frame rigid transform is kept, so
+frame (:mod:`facesynth.domain.head_motion.rigid`); the per-frame rigid transform is kept, so
 ``captured = R_i @ normalized + t_i`` for every marker.
 
 Where the paper translates by one marker and rotates on all of them, translation and rotation
@@ -22,12 +22,12 @@ from pathlib import Path
 
 import numpy as np
 
-from ..config import NormalizeSettings, settings_json
-from ..errors import InputError
-from ..model.corpus import Corpus
-from ..model.frames import HeadFrames, NormalizedFrames
-from ..model.tables import Phones, Takes
-from ..motion.rigid import choose_rigid, fill_gaps, head_pose, typical_frame
+from facesynth.base.config import NormalizeSettings, settings_json
+from facesynth.base.errors import InputError
+from facesynth.domain.head_motion.rigid import choose_rigid, fill_gaps, head_pose, typical_frame
+from facesynth.model.corpus import Corpus
+from facesynth.model.frames import HeadFrames, NormalizedFrames
+from facesynth.model.tables import Phones, Takes
 
 
 def choose_origin(reference_frames: np.ndarray, names: list[str], settings: NormalizeSettings) -> int:
@@ -48,7 +48,7 @@ def reference_frame(markers: np.ndarray, takes: Takes, phones: Phones, fps: floa
                     settings: NormalizeSettings) -> np.ndarray:
     """Candidate frames (C, M, 3) mm for the neutral closed-mouth reference, raw capture: the named
     take's frame (a frame without a take: of the first take), else the leading silences of the neutral training takes, else (no silence is
-    marked) the first take's most typical frame (:func:`~facesynth.motion.rigid.typical_frame`)."""
+    marked) the first take's most typical frame (:func:`~facesynth.domain.head_motion.rigid.typical_frame`)."""
     if settings.reference_take or settings.reference_frame >= 0:  # a frame alone is of the first take
         if settings.reference_take and settings.reference_take not in takes.name:
             raise InputError(f"normalize.reference_take {settings.reference_take!r} is not a take of this corpus.")
@@ -101,7 +101,7 @@ def normalize(markers: np.ndarray, names: list[str], takes: Takes, phones: Phone
     """Fill gaps, then remove head motion, fitted on the rigid markers (the settings', else
     ``corpus_rigid``, else found from the data). Returns (normalized, rotations, translations,
     reference, origin index, list of unfilled gaps (take, marker, start_s, length_s), the
-    :class:`~facesynth.motion.rigid.RigidChoice`, the rigid markers' weights)."""
+    :class:`~facesynth.domain.head_motion.rigid.RigidChoice`, the rigid markers' weights)."""
     filled = markers.astype(np.float64).copy()
     long_gaps = []
     for i in range(len(takes)):

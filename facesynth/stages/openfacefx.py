@@ -5,8 +5,8 @@ frame count, so ``facesynth render --compare`` shows the two side by side.
 openfacefx (PyPI, MIT; the ``baselines`` extra) is the text-driven lip sync a user would pick
 instead of facesynth, and the external baseline of ``facesynth evaluate``: from the motion's
 phones (its search path) it builds its viseme curves with its own coarticulation and retargets
-them to the 52 ARKit blendshapes (:func:`facesynth.baselines.openfacefx_arkit`); the rig's ARKit
-table (:func:`facesynth.retarget.rig.arkit_to_rig`) takes them onto the rig. It has no head
+them to the 52 ARKit blendshapes (:func:`facesynth.domain.evaluation.baselines.openfacefx_arkit`); the rig's ARKit
+table (:func:`facesynth.domain.rig.loading.arkit_to_rig`) takes them onto the rig. It has no head
 motion, gaze or emotion: the curves carry none.
 """
 
@@ -17,12 +17,12 @@ from pathlib import Path
 
 import numpy as np
 
-from ..artifacts import check_output
-from ..baselines import openfacefx_arkit, openfacefx_missing
-from ..errors import InputError
-from ..model.curves import RigCurves
-from ..model.motion import Motion
-from ..retarget.rig import arkit_to_rig, load_rig
+from facesynth.base.errors import InputError
+from facesynth.domain.evaluation.baselines import openfacefx_arkit, openfacefx_missing
+from facesynth.domain.rig.loading import arkit_to_rig, load_rig
+from facesynth.model.artifacts import check_output
+from facesynth.model.curves import RigCurves
+from facesynth.model.motion import Motion
 
 
 @dataclass(frozen=True)

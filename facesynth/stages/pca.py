@@ -12,10 +12,10 @@ from pathlib import Path
 
 import numpy as np
 
-from ..config import PcaSettings, settings_json
-from ..errors import InputError
-from ..model.frames import NormalizedFrames
-from ..model.pca import PcaFrames, PcaModel
+from facesynth.base.config import PcaSettings, settings_json
+from facesynth.base.errors import InputError
+from facesynth.model.frames import NormalizedFrames
+from facesynth.model.pca import PcaFrames, PcaModel
 
 
 def fit_pca(frames: np.ndarray, *, n_components: int, variance_target: float = 0.0) -> PcaModel:

@@ -1,7 +1,7 @@
 """``facesynth player``: a motion, mesh animation or rig curves -> one self-contained HTML page
 that plays it in 3D (three.js, orbit controls) with its audio, a scrub bar and, for an artifact
 made from a synthesis, a timeline of the phones with their emotion and the take and database node
-each came from (:mod:`facesynth.exports.player`). A mesh is drawn whole (eyeballs, mouth cavity,
+each came from (:mod:`facesynth.domain.exports.player`). A mesh is drawn whole (eyeballs, mouth cavity,
 teeth, tongue) with ``render``'s shading and camera (``[render]`` fov_deg, yaw_deg, pitch_deg),
 and the head moves with the artifact's head motion. No network is needed to view it."""
 
@@ -11,11 +11,11 @@ import base64
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..artifacts import atomic_path, check_output
-from ..config import RenderSettings
-from ..exports.animation import load
-from ..exports.player import live_payload, page, payload
-from ..live.phones import SAMPLE_RATE
+from facesynth.base.config import RenderSettings
+from facesynth.domain.exports.animation import load
+from facesynth.domain.exports.player import live_payload, page, payload
+from facesynth.domain.live.phones import SAMPLE_RATE
+from facesynth.model.artifacts import atomic_path, check_output
 
 
 @dataclass(frozen=True)

@@ -7,7 +7,7 @@ removed ids (in the numbering of the original, unpruned database), the reason an
 kept node's original id are recorded under ``pruned/``.
 
 ``--auto`` removes the contaminated nodes (marker spikes, label swaps, outliers of their
-phoneme cluster) that :func:`facesynth.contamination.detect` finds.
+phoneme cluster) that :func:`facesynth.domain.database.contamination.detect` finds.
 """
 
 from __future__ import annotations
@@ -18,11 +18,12 @@ from pathlib import Path
 
 import numpy as np
 
-from ..artifacts import check_output
-from ..config import PruneSettings, settings_json
-from ..contamination import detect
-from ..errors import InputError, UsageError
-from ..model.motiondb import MotionDatabase, Pruned
+from facesynth.base.config import PruneSettings, settings_json
+from facesynth.base.errors import InputError, UsageError
+from facesynth.domain.database.contamination import detect
+from facesynth.domain.search.pairs import node_features
+from facesynth.model.artifacts import check_output
+from facesynth.model.motiondb import MotionDatabase, Pruned
 
 
 def parse_ids(text: str, n: int) -> list[int]:
@@ -75,7 +76,7 @@ def prune(db: MotionDatabase, out: Path, remove: list[int], reasons: list[str], 
         raise InputError(f"{db.path}: removing every node would leave an empty database.")
     kept = db.nodes.subset(keep)
     before = db.pruned or Pruned(np.arange(n), np.zeros(0, np.int64), [])
-    features = db.read_features().subset(keep, kept.pre)  # a lost predecessor: rule 4, DSC unused
+    features = node_features(db).subset(keep, kept.pre)  # a lost predecessor: rule 4, DSC unused
     lost_pre = (db.nodes.pre[keep] >= 0) & (kept.pre < 0)
     pruned = Pruned(before.original_id[keep],
                     np.concatenate([before.removed_id, before.original_id[np.asarray(remove, np.int64)]]).astype(np.int64),
@@ -88,7 +89,7 @@ def prune(db: MotionDatabase, out: Path, remove: list[int], reasons: list[str], 
 def run(db_path: Path, out: Path, settings: PruneSettings, remove: str | None, auto: bool, reason: str,
         overwrite: bool) -> PruneResult:
     """Remove the nodes ``remove`` ('3,5,10-12') or, with ``auto``, the contaminated ones found
-    by :func:`facesynth.contamination.detect`, writing ``out``; nothing is written when there is nothing to remove."""
+    by :func:`facesynth.domain.database.contamination.detect`, writing ``out``; nothing is written when there is nothing to remove."""
     if (remove is None) == (not auto):
         raise UsageError("give exactly one of --remove IDS or --auto.")
     check_output(out, overwrite)

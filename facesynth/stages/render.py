@@ -1,7 +1,7 @@
 """``facesynth render``: mesh animations or rig curves -> AVI with the audio muxed in.
 
 The views (``shaded``, ``markers``, ``side-by-side``), the camera, the audio fitted to each clip
-and the video writing are :mod:`facesynth.rendering.video` (shared with ``facesynth batch``); the
+and the video writing are :mod:`facesynth.domain.rendering.video` (shared with ``facesynth batch``); the
 left half of ``side-by-side`` is labelled "synthesis", the right half, ``--compare``, "capture",
 or as ``render.labels`` says. Rig curves (``solve``, ``retarget``, ``openfacefx``) pose their rig
 in memory (the built-in rig, or ``--rig``), with the gaze of the rig's ``eyeLook*`` shapes and the
@@ -14,8 +14,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..config import RenderSettings
-from ..rendering.video import render_video
+from facesynth.base.config import RenderSettings
+from facesynth.domain.rendering.video import render_video
 
 
 @dataclass(frozen=True)

@@ -1,7 +1,7 @@
 """``facesynth retarget``: marker motion onto a rig through key-shapes and keymorphs (Chuang &
-Bregler 2005 Eq. 8-9, :mod:`facesynth.retarget.retarget`), written as ``curves``
+Bregler 2005 Eq. 8-9, :mod:`facesynth.domain.retarget.retarget`), written as ``curves``
 (``source = "retarget"``), and optionally the mesh animation blended from the keymorph meshes,
-linearly or by deformation gradients (Huang et al. §3, :mod:`facesynth.retarget.gradients`).
+linearly or by deformation gradients (Huang et al. §3, :mod:`facesynth.domain.retarget.gradients`).
 
 Keymorphs: an artist's (``--keymorphs``: a folder of ``<keyshape>.obj`` or a CSV of rig weights),
 else those stored in the key-shapes artifact when it was fitted on this rig, else fitted here on
@@ -17,18 +17,18 @@ from pathlib import Path
 import numpy as np
 from scipy import sparse
 
-from ..artifacts import check_output, published_together
-from ..config import KeyshapesSettings, RetargetSettings, settings_json
-from ..errors import InputError
-from ..facerig import Rig
-from ..model.curves import RigCurves
-from ..model.keyshapes import KeyShapes
-from ..model.meshanim import MeshAnimation
-from ..model.motion import Motion
-from ..retarget.gradients import GradientBlender
-from ..retarget.retarget import decompose
-from ..retarget.rig import load_rig, marker_map, read_keymorphs
-from ..retarget.solve import fit_rig_weights
+from facesynth.base.config import KeyshapesSettings, RetargetSettings, settings_json
+from facesynth.base.errors import InputError
+from facesynth.domain.retarget.gradients import GradientBlender
+from facesynth.domain.retarget.retarget import decompose
+from facesynth.domain.retarget.solve import fit_rig_weights
+from facesynth.domain.rig.face import Rig
+from facesynth.domain.rig.loading import load_rig, marker_map, read_keymorphs
+from facesynth.model.artifacts import check_output, published_together
+from facesynth.model.curves import RigCurves
+from facesynth.model.keyshapes import KeyShapes
+from facesynth.model.meshanim import MeshAnimation
+from facesynth.model.motion import Motion
 
 
 def keymorphs(keyshapes: KeyShapes, rig: Rig, keymorph_path: Path | None, ridge: float,
@@ -55,7 +55,7 @@ def keymorphs(keyshapes: KeyShapes, rig: Rig, keymorph_path: Path | None, ridge:
 
 
 def retarget(motion: Motion, keyshapes: KeyShapes, settings: RetargetSettings, emotion: str | None, where: str):
-    """Key-shape blend weights of every frame (a :class:`~facesynth.retarget.retarget.Retargeted`)."""
+    """Key-shape blend weights of every frame (a :class:`~facesynth.domain.retarget.retarget.Retargeted`)."""
     if list(motion.marker_names) != list(keyshapes.marker_names):
         raise InputError(f"{where}: its markers differ from the key-shapes' ({len(motion.marker_names)} vs "
                          f"{len(keyshapes.marker_names)}); choose key-shapes from the database the motion came from.")

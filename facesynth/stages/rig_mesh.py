@@ -3,7 +3,7 @@
 directly (posing the rig in memory the same way), so this step is optional.
 
 The mesh is ``neutral + sum_e w_e deltas_e`` in the rig's frame and units
-(:func:`facesynth.retarget.rig.pose_rig`); the head motion the curves carry is not applied (the
+(:func:`facesynth.domain.rig.loading.pose_rig`); the head motion the curves carry is not applied (the
 face stays in the head frame); the gaze track comes from the rig's ``eyeLook*`` shapes."""
 
 from __future__ import annotations
@@ -11,9 +11,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..artifacts import check_output
-from ..model.curves import RigCurves
-from ..retarget.rig import load_rig, pose_rig
+from facesynth.domain.rig.loading import load_rig, pose_rig
+from facesynth.model.artifacts import check_output
+from facesynth.model.curves import RigCurves
 
 
 @dataclass(frozen=True)

@@ -1,5 +1,5 @@
 """``facesynth sample-corpus``: the built-in virtual actress's capture corpus (C3D, WAV,
-TextGrid, manifest, face mesh, ground truth; :mod:`facesynth.corpus.generate`), written into a
+TextGrid, manifest, face mesh, ground truth; :mod:`facesynth.domain.corpus.generate`), written into a
 folder beside the output and renamed into place when complete."""
 
 from __future__ import annotations
@@ -7,9 +7,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..artifacts import atomic_folder
-from ..config import SampleCorpusSettings
-from ..corpus.generate import generate
+from facesynth.base.config import SampleCorpusSettings
+from facesynth.domain.corpus.generate import generate
+from facesynth.model.artifacts import atomic_folder
 
 
 @dataclass(frozen=True)

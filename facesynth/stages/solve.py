@@ -1,6 +1,6 @@
 """``facesynth solve``: a direct facial solve. Per frame, the rig weights in [0, 1] that best
 explain the motion's markers at the rig's marker vertices, with a small temporal smoothness term
-(:func:`facesynth.retarget.solve.solve_motion`), written as ``curves`` (``source = "solve"``).
+(:func:`facesynth.domain.retarget.solve.solve_motion`), written as ``curves`` (``source = "solve"``).
 
 The markers are carried into the rig's frame and units by a similarity fitted from the motion's
 neutral reference to the rig's neutral at the bound vertices (as ``deform`` does); the solve fits
@@ -20,15 +20,15 @@ from pathlib import Path
 
 import numpy as np
 
-from ..artifacts import artifact_kind, check_output
-from ..config import SolveSettings, settings_json
-from ..errors import InputError
-from ..facerig import Rig
-from ..model.frames import NormalizedFrames, relative_to_take
-from ..model.motion import Motion
-from ..motion.postprocess import downsample
-from ..retarget.rig import load_rig, marker_map
-from ..retarget.solve import solve_motion, solved_curves
+from facesynth.base.config import SolveSettings, settings_json
+from facesynth.base.errors import InputError
+from facesynth.domain.postprocess.concatenation import downsample
+from facesynth.domain.retarget.solve import solve_motion, solved_curves
+from facesynth.domain.rig.face import Rig
+from facesynth.domain.rig.loading import load_rig, marker_map
+from facesynth.model.artifacts import artifact_kind, check_output
+from facesynth.model.frames import NormalizedFrames, relative_to_take
+from facesynth.model.motion import Motion
 
 
 def take_motion(normalized: NormalizedFrames, take: str | None, output_fps: float, where: str) -> Motion:

@@ -1,6 +1,6 @@
 """``facesynth stream``: live synthesis. Audio in as it arrives (standard input, or WebSocket
 clients), frames of ARKit curves out with a fixed latency (JSON lines, WebSocket messages, and
-optionally Live Link Face UDP packets). The work is in :mod:`facesynth.live`; this module reads
+optionally Live Link Face UDP packets). The work is in :mod:`facesynth.domain.live`; this module reads
 the database once and starts a transport. See docs/live.md.
 """
 
@@ -14,13 +14,13 @@ from dataclasses import replace
 from pathlib import Path
 from typing import BinaryIO, cast
 
-from .. import methods
-from ..artifacts import artifact_kind
-from ..config import AlignSettings, SolveSettings, StreamSettings, SynthesizeSettings, TrajectorySettings
-from ..errors import InputError
-from ..live.core import LiveModel
-from ..live.livelink import LiveLinkSender
-from ..live.server import StreamServer, run_pipe
+from facesynth.base.config import AlignSettings, SolveSettings, StreamSettings, SynthesizeSettings, TrajectorySettings
+from facesynth.base.errors import InputError
+from facesynth.domain import methods
+from facesynth.domain.live.core import LiveModel
+from facesynth.domain.live.livelink import LiveLinkSender
+from facesynth.domain.live.server import StreamServer, run_pipe
+from facesynth.model.artifacts import artifact_kind
 
 
 def parse_address(text: str, what: str) -> tuple[str, int]:

@@ -9,7 +9,7 @@ a frame index inside the node's take, 0 at the take's first frame), whether it i
 total cost (Eq. 4) of the whole utterance when the phone is constrained to it:
 ``phi_c(j) + psi_c(j) - obs_c(j)``, where ``phi`` is the forward DP of Algorithm 1 and
 ``psi`` the same DP run backwards (transposed TC, reversed steps). Best first.
-The time- and context-correct definitions live in :mod:`facesynth.search.constraint_choice`,
+The time- and context-correct definitions live in :mod:`facesynth.domain.search.constraint_choice`,
 which ``facesynth isomap page`` shares to highlight the same nodes on the phone's Isomap.
 
 Context-correct nodes exist only where the input shares a triphone with a training
@@ -25,13 +25,12 @@ from pathlib import Path
 
 import numpy as np
 
-from .. import methods
-from ..config import IngestSettings, SynthesizeSettings
-from ..errors import InputError
-from ..methods import core
-from ..model.motiondb import MotionDatabase
-from ..opencl import use_opencl
-from ..search.constraint_choice import (
+from facesynth.base.config import IngestSettings, SynthesizeSettings
+from facesynth.base.errors import InputError
+from facesynth.base.opencl import use_opencl
+from facesynth.domain import methods
+from facesynth.domain.methods import core
+from facesynth.domain.search.constraint_choice import (
     ContextStep,
     context_correct,
     context_correct_steps,
@@ -40,8 +39,10 @@ from ..search.constraint_choice import (
     spoken_step_at,
     time_correct_take_frame,
 )
-from ..search.costs import step_costs
-from ..search.pruned import backward_pruned, dp_pruned
+from facesynth.domain.search.costs import step_costs
+from facesynth.domain.search.pairs import transition_costs
+from facesynth.domain.search.pruned import backward_pruned, dp_pruned
+from facesynth.model.motiondb import MotionDatabase
 
 HEADER = "rank\tnode\temotion\ttake\tcontext\tcontext_correct\ttime_correct_take_frame\tcost\textra_cost"
 
@@ -102,7 +103,7 @@ def suggest(db_path: Path, phones_path: Path, at_s: float, settings: SynthesizeS
         raise InputError(f"{db_path}: the database has no node of /{phone}/ to suggest.")
     rel = relative_time(utt, c, at_s)
     correct = context_correct(db.nodes, utt.phones, c)
-    tc = db.transition_costs(settings, use_opencl(settings.use_opencl))
+    tc = transition_costs(db, settings, use_opencl(settings.use_opencl))
     obs = step_costs(utt.phones, utt.emotions, db.nodes.phone, db.nodes.emotion, constraints, settings).total
     # The optimum, and every node's best cost up to step c and from step c on: the values the
     # dense DP forwards and backwards would give, computed exactly without an N x N matrix.

@@ -1,9 +1,9 @@
 """``facesynth synthesize``: expressive speech motion for an utterance by any member of the method
-family (:mod:`facesynth.methods`): by default the paper's DP search of the motion-node database
-(paper VI and VII-B; the search and post-processing are :mod:`facesynth.search.synthesis`), or
+family (:mod:`facesynth.domain.methods`): by default the paper's DP search of the motion-node database
+(paper VI and VII-B; the search and post-processing are :mod:`facesynth.domain.search.synthesis`), or
 greedy, the mean pose, or a fitted model (``trajectory``: Huang et al. §5.4; ``coarticulation``:
 Cohen-Massaro) read from its own artifact. The utterance, its emotions, the memory check and the
-transcript-mismatch policy are the shared core's (:mod:`facesynth.methods.core`).
+transcript-mismatch policy are the shared core's (:mod:`facesynth.domain.methods.core`).
 """
 
 from __future__ import annotations
@@ -14,12 +14,12 @@ from pathlib import Path
 
 import numpy as np
 
-from .. import methods
-from ..artifacts import check_output, input_records_in_background
-from ..config import AlignSettings, IngestSettings, SynthesizeSettings
-from ..methods import MethodSettings, core
-from ..methods.search import memory_estimate as memory_estimate  # the DP's estimate, where it always was
-from ..model.headmotion import HeadMotion
+from facesynth.base.config import AlignSettings, IngestSettings, SynthesizeSettings
+from facesynth.domain import methods
+from facesynth.domain.methods import MethodSettings, core
+from facesynth.domain.methods.search import memory_estimate as memory_estimate  # the DP's estimate, where it always was
+from facesynth.model.artifacts import check_output, input_records_in_background
+from facesynth.model.head_motion import HeadMotion
 
 
 @dataclass(frozen=True)

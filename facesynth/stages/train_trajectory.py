@@ -1,8 +1,8 @@
 """``facesynth train-trajectory``: the compact key-shape trajectory model (Huang et al. §5.4;
-:mod:`facesynth.methods.trajectory`) of a motion database's training takes, over the joint
+:mod:`facesynth.domain.methods.trajectory`) of a motion database's training takes, over the joint
 key-shapes of a ``keyshapes`` artifact, written as a ``trajectory`` artifact that
 ``facesynth synthesize --method trajectory`` reads alone. The same as ``facesynth fit-method
-trajectory`` (:func:`facesynth.methods.fitting.fit_to_file`), kept under its own name.
+trajectory`` (:func:`facesynth.domain.methods.fitting.fit_to_file`), kept under its own name.
 """
 
 from __future__ import annotations
@@ -10,8 +10,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..config import TrajectorySettings
-from ..methods.fitting import fit_to_file
+from facesynth.base.config import TrajectorySettings
+from facesynth.domain.methods.fitting import fit_to_file
 
 
 @dataclass(frozen=True)
@@ -40,7 +40,7 @@ def run(db_path: Path, keyshapes_path: Path, out: Path, settings: TrajectorySett
         overwrite: bool = False) -> TrainTrajectoryResult:
     """Train the model on ``db_path``'s training takes with the key-shapes of ``keyshapes_path``
     and write ``out``."""
-    from ..methods import MethodSettings
+    from facesynth.domain.methods import MethodSettings
 
     s = fit_to_file("trajectory", db_path, out, MethodSettings.packaged(trajectory=settings), keyshapes_path=keyshapes_path,
                     overwrite=overwrite)

@@ -40,17 +40,17 @@ import numpy as np
 from scipy.optimize import minimize
 from scipy.special import expit
 
-from .. import methods
-from ..artifacts import atomic_path, check_output
-from ..config import BuildDbSettings, NormalizeSettings, SynthesizeSettings, TuneSettings
-from ..errors import InputError, UsageError
-from ..evaluation import heldout
-from ..limits import mem_available
-from ..methods import MethodSettings, core
-from ..model.motiondb import MotionDatabase
-from ..opencl import use_opencl
-from ..search.pairs import PairTerms, TransitionCosts, boundary_states
-from ..search.synthesis import render_path, synthesize
+from facesynth.base.config import BuildDbSettings, NormalizeSettings, SynthesizeSettings, TuneSettings
+from facesynth.base.errors import InputError, UsageError
+from facesynth.base.limits import mem_available
+from facesynth.base.opencl import use_opencl
+from facesynth.domain import methods
+from facesynth.domain.evaluation.held_out import heldout
+from facesynth.domain.methods import MethodSettings, core
+from facesynth.domain.search.pairs import PairTerms, TransitionCosts, boundary_states, node_features
+from facesynth.domain.search.synthesis import render_path, synthesize
+from facesynth.model.artifacts import atomic_path, check_output
+from facesynth.model.motiondb import MotionDatabase
 
 ALPHAS = ("alpha1", "alpha2", "alpha3", "alpha4", "alpha5", "alpha6")
 WEIGHTS = ALPHAS + ("pnt",)
@@ -105,7 +105,7 @@ class Objective:
         free = mem_available()
         fits = PairTerms.bytes_for(len(db.nodes)) < (free if free is not None else 2 << 30) / 4
         self.tables = fits and not opencl
-        self.base_features = db.read_features()
+        self.base_features = node_features(db)
         self.paths: dict[tuple, list[np.ndarray]] = {}
         self.scores: dict[tuple, tuple[float, np.ndarray]] = {}
 

@@ -1,7 +1,7 @@
 import pytest
 
-from facesynth.batch.script import read_script
-from facesynth.errors import InputError
+from facesynth.base.errors import InputError
+from facesynth.domain.batch.script import read_script
 
 
 def test_lines_resolve_paths_against_the_script_folder(tmp_path):

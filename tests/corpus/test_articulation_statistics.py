@@ -1,4 +1,4 @@
-"""Articulation statistics (``facesynth.corpus.statistics``) on made-up curves with known answers,
+"""Articulation statistics (``facesynth.domain.corpus.statistics``) on made-up curves with known answers,
 and the ``[sample_corpus]`` settings reaching the actress's articulation."""
 
 import dataclasses
@@ -6,11 +6,10 @@ import dataclasses
 import numpy as np
 import pytest
 
-from facesynth.config import Config
-from facesynth.corpus.articulation import ContactSolver, channel_stiffness_hz
-from facesynth.corpus.generate import perform
-from facesynth.corpus.markers import build_marker_set, mesh_lip_gap
-from facesynth.corpus.statistics import (
+from facesynth.base.config import Config
+from facesynth.domain.corpus.articulation import ContactSolver, channel_stiffness_hz
+from facesynth.domain.corpus.generate import perform
+from facesynth.domain.corpus.statistics import (
     audio_lag,
     autocorrelation_span,
     motion_statistics,
@@ -19,7 +18,8 @@ from facesynth.corpus.statistics import (
     phone_class_opening,
     speech_masks,
 )
-from facesynth.facerig import load_face_rig
+from facesynth.domain.rig.face import load_face_rig
+from facesynth.domain.rig.markers import build_marker_set, mesh_lip_gap
 
 FPS = 30.0
 

@@ -6,14 +6,20 @@ import hashlib
 import numpy as np
 import pytest
 
-from facesynth.corpus.articulation import CHANNEL_NAMES, ContactSolver, TokenVariation, apply_contact, token_targets
-from facesynth.corpus.generate import perform
-from facesynth.corpus.markers import LIP_GAP_MARKERS, LOWER_LIP_MARKER, build_marker_set, mesh_lip_gap
-from facesynth.corpus.nonspeech import blink_times
-from facesynth.corpus.speech import STYLES, head_motion, lexicon, pitch, time_utterance
-from facesynth.corpus.statistics import bilabial_gaps, blink_events
-from facesynth.corpus.truth import read_truth
-from facesynth.facerig import load_face_rig
+from facesynth.domain.corpus.articulation import (
+    CHANNEL_NAMES,
+    ContactSolver,
+    TokenVariation,
+    apply_contact,
+    token_targets,
+)
+from facesynth.domain.corpus.generate import perform
+from facesynth.domain.corpus.nonspeech import blink_times
+from facesynth.domain.corpus.speech import STYLES, head_motion, lexicon, pitch, time_utterance
+from facesynth.domain.corpus.statistics import bilabial_gaps, blink_events
+from facesynth.domain.corpus.truth import read_truth
+from facesynth.domain.rig.face import load_face_rig
+from facesynth.domain.rig.markers import LIP_GAP_MARKERS, LOWER_LIP_MARKER, build_marker_set, mesh_lip_gap
 from facesynth.formats.labels import read_phone_segments, read_textgrid
 from facesynth.formats.mesh import read_binding, read_mesh, read_rigid_markers
 from facesynth.formats.mocap import read_mocap
@@ -43,7 +49,7 @@ def _takes(corpus):
 
 
 def test_same_seed_same_bytes_other_seed_other_bytes(tmp_path, tiny_corpus):
-    from facesynth.corpus.generate import generate
+    from facesynth.domain.corpus.generate import generate
 
     generate(tmp_path / "a", "tiny", seed=0)
     generate(tmp_path / "b", "tiny", seed=1)

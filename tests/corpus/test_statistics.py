@@ -4,9 +4,15 @@ from pathlib import Path
 
 import pytest
 
-from facesynth.corpus.statistics import COMPARED_SHAPES, MOUTH_SHAPES, curve_statistics, read_live_link_face, resample
-from facesynth.corpus.truth import read_truth
-from facesynth.facerig import load_face_rig
+from facesynth.domain.corpus.statistics import (
+    COMPARED_SHAPES,
+    MOUTH_SHAPES,
+    curve_statistics,
+    read_live_link_face,
+    resample,
+)
+from facesynth.domain.corpus.truth import read_truth
+from facesynth.domain.rig.face import load_face_rig
 
 CAPTURE = Path(__file__).resolve().parents[3] / "shared" / "assets" / "ict-face" / "llf_capture.csv"
 #: Shapes whose meaning is the same in the capture and the rig (the tracker's mouthClose and

@@ -16,16 +16,15 @@ import pytest
 from click.testing import CliRunner
 
 from facesynth.cli import main
-from facesynth.corpus.generate import CAPTURE_FPS
-from facesynth.corpus.truth import read_truth
-from facesynth.exports import livelink
-from facesynth.facerig import BUILTIN_RIG_NAME, builtin_rig_sha256, load_face_rig
+from facesynth.domain.corpus.generate import CAPTURE_FPS
+from facesynth.domain.corpus.truth import read_truth
+from facesynth.domain.rig.face import BUILTIN_RIG_NAME, builtin_rig_sha256, gaze_from_rig_weights, load_face_rig
+from facesynth.formats import livelink_face as livelink
 from facesynth.formats.mesh import read_mesh
 from facesynth.formats.mocap import read_c3d
 from facesynth.model.curves import RigCurves
 from facesynth.model.meshanim import MeshAnimation
 from facesynth.model.motion import Motion
-from facesynth.rendering.parts import gaze_from_rig_weights
 
 ROOT = Path(__file__).resolve().parents[2]
 VALIDATOR = Path(os.environ.get("FACESYNTH_GLTF_VALIDATOR", ROOT / ".cache" / "npm" / "node_modules" / "gltf-validator"))
@@ -308,7 +307,7 @@ def test_mesh_with_another_vertex_count_is_refused(made, tmp_path):
 def test_ctrl_c_between_the_scene_and_its_audio_leaves_neither(made, tmp_path, monkeypatch):
     import signal
 
-    from facesynth import artifacts
+    from facesynth.model import artifacts
 
     publish = artifacts.publish
 

@@ -13,10 +13,10 @@ import pytest
 from click.testing import CliRunner
 from PIL import Image
 
+from facesynth.base.config import Config
 from facesynth.cli import main
-from facesynth.config import Config
-from facesynth.exports import player
-from facesynth.exports.animation import load
+from facesynth.domain.exports import player
+from facesynth.domain.exports.animation import load
 from facesynth.model.meshanim import MeshAnimation
 from facesynth.model.motion import Motion
 from facesynth.stages import deform, synthesize
@@ -126,9 +126,9 @@ def test_the_face_parts_on_the_page_are_the_renderers(tmp_path):
     where the renderer places them for every frame, gaze included."""
     import base64
 
-    from facesynth.facerig import BUILTIN_RIG_NAME, builtin_rig_sha256, load_face_rig
+    from facesynth.domain.rendering.parts import build_scene
+    from facesynth.domain.rig.face import BUILTIN_RIG_NAME, builtin_rig_sha256, gaze_from_rig_weights, load_face_rig
     from facesynth.model.curves import RigCurves
-    from facesynth.rendering.parts import build_scene, gaze_from_rig_weights
 
     rig = load_face_rig()
     rng = np.random.default_rng(0)

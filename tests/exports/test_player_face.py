@@ -11,15 +11,15 @@ import pytest
 from chromium_page import CHROMIUM, ChromiumPage
 from scipy.spatial.transform import Rotation
 
-from facesynth.config import Config
-from facesynth.exports.animation import load
+from facesynth.base.config import Config
+from facesynth.domain.exports.animation import load
+from facesynth.domain.rendering.camera import Camera
+from facesynth.domain.rendering.parts import build_scene, face_focus
+from facesynth.domain.rendering.raster import BACKGROUND
+from facesynth.domain.rendering.video import ShadedView
 from facesynth.model.curves import RigCurves
 from facesynth.model.meshanim import MeshAnimation
 from facesynth.model.motion import Motion
-from facesynth.rendering.camera import Camera
-from facesynth.rendering.parts import build_scene, face_focus
-from facesynth.rendering.raster import BACKGROUND
-from facesynth.rendering.video import ShadedView
 from facesynth.stages import player, rig_mesh, solve, synthesize
 
 pytest.importorskip("websockets", reason="the DevTools protocol client needs the websockets package")

@@ -18,12 +18,12 @@ import numpy as np
 import pytest
 from click.testing import CliRunner
 
+from facesynth.base.config import Config
 from facesynth.cli import main
-from facesynth.config import Config
-from facesynth.exports import player
-from facesynth.facerig import load_face_rig
-from facesynth.live.core import LiveModel
-from facesynth.live.server import StreamServer
+from facesynth.domain.exports import player
+from facesynth.domain.live.core import LiveModel
+from facesynth.domain.live.server import StreamServer
+from facesynth.domain.rig.face import load_face_rig
 from facesynth.model.motiondb import MotionDatabase
 
 CHROMIUM = shutil.which("chromium")

@@ -10,9 +10,9 @@ import json
 import numpy as np
 import pytest
 
-from facesynth import check
-from facesynth.config import Config
-from facesynth.exports import usd
+from facesynth.base.config import Config
+from facesynth.domain.exports import usd
+from facesynth.model import check
 from facesynth.model.curves import RigCurves
 from facesynth.model.meshanim import MeshAnimation
 from facesynth.model.motion import Motion
@@ -121,8 +121,8 @@ def test_usd_custom_data_carries_the_provenance(chain, name):
 
 
 def test_the_player_labels_a_capture_with_its_take_and_a_synthesis_with_its_phones(chain, held_out_take):
-    from facesynth.exports.animation import load
-    from facesynth.exports.player import payload
+    from facesynth.domain.exports.animation import load
+    from facesynth.domain.exports.player import payload
 
     captured = payload(load(chain / "cap_c.h5"))
     assert captured["phones"] == [] and [r["emotion"] for r in captured["take_runs"]] == [held_out_take]

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 import soundfile as sf
 
-from facesynth.errors import InputError
+from facesynth.base.errors import InputError
 from facesynth.formats.audio import read_audio, resample, write_wav
 
 RATES = [(48000, 44100), (44100, 48000), (44100, 16000), (48000, 16000), (16000, 48000), (16000, 44100)]

@@ -1,6 +1,6 @@
 import pytest
 
-from facesynth.errors import InputError
+from facesynth.base.errors import InputError
 from facesynth.formats.labels import Segment, read_lab, read_phone_segments, read_textgrid, write_lab, write_textgrid
 
 SHORT = '''File type = "ooTextFile"

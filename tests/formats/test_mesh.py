@@ -5,7 +5,7 @@ import re
 import numpy as np
 import pytest
 
-from facesynth.errors import InputError
+from facesynth.base.errors import InputError
 from facesynth.formats.mesh import read_binding, read_mesh, write_binding, write_obj
 
 # A unit square (vertices 1-4, counter-clockwise seen from +z) and two more vertices: 5 is used
@@ -214,7 +214,7 @@ def test_binding_that_is_not_utf8_or_missing(tmp_path):
 
 def test_a_vertex_out_of_the_mesh_is_refused_when_bound(tmp_path, config):
     """read_binding cannot know the mesh; deform's bind checks the range against it."""
-    from facesynth.retarget.deform import bind
+    from facesynth.domain.retarget.deform import bind
 
     v, f = read_mesh(_write(tmp_path, "m.obj", VERTICES + "f 1 2 3 4\nf 2 5 3\n"))
     for bad, shown in ((-1, -1), (6, 6)):

@@ -1,7 +1,7 @@
 import numpy as np
 import pytest
 
-from facesynth.errors import InputError
+from facesynth.base.errors import InputError
 from facesynth.formats.mocap import MarkerTake, read_mocap, write_c3d, write_csv, write_trc
 
 

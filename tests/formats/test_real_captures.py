@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 from click.testing import CliRunner
 
-from facesynth.errors import InputError
+from facesynth.base.errors import InputError
 from facesynth.formats.mocap import read_mocap
 
 CAPTURES = Path(__file__).parent / "captures"

@@ -257,7 +257,7 @@ def _first_constraint(db: Path, segs, nodes) -> str:
     """'INDEX NODE' for the first spoken phone and any node of its phone."""
     import h5py
 
-    from facesynth.phonemes import to_festival
+    from facesynth.base.phonemes import to_festival
 
     with h5py.File(db, "r") as f:
         phones = [p.decode() if isinstance(p, bytes) else str(p) for p in f["nodes/phone"][()]]
@@ -555,7 +555,7 @@ def _child(args: list[str], fd: int) -> None:
         threadpool_limits(1)
         from click.testing import CliRunner
 
-        from facesynth import opencl
+        from facesynth.base import opencl
         from facesynth.cli import main
 
         opencl.reset()
@@ -652,7 +652,7 @@ def judge(case: Prepared, outcome: dict) -> str | None:
 
 def _valid_outputs(case: Prepared, text: str) -> str | None:
     """Exit 0: every artifact written must pass ``facesynth check``; printed numbers must be finite."""
-    from facesynth.check import check_file
+    from facesynth.model.check import check_file
 
     for out in case.outputs:
         if not out.exists():

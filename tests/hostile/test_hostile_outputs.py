@@ -19,9 +19,11 @@ import numpy as np
 import pytest
 from click.testing import CliRunner
 
-from facesynth import artifacts, limits
+from facesynth.base import limits
+from facesynth.base.errors import ArtifactError, InputError, OutputExistsError
 from facesynth.cli import main
-from facesynth.errors import ArtifactError, InputError, OutputExistsError
+from facesynth.domain.search.pairs import transition_costs
+from facesynth.model import artifacts
 
 
 def _run(*args):
@@ -456,7 +458,7 @@ def test_synthesize_opens_the_database_once(tiny_db, tiny_corpus, held_out_take,
 
 def test_a_database_replaced_while_synthesize_runs_is_not_mixed(tiny_db, tmp_path):
     db = _copy(tiny_db, tmp_path / "db.h5")
-    from facesynth.config import Config
+    from facesynth.base.config import Config
     from facesynth.model.motiondb import MotionDatabase
 
     d = MotionDatabase.read(db)
@@ -464,7 +466,7 @@ def test_a_database_replaced_while_synthesize_runs_is_not_mixed(tiny_db, tmp_pat
     with h5py.File(_copy(tiny_db, replaced), "r+") as f:
         f["boundary/first_pos"][...] = 1e6
     os.replace(replaced, db)  # another process replaces the file between the reads
-    tc = d.transition(Config.load().settings("synthesize"))
+    tc = transition_costs(d, Config.load().settings("synthesize")).dense()
     assert np.isfinite(tc).all() and tc.max() < 1e5  # still the validated snapshot's features
     with pytest.raises(InputError, match="was replaced while this command ran"):
         artifacts.input_record(db)

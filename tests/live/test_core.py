@@ -6,13 +6,13 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from facesynth.errors import ArtifactError, InputError
-from facesynth.live.core import LiveModel, LiveSynthesizer
-from facesynth.live.phones import given_phones
-from facesynth.methods.trajectory import synthesize_motion
+from facesynth.base.errors import ArtifactError, InputError
+from facesynth.domain.live.core import LiveModel, LiveSynthesizer
+from facesynth.domain.live.phones import given_phones
+from facesynth.domain.methods.trajectory import synthesize_motion
+from facesynth.domain.search.inputs import read_utterance
+from facesynth.domain.search.synthesis import render_path, synthesize
 from facesynth.model.motiondb import MotionDatabase
-from facesynth.search.inputs import read_utterance
-from facesynth.search.synthesis import render_path, synthesize
 
 
 @pytest.fixture(scope="module")
@@ -187,7 +187,7 @@ def test_phones_declared_complete_release_every_frame_before_the_audio_ends(db, 
 def test_the_recogniser_restarts_in_silences_and_keeps_tiling(tiny_corpus, held_out_take, config):
     import wave
 
-    from facesynth.live.phones import PhoneRecognizer
+    from facesynth.domain.live.phones import PhoneRecognizer
 
     with wave.open(str(tiny_corpus / "audio" / f"{held_out_take}.wav")) as w:
         pcm = w.readframes(w.getnframes())

@@ -8,9 +8,9 @@ import struct
 import numpy as np
 import pytest
 
-from facesynth.errors import InputError
-from facesynth.facerig import load_face_rig
-from facesynth.live.livelink import LiveLinkSender, decode, encode, value_names
+from facesynth.base.errors import InputError
+from facesynth.domain.live.livelink import LiveLinkSender, decode, encode, value_names
+from facesynth.domain.rig.face import load_face_rig
 
 #: Positions of some blendshapes in Unreal's EARFaceBlendShape (ARKit's ARFaceAnchor order).
 ENUM_POSITIONS = {"EyeBlinkLeft": 0, "EyeWideRight": 13, "JawForward": 14, "JawLeft": 15, "JawRight": 16, "JawOpen": 17,

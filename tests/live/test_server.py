@@ -21,8 +21,8 @@ import pytest
 from click.testing import CliRunner
 
 from facesynth.cli import main
-from facesynth.live.core import LiveModel
-from facesynth.live.server import StreamServer
+from facesynth.domain.live.core import LiveModel
+from facesynth.domain.live.server import StreamServer
 from facesynth.model.motiondb import MotionDatabase
 
 websockets = pytest.importorskip("websockets", reason="the WebSocket transport needs the websockets package")
@@ -74,7 +74,7 @@ def test_stdin_raw_pcm_with_markers(tiny_db, pcm):
 
 
 def test_live_link_packets_follow_the_frames_and_realtime_paces_the_reading(tiny_db, pcm):
-    from facesynth.live.livelink import decode
+    from facesynth.domain.live.livelink import decode
 
     with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as receiver:
         receiver.bind(("127.0.0.1", 0))
@@ -131,7 +131,7 @@ def _serve(model, test, **options):
 
 
 def _align():
-    from facesynth.config import Config
+    from facesynth.base.config import Config
 
     return Config.load().settings("align")
 
@@ -142,7 +142,7 @@ def test_websocket_client_streams_and_gets_frames(model, pcm):
 
 
 def test_given_phone_timings_and_an_emotion_switch(model, pcm, tiny_corpus, held_out_take):
-    from facesynth.search.inputs import read_utterance
+    from facesynth.domain.search.inputs import read_utterance
 
     utt = read_utterance(tiny_corpus / "labels" / f"{held_out_take}.TextGrid")
     phones = [{"phone": p, "start": a, "end": b} for p, a, b in zip(utt.phones, utt.starts, utt.ends)]
@@ -282,8 +282,8 @@ def test_bad_stream_options_say_what_to_do(tiny_db, args, message):
 
 
 def test_start_after_audio_is_refused(model):
-    from facesynth.errors import InputError
-    from facesynth.live.session import Session
+    from facesynth.base.errors import InputError
+    from facesynth.domain.live.session import Session
 
     session = Session(model, _align(), "client 1")
     session.audio(b"\0\0" * 320)
@@ -299,8 +299,8 @@ def test_given_phones_at_their_start_leave_no_frame_waiting_past_the_pause_wait(
                                                                                 held_out_take, pause_wait_s):
     """A TTS engine sends each phone as it starts speaking it (look-ahead 0): the silences between
     its phones are taken as pauses after stream.pause_wait_s, and their frames go out then."""
-    from facesynth.live.session import Session
-    from facesynth.search.inputs import read_utterance
+    from facesynth.domain.live.session import Session
+    from facesynth.domain.search.inputs import read_utterance
 
     stream = replace(config.settings("stream"), lookahead_phones=0, pause_wait_s=pause_wait_s)
     model = LiveModel(MotionDatabase.read(tiny_db), config.settings("synthesize"), stream, config.settings("solve"))

@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from facesynth.methods.coarticulation import DominanceModel, fit_dominance, token_weights
+from facesynth.domain.methods.coarticulation import DominanceModel, fit_dominance, token_weights
 
 
 def _sentences(model, rng, n=12, fps=120.0):

@@ -9,17 +9,18 @@ import numpy as np
 import pytest
 from click.testing import CliRunner
 
-from facesynth import check, methods
+from facesynth.base.errors import ArtifactError, UsageError
+from facesynth.base.phonemes import PAU
 from facesynth.cli import main
-from facesynth.errors import ArtifactError, UsageError
-from facesynth.evaluation import recommend
-from facesynth.methods import MethodSettings, core
+from facesynth.domain import methods
+from facesynth.domain.evaluation.held_out import recommend
+from facesynth.domain.methods import MethodSettings, core
+from facesynth.domain.search.inputs import read_utterance
+from facesynth.domain.search.synthesis import as_motion, synthesize
+from facesynth.model import check
 from facesynth.model.coarticulation import CoarticulationModel
 from facesynth.model.motion import Motion
 from facesynth.model.motiondb import MotionDatabase
-from facesynth.phonemes import PAU
-from facesynth.search.inputs import read_utterance
-from facesynth.search.synthesis import as_motion, synthesize
 
 
 @pytest.fixture(scope="module")
@@ -106,7 +107,12 @@ def test_dp_through_the_family_is_bit_identical_to_the_search(sources, utt, sett
 
 
 def test_the_coarticulation_model_is_fitted_written_read_back_and_checked(sources, db, settings, utt, tmp_path):
-    from facesynth.methods.coarticulation import DominanceModel, emotion_labels, fit_dominance, training_sentences
+    from facesynth.domain.methods.coarticulation import (
+        DominanceModel,
+        emotion_labels,
+        fit_dominance,
+        training_sentences,
+    )
 
     path, model = sources["coarticulation"]
     assert check.check_file(path).problems == []

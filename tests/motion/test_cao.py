@@ -3,8 +3,8 @@
 import numpy as np
 import pytest
 
-from facesynth.motion.cao import blend_jumps, learned_cutoffs, lowpass
-from facesynth.motion.postprocess import time_warp
+from facesynth.domain.postprocess.cao import blend_jumps, learned_cutoffs, lowpass
+from facesynth.domain.postprocess.concatenation import time_warp
 
 # --- learned cut-offs --------------------------------------------------------------------------
 

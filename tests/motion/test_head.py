@@ -2,8 +2,8 @@ import numpy as np
 import pytest
 from scipy.spatial.transform import Rotation
 
+from facesynth.domain.head_motion.rotations import apply, follow_sources
 from facesynth.model.frames import relative_to_take
-from facesynth.motion.head import apply, follow_sources
 
 
 def test_relative_to_take_removes_each_takes_placement():
@@ -89,7 +89,7 @@ def test_capture_exports_a_take_and_synthesis_carries_head_motion(tiny_db, tiny_
         r = f["head_rotation"][()]
         assert len(r) == len(f["markers"]) and np.allclose(r @ np.swapaxes(r, 1, 2), np.eye(3), atol=1e-5)
         assert np.linalg.norm(Rotation.from_matrix(r).as_rotvec(), axis=1).max() > 0.005  # the head moves
-    from facesynth.config import Config
+    from facesynth.base.config import Config
 
     on = Config.load(None, ("deform.apply_head_motion=true",)).settings("deform")
     deform.run(tmp_path / "m.h5", tiny_corpus / "face.obj", tiny_corpus / "markers.csv", tmp_path / "a.h5", on)

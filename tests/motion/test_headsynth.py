@@ -2,8 +2,8 @@
 
 import numpy as np
 
-from facesynth.motion import headsynth
-from facesynth.motion import pitch as P
+from facesynth.domain.head_motion import synthesis as headsynth
+from facesynth.domain.speech import pitch as P
 
 
 def test_cleaning_drops_out_of_range_pitch_and_short_runs_and_fills_short_gaps():

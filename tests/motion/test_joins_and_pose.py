@@ -3,8 +3,8 @@
 import numpy as np
 import pytest
 
-from facesynth.motion.postprocess import blend_join, end_slope_weights, hermite
-from facesynth.motion.rigid import head_pose, procrustes_align
+from facesynth.domain.head_motion.rigid import head_pose, procrustes_align
+from facesynth.domain.postprocess.concatenation import blend_join, end_slope_weights, hermite
 
 
 @pytest.mark.parametrize("length", [2, 3, 4, 7, 12])
@@ -71,7 +71,7 @@ def test_weights_follow_the_residuals():
 
 def _two_phone_join(pinned):
     """Two 30-frame phones joined by non-captured nodes with a jump: /m/ (pinned by default) then /aa/."""
-    from facesynth.motion.postprocess import concatenate
+    from facesynth.domain.postprocess.concatenation import concatenate
 
     coeffs = np.concatenate([np.linspace(0.0, 0.3, 30), 5.0 + np.linspace(0.0, 0.9, 30)])[:, None]
     return concatenate(np.array([0, 1]), ["m", "aa"], np.array([0.0, 0.25]), np.array([0.25, 0.5]),

@@ -1,4 +1,4 @@
-"""The voice's loudness in the lips (facesynth.motion.loudness) and ``synthesize --audio`` with it."""
+"""The voice's loudness in the lips (facesynth.domain.speech.loudness) and ``synthesize --audio`` with it."""
 
 from dataclasses import replace
 
@@ -7,11 +7,11 @@ import pytest
 from click.testing import CliRunner
 
 from facesynth.cli import main
+from facesynth.domain.postprocess.concatenation import downsample, frame_ranges
+from facesynth.domain.search.inputs import read_utterance
+from facesynth.domain.speech import loudness
 from facesynth.formats.audio import read_audio
 from facesynth.model.motion import Motion
-from facesynth.motion import loudness
-from facesynth.motion.postprocess import downsample, frame_ranges
-from facesynth.search.inputs import read_utterance
 
 
 def test_envelope_follows_loudness():
@@ -189,7 +189,7 @@ def test_ranks_and_filters_are_scipys():
 def test_aligned_audio_is_kept_for_its_loudness(tiny_corpus, held_out_take, config):
     import csv
 
-    from facesynth.methods import core
+    from facesynth.domain.methods import core
 
     row = next(r for r in csv.DictReader(open(tiny_corpus / "manifest.csv")) if r["take"] == held_out_take)
     wav = tiny_corpus / row["audio"]

@@ -1,7 +1,14 @@
 import numpy as np
 import pytest
 
-from facesynth.motion.postprocess import concatenate, downsample, frame_ranges, interpolate, smooth_join, time_warp
+from facesynth.domain.postprocess.concatenation import (
+    concatenate,
+    downsample,
+    frame_ranges,
+    interpolate,
+    smooth_join,
+    time_warp,
+)
 
 
 def test_smoothing_with_no_smoothness_weight_keeps_the_data():

@@ -6,8 +6,8 @@ import numpy as np
 import pytest
 from scipy.spatial.transform import Rotation
 
+from facesynth.domain.head_motion.rigid import choose_rigid, find_rigid_markers, typical_frame
 from facesynth.formats.mocap import read_mocap
-from facesynth.motion.rigid import choose_rigid, find_rigid_markers, typical_frame
 
 
 def _head_and_mouth(rng, frames=200):

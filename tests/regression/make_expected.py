@@ -12,9 +12,9 @@ import json
 import tempfile
 from pathlib import Path
 
-from facesynth import evaluation
-from facesynth.config import Config
-from facesynth.corpus.generate import generate
+from facesynth.base.config import Config
+from facesynth.domain.corpus.generate import generate
+from facesynth.domain.evaluation import held_out as evaluation
 from facesynth.stages import build_db, ingest, normalize, pca
 
 CHECKED = {

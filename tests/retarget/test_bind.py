@@ -1,4 +1,4 @@
-"""Placing a capture's markers on the rig (facesynth.retarget.bind): the sample corpus's markers,
+"""Placing a capture's markers on the rig (facesynth.domain.retarget.bind): the sample corpus's markers,
 whose true vertices markers.csv gives, moved by a random similarity, must land back on them."""
 
 import csv
@@ -7,10 +7,10 @@ import numpy as np
 import pytest
 from scipy.spatial.transform import Rotation
 
-from facesynth.facerig import load_face_rig
+from facesynth.domain.head_motion.rigid import typical_frame
+from facesynth.domain.retarget.bind import axis_rotation, bind_markers
+from facesynth.domain.rig.face import load_face_rig
 from facesynth.formats.mocap import read_mocap
-from facesynth.motion.rigid import typical_frame
-from facesynth.retarget.bind import axis_rotation, bind_markers
 
 
 def _truth(tiny_corpus):
@@ -91,7 +91,7 @@ def test_jaw_sides_keeps_markers_on_their_side_of_the_jaw():
     """A chin moving 20 mm with the jaw, a lower lip with it, an upper lip rising against it and a
     still forehead: the first two may take only vertices the rig's jaw carries, the others only
     vertices it does not; a cheek moving a third as much, half with the jaw, is left free."""
-    from facesynth.retarget.bind import jaw_sides
+    from facesynth.domain.retarget.bind import jaw_sides
 
     rng = np.random.default_rng(0)
     opening = np.abs(np.sin(np.linspace(0, 12, 300)))  # (T,) 0..1

@@ -1,12 +1,12 @@
 import numpy as np
 import pytest
 
-from facesynth.corpus.markers import build_marker_set
-from facesynth.errors import InputError
-from facesynth.facerig import load_face_rig
-from facesynth.motion.rigid import similarity_fit
-from facesynth.rendering.parts import classify_holes, lip_halves
-from facesynth.retarget.deform import animate, bind, mesh_distances
+from facesynth.base.errors import InputError
+from facesynth.domain.head_motion.rigid import similarity_fit
+from facesynth.domain.rendering.parts import classify_holes, lip_halves
+from facesynth.domain.retarget.deform import animate, bind, mesh_distances
+from facesynth.domain.rig.face import load_face_rig
+from facesynth.domain.rig.markers import build_marker_set
 
 
 @pytest.fixture(scope="module")

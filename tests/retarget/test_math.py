@@ -8,10 +8,10 @@ import pytest
 from meshes import grid
 from scipy.optimize import nnls
 
-from facesynth.retarget.gradients import GradientBlender, _exp
-from facesynth.retarget.keyshapes import knee, select_affinity, select_pca
-from facesynth.retarget.retarget import decompose, emotion_blend
-from facesynth.retarget.solve import fit_rig_weights, nnls_weights, solve_curves
+from facesynth.domain.retarget.gradients import GradientBlender, _exp
+from facesynth.domain.retarget.keyshapes import knee, select_affinity, select_pca
+from facesynth.domain.retarget.retarget import decompose, emotion_blend
+from facesynth.domain.retarget.solve import fit_rig_weights, nnls_weights, solve_curves
 
 
 def test_nnls_on_the_gram_factor_matches_scipy_on_the_full_system():
@@ -31,7 +31,7 @@ def test_batched_block_pivoting_nnls_matches_scipy_frame_by_frame(stragglers, k)
     # Many frames, key-shapes that overlap (a near-duplicate pair) and sparse true mixtures: the
     # solver (batched up to BATCHED_MAX_SHAPES key-shapes, else per frame) lands on scipy's
     # minimizer for every frame.
-    from facesynth.retarget.solve import BATCHED_MAX_SHAPES, nnls_gram
+    from facesynth.domain.retarget.solve import BATCHED_MAX_SHAPES, nnls_gram
 
     assert (k <= BATCHED_MAX_SHAPES) == (k == 12)
     rng = np.random.default_rng(10)
@@ -182,7 +182,7 @@ def test_gradient_blending_keeps_lengths_where_linear_blending_shrinks_a_rotatio
 def test_newton_polar_decomposition_matches_the_svd_route():
     from scipy.spatial.transform import Rotation
 
-    from facesynth.retarget.gradients import _polar, _polar_svd
+    from facesynth.domain.retarget.gradients import _polar, _polar_svd
 
     rng = np.random.default_rng(7)
     n = 400
@@ -208,7 +208,7 @@ def _reference_blend(rest, faces, examples, anchor, alpha):
     from scipy.sparse.linalg import spsolve
     from scipy.spatial.transform import Rotation
 
-    from facesynth.retarget.gradients import _frames, _polar_svd
+    from facesynth.domain.retarget.gradients import _frames, _polar_svd
 
     rf = _frames(rest, faces)
     grads = _frames(examples, faces) @ np.linalg.inv(rf)
@@ -235,7 +235,7 @@ def _reference_blend(rest, faces, examples, anchor, alpha):
 def test_blocked_gradient_blend_matches_the_frame_by_frame_formulation(use_opencl):
     from scipy.spatial.transform import Rotation
 
-    from facesynth.opencl import use_opencl as device_builds
+    from facesynth.base.opencl import use_opencl as device_builds
 
     if use_opencl and not device_builds():
         pytest.skip("no OpenCL device builds kernels here")

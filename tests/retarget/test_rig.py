@@ -12,11 +12,11 @@ import pytest
 from click.testing import CliRunner
 from meshes import grid
 
+from facesynth.base.errors import InputError
 from facesynth.cli import main
-from facesynth.errors import InputError
-from facesynth.facerig import Rig
+from facesynth.domain.rig.face import Rig
+from facesynth.domain.rig.loading import builtin_rig, read_keymorphs, read_rig
 from facesynth.formats.mesh import write_obj
-from facesynth.retarget.rig import builtin_rig, read_keymorphs, read_rig
 
 
 def _rig_folder(folder: Path) -> tuple[np.ndarray, np.ndarray]:

@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from facesynth.search.pairs import PairFeatures
+from facesynth.domain.search.pairs import PairFeatures
 
 
 def random_features(n: int, seed: int, markers: int = 7, dims: int = 12, duplicates: int = 0) -> PairFeatures:
@@ -35,8 +35,8 @@ def tiny_utterance_steps(db, s, textgrid, with_emotions: bool, with_constraints:
     for settings ``s``: per-phone emotions cycling through angry, sad and happy when
     ``with_emotions``, and with ``with_constraints`` up to three phones constrained to a node
     of their own phone. Returns (StepCosts, constraints {step: node})."""
-    from facesynth.search.costs import step_costs
-    from facesynth.search.inputs import read_utterance
+    from facesynth.domain.search.costs import step_costs
+    from facesynth.domain.search.inputs import read_utterance
 
     utt = read_utterance(textgrid)
     if with_emotions:

@@ -1,8 +1,9 @@
 import numpy as np
 import pytest
 
-from facesynth.config import Config
-from facesynth.search.costs import step_costs, transition_matrix
+from facesynth.base.config import Config
+from facesynth.domain.search.costs import step_costs, transition_matrix
+from facesynth.domain.search.pairs import transition_costs
 
 
 @pytest.fixture()
@@ -38,8 +39,8 @@ def test_observation_emotion_and_blocking(s):
 
 @pytest.mark.parametrize("n, block", [(5, 2), (96, 96), (97, 40), (300, 256), (401, 7)])
 def test_panel_rows_are_bit_identical_to_the_reference_matrix(s, n, block):
-    from facesynth.search.costs import transition_panel_rows
-    from facesynth.search.dp import PanelMatrix
+    from facesynth.domain.search.costs import transition_panel_rows
+    from facesynth.domain.search.dp import PanelMatrix
 
     rng = np.random.default_rng(n)
     vis = rng.integers(0, 14, n)
@@ -61,10 +62,10 @@ def test_matrices_of_the_real_database_match_the_schema_1_reference(tiny_db, tin
     """TC from the per-node features against the stored-table formulas of schema 1 (DSC in
     float64 rounded once, NumPy's pairwise PGap/VGap sums): equal to float32 rounding, and the
     panel layout bit-identical to the matrix."""
+    from facesynth.domain.search.nodes import build_nodes, dsc_matrix, pair_gaps_numpy
+    from facesynth.domain.search.pairs import boundary_states
     from facesynth.model.motiondb import MotionDatabase
     from facesynth.model.pca import PcaFrames
-    from facesynth.search.nodes import build_nodes, dsc_matrix, pair_gaps_numpy
-    from facesynth.search.pairs import boundary_states
 
     db = MotionDatabase.read(tiny_db)
     s = config.settings("synthesize")
@@ -74,8 +75,8 @@ def test_matrices_of_the_real_database_match_the_schema_1_reference(tiny_db, tin
     states = boundary_states(pca.coefficients, nodes, pca.model, config.settings("build_db").boundary_fit_frames)
     pgap, vgap = pair_gaps_numpy(*(a.astype(np.float32) for a in states))
     ref = transition_matrix(dsc, pgap, vgap, db.nodes.viseme, db.nodes.pre, s)
-    tc, panels = db.transition(s), db.transition_panels(s).panels
-    # The documented bound (facesynth.search.pairs): (terms + 2) 2^-24 of each sum.
+    tc, panels = transition_costs(db, s).dense(), transition_costs(db, s).panels().panels
+    # The documented bound (facesynth.domain.search.pairs): (terms + 2) 2^-24 of each sum.
     np.testing.assert_allclose(tc, ref, rtol=(93 + 2) * 2.0 ** -24, atol=1e-4)
     as_matrix = panels.transpose(1, 0, 2).reshape(len(tc), -1)[:, : len(tc)]
     assert np.array_equal(as_matrix.view(np.uint32), tc.view(np.uint32))

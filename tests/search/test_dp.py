@@ -6,7 +6,8 @@ import numpy as np
 import pytest
 from features import tiny_utterance_steps
 
-from facesynth.search.dp import OpenCLDp, dp_numpy, dp_opencl
+from facesynth.domain.search.dp import OpenCLDp, dp_numpy, dp_opencl
+from facesynth.domain.search.pairs import transition_costs
 
 
 def _random(n, t, seed):
@@ -47,7 +48,7 @@ def test_ties_go_to_the_lowest_index(opencl_device):
 def test_buffers_split_below_the_allocation_limit_give_the_same_answer(monkeypatch, opencl_device):
     tc, obs = _random(700, 8, seed=3)
     ref = dp_numpy(tc, obs)
-    monkeypatch.setattr("facesynth.opencl.max_alloc_bytes", lambda: 3 * 700 * 96 * 4)  # three panels per buffer
+    monkeypatch.setattr("facesynth.base.opencl.max_alloc_bytes", lambda: 3 * 700 * 96 * 4)  # three panels per buffer
     runner = OpenCLDp(tc)
     assert len(runner.groups) == 3
     res = runner.run(obs)
@@ -61,7 +62,7 @@ def test_real_database_with_emotions_and_constraints(tiny_db, tiny_corpus, held_
 
     db = MotionDatabase.read(tiny_db)
     s = config.settings("synthesize")
-    tc = db.transition(s)
+    tc = transition_costs(db, s).dense()
     steps, constraints = tiny_utterance_steps(db, s, tiny_corpus / "labels" / f"{held_out_take}.TextGrid",
                                               with_emotions, with_constraints)
     ref, cl = dp_numpy(tc, steps.total), dp_opencl(tc, steps.total)
@@ -73,7 +74,7 @@ def test_real_database_with_emotions_and_constraints(tiny_db, tiny_corpus, held_
 
 
 def test_bounded_dp_is_exact_and_prunes_with_a_tight_bound():
-    from facesynth.search.dp import dp_bounded
+    from facesynth.domain.search.dp import dp_bounded
 
     tc, obs = _random(300, 12, seed=11)
     ref = dp_numpy(tc, obs)
@@ -96,8 +97,8 @@ def test_host_work_runs_once_while_the_device_searches(opencl_device):
 
 def test_a_misaligned_host_array_is_copied_into_aligned_memory(opencl_device):
     """NumPy aligns to 16 bytes only; the kernel reads float8s from host memory (USE_HOST_PTR)."""
-    from facesynth.opencl import aligned_empty, host_aligned
-    from facesynth.search.dp import PanelMatrix
+    from facesynth.base.opencl import aligned_empty, host_aligned
+    from facesynth.domain.search.dp import PanelMatrix
 
     tc, obs = _random(300, 6, seed=21)
     good = PanelMatrix.from_matrix(tc)

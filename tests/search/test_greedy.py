@@ -4,13 +4,14 @@ never above greedy's, PQ-Matching over the whole sentence agrees, ties follow em
 import numpy as np
 import pytest
 
+from facesynth.base.phonemes import PAU
+from facesynth.domain.postprocess.cao import blend_jumps, learned_cutoffs, lowpass
+from facesynth.domain.search.costs import path_terms, step_costs
+from facesynth.domain.search.dp import dp_numpy
+from facesynth.domain.search.greedy import Greedy, anime_graph, cluster_graph, motion_features, pq_matching
+from facesynth.domain.search.inputs import read_utterance
+from facesynth.domain.search.pairs import transition_costs
 from facesynth.model.motiondb import MotionDatabase
-from facesynth.motion.cao import blend_jumps, learned_cutoffs, lowpass
-from facesynth.phonemes import PAU
-from facesynth.search.costs import path_terms, step_costs
-from facesynth.search.dp import dp_numpy
-from facesynth.search.greedy import Greedy, anime_graph, cluster_graph, motion_features, pq_matching
-from facesynth.search.inputs import read_utterance
 
 
 def min_jumps(phones, node_phone, suc):
@@ -76,7 +77,7 @@ def test_ties_follow_the_asked_emotion():
 def test_dp_cost_is_never_above_greedy_on_the_real_database(tiny_db, tiny_corpus, config):
     db = MotionDatabase.read(tiny_db)
     s = config.settings("synthesize")
-    tc = db.transition(s)
+    tc = transition_costs(db, s).dense()
     greedy = Greedy(anime_graph(db.nodes.phone, db.nodes.emotion, db.nodes.suc), db.nodes.viseme, db.nodes.emotion, tc, s.alpha6 * s.pnt)
     for tg in sorted((tiny_corpus / "labels").glob("*.TextGrid")):
         utt = read_utterance(tg)
@@ -93,10 +94,10 @@ def test_clustered_graph_matches_phones_through_its_merged_animes(tiny_db, tiny_
     graph = cluster_graph(db.nodes.phone, db.nodes.emotion, db.nodes.suc, features, k=60)
     assert len(graph.node) == 60 and graph.phones.sum() >= 60
     s = config.settings("synthesize")
-    greedy = Greedy(graph, db.nodes.viseme, db.nodes.emotion, db.transition(s), s.alpha6 * s.pnt)
+    greedy = Greedy(graph, db.nodes.viseme, db.nodes.emotion, transition_costs(db, s).dense(), s.alpha6 * s.pnt)
     utt = read_utterance(sorted((tiny_corpus / "labels").glob("*.TextGrid"))[0])
     res = greedy.search(utt.phones, utt.emotions)
-    from facesynth.phonemes import PHONE_ID
+    from facesynth.base.phonemes import PHONE_ID
 
     for t, p in enumerate(utt.phones):
         if p != PAU and PHONE_ID[p] in graph.array:

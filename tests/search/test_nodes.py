@@ -1,9 +1,9 @@
 import numpy as np
 import pytest
 
+from facesynth.domain.search.nodes import build_nodes, dsc_features, dsc_matrix, pair_gaps_numpy
 from facesynth.model.motiondb import Nodes
 from facesynth.model.tables import Phones, Takes
-from facesynth.search.nodes import build_nodes, dsc_features, dsc_matrix, pair_gaps_numpy
 
 
 def _tables():
@@ -108,7 +108,7 @@ def test_a_database_with_pair_tables_says_to_rebuild(tiny_db, tmp_path):
 
     import h5py
 
-    from facesynth.errors import FacesynthError
+    from facesynth.base.errors import FacesynthError
     from facesynth.model.motiondb import MotionDatabase
 
     old = tmp_path / "old.h5"

@@ -5,8 +5,8 @@ import numpy as np
 import pytest
 from features import random_features
 
-from facesynth.config import Config
-from facesynth.search.pairs import PairFeatures, TransitionCosts
+from facesynth.base.config import Config
+from facesynth.domain.search.pairs import PairFeatures, TransitionCosts
 
 
 @pytest.fixture(scope="module")
@@ -60,7 +60,7 @@ def test_bounds_hold_on_every_pair(s):
 
 
 def test_pair_tables_give_the_on_demand_costs_bit_for_bit(s):
-    from facesynth.search.pairs import DenseCosts, PairTerms
+    from facesynth.domain.search.pairs import DenseCosts, PairTerms
 
     f = random_features(97, 3, markers=5, dims=6)
     terms = PairTerms(f)

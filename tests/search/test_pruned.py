@@ -8,10 +8,10 @@ import numpy as np
 import pytest
 from features import random_features, tiny_utterance_steps
 
-from facesynth.config import Config
-from facesynth.search.dp import dp_numpy, dp_opencl
-from facesynth.search.pairs import PairFeatures, TransitionCosts
-from facesynth.search.pruned import _column_minima_numpy, dp_pruned
+from facesynth.base.config import Config
+from facesynth.domain.search.dp import dp_numpy, dp_opencl
+from facesynth.domain.search.pairs import PairFeatures, TransitionCosts, transition_costs
+from facesynth.domain.search.pruned import _column_minima_numpy, dp_pruned
 
 
 def _settings(*overrides):
@@ -100,7 +100,7 @@ def test_tiny_preset_with_emotions_and_constraints(tiny_db, tiny_corpus, held_ou
 
     db = MotionDatabase.read(tiny_db)
     s = config.settings("synthesize")
-    tc = db.transition_costs(s, opencl=False)
+    tc = transition_costs(db, s, opencl=False)
     steps, constraints = tiny_utterance_steps(db, s, tiny_corpus / "labels" / f"{held_out_take}.TextGrid",
                                               with_emotions, with_constraints)
     res, stats = _check(tc, steps.total)
@@ -112,11 +112,11 @@ def test_tiny_preset_with_emotions_and_constraints(tiny_db, tiny_corpus, held_ou
 @pytest.mark.parametrize("opencl", [False, True])
 def test_backward_values_and_a_kept_last_step_equal_the_dense_dp(opencl):
     if opencl:
-        from facesynth.opencl import use_opencl
+        from facesynth.base.opencl import use_opencl
 
         if not use_opencl(True):
             pytest.skip("no OpenCL device builds facesynth's kernels")
-    from facesynth.search.pruned import backward_pruned
+    from facesynth.domain.search.pruned import backward_pruned
 
     s = _settings()
     f = random_features(150, seed=77, duplicates=30)

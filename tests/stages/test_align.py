@@ -1,14 +1,14 @@
 import numpy as np
 import pytest
 
-from facesynth.errors import InputError
+from facesynth.base.errors import InputError
 from facesynth.formats.audio import read_audio
 from facesynth.formats.labels import read_phone_segments, read_textgrid
 from facesynth.stages import align
 
 
 def _pronunciations(word):
-    from facesynth.phonemes import cmudict, to_festival
+    from facesynth.base.phonemes import cmudict, to_festival
 
     return [[to_festival(p) for p in pron] for pron in cmudict()[word]]
 
@@ -72,7 +72,7 @@ def test_text_that_is_not_spoken_is_warned_about(tiny_corpus, config, tmp_path):
 
 
 def lexicon_arpabet(word):
-    from facesynth.phonemes import cmudict
+    from facesynth.base.phonemes import cmudict
 
     return cmudict()[word][0]
 

@@ -151,7 +151,7 @@ def test_command_exit_status_and_a_malformed_script(tiny_corpus, tiny_db, takes,
 
 def test_the_job_carries_the_limits_to_the_workers(tiny_corpus, tiny_db, takes, config, client, tmp_path):
     """--set limits.* reaches the worker processes: a line past a bound fails there, naming the setting."""
-    from facesynth import limits
+    from facesynth.base import limits
 
     row = takes["neutral_s001"]
     script = _write(tmp_path / "s.csv", [("id", "audio", "alignment"),
@@ -168,9 +168,9 @@ def test_a_line_checks_memory_matches_aliases_in_any_case_and_refuses_constraint
     """In the worker's code (run here in-process): the memory check of the shared core, emotion aliases
     matched case-insensitively (an alias written with capitals in the settings, asked in upper case),
     and constraints refused for a method that takes none."""
-    from facesynth import limits
-    from facesynth.batch.line import run_line
-    from facesynth.batch.script import read_script
+    from facesynth.base import limits
+    from facesynth.domain.batch.line import run_line
+    from facesynth.domain.batch.script import read_script
 
     row = takes["neutral_s001"]
     (tmp_path / "c.txt").write_text("1 0\n")
@@ -218,7 +218,7 @@ def test_rig_outputs_from_one_solve_named_in_the_manifest(tiny_corpus, tiny_db, 
     import numpy as np
     import soundfile as sf
 
-    from facesynth.exports import livelink
+    from facesynth.formats import livelink_face as livelink
     from facesynth.model.curves import RigCurves
     from facesynth.stages import solve
 
@@ -290,9 +290,9 @@ def _check_manifest(out, line_id, names):
 
 def test_a_line_without_usd_core_fails_alone_in_one_sentence(tiny_corpus, tiny_db, takes, config, tmp_path,
                                                               monkeypatch):
-    from facesynth.batch.line import run_line
-    from facesynth.batch.script import read_script
-    from facesynth.exports import usd
+    from facesynth.domain.batch.line import run_line
+    from facesynth.domain.batch.script import read_script
+    from facesynth.domain.exports import usd
 
     row = takes["neutral_s001"]
     script = _write(tmp_path / "s.csv", [("id", "audio", "alignment"),
@@ -333,13 +333,13 @@ def test_a_user_s_rig_takes_the_rig_outputs(tiny_corpus, tiny_db, takes, config,
     import imageio_ffmpeg
     import numpy as np
 
-    from facesynth.batch.line import run_line
-    from facesynth.batch.script import read_script
-    from facesynth.errors import InputError, UsageError
-    from facesynth.facerig import load_face_rig
+    from facesynth.base.errors import InputError, UsageError
+    from facesynth.domain.batch.line import run_line
+    from facesynth.domain.batch.script import read_script
+    from facesynth.domain.rig.face import load_face_rig
+    from facesynth.domain.rig.loading import builtin_rig
     from facesynth.formats.mesh import write_obj
     from facesynth.model.curves import RigCurves
-    from facesynth.retarget.rig import builtin_rig
 
     builtin = load_face_rig()
     folder = tmp_path / "myrig"

@@ -10,15 +10,15 @@ import numpy as np
 import pytest
 from click.testing import CliRunner
 
+from facesynth.base.config import Config
+from facesynth.base.errors import InputError
 from facesynth.cli import main
-from facesynth.config import Config
-from facesynth.errors import InputError
-from facesynth.facerig import load_face_rig
+from facesynth.domain.retarget.bind import axis_rotation
+from facesynth.domain.rig.face import load_face_rig
 from facesynth.formats.mesh import read_binding, read_rigid_markers
 from facesynth.formats.mocap import MarkerTake, read_mocap, write_c3d
 from facesynth.model.curves import RigCurves
 from facesynth.model.meshanim import MeshAnimation
-from facesynth.retarget.bind import axis_rotation
 from facesynth.stages import bind, ingest, normalize, render, rig_mesh, solve
 
 #: NaturalPoint's Facial-Sing.c3d (c3d.org sample 29): a singer's face, 38 markers, 100 Hz, no audio.

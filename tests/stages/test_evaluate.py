@@ -4,12 +4,12 @@ import numpy as np
 import pytest
 from click.testing import CliRunner
 
-from facesynth import evaluation
-from facesynth.bootstrap import paired_difference, resamples
+from facesynth.base.config import Config
+from facesynth.base.errors import InputError
 from facesynth.cli import main
-from facesynth.config import Config
-from facesynth.errors import InputError
-from facesynth.search.inputs import Utterance
+from facesynth.domain.evaluation import held_out as evaluation
+from facesynth.domain.evaluation.bootstrap import paired_difference, resamples
+from facesynth.domain.search.inputs import Utterance
 from facesynth.stages import tune
 
 

@@ -7,13 +7,14 @@ import numpy as np
 import pytest
 from click.testing import CliRunner
 
-from facesynth import baselines, bootstrap, evaluation
+from facesynth.base.config import Config
 from facesynth.cli import main
-from facesynth.config import Config
-from facesynth.corpus.truth import read_truth
-from facesynth.facerig import load_face_rig
+from facesynth.domain.corpus.truth import read_truth
+from facesynth.domain.evaluation import baselines, bootstrap
+from facesynth.domain.evaluation import held_out as evaluation
+from facesynth.domain.rig.face import load_face_rig
+from facesynth.domain.search.inputs import Utterance
 from facesynth.model.motiondb import MotionDatabase
-from facesynth.search.inputs import Utterance
 
 
 @pytest.fixture(scope="module")

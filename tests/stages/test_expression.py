@@ -4,10 +4,10 @@ import numpy as np
 import pytest
 from click.testing import CliRunner
 
+from facesynth.base.errors import InputError
 from facesynth.cli import main
-from facesynth.errors import InputError
+from facesynth.model.expression import StyleModel
 from facesynth.model.motion import Motion
-from facesynth.model.style import StyleModel
 from facesynth.stages import capture
 from facesynth.stages import expression as stage
 

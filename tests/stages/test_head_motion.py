@@ -7,7 +7,7 @@ from click.testing import CliRunner
 
 from facesynth.cli import main
 from facesynth.formats.audio import write_wav
-from facesynth.model.headmotion import HeadMotion
+from facesynth.model.head_motion import HeadMotion
 from facesynth.model.motion import Motion
 
 

@@ -7,7 +7,7 @@ import h5py
 import numpy as np
 import pytest
 
-from facesynth.errors import InputError
+from facesynth.base.errors import InputError
 from facesynth.formats.audio import read_audio, write_wav
 from facesynth.formats.labels import Segment, write_textgrid
 from facesynth.formats.mocap import MarkerTake, read_mocap, write_c3d
@@ -172,8 +172,8 @@ def test_a_take_with_only_a_transcript_is_aligned(corpus, config):
 def test_align_settings_reach_the_aligner_of_transcript_only_takes(corpus, tmp_path, monkeypatch):
     from click.testing import CliRunner
 
-    from facesynth import alignment as align
     from facesynth.cli import main
+    from facesynth.domain.speech import alignment as align
     from facesynth.formats.labels import read_phone_segments
 
     rows = _rows(corpus)

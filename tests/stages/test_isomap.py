@@ -3,10 +3,10 @@ import numpy as np
 import pytest
 from click.testing import CliRunner
 
-from facesynth import embedding
+from facesynth.base.config import Config
+from facesynth.base.errors import InputError
 from facesynth.cli import main
-from facesynth.config import Config
-from facesynth.errors import InputError
+from facesynth.domain.database import embedding
 from facesynth.stages import isomap
 
 

@@ -18,12 +18,12 @@ import pytest
 from click.testing import CliRunner
 
 from facesynth.cli import main
-from facesynth.exports.isomap_page import mid_time
+from facesynth.domain.exports.isomap_page import mid_time
+from facesynth.domain.search.constraint_choice import time_correct_offset
+from facesynth.domain.search.inputs import read_constraints, read_utterance
 from facesynth.formats.labels import Segment, read_phone_segments, write_textgrid
 from facesynth.model.motion import Motion
 from facesynth.model.motiondb import MotionDatabase
-from facesynth.search.constraint_choice import time_correct_offset
-from facesynth.search.inputs import read_constraints, read_utterance
 from facesynth.stages import suggest
 
 CHROMIUM = shutil.which("chromium")
@@ -113,7 +113,7 @@ def browser(made, tmp_path):
 def _expected(tiny_db, tg, text: str):
     """What ``facesynth suggest`` says at the time written as ``text``: the step, the
     context-correct nodes and every node's time-correct frame in its take."""
-    from facesynth.config import Config
+    from facesynth.base.config import Config
 
     config = Config.load()
     found = suggest.suggest(tiny_db, tg, float(text), config.settings("synthesize"), config.settings("ingest"))

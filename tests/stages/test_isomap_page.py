@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 from PIL import Image
 
-from facesynth.config import Config
+from facesynth.base.config import Config
 from facesynth.model.isomap import PhonemeMaps
 from facesynth.model.motiondb import MotionDatabase
 from facesynth.stages import isomap

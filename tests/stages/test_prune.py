@@ -3,9 +3,9 @@ import numpy as np
 import pytest
 from click.testing import CliRunner
 
+from facesynth.base.errors import InputError
 from facesynth.cli import main
-from facesynth.contamination import excursions
-from facesynth.errors import InputError
+from facesynth.domain.database.contamination import excursions
 from facesynth.model.motiondb import Nodes
 from facesynth.stages import prune
 from facesynth.stages.prune import parse_ids
@@ -63,8 +63,8 @@ def test_removing_nodes_keeps_links_and_costs_consistent(tiny_db, tmp_path, conf
 
 
 def test_auto_finds_the_injected_contamination(small_db_and_truth, config):
-    from facesynth.artifacts import open_artifact, read
-    from facesynth.contamination import contaminated_nodes, detect
+    from facesynth.domain.database.contamination import contaminated_nodes, detect
+    from facesynth.model.artifacts import open_artifact, read
     from facesynth.model.tables import Takes
 
     db, truth_csv = small_db_and_truth

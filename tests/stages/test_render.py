@@ -6,13 +6,14 @@ import pytest
 import soundfile as sf
 from scipy import sparse
 
-from facesynth.config import Config
-from facesynth.errors import InputError, UsageError
-from facesynth.facerig import load_face_rig
+from facesynth.base.config import Config
+from facesynth.base.errors import InputError, UsageError
+from facesynth.domain.rendering import parts, video
+from facesynth.domain.rendering.camera import Camera
+from facesynth.domain.rendering.raster import NumpyRasterizer, OpenCLRasterizer
+from facesynth.domain.rig import face
+from facesynth.domain.rig.face import load_face_rig
 from facesynth.model.meshanim import MeshAnimation
-from facesynth.rendering import parts, video
-from facesynth.rendering.camera import Camera
-from facesynth.rendering.raster import NumpyRasterizer, OpenCLRasterizer
 from facesynth.stages import render
 
 
@@ -169,10 +170,10 @@ def test_holes_are_found_on_the_rig_mesh_itself():
 def test_gaze_from_rig_weights():
     rig = load_face_rig()
     w = _weights(rig, eyeLookOut_L=1.0, eyeLookIn_R=1.0, eyeLookUp_L=0.5, eyeLookUp_R=0.5)
-    gaze = parts.gaze_from_rig_weights(w[None], rig.shape_names)
-    k = parts.GAZE_RADIANS_PER_WEIGHT
+    gaze = face.gaze_from_rig_weights(w[None], rig.shape_names)
+    k = face.GAZE_RADIANS_PER_WEIGHT
     assert np.allclose(gaze[0], [[k, 0.5 * k], [k, 0.5 * k]])              # both eyes toward +x, up
-    assert parts.gaze_from_rig_weights(np.zeros((1, 3)), ("a", "b", "c")) is None
+    assert face.gaze_from_rig_weights(np.zeros((1, 3)), ("a", "b", "c")) is None
 
 
 def test_a_plain_mesh_without_holes_still_renders(tmp_path):

@@ -9,16 +9,15 @@ import numpy as np
 import pytest
 import soundfile as sf
 
-from facesynth.baselines import openfacefx_missing
-from facesynth.config import Config
-from facesynth.errors import InputError, UsageError
-from facesynth.facerig import load_face_rig
+from facesynth.base.config import Config
+from facesynth.base.errors import InputError, UsageError
+from facesynth.domain.evaluation.baselines import openfacefx_missing
+from facesynth.domain.rendering import video
+from facesynth.domain.rig.face import gaze_from_rig_weights, load_face_rig
+from facesynth.domain.rig.loading import builtin_rig, pose_rig
 from facesynth.model.curves import RigCurves
 from facesynth.model.meshanim import MeshAnimation
 from facesynth.model.motion import Motion
-from facesynth.rendering import video
-from facesynth.rendering.parts import gaze_from_rig_weights
-from facesynth.retarget.rig import builtin_rig, pose_rig
 from facesynth.stages import openfacefx, render, rig_mesh
 
 needs_openfacefx = pytest.mark.skipif(openfacefx_missing() is not None, reason=str(openfacefx_missing()))

@@ -2,10 +2,10 @@ import h5py
 import pytest
 from click.testing import CliRunner
 
+from facesynth.base.errors import InputError
 from facesynth.cli import main
-from facesynth.errors import InputError
+from facesynth.domain.search.inputs import read_utterance
 from facesynth.model.motiondb import MotionDatabase
-from facesynth.search.inputs import read_utterance
 from facesynth.stages import suggest, synthesize
 
 

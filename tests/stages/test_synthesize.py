@@ -3,8 +3,8 @@ import numpy as np
 import pytest
 from click.testing import CliRunner
 
+from facesynth.base.errors import InputError, SearchError
 from facesynth.cli import main
-from facesynth.errors import InputError, SearchError
 from facesynth.model.motiondb import MotionDatabase
 from facesynth.stages import synthesize
 
@@ -37,7 +37,7 @@ def test_motion_artifact_holds_both_rates_path_costs_and_provenance(tiny_db, tin
 def test_constraints_are_met_and_emotions_steer_the_search(tiny_db, tiny_corpus, held_out_take, config, tmp_path):
     tg = tiny_corpus / "labels" / f"{held_out_take}.TextGrid"
     db = MotionDatabase.read(tiny_db)
-    from facesynth.search.inputs import read_utterance
+    from facesynth.domain.search.inputs import read_utterance
 
     utt = read_utterance(tg)
     t = next(k for k, p in enumerate(utt.phones) if p != "pau" and p in db.nodes.phone)
@@ -68,7 +68,7 @@ def test_bad_constraints_are_named(tiny_db, tiny_corpus, held_out_take, config, 
 
 
 def test_constraint_with_a_node_of_another_phone(tiny_db, tiny_corpus, held_out_take, config, tmp_path):
-    from facesynth.search.inputs import read_utterance
+    from facesynth.domain.search.inputs import read_utterance
 
     db = MotionDatabase.read(tiny_db)
     utt = read_utterance(tiny_corpus / "labels" / f"{held_out_take}.TextGrid")
@@ -113,7 +113,7 @@ def test_cli_verbose_reports_every_phase(tiny_db, tiny_corpus, held_out_take, tm
 
 
 def test_numpy_and_opencl_synthesis_write_the_same_motion(tiny_db, tiny_corpus, held_out_take, config, tmp_path, opencl_device):
-    from facesynth.config import Config
+    from facesynth.base.config import Config
 
     tg = tiny_corpus / "labels" / f"{held_out_take}.TextGrid"
     _run(tiny_db, tg, tmp_path / "a.h5", config)
@@ -126,7 +126,7 @@ def test_numpy_and_opencl_synthesis_write_the_same_motion(tiny_db, tiny_corpus, 
 
 @pytest.mark.parametrize("use_opencl", ["true", "false"])
 def test_pruned_and_dense_searches_write_the_same_motion(tiny_db, tiny_corpus, held_out_take, tmp_path, use_opencl):
-    from facesynth.config import Config
+    from facesynth.base.config import Config
 
     tg = tiny_corpus / "labels" / f"{held_out_take}.TextGrid"
     costs = [_run(tiny_db, tg, tmp_path / f"{dp}.h5", Config.load(None, (f"synthesize.dp={dp}", f"synthesize.use_opencl={use_opencl}"))).cost
@@ -159,8 +159,8 @@ def test_audio_and_text_are_aligned_on_the_fly_and_emotion_tiers_read(tiny_db, t
 
 
 def test_align_settings_reach_the_aligner_of_the_input_audio(tiny_db, tiny_corpus, held_out_take, tmp_path, monkeypatch):
-    from facesynth import recognition
-    from facesynth.alignment import Alignment
+    from facesynth.domain.speech import recognition
+    from facesynth.domain.speech.alignment import Alignment
     from facesynth.formats.labels import read_phone_segments
 
     received = []

@@ -10,10 +10,10 @@ import numpy as np
 import pytest
 from click.testing import CliRunner
 
+from facesynth.base.errors import InputError
 from facesynth.cli import main
-from facesynth.errors import InputError
-from facesynth.methods import MethodSettings
-from facesynth.methods.trajectory import (
+from facesynth.domain.methods import MethodSettings
+from facesynth.domain.methods.trajectory import (
     dense_system,
     duration_weights,
     effective_lambda,
@@ -22,9 +22,9 @@ from facesynth.methods.trajectory import (
     solve,
     synthesize_path,
 )
+from facesynth.domain.search.inputs import read_utterance
 from facesynth.model.motion import Motion
 from facesynth.model.trajectory import TrajectoryModel
-from facesynth.search.inputs import read_utterance
 from facesynth.stages import synthesize
 
 
@@ -158,12 +158,12 @@ def _textgrid(path, phones):
 def test_an_unseen_phone_falls_back_to_its_viseme_class_with_a_warning(model, caplog):
     spoken = [p for p in model.phones if p != "pau"]
     have = set(model.phones)
-    from facesynth.phonemes import VISEME_GROUPS
+    from facesynth.base.phonemes import VISEME_GROUPS
 
     group = next(g for g in VISEME_GROUPS if any(p in have for p in g) and any(p not in have for p in g))
     unseen = next(p for p in group if p not in have)
     phones = ["pau", spoken[0], unseen, "pau"]
-    with caplog.at_level(logging.WARNING, logger="facesynth.methods.trajectory"):
+    with caplog.at_level(logging.WARNING, logger="facesynth.domain.methods.trajectory"):
         t = frame_targets(model, phones, ["neutral"] * 4, np.array([0, 0.2, 0.4, 0.6]), np.array([0.2, 0.4, 0.6, 0.8]),
                           120.0)
     assert unseen in t.fallbacks and f"/{unseen}/" in caplog.text
@@ -171,7 +171,7 @@ def test_an_unseen_phone_falls_back_to_its_viseme_class_with_a_warning(model, ca
 
 
 def test_a_phone_of_a_class_the_model_lacks_is_refused(model):
-    from facesynth.phonemes import VISEME_GROUPS
+    from facesynth.base.phonemes import VISEME_GROUPS
 
     have = set(model.phones)
     group = next((g for g in VISEME_GROUPS if not any(p in have for p in g)), None)

@@ -6,9 +6,9 @@ import dataclasses
 import numpy as np
 import pytest
 
-from facesynth import evaluation
-from facesynth.config import Config
-from facesynth.errors import InputError
+from facesynth.base.config import Config
+from facesynth.base.errors import InputError
+from facesynth.domain.evaluation import held_out as evaluation
 from facesynth.stages import tune
 
 #: A budget small enough for the tiny corpus: the initial simplex (7 points) and a step or two.
@@ -225,7 +225,7 @@ def test_refusal_comes_before_any_file_is_read(tmp_path):
 
 
 def test_existing_output_is_kept_without_overwrite(tiny_db, tiny_artifacts, tmp_path):
-    from facesynth.errors import OutputExistsError
+    from facesynth.base.errors import OutputExistsError
 
     out = tmp_path / "tuned.toml"
     out.write_text("# mine\n", encoding="utf-8")

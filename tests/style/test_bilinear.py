@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from facesynth.style import bilinear
+from facesynth.domain.expression import bilinear
 
 
 def _exact_data(rng, S=3, C=60, K=12, J=4):

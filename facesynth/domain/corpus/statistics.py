@@ -1,0 +1,286 @@
+"""Statistics of blendshape-weight curves, to compare the virtual actress with a real capture.
+
+The comparison is on ARKit weights at 60 frames/s (the rate of an iPhone Live Link Face
+capture): for each shape its range (5th and 95th percentiles) and mean absolute velocity
+(weight units per second), and the Pearson correlation between the main mouth shapes.
+Also measured on the corpus's truth: blinks per minute and their durations, and the
+inner-lip gap on the mesh at the centre of every bilabial.
+"""
+
+from __future__ import annotations
+
+import csv
+from pathlib import Path
+
+import numpy as np
+
+from facesynth.domain.rig.face import Rig
+
+#: The mouth shapes whose correlations are compared (ARKit names).
+MOUTH_SHAPES = ("jawOpen", "mouthClose", "mouthFunnel", "mouthPucker", "mouthSmileLeft", "mouthSmileRight",
+                "mouthLowerDownLeft", "mouthUpperUpLeft", "mouthStretchLeft", "mouthPressLeft", "mouthRollLower")
+#: Shapes whose range and velocity are compared (ARKit names).
+COMPARED_SHAPES = MOUTH_SHAPES + ("jawForward", "mouthShrugUpper", "mouthShrugLower", "mouthFrownLeft",
+                                  "eyeBlinkLeft", "eyeLookDownLeft", "browInnerUp", "browDownLeft",
+                                  "cheekSquintLeft", "noseSneerLeft")
+LLF_FPS = 60.0
+
+
+def arkit_label(name: str) -> str:
+    """ARKit name as in :attr:`Rig.arkit_names` ('eyeBlinkLeft')."""
+    return name[0].lower() + name[1:]
+
+
+def read_live_link_face(path: Path) -> tuple[list[str], np.ndarray]:
+    """A Live Link Face CSV: (the 52 ARKit names, lower-camel, weights (T, 52)), rotations left out."""
+    with open(path, newline="", encoding="utf-8") as fh:
+        reader = csv.DictReader(fh)
+        columns = [c for c in reader.fieldnames or [] if c not in ("Timecode", "BlendShapeCount")
+                   and not c.startswith(("Head", "LeftEye", "RightEye"))]
+        rows = [[float(r[c]) for c in columns] for r in reader]
+    return [arkit_label(c) for c in columns], np.array(rows)
+
+
+def resample(weights: np.ndarray, fps: float, new_fps: float) -> np.ndarray:
+    """Linear resampling of (T, K) curves from ``fps`` to ``new_fps``."""
+    t = np.arange(len(weights)) / fps
+    new_t = np.arange(0.0, t[-1] + 1e-9, 1.0 / new_fps)
+    return np.stack([np.interp(new_t, t, weights[:, k]) for k in range(weights.shape[1])], 1)
+
+
+def curve_statistics(takes: list[np.ndarray], names: list[str], fps: float) -> dict:
+    """Per shape: p5, p95 and mean |velocity| (1/s) over the frames of ``takes`` (each (T, K)
+    in ``names`` order), and the correlation matrix of :data:`MOUTH_SHAPES`."""
+    frames = np.concatenate(takes)
+    speed = np.concatenate([np.abs(np.diff(x, axis=0)) * fps for x in takes])
+    per_shape = {}
+    for name in COMPARED_SHAPES:
+        k = names.index(name)
+        per_shape[name] = {"p5": float(np.percentile(frames[:, k], 5)), "p95": float(np.percentile(frames[:, k], 95)),
+                           "mean_abs_velocity": float(speed[:, k].mean())}
+    idx = [names.index(n) for n in MOUTH_SHAPES]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        corr = np.corrcoef(frames[:, idx].T)
+    return {"shapes": per_shape, "mouth_correlation": {"names": list(MOUTH_SHAPES), "matrix": np.nan_to_num(corr).round(3).tolist()}}
+
+
+def blink_events(blink: np.ndarray, fps: float, threshold: float = 0.5) -> list[tuple[int, float]]:
+    """Blinks in an eyelid curve (T,): (frame of the peak, seconds above half closure)."""
+    above = np.concatenate([[False], blink > threshold, [False]])
+    edges = np.diff(above.astype(np.int8))
+    starts, ends = np.nonzero(edges == 1)[0], np.nonzero(edges == -1)[0]
+    return [(int(a + np.argmax(blink[a:b])), (b - a) / fps) for a, b in zip(starts, ends)]
+
+
+def bilabial_gaps(rig: Rig, weights: np.ndarray, phones, upper: np.ndarray, lower: np.ndarray, fps: float) -> list[float]:
+    """The inner-lip gap on the mesh (mm) at the centre of every /p b m/ of a take.
+    phones : (start s, end s, label) triples; weights : (T, E) rig weights; upper, lower : the
+    lip surfaces' vertices (:func:`facesynth.domain.rig.markers.lip_surfaces`)."""
+    from facesynth.domain.rig.markers import mesh_lip_gap
+
+    centres = [int(round(0.5 * (a + b) * fps)) for a, b, p in phones if p in ("p", "b", "m", "em")]
+    centres = [min(c, len(weights) - 1) for c in centres]
+    if not centres:
+        return []
+    return mesh_lip_gap(rig, weights[centres], upper, lower).tolist()
+
+
+# ---------------------------------------------------------------- articulation statistics
+# Comparable across sources whatever their units (mm of lip gap, 0..1 weights): a mouth-opening
+# curve is first normalised by its own source's range (:func:`normalise_by_range`), and every
+# rate is taken at one frame rate (:data:`ARTICULATION_FPS`, the rate of the FACEGOOD solve).
+
+#: The frame rate (Hz) every articulation statistic is computed at.
+ARTICULATION_FPS = 30.0
+#: Phone classes (Festival phones) whose mean mouth opening is compared.
+PHONE_CLASSES: dict[str, tuple[str, ...]] = {
+    "open_vowel": ("aa", "ae", "ah", "ao", "aw", "ay"),
+    "mid_vowel": ("eh", "ey", "ow", "oy", "er", "axr", "ax"),
+    "close_vowel": ("ih", "iy", "uh", "uw"),
+    "bilabial": ("p", "b", "m", "em"),
+    "labiodental": ("f", "v"),
+    "other_consonant": ("t", "d", "n", "l", "s", "z", "sh", "zh", "ch", "jh", "th", "dh", "k", "g", "ng", "nx",
+                        "r", "w", "y", "hh", "el", "en"),
+}
+
+#: Phone labels that mean silence.
+PAUSE_LABELS = frozenset({"pau", "sil", "sp", ""})
+#: Silences at least this long (s) are pauses, left out of the speech statistics.
+MIN_PAUSE_S = 0.25
+
+
+def normalise_by_range(curves: list[np.ndarray], low_pct: float = 5.0, high_pct: float = 95.0):
+    """Curves (each (T,)) of one source scaled so that the source's ``low_pct`` percentile (over
+    all its frames) is 0 and its ``high_pct`` percentile is 1. Returns (scaled curves, (low, high)
+    in the source's units)."""
+    frames = np.concatenate(curves)
+    low, high = (float(v) for v in np.percentile(frames, [low_pct, high_pct]))
+    scale = high - low if high > low else 1.0
+    return [(np.asarray(c, np.float64) - low) / scale for c in curves], (low, high)
+
+
+def _percentiles(values: np.ndarray) -> dict[str, float]:
+    return {"p50": float(np.percentile(values, 50)), "p95": float(np.percentile(values, 95))}
+
+
+def motion_statistics(curves: list[np.ndarray], fps: float = ARTICULATION_FPS,
+                      masks: list[np.ndarray] | None = None) -> dict:
+    """Speed of range-normalised curves (each (T,), e.g. from :func:`normalise_by_range`) at
+    ``fps``: |velocity| (range/s, central differences) and |acceleration| (range/s^2, second
+    differences), each as median and 95th percentile over the frames where ``masks`` (each (T,)
+    bool; default all) is true."""
+    masks = masks if masks is not None else [np.ones(len(c), bool) for c in curves]
+    speed = np.concatenate([np.abs(np.gradient(c, 1.0 / fps))[m] for c, m in zip(curves, masks) if len(c) > 2])
+    accel = np.concatenate([np.abs(np.gradient(np.gradient(c, 1.0 / fps), 1.0 / fps))[m]
+                            for c, m in zip(curves, masks) if len(c) > 2])
+    return {"velocity": _percentiles(speed), "acceleration": _percentiles(accel)}
+
+
+def opening_events(curves: list[np.ndarray], fps: float = ARTICULATION_FPS, prominence: float = 0.25,
+                   masks: list[np.ndarray] | None = None) -> dict:
+    """Openings (maxima) and closings (minima) per second of range-normalised mouth-opening
+    curves (each (T,)): the extrema that stand out by at least ``prominence`` of the range,
+    counted where ``masks`` (each (T,) bool; default all) is true, per second of those frames."""
+    from scipy.signal import find_peaks
+
+    masks = masks if masks is not None else [np.ones(len(c), bool) for c in curves]
+    seconds = sum(int(m.sum()) for m in masks) / fps
+    openings = sum(int(m[find_peaks(c, prominence=prominence)[0]].sum()) for c, m in zip(curves, masks))
+    closings = sum(int(m[find_peaks(-c, prominence=prominence)[0]].sum()) for c, m in zip(curves, masks))
+    return {"openings_per_s": openings / seconds, "closings_per_s": closings / seconds}
+
+
+def audio_lag(envelopes: list[np.ndarray], openings: list[np.ndarray], fps: float = ARTICULATION_FPS,
+              max_lag_s: float = 0.4) -> dict:
+    """The lag (s) of the mouth opening behind the audio: the peak of their cross-correlation.
+
+    envelopes, openings : per take, (T,) the audio's loudness envelope and the mouth opening at
+    ``fps``. For every lag k (frames, |k| <= ``max_lag_s``) the Pearson r of envelope[t] and
+    opening[t + k] over all takes' overlapping frames; the peak is refined by a parabola through
+    it and its neighbours. Positive: the mouth moves after the sound; negative: before it.
+    Returns {"lag_s", "r" (at the best whole-frame lag), "r_at_0"}.
+    """
+    max_lag = int(round(max_lag_s * fps))
+    lags = np.arange(-max_lag, max_lag + 1)
+    r = np.empty(len(lags))
+    for i, k in enumerate(lags):
+        a, b = [], []
+        for env, x in zip(envelopes, openings):
+            n = min(len(env), len(x))
+            if k >= 0:
+                a.append(env[: n - k])
+                b.append(x[k:n])
+            else:
+                a.append(env[-k:n])
+                b.append(x[: n + k])
+        r[i] = np.corrcoef(np.concatenate(a), np.concatenate(b))[0, 1]
+    best = int(np.argmax(r))
+    shift = 0.0
+    if 0 < best < len(r) - 1:
+        left, mid, right = r[best - 1], r[best], r[best + 1]
+        curvature = left - 2 * mid + right
+        shift = 0.5 * (left - right) / curvature if curvature < 0 else 0.0
+    return {"lag_s": float((lags[best] + shift) / fps), "r": float(r[best]), "r_at_0": float(r[max_lag])}
+
+
+def autocorrelation_span(curves: list[np.ndarray], fps: float = ARTICULATION_FPS, level: float = 0.5,
+                         masks: list[np.ndarray] | None = None) -> float:
+    """Coarticulation span (s): the lag at which the autocorrelation of the mouth opening first
+    falls to ``level``, interpolated between frames; how long one articulatory gesture keeps the
+    curve like itself. Pooled over takes (each (T,)); with ``masks`` (each (T,) bool) only the
+    pairs of frames that are both inside the masks count, about the mean of the masked frames."""
+    masks = masks if masks is not None else [np.ones(len(c), bool) for c in curves]
+    frames = np.concatenate([np.asarray(c, np.float64)[m] for c, m in zip(curves, masks)])
+    mean = float(frames.mean())
+    n_max = max(len(c) for c in curves)
+    num, pairs = np.zeros(n_max), np.zeros(n_max)
+    for c, m in zip(curves, masks):
+        x = (np.asarray(c, np.float64) - mean) * m
+        full = np.correlate(x, x, mode="full")[len(x) - 1:]
+        count = np.correlate(m.astype(float), m.astype(float), mode="full")[len(m) - 1:]
+        num[: len(full)] += full
+        pairs[: len(count)] += count
+    with np.errstate(invalid="ignore", divide="ignore"):
+        acf = (num / pairs) / (num[0] / pairs[0])
+    below = np.flatnonzero(acf <= level)
+    if len(below) == 0:
+        return float("nan")
+    k = int(below[0])
+    frac = (acf[k - 1] - level) / (acf[k - 1] - acf[k]) if k > 0 else 0.0
+    return float((k - 1 + frac) / fps)
+
+
+def phone_class_opening(curves: list[np.ndarray], phones: list[list[tuple[float, float, str]]],
+                        fps: float = ARTICULATION_FPS) -> dict[str, float | None]:
+    """Mean of the range-normalised mouth opening (each take (T,)) over the frames of each phone
+    class of :data:`PHONE_CLASSES` and over pauses; phones per take as (start s, end s, Festival
+    label). None for a class with no frames."""
+    sums = {name: 0.0 for name in (*PHONE_CLASSES, "pause")}
+    counts = dict.fromkeys(sums, 0)
+    class_of = {p: name for name, members in PHONE_CLASSES.items() for p in members}
+    for curve, segs in zip(curves, phones):
+        t = np.arange(len(curve)) / fps
+        for a, b, label in segs:
+            name = class_of.get(label, "pause" if label in PAUSE_LABELS else None)
+            if name is None:
+                continue
+            sel = (t >= a) & (t < b)
+            sums[name] += float(curve[sel].sum())
+            counts[name] += int(sel.sum())
+    return {name: (sums[name] / counts[name] if counts[name] else None) for name in sums}
+
+
+def speech_masks(phones: list[list[tuple[float, float, str]]], lengths: list[int], fps: float = ARTICULATION_FPS,
+                 min_pause_s: float = MIN_PAUSE_S) -> list[np.ndarray]:
+    """Per take, (T,) bool: the frames of speech, i.e. outside every pause (consecutive phones
+    labelled ``pau``, ``sil``, ``sp`` or empty, merged) of at least ``min_pause_s``; shorter
+    silences (stop closures, recogniser slips) count as speech. Phones per take as (start s,
+    end s, label); ``lengths`` the takes' T."""
+    masks = []
+    for segs, n in zip(phones, lengths):
+        t = np.arange(n) / fps
+        mask = np.ones(n, bool)
+        pauses: list[list[float]] = []
+        for a, b, label in segs:
+            if label not in PAUSE_LABELS:
+                continue
+            if pauses and abs(pauses[-1][1] - a) < 1e-6:
+                pauses[-1][1] = b
+            else:
+                pauses.append([a, b])
+        for a, b in pauses:
+            if b - a >= min_pause_s:
+                mask &= ~((t >= a) & (t < b))
+        masks.append(mask)
+    return masks
+
+
+def articulation_statistics(openings: list[np.ndarray], jaw: list[np.ndarray], fps: float = ARTICULATION_FPS,
+                            envelopes: list[np.ndarray] | None = None,
+                            phones: list[list[tuple[float, float, str]]] | None = None) -> dict:
+    """All articulation statistics of one source: takes' mouth openings (T,) in the source's
+    unit and jaw-opening weights (T,) (ARKit ``jawOpen`` or its counterpart), all at ``fps``;
+    optionally the audio envelopes (T,) (for the lag) and the phones (for the per-class opening).
+
+    Returns {"opening_range" (p5/p50/p95, source unit), "jaw_range" (p5/p50/p95, weight),
+    "opening" and "jaw" (:func:`motion_statistics` of the range-normalised curves), "events"
+    (:func:`opening_events`), both over the speech frames where the phones are known (all frames
+    otherwise), "speech_seconds", "coarticulation_span_s", "audio_lag" or None,
+    "phone_class_opening" or None, "seconds"}.
+    """
+    normalised, _ = normalise_by_range(openings)
+    jaw_normalised, _ = normalise_by_range(jaw)
+    masks = speech_masks(phones, [len(c) for c in openings], fps) if phones is not None else None
+    all_open, all_jaw = np.concatenate(openings), np.concatenate(jaw)
+    return {
+        "seconds": float(len(all_open) / fps),
+        "opening_range": {f"p{q}": float(np.percentile(all_open, q)) for q in (5, 50, 95)},
+        "jaw_range": {f"p{q}": float(np.percentile(all_jaw, q)) for q in (5, 50, 95)},
+        "speech_seconds": float(sum(int(m.sum()) for m in masks) / fps) if masks is not None else None,
+        "opening": motion_statistics(normalised, fps, masks),
+        "jaw": motion_statistics(jaw_normalised, fps, masks),
+        "events": opening_events(normalised, fps, masks=masks),
+        "coarticulation_span_s": autocorrelation_span(normalised, fps, masks=masks),
+        "audio_lag": audio_lag(envelopes, normalised, fps) if envelopes is not None else None,
+        "phone_class_opening": phone_class_opening(normalised, phones, fps) if phones is not None else None,
+    }

@@ -1,0 +1,746 @@
+"""Synthesized motion against ground truth (paper VI-D, VIII), with fair baselines and
+bootstrap intervals.
+
+Every held-out take of the corpus (``evaluate.split``) is synthesized from its own phone
+timing and emotion, with no constraints, and compared at the capture rate with
+
+* its **capture** (noisy markers), normalized with the database's own reference frame
+  (Eq. 1-2), so both are in the same head frame: ``err_mm2`` (Eq. 13), ``total_err_mm2``
+  (Eq. 12), ``rms_mm``, ``velocity_rms_mm_s``;
+* where the corpus has it (the sample corpus's ``groundtruth/<take>.c3d``, given as the
+  ``truth`` folder), its **clean ground truth**: markers without noise, gaps or head motion,
+  in the rig's head frame, moved into the database's normalized head frame by one rigid
+  transform fitted on the rigid (head-pose) markers of ``markers.csv`` against the
+  database's reference (:func:`facesynth.domain.evaluation.baselines.fit_rigid`). Against it:
+  ``rms_clean_mm``, ``velocity_rms_clean_mm_s``, the mouth-opening Pearson r (inner-lip gap
+  of ``lip_markers``), and lip-closure timing.
+
+Methods, each given the same phone timing (and emotions): the members of the method family
+named by ``evaluate.methods`` (:mod:`facesynth.domain.methods`; ``dp`` always), each synthesized through
+the shared core (:func:`facesynth.domain.methods.core.synthesize`), scored under the row names of
+earlier reports (:data:`MEMBER_ROW`), and two per-phone variants as ablations:
+
+* ``dp``: the paper's search; ``greedy``: Cao et al.'s greedy search on the same database and
+  cost terms;
+* ``baseline_emotion`` (the ``mean`` method): the mean pose per (phone, emotion) placed at each
+  phone's centre and interpolated linearly, the rest pose in pauses; ``baseline``: the same with
+  the per-phoneme mean pose (:mod:`facesynth.domain.methods.mean`);
+* ``dominance_emotion`` (the ``coarticulation`` method): a Cohen-Massaro coarticulation model
+  per (phone, emotion) fitted on the database's training takes (``evaluate.dominance_iterations``);
+  ``dominance``: the same per phone (:mod:`facesynth.domain.methods.coarticulation`);
+* ``trajectory``: Huang et al.'s compact key-shape trajectory model (:mod:`facesynth.domain.methods.trajectory`),
+  when a model trained on the same database is given (``facesynth evaluate --trajectory``): the
+  smooth path of Eq. 6-7 through per-(phone, emotion) Gaussians of key-shape weights, scored at
+  phone boundaries like the other non-search methods;
+* ``openfacefx``: the external text-driven system (:mod:`facesynth.domain.evaluation.baselines`), its ARKit
+  curves through the corpus's face rig to the markers (only with the ``truth`` folder, which
+  holds ``markers.csv``, and when openfacefx is installed; otherwise the report says why not);
+* references, not methods: ``capture`` (the normalized noisy capture itself, scored against
+  the clean truth) and ``clean`` (the clean truth itself: its closure, join and emotion figures
+  are what a perfect method would get).
+
+Figures (:data:`FIGURES`), each with a bootstrap 95% interval over sentences
+(:mod:`facesynth.domain.evaluation.bootstrap`), and for every baseline the paired difference ``dp - baseline``:
+
+* lip closure as **timing**: for each /p b m/ token, the first frame inside the phone where
+  the inner-lip gap gets below ``closure_mm`` (its onset, s after the phone's start) or none;
+  ``closure_rate`` is the fraction of tokens closed, ``closure_delay_ms`` the mean absolute
+  difference of onsets from the clean truth's over tokens both close. The rates at 0.5x, 1x,
+  2x and 4x ``closure_mm`` are in the JSON (``closure_sweep``) to show where methods separate;
+* **join smoothness**: the 99th percentile of the second difference |x[f+1] - 2 x[f] + x[f-1]|
+  (mm/frame^2, every marker) at the two frames around each join: the non-captured joins of
+  ``dp`` and ``greedy``, the phone boundaries of the other methods and of the clean capture;
+  beside it the same percentile at the frames away from joins (``interior_d2_p99``), since the
+  noise a method copies from the capture raises both: a pop is a join value well above the
+  method's own interior value, and above the clean capture's;
+* **emotion recognisability**: a logistic regression on the database's PCA coefficients
+  (standardized), trained on captured frames of the training takes with their node's emotion
+  (:class:`EmotionClassifier`), applied to every frame of each method's output; the accuracy is
+  the fraction of frames classified as the emotion asked for. On the held-out capture it is
+  the recognisability of real motion.
+* ``emotion_agreement``: the fraction of spoken phones whose node has the asked emotion;
+  ``non_captured_joins``: joins of nodes that were not captured together (search methods).
+
+The report ends with one sentence recommending a method for the database (:func:`recommend`),
+drawn from the paired bootstrap intervals of the RMS error (against the clean truth where there
+is one) between the lowest method and each other.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Callable
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from facesynth.base.config import (
+    CoarticulationSettings,
+    EvaluateSettings,
+    NormalizeSettings,
+    SynthesizeSettings,
+    TrajectorySettings,
+)
+from facesynth.base.errors import InputError
+from facesynth.base.opencl import use_opencl
+from facesynth.base.phonemes import PAU
+from facesynth.base.progress import progress
+from facesynth.domain.head_motion.rigid import choose_rigid, fill_gaps, head_pose
+from facesynth.domain.methods import Method, MethodSettings, core
+from facesynth.domain.methods import get as get_method
+from facesynth.domain.methods.coarticulation import DominanceModel, fit_dominance, training_sentences
+from facesynth.domain.methods.mean import mean_pose_markers
+from facesynth.domain.postprocess.concatenation import frame_ranges
+from facesynth.domain.search.inputs import Utterance, utterance
+from facesynth.domain.search.pairs import transition_costs
+from facesynth.domain.speech.loudness import lip_gaps
+from facesynth.model.corpus import Corpus
+from facesynth.model.motiondb import MotionDatabase
+
+from .baselines import fit_rigid, openfacefx_arkit, openfacefx_missing, rig_markers
+from .bootstrap import Statistic, interval, paired_difference, pooled_percentile, resamples
+
+BILABIALS = ("p", "b", "m")
+
+
+#: Multiples of ``closure_mm`` at which the closure rate is also reported (``closure_sweep``).
+CLOSURE_SWEEP = (0.5, 1.0, 2.0, 4.0)
+#: The percentile of the second difference at joins (join smoothness).
+JOIN_PERCENTILE = 99.0
+#: The search methods (their joins are the non-captured ones) and the references.
+SEARCHES = ("dp", "greedy")
+REFERENCES = ("capture", "clean")
+#: The row of the report that scores each member of the method family (the names of earlier
+#: reports), and the per-phone ablation rows each member brings.
+MEMBER_ROW = {"dp": "dp", "greedy": "greedy", "mean": "baseline_emotion", "coarticulation": "dominance_emotion",
+              "trajectory": "trajectory"}
+ABLATIONS = {"mean": "baseline", "coarticulation": "dominance"}
+#: Members from the simplest and fastest to the most elaborate: among tied methods the recommendation
+#: prefers the first (no fitting and a closed form; fitted, closed form; fitted, a banded solve; searches).
+SIMPLEST_FIRST = ("mean", "coarticulation", "trajectory", "greedy", "dp")
+
+
+@dataclass
+class Sentence:
+    """A held-out take: its utterance (phones, times, emotion) and its normalized capture,
+    truth : (T, M, 3) float32 mm in the head frame at the capture rate. With a truth folder:
+    clean : (T, M, 3) float32 mm, the clean markers in the same normalized head frame, and
+    to_reference : (R (3, 3), t (3,) mm) taking the rig's head frame there (x @ R + t)."""
+
+    take: str
+    emotion: str
+    utterance: Utterance
+    truth: np.ndarray
+    clean: np.ndarray | None = None
+    to_reference: tuple[np.ndarray, np.ndarray] | None = None
+
+
+def normalized_take(raw: np.ndarray, db: MotionDatabase, settings: NormalizeSettings, corpus_rigid=()):
+    """One take's captured markers (T, M, 3) mm, gaps filled and aligned to the database's
+    reference frame as ``normalize`` does (weighted Procrustes on the rigid markers:
+    the settings', else ``corpus_rigid``, else those found from this take's data). Returns markers
+    (T, M, 3), rotations (T, 3, 3), translations (T, 3) mm."""
+    names = db.marker_names
+    raw = raw.astype(np.float64)
+    for m in range(raw.shape[1]):
+        raw[:, m], _ = fill_gaps(raw[:, m], settings.max_gap_frames)
+    rigid = choose_rigid(names, settings.rigid_markers, [n for n in corpus_rigid if n in names], raw,
+                         max_spread_mm=settings.rigid_max_spread_mm, min_markers=settings.rigid_min_markers)
+    return head_pose(raw, db.reference.astype(np.float64), rigid.indices)[:3]
+
+
+@dataclass
+class TruthFolder:
+    """A corpus folder with clean ground truth (the sample corpus's layout): ``groundtruth/<take>.c3d``
+    clean markers in the rig's head frame, ``markers.csv`` the marker-to-vertex binding with its
+    ``rigid`` column. rigid : names of the head-pose markers the frame transform is fitted on."""
+
+    folder: Path
+    binding: dict[str, int]
+    rigid: list[str]
+
+    @classmethod
+    def open(cls, folder: Path, names: list[str], normalize_settings: NormalizeSettings) -> "TruthFolder":
+        """Check the folder (one sentence naming what is missing) and read its binding."""
+        from facesynth.formats.mesh import read_binding, read_rigid_markers
+
+        folder = Path(folder)
+        if not (folder / "groundtruth").is_dir() or not (folder / "markers.csv").exists():
+            raise InputError(f"{folder}: not a corpus folder with ground truth (it needs groundtruth/ and markers.csv); "
+                             "pass the folder facesynth sample-corpus wrote.")
+        binding = read_binding(folder / "markers.csv")
+        missing = [n for n in names if n not in binding]
+        if missing:
+            raise InputError(f"{folder / 'markers.csv'}: marker {missing[0]!r} of the database is not bound; "
+                             "pass the truth folder of the corpus the database was built from.")
+        rigid = read_rigid_markers(folder / "markers.csv") or list(normalize_settings.rigid_markers) or list(names)
+        return cls(folder, binding, [n for n in rigid if n in names])
+
+    def clean(self, take: str, names: list[str], reference: np.ndarray) -> tuple[np.ndarray, tuple[np.ndarray, np.ndarray]]:
+        """A take's clean markers (T, M, 3) float32 mm in the normalized head frame of ``reference``
+        (M, 3), and the transform (R, t) from the rig's head frame (fitted on the rigid markers'
+        mean position over the take against the reference: the clean head does not move)."""
+        from facesynth.formats.mocap import read_c3d
+
+        path = self.folder / "groundtruth" / f"{take}.c3d"
+        if not path.exists():
+            raise InputError(f"{path}: no clean ground truth for take {take!r}; pass the truth folder of this corpus.")
+        take_markers = read_c3d(path)
+        where = {n: i for i, n in enumerate(take_markers.names)}
+        if any(n not in where for n in names):
+            raise InputError(f"{path}: marker {next(n for n in names if n not in where)!r} is missing; regenerate the corpus.")
+        clean = take_markers.positions[:, [where[n] for n in names]].astype(np.float64)
+        rigid = [names.index(n) for n in self.rigid]
+        r, t = fit_rigid(np.nanmean(clean[:, rigid], axis=0), reference[rigid].astype(np.float64))
+        return (clean @ r + t).astype(np.float32), (r, t)
+
+    def vertices(self, names: list[str]) -> np.ndarray:
+        """(M,) the rig vertices of the markers ``names``."""
+        return np.array([self.binding[n] for n in names])
+
+
+def heldout(corpus_path: Path, db: MotionDatabase, split: str, normalize_settings: NormalizeSettings,
+            truth: TruthFolder | None = None) -> list[Sentence]:
+    """The corpus's takes of ``split`` with their phones and normalized capture (and, with
+    ``truth``, their clean markers in the same frame)."""
+    corpus = Corpus.read(corpus_path, audio=False)
+    corpus.check_markers(db.marker_names, corpus_path)
+    takes, phones = corpus.takes, corpus.phones
+    phone_emotion = phones.emotions(takes)
+    rows = [i for i in range(len(takes)) if takes.split[i] == split]
+    if not rows:
+        raise InputError(f"{corpus_path}: no take has split '{split}'; mark held-out takes in the manifest's split column.")
+    out = []
+    for i in rows:
+        captured, _, _ = normalized_take(corpus.markers[takes.frames(i)], db, normalize_settings, corpus.rigid_markers)
+        seg = np.nonzero(phones.take == i)[0]
+        utt = utterance([phones.phone[r] for r in seg], phones.start[seg], phones.end[seg], [phone_emotion[r] for r in seg])
+        s = Sentence(takes.name[i], takes.emotion[i], utt, captured.astype(np.float32))
+        if truth is not None:
+            s.clean, s.to_reference = truth.clean(takes.name[i], db.marker_names, db.reference)
+        out.append(s)
+    return out
+
+
+def dominance_baseline(db: MotionDatabase, model: DominanceModel, utt: Utterance) -> np.ndarray:
+    """The per-phone Cohen-Massaro model's markers (T, M, 3) mm at the capture rate (the ``dominance``
+    ablation row; the per-(phone, emotion) model is the ``coarticulation`` method)."""
+    total = frame_ranges(utt.starts, utt.ends, db.fps)[-1][1]
+    return db.model.reconstruct(model.predict(utt.phones, utt.starts, utt.ends, total, db.fps))
+
+
+def openfacefx_baseline(db: MotionDatabase, utt: Utterance, rig, vertices: np.ndarray,
+                        to_reference: tuple[np.ndarray, np.ndarray]) -> np.ndarray:
+    """openfacefx from the utterance's phone timing, through the rig to the markers (``vertices``)
+    and into the normalized head frame with ``to_reference`` (R, t): (T, M, 3) float32 mm."""
+    total = frame_ranges(utt.starts, utt.ends, db.fps)[-1][1]
+    arkit = openfacefx_arkit(utt.phones, utt.starts, utt.ends, total, db.fps, rig.arkit_names)
+    r, t = to_reference
+    return (rig_markers(rig, arkit, vertices) @ r + t).astype(np.float32)
+
+
+def bilabial_frames(utt: Utterance, fps: float, n: int) -> list[tuple[int, int]]:
+    """Frames [a, b) (within the first ``n``) of each /p b m/ token of the utterance, at least one frame each."""
+    out = []
+    for a, b, p in zip(utt.starts, utt.ends, utt.phones):
+        if p in BILABIALS:
+            fa = int(round(a * fps))
+            fb = min(max(int(round(b * fps)), fa + 1), n)
+            if fb > fa:
+                out.append((fa, fb))
+    return out
+
+
+def closure_onsets(gap: np.ndarray, tokens: list[tuple[int, int]], fps: float, threshold_mm: float) -> np.ndarray:
+    """Closure timing: per token (frames [a, b)), the time (s) from the phone's first frame to the
+    first frame whose lip gap ``gap`` (T,) mm is below ``threshold_mm``; NaN when it never is.
+    (B,) float64."""
+    out = np.full(len(tokens), np.nan)
+    for k, (a, b) in enumerate(tokens):
+        below = np.nonzero(gap[a:b] < threshold_mm)[0]
+        if len(below):
+            out[k] = below[0] / fps
+    return out
+
+
+def second_differences(markers: np.ndarray, joins: np.ndarray) -> np.ndarray:
+    """|x[f+1] - 2 x[f] + x[f-1]| (mm/frame^2) of every marker at the two frames f = j-1, j around
+    each join j (the first frame after it) of ``markers`` (T, M, 3) mm; (n,) float64, flat."""
+    x = markers.astype(np.float64)
+    frames = np.unique(np.concatenate([np.asarray(joins) - 1, np.asarray(joins)]).astype(int)) if len(joins) else np.zeros(0, int)
+    frames = frames[(frames >= 1) & (frames <= len(x) - 2)]
+    d2 = x[frames + 1] - 2 * x[frames] + x[frames - 1]
+    values = np.linalg.norm(d2, axis=2).ravel()
+    return values[np.isfinite(values)]
+
+
+def away_from(n: int, joins: np.ndarray) -> np.ndarray:
+    """The frames 1..n-2 that are not within one frame of a join (the interior frames whose
+    second difference measures the motion itself, noise included): (K,) int64."""
+    keep = np.ones(n, bool)
+    keep[[0, n - 1]] = False
+    for j in np.asarray(joins, int):
+        keep[max(0, j - 1):j + 1] = False
+    return np.nonzero(keep)[0]
+
+
+def interior_second_differences(markers: np.ndarray, joins: np.ndarray) -> np.ndarray:
+    """|x[f+1] - 2 x[f] + x[f-1]| (mm/frame^2) of every marker at the frames :func:`away_from`
+    the joins: the level a join's value is compared with. (n,) float64, flat."""
+    x = markers.astype(np.float64)
+    if len(x) < 3:
+        return np.zeros(0)
+    f = away_from(len(x), joins)
+    values = np.linalg.norm(x[f + 1] - 2 * x[f] + x[f - 1], axis=2).ravel()
+    return values[np.isfinite(values)]
+
+
+def phone_boundaries(utt: Utterance, fps: float) -> np.ndarray:
+    """The first frame of every spoken phone that follows a spoken phone: (J,) int64."""
+    ranges = frame_ranges(utt.starts, utt.ends, fps)
+    return np.array([ranges[t + 1][0] for t in range(len(ranges) - 1)
+                     if utt.phones[t] != PAU and utt.phones[t + 1] != PAU], np.int64)
+
+
+def search_joins(db: MotionDatabase, utt: Utterance, path: np.ndarray) -> np.ndarray:
+    """The first frame after each non-captured join of a search's node ``path``: (J,) int64."""
+    ranges = frame_ranges(utt.starts, utt.ends, db.fps)
+    return np.array([ranges[t + 1][0] for t in range(len(path) - 1)
+                     if utt.phones[t] != PAU and utt.phones[t + 1] != PAU and db.nodes.pre[path[t + 1]] != path[t]], np.int64)
+
+
+def frame_emotions(utt: Utterance, fps: float, n: int) -> np.ndarray:
+    """The asked emotion of each of the first ``n`` frames (its phone's): (n,) str."""
+    out = np.full(n, utt.emotions[0], dtype=object)
+    for (a, b), e in zip(frame_ranges(utt.starts, utt.ends, fps), utt.emotions):
+        out[a:min(b, n)] = e
+    return out
+
+
+class EmotionClassifier:
+    """Per-frame emotion from a face pose: standardized PCA coefficients of the database's model
+    -> multinomial logistic regression, trained on at most ``frames`` captured frames of the
+    database's (training) takes, each labelled with its node's emotion."""
+
+    def __init__(self, db: MotionDatabase, frames: int, seed: int):
+        from sklearn.linear_model import LogisticRegression
+        from sklearn.pipeline import make_pipeline
+        from sklearn.preprocessing import StandardScaler
+
+        nodes = db.nodes
+        rows = np.concatenate([np.arange(nodes.frame_start[k], nodes.frame_start[k] + nodes.frame_count[k]) for k in range(len(nodes.phone))])
+        labels = np.concatenate([[nodes.emotion[k]] * int(nodes.frame_count[k]) for k in range(len(nodes.phone))])
+        rows, keep = np.unique(rows, return_index=True)  # overlapping nodes share frames
+        labels = labels[keep]
+        if len(rows) > frames:
+            pick = np.sort(np.random.default_rng(seed).choice(len(rows), frames, replace=False))
+            rows, labels = rows[pick], labels[pick]
+        self.model = db.model
+        self.emotions = sorted(set(labels.tolist()))
+        self.pipeline = make_pipeline(StandardScaler(), LogisticRegression(max_iter=2000))
+        self.pipeline.fit(db.coeffs[rows].astype(np.float64), labels)
+
+    def predict(self, markers: np.ndarray) -> np.ndarray:
+        """The emotion of each frame of ``markers`` (T, M, 3) mm in the normalized head frame: (T,) str."""
+        coeffs = self.model.project(markers).astype(np.float64)
+        return self.pipeline.predict(np.nan_to_num(coeffs))
+
+
+def sentence_metrics(syn: np.ndarray, truth: np.ndarray, utt: Utterance, fps: float, names: list[str],
+                     settings: EvaluateSettings) -> dict:
+    """Metrics of one sentence: synthesized ``syn`` against captured ``truth`` (both (T, M, 3) mm at
+    ``fps``): Eq. 13 error (mm^2) and its root, velocity RMS (mm/s), and lip closure on /p b m/.
+    """
+    n = min(len(syn), len(truth))
+    syn, truth = syn[:n].astype(np.float64), truth[:n].astype(np.float64)
+    # Eq. 13 over the marker samples the capture has (a long gap leaves NaN in the truth).
+    err = float(np.nanmean(np.sum((syn - truth) ** 2, axis=2)))
+    vel = (np.diff(syn, axis=0) - np.diff(truth, axis=0)) * fps
+    gaps_syn = lip_gaps(syn, names, settings.lip_markers)
+    gaps_true = lip_gaps(truth, names, settings.lip_markers)
+    closures = []
+    for fa, fb in bilabial_frames(utt, fps, n):
+        if not np.isnan(gaps_true[fa:fb]).all():
+            closures.append((gaps_syn[fa:fb].min(), np.nanmin(gaps_true[fa:fb])))
+    closures = np.array(closures).reshape(-1, 2)
+    return {
+        "frames": n, "err_mm2": err, "rms_mm": float(np.sqrt(err)),
+        "velocity_rms_mm_s": float(np.sqrt(np.nanmean(np.sum(vel**2, axis=2)))),
+        "bilabials": len(closures),
+        "lip_closure_rate": float((closures[:, 0] < settings.closure_mm).mean()) if len(closures) else None,
+        "lip_closure_rate_capture": float((closures[:, 1] < settings.closure_mm).mean()) if len(closures) else None,
+        "min_lip_gap_mm": float(closures[:, 0].mean()) if len(closures) else None,
+    }
+
+
+def clean_metrics(syn: np.ndarray, clean: np.ndarray, utt: Utterance, fps: float, names: list[str],
+                  settings: EvaluateSettings) -> dict:
+    """Metrics of one sentence against its clean truth (both (T, M, 3) mm in the normalized head
+    frame at ``fps``): ``err_clean_mm2`` (Eq. 13), ``velocity_ms_clean`` (mean squared velocity
+    error, mm^2/s^2), ``mouth_r`` (Pearson r of the inner-lip gaps), and per /p b m/ token the
+    closure onsets of the method and of the truth (``_onsets``, ``_onsets_clean``: (B,) s, NaN =
+    no closure; ``_sweep``: the method's closure flags at each :data:`CLOSURE_SWEEP` multiple)."""
+    n = min(len(syn), len(clean))
+    syn, clean = syn[:n].astype(np.float64), clean[:n].astype(np.float64)
+    vel = (np.diff(syn, axis=0) - np.diff(clean, axis=0)) * fps
+    gap_syn, gap_clean = lip_gaps(syn, names, settings.lip_markers), lip_gaps(clean, names, settings.lip_markers)
+    seen = np.isfinite(gap_syn) & np.isfinite(gap_clean)  # the noisy capture may keep a long gap
+    a, b = gap_syn[seen], gap_clean[seen]
+    r = float(np.corrcoef(a, b)[0, 1]) if len(a) > 2 and a.std() > 0 and b.std() > 0 else float("nan")
+    tokens = bilabial_frames(utt, fps, n)
+    return {
+        "err_clean_mm2": float(np.nanmean(np.sum((syn - clean) ** 2, axis=2))),
+        "velocity_ms_clean": float(np.nanmean(np.sum(vel**2, axis=2))),
+        "mouth_r": r,
+        "_onsets": closure_onsets(gap_syn, tokens, fps, settings.closure_mm),
+        "_onsets_clean": closure_onsets(gap_clean, tokens, fps, settings.closure_mm),
+        "_sweep": np.array([np.isfinite(closure_onsets(gap_syn, tokens, fps, k * settings.closure_mm)) for k in CLOSURE_SWEEP]).reshape(len(CLOSURE_SWEEP), len(tokens)),
+    }
+
+
+def aggregate(rows: list[dict]) -> dict:
+    """Pool sentence metrics: Eq. 12 sums, frame-weighted means, pooled lip closures."""
+    frames = np.array([r["frames"] for r in rows], float)
+    out = {"sentences": len(rows), "total_err_mm2": float(sum(r["err_mm2"] for r in rows)),
+           "err_mm2": float(np.mean([r["err_mm2"] for r in rows]))}
+    out["rms_mm"] = float(np.sqrt(np.average([r["err_mm2"] for r in rows], weights=frames)))
+    out["velocity_rms_mm_s"] = float(np.sqrt(np.average([r["velocity_rms_mm_s"] ** 2 for r in rows], weights=frames)))
+    lips = [r for r in rows if r["bilabials"]]
+    if lips:
+        count = sum(r["bilabials"] for r in lips)
+        for key in ("lip_closure_rate", "lip_closure_rate_capture", "min_lip_gap_mm"):
+            out[key] = float(sum(r[key] * r["bilabials"] for r in lips) / count)
+        out["bilabials"] = count
+    for key in ("emotion_agreement", "non_captured_joins"):
+        if all(key in r for r in rows):
+            out[key] = float(np.mean([r[key] for r in rows])) if key == "emotion_agreement" else int(sum(r[key] for r in rows))
+    return out
+
+
+def _weighted_root(key: str):
+    def stat(rows: list[dict], idx: np.ndarray) -> float:
+        w = np.array([rows[i]["frames"] for i in idx], float)
+        return float(np.sqrt(np.sum(w * np.array([rows[i][key] for i in idx])) / np.sum(w)))
+    return stat
+
+
+def _of_rows(stat: Callable[[list[dict], np.ndarray], float]) -> Callable[[list[dict]], Statistic]:
+    """A figure ``stat(rows, idx)`` as :data:`FIGURES` holds it: rows -> (idx -> float)."""
+    return lambda rows: lambda idx: stat(rows, idx)
+
+
+def _mean_r(rows, idx):
+    values = np.array([rows[i]["mouth_r"] for i in idx], float)
+    return float(np.nanmean(values)) if np.isfinite(values).any() else float("nan")
+
+
+def _closure_rate(rows, idx):
+    onsets = np.concatenate([rows[i]["_onsets"] for i in idx])
+    return float(np.isfinite(onsets).mean()) if len(onsets) else float("nan")
+
+
+def _closure_delay(rows, idx):
+    a = np.concatenate([rows[i]["_onsets"] for i in idx])
+    b = np.concatenate([rows[i]["_onsets_clean"] for i in idx])
+    both = np.isfinite(a) & np.isfinite(b)
+    return float(1000.0 * np.abs(a[both] - b[both]).mean()) if both.any() else float("nan")
+
+
+def _join_p99(rows: list[dict]) -> Statistic:
+    return pooled_percentile([r["_d2"] for r in rows], JOIN_PERCENTILE)
+
+
+def _interior_p99(rows: list[dict]) -> Statistic:
+    return pooled_percentile([r["_d2_interior"] for r in rows], JOIN_PERCENTILE)
+
+
+def _emotion_accuracy(rows, idx):
+    return float(sum(rows[i]["emotion_correct"] for i in idx) / max(1, sum(rows[i]["frames"] for i in idx)))
+
+
+#: key -> (label, statistic, needs the clean truth, lower is better). The statistic takes a
+#: method's rows (one per sentence) and returns the figure of the sentences ``idx`` of a resample
+#: (:data:`facesynth.domain.evaluation.bootstrap.Statistic`), prepared once for the thousands of resamples.
+FIGURES: dict[str, tuple[str, Callable[[list[dict]], Statistic], bool, bool]] = {
+    "rms_clean_mm": ("RMS vs clean truth (mm)", _of_rows(_weighted_root("err_clean_mm2")), True, True),
+    "rms_mm": ("RMS vs noisy capture (mm)", _of_rows(_weighted_root("err_mm2")), False, True),
+    "velocity_rms_clean_mm_s": ("velocity RMS error vs clean (mm/s)", _of_rows(_weighted_root("velocity_ms_clean")),
+                                True, True),
+    "mouth_r": ("mouth-opening Pearson r", _of_rows(_mean_r), True, False),
+    "closure_rate": ("/p b m/ closed within the phone", _of_rows(_closure_rate), True, False),
+    "closure_delay_ms": ("|closure onset - truth's| (ms)", _of_rows(_closure_delay), True, True),
+    "join_d2_p99": ("join 2nd difference, 99th pct (mm/frame²)", _join_p99, False, True),
+    "interior_d2_p99": ("2nd difference away from joins, 99th pct (mm/frame²)", _interior_p99, False, True),
+    "emotion_accuracy": ("emotion recognised (frames)", _of_rows(_emotion_accuracy), False, False),
+}
+
+
+def figures(per_method: dict[str, list[dict]], settings: EvaluateSettings, with_clean: bool) -> dict:
+    """Every :data:`FIGURES` entry per method with its bootstrap interval, the paired difference
+    ``dp - method`` for every other method, and the closure sweep. Rows of all methods are the
+    same sentences in the same order."""
+    n = len(per_method["dp"])
+    index = resamples(n, settings.bootstrap_resamples, settings.seed)
+    out: dict = {}
+    for method, rows in per_method.items():
+        entry = {}
+        for key, (_, stat, clean, _) in FIGURES.items():
+            if (clean and not with_clean) or any(_needed(key) not in r for r in rows):
+                continue
+            entry[key] = interval(stat(rows), n, index)
+            if method != "dp" and method not in REFERENCES and key in out.get("dp", {}):
+                dp_rows = per_method["dp"]
+                entry[f"dp_minus.{key}"] = paired_difference(stat(dp_rows), stat(rows), n, index)
+        if with_clean and all("_sweep" in r for r in rows):
+            sweep = np.concatenate([r["_sweep"] for r in rows], axis=1)
+            entry["closure_sweep"] = {f"{k * settings.closure_mm:g}": (float(sweep[j].mean()) if sweep.shape[1] else None)
+                                      for j, k in enumerate(CLOSURE_SWEEP)}
+        out[method] = entry
+    return out
+
+
+def _needed(key: str) -> str:
+    """The per-sentence field a figure is computed from."""
+    return {"rms_clean_mm": "err_clean_mm2", "rms_mm": "err_mm2", "velocity_rms_clean_mm_s": "velocity_ms_clean",
+            "mouth_r": "mouth_r", "closure_rate": "_onsets", "closure_delay_ms": "_onsets",
+            "join_d2_p99": "_d2", "interior_d2_p99": "_d2_interior", "emotion_accuracy": "emotion_correct"}[key]
+
+
+@dataclass
+class Member:
+    """A member of the method family as ``evaluate`` runs it: the method, its source (the
+    database, or its model) and the work prepared once for every sentence."""
+
+    method: Method
+    source: Any
+    prepared: Any = None
+
+
+def method_outputs(db: MotionDatabase, s: Sentence, members: dict[str, Member], method_settings: MethodSettings,
+                   ablations: dict[str, DominanceModel | None], rig=None, vertices=None, source_where: str = "the database"
+                   ) -> tuple[dict, dict]:
+    """Every row's markers (T, M, 3) mm at the capture rate for one sentence, and per row its extra
+    fields (search methods: emotion agreement, joins). ``members``: by name, run through the shared
+    core; ``ablations``: the per-phone rows to add (``baseline``; ``dominance`` with its model)."""
+    outputs, extra = {}, {}
+    for name, m in members.items():
+        result = core.synthesize(m.method, m.source, s.utterance, method_settings, prepared=m.prepared,
+                                 source_where=source_where, where=s.take)
+        motion, row = result.motion, MEMBER_ROW[name]
+        outputs[row] = motion.markers_capture
+        if name in SEARCHES:
+            spoken = [k for k, p in enumerate(s.utterance.phones) if p != PAU]
+            extra[row] = {"emotion_agreement": float(np.mean([motion.path.node_emotion[k] == s.utterance.emotions[k]
+                                                              for k in spoken])),
+                          "non_captured_joins": motion.path.non_captured_joins,
+                          "joins": search_joins(db, s.utterance, motion.path.node)}
+    if "baseline" in ablations:
+        outputs["baseline"] = mean_pose_markers(db, s.utterance, by_emotion=False)
+    if ablations.get("dominance") is not None:
+        outputs["dominance"] = dominance_baseline(db, ablations["dominance"], s.utterance)
+    if rig is not None:
+        outputs["openfacefx"] = openfacefx_baseline(db, s.utterance, rig, vertices, s.to_reference)
+    return outputs, extra
+
+
+@dataclass(frozen=True)
+class Recommendation:
+    """The method :func:`recommend` chose (a member's name; '' when no figure was computed), the
+    figure it compared and the sentence that says why."""
+
+    method: str
+    figure: str
+    sentence: str
+
+
+def recommend(figures: dict[str, dict], row_of: dict[str, str] | None = None, difference=None) -> Recommendation:
+    """One sentence recommending a method from the report's own bootstrap intervals.
+
+    ``figures``: per row, its :data:`FIGURES` entries ({value, low, high}); ``row_of``: member ->
+    row (default :data:`MEMBER_ROW`, members absent from ``figures`` ignored). The figure is the
+    RMS error against the clean truth where computed, else against the noisy capture.
+    ``difference(key, other_row, best_row)``: the paired bootstrap interval of ``other - best``
+    on the same resamples ({value, low, high}); without it the methods' own intervals are compared.
+
+    The method of the lowest value is recommended when it is lower than every other method beyond
+    doubt: the paired interval of each other method minus it lies above 0 (or, without pairs, its
+    own interval lies entirely below every other's). Otherwise the methods not told apart from it
+    (a paired interval holding 0, an overlapping interval) are tied with it, and the simplest and
+    fastest of them (:data:`SIMPLEST_FIRST`) is recommended."""
+    row_of = row_of if row_of is not None else MEMBER_ROW
+    present = {m: r for m, r in row_of.items() if r in figures}
+    for key in ("rms_clean_mm", "rms_mm"):
+        scored = {m: figures[r][key] for m, r in present.items()
+                  if figures[r].get(key, {}).get("value") is not None and np.isfinite(figures[r][key]["value"])}
+        if scored:
+            break
+    else:
+        return Recommendation("", "", "No method could be recommended: no RMS figure was computed.")
+    label = FIGURES[key][0].replace(" (mm)", "")
+    order = sorted(scored, key=lambda m: scored[m]["value"])
+    best = order[0]
+
+    def bound(m: str, side: str) -> float:
+        return scored[m][side] if scored[m].get(side) is not None else scored[m]["value"]
+
+    def cell(m: str) -> str:
+        return f"{scored[m]['value']:.3f} mm [{bound(m, 'low'):.3f}, {bound(m, 'high'):.3f}]"
+
+    if len(order) == 1:
+        return Recommendation(best, key, f"Recommended for this database: {best}, the only method scored "
+                                         f"({label} {cell(best)}).")
+    if difference is not None:
+        paired = {m: difference(key, present[m], present[best]) for m in order[1:]}
+
+        def apart(m: str) -> bool:
+            return paired[m].get("low") is not None and paired[m]["low"] > 0
+
+        def gap(m: str) -> str:
+            d = paired[m]
+            return f"{m} {d['value']:+.3f} mm [{d['low']:+.3f}, {d['high']:+.3f}]" if d.get("low") is not None else m
+        how = "the paired 95% interval"
+    else:
+        def apart(m: str) -> bool:
+            return bound(m, "low") > bound(best, "high")
+
+        def gap(m: str) -> str:
+            return f"{m} {cell(m)}"
+        how = "its 95% interval"
+    tied = [best] + [m for m in order[1:] if not apart(m)]
+    if len(tied) == 1:
+        return Recommendation(best, key, f"Recommended for this database: {best}, the lowest {label} "
+                                         f"({cell(best)}); every other method is higher beyond {how} "
+                                         f"(next: {gap(order[1])}).")
+    rank = {m: k for k, m in enumerate(SIMPLEST_FIRST)}
+    choice = min(tied, key=lambda m: rank.get(m, len(rank)))
+    others = ", ".join(gap(m) for m in tied if m != best)
+    lowest = f"{best} has the lowest {label} ({cell(best)}), but {how} does not tell it from {others}"
+    if choice == best:
+        return Recommendation(choice, key, f"Recommended for this database: {choice}; {lowest}, and it is the "
+                                           "simplest and fastest of these.")
+    return Recommendation(choice, key, f"Recommended for this database: {choice}, the simplest and fastest of the "
+                                       f"tied methods ({label} {cell(choice)}); {lowest}.")
+
+
+def evaluate(db_path: Path, corpus: Path, settings: EvaluateSettings, synth: SynthesizeSettings,
+             normalize_settings: NormalizeSettings, sentences: list[Sentence] | None = None,
+             db: MotionDatabase | None = None, tc=None, with_baseline: bool = True,
+             truth: Path | None = None, trajectory=None,
+             trajectory_settings: TrajectorySettings | None = None) -> tuple[dict, list[dict]]:
+    """Returns (metrics per row, per-sentence records with the curves to plot).
+
+    The members of ``settings.methods`` (``dp`` always) are scored, the ``mean`` and
+    ``coarticulation`` members with their per-phone ablations. ``with_baseline=False`` evaluates
+    the DP alone against the noisy capture (tune leaves the other methods and figures out of its
+    many evaluations). ``truth``: a corpus folder with clean ground truth (:class:`TruthFolder`),
+    which adds the clean-truth figures, the ``openfacefx`` baseline and the ``capture`` / ``clean``
+    references. Metrics per row: ``overall``, ``per_emotion``, ``per_sentence``, and ``figures``
+    (with intervals); under ``"_figures"`` the table's meta (labels, skipped methods and why, the
+    :class:`Recommendation` as ``recommendation``). ``trajectory``: a TrajectoryModel trained on
+    ``db`` (with ``trajectory_settings``) adds the ``trajectory`` member (only with the others)."""
+    from facesynth.base.config import Config
+
+    db = db or MotionDatabase.read(db_path)
+    for name in tuple(settings.lip_markers) + (settings.plot_marker,):
+        if name not in db.marker_names:
+            raise InputError(f"evaluate: marker {name!r} is not in the database; set evaluate.lip_markers / evaluate.plot_marker to markers it has.")
+    folder = TruthFolder.open(truth, db.marker_names, normalize_settings) if truth is not None else None
+    sentences = sentences if sentences is not None else heldout(corpus, db, settings.split, normalize_settings, folder)
+    with_clean = folder is not None and all(s.clean is not None for s in sentences)
+    method_settings = MethodSettings(synth, trajectory_settings or Config.load().settings("trajectory"),
+                                     CoarticulationSettings(iterations=settings.dominance_iterations))
+    wanted = ("dp",) + tuple(m for m in settings.methods if m != "dp") if with_baseline else ("dp",)
+    skipped = {}
+    members: dict[str, Member] = {}
+    for name in MEMBER_ROW:  # the report's order
+        if name not in wanted:
+            continue
+        method = get_method(name)
+        if name == "trajectory":
+            if trajectory is None:
+                skipped["trajectory"] = "give a model trained on this database with --trajectory (facesynth train-trajectory)"
+                continue
+            if trajectory.fps != db.fps or list(trajectory.marker_names) != list(db.marker_names):
+                raise InputError("evaluate: the trajectory model's markers or capture rate are not the database's; "
+                                 "train it on this database with `facesynth train-trajectory`.")
+            members[name] = Member(method, trajectory)
+        elif name == "coarticulation":
+            members[name] = Member(method, method.fit(db, method_settings, where=str(db_path))[0])
+        else:
+            if tc is None:
+                tc = transition_costs(db, synth, use_opencl(synth.use_opencl))
+            members[name] = Member(method, db, tc if name in SEARCHES else None)
+    ablations: dict[str, DominanceModel | None] = {}
+    if "mean" in members:
+        ablations["baseline"] = None
+    if "coarticulation" in members:
+        ablations["dominance"] = fit_dominance(training_sentences(db, by_emotion=False), db.fps, settings.dominance_iterations)
+    rig = vertices = None
+    if with_baseline:
+        missing = "it needs the clean truth folder (--truth), which holds the rig's marker binding" if not with_clean else openfacefx_missing()
+        if missing is None:
+            from facesynth.domain.rig.face import load_face_rig
+
+            rig, vertices = load_face_rig(), folder.vertices(db.marker_names)
+        else:
+            skipped["openfacefx"] = missing
+    rows = [MEMBER_ROW[m] for m in members]
+    order = ["dp", "greedy", "baseline", "baseline_emotion", "dominance", "dominance_emotion", "openfacefx", "trajectory"]
+    present = set(rows) | set(ablations) | ({"openfacefx"} if rig is not None else set())
+    references = (REFERENCES if with_clean else ("capture",)) if with_baseline else ()
+    per_method: dict[str, list[dict]] = {m: [] for m in [r for r in order if r in present] + list(references)}
+    classifier = EmotionClassifier(db, settings.classifier_frames, settings.seed) if with_baseline else None
+    k = db.marker_names.index(settings.plot_marker)
+    records = []
+    for s in progress(sentences, "evaluate"):
+        outputs, extra = method_outputs(db, s, members, method_settings, ablations, rig, vertices, str(db_path))
+        if "capture" in references:
+            outputs["capture"] = s.truth
+        if "clean" in references:
+            outputs["clean"] = s.clean
+        record = {"take": s.take, "emotion": s.emotion, "fps": db.fps, "truth": (s.clean if with_clean else s.truth)[:, k]}
+        boundaries = phone_boundaries(s.utterance, db.fps)
+        for method in per_method:
+            markers = outputs[method]
+            m = sentence_metrics(markers, s.truth, s.utterance, db.fps, db.marker_names, settings)
+            m.update(take=s.take, emotion=s.emotion)
+            m.update({key: v for key, v in extra.get(method, {}).items() if key != "joins"})
+            if with_baseline:
+                n = m["frames"]
+                if with_clean:
+                    m.update(clean_metrics(markers, s.clean, s.utterance, db.fps, db.marker_names, settings))
+                joins = extra[method]["joins"] if method in SEARCHES else boundaries
+                m["_d2"] = second_differences(markers[:n], joins)
+                m["_d2_interior"] = interior_second_differences(markers[:n], joins)
+                asked = frame_emotions(s.utterance, db.fps, n)
+                m["emotion_correct"] = int(np.sum(classifier.predict(markers[:n]) == asked))
+            per_method[method].append(m)
+            if method not in REFERENCES:
+                record[method] = markers[:, k]
+        records.append(record)
+    metrics: dict[str, dict] = {}
+    for method, rows_of in per_method.items():
+        emotions = sorted({r["emotion"] for r in rows_of})
+        public = [{key: v for key, v in r.items() if not key.startswith("_")} for r in rows_of]
+        metrics[method] = {"overall": aggregate(rows_of),
+                           "per_emotion": {e: aggregate([r for r in rows_of if r["emotion"] == e]) for e in emotions},
+                           "per_sentence": public}
+    if with_baseline:
+        for method, entry in figures(per_method, settings, with_clean).items():
+            metrics[method]["figures"] = entry
+        index = resamples(len(sentences), settings.bootstrap_resamples, settings.seed)  # the figures' resamples
+
+        def difference(key: str, other: str, best: str) -> dict:
+            stat = FIGURES[key][1]
+            return paired_difference(stat(per_method[other]), stat(per_method[best]), len(sentences), index)
+
+        choice = recommend({r: metrics[r]["figures"] for r in metrics if "figures" in metrics[r]},
+                           {m: MEMBER_ROW[m] for m in members}, difference)
+        metrics["_figures"] = {"labels": {key: label for key, (label, _, _, _) in FIGURES.items()},
+                               "lower_is_better": {key: lower for key, (_, _, _, lower) in FIGURES.items()},
+                               "clean_truth": with_clean, "skipped": skipped,
+                               "classifier_emotions": classifier.emotions,
+                               "recommendation": dataclasses.asdict(choice)}
+    return metrics, records

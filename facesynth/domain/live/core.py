@@ -1,0 +1,511 @@
+"""The live core: phones arrive one by one (with their times), node decisions are taken with a
+bounded look-ahead, and frames are sent once, in order, never revised.
+
+Decisions (``stream.method``):
+
+- ``dp``: the exact DP of paper Algorithm 1 over a sliding window. When phones are known up to
+  step K and steps ``[0, c)`` are committed, the DP runs on steps ``[c - 1, K]`` with step
+  ``c - 1`` pinned to its committed node (Eq. 10's blocking penalty), so the transition into
+  the window is costed exactly; steps ``c .. K - L`` (L = ``stream.lookahead_phones``) of its
+  optimal path are committed. It is a fixed-lag decision: exact within its window, and equal
+  to the whole-utterance DP when the look-ahead covers the utterance (tested); with a shorter
+  look-ahead a committed step cannot be changed by what comes after the window
+  (``benchmarks/live_stream.py`` measures how often the paths differ).
+- ``greedy``: Cao et al.'s greedy tiling (:class:`facesynth.domain.search.greedy.Greedy`) of the
+  uncommitted spoken phones, its first run tied to the last committed node; steps older than
+  the look-ahead are committed.
+- ``trajectory``: the key-shape trajectory model (Huang et al. §5.4, a ``trajectory`` artifact
+  instead of a database). At each decision Eq. 7 is solved on the model's capture grid over the
+  capture frames after the last one a sent frame used, up to the end of the known phones, with
+  that frame fixed (:func:`facesynth.domain.methods.trajectory.solve`'s ``before``), and down-sampled to
+  the output rate as batch synthesis down-samples: the path is a Gauss-Markov chain, so this is
+  the exact minimizer of Eq. 6 given what was sent and the phones known, and batch synthesis's
+  frames when the look-ahead covers the utterance (tested). Frames before the first uncommitted
+  phone are sent. One difference from batch synthesis: Eq. 6's duration normalization divides
+  by the frames known at the decision, since the utterance's length is not known yet.
+
+Frames (``dp`` and ``greedy``): the committed path is rendered as batch synthesis renders a path
+(:func:`facesynth.domain.search.synthesis.render_path`: time-warp, the join smoothing of VII-B, pauses
+regenerated, Eq. 11, down-sampling). A frame is sent only when nothing uncommitted can change
+it: it must lie before the first uncommitted phone by more than the join smoothing's reach
+(``smoothing_half_window`` capture frames; none when that phone is a pause, since joins next to
+a pause are not smoothed), and before a committed pause that is last (a pause is interpolated
+toward the next phone's first frame: its frames wait for that phone). A pause whose next phone is
+not decided yet does not hold its frames back longer than ``stream.pause_wait_s``: those frames
+go out that long after their audio, easing from the last frame sent toward the rest pose (a
+cosine over ``synthesize.pause_rest_ramp_s``, as batch synthesis eases into a long pause), and
+once the next phone is decided the pause's remaining frames are batch's, plus the difference
+between the last frame sent and batch's frame, fading linearly to nothing at the pause's end.
+Only the frames of such a pause differ from batch synthesis of the same path.
+Only a window of recent phones is re-rendered at each decision, starting two spoken phones
+before the first unsent frame, so the work per decision does not grow with the stream.
+
+Rig curves: the markers of each batch of sent frames are solved onto the built-in rig with
+the direct facial solve (:func:`facesynth.domain.retarget.solve.solve_curves`, the ``[solve]``
+settings), the last sent frame prepended so that consecutive batches join, and mapped to the
+52 ARKit weights (:meth:`facesynth.domain.rig.face.Rig.to_arkit`).
+"""
+
+from __future__ import annotations
+
+import time
+from collections import deque
+from dataclasses import dataclass, field, replace
+
+import numpy as np
+
+from facesynth.base.config import SolveSettings, StreamSettings, SynthesizeSettings, TrajectorySettings
+from facesynth.base.errors import InputError
+from facesynth.base.phonemes import PAU
+from facesynth.domain.methods import trajectory as trajectory_method
+from facesynth.domain.postprocess.concatenation import downsample_sources
+from facesynth.domain.search.costs import step_costs
+from facesynth.domain.search.dp import dp_numpy
+from facesynth.domain.search.inputs import Utterance
+from facesynth.domain.search.pairs import transition_costs
+from facesynth.domain.search.synthesis import render_path
+from facesynth.model.motiondb import MotionDatabase
+from facesynth.model.trajectory import TrajectoryModel
+
+
+@dataclass
+class Frame:
+    """One output frame: ``index`` on the output grid (time = index / fps, s), the 52 ARKit
+    weights in [0, 1] (``Rig.arkit_names`` order), the markers ((M, 3) float32 mm, head
+    frame) and ``ready_at``: the stream time (s of audio received) when the frame was decided."""
+
+    index: int
+    time: float
+    arkit: np.ndarray
+    markers: np.ndarray
+    ready_at: float
+
+
+class LiveModel:
+    """What every stream of one source shares (read once): for ``dp`` and ``greedy`` the database,
+    the dense transition costs (Table I, (N, N) float32) and the greedy search; for
+    ``trajectory`` the trajectory model; and the facial solve's basis.
+
+    source : a read :class:`MotionDatabase`, or for ``stream.method = "trajectory"`` a read
+    :class:`~facesynth.model.trajectory.TrajectoryModel`; synth : the search and post-processing
+    settings (smoothing, output rate are taken from ``stream`` where it has them); solve : the
+    facial solve's; trajectory : the trajectory method's (its smoothness and duration
+    normalization; needed for ``trajectory``).
+    """
+
+    def __init__(self, source, synth: SynthesizeSettings, stream: StreamSettings, solve: SolveSettings,
+                 trajectory: TrajectorySettings | None = None):
+        from facesynth.domain.rig.face import load_face_rig
+        from facesynth.domain.rig.loading import builtin_rig, marker_map
+
+        self.stream = stream
+        self.solve_settings = solve
+        self.synth = replace(synth, output_fps=stream.fps, postprocess="deng", use_opencl=False)
+        self.greedy = None
+        self.db: MotionDatabase | None = None
+        self.trajectory: TrajectoryModel | None = None
+        if stream.method == "trajectory":
+            if not isinstance(source, TrajectoryModel):
+                raise InputError("stream.method 'trajectory' streams from a trajectory model: give the output of "
+                                 "`facesynth train-trajectory` in place of the database.")
+            if trajectory is None:
+                raise ValueError("the trajectory method needs its [trajectory] settings")  # a caller's bug
+            self.trajectory, self.trajectory_settings = source, trajectory
+            self.marker_names, self.reference = list(source.marker_names), np.asarray(source.reference, np.float32)
+            #: frames/s of the grid phones are placed on and the path is solved on: the model's capture
+            #: rate, as batch synthesis solves it (``trajectory.fps`` 0); output frames are down-sampled
+            self.grid_fps = float(source.fps)
+            self.emotions = sorted(set(source.keyshape_emotion) | set(source.pair_emotion))
+            #: (M, 3) mm: the rest pose (all key-shape weights 0)
+            self.rest_markers = self.reference.copy()
+        else:
+            if not isinstance(source, MotionDatabase):
+                raise InputError(f"stream.method {stream.method!r} streams from a motion database: give the output of "
+                                 "`facesynth build-db` (or `prune`).")
+            db = self.db = source
+            self.marker_names, self.reference = list(db.marker_names), db.reference
+            self.grid_fps = float(db.fps)  # the capture grid, where the path is rendered
+            self.tc = transition_costs(db, self.synth, False)
+            self.dense = np.ascontiguousarray(self.tc.dense(), np.float32)
+            self.emotions = sorted(set(db.nodes.emotion))
+            if stream.method == "greedy":
+                from facesynth.domain.search.greedy import Greedy, anime_graph, cluster_graph, motion_features
+
+                if self.synth.greedy_clusters > 0:
+                    features = motion_features(db.coeffs, db.nodes.frame_start, db.nodes.frame_count)
+                    graph = cluster_graph(db.nodes.phone, db.nodes.emotion, db.nodes.suc, features,
+                                          self.synth.greedy_clusters)
+                else:
+                    graph = anime_graph(db.nodes.phone, db.nodes.emotion, db.nodes.suc)
+                # the dense matrix, read-only: streams on several threads share it
+                self.greedy = Greedy(graph, db.nodes.viseme, db.nodes.emotion, self.dense, self.synth.alpha6 * self.synth.pnt)
+            rest_coeffs = db.model.project(db.reference[None])[0]
+            #: (M, 3) mm: the rest pose as the PCA model reconstructs it (where silences settle)
+            self.rest_markers = db.model.reconstruct(rest_coeffs[None])[0].astype(np.float32)
+        rig = builtin_rig()
+        self.face = load_face_rig()
+        self.marker_map = marker_map(rig, self.marker_names, self.reference,
+                                     "the trajectory model" if self.db is None else "the motion database")
+        self.basis = rig.deltas[:, self.marker_map.vertices]
+
+    @property
+    def arkit_names(self) -> tuple[str, ...]:
+        """The 52 ARKit names of :attr:`Frame.arkit`, in Live Link Face order."""
+        return self.face.arkit_names
+
+    def solve(self, markers: np.ndarray, previous: tuple[np.ndarray, np.ndarray] | None) -> np.ndarray:
+        """(T, E) rig weights for markers (T, M, 3) mm. ``previous`` (the last sent frame's markers
+        (M, 3) and rig weights (E,)) is solved with them for continuity and dropped; its weights
+        start the iterations."""
+        from facesynth.domain.retarget.solve import solve_curves
+
+        frames = markers if previous is None else np.concatenate([previous[0][None], markers])
+        disp = self.marker_map.displacements(frames, self.reference)
+        w, _, _ = solve_curves(disp, self.basis, smooth=self.solve_settings.smooth, ridge=self.solve_settings.ridge,
+                               iterations=self.solve_settings.iterations, tolerance=self.solve_settings.tolerance,
+                               initial=None if previous is None else previous[1])
+        return w if previous is None else w[1:]
+
+    def arkit(self, weights: np.ndarray) -> np.ndarray:
+        """(T, 52) ARKit weights in [0, 1] (:attr:`arkit_names` order) for rig weights (T, E)."""
+        return np.clip(self.face.to_arkit(weights), 0.0, 1.0)
+
+
+@dataclass
+class LiveSynthesizer:
+    """One stream: phones in (:meth:`add_phone`), frames out, each frame once and in order.
+
+    The phone list tiles the stream from 0 s; a phone is (Festival name, start s, end s) and must
+    start where the previous one ended (a gap is filled with a pause by :meth:`add_phone`).
+    Adjacent pauses are merged, as batch synthesis merges them.
+    """
+
+    model: LiveModel
+    emotion: str = "neutral"
+    phones: list[str] = field(default_factory=list)
+    starts: list[float] = field(default_factory=list)
+    ends: list[float] = field(default_factory=list)
+    emotions: list[str] = field(default_factory=list)
+    committed: list[int] = field(default_factory=list)
+    sent: int = 0                      # output frames sent so far
+    finished: bool = False
+    phones_complete: bool = False      # every phone of the utterance is known (a TTS engine said so)
+    decision_s: deque = field(default_factory=lambda: deque(maxlen=100000))  # wall time of the recent decisions
+    _last: tuple[np.ndarray, np.ndarray] | None = None   # the last sent frame's markers and rig weights
+    _open_pause: int | None = None     # the step of a pause whose frames went out before its next phone was decided
+    _pause_left: tuple[int, np.ndarray] | None = None  # the open pause's starting frame: (index, (M, 3) markers)
+    _silence_growing: bool = False     # the last phone is a pause from :meth:`extend_silence`: its end is not known
+    _solved: tuple[int, np.ndarray] | None = None  # trajectory: the last capture frame a sent frame used, (index, (K,) weights)
+
+    def __post_init__(self):
+        self.set_emotion(self.emotion)
+
+    def set_emotion(self, name: str) -> None:
+        """The emotion of the phones that arrive from now on (a control message); one of the
+        database's emotions."""
+        if name not in self.model.emotions:
+            raise InputError(f"emotion {name!r} is not in the motion database; use one of {', '.join(self.model.emotions)}.")
+        self.emotion = name
+
+    @property
+    def known_until(self) -> float:
+        """End of the last known phone, s."""
+        return self.ends[-1] if self.ends else 0.0
+
+    def add_phone(self, phone: str, start: float, end: float) -> None:
+        """Append a phone (Festival name, seconds). A start after the last end is preceded by a
+        pause; a start before it is moved to it (the recogniser's boundaries can shift by a
+        frame); a phone that ends no later than the last end is ignored."""
+        if self.finished:
+            raise InputError("the stream has ended; start a new stream for the next utterance.")
+        if self.phones_complete:
+            raise InputError("the utterance's phones were declared complete; no phone can be added.")
+        last = self.known_until
+        if end <= last + 1e-9:
+            return
+        if start > last + 1e-6:
+            self._append(PAU, last, start)
+        self._append(phone, max(start, last), end)
+        self._silence_growing = False
+
+    def extend_silence(self, until: float) -> None:
+        """The audio up to ``until`` (s) is silence, though the phone after it is not known yet
+        (a TTS engine sends no phone for it): a pause up to there, whose end may grow."""
+        if until > self.known_until + 1e-9:
+            self.add_phone(PAU, self.known_until, until)
+            self._silence_growing = True
+
+    def _append(self, phone: str, start: float, end: float) -> None:
+        if phone == PAU and self.phones and self.phones[-1] == PAU:
+            self.ends[-1] = end  # one silence is one step (batch merges them likewise)
+            return
+        self.phones.append(phone)
+        self.starts.append(start)
+        self.ends.append(end)
+        self.emotions.append(self.emotion)
+
+    def step(self, now: float) -> list[Frame]:
+        """Take the decisions the known phones allow and return the frames that became final;
+        ``now`` is the stream time (s of audio received), recorded in each frame."""
+        t0 = time.perf_counter()
+        lookahead = 0 if self.phones_complete else self.model.stream.lookahead_phones
+        self._decide(len(self.phones) - lookahead)
+        frames = self._emit(now)
+        self.decision_s.append(time.perf_counter() - t0)
+        return frames
+
+    def finish(self, now: float) -> list[Frame]:
+        """End of stream: commit every known phone and send the remaining frames."""
+        if self.finished:
+            return []
+        self._decide(len(self.phones))
+        self.finished = True
+        return self._emit(now)
+
+    # -- decisions -------------------------------------------------------------------------
+
+    def _decide(self, upto: int) -> None:
+        """Commit steps up to (not including) ``upto``."""
+        c = len(self.committed)
+        if upto <= c:
+            return
+        if self.model.trajectory is not None:  # no nodes: a committed phone's frames may be sent
+            self.committed.extend([-1] * (upto - c))
+            return
+        first = max(0, c - 1)
+        phones = self.phones[first:]
+        emotions = self.emotions[first:]
+        if self.model.greedy is not None:
+            path = self._greedy(phones, emotions, self.committed[-1] if c else -1, pinned=c > 0)
+        else:
+            constraints = {0: self.committed[-1]} if c else {}
+            s = self.model.synth
+            steps = step_costs(phones, emotions, self.model.db.nodes.phone, self.model.db.nodes.emotion, constraints, s)
+            path = dp_numpy(self.model.dense, steps.total).path
+        offset = c - first
+        self.committed.extend(int(n) for n in path[offset : offset + upto - c])
+
+    def _greedy(self, phones: list[str], emotions: list[str], before: int, pinned: bool) -> np.ndarray:
+        """Greedy tiling of ``phones`` (the first pinned to ``before`` when ``pinned``)."""
+        greedy = self.model.greedy
+        start = 1 if pinned else 0
+        nodes = np.full(len(phones), -1, np.int64)
+        if pinned:
+            nodes[0] = before
+        t = start
+        while t < len(phones):
+            if phones[t] == PAU:  # a pause's frames are regenerated: any node will do; keep the last
+                nodes[t] = before if before >= 0 else 0
+                t += 1
+                continue
+            end = t
+            while end < len(phones) and phones[end] != PAU:
+                end += 1
+            animes = greedy.tile(phones[t:end], emotions[t:end], before)
+            nodes[t:end] = greedy.g.node[animes]
+            before = int(nodes[end - 1])
+            t = end
+        return nodes
+
+    # -- frames ----------------------------------------------------------------------------
+
+    def _final_frames(self) -> int:
+        """How many output frames depend on committed steps only.
+
+        The capture frames of step t start at ``round(starts[t] * fps)`` (:func:`frame_ranges`).
+        With steps ``[0, c)`` committed: a committed pause at ``c - 1`` is interpolated toward the
+        next step's first frame, so frames stop at its first; otherwise frames stop at step c's
+        first, less the blend's reach (``smoothing_half_window`` frames) when step c is spoken or not
+        yet known (joins next to a pause are not smoothed). An output frame takes the capture frame
+        under it (and the next one when the rates are not in a whole ratio)."""
+        c = len(self.committed)
+        if c == 0:
+            return 0
+        if self.phones_complete and c == len(self.phones):
+            return self._total_frames()
+        grid, s = self.model.grid_fps, self.model.synth
+        if self.model.trajectory is not None:
+            limit = int(round(self.ends[c - 1] * grid))  # the solve reaches every frame: no join to wait for
+        elif self.phones[c - 1] == PAU:
+            limit = int(round(self.starts[c - 1] * grid))
+        else:
+            limit = int(round(self.ends[c - 1] * grid))
+            if c == len(self.phones) or self.phones[c] != PAU:
+                limit -= s.smoothing_half_window
+        ratio = grid / self.model.stream.fps
+        if abs(ratio - round(ratio)) > 1e-9:
+            limit -= 1  # the down-sampling interpolates with the next capture frame
+        return max(0, int(np.ceil(limit / ratio - 1e-9)))
+
+    def _emit(self, now: float) -> list[Frame]:
+        if self.finished:
+            n_final = self._total_frames()
+        else:
+            n_final = self._final_frames()
+            if self._open_pause is not None and n_final <= self._output_range(self._open_pause)[1]:
+                n_final = self.sent  # the frame after the open pause is not final yet: the pause goes on easing
+        frames = []
+        if n_final > self.sent:
+            markers = self._render(self.sent, n_final)
+            if self._open_pause is not None:
+                markers = self._close_pause(markers, n_final)
+            frames += self._send(markers, now)
+        if not self.finished:
+            provisional = self._pause_frames(now)
+            if len(provisional):
+                frames += self._send(provisional, now)
+        return frames
+
+    def _send(self, markers: np.ndarray, now: float) -> list[Frame]:
+        """Solve the rig for ``markers`` (T, M, 3), the next T output frames, and send them."""
+        fps = self.model.stream.fps
+        weights = self.model.solve(markers, self._last)
+        arkit = self.model.arkit(weights)
+        frames = [Frame(self.sent + k, (self.sent + k) / fps, arkit[k], markers[k], now) for k in range(len(markers))]
+        self.sent += len(markers)
+        self._last = (markers[-1], weights[-1])
+        return frames
+
+    def _output_range(self, step: int) -> tuple[int, int]:
+        """Output frames [first, stop) of ``step``: those whose capture frame lies in the step's
+        capture frames (:func:`~facesynth.domain.postprocess.concatenation.frame_ranges`' rounding)."""
+        grid = self.model.grid_fps
+        ratio = grid / self.model.stream.fps
+        a = int(round(self.starts[step] * grid))
+        b = int(round(self.ends[step] * grid))
+        return int(np.ceil(a / ratio - 1e-9)), int(np.ceil(b / ratio - 1e-9))
+
+    def _pause_frames(self, now: float) -> np.ndarray:
+        """Frames of the pause the first unsent frame lies in, when they may not wait for the
+        pause's next phone: (T, M, 3) mm sent ``stream.pause_wait_s`` after their audio, easing
+        from the last frame sent toward the rest pose (a cosine over ``synthesize.pause_rest_ramp_s``).
+        The pause's own node does not matter (its frames are regenerated), so it need not be
+        committed; every frame before it must have been sent."""
+        if not self.phones:
+            return np.zeros((0,), np.float32)
+        fps = self.model.stream.fps
+        p = self._open_pause
+        if p is None:
+            p = max(0, int(np.searchsorted(np.array(self.starts), self.sent / fps + 1e-9, side="right")) - 1)
+            while p > 0 and self._output_range(p)[0] > self.sent:
+                p -= 1
+            while p + 1 < len(self.phones) and self._output_range(p)[1] <= self.sent:
+                p += 1
+        first, last = self._output_range(p)
+        if self.phones[p] != PAU or not first <= self.sent < last:
+            return np.zeros((0,), np.float32)
+        # frames whose audio arrived at least `wait` ago and, where the pause's end is known, at
+        # least `wait` before it, so that its last frames can still lead into the next phone
+        wait = self.model.stream.pause_wait_s
+        growing = self._silence_growing and p == len(self.phones) - 1
+        until = min(now - wait, self.ends[p] - (0.0 if growing else wait))
+        n = min(last, int(np.floor(until * fps + 1e-9)) + 1) - self.sent
+        if n <= 0:
+            return np.zeros((0,), np.float32)
+        if self._open_pause is None:
+            self._open_pause = p
+            # the frame the pause leaves from: the last one sent, or rest before the first phone
+            self._pause_left = (self.sent - 1, self._last[0] if self._last is not None else self.model.rest_markers)
+        assert self._pause_left is not None
+        k0, left = self._pause_left
+        settle = self.model.synth.pause_rest_ramp_s
+        u = np.clip((np.arange(self.sent, self.sent + n) - k0) / (settle * fps), 0.0, 1.0)
+        u = (1 - np.cos(np.pi * u)) / 2
+        rest = self.model.rest_markers
+        return (left[None] * (1 - u[:, None, None]) + rest[None] * u[:, None, None]).astype(np.float32)
+
+    def _close_pause(self, markers: np.ndarray, stop: int) -> np.ndarray:
+        """The rendered frames of the open pause in ``markers`` (output frames [sent, stop), which
+        reach past the pause unless the stream has ended), joined to the frames already sent:
+        batch's frames plus the step from the last frame sent to batch's next, fading linearly
+        to nothing at the pause's end (the frame after it, or the end of the stream)."""
+        p = self._open_pause
+        assert p is not None and self._last is not None
+        self._open_pause = self._pause_left = None
+        n = min(self._output_range(p)[1], stop) - self.sent
+        if n <= 0:
+            return markers
+        out = markers.copy()
+        fade = (1 - np.arange(1, n + 1) / (n + 1))[:, None, None]
+        out[:n] += (self._last[0] - markers[0])[None] * fade
+        return out
+
+    def _total_frames(self) -> int:
+        """Frames batch synthesis gives the whole utterance (its down-sampling of the capture frames)."""
+        grid = self.model.grid_fps
+        if not self.phones:
+            return 0
+        n_capture = int(round(self.ends[-1] * grid))
+        ratio = grid / self.model.stream.fps
+        return int(np.floor((n_capture - 1) / ratio)) + 1 if n_capture > 0 else 0
+
+    def _render(self, first: int, stop: int) -> np.ndarray:
+        """Markers (stop - first, M, 3) mm of output frames [first, stop), rendering the committed
+        steps from two spoken phones before the step of frame ``first``."""
+        if self.model.trajectory is not None:
+            return self._solve(first, stop)
+        db = self.model.db
+        assert db is not None
+        fps = self.model.stream.fps
+        c = len(self.committed)
+        starts = np.array(self.starts[:c])
+        k = int(np.searchsorted(starts, first / fps, side="right")) - 1
+        k = max(0, k)
+        spoken = 0
+        while k > 0 and spoken < 2:
+            k -= 1
+            if self.phones[k] != PAU:
+                spoken += 1
+        while k > 0 and self.phones[k] == PAU:
+            k -= 1
+        # shift the window to start on a whole capture frame, so its frame grid is batch's grid
+        ratio = db.fps / fps
+        if abs(ratio - round(ratio)) < 1e-9:  # a whole number of output frames: the grids agree
+            shift_frames = int(round(self.starts[k] * db.fps)) // int(round(ratio)) * int(round(ratio))
+        else:
+            shift_frames = 0  # no common grid: render from the start
+        shift = shift_frames / db.fps
+        utt = Utterance(self.phones[k:c], np.array(self.starts[k:c]) - shift, np.array(self.ends[k:c]) - shift,
+                        self.emotions[k:c])
+        out = render_path(db, utt, np.array(self.committed[k:c]), self.model.synth)["markers"]
+        base = int(round(shift * fps))
+        lo, hi = first - base, stop - base
+        if lo < 0 or hi > len(out):
+            raise AssertionError(f"render window [{lo}, {hi}) outside its {len(out)} frames")  # a bug, not input
+        return out[lo:hi].astype(np.float32)
+
+    def _solve(self, first: int, stop: int) -> np.ndarray:
+        """Trajectory: markers (stop - first, M, 3) mm of output frames [first, stop), from Eq. 7
+        solved on the model's capture grid over the frames after the last one a sent frame used,
+        up to the end of the known phones, that frame fixed (the frames between, used only by
+        frames sent while a pause waited, are solved again), and down-sampled as batch synthesis
+        down-samples. Keeps the last capture frame the sent frames use for the next solve."""
+        model, settings = self.model.trajectory, self.model.trajectory_settings
+        assert model is not None
+        grid = self.model.grid_fps
+        ratio = grid / self.model.stream.fps
+        begin, before = (0, None) if self._solved is None else (self._solved[0] + 1, self._solved[1])
+        k = max(0, int(np.searchsorted(np.array(self.starts), begin / grid + 1e-9, side="right")) - 1)
+        while k > 0 and int(round(self.starts[k] * grid)) > begin:
+            k -= 1
+        targets = trajectory_method.frame_targets(model, self.phones[k:], self.emotions[k:], np.array(self.starts[k:]),
+                                                  np.array(self.ends[k:]), grid, "the stream")
+        ranges = targets.ranges  # on the capture grid: the targets start at frame ranges[0][0]
+        offset, known = ranges[0][0], ranges[-1][1]
+        # Eq. 6's D with T the frames known so far (the utterance's length is not known yet)
+        d = trajectory_method.duration_weights(ranges, known, settings.duration_normalization)[offset:]
+        skip = begin - offset  # the targets' frames before the window
+        precisions = d[skip:, None] / targets.variances[skip:]
+        lam = trajectory_method.effective_lambda(settings.smoothness, grid, settings.smoothness_fps)
+        x = trajectory_method.solve(targets.means[skip:], precisions, lam, before)
+        # the capture frames batch's down-sampling takes output frames [first, stop) from
+        below, above, w = downsample_sources(np.arange(first, stop), ratio, known)
+        if below[0] < begin or above[-1] >= known:
+            raise AssertionError(f"solve window [{begin}, {known}) does not hold frames [{first}, {stop})")  # a bug
+        last = int(above[-1] if w[-1] > 0 else below[-1])  # the last capture frame a sent frame uses
+        capture = model.markers(x[below[0] - begin : last + 1 - begin])
+        lo, w3 = capture[below - below[0]], w[:, None, None]
+        markers = lo if not w.any() else (lo * (1 - w3) + capture[np.minimum(above, last) - below[0]] * w3
+                                          ).astype(capture.dtype)
+        self._solved = (last, x[last - begin])
+        return markers

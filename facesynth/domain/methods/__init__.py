@@ -1,0 +1,160 @@
+"""Synthesis methods as one family: every way facesynth makes motion from an utterance.
+
+A method turns an utterance (:class:`~facesynth.domain.search.inputs.Utterance`: phones with times in
+seconds and an emotion per phone, and, for the DP alone, motion-node constraints) into a
+:class:`~facesynth.model.motion.Motion` with the same fields and provenance whatever the method:
+markers at the output rate and at the capture rate, the per-phone path (``path.search`` names the
+method; ``path.node`` the chosen motion nodes, -1 where the method has none) and per capture-rate
+frame the input phone it belongs to (``provenance.step``).
+
+A method reads one *source* artifact: the motion database itself (``dp``, ``greedy``, ``mean``:
+no fitting) or a model fitted on a database's training takes and written as its own artifact
+(``trajectory``, ``coarticulation``: ``facesynth fit-method``). The members:
+
+========================  ============  ============================================================
+name                      source        what it does
+========================  ============  ============================================================
+``dp``                    motiondb      the paper's constrained DP search (Algorithm 1, Eq. 4-10)
+``greedy``                motiondb      Cao et al.'s greedy search over the same database and costs
+``trajectory``            trajectory    Huang et al.'s smooth key-shape path through per-(phone,
+                                        emotion) Gaussians (Eq. 6-7)
+``coarticulation``        coarticul.    a Cohen-Massaro dominance model per (phone, emotion)
+``mean``                  motiondb      the per-(phone, emotion) mean pose at phone centres,
+                                        interpolated linearly
+========================  ============  ============================================================
+
+Adding a member: a subclass of :class:`Method` in its own module here, and its name in
+:data:`MEMBERS`. The shared steps around a method (reading the utterance, emotion names, the
+memory check) are :mod:`facesynth.domain.methods.core`.
+"""
+
+from __future__ import annotations
+
+import importlib
+from abc import ABC, abstractmethod
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, ClassVar
+
+from facesynth.base.config import CoarticulationSettings, SynthesizeSettings, TrajectorySettings
+from facesynth.base.errors import UsageError
+
+#: name -> "module:class" of every member, in the order reports list them (lazy, so that naming
+#: a method imports only its own code).
+MEMBERS: dict[str, str] = {
+    "dp": "facesynth.domain.methods.search:DpMethod",
+    "greedy": "facesynth.domain.methods.search:GreedyMethod",
+    "trajectory": "facesynth.domain.methods.trajectory:TrajectoryMethod",
+    "coarticulation": "facesynth.domain.methods.coarticulation:CoarticulationMethod",
+    "mean": "facesynth.domain.methods.mean:MeanMethod",
+}
+
+
+@dataclass(frozen=True)
+class MethodSettings:
+    """The settings sections the members read: ``synthesize`` (every member's output rate; the
+    searches' costs and post-processing), ``trajectory`` (the path of Eq. 6-7), ``coarticulation``
+    (its fitting)."""
+
+    synthesize: SynthesizeSettings
+    trajectory: TrajectorySettings
+    coarticulation: CoarticulationSettings
+
+    @classmethod
+    def of(cls, config) -> "MethodSettings":
+        """The sections of a :class:`~facesynth.base.config.Config` (a command reading them declares
+        ``synthesize``, ``trajectory`` and ``coarticulation``)."""
+        return cls(config.settings("synthesize"), config.settings("trajectory"), config.settings("coarticulation"))
+
+    @classmethod
+    def packaged(cls, **given) -> "MethodSettings":
+        """The packaged defaults, with the sections ``given`` (``synthesize=...``) instead (for
+        library callers and commands that read only some sections)."""
+        from facesynth.base.config import Config
+
+        defaults = Config.load()
+        return cls(**{name: given.get(name) or defaults.settings(name)
+                      for name in ("synthesize", "trajectory", "coarticulation")})
+
+
+@dataclass
+class Synthesis:
+    """A method's result: the motion and ``summary``, what the method reports about it (figures
+    such as ``cost`` or ``energy``, ``*_s`` seconds of its phases, ``unseen`` phones and how they
+    were covered)."""
+
+    motion: Any
+    summary: dict = field(default_factory=dict)
+
+
+class Method(ABC):
+    """One member of the family. Subclasses set the class attributes and :meth:`synthesize`;
+    fitted members also :meth:`fit`.
+
+    ``source_kind``: the artifact kind the method reads (``motiondb``, or its model's kind);
+    ``fitted``: the source is a model fitted on a database (``facesynth fit-method``);
+    ``takes_constraints``: accepts motion-node constraints; ``tunable``: ``facesynth tune`` can
+    tune its weights."""
+
+    name: ClassVar[str]
+    summary: ClassVar[str]
+    source_kind: ClassVar[str] = "motiondb"
+    fitted: ClassVar[bool] = False
+    takes_constraints: ClassVar[bool] = False
+    tunable: ClassVar[bool] = False
+
+    def read(self, path: Path):
+        """The method's source artifact at ``path`` (a motion database, or its fitted model)."""
+        from facesynth.model.motiondb import MotionDatabase
+
+        return MotionDatabase.read(path)
+
+    def fit(self, db, settings: MethodSettings, *, keyshapes=None, where: str = "the database"):
+        """A model of ``db``'s training takes (fitted members); returns (model, summary dict)."""
+        raise UsageError(f"the {self.name} method reads the motion database itself and has nothing to fit; "
+                         f"fit one of {', '.join(n for n in MEMBERS if get(n).fitted)}.")
+
+    def fit_settings(self, settings: MethodSettings):
+        """The settings section a fitted model records as its ``config`` (fitted members)."""
+        return settings.synthesize
+
+    def prepare(self, source, settings: MethodSettings):
+        """Work that depends only on the source and settings, done once for many utterances
+        (the searches' transition costs); passed back to :meth:`synthesize` as ``prepared``."""
+        return None
+
+    def memory_estimate(self, source, utt, settings: MethodSettings) -> float:
+        """Bytes the synthesis of ``utt`` needs beyond the source (checked before the work)."""
+        return 0.0
+
+    def recorded_settings(self, settings: MethodSettings):
+        """The settings section a motion made by this method records as its ``config``."""
+        return settings.synthesize
+
+    def memory_what(self, source, utt) -> str:
+        """The work :meth:`memory_estimate` sizes, as the memory check's message names it."""
+        return f"the {self.name} method for {len(utt)} phones"
+
+    def refuse_constraints(self, constraints) -> None:
+        """One sentence when constraints are given to a method that takes none."""
+        if constraints and not self.takes_constraints:
+            raise UsageError(f"motion-node constraints need the DP search (Eq. 10); the {self.name} method takes "
+                             "none: drop --constraints or use --method dp.")
+
+    @abstractmethod
+    def synthesize(self, source, utt, settings: MethodSettings, constraints: dict[int, int] | None = None, *,
+                   prepared=None, where: str = "the utterance") -> Synthesis:
+        """The motion of ``utt`` (constraints: {phone index: node}, DP only)."""
+
+
+def names() -> tuple[str, ...]:
+    """Every member's name, in report order."""
+    return tuple(MEMBERS)
+
+
+def get(name: str) -> Method:
+    """The member called ``name``; a usage error naming the members for another name."""
+    if name not in MEMBERS:
+        raise UsageError(f"unknown method {name!r}; use one of {', '.join(MEMBERS)}.")
+    module, cls = MEMBERS[name].split(":")
+    return getattr(importlib.import_module(module), cls)()

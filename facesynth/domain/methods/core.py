@@ -1,0 +1,211 @@
+"""The steps every command that synthesizes shares, whatever the method (``synthesize``, ``batch``,
+``evaluate``, ``tune``): reading the utterance, emotion names, the memory check, and the motion of
+a method without motion nodes.
+
+**The utterance** (:func:`read_utterance`): the phone timing of a TextGrid or ``.lab`` file, or the
+speech aligned to its transcript, or recognised when there is none (:mod:`facesynth.domain.speech.recognition`).
+**One transcript-mismatch policy**: when the alignment finds that a given transcript seems to lack
+words the speech holds (or to say more than it), the motion is still made and the finding is a
+warning (logged, and returned in :attr:`UtteranceInput.warnings`, which ``batch`` lists in its
+summary). The motion follows the speech as far as the transcript covers it, and the user sees
+where it does not; failing would only withhold a usable result. Audio with no speech at all, or
+too short for its text, is still an error (:class:`~facesynth.domain.speech.alignment.AlignmentFailed`).
+
+**Emotion names** (:func:`emotion_name`): case-insensitive, aliases too (``ingest.emotion_aliases``,
+matched case-insensitively), as ``ingest`` reads a manifest.
+
+**Limits**: readers ask :func:`facesynth.base.limits.current`; a command puts its ``[limits]`` in force
+with :func:`facesynth.base.limits.using` (``batch`` carries them to its worker processes in the job).
+**Memory**: :func:`synthesize` refuses work the method estimates to need more memory than is
+available (:func:`facesynth.base.limits.require_memory`) before doing it.
+"""
+
+from __future__ import annotations
+
+import json
+import logging
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from facesynth.base.config import AlignSettings, IngestSettings, settings_json
+from facesynth.base.errors import InputError, UsageError
+from facesynth.base.limits import require_memory
+from facesynth.domain.search.inputs import Utterance, apply_emotions, emotion_name, read_constraints, utterance
+from facesynth.domain.search.inputs import read_utterance as read_phone_file
+from facesynth.domain.speech.alignment import Alignment
+
+from . import Method, MethodSettings, Synthesis
+
+log = logging.getLogger(__name__)
+
+__all__ = ["UtteranceInput", "emotion_name", "read_utterance", "constraints_for", "synthesize", "recorded_config",
+           "check_memory", "frame_motion"]
+
+
+@dataclass
+class UtteranceInput:
+    """An utterance read for synthesis: ``utterance``; ``alignment``, the
+    :class:`~facesynth.domain.speech.alignment.Alignment` when it was aligned or recognised from audio (its phones
+    and words, ``method``, ``recognized``), else None; ``warnings``, sentences for the user;
+    ``audio``, the speech ((n,) float32 mono, rate Hz) when it was given, else None."""
+
+    utterance: Utterance
+    alignment: Alignment | None = None
+    warnings: list[str] = field(default_factory=list)
+    audio: tuple[np.ndarray, int] | None = None
+
+
+def read_utterance(ingest: IngestSettings, *, phones_path: Path | None = None, audio: Path | None = None,
+                   text: str | None = None, align: AlignSettings | None = None, emotions_path: Path | None = None,
+                   emotion: str | None = None, samples: tuple[np.ndarray, int] | None = None,
+                   where: str | None = None) -> UtteranceInput:
+    """The utterance: phones from ``phones_path``, or ``audio`` aligned to ``text`` (recognised when
+    ``text`` is None) with ``align``; ``samples`` ((n,) float32, rate Hz) when the audio is already
+    read. With both ``phones_path`` and ``audio``, the phones are the file's (refused when they end
+    more than ``ingest.max_audio_mismatch_s`` after the audio) and the audio is read for its
+    loudness (:mod:`facesynth.domain.speech.loudness`). Emotions from the span file
+    ``emotions_path``, or one ``emotion`` name for every phone, or neutral. ``where`` names the
+    audio in messages (default its path)."""
+    if phones_path is not None and text is not None:
+        raise UsageError("--text is aligned to --audio; with the phones given by --phonemes, leave out --text.")
+    if emotions_path is not None and emotion is not None:
+        raise UsageError("give one emotion for the whole utterance or an emotions file, not both.")
+    aligned = None
+    warnings: list[str] = []
+    data: np.ndarray | None = None
+    rate = 0
+    if audio is not None:
+        from facesynth.formats.audio import read_audio
+
+        data, rate = samples if samples is not None else read_audio(audio)
+    if phones_path is not None:
+        utt = read_phone_file(phones_path, ingest.phone_tiers)
+        if data is not None:
+            end, audio_s = float(utt.ends[-1]), len(data) / rate
+            if end > audio_s + ingest.max_audio_mismatch_s:
+                raise InputError(f"the phone timing {phones_path} ends at {end:.2f} s, after the audio {audio} "
+                                 f"({audio_s:.2f} s, ingest.max_audio_mismatch_s = {ingest.max_audio_mismatch_s:g} s "
+                                 "allowed); give the phone timing of this audio.")
+    elif audio is not None:
+        from facesynth.domain.speech.recognition import align_or_recognize
+
+        if align is None:
+            raise TypeError("read_utterance: aligning audio needs the [align] settings")
+        assert data is not None
+        aligned = align_or_recognize(data, rate, text, settings=align, where=where or str(audio))
+        if aligned.recognized:
+            log.info("%s: recognised: %s", where or audio, aligned.recognized)
+        warnings = list(aligned.warnings)
+        for warning in warnings:  # the one mismatch policy: a warning, never a failure
+            log.warning(warning)
+        segs = aligned.phones
+        utt = utterance([s.label for s in segs], [s.start for s in segs], [s.end for s in segs])
+    elif text is not None:
+        raise UsageError("--text says what --audio says; give --audio too (or the phones with --phonemes).")
+    else:
+        raise UsageError("give the utterance's phones with --phonemes, or the speech with --audio (and --text).")
+    if emotions_path is not None:
+        apply_emotions(utt, emotions_path, ingest.emotions, ingest.emotion_aliases)
+    elif emotion is not None:
+        name = emotion_name(emotion, ingest.emotions, ingest.emotion_aliases, where or "the emotion")
+        utt.emotions = [name] * len(utt)
+    return UtteranceInput(utt, aligned, warnings, None if data is None else (data, rate))
+
+
+def constraints_for(method: Method, source, path: Path | None, utt: Utterance) -> dict[int, int]:
+    """The motion-node constraints of ``path`` for ``utt`` ({phone index: node}); refused in one
+    sentence for a method that takes none, before the file is read."""
+    if path is None:
+        return {}
+    method.refuse_constraints({0: 0})
+    return read_constraints(path, utt, source.nodes.phone)
+
+
+def synthesize(method: Method, source, utt: Utterance, settings: MethodSettings, constraints: dict[int, int] | None = None,
+               *, prepared=None, source_where: str = "the source", where: str = "the utterance",
+               audio: tuple[np.ndarray, int] | None = None) -> Synthesis:
+    """``method``'s motion of ``utt`` from ``source``, after the memory check (its message names
+    ``source_where``; the method's own messages name the utterance, ``where``). With the
+    utterance's ``audio`` ((n,) mono samples, rate Hz) and ``synthesize.loudness_weight`` above 0,
+    the mouth opening then follows the audio's loudness too (:mod:`facesynth.domain.speech.loudness`); a
+    motion without the lip markers is left as it is, and the summary's ``warnings`` say so."""
+    method.refuse_constraints(constraints)
+    check_memory(method, source, utt, settings, source_where)
+    result = method.synthesize(source, utt, settings, constraints, prepared=prepared, where=where)
+    if audio is not None and settings.synthesize.loudness_weight > 0:
+        from facesynth.domain.speech import loudness
+
+        result.motion, warning = loudness.follow(result.motion, *audio, utt.starts, utt.ends, list(utt.phones),
+                                                 settings.synthesize)
+        if warning is not None:
+            log.warning("%s: %s", where, warning)
+            result.summary.setdefault("warnings", []).append(warning)
+    return result
+
+
+def recorded_config(method: Method, settings: MethodSettings, with_audio: bool) -> str:
+    """The ``config`` a motion made by ``method`` records (JSON): its settings section, and, with
+    the audio given to a method whose section is not ``[synthesize]`` (``trajectory``), the
+    settings of the loudness step that moved its mouth as ``synthesize.<name>`` keys."""
+    section = method.recorded_settings(settings)
+    config = json.loads(settings_json(section))
+    if with_audio and section is not settings.synthesize:
+        s = settings.synthesize
+        for name in ("loudness_weight", "loudness_smoothing_s", "loudness_lip_markers", "pinned_phones"):
+            value = getattr(s, name)
+            config[f"synthesize.{name}"] = list(value) if isinstance(value, tuple) else value
+    return json.dumps(config, sort_keys=True)
+
+
+def check_memory(method: Method, source, utt: Utterance, settings: MethodSettings, where: str) -> None:
+    """Refuse (one sentence naming ``where``, the source) when ``method``'s synthesis of ``utt``
+    needs more memory than is available."""
+    need = method.memory_estimate(source, utt, settings)
+    if need:
+        require_memory(need, method.memory_what(source, utt), where)
+
+
+def frame_motion(name: str, utt: Utterance, markers_capture: np.ndarray, coefficients: np.ndarray | None,
+                 capture_fps: float, output_fps: float, marker_names: list[str], reference: np.ndarray,
+                 node_phone: list[str], node_emotion: list[str], device: str):
+    """The ``motion`` of a method without motion nodes (``mean``, ``coarticulation``), fields as the
+    searches write them: markers_capture (F, M, 3) mm at ``capture_fps``, down-sampled to
+    ``output_fps``; coefficients (F, K) or None; ``path/node`` and the provenance's node, take and
+    source frame -1 (no node, no source frame), ``node_phone`` / ``node_emotion`` what the method
+    used for each phone, the cost terms zero; ``provenance.step`` the input phone of each frame.
+    The head does not move (identity rotation, zero translation)."""
+    from facesynth.domain.postprocess.concatenation import downsample, frame_ranges
+    from facesynth.model.motion import Motion, Provenance, SearchPath
+
+    ranges = frame_ranges(utt.starts, utt.ends, capture_fps)
+    n_capture = len(markers_capture)
+    step = np.zeros(n_capture, np.int64)
+    for t, (a, b) in enumerate(ranges):
+        step[a:b] = t
+    u = len(utt)
+    zeros = np.zeros(u, np.float32)
+    path = SearchPath(np.full(u, -1, np.int64), list(utt.phones), list(utt.emotions), list(node_phone),
+                      list(node_emotion), np.asarray(utt.starts, float), np.asarray(utt.ends, float),
+                      {"tc": zeros, "oc": zeros.copy(), "emp": zeros.copy(), "block": zeros.copy()}, 0.0, 0, name,
+                      device, f"the {name} method computes each frame on the host")
+    none = np.full(n_capture, -1, np.int64)
+    provenance = Provenance(none, none.copy(), [], none.copy(), step, np.zeros(n_capture, bool), capture_fps)
+    markers = downsample(np.asarray(markers_capture, np.float32), capture_fps, output_fps)
+    n_out = len(markers)
+    rotation = np.repeat(np.eye(3, dtype=np.float32)[None], n_out, axis=0)
+    return Motion(markers, output_fps, np.asarray(markers_capture, np.float32), capture_fps, list(marker_names),
+                  np.asarray(reference, np.float32), rotation, np.zeros((n_out, 3), np.float32),
+                  None if coefficients is None else np.asarray(coefficients, np.float32), path, provenance)
+
+
+def chosen_method(method: str | None, search: str | None, configured_search: str) -> str:
+    """The member ``synthesize`` (and ``batch``) run: ``--method``, where ``dp`` (and no
+    ``--method``) follows ``--search`` or ``synthesize.search`` as before the family existed."""
+    if method in (None, "dp"):
+        return search or configured_search
+    if search is not None:
+        raise UsageError(f"--search chooses how the motion database is searched; the {method} method does not "
+                         "take it: drop --search or use --method dp.")
+    return method

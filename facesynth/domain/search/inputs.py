@@ -1,0 +1,163 @@
+"""What a synthesis request is made of: the new utterance's phones, its emotion spans and
+its motion-node constraints (formats documented in ``docs/inputs.md``)."""
+
+from __future__ import annotations
+
+import logging
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from facesynth.base.errors import InputError, SearchError
+from facesynth.base.phonemes import PAU, map_phones
+from facesynth.formats.labels import read_phone_segments, read_text, read_textgrid
+
+log = logging.getLogger(__name__)
+
+
+@dataclass
+class Utterance:
+    """The input phone sequence: Festival phones with times (s) and an emotion per phone."""
+
+    phones: list[str]
+    starts: np.ndarray
+    ends: np.ndarray
+    emotions: list[str]
+
+    def __len__(self) -> int:
+        return len(self.phones)
+
+    def index_at(self, time_s: float) -> int | None:
+        """The step whose phone spans ``time_s`` (seconds), or None."""
+        hits = np.nonzero((self.starts <= time_s) & (time_s < self.ends))[0]
+        return int(hits[0]) if len(hits) else None
+
+
+def utterance(phones, starts, ends, emotions=None) -> Utterance:
+    """An Utterance with adjacent pauses merged: one silence is one step of the search."""
+    emotions = list(emotions) if emotions is not None else ["neutral"] * len(phones)
+    out_p, out_s, out_e, out_m = [], [], [], []
+    for p, a, b, m in zip(phones, starts, ends, emotions):
+        if out_p and p == PAU and out_p[-1] == PAU:
+            out_e[-1] = b
+            continue
+        out_p.append(p)
+        out_s.append(a)
+        out_e.append(b)
+        out_m.append(m)
+    return Utterance(out_p, np.array(out_s, float), np.array(out_e, float), out_m)
+
+
+def read_utterance(phones_path: Path, tier_names=("phones",)) -> Utterance:
+    """The utterance of a TextGrid (first tier of ``tier_names``) or ``.lab`` file, in the Festival set."""
+    segs = read_phone_segments(phones_path, tier_names)
+    labels = map_phones([s.label for s in segs], str(phones_path), [s.start for s in segs])
+    return utterance(labels, [s.start for s in segs], [s.end for s in segs])
+
+
+def emotion_name(raw: str, emotions, aliases, where: str) -> str:
+    """The emotion called ``raw`` (case-insensitive, aliases too: ``ingest.emotion_aliases``); an
+    InputError naming ``where`` and the known emotions otherwise."""
+    name = raw.strip().lower()
+    name = {k.lower(): v for k, v in aliases.items()}.get(name, name)
+    if name not in emotions:
+        raise InputError(f"{where}: unknown emotion {raw!r}; use one of {', '.join(emotions)}.")
+    return name
+
+
+def apply_emotions(utt: Utterance, path: Path, emotions, aliases) -> None:
+    """Set each phone's emotion from a span file (``start_s end_s emotion`` per line) or a
+    TextGrid tier named ``emotions``. A phone takes the span holding its midpoint; spans
+    may not overlap; phones outside every span stay neutral. A span entirely outside the
+    utterance is an InputError (times are seconds); one that holds no phone's midpoint is
+    warned about, since it changes nothing."""
+    path = Path(path)
+    spans: list[tuple[float, float, str, str]] = []
+    if path.suffix.lower() == ".textgrid":
+        tiers = read_textgrid(path)
+        tier = next((tiers[k] for k in tiers if k.lower() in ("emotions", "emotion")), None)
+        if tier is None:
+            raise InputError(f"{path}: no tier named 'emotions'; add one with intervals labelled by emotion.")
+        for s in tier:
+            if s.label.strip():
+                spans.append((s.start, s.end, s.label, f"{path}, tier 'emotions', {s.start:.3f} s"))
+    else:
+        if not path.exists():
+            raise InputError(f"{path}: emotion file not found; check the --emotions path.")
+        for n, line in enumerate(read_text(path, "emotion file").splitlines(), 1):
+            line = line.split("#", 1)[0].strip()
+            if not line:
+                continue
+            parts = line.split()
+            try:
+                start, end, label = float(parts[0]), float(parts[1]), parts[2]
+            except (ValueError, IndexError):
+                raise InputError(f"{path}, line {n}: expected 'start_s end_s emotion', got {line!r}.") from None
+            if not (math.isfinite(start) and math.isfinite(end)):
+                raise InputError(f"{path}, line {n}: the span {start:g} to {end:g} s must be finite seconds.")
+            if end <= start:
+                raise InputError(f"{path}, line {n}: the span ends at or before it starts.")
+            spans.append((start, end, label, f"{path}, line {n}"))
+    spans.sort()
+    for (_, a1, _, wa), (b0, _, _, wb) in zip(spans, spans[1:]):
+        if b0 < a1 - 1e-9:
+            raise InputError(f"{wb}: emotion span overlaps the one at {wa.split(', ', 1)[1]}; make spans disjoint.")
+    first, last = float(utt.starts[0]), float(utt.ends[-1])
+    for s, e, _, where in spans:
+        if e <= first or s >= last:
+            raise InputError(f"{where}: the emotion span {s:g} to {e:g} s lies outside the utterance "
+                             f"({first:.3f} to {last:.3f} s); give its start and end in seconds within it.")
+    names = [(s, e, emotion_name(lab, emotions, aliases, where), where) for s, e, lab, where in spans]
+    mids = 0.5 * (utt.starts + utt.ends)
+    for s, e, name, where in names:
+        held = (s <= mids) & (mids < e)
+        if not held.any():
+            log.warning(f"{where}: the emotion span {s:g} to {e:g} s holds no phone's midpoint, so it changes nothing; "
+                        "widen it to cover the phones meant.")
+        for k in np.nonzero(held)[0]:
+            utt.emotions[k] = name
+
+
+def read_constraints(path: Path, utt: Utterance, node_phone: list[str]) -> dict[int, int]:
+    """Hard motion-node constraints: ``INDEX NODE`` (0-based phone index) or ``TIMEs NODE``
+    (a time in seconds with an ``s`` suffix) per line. Returns {phone index: node id}."""
+    path = Path(path)
+    if not path.exists():
+        raise InputError(f"{path}: constraints file not found; check the --constraints path.")
+    out: dict[int, int] = {}
+    for n, line in enumerate(read_text(path, "constraints file").splitlines(), 1):
+        line = line.split("#", 1)[0].strip()
+        if not line:
+            continue
+        where = f"{path}, line {n}"
+        parts = line.split()
+        if len(parts) != 2:
+            raise InputError(f"{where}: expected 'INDEX NODE' or 'TIMEs NODE', got {line!r}.")
+        at, node_text = parts
+        try:
+            node = int(node_text)
+            if at.endswith("s"):
+                time_s = float(at[:-1])
+                index = utt.index_at(time_s)
+                if index is None:
+                    raise SearchError(f"{where}: time {time_s:.3f} s is outside the utterance (0 to {utt.ends[-1]:.3f} s).")
+                place = f"the phone at {time_s:.3f} s (index {index})"
+            else:
+                index = int(at)
+                if not 0 <= index < len(utt):
+                    raise SearchError(f"{where}: phone index {index} is out of range (0 to {len(utt) - 1}).")
+                place = f"phone {index}"
+        except ValueError:
+            raise InputError(f"{where}: expected 'INDEX NODE' or 'TIMEs NODE' with numbers, got {line!r}.") from None
+        if not 0 <= node < len(node_phone):
+            raise SearchError(f"{where}: node {node} does not exist (the database has nodes 0 to {len(node_phone) - 1}).")
+        if utt.phones[index] == PAU:
+            raise SearchError(f"{where}: {place} is a pause, whose frames are interpolated; constrain a spoken phone.")
+        if node_phone[node] != utt.phones[index]:
+            raise SearchError(f"{where}: node {node} is /{node_phone[node]}/ but {place} is /{utt.phones[index]}/; pick a node of that phone (see facesynth suggest).")
+        if index in out:
+            raise SearchError(f"{where}: {place} is already constrained to node {out[index]}; keep one constraint per phone.")
+        out[index] = node
+    return out

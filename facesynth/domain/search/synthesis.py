@@ -1,0 +1,207 @@
+"""Synthesis (paper VI and VII-B): search the motion-node database for an utterance and turn
+the chosen path into marker motion.
+
+The constrained DP of Algorithm 1 (or Cao et al.'s greedy search) picks one node per input
+phone minimizing Eq. 4; the path is concatenated, smoothed, time-warped to the input timing
+at the capture rate, back-projected with Eq. 11 and down-sampled to the output rate. Every
+output frame keeps its provenance (node, take, source frame).
+"""
+
+from __future__ import annotations
+
+import threading
+import time
+from collections.abc import Callable
+
+import numpy as np
+
+from facesynth.base.config import SynthesizeSettings
+from facesynth.base.errors import UsageError
+from facesynth.base.opencl import use_opencl
+from facesynth.base.phonemes import PAU, viseme
+from facesynth.domain.head_motion.rotations import follow_sources
+from facesynth.domain.postprocess.concatenation import concatenate, downsample
+from facesynth.model.motion import Motion, Provenance, SearchPath
+from facesynth.model.motiondb import MotionDatabase, Nodes
+
+from .costs import StepCosts, path_terms, step_costs
+from .inputs import Utterance
+from .pairs import transition_costs
+
+
+def unseen_phones(utt: Utterance, db: MotionDatabase) -> dict[str, str]:
+    """Input phones with no node, and how the search will cover them."""
+    have = set(db.nodes.phone)
+    have_vis = {viseme(p) for p in have}
+    out = {}
+    for p in dict.fromkeys(utt.phones):
+        if p == PAU or p in have:
+            continue
+        out[p] = "nodes of the same viseme (Table II rule 2)" if viseme(p) in have_vis else "any node (Table II rule 3)"
+    return out
+
+
+def greedy_search(db: MotionDatabase, tc, utt: Utterance, steps: StepCosts, settings: SynthesizeSettings):
+    """Cao et al.'s GreedyMatching; returns a DpResult-like record with the Eq. 4 cost of its path."""
+    from .dp import DpResult
+    from .greedy import Greedy, anime_graph, cluster_graph, motion_features
+
+    if settings.greedy_clusters > 0:
+        features = motion_features(db.coeffs, db.nodes.frame_start, db.nodes.frame_count)
+        graph = cluster_graph(db.nodes.phone, db.nodes.emotion, db.nodes.suc, features, settings.greedy_clusters)
+    else:
+        graph = anime_graph(db.nodes.phone, db.nodes.emotion, db.nodes.suc)
+    result = Greedy(graph, db.nodes.viseme, db.nodes.emotion, tc, settings.alpha6 * settings.pnt).search(utt.phones, utt.emotions)
+    terms = path_terms(result.path, tc, steps)
+    cost = float(sum(v.astype(np.float64).sum() for v in terms.values()))
+    graph_kind = f"{settings.greedy_clusters} clusters" if settings.greedy_clusters else "unclustered"
+    return DpResult(cost, result.path, np.zeros((0, 0), np.float32)), (f"greedy ({graph_kind})", "synthesize.search = greedy")
+
+
+def search(tc, steps: StepCosts, settings: SynthesizeSettings, *, while_running: Callable[[], None] | None = None,
+           timings: dict[str, float] | None = None):
+    """Run the DP over ``tc`` (a :class:`~facesynth.domain.search.pairs.TransitionCosts`); returns
+    (DpResult, (device, why that device), fraction of pair costs computed). ``synthesize.dp``
+    picks the exact pruned DP or the dense reference (the full matrix assembled, then
+    Algorithm 1 on it); both give the same path and cost. ``while_running`` is host work to
+    do while a dense OpenCL search runs; ``timings`` gets ``opencl_setup_s`` (context, kernel,
+    buffers, and for the dense DP the matrix)."""
+    from facesynth.base.opencl import device_record
+
+    from .dp import OpenCLDp, dp_numpy
+    from .pruned import dp_pruned
+
+    if settings.dp == "pruned":
+        if tc.opencl:
+            t0 = time.perf_counter()
+            tc.device  # noqa: B018 (the property builds the kernels and uploads the features)
+            if timings is not None:
+                timings["opencl_setup_s"] = time.perf_counter() - t0
+        # The host work overlaps the search on a thread: the search waits on the device and on
+        # NumPy, both of which release the GIL.
+        helper = threading.Thread(target=while_running) if while_running is not None else None
+        if helper is not None:
+            helper.start()
+        try:
+            result, stats = dp_pruned(tc, steps.total)
+        finally:
+            if helper is not None:
+                helper.join()
+        return result, device_record(settings.use_opencl), stats.fraction
+    if not tc.opencl:
+        return dp_numpy(tc.dense(), steps.total), device_record(settings.use_opencl), 1.0
+    t0 = time.perf_counter()
+    runner = OpenCLDp(tc.panels())
+    if timings is not None:
+        timings["opencl_setup_s"] = time.perf_counter() - t0
+    return runner.run(steps.total, while_running), device_record(settings.use_opencl), 1.0
+
+
+def table_iv_weight(settings: SynthesizeSettings):
+    """The Table IV smoothing weight of a phone (high, low or intermediate) under ``settings``."""
+    def weight(phone: str) -> float:
+        if phone in settings.high_phones:
+            return settings.weight_high
+        if phone in settings.low_phones:
+            return settings.weight_low
+        return settings.weight_intermediate
+    return weight
+
+
+def captured_runs(nodes: Nodes) -> list[slice]:
+    """Frames of each maximal run of captured-linked nodes (no pause, no pruned node inside)."""
+    runs = []
+    for k in np.nonzero(nodes.pre < 0)[0]:
+        last = k
+        while nodes.suc[last] >= 0:
+            last = nodes.suc[last]
+        runs.append(slice(int(nodes.frame_start[k]), int(nodes.frame_start[last] + nodes.frame_count[last])))
+    return runs
+
+
+def cao_joins(db: MotionDatabase, path: np.ndarray, phones: list[str]):
+    """Cao et al.'s blending across jumps and learned low-pass (``synthesize.postprocess = "cao"``)."""
+    from facesynth.domain.postprocess.cao import blend_jumps, learned_cutoffs, lowpass
+
+    take_range = np.array([(db.takes.frames(t).start, db.takes.frames(t).stop) for t in db.nodes.take])
+
+    def joins(out: np.ndarray, ranges) -> np.ndarray:
+        changed = blend_jumps(out, ranges, path, phones, db.nodes.phone, db.nodes.frame_start, db.nodes.frame_count,
+                              db.nodes.pre, take_range, db.coeffs)
+        out[:] = lowpass(out, learned_cutoffs(db.coeffs, captured_runs(db.nodes), db.fps), db.fps)
+        return changed
+    return joins
+
+
+def synthesize(db: MotionDatabase, utt: Utterance, constraints: dict[int, int], settings: SynthesizeSettings, tc=None) -> dict:
+    """Search and post-process. Returns a dict of everything ``motion.h5`` stores, and
+    ``timings``: seconds spent choosing the device (the first time in a process), on the
+    transition costs (reading the per-node features, when ``tc`` is not given), the step
+    costs, the OpenCL set-up, the search and the post-processing. ``tc`` is a
+    :class:`~facesynth.domain.search.pairs.TransitionCosts` (made from ``db`` when None);
+    ``pairs_fraction`` is the fraction of the dense DP's pair costs the search computed."""
+    timings = {}
+    t0 = time.perf_counter()
+    on_device = use_opencl(settings.use_opencl)
+    timings["device_choice_s"] = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    if tc is None:
+        tc = transition_costs(db, settings, on_device)
+        timings["transition_s"] = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    steps = step_costs(utt.phones, utt.emotions, db.nodes.phone, db.nodes.emotion, constraints, settings)
+    timings["steps_s"] = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    if settings.search == "greedy":
+        if constraints:
+            raise UsageError("motion-node constraints need the DP search (Eq. 10); drop --constraints or use --search dp.")
+        result, device = greedy_search(db, tc, utt, steps, settings)
+        fraction = None
+    else:
+        result, device, fraction = search(tc, steps, settings, timings=timings)
+    timings["search_s"] = time.perf_counter() - t0 - timings.get("opencl_setup_s", 0.0)
+    path = result.path
+    for t, node in constraints.items():  # Eq. 10 guarantees this; a failure is a bug
+        assert path[t] == node, f"constraint at step {t} not met"
+    t0 = time.perf_counter()
+    out = {"path": path, "cost": result.cost, "terms": path_terms(path, tc, steps), "device": device[0],
+           "pairs_fraction": fraction,
+           "device_reason": device[1], "timings": timings, **render_path(db, utt, path, settings)}
+    timings["postprocess_s"] = time.perf_counter() - t0
+    return out
+
+
+def render_path(db: MotionDatabase, utt: Utterance, path: np.ndarray, settings: SynthesizeSettings) -> dict:
+    """VII-B for a given node path: concatenate, smooth, regenerate pauses, Eq. 11, down-sample."""
+    rest = db.model.project(db.reference[None])[0]
+    cat = concatenate(
+        path, utt.phones, utt.starts, utt.ends, db.nodes.frame_start, db.nodes.frame_count, db.nodes.pre,
+        db.nodes.phone, db.coeffs, rest, db.fps, half_window=settings.smoothing_half_window,
+        lam=settings.smoothing_lambda, weight_of=table_iv_weight(settings), interpolation=settings.silence_interpolation,
+        joins=cao_joins(db, path, utt.phones) if settings.postprocess == "cao" else None, method=settings.join_smoothing,
+        pinned=frozenset(settings.pinned_phones), rest_after=int(round(settings.pause_rest_min_s * db.fps)),
+        rest_ramp=max(1, int(round(settings.pause_rest_ramp_s * db.fps))),
+    )
+    markers = db.model.reconstruct(cat.coeffs)
+    joins = sum(1 for t in range(len(path) - 1)
+                if utt.phones[t] != PAU and utt.phones[t + 1] != PAU and db.nodes.pre[path[t + 1]] != path[t])
+    take = np.where(cat.node >= 0, db.nodes.take[np.maximum(cat.node, 0)], -1)
+    # the head motion of the source frames only, relative to their takes
+    used = np.unique(cat.source_frame[cat.source_frame >= 0])
+    sources = np.where(cat.source_frame >= 0, np.searchsorted(used, cat.source_frame), -1)
+    head_r, head_t = follow_sources(sources, *db.head_relative(used))
+    return {"concatenated": cat, "markers_capture": markers, "markers": downsample(markers, db.fps, settings.output_fps),
+            "non_captured_joins": joins, "take": take,
+            "head_rotation": downsample(head_r, db.fps, settings.output_fps),
+            "head_translation": downsample(head_t, db.fps, settings.output_fps)}
+
+
+def as_motion(db: MotionDatabase, utt: Utterance, res: dict, settings: SynthesizeSettings) -> Motion:
+    """The ``motion`` artifact's contents for a :func:`synthesize` result."""
+    cat = res["concatenated"]
+    path = SearchPath(res["path"], list(utt.phones), list(utt.emotions), [db.nodes.phone[j] for j in res["path"]],
+                      [db.nodes.emotion[j] for j in res["path"]], utt.starts, utt.ends, res["terms"], res["cost"],
+                      res["non_captured_joins"], settings.search, res["device"], res["device_reason"])
+    provenance = Provenance(cat.node, res["take"], db.takes.name, cat.source_frame, cat.step, cat.smoothed, db.fps)
+    return Motion(res["markers"], settings.output_fps, res["markers_capture"], db.fps, db.marker_names, db.reference,
+                  res["head_rotation"], res["head_translation"], cat.coeffs, path, provenance)
