@@ -13,7 +13,7 @@ CONFIG := configs/default.toml
 PRESET ?= small
 SEED   ?= 0
 
-.PHONY: all demo test test-hostile lint docs report bench clean
+.PHONY: all demo test test-hostile lint docs report bench vendor clean
 
 all: demo
 
@@ -35,13 +35,28 @@ lint: $(STAMP)
 	$(BIN)/ruff check facesynth tests benchmarks
 	$(BIN)/mypy
 
-# The generated parts of the docs: the stage table of docs/pipeline.md (facesynth/pipeline.py),
+# The generated parts of the docs: the stage table of docs/pipeline.md (facesynth/base/pipeline.py),
 # the artifact reference of docs/file-format.md (facesynth/model/spec.py) and the settings
-# reference docs/configuration.md (facesynth/config.py).
+# reference docs/configuration.md (facesynth/base/config.py).
 docs: $(STAMP)
-	$(BIN)/python -m facesynth.pipeline docs/pipeline.md
+	$(BIN)/python -m facesynth.base.pipeline docs/pipeline.md
 	$(BIN)/python -m facesynth.model.spec docs/file-format.md
-	$(BIN)/python -m facesynth.config > docs/configuration.md
+	$(BIN)/python -m facesynth.base.config > docs/configuration.md
+
+# The vendored three.js of the web player (facesynth/data/three.*), from npm: `npm ci` installs
+# into node_modules/ the versions pinned in package.json and package-lock.json; terser (pinned there
+# too, its options in package.json's `minify`) minifies three's core and module builds, as three
+# ships no minified builds since r186; the orbit controls and the licence are copied as they are.
+# tests/exports/test_three_vendor.py checks the files' sha256 and version. Needs Node.js and npm.
+NPM ?= npm
+THREE := node_modules/three
+
+vendor:
+	$(NPM) ci --ignore-scripts --no-audit --no-fund
+	$(NPM) run --silent minify -- $(THREE)/build/three.core.js -o facesynth/data/three.core.js
+	$(NPM) run --silent minify -- $(THREE)/build/three.module.js -o facesynth/data/three.module.js
+	cp $(THREE)/examples/jsm/controls/OrbitControls.js facesynth/data/three.OrbitControls.js
+	cp $(THREE)/LICENSE facesynth/data/three.LICENSE
 
 # The long hostile-input run: every input kind x mutation over five seeds (several minutes;
 # `make test` runs a quick part of it). `benchmarks/hostile.py` prints the same cases as a table.

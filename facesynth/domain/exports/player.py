@@ -1,7 +1,7 @@
 """The web player: one self-contained HTML page that plays an animation in 3D with its audio.
 
 The page holds everything it needs (no network at view time): three.js (vendored from the npm
-package ``three``, MIT, in ``facesynth/data/three.*.js`` with ``three.LICENSE``) as base64 text
+package ``three``, MIT, minified by ``make vendor``, in ``facesynth/data/three.*.js`` with ``three.LICENSE``) as base64 text
 loaded through blob URLs, the mesh, the animation and the audio (16-bit mono WAV, base64).
 
 The animation is stored as morph targets, compact and exact where it can be:
@@ -46,9 +46,13 @@ from pathlib import Path
 import numpy as np
 
 from facesynth.base.config import Config, RenderSettings
+from facesynth.base.errors import InputError
+from facesynth.domain.live.phones import SAMPLE_RATE
 from facesynth.domain.rendering.camera import framing
 from facesynth.domain.rendering.parts import build_scene, face_focus
 from facesynth.domain.rendering.raster import BACKGROUND, shading_params
+from facesynth.domain.rig.face import load_face_rig
+from facesynth.formats.audio import read_audio, resample
 
 from .animation import Exportable
 
@@ -178,7 +182,6 @@ def _face(anim: Exportable) -> dict:
 
 
 def _read_audio(path: Path) -> tuple[np.ndarray, int]:
-    from facesynth.formats.audio import read_audio
 
     return read_audio(path)
 
@@ -198,11 +201,6 @@ def live_payload(url: str, audio: Path | None = None, jitter_s: float = LIVE_JIT
     :meth:`Rig.from_arkit`), so a stream frame's ``arkit`` weights pose the face directly;
     the stream's WebSocket ``url``; and optionally the speech to send (16 kHz mono int16 PCM,
     ``pcm``) and play (``audio``, a WAV data URI)."""
-    from facesynth.base.errors import InputError
-    from facesynth.domain.live.phones import SAMPLE_RATE
-    from facesynth.domain.rig.face import load_face_rig
-    from facesynth.formats.audio import resample
-
     if not url.startswith(("ws://", "wss://")) or len(url) <= len("ws://"):
         raise InputError(f"--live {url!r}: give the stream server's WebSocket URL, e.g. ws://127.0.0.1:8765 "
                          "(the address 'facesynth stream DB --serve' listens on).")
