@@ -20,13 +20,33 @@ from facesynth import __version__
 from facesynth.base import limits, pipeline
 from facesynth.base.config import SAMPLE_CORPUS_PRESETS, Config, choices, parse_override
 from facesynth.base.errors import FacesynthError, OverrideError, UsageError
-from facesynth.domain.methods import MEMBERS as METHOD_MEMBERS
+from facesynth.base.registry import METHODS, Entry, Registry
 
 PATH = click.Path(path_type=Path)
-#: The members of the method family (facesynth.domain.methods), and those fitted into a model artifact.
-METHOD_NAMES = tuple(METHOD_MEMBERS)
-FITTED_METHOD_NAMES = ("trajectory", "coarticulation")
 EXISTING = click.Path(path_type=Path, dir_okay=False)
+
+
+class RegistryChoice(click.Choice):
+    """A choice among a registry's members (those ``where`` accepts), read when the command line
+    is parsed or its help shown, so a member registered after this module was imported is offered
+    too (:mod:`facesynth.base.registry`)."""
+
+    def __init__(self, registry: Registry, where=lambda entry: True) -> None:
+        self.registry = registry
+        self.where = where
+        super().__init__(())
+
+    @property  # type: ignore[override]
+    def choices(self) -> tuple[str, ...]:
+        return tuple(e.name for e in self.registry.entries() if self.where(e))
+
+    @choices.setter
+    def choices(self, value) -> None:  # click.Choice.__init__ assigns the (empty) tuple given
+        pass
+
+
+def _fitted(entry: Entry) -> bool:
+    return bool(entry.facts.get("fitted"))
 
 
 class DefaultGroup(click.Group):
@@ -432,7 +452,7 @@ def build_db(ctx: Context, pca_path: Path, output: Path):
 
 @main.command()
 @click.argument("db", metavar="DB|MODEL", type=EXISTING)
-@click.option("--method", type=click.Choice(METHOD_NAMES), default=None,
+@click.option("--method", type=RegistryChoice(METHODS), default=None,
               help="The synthesis method (default: dp, or --search): dp and greedy search the motion database (DB), "
                    "mean takes its per-(phone, emotion) mean poses; trajectory and coarticulation read a MODEL "
                    "fitted on it (facesynth fit-method).")
@@ -476,7 +496,7 @@ def synthesize(ctx: Context, db: Path, method, phonemes, audio, text, emotions, 
     s = stage.run(db, output, settings, ctx.config.settings("ingest"), ctx.config.settings("align"), method=name,
                   phones_path=phonemes, emotions_path=emotions, constraints_path=constraints, audio=audio, text=text,
                   head_motion_path=head_motion_path, overwrite=ctx.overwrite)
-    on_database = s.method in ("dp", "greedy", "mean")
+    on_database = not _fitted(METHODS.entry(s.method))
     for phone, how in s.unseen.items():
         what = f"database has no node of /{phone}/" if on_database else f"model has no {phone}"
         ctx.say(f"warning: the {what}; it will be covered by {how}.")
@@ -629,7 +649,7 @@ def train_trajectory(ctx: Context, db: Path, keyshapes_path: Path, output: Path)
 
 
 @main.command("fit-method")
-@click.argument("method", type=click.Choice(FITTED_METHOD_NAMES))
+@click.argument("method", type=RegistryChoice(METHODS, _fitted))
 @click.argument("db", type=EXISTING)
 @click.option("--keyshapes", "keyshapes_path", type=EXISTING, default=None,
               help="Key-shapes (facesynth keyshapes): the trajectory method's weights are over them.")
@@ -943,7 +963,7 @@ def player(ctx: Context, artifact: Path | None, audio: Path | None, motion: Path
 @click.argument("script", type=EXISTING)
 @click.option("--db", "db_path", type=EXISTING, required=True,
               help="The motion database (db.h5), or for --method trajectory / coarticulation its fitted model.")
-@click.option("--method", type=click.Choice(METHOD_NAMES), default=None,
+@click.option("--method", type=RegistryChoice(METHODS), default=None,
               help="The synthesis method of every line (default: dp, following synthesize.search), as for synthesize.")
 @click.option("-o", "--output", type=PATH, required=True, help="Output folder (per-line files and the summary).")
 @click.option("--outputs", default=None, metavar="KINDS",
@@ -1078,7 +1098,7 @@ def capture(ctx: Context, corpus: Path, db_path: Path, take: str, output: Path):
 @main.command()
 @click.argument("db", type=EXISTING)
 @click.option("--validation", type=EXISTING, required=True, help="The corpus.h5 with val (tuning) and test (report) takes.")
-@click.option("--method", type=click.Choice(METHOD_NAMES), default=None,
+@click.option("--method", type=RegistryChoice(METHODS), default=None,
               help="The method whose weights to tune (default: synthesize.search); only dp and greedy have any.")
 @click.option("-o", "--output", type=PATH, required=True, help="Output TOML with the tuned [synthesize] weights.")
 @stage

@@ -1,78 +1,31 @@
-"""The layering the code relies on (docs/architecture.md): every module has a layer, no module
-imports a module of a higher layer (imports inside functions count), there is no import circle,
-stages share only the model layer and the domain packages, only the model layer opens
-artifacts with h5py, one class is the rig and one word names one concept."""
+"""The layering the code relies on (docs/architecture.md): a module's layer is its folder, no
+module imports a module of a higher layer (imports inside functions count), there is no import
+circle between modules nor between packages, imports inside functions are the few listed with
+their reason, stages share only the model layer and the domain packages, only the model layer
+opens artifacts with h5py, one class is the rig and one word names one concept."""
 
 import ast
 import sys
 from pathlib import Path
 
-import pytest
-
 import facesynth
 
 PACKAGE = Path(facesynth.__file__).parent
 
-#: The layers, lowest first; a module may import its own layer and those below it.
+#: The layers, lowest first; a module may import its own layer and those below it. A module's
+#: layer is its folder: facesynth/<layer>/..., the package itself is base, cli is cli.
 LAYERS = ("base", "formats", "model", "domain", "stages", "cli")
+#: The only modules at the top of the package.
+TOP_LEVEL = ("facesynth", "facesynth.__main__", "facesynth.cli")
 
-#: Module or package -> layer; the longest matching prefix decides. A new module needs a line
-#: here (test_every_module_has_a_layer), so placing it is a decision, not an accident.
-LAYER_OF = {
-    # base: the package itself, errors, settings, limits, phone sets, OpenCL, progress, hashing,
-    # and the stage declarations (standard library only); nothing here reads an artifact
-    "facesynth": "base",
-    "facesynth.base.errors": "base",
-    "facesynth.base.config": "base",
-    "facesynth.base.limits": "base",
-    "facesynth.base.phonemes": "base",
-    "facesynth.base.opencl": "base",
-    "facesynth.base.progress": "base",
-    "facesynth.base.hashing": "base",
-    "facesynth.base.pipeline": "base",
-    # formats: files other tools write or read (C3D, TRC, OBJ, PLY, TextGrid, WAV, glTF)
-    "facesynth.formats": "formats",
-    # model: the artifact contract, its specification and checker, and one reader/writer per kind
-    "facesynth.model.artifacts": "model",
-    "facesynth.model.check": "model",
-    "facesynth.model": "model",
-    # domain: the methods and everything they need, working on arrays and model objects
-    "facesynth.domain.speech.alignment": "domain",
-    "facesynth.domain.speech.recognition": "domain",
-    "facesynth.domain.evaluation.bootstrap": "domain",
-    "facesynth.domain.evaluation.baselines": "domain",
-    "facesynth.domain.evaluation.held_out": "domain",
-    "facesynth.domain.rig.face": "domain",
-    "facesynth.domain.database.contamination": "domain",
-    "facesynth.domain.database.embedding": "domain",
-    "facesynth.domain.methods": "domain",
-    "facesynth.domain.search": "domain",
-    "facesynth.domain.postprocess": "domain",
-    "facesynth.domain.expression": "domain",
-    "facesynth.domain.retarget": "domain",
-    "facesynth.domain.rendering": "domain",
-    "facesynth.domain.exports": "domain",
-    "facesynth.domain.corpus": "domain",
-    "facesynth.domain.live": "domain",
-    "facesynth.domain.batch": "domain",
-    # stages: one module per command, reading artifacts, calling the domain, writing artifacts
-    "facesynth.stages": "stages",
-    # cli: parsing and printing
-    "facesynth.cli": "cli",
-    "facesynth.__main__": "cli",
-}
-
-#: Imports of a higher layer that are known and wait for their callers to move, with the reason;
-#: test_known_exceptions_are_still_needed fails once one is gone, so this list only shrinks.
-KNOWN_UPWARD = {
-    ("facesynth.model.motiondb", "facesynth.domain.search.pairs"):
-        "MotionDatabase.read_features/transition_costs/write build the search's PairFeatures and "
-        "TransitionCosts; callers throughout the methods use these accessors",
+#: Imports of facesynth modules inside functions outside the CLI (whose commands load their stage
+#: when they run), each with its reason: (importing module, imported module) -> reason.
+DEFERRED = {
 }
 
 #: Modules that import only the standard library (they are read before anything is installed
-#: or configured: the stage declarations).
-STDLIB_ONLY = ("facesynth.base.pipeline",)
+#: or configured: the stage declarations, the registries).
+STDLIB_ONLY = ("facesynth.base.errors", "facesynth.base.pipeline", "facesynth.base.registry")
 
 
 def _modules() -> dict[str, Path]:
@@ -87,26 +40,33 @@ def _modules() -> dict[str, Path]:
 MODULES = _modules()
 
 
-def _imports(path: Path) -> set[str]:
-    """Absolute names of the facesynth modules ``path`` imports, anywhere in the file (inside
-    functions too); ``from package import name`` counts as importing the module ``name`` when
-    there is one."""
+def _imports_with_place(path: Path) -> list[tuple[str, int]]:
+    """(module, id of the import statement) for every facesynth module ``path`` imports, anywhere
+    in the file (inside functions too); ``from package import name`` counts as importing the
+    module ``name`` when there is one."""
     parts = path.relative_to(PACKAGE.parent).with_suffix("").parts
     if parts[-1] == "__init__":
         parts = parts + ("",)  # relative imports of a package start at the package itself
-    out = set()
+    out = []
     for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        names = set()
         if isinstance(node, ast.ImportFrom):
             if node.level:
                 base = list(parts[: len(parts) - node.level])
                 module = ".".join(base + ([node.module] if node.module else []))
             else:
                 module = node.module or ""
-            out.add(module)
-            out.update(f"{module}.{a.name}" for a in node.names if f"{module}.{a.name}" in MODULES)
+            names.add(module)
+            names.update(f"{module}.{a.name}" for a in node.names if f"{module}.{a.name}" in MODULES)
         elif isinstance(node, ast.Import):
-            out.update(a.name for a in node.names)
-    return {_known(m) for m in out if m.split(".")[0] == "facesynth"} - {None}
+            names.update(a.name for a in node.names)
+        out.extend((known, id(node)) for m in names if m.split(".")[0] == "facesynth" and (known := _known(m)))
+    return out
+
+
+def _imports(path: Path) -> set[str]:
+    """Absolute names of the facesynth modules ``path`` imports, anywhere in the file."""
+    return {m for m, _ in _imports_with_place(path)}
 
 
 def _known(name: str) -> str | None:
@@ -120,31 +80,33 @@ GRAPH = {name: _imports(path) - {name} for name, path in MODULES.items()}
 
 
 def layer(module: str) -> str | None:
-    """The layer of ``module`` by the longest prefix in :data:`LAYER_OF`."""
-    name = module
-    while name:
-        if name in LAYER_OF:
-            return LAYER_OF[name]
-        name = name.rpartition(".")[0]
-    return None
+    """The layer of ``module``: its folder under the package (the package itself: base)."""
+    parts = module.split(".")
+    if module in ("facesynth.cli", "facesynth.__main__"):
+        return "cli"
+    if len(parts) == 1:
+        return "base"
+    return parts[1] if parts[1] in LAYERS else None
 
 
-def test_every_module_has_a_layer():
-    assert [m for m in MODULES if layer(m) is None] == []
+def package(module: str) -> str:
+    """The package ``module`` belongs to: its layer's folder, or for the domain its subject's
+    package (``facesynth.domain.search``)."""
+    parts = module.split(".")
+    return ".".join(parts[:3] if len(parts) > 2 and parts[1] == "domain" else parts[:2])
 
 
-def test_no_module_imports_a_higher_layer():
-    upward = sorted(f"{m} ({layer(m)}) imports {t} ({layer(t)})" for m, targets in GRAPH.items() for t in targets
-                    if LAYERS.index(layer(t)) > LAYERS.index(layer(m)) and (m, t) not in KNOWN_UPWARD)
-    assert upward == []
+def _deferred(path: Path) -> set[str]:
+    """The facesynth modules ``path`` imports inside functions."""
+    inside = set()
+    for fn in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        if isinstance(fn, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            inside.update(id(n) for n in ast.walk(fn) if isinstance(n, (ast.Import, ast.ImportFrom)))
+    return {m for m, where in _imports_with_place(path) if where in inside}
 
 
-def test_known_exceptions_are_still_needed():
-    assert [pair for pair in KNOWN_UPWARD if pair[1] not in GRAPH.get(pair[0], set())] == []
-
-
-def test_no_import_circle():
-    """No strongly connected component of more than one module in the import graph (Tarjan)."""
+def _circles(graph: dict[str, set[str]]) -> list[list[str]]:
+    """The strongly connected components of more than one node (Tarjan)."""
     index: dict[str, int] = {}
     low: dict[str, int] = {}
     stack: list[str] = []
@@ -155,7 +117,7 @@ def test_no_import_circle():
         index[v] = low[v] = len(index)
         stack.append(v)
         on_stack.add(v)
-        for w in sorted(GRAPH[v]):
+        for w in sorted(graph.get(v, ())):
             if w not in index:
                 visit(w)
                 low[v] = min(low[v], low[w])
@@ -173,23 +135,70 @@ def test_no_import_circle():
                 circles.append(sorted(component))
 
     limit = sys.getrecursionlimit()
-    sys.setrecursionlimit(max(limit, 10 * len(GRAPH)))
+    sys.setrecursionlimit(max(limit, 10 * len(graph)))
     try:
-        for v in sorted(GRAPH):
+        for v in sorted(graph):
             if v not in index:
                 visit(v)
     finally:
         sys.setrecursionlimit(limit)
-    assert circles == []
+    return circles
 
 
-def test_the_circle_finder_finds_a_circle(monkeypatch):
-    """The test above can fail: an artificial circle through two real modules is found."""
+PACKAGE_GRAPH: dict[str, set[str]] = {}
+for _module, _targets in GRAPH.items():
+    PACKAGE_GRAPH.setdefault(package(_module), set()).update(package(t) for t in _targets
+                                                             if package(t) != package(_module))
+
+
+def test_every_module_has_a_layer():
+    assert [m for m in MODULES if layer(m) is None] == []
+
+
+def test_the_top_level_holds_only_the_package_and_the_cli():
+    """From a file's path its layer is known: the top of the package holds the package, its
+    ``__main__`` and the CLI; every other module lives in its layer's folder."""
+    top_modules = sorted(p.stem for p in PACKAGE.glob("*.py") if p.stem != "__init__")
+    assert top_modules == ["cli"] or top_modules == ["__main__", "cli"]
+    code_folders = sorted(p.name for p in PACKAGE.iterdir() if p.is_dir() and (p / "__init__.py").exists())
+    assert code_folders == sorted(LAYERS[:-1])
+
+
+def test_no_module_imports_a_higher_layer():
+    upward = sorted(f"{m} ({layer(m)}) imports {t} ({layer(t)})" for m, targets in GRAPH.items() for t in targets
+                    if LAYERS.index(layer(t)) > LAYERS.index(layer(m)))
+    assert upward == []
+
+
+def test_no_import_circle():
+    """No strongly connected component of more than one module in the import graph."""
+    assert _circles(GRAPH) == []
+
+
+def test_no_package_import_circle():
+    """No circle between packages either (a layer's folder; the domain's subject packages),
+    imports inside functions included: each package can be read knowing only those below it."""
+    assert _circles(PACKAGE_GRAPH) == []
+
+
+def test_the_circle_finder_finds_a_circle():
+    """The tests above can fail: an artificial circle through two real modules is found, and one
+    through two real packages."""
     graph = {m: set(t) for m, t in GRAPH.items()}
     graph["facesynth.base.errors"].add("facesynth.base.config")  # config imports errors
-    monkeypatch.setitem(globals(), "GRAPH", graph)
-    with pytest.raises(AssertionError):
-        test_no_import_circle()
+    assert _circles(graph) != []
+    packages = {p: set(t) for p, t in PACKAGE_GRAPH.items()}
+    packages["facesynth.domain.rig"].add("facesynth.domain.rendering")  # rendering imports the rig
+    assert _circles(packages) != []
+
+
+def test_imports_inside_functions_are_the_listed_ones():
+    """Imports of facesynth modules inside functions (outside the CLI) are only those listed with
+    their reason in DEFERRED, at most ten."""
+    found = {(m, t) for m, path in MODULES.items() if layer(m) != "cli" for t in _deferred(path) if t != m}
+    assert sorted(found - set(DEFERRED)) == []
+    assert sorted(set(DEFERRED) - found) == []
+    assert len(DEFERRED) <= 10
 
 
 def test_no_domain_module_imports_a_stage():
@@ -212,6 +221,8 @@ def test_stdlib_only_modules_import_only_the_standard_library():
         roots = {a.name.split(".")[0] for n in ast.walk(tree) if isinstance(n, ast.Import) for a in n.names}
         roots |= {"." if n.level else (n.module or "").split(".")[0] for n in ast.walk(tree)
                   if isinstance(n, ast.ImportFrom)}
+        if GRAPH[name] <= set(STDLIB_ONLY):  # relative imports of other modules of this list only
+            roots.discard(".")
         assert sorted(r for r in roots if r not in sys.stdlib_module_names and r != "__future__") == [], name
 
 
@@ -241,10 +252,21 @@ def test_one_rig_class():
     assert [(m, c) for m, c in _classes() if c.endswith("Rig")] == [("facesynth.domain.rig.face", "Rig")]
 
 
-def test_one_module_named_expression():
-    """``expression`` names the command (and its artifact kind) only; the style model is
-    ``facesynth.domain.expression``, the actress's non-speech face ``facesynth.domain.corpus.nonspeech``."""
-    assert [m for m in MODULES if m.rpartition(".")[2] == "expression"] == ["facesynth.stages.expression"]
+def test_one_name_for_the_expression_model():
+    """The expression model (Chuang & Bregler's bilinear style/content model) is ``expression``
+    everywhere: the command, its artifact's module and the domain package; nothing else is called
+    expression and nothing is called style."""
+    assert [m for m in MODULES if m.rpartition(".")[2] == "expression"] == [
+        "facesynth.domain.expression", "facesynth.model.expression", "facesynth.stages.expression"]
+    assert [m for m in MODULES if "style" in m.rpartition(".")[2]] == []
+    assert [(m, c) for m, c in _classes() if c.startswith("Style")] == []
+
+
+def test_one_module_per_name_for_live_link():
+    """The Live Link Face CSV (a file format) and the Live Link packet (the live transport) are
+    two modules with two names."""
+    assert sorted(m for m in MODULES if "livelink" in m) == ["facesynth.domain.live.livelink",
+                                                              "facesynth.formats.livelink_face"]
 
 
 def test_the_glTF_format_is_read_and_written_in_one_module():
@@ -261,5 +283,5 @@ def test_the_layer_map_sees_the_imports():
     """The rules above can fail: the graph has the imports they check (a stage's import of the
     model and the domain, a deferred import inside a function)."""
     assert {"facesynth.model.motion", "facesynth.domain.retarget.deform"} <= GRAPH["facesynth.stages.deform"]
-    assert "facesynth.base.opencl" in GRAPH["facesynth.model.artifacts"]  # imported inside read()
+    assert "facesynth.base.opencl" in GRAPH["facesynth.model.artifacts"]
     assert layer("facesynth.stages.deform") == "stages" and layer("facesynth.model.spec") == "model"

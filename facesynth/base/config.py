@@ -30,6 +30,7 @@ from typing import Any, TypeVar
 
 from .errors import ConfigError, OverrideError
 from .phonemes import PAU, PHONES
+from .registry import METHODS, Registry
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -50,7 +51,8 @@ class Declaration:
     """What one setting may hold, beyond its Python type (stored in its field's metadata).
 
     ``ge``/``gt``/``le``/``lt`` bound a number (inclusive/exclusive); ``choices`` lists the
-    allowed strings (for a list: of each element); ``min_items``/``max_items`` bound a list's
+    allowed strings (for a list: of each element), or names the members of a registry
+    (:class:`Members`: read when a value is checked, so a member registered later counts); ``min_items``/``max_items`` bound a list's
     length; ``finite`` refuses NaN and infinity for floats. ``unit`` and ``source`` are for
     people: the unit of a number and where its value or meaning comes from."""
 
@@ -60,18 +62,39 @@ class Declaration:
     gt: float | None = None
     le: float | None = None
     lt: float | None = None
-    choices: tuple[str, ...] | None = None
+    members: Members | None = None
     min_items: int = 0
     max_items: int | None = None
     finite: bool = True
+    fixed_choices: tuple[str, ...] | None = None
+
+    @property
+    def choices(self) -> tuple[str, ...] | None:
+        """The allowed strings now (a registry's members as registered so far)."""
+        return self.members.names() if self.members is not None else self.fixed_choices
+
+
+@dataclass(frozen=True)
+class Members:
+    """The members of ``registry`` (a :class:`facesynth.base.registry.Registry`) that have the
+    fact ``having`` (all of them when ''), as a setting's choices, plus ``extra`` values."""
+
+    registry: Registry
+    having: str = ""
+    extra: tuple[str, ...] = ()
+
+    def names(self) -> tuple[str, ...]:
+        return tuple(e.name for e in self.registry.entries() if not self.having or e.facts.get(self.having)) + self.extra
 
 
 def setting(source: str, *, unit: str = "", ge: float | None = None, gt: float | None = None,
-            le: float | None = None, lt: float | None = None, choices: tuple[str, ...] | None = None,
+            le: float | None = None, lt: float | None = None, choices: tuple[str, ...] | Members | None = None,
             min_items: int = 0, max_items: int | None = None, finite: bool = True) -> Any:
     """A settings-dataclass field carrying its :class:`Declaration`. It has no default: the
     default value lives in ``configs/default.toml`` only."""
-    decl = Declaration(source, unit, ge, gt, le, lt, tuple(choices) if choices else None, min_items, max_items, finite)
+    members = choices if isinstance(choices, Members) else None
+    fixed = None if members is not None or not choices else tuple(choices)  # type: ignore[arg-type]
+    decl = Declaration(source, unit, ge, gt, le, lt, members, min_items, max_items, finite, fixed)
     return dataclasses.field(metadata={"setting": decl})
 
 
@@ -224,7 +247,7 @@ class EvaluateSettings:
     dominance_iterations: int = setting("not in the paper: L-BFGS-B iterations fitting the Cohen-Massaro baseline", ge=1)
     methods: tuple[str, ...] = setting("not in the paper: the synthesis methods scored (dp always: the paired "
                                        "differences are dp minus each); trajectory also needs --trajectory",
-                                       choices=("dp", "greedy", "trajectory", "coarticulation", "mean"))
+                                       choices=Members(METHODS))
     bootstrap_resamples: int = setting("not in the paper: resamples of the sentences for every 95% interval", ge=100)
     classifier_frames: int = setting("not in the paper: training frames of the emotion classifier", unit="frames", ge=100)
     seed: int = setting("not in the paper: seeds the bootstrap and the classifier's frame sample", ge=0)
@@ -446,7 +469,7 @@ class StreamSettings:
 
     method: str = setting("paper Algorithm 1 on a sliding window (dp, fixed-lag), Cao et al.'s greedy tiling, or "
                           "Huang et al.'s key-shape trajectory solved with the sent frames fixed (trajectory: streams "
-                          "from a trajectory model)", choices=("dp", "greedy", "trajectory"))
+                          "from a trajectory model)", choices=Members(METHODS, "streams"))
     lookahead_phones: int = setting("not in the papers: phones known past a step before it is committed (the "
                                     "fixed lag); more: closer to the whole-utterance DP, later frames", unit="phones",
                                     ge=0, le=64)

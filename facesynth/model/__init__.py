@@ -11,7 +11,7 @@ motiondb      Nodes, MotionDatabase       ``motiondb`` (facesynth build-db, prun
 isomap        Cluster, PhonemeMaps        ``isomap`` (facesynth isomap)
 motion        Motion                      ``motion`` (facesynth synthesize, capture)
 meshanim      MeshAnimation               ``meshanim`` (facesynth deform)
-style         StyleModel, BilinearModel   ``expression`` (facesynth expression fit)
+style         ExpressionModel, BilinearModel   ``expression`` (facesynth expression fit)
 kinds         SCHEMAS, PRODUCERS          every kind's schema and the commands that write it
 spec          KINDS (the specification)   every kind, as data (facesynth check, docs)
 ============  ==========================  ==========================================

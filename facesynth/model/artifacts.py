@@ -28,6 +28,7 @@ import numpy as np
 from facesynth import __version__
 from facesynth.base.errors import ArtifactError, InputError, OutputExistsError
 from facesynth.base.hashing import sha256_of
+from facesynth.base.opencl import aligned_empty
 
 from .check import Snapshot, bounds_in_force, validate, value_problem, written_problem
 from .kinds import ENCODING_VERSION, PRODUCERS, SCHEMAS
@@ -618,7 +619,6 @@ def read(f: h5py.File, key: str, aligned: int = 0) -> np.ndarray:
         raise ArtifactError(f"{f.filename}: missing dataset '{key}'; the file is damaged or from another tool.") from None
     try:
         if aligned and ds.shape and ds.size and ds.dtype.kind in "fiu":
-            from facesynth.base.opencl import aligned_empty
 
             data = aligned_empty(ds.shape, ds.dtype, aligned)
             ds.read_direct(data)

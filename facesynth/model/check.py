@@ -32,7 +32,9 @@ from pathlib import Path
 import h5py
 import numpy as np
 
+from facesynth.base import limits
 from facesynth.base.hashing import sha256_of
+from facesynth.base.limits import size_text
 
 from .kinds import ENCODING_VERSION, PRODUCERS, SCHEMAS
 from .spec import (
@@ -151,7 +153,6 @@ class Bounds:
                              f"{setting} = {limit / 1e6:.0f} MB; if that is right, raise it with --set {setting}=...")
             return False
         if self.available is not None and nbytes > self.available:
-            from facesynth.base.limits import size_text
 
             checker.say(key, f"declares {size_text(nbytes)} but {size_text(self.available)} of memory is available; "
                              "read it on a machine with more memory.")
@@ -171,8 +172,6 @@ class Snapshot:
 
 def bounds_in_force() -> Bounds:
     """The :class:`Bounds` of the ``[limits]`` settings in force (:func:`facesynth.base.limits.current`)."""
-    from facesynth.base import limits
-
     lim = limits.current()
     symbols = {}
     for names, setting in ((("M", "B"), "max_markers"), (("N", "R"), "max_nodes"), (("F", "Fo", "n"), "max_frames"),

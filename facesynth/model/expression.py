@@ -1,4 +1,4 @@
-"""The ``expression`` artifact: a fitted style model (the bilinear style/content model of
+"""The ``expression`` artifact: a fitted expression model (the bilinear style/content model of
 Chuang & Bregler §3, :mod:`facesynth.domain.expression`), written by ``facesynth expression fit``."""
 
 from __future__ import annotations
@@ -44,7 +44,7 @@ class BilinearModel:
         return self.styles[self.emotions.index(emotion)]
 
 
-class StyleModel:
+class ExpressionModel:
     """Reader and writer of the ``expression`` kind; the model itself is a
     :class:`BilinearModel` with its marker names (fitted and used by :mod:`facesynth.domain.expression.bilinear`)."""
 

@@ -38,7 +38,7 @@ from facesynth.domain.batch.report import write_summary
 from facesynth.domain.batch.runner import dask_client, run_lines
 from facesynth.domain.batch.script import read_script
 from facesynth.domain.methods import MethodSettings
-from facesynth.domain.rig.loading import BUILTIN
+from facesynth.domain.rig.loading import BUILTIN, arkit_to_rig, load_rig
 from facesynth.model.artifacts import check_output_folder, open_artifact, sha256_of
 
 
@@ -86,8 +86,6 @@ def prepare(script: Path, db: Path, out_dir: Path, settings: BatchSettings, synt
 def _check_rig(rig: Path | None, rig_binding: Path | None, outputs) -> str:
     """Read the rig of the rig outputs once, before any work (a user's rig without its binding, or
     without the ARKit names an arkit output needs, is refused); returns its sha256."""
-    from facesynth.domain.rig.loading import arkit_to_rig, load_rig
-
     if rig is not None and rig_binding is None:
         raise UsageError(f"{rig}: a user's rig needs --rig-binding, a CSV of marker,vertex placing the motion's "
                          "markers on it.")

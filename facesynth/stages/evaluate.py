@@ -13,7 +13,7 @@ import numpy as np
 
 from facesynth.base.config import EvaluateSettings, NormalizeSettings, SynthesizeSettings, TrajectorySettings
 from facesynth.base.errors import InputError, OutputExistsError
-from facesynth.domain.evaluation.held_out import FIGURES, MEMBER_ROW, REFERENCES, evaluate
+from facesynth.domain.evaluation.held_out import FIGURES, REFERENCES, evaluate, member_rows
 from facesynth.model.artifacts import atomic_folder, check_output_folder, sha256_of
 from facesynth.model.trajectory import TrajectoryModel
 
@@ -62,7 +62,7 @@ def _cell(f: dict | None, decimals: int = 3) -> str:
 def row_label(row: str) -> str:
     """A row's name in the tables: the member of the method family it scores, where the row keeps
     an older name ('baseline_emotion (mean)')."""
-    member = next((m for m, r in MEMBER_ROW.items() if r == row and m != r), None)
+    member = next((m for m, r in member_rows().items() if r == row and m != r), None)
     return f"{row} ({member})" if member else row
 
 

@@ -29,7 +29,10 @@ from facesynth.base.errors import InputError, UsageError
 from facesynth.domain.exports import files as files_
 from facesynth.domain.exports.animation import Exportable, load, use_mesh
 from facesynth.domain.exports.files import audio_path, named_temporary
-from facesynth.model.artifacts import atomic_folder, atomic_path, check_output, published_together
+from facesynth.domain.exports.objseq import write_sequence
+from facesynth.formats.audio import read_audio
+from facesynth.formats.mocap import MarkerTake, write_c3d
+from facesynth.model.artifacts import atomic_folder, atomic_path, check_output, check_output_folder, published_together
 
 FORMATS = ("arkit-csv", "gltf", "glb", "usd", "usda", "c3d", "obj-seq")
 
@@ -86,14 +89,12 @@ def run(artifact: Path, fmt: str, output: Path, settings: ExportSettings, *, fps
     if audio is not None and fmt not in ("gltf", "glb"):
         raise UsageError("--audio goes with gltf and glb (the other formats carry no audio reference).")
     if fmt == "obj-seq":
-        from facesynth.model.artifacts import check_output_folder
 
         check_output_folder(output, "the OBJ sequence", overwrite)
     else:
         check_output(output, overwrite)
     if audio is not None:
         check_output(audio_path(output), overwrite)
-        from facesynth.formats.audio import read_audio
 
         read_audio(audio)  # a WAV that cannot be read is refused before anything is written
     anim = load(artifact)
@@ -122,13 +123,11 @@ def run(artifact: Path, fmt: str, output: Path, settings: ExportSettings, *, fps
         with named_temporary(output, overwrite) as tmp:
             files_.write_usd(anim, tmp, head_motion)
     elif fmt == "c3d":
-        from facesynth.formats.mocap import MarkerTake, write_c3d
 
         markers = anim.with_head(anim.markers) if head_motion else anim.markers
         with atomic_path(output, overwrite) as tmp:
             write_c3d(tmp, MarkerTake(np.asarray(markers, np.float32), list(anim.marker_names), anim.fps))
     else:
-        from facesynth.domain.exports.objseq import write_sequence
 
         with atomic_folder(output, "the OBJ sequence", overwrite) as tmp:
             files = write_sequence(tmp, anim, head_motion)

@@ -18,8 +18,9 @@ from facesynth.base.config import ExpressionSettings, IngestSettings, settings_j
 from facesynth.base.errors import InputError
 from facesynth.base.phonemes import PAU
 from facesynth.domain.expression import bilinear
+from facesynth.domain.search.inputs import Utterance, apply_emotions
 from facesynth.model.artifacts import check_output
-from facesynth.model.expression import StyleModel
+from facesynth.model.expression import ExpressionModel
 from facesynth.model.frames import NormalizedFrames
 from facesynth.model.motion import Motion
 
@@ -134,7 +135,7 @@ def fit(norm_path: Path, out: Path, settings: ExpressionSettings, overwrite: boo
     norm = NormalizedFrames.read(norm_path)
     X, emotions, used, notes = aligned_data(norm, settings.splits, settings.frame_step)
     model = fit_model(X, emotions, settings)
-    StyleModel.write(out, model, norm.marker_names, config=settings_json(settings),
+    ExpressionModel.write(out, model, norm.marker_names, config=settings_json(settings),
                           inputs=[norm_path], aligned_frames=X.shape[1], sentences=used,
                           overwrite=overwrite)
     return ExpressionFitResult(emotions, len(used), X.shape[1], model.errors.tolist(), notes, model.basis.shape[0],
@@ -156,7 +157,7 @@ def nearest_emotion(model: bilinear.BilinearModel, styles: np.ndarray) -> list[s
 def analyze(model_path: Path, motion_path: Path, settings: ExpressionSettings) -> list[str]:
     """``expression analyze``: CSV lines, one per output frame: time (s), the nearest fitted
     emotion, the style vector (e0..) and the content vector (c0..); NaN frames are skipped."""
-    model, names = StyleModel.read(model_path)
+    model, names = ExpressionModel.read(model_path)
     motion = Motion.read(motion_path)
     _check_markers(motion.marker_names, names, motion_path, model_path)
     m = motion.markers
@@ -177,8 +178,6 @@ def targets(model: bilinear.BilinearModel, model_path: Path, n: int, fps: float,
     """Per frame target style (n, I) and intensity (n,): ``to`` everywhere, or each frame's
     span of the emotion file (frames outside every span keep their own expression)."""
     from scipy.ndimage import gaussian_filter1d
-
-    from facesynth.domain.search.inputs import Utterance, apply_emotions
 
     I = model.styles.shape[1]
     if emotions_path is None:
@@ -211,7 +210,7 @@ def restyle(model_path: Path, motion_path: Path, out: Path, settings: Expression
     """``expression restyle``: the motion in another expression (Eq. 7), at the output and
     the capture rate, head motion kept; writes a ``motion`` artifact (``source = restyle``)."""
     check_output(out, overwrite)
-    model, names = StyleModel.read(model_path)
+    model, names = ExpressionModel.read(model_path)
     check_request(model, model_path, to, intensity)
     motion = Motion.read(motion_path)
     _check_markers(motion.marker_names, names, motion_path, model_path)

@@ -32,6 +32,7 @@ from facesynth.base.config import AlignSettings, IngestSettings, settings_json
 from facesynth.base.errors import InputError
 from facesynth.base.phonemes import map_phones
 from facesynth.base.progress import progress
+from facesynth.domain.speech.alignment import align_samples
 from facesynth.formats.audio import read_audio, resample
 from facesynth.formats.labels import Segment, check_segments, read_phone_segments, read_textgrid
 from facesynth.formats.mesh import read_rigid_markers
@@ -116,7 +117,6 @@ def _segments_for(row: ManifestRow, settings: IngestSettings, align_settings: Al
         if not row.alignment.exists():
             raise InputError(f"{where}: alignment file {row.alignment} not found; fix the manifest's alignment column.")
         return read_phone_segments(row.alignment, settings.phone_tiers)
-    from facesynth.domain.speech.alignment import align_samples
 
     return align_samples(samples, rate, row.transcript, settings=align_settings, where=where)
 

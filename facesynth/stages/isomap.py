@@ -31,9 +31,13 @@ from facesynth.base.errors import InputError
 from facesynth.base.limits import require_memory
 from facesynth.base.phonemes import PAU
 from facesynth.base.progress import progress
+from facesynth.domain import methods
 from facesynth.domain.database.embedding import barycentric_pick, build_clusters, memory_estimate
+from facesynth.domain.exports import isomap_page as export
+from facesynth.domain.methods import core
 from facesynth.model.artifacts import atomic_folder, atomic_path, check_output, check_output_folder, published_together
 from facesynth.model.isomap import Cluster, PhonemeMaps
+from facesynth.model.motion import Motion
 from facesynth.model.motiondb import MotionDatabase
 
 EMOTION_COLOURS = {"neutral": (0, 0, 0), "angry": (220, 30, 30), "sad": (20, 160, 40), "happy": (30, 70, 230)}
@@ -385,11 +389,6 @@ def page(isomap_path: Path, db_path: Path, phones_path: Path, out: Path, setting
     an utterance over the maps of ``isomap_path`` built from ``db_path``, marking the path of
     the synthesized ``motion_path``."""
     import io
-
-    from facesynth.domain import methods
-    from facesynth.domain.exports import isomap_page as export
-    from facesynth.domain.methods import core
-    from facesynth.model.motion import Motion
 
     check_output(out, overwrite)
     maps = PhonemeMaps.read(isomap_path)

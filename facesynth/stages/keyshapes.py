@@ -16,6 +16,9 @@ import numpy as np
 
 from facesynth.base.config import KeyshapesSettings, settings_json
 from facesynth.base.errors import InputError
+from facesynth.domain.rendering.camera import Camera
+from facesynth.domain.rendering.parts import build_scene, vertex_normals
+from facesynth.domain.rendering.raster import rasterizer
 from facesynth.domain.retarget.keyshapes import Selection, select_affinity, select_pca
 from facesynth.domain.retarget.solve import fit_rig_weights
 from facesynth.domain.rig.loading import builtin_rig, marker_map
@@ -81,10 +84,6 @@ def build(db: MotionDatabase, settings: KeyshapesSettings, method: str, count: i
 def contact_sheet(keyshapes: KeyShapes, out: Path, tile: int = 192, columns: int = 10) -> None:
     """A PNG grid of every keymorph rendered on the built-in rig, one row per emotion, labelled."""
     from PIL import Image, ImageDraw
-
-    from facesynth.domain.rendering.camera import Camera
-    from facesynth.domain.rendering.parts import build_scene, vertex_normals
-    from facesynth.domain.rendering.raster import rasterizer
 
     rig = builtin_rig()
     scene = build_scene(rig.neutral, rig.faces)

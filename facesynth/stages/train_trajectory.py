@@ -11,6 +11,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from facesynth.base.config import TrajectorySettings
+from facesynth.domain.methods import MethodSettings
 from facesynth.domain.methods.fitting import fit_to_file
 
 
@@ -40,8 +41,6 @@ def run(db_path: Path, keyshapes_path: Path, out: Path, settings: TrajectorySett
         overwrite: bool = False) -> TrainTrajectoryResult:
     """Train the model on ``db_path``'s training takes with the key-shapes of ``keyshapes_path``
     and write ``out``."""
-    from facesynth.domain.methods import MethodSettings
-
     s = fit_to_file("trajectory", db_path, out, MethodSettings.packaged(trajectory=settings), keyshapes_path=keyshapes_path,
                     overwrite=overwrite)
     return TrainTrajectoryResult(s["keyshapes"], s["phones"], s["pairs"], s["samples"], s["fit_rms_mm"], s["fit_s"],

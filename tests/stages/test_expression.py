@@ -6,7 +6,7 @@ from click.testing import CliRunner
 
 from facesynth.base.errors import InputError
 from facesynth.cli import main
-from facesynth.model.expression import StyleModel
+from facesynth.model.expression import ExpressionModel
 from facesynth.model.motion import Motion
 from facesynth.stages import capture
 from facesynth.stages import expression as stage
@@ -26,7 +26,7 @@ def _cli(*args):
 
 def test_fit_uses_every_training_sentence_in_every_emotion_and_its_error_never_rises(fitted, config):
     d, s = fitted
-    model, names = StyleModel.read(d / "expr.h5")
+    model, names = ExpressionModel.read(d / "expr.h5")
     assert s.emotions[0] == "neutral" and set(s.emotions) == {"neutral", "happy", "angry", "sad"}
     assert s.sentences >= 2 and not s.skipped
     assert model.W.shape == (config.settings("expression").components, 4, config.settings("expression").content_dim)
@@ -91,7 +91,7 @@ def test_bad_restyle_requests_are_one_line_exit_1_and_write_nothing(fitted, tmp_
 
 def test_restyle_of_motion_with_other_markers_is_refused(fitted):
     d, _ = fitted
-    model, names = StyleModel.read(d / "expr.h5")
+    model, names = ExpressionModel.read(d / "expr.h5")
     with pytest.raises(InputError, match="its markers differ"):
         stage._check_markers(names[:-1], names, d / "take.h5", d / "expr.h5")
 

@@ -48,10 +48,20 @@ from facesynth.base.errors import FacesynthError, InputError
 from facesynth.base.limits import using
 from facesynth.base.phonemes import PAU
 from facesynth.domain import methods
+from facesynth.domain.exports import files
+from facesynth.domain.exports.animation import from_curves
+from facesynth.domain.exports.files import require_usd
 from facesynth.domain.methods import MethodSettings, core
-from facesynth.formats.audio import read_audio
+from facesynth.domain.rendering.video import render_video
+from facesynth.domain.retarget.deform import animate, bind
+from facesynth.domain.retarget.solve import solve_motion, solved_curves
+from facesynth.domain.rig.loading import arkit_to_rig, load_rig
+from facesynth.formats.audio import read_audio, write_wav
 from facesynth.formats.labels import write_textgrid
-from facesynth.model.artifacts import atomic_path, sha256_of
+from facesynth.formats.mesh import read_binding, read_mesh
+from facesynth.model.artifacts import atomic_path, published_together, sha256_of
+from facesynth.model.meshanim import MeshAnimation
+from facesynth.model.motion import Motion
 
 from .script import Line
 
@@ -153,9 +163,6 @@ def database(path: Path, method: str, settings: MethodSettings):
 
 def bound_mesh(mesh: Path, binding: Path, marker_names: list[str], settings: DeformSettings):
     """The mesh bound to the markers (Eq. 14 weights), computed once per worker process."""
-    from facesynth.domain.retarget.deform import bind
-    from facesynth.formats.mesh import read_binding, read_mesh
-
     key = ("mesh", _file_key(mesh), _file_key(binding), tuple(marker_names), settings_json(settings))
     if key not in _CACHE:
         vertices, faces = read_mesh(mesh)
@@ -168,8 +175,6 @@ def rig_of(job: Job):
     For the arkit output a user's rig gets the ARKit map by shape name, as ``openfacefx`` drives
     it (:func:`facesynth.domain.rig.loading.arkit_to_rig`)."""
     import dataclasses
-
-    from facesynth.domain.rig.loading import arkit_to_rig, load_rig
 
     files = tuple(_file_key(p) for p in (job.rig, job.rig_binding) if p is not None and p.is_file())
     key = ("rig", str(job.rig), files, "arkit" in job.outputs)
@@ -259,7 +264,6 @@ def _check_inputs(line: Line, job: Job) -> str:
     if line.constraints is not None:
         methods.get(job.method).refuse_constraints({0: 0})
     if "usd" in job.outputs:
-        from facesynth.domain.exports.files import require_usd
 
         require_usd()
     return core.emotion_name(line.emotion or "neutral", job.ingest.emotions, job.ingest.emotion_aliases,
@@ -396,14 +400,6 @@ def _rig_outputs(line: Line, job: Job, motion_path: Path, outputs: dict[str, Pat
     beside an audio file that is no WAV)."""
     import shutil
 
-    from facesynth.domain.exports import files
-    from facesynth.domain.exports.animation import from_curves
-    from facesynth.domain.rendering.video import render_video
-    from facesynth.domain.retarget.solve import solve_motion, solved_curves
-    from facesynth.formats.audio import write_wav
-    from facesynth.model.artifacts import published_together
-    from facesynth.model.motion import Motion
-
     assert job.solve is not None and job.export is not None  # prepare() fills them
     rig = rig_of(job)
     motion = Motion.read(motion_path)
@@ -447,9 +443,6 @@ def _rig_outputs(line: Line, job: Job, motion_path: Path, outputs: dict[str, Pat
 
 def _mesh_outputs(line: Line, job: Job, motion, motion_path: Path, outputs: dict[str, Path], result: LineResult) -> None:
     """The mesh animation of the job's plain mesh (Gaussian deformation, Eq. 14-15)."""
-    from facesynth.domain.retarget.deform import animate
-    from facesynth.model.meshanim import MeshAnimation
-
     if job.mesh is None or job.binding is None:
         raise InputError("the anim output needs --mesh and --binding.")
     bound = bound_mesh(job.mesh, job.binding, motion.marker_names, job.deform)

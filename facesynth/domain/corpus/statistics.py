@@ -15,6 +15,7 @@ from pathlib import Path
 import numpy as np
 
 from facesynth.domain.rig.face import Rig
+from facesynth.domain.rig.markers import mesh_lip_gap
 
 #: The mouth shapes whose correlations are compared (ARKit names).
 MOUTH_SHAPES = ("jawOpen", "mouthClose", "mouthFunnel", "mouthPucker", "mouthSmileLeft", "mouthSmileRight",
@@ -76,8 +77,6 @@ def bilabial_gaps(rig: Rig, weights: np.ndarray, phones, upper: np.ndarray, lowe
     """The inner-lip gap on the mesh (mm) at the centre of every /p b m/ of a take.
     phones : (start s, end s, label) triples; weights : (T, E) rig weights; upper, lower : the
     lip surfaces' vertices (:func:`facesynth.domain.rig.markers.lip_surfaces`)."""
-    from facesynth.domain.rig.markers import mesh_lip_gap
-
     centres = [int(round(0.5 * (a + b) * fps)) for a, b, p in phones if p in ("p", "b", "m", "em")]
     centres = [min(c, len(weights) - 1) for c in centres]
     if not centres:

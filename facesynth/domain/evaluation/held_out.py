@@ -18,7 +18,7 @@ timing and emotion, with no constraints, and compared at the capture rate with
 Methods, each given the same phone timing (and emotions): the members of the method family
 named by ``evaluate.methods`` (:mod:`facesynth.domain.methods`; ``dp`` always), each synthesized through
 the shared core (:func:`facesynth.domain.methods.core.synthesize`), scored under the row names of
-earlier reports (:data:`MEMBER_ROW`), and two per-phone variants as ablations:
+earlier reports (:func:`member_rows`), and two per-phone variants as ablations:
 
 * ``dp``: the paper's search; ``greedy``: Cao et al.'s greedy search on the same database and
   cost terms;
@@ -78,24 +78,27 @@ import numpy as np
 
 from facesynth.base.config import (
     CoarticulationSettings,
+    Config,
     EvaluateSettings,
     NormalizeSettings,
     SynthesizeSettings,
     TrajectorySettings,
 )
 from facesynth.base.errors import InputError
-from facesynth.base.opencl import use_opencl
 from facesynth.base.phonemes import PAU
 from facesynth.base.progress import progress
+from facesynth.base.registry import METHODS
 from facesynth.domain.head_motion.rigid import choose_rigid, fill_gaps, head_pose
-from facesynth.domain.methods import Method, MethodSettings, core
+from facesynth.domain.methods import Method, MethodSettings, NotEvaluable, core, names
 from facesynth.domain.methods import get as get_method
 from facesynth.domain.methods.coarticulation import DominanceModel, fit_dominance, training_sentences
 from facesynth.domain.methods.mean import mean_pose_markers
 from facesynth.domain.postprocess.concatenation import frame_ranges
+from facesynth.domain.rig.face import load_face_rig
 from facesynth.domain.search.inputs import Utterance, utterance
-from facesynth.domain.search.pairs import transition_costs
 from facesynth.domain.speech.loudness import lip_gaps
+from facesynth.formats.mesh import read_binding, read_rigid_markers
+from facesynth.formats.mocap import read_c3d
 from facesynth.model.corpus import Corpus
 from facesynth.model.motiondb import MotionDatabase
 
@@ -109,17 +112,28 @@ BILABIALS = ("p", "b", "m")
 CLOSURE_SWEEP = (0.5, 1.0, 2.0, 4.0)
 #: The percentile of the second difference at joins (join smoothness).
 JOIN_PERCENTILE = 99.0
-#: The search methods (their joins are the non-captured ones) and the references.
-SEARCHES = ("dp", "greedy")
+#: The references scored beside the methods.
 REFERENCES = ("capture", "clean")
-#: The row of the report that scores each member of the method family (the names of earlier
-#: reports), and the per-phone ablation rows each member brings.
-MEMBER_ROW = {"dp": "dp", "greedy": "greedy", "mean": "baseline_emotion", "coarticulation": "dominance_emotion",
-              "trajectory": "trajectory"}
-ABLATIONS = {"mean": "baseline", "coarticulation": "dominance"}
-#: Members from the simplest and fastest to the most elaborate: among tied methods the recommendation
-#: prefers the first (no fitting and a closed form; fitted, closed form; fitted, a banded solve; searches).
-SIMPLEST_FIRST = ("mean", "coarticulation", "trajectory", "greedy", "dp")
+#: The report's rows in the order of earlier reports; rows of other members follow them.
+ROW_ORDER = ("dp", "greedy", "baseline", "baseline_emotion", "dominance", "dominance_emotion", "openfacefx", "trajectory")
+
+
+def member_rows() -> dict[str, str]:
+    """The row of the report that scores each member of the method family (its registration's
+    ``report_row``: the names of earlier reports; else its name)."""
+    return {e.name: e.facts.get("report_row", e.name) for e in METHODS.entries()}
+
+
+def searches(name: str) -> bool:
+    """Whether the member searches motion nodes (its joins are the non-captured ones)."""
+    return bool(METHODS.entry(name).facts.get("searches")) if name in METHODS else False
+
+
+def simplest_first() -> tuple[str, ...]:
+    """Members from the simplest and fastest to the most elaborate (registration's ``simplicity``):
+    among tied methods the recommendation prefers the first (no fitting and a closed form; fitted,
+    closed form; fitted, a banded solve; searches)."""
+    return tuple(e.name for e in sorted(METHODS.entries(), key=lambda e: e.facts.get("simplicity", 99)))
 
 
 @dataclass
@@ -164,8 +178,6 @@ class TruthFolder:
     @classmethod
     def open(cls, folder: Path, names: list[str], normalize_settings: NormalizeSettings) -> "TruthFolder":
         """Check the folder (one sentence naming what is missing) and read its binding."""
-        from facesynth.formats.mesh import read_binding, read_rigid_markers
-
         folder = Path(folder)
         if not (folder / "groundtruth").is_dir() or not (folder / "markers.csv").exists():
             raise InputError(f"{folder}: not a corpus folder with ground truth (it needs groundtruth/ and markers.csv); "
@@ -182,8 +194,6 @@ class TruthFolder:
         """A take's clean markers (T, M, 3) float32 mm in the normalized head frame of ``reference``
         (M, 3), and the transform (R, t) from the rig's head frame (fitted on the rigid markers'
         mean position over the take against the reference: the clean head does not move)."""
-        from facesynth.formats.mocap import read_c3d
-
         path = self.folder / "groundtruth" / f"{take}.c3d"
         if not path.exists():
             raise InputError(f"{path}: no clean ground truth for take {take!r}; pass the truth folder of this corpus.")
@@ -528,9 +538,9 @@ def method_outputs(db: MotionDatabase, s: Sentence, members: dict[str, Member], 
     for name, m in members.items():
         result = core.synthesize(m.method, m.source, s.utterance, method_settings, prepared=m.prepared,
                                  source_where=source_where, where=s.take)
-        motion, row = result.motion, MEMBER_ROW[name]
+        motion, row = result.motion, member_rows()[name]
         outputs[row] = motion.markers_capture
-        if name in SEARCHES:
+        if searches(name):
             spoken = [k for k, p in enumerate(s.utterance.phones) if p != PAU]
             extra[row] = {"emotion_agreement": float(np.mean([motion.path.node_emotion[k] == s.utterance.emotions[k]
                                                               for k in spoken])),
@@ -559,7 +569,7 @@ def recommend(figures: dict[str, dict], row_of: dict[str, str] | None = None, di
     """One sentence recommending a method from the report's own bootstrap intervals.
 
     ``figures``: per row, its :data:`FIGURES` entries ({value, low, high}); ``row_of``: member ->
-    row (default :data:`MEMBER_ROW`, members absent from ``figures`` ignored). The figure is the
+    row (default :func:`member_rows`, members absent from ``figures`` ignored). The figure is the
     RMS error against the clean truth where computed, else against the noisy capture.
     ``difference(key, other_row, best_row)``: the paired bootstrap interval of ``other - best``
     on the same resamples ({value, low, high}); without it the methods' own intervals are compared.
@@ -568,8 +578,8 @@ def recommend(figures: dict[str, dict], row_of: dict[str, str] | None = None, di
     doubt: the paired interval of each other method minus it lies above 0 (or, without pairs, its
     own interval lies entirely below every other's). Otherwise the methods not told apart from it
     (a paired interval holding 0, an overlapping interval) are tied with it, and the simplest and
-    fastest of them (:data:`SIMPLEST_FIRST`) is recommended."""
-    row_of = row_of if row_of is not None else MEMBER_ROW
+    fastest of them (:func:`simplest_first`) is recommended."""
+    row_of = row_of if row_of is not None else member_rows()
     present = {m: r for m, r in row_of.items() if r in figures}
     for key in ("rms_clean_mm", "rms_mm"):
         scored = {m: figures[r][key] for m, r in present.items()
@@ -613,7 +623,7 @@ def recommend(figures: dict[str, dict], row_of: dict[str, str] | None = None, di
         return Recommendation(best, key, f"Recommended for this database: {best}, the lowest {label} "
                                          f"({cell(best)}); every other method is higher beyond {how} "
                                          f"(next: {gap(order[1])}).")
-    rank = {m: k for k, m in enumerate(SIMPLEST_FIRST)}
+    rank = {m: k for k, m in enumerate(simplest_first())}
     choice = min(tied, key=lambda m: rank.get(m, len(rank)))
     others = ", ".join(gap(m) for m in tied if m != best)
     lowest = f"{best} has the lowest {label} ({cell(best)}), but {how} does not tell it from {others}"
@@ -640,8 +650,6 @@ def evaluate(db_path: Path, corpus: Path, settings: EvaluateSettings, synth: Syn
     (with intervals); under ``"_figures"`` the table's meta (labels, skipped methods and why, the
     :class:`Recommendation` as ``recommendation``). ``trajectory``: a TrajectoryModel trained on
     ``db`` (with ``trajectory_settings``) adds the ``trajectory`` member (only with the others)."""
-    from facesynth.base.config import Config
-
     db = db or MotionDatabase.read(db_path)
     for name in tuple(settings.lip_markers) + (settings.plot_marker,):
         if name not in db.marker_names:
@@ -654,40 +662,36 @@ def evaluate(db_path: Path, corpus: Path, settings: EvaluateSettings, synth: Syn
     wanted = ("dp",) + tuple(m for m in settings.methods if m != "dp") if with_baseline else ("dp",)
     skipped = {}
     members: dict[str, Member] = {}
-    for name in MEMBER_ROW:  # the report's order
+    given = {"trajectory": trajectory}
+    for name in names():  # the report's order
         if name not in wanted:
             continue
         method = get_method(name)
-        if name == "trajectory":
-            if trajectory is None:
-                skipped["trajectory"] = "give a model trained on this database with --trajectory (facesynth train-trajectory)"
-                continue
-            if trajectory.fps != db.fps or list(trajectory.marker_names) != list(db.marker_names):
-                raise InputError("evaluate: the trajectory model's markers or capture rate are not the database's; "
-                                 "train it on this database with `facesynth train-trajectory`.")
-            members[name] = Member(method, trajectory)
-        elif name == "coarticulation":
-            members[name] = Member(method, method.fit(db, method_settings, where=str(db_path))[0])
-        else:
-            if tc is None:
-                tc = transition_costs(db, synth, use_opencl(synth.use_opencl))
-            members[name] = Member(method, db, tc if name in SEARCHES else None)
+        try:
+            source = method.evaluation_source(db, method_settings, given, str(db_path))
+        except NotEvaluable as reason:
+            skipped[name] = str(reason)
+            continue
+        shared = tc if tc is not None and searches(name) else None  # the caller's transition costs, for both searches
+        members[name] = Member(method, source, shared if shared is not None else method.prepare(source, method_settings))
     ablations: dict[str, DominanceModel | None] = {}
-    if "mean" in members:
-        ablations["baseline"] = None
-    if "coarticulation" in members:
-        ablations["dominance"] = fit_dominance(training_sentences(db, by_emotion=False), db.fps, settings.dominance_iterations)
+    for name in members:
+        ablation = METHODS.entry(name).facts.get("ablation")
+        if ablation == "baseline":
+            ablations["baseline"] = None
+        elif ablation == "dominance":
+            ablations["dominance"] = fit_dominance(training_sentences(db, by_emotion=False), db.fps,
+                                                   settings.dominance_iterations)
     rig = vertices = None
     if with_baseline:
         missing = "it needs the clean truth folder (--truth), which holds the rig's marker binding" if not with_clean else openfacefx_missing()
         if missing is None:
-            from facesynth.domain.rig.face import load_face_rig
 
             rig, vertices = load_face_rig(), folder.vertices(db.marker_names)
         else:
             skipped["openfacefx"] = missing
-    rows = [MEMBER_ROW[m] for m in members]
-    order = ["dp", "greedy", "baseline", "baseline_emotion", "dominance", "dominance_emotion", "openfacefx", "trajectory"]
+    rows = [member_rows()[m] for m in members]
+    order = list(ROW_ORDER) + [r for r in rows if r not in ROW_ORDER]
     present = set(rows) | set(ablations) | ({"openfacefx"} if rig is not None else set())
     references = (REFERENCES if with_clean else ("capture",)) if with_baseline else ()
     per_method: dict[str, list[dict]] = {m: [] for m in [r for r in order if r in present] + list(references)}
@@ -711,7 +715,7 @@ def evaluate(db_path: Path, corpus: Path, settings: EvaluateSettings, synth: Syn
                 n = m["frames"]
                 if with_clean:
                     m.update(clean_metrics(markers, s.clean, s.utterance, db.fps, db.marker_names, settings))
-                joins = extra[method]["joins"] if method in SEARCHES else boundaries
+                joins = extra[method]["joins"] if "joins" in extra.get(method, {}) else boundaries
                 m["_d2"] = second_differences(markers[:n], joins)
                 m["_d2_interior"] = interior_second_differences(markers[:n], joins)
                 asked = frame_emotions(s.utterance, db.fps, n)
@@ -737,7 +741,7 @@ def evaluate(db_path: Path, corpus: Path, settings: EvaluateSettings, synth: Syn
             return paired_difference(stat(per_method[other]), stat(per_method[best]), len(sentences), index)
 
         choice = recommend({r: metrics[r]["figures"] for r in metrics if "figures" in metrics[r]},
-                           {m: MEMBER_ROW[m] for m in members}, difference)
+                           {m: member_rows()[m] for m in members}, difference)
         metrics["_figures"] = {"labels": {key: label for key, (label, _, _, _) in FIGURES.items()},
                                "lower_is_better": {key: lower for key, (_, _, _, lower) in FIGURES.items()},
                                "clean_truth": with_clean, "skipped": skipped,

@@ -11,9 +11,12 @@ from pathlib import Path
 import numpy as np
 
 from facesynth.base.errors import InputError
-from facesynth.domain.rig.face import BUILTIN_RIG_NAME, Rig, builtin_rig_sha256, load_face_rig
+from facesynth.domain.rig.face import BUILTIN_RIG_NAME, Rig, builtin_rig_sha256, gaze_from_rig_weights, load_face_rig
+from facesynth.formats.mesh import read_mesh
 from facesynth.model.artifacts import PRODUCERS, artifact_kind
 from facesynth.model.curves import RigCurves
+from facesynth.model.meshanim import MeshAnimation
+from facesynth.model.motion import Motion
 from facesynth.model.provenance import FrameProvenance, PhoneSegment
 
 #: Artifact kinds ``facesynth export`` and ``facesynth player`` read.
@@ -148,14 +151,12 @@ def load(path: Path, motion: Path | None = None) -> Exportable:
         raise InputError(f"{path}: is {found}; export reads a 'motion', 'meshanim' or 'curves' "
                          "artifact (the output of facesynth synthesize, deform or solve, among others).")
     if kind == "motion":
-        from facesynth.model.motion import Motion
 
         m = Motion.read(path)
         out = Exportable("motion", path, m.fps, len(m.markers), markers=m.markers, marker_names=list(m.marker_names),
                          head_rotation=m.head_rotation, head_translation=m.head_translation)
         return _labelled(out, m.frame_provenance(path))
     if kind == "meshanim":
-        from facesynth.model.meshanim import MeshAnimation
 
         a = MeshAnimation.read(path)
         if a.vertices.shape[1] != len(a.rest):
@@ -171,7 +172,6 @@ def load(path: Path, motion: Path | None = None) -> Exportable:
                              "this version exports; solve the motion again on the built-in rig (`facesynth solve`).")
         out = from_curves(c, load_face_rig(), path)
     if motion is not None:
-        from facesynth.model.motion import Motion
 
         if artifact_kind(Path(motion)) != "motion":
             raise InputError(f"{motion}: is not a motion artifact; pass the output of {PRODUCERS['motion']}.")
@@ -187,8 +187,6 @@ def from_curves(c: RigCurves, rig: Rig, path: Path) -> Exportable:
     order, the head motion, the gaze from the rig's ``eyeLook*`` shapes, emotion and provenance
     (the phones of the timeline are added by :func:`load`). Curves lacking one of the rig's
     shapes are refused."""
-    from facesynth.domain.rig.face import gaze_from_rig_weights
-
     if list(c.shape_names) != list(rig.shape_names):
         index = {n: i for i, n in enumerate(c.shape_names)}
         missing = [n for n in rig.shape_names if n not in index]
@@ -206,8 +204,6 @@ def from_curves(c: RigCurves, rig: Rig, path: Path) -> Exportable:
 def use_mesh(anim: Exportable, mesh: Path) -> Exportable:
     """``anim`` with the faces of the mesh file ``mesh`` (e.g. one with the same vertices in another
     tool's layout); its vertex count must match the animation's."""
-    from facesynth.formats.mesh import read_mesh
-
     vertices, faces = read_mesh(Path(mesh))
     if not anim.has_mesh:
         raise InputError(f"{anim.path}: marker motion has no mesh to replace; run `facesynth deform` with {mesh} first.")

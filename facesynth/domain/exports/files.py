@@ -11,9 +11,11 @@ import shutil
 from pathlib import Path
 
 from facesynth.base.errors import InputError
+from facesynth.formats import gltf
 from facesynth.formats import livelink_face as livelink
 from facesynth.model.artifacts import publish, temporary_path
 
+from . import usd
 from .animation import Exportable
 
 
@@ -24,8 +26,6 @@ def audio_path(output: Path) -> Path:
 
 def require_usd(fmt: str = "usd") -> None:
     """Refuse, in one sentence saying what to install, a USD output without Pixar's usd-core."""
-    from . import usd
-
     if not usd.available():
         raise InputError(f"{fmt} export needs Pixar's usd-core, which is not installed; "
                          "run `pip install 'facesynth[usd]'` (or `pip install usd-core`).")
@@ -45,8 +45,6 @@ def write_gltf(anim: Exportable, path: Path, audio_name: str | None, head_motion
     """``anim``'s rig mesh with its morph targets and one weights animation as glTF (``binary``:
     GLB), the provenance in ``extras``; ``audio_name``: the file name of the WAV beside it (the
     caller copies it there), or None; ``name``: the scene's name (default the file's stem)."""
-    from facesynth.formats import gltf
-
     doc, data = gltf.build(anim.rest, anim.faces, anim.rig.deltas, anim.rig.shape_names, anim.times, anim.weights,
                            anim.head_rotation if head_motion else None,
                            anim.head_translation if head_motion else None,
@@ -57,8 +55,6 @@ def write_gltf(anim: Exportable, path: Path, audio_name: str | None, head_motion
 def write_usd(anim: Exportable, path: Path, head_motion: bool = False) -> None:
     """``anim`` as USD (the format by ``path``'s extension): UsdSkel blendshapes driven by a
     SkelAnimation for rig weights, else time-sampled points; the provenance in metadata."""
-    from . import usd
-
     head = (anim.head_rotation, anim.head_translation) if head_motion else (None, None)
     if anim.weights is not None:
         usd.write_blendshapes(path, anim.rest, anim.faces, anim.rig.deltas, anim.rig.shape_names, anim.weights,

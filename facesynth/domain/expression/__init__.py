@@ -1,6 +1,8 @@
-"""The style model: the bilinear style/content model of Chuang & Bregler (2005) §3, which
-separates how a face speaks (content) from the emotion it speaks in (style).
+"""The expression model: the bilinear style/content model of Chuang & Bregler (2005) §3, which
+separates how a face speaks (content) from the emotion it speaks in (style, the paper's word).
 
-:mod:`.bilinear` holds the math; its artifact (kind ``expression``, written by ``facesynth
-expression fit``) is read and written by :class:`facesynth.model.expression.StyleModel`.
+One name for one concept: the command (``facesynth expression``), its artifact kind and
+settings section (``expression``), this package and its artifact's object
+(:class:`facesynth.model.expression.ExpressionModel`) all say *expression*. :mod:`.bilinear`
+holds the maths (:class:`~.bilinear.BilinearModel`, the fitted factors themselves).
 """

@@ -11,7 +11,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.interpolate import CubicSpline
 
 
 def fill_gaps(track: np.ndarray, max_gap: int) -> tuple[np.ndarray, list[tuple[int, int]]]:
@@ -22,6 +21,8 @@ def fill_gaps(track: np.ndarray, max_gap: int) -> tuple[np.ndarray, list[tuple[i
     the ends by holding the nearest sample. Returns the filled track and the (start, length)
     of runs left unfilled.
     """
+    from scipy.interpolate import CubicSpline  # deferred: only gap filling needs scipy.interpolate
+
     missing = np.isnan(track).any(axis=1)
     if not missing.any():
         return track, []

@@ -59,8 +59,12 @@ from facesynth.base.errors import InputError
 from facesynth.base.phonemes import PAU
 from facesynth.domain.methods import trajectory as trajectory_method
 from facesynth.domain.postprocess.concatenation import downsample_sources
+from facesynth.domain.retarget.solve import solve_curves
+from facesynth.domain.rig.face import load_face_rig
+from facesynth.domain.rig.loading import builtin_rig, marker_map
 from facesynth.domain.search.costs import step_costs
 from facesynth.domain.search.dp import dp_numpy
+from facesynth.domain.search.greedy import Greedy, anime_graph, cluster_graph, motion_features
 from facesynth.domain.search.inputs import Utterance
 from facesynth.domain.search.pairs import transition_costs
 from facesynth.domain.search.synthesis import render_path
@@ -95,8 +99,6 @@ class LiveModel:
 
     def __init__(self, source, synth: SynthesizeSettings, stream: StreamSettings, solve: SolveSettings,
                  trajectory: TrajectorySettings | None = None):
-        from facesynth.domain.rig.face import load_face_rig
-        from facesynth.domain.rig.loading import builtin_rig, marker_map
 
         self.stream = stream
         self.solve_settings = solve
@@ -129,7 +131,6 @@ class LiveModel:
             self.dense = np.ascontiguousarray(self.tc.dense(), np.float32)
             self.emotions = sorted(set(db.nodes.emotion))
             if stream.method == "greedy":
-                from facesynth.domain.search.greedy import Greedy, anime_graph, cluster_graph, motion_features
 
                 if self.synth.greedy_clusters > 0:
                     features = motion_features(db.coeffs, db.nodes.frame_start, db.nodes.frame_count)
@@ -157,8 +158,6 @@ class LiveModel:
         """(T, E) rig weights for markers (T, M, 3) mm. ``previous`` (the last sent frame's markers
         (M, 3) and rig weights (E,)) is solved with them for continuity and dropped; its weights
         start the iterations."""
-        from facesynth.domain.retarget.solve import solve_curves
-
         frames = markers if previous is None else np.concatenate([previous[0][None], markers])
         disp = self.marker_map.displacements(frames, self.reference)
         w, _, _ = solve_curves(disp, self.basis, smooth=self.solve_settings.smooth, ridge=self.solve_settings.ridge,

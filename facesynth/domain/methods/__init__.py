@@ -23,31 +23,28 @@ name                      source        what it does
                                         interpolated linearly
 ========================  ============  ============================================================
 
-Adding a member: a subclass of :class:`Method` in its own module here, and its name in
-:data:`MEMBERS`. The shared steps around a method (reading the utterance, emotion names, the
-memory check) are :mod:`facesynth.domain.methods.core`.
+Adding a member: a subclass of :class:`Method` in its own module, and one registration line
+below (:data:`facesynth.base.registry.METHODS`); ``synthesize --method``, ``evaluate``, ``batch``,
+``tune``, ``fit-method`` (a fitted member), ``--set`` and the docs' table then offer it. The
+shared steps around a method (reading the utterance, emotion names, the memory check) are
+:mod:`facesynth.domain.methods.core`.
 """
 
 from __future__ import annotations
 
-import importlib
 from abc import ABC, abstractmethod
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, ClassVar
 
-from facesynth.base.config import CoarticulationSettings, SynthesizeSettings, TrajectorySettings
+from facesynth.base.config import CoarticulationSettings, Config, SynthesizeSettings, TrajectorySettings
 from facesynth.base.errors import UsageError
+from facesynth.base.registry import METHODS
 
-#: name -> "module:class" of every member, in the order reports list them (lazy, so that naming
-#: a method imports only its own code).
-MEMBERS: dict[str, str] = {
-    "dp": "facesynth.domain.methods.search:DpMethod",
-    "greedy": "facesynth.domain.methods.search:GreedyMethod",
-    "trajectory": "facesynth.domain.methods.trajectory:TrajectoryMethod",
-    "coarticulation": "facesynth.domain.methods.coarticulation:CoarticulationMethod",
-    "mean": "facesynth.domain.methods.mean:MeanMethod",
-}
+
+class NotEvaluable(Exception):
+    """A member ``evaluate`` cannot score on this database; the message says what to give."""
 
 
 @dataclass(frozen=True)
@@ -70,8 +67,6 @@ class MethodSettings:
     def packaged(cls, **given) -> "MethodSettings":
         """The packaged defaults, with the sections ``given`` (``synthesize=...``) instead (for
         library callers and commands that read only some sections)."""
-        from facesynth.base.config import Config
-
         defaults = Config.load()
         return cls(**{name: given.get(name) or defaults.settings(name)
                       for name in ("synthesize", "trajectory", "coarticulation")})
@@ -97,22 +92,41 @@ class Method(ABC):
     tune its weights."""
 
     name: ClassVar[str]
-    summary: ClassVar[str]
-    source_kind: ClassVar[str] = "motiondb"
-    fitted: ClassVar[bool] = False
     takes_constraints: ClassVar[bool] = False
     tunable: ClassVar[bool] = False
 
+    @property
+    def summary(self) -> str:
+        """One line on what the member does (its registration's)."""
+        return METHODS.entry(self.name).summary
+
+    @property
+    def fitted(self) -> bool:
+        """Whether the member's source is a model made by ``facesynth fit-method``."""
+        return bool(METHODS.entry(self.name).facts.get("fitted", False))
+
+    @property
+    def source_kind(self) -> str:
+        """The artifact kind the member reads: ``motiondb``, or its fitted model's kind."""
+        return str(METHODS.entry(self.name).facts.get("source_kind", "motiondb"))
+
+    @abstractmethod
     def read(self, path: Path):
         """The method's source artifact at ``path`` (a motion database, or its fitted model)."""
-        from facesynth.model.motiondb import MotionDatabase
-
-        return MotionDatabase.read(path)
 
     def fit(self, db, settings: MethodSettings, *, keyshapes=None, where: str = "the database"):
         """A model of ``db``'s training takes (fitted members); returns (model, summary dict)."""
         raise UsageError(f"the {self.name} method reads the motion database itself and has nothing to fit; "
-                         f"fit one of {', '.join(n for n in MEMBERS if get(n).fitted)}.")
+                         f"fit one of {', '.join(fitted_names())}.")
+
+    def evaluation_source(self, db, settings: MethodSettings, given: Mapping[str, Any], where: str):
+        """The source ``facesynth evaluate`` scores this member from on ``db``: the database itself,
+        or for a fitted member the model given for it (``given[name]``) or else one fitted now on
+        ``db``'s training takes. :class:`NotEvaluable` (with the reason) when it cannot be scored."""
+        if not self.fitted:
+            return db
+        model = given.get(self.name)
+        return model if model is not None else self.fit(db, settings, where=where)[0]
 
     def fit_settings(self, settings: MethodSettings):
         """The settings section a fitted model records as its ``config`` (fitted members)."""
@@ -149,12 +163,38 @@ class Method(ABC):
 
 def names() -> tuple[str, ...]:
     """Every member's name, in report order."""
-    return tuple(MEMBERS)
+    return METHODS.names()
+
+
+def fitted_names() -> tuple[str, ...]:
+    """The members whose source is a model made by ``facesynth fit-method``."""
+    return tuple(e.name for e in METHODS.entries() if e.facts.get("fitted"))
 
 
 def get(name: str) -> Method:
     """The member called ``name``; a usage error naming the members for another name."""
-    if name not in MEMBERS:
-        raise UsageError(f"unknown method {name!r}; use one of {', '.join(MEMBERS)}.")
-    module, cls = MEMBERS[name].split(":")
-    return getattr(importlib.import_module(module), cls)()
+    return METHODS.get(name)()
+
+
+# The members, in the order reports list them: name, "module:class", summary, and what the
+# commands need to know before importing them: ``fitted`` and its model's ``source_kind`` (made
+# by ``facesynth fit-method``), ``streams`` (``facesynth stream`` runs it live), and for
+# ``evaluate``: ``searches`` (a path of motion nodes, whose joins are scored), ``report_row`` (its
+# row, where earlier reports named it otherwise), ``ablation`` (the per-phone variant scored
+# beside it) and ``simplicity`` (the recommendation prefers the lowest among tied members).
+METHODS.register("dp", "facesynth.domain.methods.search:DpMethod",
+                 "the paper's constrained DP search of the motion database (Algorithm 1, Eq. 4-10)",
+                 streams=True, searches=True, simplicity=4)
+METHODS.register("greedy", "facesynth.domain.methods.search:GreedyMethod",
+                 "Cao et al.'s greedy search of the same database with the same costs",
+                 streams=True, searches=True, simplicity=3)
+METHODS.register("trajectory", "facesynth.domain.methods.trajectory:TrajectoryMethod",
+                 "Huang et al.'s smooth key-shape path through per-(phone, emotion) Gaussians (Eq. 6-7)",
+                 fitted=True, source_kind="trajectory", streams=True, simplicity=2)
+METHODS.register("coarticulation", "facesynth.domain.methods.coarticulation:CoarticulationMethod",
+                 "a Cohen-Massaro dominance model per (phone, emotion), fitted on the training takes",
+                 fitted=True, source_kind="coarticulation", report_row="dominance_emotion", ablation="dominance",
+                 simplicity=1)
+METHODS.register("mean", "facesynth.domain.methods.mean:MeanMethod",
+                 "the per-(phone, emotion) mean pose at phone centres, interpolated linearly",
+                 report_row="baseline_emotion", ablation="baseline", simplicity=0)

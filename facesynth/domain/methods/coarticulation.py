@@ -30,9 +30,13 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import minimize
 
+from facesynth.base.errors import InputError
 from facesynth.base.phonemes import PAU
+from facesynth.domain.postprocess.concatenation import frame_ranges
+from facesynth.model.coarticulation import CoarticulationModel
 
 from . import Method, MethodSettings, Synthesis
+from .core import frame_motion
 
 #: Ridge on the targets, relative to the mean diagonal of the design's Gram matrix at the
 #: start: without it a type with a tiny magnitude gets a huge target that only fits the
@@ -225,12 +229,8 @@ class CoarticulationMethod(Method):
     """The fitted Cohen-Massaro model per (phone, emotion); source: a ``coarticulation`` artifact."""
 
     name = "coarticulation"
-    summary = "a Cohen-Massaro dominance model per (phone, emotion), fitted on the training takes"
-    source_kind = "coarticulation"
-    fitted = True
 
     def read(self, path):
-        from facesynth.model.coarticulation import CoarticulationModel
 
         return CoarticulationModel.read(path)
 
@@ -240,11 +240,8 @@ class CoarticulationMethod(Method):
     def fit(self, db, settings: MethodSettings, *, keyshapes=None, where: str = "the database"):
         """The model of ``db``'s training takes (``coarticulation.iterations`` L-BFGS-B iterations);
         returns (CoarticulationModel, summary: ``labels``, ``fit_rms_mm``)."""
-        from facesynth.model.coarticulation import CoarticulationModel
-
         sentences = training_sentences(db, by_emotion=True)
         if not sentences:
-            from facesynth.base.errors import InputError
 
             raise InputError(f"{where}: no take has split 'train'; the coarticulation model is fitted on the "
                              "training takes.")
@@ -260,10 +257,6 @@ class CoarticulationMethod(Method):
         """The model's poses at the capture rate (Eq. 11 through its PCA model), down-sampled to
         ``synthesize.output_fps``; the summary's ``unseen`` names the (phone, emotion) pairs the fit never
         saw ('/aa/ in sad', or '/zh/' for a phone it never saw in any emotion) and what covers each."""
-        from facesynth.domain.postprocess.concatenation import frame_ranges
-
-        from .core import frame_motion
-
         self.refuse_constraints(constraints)
         model = DominanceModel(tuple(source.labels), source.targets, source.magnitude, source.rate)
         labels = emotion_labels(list(utt.phones), list(utt.emotions))

@@ -32,13 +32,26 @@ import numpy as np
 from facesynth.base.config import AlignSettings, IngestSettings, settings_json
 from facesynth.base.errors import InputError, UsageError
 from facesynth.base.limits import require_memory
+from facesynth.domain.postprocess.concatenation import downsample, frame_ranges
 from facesynth.domain.search.inputs import Utterance, apply_emotions, emotion_name, read_constraints, utterance
 from facesynth.domain.search.inputs import read_utterance as read_phone_file
+from facesynth.domain.speech import loudness
 from facesynth.domain.speech.alignment import Alignment
+from facesynth.domain.speech.recognition import align_or_recognize
+from facesynth.formats.audio import read_audio
+from facesynth.model.motion import Motion, Provenance, SearchPath
+from facesynth.model.motiondb import MotionDatabase
 
 from . import Method, MethodSettings, Synthesis
 
 log = logging.getLogger(__name__)
+
+
+class DatabaseMethod(Method):
+    """A member that reads the motion database itself (nothing to fit)."""
+
+    def read(self, path: Path) -> MotionDatabase:
+        return MotionDatabase.read(path)
 
 __all__ = ["UtteranceInput", "emotion_name", "read_utterance", "constraints_for", "synthesize", "recorded_config",
            "check_memory", "frame_motion"]
@@ -77,7 +90,6 @@ def read_utterance(ingest: IngestSettings, *, phones_path: Path | None = None, a
     data: np.ndarray | None = None
     rate = 0
     if audio is not None:
-        from facesynth.formats.audio import read_audio
 
         data, rate = samples if samples is not None else read_audio(audio)
     if phones_path is not None:
@@ -89,7 +101,6 @@ def read_utterance(ingest: IngestSettings, *, phones_path: Path | None = None, a
                                  f"({audio_s:.2f} s, ingest.max_audio_mismatch_s = {ingest.max_audio_mismatch_s:g} s "
                                  "allowed); give the phone timing of this audio.")
     elif audio is not None:
-        from facesynth.domain.speech.recognition import align_or_recognize
 
         if align is None:
             raise TypeError("read_utterance: aligning audio needs the [align] settings")
@@ -135,7 +146,6 @@ def synthesize(method: Method, source, utt: Utterance, settings: MethodSettings,
     check_memory(method, source, utt, settings, source_where)
     result = method.synthesize(source, utt, settings, constraints, prepared=prepared, where=where)
     if audio is not None and settings.synthesize.loudness_weight > 0:
-        from facesynth.domain.speech import loudness
 
         result.motion, warning = loudness.follow(result.motion, *audio, utt.starts, utt.ends, list(utt.phones),
                                                  settings.synthesize)
@@ -176,9 +186,6 @@ def frame_motion(name: str, utt: Utterance, markers_capture: np.ndarray, coeffic
     source frame -1 (no node, no source frame), ``node_phone`` / ``node_emotion`` what the method
     used for each phone, the cost terms zero; ``provenance.step`` the input phone of each frame.
     The head does not move (identity rotation, zero translation)."""
-    from facesynth.domain.postprocess.concatenation import downsample, frame_ranges
-    from facesynth.model.motion import Motion, Provenance, SearchPath
-
     ranges = frame_ranges(utt.starts, utt.ends, capture_fps)
     n_capture = len(markers_capture)
     step = np.zeros(n_capture, np.int64)

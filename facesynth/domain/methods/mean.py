@@ -12,8 +12,10 @@ import numpy as np
 
 from facesynth.base.phonemes import PAU, viseme
 from facesynth.domain.postprocess.concatenation import frame_ranges
+from facesynth.domain.search.synthesis import unseen_phones
 
-from . import Method, MethodSettings, Synthesis
+from . import MethodSettings, Synthesis
+from .core import DatabaseMethod, frame_motion
 
 
 def mean_pose_coefficients(db, utt, by_emotion: bool = True) -> np.ndarray:
@@ -51,20 +53,15 @@ def mean_pose_markers(db, utt, by_emotion: bool = True) -> np.ndarray:
     return db.model.reconstruct(mean_pose_coefficients(db, utt, by_emotion))
 
 
-class MeanMethod(Method):
+class MeanMethod(DatabaseMethod):
     """The per-(phone, emotion) mean pose; source: the motion database."""
 
     name = "mean"
-    summary = "the per-(phone, emotion) mean pose at phone centres, interpolated linearly"
 
     def synthesize(self, source, utt, settings: MethodSettings, constraints=None, *, prepared=None,
                    where: str = "the utterance") -> Synthesis:
         """The mean poses of ``utt`` from ``source`` (a MotionDatabase); the summary's ``unseen``
         names the phones the database has no node of."""
-        from facesynth.domain.search.synthesis import unseen_phones
-
-        from .core import frame_motion
-
         self.refuse_constraints(constraints)
         coeffs = mean_pose_coefficients(source, utt, by_emotion=True)
         have = set(zip(source.nodes.phone, source.nodes.emotion))

@@ -9,10 +9,12 @@ from __future__ import annotations
 
 import dataclasses
 
+from facesynth.base.opencl import use_opencl
 from facesynth.domain.search.pairs import transition_costs
 from facesynth.domain.search.synthesis import as_motion, synthesize, unseen_phones
 
-from . import Method, MethodSettings, Synthesis
+from . import MethodSettings, Synthesis
+from .core import DatabaseMethod
 
 
 def memory_estimate(nodes: int, phones: int, dp: str = "dense", feature_bytes: int = 0) -> float:
@@ -26,7 +28,7 @@ def memory_estimate(nodes: int, phones: int, dp: str = "dense", feature_bytes: i
     return 2.0 * 4 * nodes * nodes + 12.0 * phones * nodes
 
 
-class SearchMethod(Method):
+class SearchMethod(DatabaseMethod):
     """A search of the motion database with ``search`` (``synthesize.search`` is set to it)."""
 
     search = "dp"
@@ -38,8 +40,6 @@ class SearchMethod(Method):
 
     def prepare(self, source, settings: MethodSettings):
         """The transition costs of the database for these settings (on the device the settings choose)."""
-        from facesynth.base.opencl import use_opencl
-
         s = self.settings_of(settings)
         return transition_costs(source, s, use_opencl(s.use_opencl))
 
@@ -66,7 +66,6 @@ class SearchMethod(Method):
 
 class DpMethod(SearchMethod):
     name = "dp"
-    summary = "the paper's constrained DP search of the motion database (Algorithm 1, Eq. 4-10)"
     takes_constraints = True
     tunable = True
     search = "dp"
@@ -74,6 +73,5 @@ class DpMethod(SearchMethod):
 
 class GreedyMethod(SearchMethod):
     name = "greedy"
-    summary = "Cao et al.'s greedy search of the same database with the same costs"
     tunable = True
     search = "greedy"

@@ -40,11 +40,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from facesynth.base.errors import InputError
+from facesynth.base.errors import InputError, UsageError
 from facesynth.base.phonemes import PAU, VISEME_GROUPS, viseme
-from facesynth.domain.postprocess.concatenation import frame_ranges
+from facesynth.domain.postprocess.concatenation import downsample, frame_ranges
+from facesynth.domain.retarget.solve import nnls_weights
+from facesynth.model.motion import Motion, Provenance, SearchPath
+from facesynth.model.trajectory import TrajectoryModel
 
-from . import Method, MethodSettings, Synthesis
+from . import Method, MethodSettings, NotEvaluable, Synthesis
 
 log = logging.getLogger(__name__)
 
@@ -353,9 +356,6 @@ def train_model(db, keyshapes, settings, where: str = "the database"):
 
     db : a MotionDatabase; keyshapes : a KeyShapes of the same markers; settings : a
     :class:`~facesynth.base.config.TrajectorySettings`. Returns (TrajectoryModel, Samples)."""
-    from facesynth.domain.retarget.solve import nnls_weights
-    from facesynth.model.trajectory import TrajectoryModel
-
     if list(keyshapes.marker_names) != list(db.marker_names):
         raise InputError(f"{where}: the key-shapes' markers are not the database's; choose the key-shapes from this "
                          "database with `facesynth keyshapes`.")
@@ -391,9 +391,6 @@ def synthesize_motion(model, utt, settings, output_fps: float, where: str = "the
     ``cost_emp`` and ``cost_block`` zero, ``total_cost`` Eq. 6; provenance node, take and source frame
     -1 (no source frame), ``smoothed`` False. The head does not move (identity rotation, zero
     translation): the model has no head motion. Returns (Motion, Path)."""
-    from facesynth.domain.postprocess.concatenation import downsample
-    from facesynth.model.motion import Motion, Provenance, SearchPath
-
     path = synthesize_path(model, list(utt.phones), list(utt.emotions), utt.starts, utt.ends,
                            smoothness=settings.smoothness, smoothness_fps=settings.smoothness_fps, fps=settings.fps,
                            duration_normalization=settings.duration_normalization, where=where)
@@ -430,12 +427,8 @@ class TrajectoryMethod(Method):
     key-shapes of a ``keyshapes`` artifact)."""
 
     name = "trajectory"
-    summary = "Huang et al.'s smooth key-shape path through per-(phone, emotion) Gaussians (Eq. 6-7)"
-    source_kind = "trajectory"
-    fitted = True
 
     def read(self, path):
-        from facesynth.model.trajectory import TrajectoryModel
 
         return TrajectoryModel.read(path)
 
@@ -445,12 +438,20 @@ class TrajectoryMethod(Method):
     def fit_settings(self, settings: MethodSettings):
         return settings.trajectory
 
+    def evaluation_source(self, db, settings: MethodSettings, given, where: str):
+        """The model given for this database (its fit needs key-shapes, which ``evaluate`` does not make)."""
+        model = given.get(self.name)
+        if model is None:
+            raise NotEvaluable("give a model fitted on this database with --trajectory (facesynth fit-method trajectory)")
+        if model.fps != db.fps or list(model.marker_names) != list(db.marker_names):
+            raise InputError("evaluate: the trajectory model's markers or capture rate are not the database's; "
+                             "fit it on this database with `facesynth fit-method trajectory`.")
+        return model
+
     def fit(self, db, settings: MethodSettings, *, keyshapes=None, where: str = "the database"):
         """The model of ``db``'s training takes over the joint key-shapes of ``keyshapes`` (a
         KeyShapes, needed); returns (TrajectoryModel, summary: ``keyshapes``, ``phones``, ``pairs``,
         ``samples``, ``fit_rms_mm``)."""
-        from facesynth.base.errors import UsageError
-
         if keyshapes is None:
             raise UsageError("the trajectory method is fitted over key-shapes; give them with --keyshapes "
                              "(facesynth keyshapes).")

@@ -18,13 +18,14 @@
 from __future__ import annotations
 
 import numpy as np
-from scipy.signal import butter, sosfiltfilt, welch
 
 from .concatenation import time_warp
 
 
 def learned_cutoffs(coeffs: np.ndarray, segments: list[slice], fps: float, energy: float = 0.99) -> np.ndarray:
     """(K,) cut-off frequencies (Hz) keeping ``energy`` of each component's variance."""
+    from scipy.signal import welch  # deferred: scipy.signal costs synthesize's start-up 0.3 s
+
     k = coeffs.shape[1]
     total, freqs = None, None
     for sl in segments:
@@ -42,6 +43,8 @@ def learned_cutoffs(coeffs: np.ndarray, segments: list[slice], fps: float, energ
 def lowpass(frames: np.ndarray, cutoffs: np.ndarray, fps: float, order: int = 4) -> np.ndarray:
     """Zero-phase low-pass of each column at its own cut-off (Hz); columns whose cut-off is
     near the Nyquist frequency are left alone."""
+    from scipy.signal import butter, sosfiltfilt  # deferred: scipy.signal costs synthesize's start-up 0.3 s
+
     out = frames.astype(np.float64).copy()
     if len(out) < 3 * (2 * order + 1):
         return out

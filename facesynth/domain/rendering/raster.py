@@ -22,6 +22,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from facesynth.base.opencl import context, kernel, queue, use_opencl
+
 from .parts import COS_IRIS, COS_PUPIL
 
 INT32_MAX = np.iinfo(np.int32).max
@@ -244,8 +246,6 @@ class OpenCLRasterizer:
                  wide_atomics: bool | None = None):
         import pyopencl as cl
 
-        from facesynth.base.opencl import context, kernel, queue
-
         self.ctx, self.q = context(), queue()
         self.width, self.height, self.samples = width, height, samples
         self.n_faces = len(faces)
@@ -314,7 +314,5 @@ class OpenCLRasterizer:
 def rasterizer(faces: np.ndarray, albedo: np.ndarray, eye: np.ndarray, width: int, height: int, samples: int = 2,
                wanted: bool = True):
     """The OpenCL rasterizer when a device builds (and ``wanted``), else the NumPy one."""
-    from facesynth.base.opencl import use_opencl
-
     cls = OpenCLRasterizer if use_opencl(wanted) else NumpyRasterizer
     return cls(faces, albedo, eye, width, height, samples)

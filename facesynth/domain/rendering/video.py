@@ -30,8 +30,10 @@ from facesynth.base.config import RenderSettings
 from facesynth.base.errors import InputError, UsageError
 from facesynth.base.progress import progress
 from facesynth.domain.rig.face import Rig
+from facesynth.domain.rig.loading import load_rig, pose_rig
 from facesynth.formats.audio import read_audio, resample, write_wav
 from facesynth.model.artifacts import artifact_kind, atomic_path
+from facesynth.model.curves import RigCurves
 from facesynth.model.meshanim import MeshAnimation
 
 from .camera import Camera
@@ -163,8 +165,6 @@ class AnimationReader:
             if self.rig_path is not None:
                 raise UsageError(f"--rig is for rig curves; {path} is not curves (a mesh animation carries its mesh).")
             return MeshAnimation.read(path)
-        from facesynth.domain.rig.loading import load_rig, pose_rig
-        from facesynth.model.curves import RigCurves
 
         if self._rig is None:
             self._rig = load_rig(self.rig_path, self.binding, need_binding=False)

@@ -31,6 +31,7 @@ from scipy.sparse.csgraph import dijkstra
 from facesynth.base.config import DeformSettings
 from facesynth.base.errors import InputError
 from facesynth.domain.head_motion.rigid import similarity_fit
+from facesynth.domain.head_motion.rotations import apply
 
 
 def edge_graph(vertices: np.ndarray, faces: np.ndarray) -> sparse.csr_matrix:
@@ -116,8 +117,6 @@ def animate(bound: BoundMesh, markers: np.ndarray, marker_names: list[str], refe
     """Vertices (T, V, 3) float32 for marker frames (T, M, 3) mm, optionally moved by a head
     motion (rotations (T, 3, 3), translations (T, 3) mm in the marker frame). Also returns
     the fit report."""
-    from facesynth.domain.head_motion.rotations import apply
-
     cols = np.array([marker_names.index(m) for m in bound.markers])
     s, r, offset, residual = similarity_fit(reference[cols].astype(np.float64), bound.rest[bound.vertex_of])
     motion = (markers[:, cols] - reference[cols]) @ (s * r).T  # (T, K, 3) in mesh units

@@ -44,6 +44,9 @@ import numpy as np
 from scipy import sparse
 from scipy.sparse.linalg import splu
 
+from facesynth.base.opencl import aligned_empty, context, kernel, queue
+from facesynth.base.opencl import use_opencl as device_ok
+
 
 def _frames(vertices: np.ndarray, faces: np.ndarray) -> np.ndarray:
     """(..., F, 3, 3) columns [e1, e2, n / sqrt|n|] of each triangle (Sumner's fourth vertex)."""
@@ -245,11 +248,9 @@ class GradientBlender:
         # precision: the solves are for the small departures from the linear blend (see _blend).
         self.factor = splu(normal.astype(np.float32), permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
                            options={"SymmetricMode": True})
-        from facesynth.base.opencl import use_opencl as device_ok
 
         self.use_opencl = bool(use_opencl) and n_f > 0 and device_ok(use_opencl)
         if self.use_opencl:  # one-time too: the kernels' build and the factors on the device
-            from facesynth.base.opencl import kernel
 
             for name in ("residual_edges", "gather_edges", "lu_solve"):
                 kernel("gradient_rhs", name)
@@ -329,8 +330,6 @@ class GradientBlender:
         rest edges, triangles and vertex-to-triangle lists, the LU factors and permutations."""
         import pyopencl as cl
 
-        from facesynth.base.opencl import context
-
         ctx = context()
         if getattr(self, "_cl_static", (None,))[0] is not ctx:
             lower = sparse.tril(self.factor.L, -1, format="csr")
@@ -349,8 +348,6 @@ class GradientBlender:
         """Host arrays and device buffers of one group of up to ``n_t`` frames (padded to a multiple
         of 16), made once per clip: page-aligned host arrays the device uses in place."""
         import pyopencl as cl
-
-        from facesynth.base.opencl import aligned_empty, context
 
         ctx, mf = context(), cl.mem_flags
         n_p, n_v, n_f = -(-n_t // 16) * 16, len(self.rest), len(self.faces)
@@ -371,8 +368,6 @@ class GradientBlender:
         ``out`` (T, V, 3). Frames are padded with zero weights to a multiple of 16 (the kernels take 8
         or 16 at a time)."""
         import pyopencl as cl
-
-        from facesynth.base.opencl import kernel, queue
 
         q = queue()
         n_t, n_v, n_f = a_t.shape[1], len(self.rest), len(self.faces)

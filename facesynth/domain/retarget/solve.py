@@ -23,8 +23,9 @@ import functools
 from typing import TYPE_CHECKING
 
 import numpy as np
-from scipy.linalg import solve_triangular
-from scipy.optimize import lsq_linear, nnls
+
+from facesynth.domain.rig.loading import marker_map
+from facesynth.model.curves import RigCurves
 
 if TYPE_CHECKING:
     from facesynth.base.config import SolveSettings
@@ -64,6 +65,8 @@ def nnls_weights(frames: np.ndarray, shapes: np.ndarray) -> tuple[np.ndarray, np
 
 
 def _nnls_weights(x: np.ndarray, b: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    from scipy.optimize import nnls  # deferred: scipy.optimize costs synthesize's start-up
+
     gram = b @ b.T
     gram[np.diag_indices_from(gram)] += 1e-9 * max(np.trace(gram), 1e-12) / len(gram)
     holes = ~np.isfinite(x)
@@ -171,6 +174,9 @@ def nnls_gram(gram: np.ndarray, h: np.ndarray, max_iter: int | None = None, stra
 
 def _finish(g: np.ndarray, h: np.ndarray, w: np.ndarray, rows: np.ndarray) -> None:
     """``w[rows]`` by scipy's NNLS, one frame at a time, on the Cholesky factor of G (K x K)."""
+    from scipy.linalg import solve_triangular  # deferred: scipy.linalg costs synthesize's start-up
+    from scipy.optimize import nnls
+
     if len(rows):
         upper = np.linalg.cholesky(g).T
         for i in rows:
@@ -185,6 +191,8 @@ def fit_rig_weights(targets: np.ndarray, basis: np.ndarray, ridge: float = 0.0) 
     basis row (a tie-break between shapes that move the fitted vertices alike).
     Returns (K, E) weights and the (K,) RMS residual per vertex.
     """
+    from scipy.optimize import lsq_linear  # deferred: scipy.optimize costs synthesize's start-up
+
     a = np.asarray(basis, np.float64).T  # (D, E)
     lam = ridge * float((a**2).sum(0).mean())
     if lam > 0:
@@ -275,8 +283,6 @@ def solve_motion(motion: "Motion", rig: "Rig", settings: "SolveSettings", where:
     (:func:`facesynth.domain.rig.loading.marker_map`); the solve fits displacements from the reference
     (:func:`solve_curves` with ``settings``' smooth, ridge, iterations and tolerance). ``where``
     names the motion in errors."""
-    from facesynth.domain.rig.loading import marker_map
-
     mmap = marker_map(rig, motion.marker_names, motion.reference, where)
     disp = mmap.displacements(motion.markers, motion.reference)
     basis = rig.deltas[:, mmap.vertices]
@@ -289,8 +295,6 @@ def solved_curves(motion: "Motion", rig: "Rig", weights: np.ndarray, residual: n
     """The ``curves`` artifact of a solve of ``motion`` on ``rig`` (:func:`solve_motion`'s
     weights (T, E) and residual (T,)): ``source = "solve"``, at the motion's rate, with its head
     motion and ``provenance`` (where each frame came from)."""
-    from facesynth.model.curves import RigCurves
-
     return RigCurves(weights, motion.fps, list(rig.shape_names), rig.name, rig.sha256, "solve", motion.head_rotation,
                      motion.head_translation, residual=residual,
                      method="bounded least squares with temporal smoothness", provenance=provenance)

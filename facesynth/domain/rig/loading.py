@@ -20,12 +20,14 @@ import numpy as np
 
 from facesynth.base.errors import InputError
 from facesynth.domain.head_motion.rigid import similarity_fit
+from facesynth.domain.rig.face import gaze_from_rig_weights
 from facesynth.formats.gltf import read_morph_mesh
 from facesynth.formats.mesh import read_binding, read_mesh
 from facesynth.model.curves import RigCurves
 from facesynth.model.meshanim import MeshAnimation
 
 from .face import BUILTIN_RIG_NAME, Rig, load_face_rig
+from .markers import build_marker_set
 
 #: The ``--rig`` value naming the built-in rig.
 BUILTIN = "builtin"
@@ -34,8 +36,6 @@ BUILTIN = "builtin"
 def builtin_rig(binding: dict | None = None) -> Rig:
     """The ICT-FaceKit rig shipped with facesynth, in mm, bound to the virtual actress's markers,
     or to ``binding`` (marker name -> vertex, e.g. a user's capture placed by ``facesynth bind``)."""
-    from .markers import build_marker_set
-
     rig = load_face_rig()
     return dataclasses.replace(rig, binding=build_marker_set(rig).binding() if binding is None else binding)
 
@@ -57,8 +57,6 @@ def pose_rig(curves: RigCurves, rig: Rig, where: str, head_motion: bool = False)
     comes from the rig's ``eyeLook*`` shapes (unknown, NaN, without them). ``where`` names the
     curves in errors: curves made for another rig, or with other shape names, are refused."""
     from scipy import sparse
-
-    from facesynth.domain.rig.face import gaze_from_rig_weights
 
     if curves.rig_sha256 != rig.sha256:
         raise InputError(f"{where}: the curves were made for rig {curves.rig_name!r}, not {rig.name!r}; "

@@ -13,6 +13,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from facesynth.base.opencl import aligned_empty, context, host_aligned, kernel, max_alloc_bytes, queue
+
 #: Columns per panel of the panel-major TC matrix (a multiple of 8: the kernel reads float8s).
 #: The one source of this size: ``kernels/dp_min_plus.cl`` is built with ``-DPANEL=<this>``.
 PANEL = 96
@@ -60,7 +62,6 @@ class PanelMatrix:
     ``TC[i, p * PANEL + c]``; columns past N are +inf. Rows can be filled block by block."""
 
     def __init__(self, n: int, panel: int = PANEL):
-        from facesynth.base.opencl import aligned_empty
 
         self.n, self.panel = n, panel
         # page-aligned: the OpenCL DP reads it in place (USE_HOST_PTR) as float8s
@@ -129,8 +130,6 @@ class OpenCLDp:
 
     def __init__(self, tc: "np.ndarray | PanelMatrix"):
         import pyopencl as cl
-
-        from facesynth.base.opencl import context, host_aligned, kernel, max_alloc_bytes, queue
 
         self.ctx, self.queue = context(), queue()
         self.kernel = kernel("dp_min_plus", "min_plus_panels", PANEL=PANEL)

@@ -28,9 +28,12 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from facesynth.base.config import SynthesizeSettings
-from facesynth.base.opencl import use_opencl
+from facesynth.base.opencl import context, kernel, queue, use_opencl
 from facesynth.domain.postprocess.concatenation import end_slope_weights
 from facesynth.model.motiondb import MotionDatabase
+
+from .costs import transition_matrix
+from .dp import PanelMatrix
 
 #: Pivots of the cheap lower and upper bounds (triangle inequality of the mixed norm) that
 #: ``build-db`` stores; a search uses as many as the database holds. More pivots give tighter
@@ -409,8 +412,6 @@ class TransitionCosts:
 
     def panels(self):
         """The full matrix in the panel-major layout of the dense OpenCL DP (a PanelMatrix)."""
-        from .dp import PanelMatrix
-
         out = PanelMatrix(self.n)
         cols = np.arange(self.n)
         step = max(1, (32 << 20) // (4 * max(self.n, 1)))
@@ -487,8 +488,6 @@ class OpenCLPairs:
 
     def __init__(self, tc: TransitionCosts):
         import pyopencl as cl
-
-        from facesynth.base.opencl import context, kernel, queue
 
         self.cl, self.ctx, self.queue, self.tc = cl, context(), queue(), tc
         device = self.ctx.devices[0]
@@ -688,8 +687,6 @@ class PairTerms:
 
     def costs(self, s: SynthesizeSettings) -> "DenseCosts":
         """TC of Table I for settings ``s`` as a :class:`DenseCosts`."""
-        from .costs import transition_matrix
-
         return DenseCosts(transition_matrix(self.dsc, self.pgap, self.vgap, self.f.viseme, self.f.pre.astype(np.int64), s))
 
 

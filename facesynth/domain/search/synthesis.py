@@ -17,16 +17,20 @@ import numpy as np
 
 from facesynth.base.config import SynthesizeSettings
 from facesynth.base.errors import UsageError
-from facesynth.base.opencl import use_opencl
+from facesynth.base.opencl import device_record, use_opencl
 from facesynth.base.phonemes import PAU, viseme
 from facesynth.domain.head_motion.rotations import follow_sources
+from facesynth.domain.postprocess.cao import blend_jumps, learned_cutoffs, lowpass
 from facesynth.domain.postprocess.concatenation import concatenate, downsample
 from facesynth.model.motion import Motion, Provenance, SearchPath
 from facesynth.model.motiondb import MotionDatabase, Nodes
 
 from .costs import StepCosts, path_terms, step_costs
+from .dp import DpResult, OpenCLDp, dp_numpy
+from .greedy import Greedy, anime_graph, cluster_graph, motion_features
 from .inputs import Utterance
 from .pairs import transition_costs
+from .pruned import dp_pruned
 
 
 def unseen_phones(utt: Utterance, db: MotionDatabase) -> dict[str, str]:
@@ -43,9 +47,6 @@ def unseen_phones(utt: Utterance, db: MotionDatabase) -> dict[str, str]:
 
 def greedy_search(db: MotionDatabase, tc, utt: Utterance, steps: StepCosts, settings: SynthesizeSettings):
     """Cao et al.'s GreedyMatching; returns a DpResult-like record with the Eq. 4 cost of its path."""
-    from .dp import DpResult
-    from .greedy import Greedy, anime_graph, cluster_graph, motion_features
-
     if settings.greedy_clusters > 0:
         features = motion_features(db.coeffs, db.nodes.frame_start, db.nodes.frame_count)
         graph = cluster_graph(db.nodes.phone, db.nodes.emotion, db.nodes.suc, features, settings.greedy_clusters)
@@ -66,11 +67,6 @@ def search(tc, steps: StepCosts, settings: SynthesizeSettings, *, while_running:
     Algorithm 1 on it); both give the same path and cost. ``while_running`` is host work to
     do while a dense OpenCL search runs; ``timings`` gets ``opencl_setup_s`` (context, kernel,
     buffers, and for the dense DP the matrix)."""
-    from facesynth.base.opencl import device_record
-
-    from .dp import OpenCLDp, dp_numpy
-    from .pruned import dp_pruned
-
     if settings.dp == "pruned":
         if tc.opencl:
             t0 = time.perf_counter()
@@ -121,8 +117,6 @@ def captured_runs(nodes: Nodes) -> list[slice]:
 
 def cao_joins(db: MotionDatabase, path: np.ndarray, phones: list[str]):
     """Cao et al.'s blending across jumps and learned low-pass (``synthesize.postprocess = "cao"``)."""
-    from facesynth.domain.postprocess.cao import blend_jumps, learned_cutoffs, lowpass
-
     take_range = np.array([(db.takes.frames(t).start, db.takes.frames(t).stop) for t in db.nodes.take])
 
     def joins(out: np.ndarray, ranges) -> np.ndarray:

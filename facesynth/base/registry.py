@@ -1,0 +1,119 @@
+"""Registries: the extension points of facesynth as tables of named members.
+
+Four families can grow without touching the code that uses them: synthesis methods
+(:data:`METHODS`), export formats (:data:`EXPORT_FORMATS`, also the outputs of ``batch``),
+capture readers (:data:`CAPTURE_READERS`) and artifact kinds (:data:`ARTIFACT_KINDS`). A member
+is registered by one line where its family is defined (the family's package ``__init__``), naming
+the module and attribute that implement it (``"module:attribute"``), a one-line summary and the
+facts the command line needs about it. The member's module is imported only when the member is
+used, so listing the names (``--help``, ``--set`` validation, the docs' tables) imports nothing
+heavy. The command-line choices, ``--set`` validation, ``evaluate``'s methods and the generated
+docs tables all read the registries, so a new member appears in each of them.
+
+A registry fills itself on first use by importing its home package (the one place where the base
+layer names a module above it, by name, as :mod:`facesynth.base.pipeline` does for the stages).
+Standard library only.
+"""
+
+from __future__ import annotations
+
+import importlib
+from collections.abc import Iterator, Mapping
+from dataclasses import dataclass, field
+from types import MappingProxyType
+from typing import Any
+
+from .errors import UsageError
+
+
+@dataclass(frozen=True)
+class Entry:
+    """One member: its ``name`` (what users type), ``target`` (``"module:attribute"``, or the
+    object itself for a member registered at run time), ``summary`` (one line for the docs and
+    ``--help``) and ``facts`` (what the users of the family need to know without importing it,
+    e.g. an export format's file suffix)."""
+
+    name: str
+    target: Any
+    summary: str
+    facts: Mapping[str, Any] = field(default_factory=dict)
+
+    def load(self) -> Any:
+        """The registered object (its module imported on first use)."""
+        if not isinstance(self.target, str):
+            return self.target
+        module, _, attribute = self.target.partition(":")
+        return getattr(importlib.import_module(module), attribute)
+
+
+class Registry:
+    """Named members of one family, in registration order (the order reports and docs list them).
+
+    ``what`` names a member in messages ("synthesis method"); ``home`` is the package whose
+    import registers the built-in members."""
+
+    def __init__(self, what: str, home: str) -> None:
+        self.what = what
+        self.home = home
+        self._entries: dict[str, Entry] = {}
+        self._filled = False
+
+    def register(self, name: str, target: Any, summary: str, **facts: Any) -> Entry:
+        """Add a member; a second member of the same name is a programming error."""
+        if name in self._entries:
+            raise ValueError(f"a {self.what} named {name!r} is already registered")
+        entry = Entry(name, target, summary, MappingProxyType(dict(facts)))
+        self._entries[name] = entry
+        return entry
+
+    def unregister(self, name: str) -> None:
+        """Remove a member (a test's toy member, after the test)."""
+        self._fill()
+        del self._entries[name]
+
+    def _fill(self) -> None:
+        if not self._filled:
+            self._filled = True
+            importlib.import_module(self.home)
+
+    def names(self) -> tuple[str, ...]:
+        """Every member's name, in registration order."""
+        self._fill()
+        return tuple(self._entries)
+
+    def entries(self) -> tuple[Entry, ...]:
+        """Every member's entry, in registration order."""
+        self._fill()
+        return tuple(self._entries.values())
+
+    def entry(self, name: str) -> Entry:
+        """The entry of ``name``; a usage error naming the members for an unknown name."""
+        self._fill()
+        if name not in self._entries:
+            raise UsageError(f"unknown {self.what} {name!r}; use one of {', '.join(self._entries)}.")
+        return self._entries[name]
+
+    def get(self, name: str) -> Any:
+        """The object registered as ``name`` (its module imported now)."""
+        return self.entry(name).load()
+
+    def __contains__(self, name: object) -> bool:
+        self._fill()
+        return name in self._entries
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self.names())
+
+
+#: Synthesis methods: ``target`` a :class:`facesynth.domain.methods.Method` subclass; facts:
+#: ``fitted`` (its source is a model made by ``facesynth fit-method``), ``source_kind`` (the
+#: artifact kind it reads), ``takes_constraints``, ``report_row`` (its row in ``evaluate``'s table).
+METHODS = Registry("method", "facesynth.domain.methods")
+#: Export formats (``facesynth export --format``, ``batch``'s outputs): ``target`` a writer
+#: ``(Exportable, Path, ExportOptions) -> None``; facts: ``suffix``, ``needs`` (an optional extra).
+EXPORT_FORMATS = Registry("export format", "facesynth.domain.exports")
+#: Capture readers (a capture manifest's ``mocap`` column): ``target`` a reader
+#: ``(Path, where) -> MarkerTake``; facts: ``suffixes``.
+CAPTURE_READERS = Registry("capture format", "facesynth.formats.mocap")
+#: Artifact kinds: ``target`` its :class:`facesynth.model.spec.Kind`; facts: ``schema``.
+ARTIFACT_KINDS = Registry("artifact kind", "facesynth.model.spec")
