@@ -20,7 +20,7 @@ from facesynth import __version__
 from facesynth.base import limits, pipeline
 from facesynth.base.config import SAMPLE_CORPUS_PRESETS, Config, choices, parse_override
 from facesynth.base.errors import FacesynthError, OverrideError, UsageError
-from facesynth.base.registry import METHODS, Entry, Registry
+from facesynth.base.registry import EXPORT_FORMATS, METHODS, Entry, Registry
 
 PATH = click.Path(path_type=Path)
 EXISTING = click.Path(path_type=Path, dir_okay=False)
@@ -36,7 +36,7 @@ class RegistryChoice(click.Choice):
         self.where = where
         super().__init__(())
 
-    @property  # type: ignore[override]
+    @property
     def choices(self) -> tuple[str, ...]:
         return tuple(e.name for e in self.registry.entries() if self.where(e))
 
@@ -128,9 +128,10 @@ READS = pipeline.READS
 
 def _command_path() -> str:
     """The running command's path below ``facesynth``: 'synthesize', 'isomap build'."""
-    names, ctx = [], click.get_current_context()
+    names: list[str] = []
+    ctx = click.get_current_context()
     while ctx.parent is not None:
-        names.append(ctx.info_name)
+        names.append(ctx.info_name or "")  # click names the context of every subcommand it invokes
         ctx = ctx.parent
     return " ".join(reversed(names))
 
@@ -407,7 +408,7 @@ def normalize(ctx: Context, corpus: Path, output: Path):
             if s.long_gaps else "")
     for warning in s.warnings:
         ctx.say(f"warning: {warning}")
-    if s.rigid_source == "data":
+    if s.rigid_spreads_mm is not None:  # rigid_source 'data': found from the data
         ctx.say("no rigid markers are named; found from the data (spread: how much each one's distances to the others "
                 "vary): " + ", ".join(f"{n} {x:.2f} mm" for n, x in zip(s.rigid_markers, s.rigid_spreads_mm)))
     ctx.detail("head pose fitted on " + ", ".join(f"{n} (weight {w:.2f})" for n, w in zip(s.rigid_markers, s.rigid_weights)))
@@ -880,7 +881,7 @@ def render(ctx: Context, anims, audios, view, compare, rig, binding, output: Pat
 
 @main.command()
 @click.argument("artifact", type=EXISTING)
-@click.option("--format", "fmt", type=click.Choice(("arkit-csv", "gltf", "glb", "usd", "usda", "c3d", "obj-seq")),
+@click.option("--format", "fmt", type=RegistryChoice(EXPORT_FORMATS),
               required=True, help="What to write (units and axes: docs/exports.md).")
 @click.option("--fps", type=float, default=None,
               help="Frame rate of the output (default: export.arkit_fps for arkit-csv, else the animation's).")
@@ -906,8 +907,9 @@ def export(ctx: Context, artifact: Path, fmt: str, fps: float | None, head_motio
 
     s = stage.run(artifact, fmt, output, ctx.config.settings("export"), fps=fps, head_motion=head_motion, audio=audio,
                   mesh=mesh, overwrite=ctx.overwrite)
-    extra = f" (+ {s.files[1].name})" if fmt in ("gltf", "glb") and len(s.files) > 1 else ""
-    what = f"{len(s.files)} files" if fmt == "obj-seq" else fmt
+    folder = EXPORT_FORMATS.entry(fmt).facts.get("folder", False)
+    extra = f" (+ {s.files[1].name})" if not folder and len(s.files) > 1 else ""
+    what = f"{len(s.files)} files" if folder else fmt
     ctx.say(f"exported {s.frames} frames ({s.seconds:.2f} s at {s.fps:g} frames/s) of the {s.kind} "
             f"as {what} -> {output}{extra}")
 
@@ -1006,10 +1008,10 @@ def batch(ctx: Context, script: Path, db_path: Path, method: str | None, output:
     settings = ctx.config.settings("batch")
     if outputs is not None:
         kinds = tuple(k.strip() for k in outputs.split(",") if k.strip())
-        choices = ("motion", "curves", "arkit", "gltf", "usd", "avi", "anim")
-        unknown = [k for k in kinds if k not in choices]
+        allowed = choices("batch", "outputs")
+        unknown = [k for k in kinds if k not in allowed]
         if unknown or not kinds:
-            raise click.BadParameter(f"{outputs!r}: give a comma-separated list of {', '.join(choices)}.",
+            raise click.BadParameter(f"{outputs!r}: give a comma-separated list of {', '.join(allowed)}.",
                                      param_hint="--outputs")
         settings = dataclasses.replace(settings, outputs=kinds)
     if workers is not None:
@@ -1139,7 +1141,7 @@ def tune(ctx: Context, db: Path, validation: Path, method: str | None, output: P
         ctx.say(f"warning: {warning}")
     ctx.say(f"{s.evaluations} evaluations in {s.seconds:.1f} s on {s.validation_sentences} validation sentences: "
             f"error {s.validation_err_before:.4f} -> {s.validation_err_after:.4f} mm^2")
-    if s.test_err_before is not None:
+    if s.test_ci_before is not None and s.test_ci_after is not None:  # with test takes, as the test errors
         (lb, hb), (la, ha) = s.test_ci_before, s.test_ci_after
         ctx.say(f"on {s.test_sentences} test sentences not used for tuning: {s.test_err_before:.4f} [{lb:.4f}, {hb:.4f}] -> "
                 f"{s.test_err_after:.4f} [{la:.4f}, {ha:.4f}] mm^2 (bootstrap 95%)")

@@ -30,7 +30,7 @@ from typing import Any, TypeVar
 
 from .errors import ConfigError, OverrideError
 from .phonemes import PAU, PHONES
-from .registry import METHODS, Registry
+from .registry import EXPORT_FORMATS, METHODS, Registry
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -317,8 +317,10 @@ class LimitsSettings:
 class BatchSettings:
     """``[batch]``: what each line of ``facesynth batch`` writes and how many Dask workers run them."""
 
-    outputs: tuple[str, ...] = setting("not in the paper: per-line outputs",
-                                       choices=("motion", "curves", "arkit", "gltf", "usd", "avi", "anim"), min_items=1)
+    outputs: tuple[str, ...] = setting("not in the paper: per-line outputs: the motion, the rig curves, the video, "
+                                       "the mesh animation and the export formats (arkit: deprecated, now arkit-csv)",
+                                       choices=Members(EXPORT_FORMATS, "batch", ("motion", "curves", "avi", "anim",
+                                                                                 "arkit")), min_items=1)
     workers: int = setting("not in the paper: local Dask worker processes; 0: one per core", unit="processes", ge=0)
 
 

@@ -47,30 +47,54 @@ from facesynth.base.config import (
 from facesynth.base.errors import FacesynthError, InputError
 from facesynth.base.limits import using
 from facesynth.base.phonemes import PAU
+from facesynth.base.registry import EXPORT_FORMATS
 from facesynth.domain import methods
-from facesynth.domain.exports import files
 from facesynth.domain.exports.animation import from_curves
-from facesynth.domain.exports.files import require_usd
+from facesynth.domain.exports.format import ExportOptions, write_export
 from facesynth.domain.methods import MethodSettings, core
 from facesynth.domain.rendering.video import render_video
 from facesynth.domain.retarget.deform import animate, bind
 from facesynth.domain.retarget.solve import solve_motion, solved_curves
 from facesynth.domain.rig.loading import arkit_to_rig, load_rig
-from facesynth.formats.audio import read_audio, write_wav
+from facesynth.formats.audio import read_audio
 from facesynth.formats.labels import write_textgrid
 from facesynth.formats.mesh import read_binding, read_mesh
-from facesynth.model.artifacts import atomic_path, published_together, sha256_of
+from facesynth.model.artifacts import atomic_path, sha256_of
 from facesynth.model.meshanim import MeshAnimation
 from facesynth.model.motion import Motion
 
 from .script import Line
 
-#: Output kinds and the file each writes, by line id (``gltf`` also writes ``ID.wav`` beside it).
-SUFFIXES = {"motion": ".motion.h5", "curves": ".curves.h5", "arkit": ".arkit.csv", "gltf": ".gltf", "usd": ".usd",
-            "avi": ".avi", "anim": ".anim.h5"}
+#: The outputs that are no export format, and the file each writes, by line id; an export format
+#: (:data:`facesynth.base.registry.EXPORT_FORMATS`, those registered with ``batch``) writes
+#: ``ID`` + its ``suffix`` (``gltf`` also ``ID.wav`` beside it).
+OWN_SUFFIXES = {"motion": ".motion.h5", "curves": ".curves.h5", "avi": ".avi", "anim": ".anim.h5"}
+#: Earlier names of outputs, kept for a while with a warning.
+DEPRECATED_OUTPUTS = {"arkit": "arkit-csv"}
 
-#: The outputs made from the rig curves of the facial solve.
-RIG_OUTPUTS = frozenset({"curves", "arkit", "gltf", "usd", "avi"})
+
+def suffix(output: str) -> str:
+    """The file name ending of an output, after the line's id."""
+    return OWN_SUFFIXES[output] if output in OWN_SUFFIXES else EXPORT_FORMATS.entry(output).facts["suffix"]
+
+
+def rig_output(output: str) -> bool:
+    """Whether an output is made from the rig curves of the facial solve (the curves themselves,
+    the video and every export format)."""
+    return output in ("curves", "avi") or output in EXPORT_FORMATS
+
+
+def output_names(asked) -> tuple[tuple[str, ...], list[str]]:
+    """The outputs asked, with deprecated names replaced, and a warning for each."""
+    names, warnings = [], []
+    for name in asked:
+        if name in DEPRECATED_OUTPUTS:
+            warnings.append(f"the batch output {name!r} is now called {DEPRECATED_OUTPUTS[name]!r}; the old name "
+                            "will go in a later release.")
+            name = DEPRECATED_OUTPUTS[name]
+        if name not in names:
+            names.append(name)
+    return tuple(names), warnings
 
 
 @dataclass(frozen=True)
@@ -82,7 +106,7 @@ class Job:
     computed once by the client; ``settings`` the methods' settings; ``limits`` the command's
     ``[limits]``, put in force in the worker for each line; ``mesh`` and ``binding`` are needed
     for the ``anim`` output; ``redo`` (``--overwrite``) redoes lines whose manifest matches.
-    The rig outputs (:data:`RIG_OUTPUTS`) solve on ``rig`` (None: the built-in rig) with
+    The rig outputs (:func:`rig_output`) solve on ``rig`` (None: the built-in rig) with
     ``rig_binding`` (the markers placed on a user's rig), whose data ``rig_sha256`` identifies,
     under ``solve``; ``export`` gives the ARKit CSV's rate.
     """
@@ -172,15 +196,15 @@ def bound_mesh(mesh: Path, binding: Path, marker_names: list[str], settings: Def
 
 def rig_of(job: Job):
     """The job's rig (built-in, or the user's with its binding), read once per worker process.
-    For the arkit output a user's rig gets the ARKit map by shape name, as ``openfacefx`` drives
+    For the arkit-csv output a user's rig gets the ARKit map by shape name, as ``openfacefx`` drives
     it (:func:`facesynth.domain.rig.loading.arkit_to_rig`)."""
     import dataclasses
 
     files = tuple(_file_key(p) for p in (job.rig, job.rig_binding) if p is not None and p.is_file())
-    key = ("rig", str(job.rig), files, "arkit" in job.outputs)
+    key = ("rig", str(job.rig), files, "arkit-csv" in job.outputs)
     if key not in _CACHE:
         rig = load_rig(job.rig, job.rig_binding)
-        if "arkit" in job.outputs and rig.arkit_to_rig is None:
+        if "arkit-csv" in job.outputs and rig.arkit_to_rig is None:
             names, matrix = arkit_to_rig(rig, str(job.rig))
             rig = dataclasses.replace(rig, arkit_names=names, arkit_to_rig=matrix)
         _CACHE[key] = rig
@@ -198,7 +222,7 @@ def input_key(line: Line, job: Job) -> dict:
              "constraints": line.constraints}
     if "anim" in job.outputs:
         files.update(mesh=job.mesh, binding=job.binding)
-    rig_outputs = bool(RIG_OUTPUTS & set(job.outputs))
+    rig_outputs = any(rig_output(o) for o in job.outputs)
     if rig_outputs:
         files.update(rig_binding=job.rig_binding)
     key: dict[str, object] = {name: sha256_of(p) for name, p in files.items() if p is not None}
@@ -210,7 +234,7 @@ def input_key(line: Line, job: Job) -> dict:
                          "deform": settings_json(job.deform) if "anim" in job.outputs else "",
                          "render": settings_json(job.render) if "avi" in job.outputs else "",
                          "solve": settings_json(job.solve) if rig_outputs and job.solve is not None else "",
-                         "export": settings_json(job.export) if "arkit" in job.outputs and job.export else ""})
+                         "export": settings_json(job.export) if "arkit-csv" in job.outputs and job.export else ""})
     if rig_outputs:
         key["rig"] = job.rig_sha256
     return key
@@ -222,12 +246,13 @@ def manifest_path(job: Job, line_id: str) -> Path:
 
 def output_paths(job: Job, line_id: str) -> dict[str, Path]:
     """The file of every output asked, by kind (a glTF's WAV: :func:`extra_paths`)."""
-    return {kind: job.out_dir / f"{line_id}{SUFFIXES[kind]}" for kind in job.outputs}
+    return {kind: job.out_dir / f"{line_id}{suffix(kind)}" for kind in job.outputs}
 
 
 def extra_paths(job: Job, line_id: str) -> list[Path]:
     """Files an output writes beside its own: the glTF's audio, ``ID.wav``."""
-    return [job.out_dir / f"{line_id}.wav"] if "gltf" in job.outputs else []
+    return [job.out_dir / f"{line_id}.wav"] if any(o in EXPORT_FORMATS and EXPORT_FORMATS.get(o).takes_audio
+                                                    for o in job.outputs) else []
 
 
 def recorded_outputs(manifest: dict) -> dict[str, str | None]:
@@ -263,9 +288,9 @@ def _check_inputs(line: Line, job: Job) -> str:
         raise InputError("both an emotion and an emotions file are given; give one.")
     if line.constraints is not None:
         methods.get(job.method).refuse_constraints({0: 0})
-    if "usd" in job.outputs:
-
-        require_usd()
+    for name in job.outputs:  # an optional dependency missing is refused before any work
+        if name in EXPORT_FORMATS:
+            EXPORT_FORMATS.get(name).require()
     return core.emotion_name(line.emotion or "neutral", job.ingest.emotions, job.ingest.emotion_aliases,
                              "the emotion column")
 
@@ -356,7 +381,7 @@ def _do_line(line: Line, job: Job, emotion: str, key: dict, outputs: dict[str, P
                                 source_where=str(job.db), where=str(line.alignment or line.audio),
                                 audio=(samples, rate))
     motion = synthesis.motion
-    result.warnings += list(synthesis.summary.get("warnings", []))
+    result.warnings += list(synthesis.summary.warnings)
     result.synthesize_s = time.perf_counter() - t0 - result.load_s
 
     t0 = time.perf_counter()
@@ -377,7 +402,7 @@ def _do_line(line: Line, job: Job, emotion: str, key: dict, outputs: dict[str, P
     if keep_motion:
         result.outputs.append(motion_path.name)
     try:
-        if RIG_OUTPUTS & set(job.outputs):
+        if any(rig_output(o) for o in job.outputs):
             _rig_outputs(line, job, motion_path, outputs, (samples, rate), result)
         if "anim" in job.outputs:
             _mesh_outputs(line, job, motion, motion_path, outputs, result)
@@ -398,8 +423,6 @@ def _rig_outputs(line: Line, job: Job, motion_path: Path, outputs: dict[str, Pat
     curves themselves, the Live Link Face CSV (at ``export.arkit_fps``), the glTF with the line's
     audio beside it, the USD and the video (``audio``: the line's samples and rate, for a glTF
     beside an audio file that is no WAV)."""
-    import shutil
-
     assert job.solve is not None and job.export is not None  # prepare() fills them
     rig = rig_of(job)
     motion = Motion.read(motion_path)
@@ -413,25 +436,13 @@ def _rig_outputs(line: Line, job: Job, motion_path: Path, outputs: dict[str, Pat
         if "curves" in outputs:
             result.outputs.append(curves_path.name)
         anim = from_curves(curves, rig, curves_path)
-        if "arkit" in outputs:
-            with atomic_path(outputs["arkit"], overwrite=True) as tmp:
-                files.write_arkit_csv(anim.resampled(job.export.arkit_fps), tmp)
-            result.outputs.append(outputs["arkit"].name)
-        if "gltf" in outputs:
-            wav = files.audio_path(outputs["gltf"])
-            with published_together():  # the scene and its audio, or neither
-                with atomic_path(wav, overwrite=True) as tmp:
-                    if line.audio.suffix.lower() == ".wav":
-                        shutil.copyfile(line.audio, tmp)
-                    else:
-                        write_wav(tmp, *audio)
-                with atomic_path(outputs["gltf"], overwrite=True) as tmp:
-                    files.write_gltf(anim, tmp, wav.name, name=line.id)
-            result.outputs += [outputs["gltf"].name, wav.name]
-        if "usd" in outputs:
-            with files.named_temporary(outputs["usd"], overwrite=True) as tmp:
-                files.write_usd(anim, tmp)
-            result.outputs.append(outputs["usd"].name)
+        for name in job.outputs:
+            if name in EXPORT_FORMATS:
+                fmt = EXPORT_FORMATS.get(name)
+                audio = line.audio if line.audio.suffix.lower() == ".wav" else audio
+                written = write_export(fmt, anim.resampled(fmt.rate(anim, job.export)), outputs[name],
+                                       ExportOptions(name=line.id, audio=audio), overwrite=True)
+                result.outputs += [f.name for f in written]
         if "avi" in outputs:
             render_video([curves_path], [line.audio], outputs["avi"], job.render, None, overwrite=True,
                          rig_path=job.rig, binding=job.rig_binding)
@@ -446,10 +457,10 @@ def _mesh_outputs(line: Line, job: Job, motion, motion_path: Path, outputs: dict
     if job.mesh is None or job.binding is None:
         raise InputError("the anim output needs --mesh and --binding.")
     bound = bound_mesh(job.mesh, job.binding, motion.marker_names, job.deform)
-    head = motion.head(motion_path) if job.deform.apply_head_motion else None
+    head = motion.head() if job.deform.apply_head_motion else None
     frames, fit = animate(bound, motion.markers, motion.marker_names, motion.reference, head)
     anim = MeshAnimation(frames, motion.fps, bound.rest, bound.faces, motion.markers, motion.marker_names,
-                         bound.weights, bound.markers, bound.vertex_of, fit["fit_rms"],
+                         bound.weights, bound.markers, bound.vertex_of, fit.fit_rms,
                          provenance=motion.frame_provenance(motion_path))
     anim.write(outputs["anim"], config=settings_json(job.deform), inputs=[motion_path, job.mesh, job.binding],
                overwrite=True)

@@ -76,20 +76,50 @@ class Exportable:
     def has_mesh(self) -> bool:
         return self.rest is not None
 
+    # What a format writes, for after ExportFormat.check has refused an animation without it:
+    # each names what is missing and what to run, should a caller skip that check.
+
+    def mesh(self) -> tuple[np.ndarray, np.ndarray]:
+        """(rest (V, 3) mm, faces (F, 3)) of a mesh animation or curves."""
+        if self.rest is None or self.faces is None:
+            raise InputError(f"{self.path}: marker motion has no mesh; run `facesynth deform` (or `facesynth solve`) first.")
+        return self.rest, self.faces
+
+    def rig_weights(self) -> tuple[Rig, np.ndarray]:
+        """(the rig, its weights (T, E)) of curves."""
+        if self.rig is None or self.weights is None:
+            raise InputError(f"{self.path}: {self.kind} has no rig blendshape weights; run `facesynth solve` on the "
+                             "motion and export its curves.")
+        return self.rig, self.weights
+
+    def marker_motion(self) -> tuple[np.ndarray, list[str]]:
+        """(markers (T, M, 3) mm, their names) of marker motion or a mesh animation."""
+        if self.markers is None or self.marker_names is None:
+            raise InputError(f"{self.path}: rig curves have no markers; export the motion the curves were solved from.")
+        return self.markers, self.marker_names
+
+    def head(self) -> tuple[np.ndarray, np.ndarray]:
+        """(rotations (T, 3, 3), translations (T, 3) mm) of the head motion."""
+        if self.head_rotation is None or self.head_translation is None:
+            raise InputError(f"{self.path}: the {self.kind} has no head motion; export without --head-motion.")
+        return self.head_rotation, self.head_translation
+
     def mesh_frames(self, start: int = 0, stop: int | None = None) -> np.ndarray:
         """(n, V, 3) float32 mm, frames ``start:stop`` of the animated mesh (head motion not applied)."""
         stop = self.n_frames if stop is None else stop
         if self.vertices is not None:
             return np.asarray(self.vertices[start:stop], np.float32)
         if self.weights is not None:
-            return self.rig.evaluate(self.weights[start:stop]).astype(np.float32)
+            rig, weights = self.rig_weights()
+            return rig.evaluate(weights[start:stop]).astype(np.float32)
         raise InputError(f"{self.path}: marker motion has no mesh; run `facesynth deform` (or `facesynth solve`) first.")
 
     def with_head(self, points: np.ndarray, start: int = 0) -> np.ndarray:
         """``points`` (n, P, 3) mm of frames ``start:start+n`` with the head motion applied."""
         n = len(points)
-        r = self.head_rotation[start:start + n].astype(np.float64)
-        t = self.head_translation[start:start + n].astype(np.float64)
+        rotation, translation = self.head()
+        r = rotation[start:start + n].astype(np.float64)
+        t = translation[start:start + n].astype(np.float64)
         return (np.einsum("tij,tpj->tpi", r, points) + t[:, None, :]).astype(np.float32)
 
     def resampled(self, fps: float) -> "Exportable":
@@ -205,7 +235,7 @@ def use_mesh(anim: Exportable, mesh: Path) -> Exportable:
     """``anim`` with the faces of the mesh file ``mesh`` (e.g. one with the same vertices in another
     tool's layout); its vertex count must match the animation's."""
     vertices, faces = read_mesh(Path(mesh))
-    if not anim.has_mesh:
+    if anim.rest is None:  # not anim.has_mesh
         raise InputError(f"{anim.path}: marker motion has no mesh to replace; run `facesynth deform` with {mesh} first.")
     if len(vertices) != len(anim.rest):
         raise InputError(f"{mesh}: has {len(vertices)} vertices but the animation in {anim.path} moves "

@@ -1,27 +1,25 @@
-"""The rig-carrying export formats written from one :class:`~.animation.Exportable`, shared by
-``facesynth export`` and ``facesynth batch``: Live Link Face CSV (:func:`write_arkit_csv`), glTF
-with its audio beside it (:func:`write_gltf`) and USD (:func:`write_usd`). Each writes one file
-at the path given (the callers publish it atomically); the units and axes per format are in
+"""The export formats written from one :class:`~.animation.Exportable` (``facesynth export`` and
+the outputs of ``facesynth batch``, through :func:`~.format.write_export`): Live Link Face CSV,
+glTF/GLB with the speech beside it, USD/USDA and C3D markers (OBJ sequences:
+:mod:`.objseq`). Each writes one file at the path given; the units and axes per format are in
 ``docs/exports.md``.
 """
 
 from __future__ import annotations
 
-import shutil
 from pathlib import Path
 
+import numpy as np
+
+from facesynth.base.config import ExportSettings
 from facesynth.base.errors import InputError
 from facesynth.formats import gltf
 from facesynth.formats import livelink_face as livelink
-from facesynth.model.artifacts import publish, temporary_path
+from facesynth.formats.mocap import MarkerTake, write_c3d
 
 from . import usd
 from .animation import Exportable
-
-
-def audio_path(output: Path) -> Path:
-    """Where the WAV beside a glTF output goes: the output's name with ``.wav``."""
-    return Path(output).with_suffix(".wav")
+from .format import ExportFormat, ExportOptions
 
 
 def require_usd(fmt: str = "usd") -> None:
@@ -31,56 +29,88 @@ def require_usd(fmt: str = "usd") -> None:
                          "run `pip install 'facesynth[usd]'` (or `pip install usd-core`).")
 
 
-def write_arkit_csv(anim: Exportable, path: Path, head_motion: bool = False) -> None:
-    """The Live Link Face CSV of ``anim``'s rig weights (mapped to the 52 ARKit shapes by its
-    rig) at ``anim``'s rate, the eyes from its gaze where known and, with ``head_motion``, the
-    head's yaw, pitch and roll."""
-    head = livelink.head_angles(anim.head_rotation) if head_motion else None
-    eyes = livelink.eye_angles(anim.gaze) if anim.gaze is not None else None
-    livelink.write(path, anim.rig.arkit_names, anim.rig.to_arkit(anim.weights), anim.fps, head, eyes)
+class ArkitCsv(ExportFormat):
+    """The Live Link Face CSV of the rig weights (mapped to the 52 ARKit shapes by the rig), the
+    eyes from the gaze where known and, with head motion, the head's yaw, pitch and roll; at
+    ``export.arkit_fps`` (the app's 60 frames/s) unless a rate is asked."""
+
+    name = "arkit-csv"
+    carries = "weights"
+
+    def rate(self, anim: Exportable, settings: ExportSettings) -> float:
+        return settings.arkit_fps
+
+    def write(self, anim: Exportable, path: Path, options: ExportOptions, audio_name: str | None) -> list[Path]:
+        rig, weights = anim.rig_weights()
+        head = livelink.head_angles(anim.head()[0]) if options.head_motion else None
+        eyes = livelink.eye_angles(anim.gaze) if anim.gaze is not None else None
+        livelink.write(path, rig.arkit_names, rig.to_arkit(weights), anim.fps, head, eyes)
+        return [path]
 
 
-def write_gltf(anim: Exportable, path: Path, audio_name: str | None, head_motion: bool = False, binary: bool = False,
-               name: str | None = None) -> None:
-    """``anim``'s rig mesh with its morph targets and one weights animation as glTF (``binary``:
-    GLB), the provenance in ``extras``; ``audio_name``: the file name of the WAV beside it (the
-    caller copies it there), or None; ``name``: the scene's name (default the file's stem)."""
-    doc, data = gltf.build(anim.rest, anim.faces, anim.rig.deltas, anim.rig.shape_names, anim.times, anim.weights,
-                           anim.head_rotation if head_motion else None,
-                           anim.head_translation if head_motion else None,
-                           audio_name, name=name or Path(path).stem, provenance=anim.provenance)
-    gltf.write(path, doc, data, binary=binary)
+class Gltf(ExportFormat):
+    """The rig mesh with its morph targets and one weights animation (``binary``: GLB), the
+    provenance in ``extras``, naming the speech beside it where there is one."""
+
+    carries = "weights"
+    takes_audio = True
+
+    def __init__(self, binary: bool) -> None:
+        self.binary = binary
+        self.name = "glb" if binary else "gltf"
+
+    def write(self, anim: Exportable, path: Path, options: ExportOptions, audio_name: str | None) -> list[Path]:
+        (rest, faces), (rig, weights) = anim.mesh(), anim.rig_weights()
+        rotation, translation = anim.head() if options.head_motion else (None, None)
+        doc, data = gltf.build(rest, faces, rig.deltas, rig.shape_names, anim.times, weights, rotation, translation,
+                               audio_name, name=options.name or Path(path).stem, provenance=anim.provenance)
+        gltf.write(path, doc, data, binary=self.binary)
+        return [path]
 
 
-def write_usd(anim: Exportable, path: Path, head_motion: bool = False) -> None:
-    """``anim`` as USD (the format by ``path``'s extension): UsdSkel blendshapes driven by a
-    SkelAnimation for rig weights, else time-sampled points; the provenance in metadata."""
-    head = (anim.head_rotation, anim.head_translation) if head_motion else (None, None)
-    if anim.weights is not None:
-        usd.write_blendshapes(path, anim.rest, anim.faces, anim.rig.deltas, anim.rig.shape_names, anim.weights,
-                              anim.fps, *head, provenance=anim.provenance)
-    else:
-        usd.write_points(path, anim.rest, anim.faces, anim.mesh_frames, anim.n_frames, anim.fps, *head,
-                         provenance=anim.provenance)
+class Usd(ExportFormat):
+    """UsdSkel blendshapes driven by a SkelAnimation for rig weights, else time-sampled points;
+    the provenance in metadata (``usda``: the text encoding, picked by the file's suffix)."""
+
+    carries = "mesh"
+    named_file = True
+
+    def __init__(self, name: str) -> None:
+        self.name = name
+
+    def require(self) -> None:
+        require_usd(self.name)
+
+    def write(self, anim: Exportable, path: Path, options: ExportOptions, audio_name: str | None) -> list[Path]:
+        head = anim.head() if options.head_motion else None
+        rest, faces = anim.mesh()
+        if anim.weights is not None:
+            rig, weights = anim.rig_weights()
+            usd.write_blendshapes(path, rest, faces, rig.deltas, rig.shape_names, weights, anim.fps, head,
+                                  provenance=anim.provenance)
+        else:
+            usd.write_points(path, rest, faces, anim.mesh_frames, anim.n_frames, anim.fps, head,
+                             provenance=anim.provenance)
+        return [path]
 
 
-class named_temporary:
-    """A temporary file with the output's own name (libraries such as USD pick the format by the
-    extension) inside a temporary folder beside the output, published at the output on success."""
+class C3d(ExportFormat):
+    """The markers, mm, labelled, at the animation's rate."""
 
-    def __init__(self, output: Path, overwrite: bool):
-        self.output, self.overwrite = Path(output), overwrite
-        self.folder = temporary_path(self.output)
+    name = "c3d"
+    carries = "markers"
 
-    def __enter__(self) -> Path:
-        if self.folder.exists():
-            shutil.rmtree(self.folder)
-        self.folder.mkdir()
-        return self.folder / self.output.name
+    def write(self, anim: Exportable, path: Path, options: ExportOptions, audio_name: str | None) -> list[Path]:
+        markers, names = anim.marker_motion()
+        if options.head_motion:
+            markers = anim.with_head(markers)
+        write_c3d(path, MarkerTake(np.asarray(markers, np.float32), list(names), anim.fps))
+        return [path]
 
-    def __exit__(self, exc_type, exc, tb) -> None:
-        try:
-            if exc_type is None:
-                publish(self.folder / self.output.name, self.output, self.overwrite)
-        finally:
-            shutil.rmtree(self.folder, ignore_errors=True)
+
+ARKIT_CSV = ArkitCsv()
+GLTF = Gltf(binary=False)
+GLB = Gltf(binary=True)
+USD = Usd("usd")
+USDA = Usd("usda")
+C3D = C3d()

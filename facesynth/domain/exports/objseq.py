@@ -15,6 +15,7 @@ from pathlib import Path
 import numpy as np
 
 from .animation import Exportable
+from .format import ExportFormat, ExportOptions
 
 #: Frames evaluated at once (memory: one block of vertices).
 BLOCK = 64
@@ -27,8 +28,9 @@ def frame_name(i: int) -> str:
 
 def write_sequence(folder: Path, anim: Exportable, head_motion: bool = False) -> list[Path]:
     """Write every frame of ``anim`` into ``folder``; returns the files in order."""
-    faces_text = "".join(f"f {a} {b} {c}\n" for a, b, c in (np.asarray(anim.faces) + 1))
-    vertex_format = "v %.4f %.4f %.4f\n" * len(anim.rest)
+    rest, faces = anim.mesh()
+    faces_text = "".join(f"f {a} {b} {c}\n" for a, b, c in (np.asarray(faces) + 1))
+    vertex_format = "v %.4f %.4f %.4f\n" * len(rest)
     files = []
     for start in range(0, anim.n_frames, BLOCK):
         stop = min(start + BLOCK, anim.n_frames)
@@ -45,3 +47,18 @@ def write_sequence(folder: Path, anim: Exportable, head_motion: bool = False) ->
             path.write_text("".join(lines), encoding="utf-8")
             files.append(path)
     return files
+
+
+class ObjSequence(ExportFormat):
+    """A folder of OBJs, one per frame (:func:`write_sequence`)."""
+
+    name = "obj-seq"
+    carries = "mesh"
+    folder = True
+    folder_what = "the OBJ sequence"
+
+    def write(self, anim: Exportable, path: Path, options: ExportOptions, audio_name: str | None) -> list[Path]:
+        return write_sequence(path, anim, options.head_motion)
+
+
+OBJ_SEQUENCE = ObjSequence()

@@ -109,13 +109,13 @@ def payload(anim: Exportable, audio: Path | None = None, view: RenderSettings | 
     shading parameters; the head motion; the timeline (phones, or runs of one emotion or take
     without phones) with the per-frame provenance; and the audio as a data URI."""
     if anim.weights is not None:
-        rest = anim.rest
-        targets = anim.rig.deltas.reshape(len(anim.rig.deltas), -1)
-        weights = anim.weights
-        names = list(anim.rig.shape_names)
+        rest, _ = anim.mesh()
+        rig, weights = anim.rig_weights()
+        targets = rig.deltas.reshape(len(rig.deltas), -1)
+        names = list(rig.shape_names)
     else:
-        frames = anim.vertices if anim.vertices is not None else anim.markers
-        rest = anim.rest if anim.rest is not None else np.nanmean(anim.markers, axis=0)
+        frames = anim.vertices if anim.vertices is not None else anim.marker_motion()[0]
+        rest = anim.rest if anim.rest is not None else np.nanmean(frames, axis=0)
         targets, weights = principal_targets(frames, rest)
         names = [f"pc{k + 1}" for k in range(len(targets))]
     if view is None:
@@ -155,8 +155,9 @@ def _face(anim: Exportable) -> dict:
     first), per-vertex albedo (linear RGB and specular strength) and eye attribute, the parts'
     rest positions and their motion as quantized principal targets, where the eyeballs and the
     mouth loop are (for the page's state), the parts left out and why, and the focus sphere."""
-    rest = np.asarray(anim.rest, np.float64)
-    scene = build_scene(rest, anim.faces)
+    rest_mm, faces = anim.mesh()
+    rest = np.asarray(rest_mm, np.float64)
+    scene = build_scene(rest, faces)
     n_skin, n_parts = scene.n_skin, scene.n_vertices - scene.n_skin
     parts_rest = scene.positions(rest)[n_skin:]
     frames = np.empty((anim.n_frames, n_parts, 3), np.float32)
@@ -173,7 +174,7 @@ def _face(anim: Exportable) -> dict:
     index = np.uint16 if scene.n_vertices <= 65536 else np.uint32  # half the bytes for a mesh of up to 65,536 vertices
     return {"vertices": int(scene.n_vertices), "faces": _b64(np.asarray(scene.faces, index)),
             "index_bits": 8 * np.dtype(index).itemsize,
-            "skin_triangles": int(len(anim.faces)),
+            "skin_triangles": int(len(faces)),
             "albedo": _b64(np.asarray(scene.albedo, np.float32)), "eye": _b64(np.asarray(scene.eye, np.float32)),
             "parts_rest": _b64(np.asarray(parts_rest, np.float32)), "targets": [_b64(row) for row in q],
             "scales": [float(s) for s in scale], "weights": _b64(np.asarray(weights, np.float32)),
@@ -205,7 +206,7 @@ def live_payload(url: str, audio: Path | None = None, jitter_s: float = LIVE_JIT
         raise InputError(f"--live {url!r}: give the stream server's WebSocket URL, e.g. ws://127.0.0.1:8765 "
                          "(the address 'facesynth stream DB --serve' listens on).")
     rig = load_face_rig()
-    targets = rig.arkit_to_rig @ rig.deltas.reshape(len(rig.deltas), -1).astype(np.float64)  # (52, V*3) mm
+    targets = rig.arkit_matrix() @ rig.deltas.reshape(len(rig.deltas), -1).astype(np.float64)  # (52, V*3) mm
     q, scale = quantize(targets)
     data = {
         "kind": "live", "source": url, "live": url, "jitter": float(jitter_s), "fps": 0, "frames": 0, "duration": 0.0,

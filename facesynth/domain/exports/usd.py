@@ -62,13 +62,14 @@ def _mesh(stage, where: str, rest: np.ndarray, faces: np.ndarray):
     return mesh
 
 
-def _head(prim_xform, head_rotation: np.ndarray, head_translation: np.ndarray) -> None:
-    """Time-sample the head pose ``x -> R @ x + t`` (mm) on an Xformable (USD's row-vector
-    matrices: the transpose, translation in the last row)."""
+def _head(prim_xform, head: tuple[np.ndarray, np.ndarray]) -> None:
+    """Time-sample the head pose ``x -> R @ x + t`` (mm; ``head``: rotations (T, 3, 3),
+    translations (T, 3)) on an Xformable (USD's row-vector matrices: the transpose, translation
+    in the last row)."""
     from pxr import Gf
 
     op = prim_xform.AddTransformOp()
-    for i, (r, t) in enumerate(zip(head_rotation, head_translation)):
+    for i, (r, t) in enumerate(zip(*head)):
         m = np.eye(4)
         m[:3, :3] = np.asarray(r, np.float64).T
         m[3, :3] = t
@@ -95,10 +96,10 @@ def _provenance(prim, provenance) -> None:
 
 
 def write_points(path: Path, rest: np.ndarray, faces: np.ndarray, frames, n_frames: int, fps: float,
-                 head_rotation: np.ndarray | None = None, head_translation: np.ndarray | None = None,
-                 provenance=None) -> None:
+                 head: tuple[np.ndarray, np.ndarray] | None = None, provenance=None) -> None:
     """A mesh with time-sampled points. rest : (V, 3) mm; faces : (F, 3); frames : a function
     (start, stop) -> (n, V, 3) mm giving the animation in blocks (memory stays one block);
+    head : optional head motion, (rotations (T, 3, 3), translations (T, 3) mm);
     provenance : optional FrameProvenance of the frames."""
     from pxr import UsdGeom, Vt
 
@@ -115,19 +116,19 @@ def write_points(path: Path, rest: np.ndarray, faces: np.ndarray, frames, n_fram
         for k, p in enumerate(chunk):
             points.Set(Vt.Vec3fArray.FromNumpy(p), float(start + k))
     mesh.GetExtentAttr().Set(Vt.Vec3fArray.FromNumpy(np.stack([lo, hi]).astype(np.float32)))
-    if head_rotation is not None:
-        _head(root, head_rotation, head_translation)
+    if head is not None:
+        _head(root, head)
     if provenance is not None:
         _provenance(root.GetPrim(), provenance)
     stage.GetRootLayer().Save()
 
 
 def write_blendshapes(path: Path, rest: np.ndarray, faces: np.ndarray, deltas: np.ndarray, shape_names, weights: np.ndarray,
-                      fps: float, head_rotation: np.ndarray | None = None, head_translation: np.ndarray | None = None,
-                      provenance=None) -> None:
+                      fps: float, head: tuple[np.ndarray, np.ndarray] | None = None, provenance=None) -> None:
     """The rig as UsdSkelBlendShapes driven by a SkelAnimation. rest : (V, 3) mm; deltas :
-    (E, V, 3) mm; weights : (T, E) in [0, 1]. Each shape stores only the vertices it moves
-    (``pointIndices``), as UsdSkel allows."""
+    (E, V, 3) mm; weights : (T, E) in [0, 1]; head : optional head motion, (rotations (T, 3, 3),
+    translations (T, 3) mm). Each shape stores only the vertices it moves (``pointIndices``), as
+    UsdSkel allows."""
     from pxr import Tf, UsdGeom, UsdSkel, Vt
 
     names = [str(n) for n in shape_names]
@@ -157,8 +158,8 @@ def write_blendshapes(path: Path, rest: np.ndarray, faces: np.ndarray, deltas: n
         shape.CreatePointIndicesAttr(Vt.IntArray.FromNumpy(moved.astype(np.int32)))
         targets.append(shape.GetPath())
     binding.CreateBlendShapeTargetsRel().SetTargets(targets)
-    if head_rotation is not None:
-        _head(UsdGeom.Xformable(root.GetPrim()), head_rotation, head_translation)
+    if head is not None:
+        _head(UsdGeom.Xformable(root.GetPrim()), head)
     if provenance is not None:
         _provenance(root.GetPrim(), provenance)
     stage.GetRootLayer().Save()
