@@ -18,7 +18,7 @@ Standard library only.
 from __future__ import annotations
 
 import importlib
-from collections.abc import Iterator, Mapping
+from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
 from typing import Any
@@ -104,6 +104,29 @@ class Registry:
     def __iter__(self) -> Iterator[str]:
         return iter(self.names())
 
+    def view(self, value: Callable[[Entry], Any]) -> Mapping[str, Any]:
+        """A read-only mapping name -> ``value(entry)``, always current (a member registered
+        later is in it)."""
+        return _View(self, value)
+
+
+class _View(Mapping):
+    """See :meth:`Registry.view`."""
+
+    def __init__(self, registry: Registry, value: Callable[[Entry], Any]) -> None:
+        self._registry, self._value = registry, value
+
+    def __getitem__(self, name: str) -> Any:
+        if name not in self._registry:
+            raise KeyError(name)
+        return self._value(self._registry.entry(name))
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._registry.names())
+
+    def __len__(self) -> int:
+        return len(self._registry.names())
+
 
 #: Synthesis methods: ``target`` a :class:`facesynth.domain.methods.Method` subclass; facts:
 #: ``fitted`` (its source is a model made by ``facesynth fit-method``), ``source_kind`` (the
@@ -112,8 +135,8 @@ METHODS = Registry("method", "facesynth.domain.methods")
 #: Export formats (``facesynth export --format``, ``batch``'s outputs): ``target`` a writer
 #: ``(Exportable, Path, ExportOptions) -> None``; facts: ``suffix``, ``needs`` (an optional extra).
 EXPORT_FORMATS = Registry("export format", "facesynth.domain.exports")
-#: Capture readers (a capture manifest's ``mocap`` column): ``target`` a reader
-#: ``(Path, where) -> MarkerTake``; facts: ``suffixes``.
-CAPTURE_READERS = Registry("capture format", "facesynth.formats.mocap")
-#: Artifact kinds: ``target`` its :class:`facesynth.model.spec.Kind`; facts: ``schema``.
-ARTIFACT_KINDS = Registry("artifact kind", "facesynth.model.spec")
+#: Capture readers (a capture manifest's ``mocap`` column): ``target`` a
+#: :class:`facesynth.formats.mocap.CaptureReader`; facts: ``suffixes``.
+CAPTURE_READERS = Registry("capture format", "facesynth.formats")
+#: Artifact kinds: ``target`` its :class:`facesynth.model.spec.Kind` (which holds its schema).
+ARTIFACT_KINDS = Registry("artifact kind", "facesynth.model")

@@ -10,6 +10,7 @@ from __future__ import annotations
 import csv
 import logging
 import warnings
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -17,6 +18,7 @@ import numpy as np
 
 from facesynth.base import limits
 from facesynth.base.errors import InputError
+from facesynth.base.registry import CAPTURE_READERS
 
 from .c3dfile import MODEL_OUTPUT_GROUPS, C3dPoints, read_points
 
@@ -45,16 +47,40 @@ def _unit_scale(unit: str, path: Path) -> float:
     return _UNIT_TO_MM[key]
 
 
+@dataclass(frozen=True)
+class CaptureReader:
+    """A capture format (registered in :mod:`facesynth.formats`, :data:`CAPTURE_READERS`):
+    ``read`` turns a file into a :class:`MarkerTake`; ``recognizes`` tells, from the file's
+    contents, whether a file with one of the format's suffixes is of this format (None: the
+    suffix says it). Among the formats sharing a suffix the first registered that recognizes
+    the file reads it."""
+
+    read: Callable[[Path], MarkerTake]
+    recognizes: Callable[[Path], bool] | None = None
+
+
+def capture_reader(path: Path) -> CaptureReader:
+    """The registered reader of ``path`` (by its suffix, then its contents); one sentence naming
+    the formats read for a file of none of them."""
+    suffix = Path(path).suffix.lower()
+    known = [e for e in CAPTURE_READERS.entries() if suffix in e.facts["suffixes"]]
+    for entry in known:
+        reader = entry.load()
+        if reader.recognizes is None or reader.recognizes(path):
+            return reader
+    suffixes = list(dict.fromkeys(x for e in CAPTURE_READERS.entries() for x in e.facts["suffixes"]))
+    if known:
+        raise InputError(f"{path}: not a capture file facesynth reads ({', '.join(e.summary for e in known)}); "
+                         "check the manifest's mocap column.")
+    raise InputError(f"{path}: unsupported mocap format {suffix!r}; use {', '.join(suffixes[:-1])} or {suffixes[-1]}.")
+
+
 def read_mocap(path: Path) -> MarkerTake:
-    """Read a marker file by its extension (.c3d, .trc, .csv)."""
+    """Read a capture file by its registered format (:func:`capture_reader`)."""
     path = Path(path)
     if not path.exists():
         raise InputError(f"{path}: mocap file not found; check the manifest's mocap column.")
-    suffix = path.suffix.lower()
-    readers = {".c3d": read_c3d, ".trc": read_trc, ".csv": read_csv}
-    if suffix not in readers:
-        raise InputError(f"{path}: unsupported mocap format {suffix!r}; use .c3d, .trc or .csv.")
-    take = readers[suffix](path)
+    take = capture_reader(path).read(path)
     if take.positions.shape[0] == 0:
         raise InputError(f"{path}: the take has no frames; re-export it or drop it from the manifest.")
     if len(set(take.names)) != len(take.names):
@@ -437,3 +463,8 @@ def write_csv(path: Path, take: MarkerTake) -> None:
         writer.writerow(["frame", "time"] + [f"{n}_{a}" for n in take.names for a in "xyz"])
         for i, xyz in enumerate(take.positions):
             writer.writerow([i, f"{i / take.fps:.6f}"] + ["" if np.isnan(v) else f"{v:.4f}" for v in xyz.reshape(-1)])
+
+
+C3D = CaptureReader(read_c3d)
+TRC = CaptureReader(read_trc)
+CSV = CaptureReader(read_csv)

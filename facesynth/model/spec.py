@@ -20,13 +20,14 @@ from __future__ import annotations
 
 import re
 import sys
-from collections.abc import Iterator
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 from pathlib import Path
 
 from facesynth.base.pipeline import writers
+from facesynth.base.registry import ARTIFACT_KINDS
 
-from .kinds import ENCODING_VERSION, SCHEMAS
+from .kinds import ENCODING_VERSION
 
 #: What each shape symbol counts.
 SYMBOLS: dict[str, str] = {
@@ -225,7 +226,7 @@ SECONDS = _units("s")
 
 #: Root attributes of every artifact.
 COMMON_ATTRS: tuple[Attr, ...] = (
-    Attr("facesynth_kind", "str", "the kind: " + ", ".join(f"`{k}`" for k in SCHEMAS), choices=tuple(SCHEMAS)),
+    Attr("facesynth_kind", "str", "the kind: one of the registered kinds below"),
     Attr("facesynth_schema", "int", "layout version of that kind; bumped on an incompatible change", ge=1),
     Attr("facesynth_version", "str", "the facesynth version that wrote it"),
     Attr("config", "json", "the resolved settings of the stage's configuration section"),
@@ -276,7 +277,7 @@ PCA_MODEL = Block("pca-model", "The PCA model of marker frames (Eq. 11); a frame
 
 # ---------------------------------------------------------------- the kinds
 
-CORPUS = Kind("corpus", SCHEMAS["corpus"], "The ingested capture (paper III): every take concatenated.", (
+CORPUS = Kind("corpus", 1, "The ingested capture (paper III): every take concatenated.", (
     Dataset("markers", "float32", ("F", "M", 3), "raw capture, head motion in; NaN where a marker was not seen",
             "mm", (MM, _fps()), finite=False),
     Dataset("rigid", "bool", ("M",), "true: the marker moves only with the head (the binding's `rigid` column), "
@@ -289,18 +290,19 @@ CORPUS = Kind("corpus", SCHEMAS["corpus"], "The ingested capture (paper III): ev
     ), attrs=(Attr("sample_rate", "int", "samples/s", gt=0),)),
 ))
 
-NORMALIZED = Kind("normalized", SCHEMAS["normalized"], "The capture with head motion removed (paper III, Eq. 1-2).", (
+NORMALIZED = Kind("normalized", 1, "The capture with head motion removed (paper III, Eq. 1-2).", (
     TABLES, HEAD_FRAMES,
 ))
 
-PCA = Kind("pca", SCHEMAS["pca"], "The normalized frames and their PCA coefficients (paper III, Eq. 11).", (
+PCA = Kind("pca", 1, "The normalized frames and their PCA coefficients (paper III, Eq. 11).", (
     TABLES, PCA_MODEL,
     Dataset("coefficients", "float32", ("F", "K"), "PcaCoef of Eq. 11 per frame", "mm", (MM, _fps())),
     HEAD_FRAMES,
 ))
 
 
-MOTIONDB = Kind("motiondb", SCHEMAS["motiondb"], (
+# schema 2: per-node transition features instead of (N, N) pair tables
+MOTIONDB = Kind("motiondb", 2, (
     "The motion-node database (paper III, VI-B): a node per training phone, the frames they index "
     "(the phoneme clusters) and per node the features from which the transition terms of Table I "
     "of any pair are computed on demand (the file grows linearly with the nodes; schema 1 stored "
@@ -358,7 +360,7 @@ MOTIONDB = Kind("motiondb", SCHEMAS["motiondb"], (
     ), required=False),
 ))
 
-ISOMAP = Kind("isomap", SCHEMAS["isomap"], (
+ISOMAP = Kind("isomap", 1, (
     "Phoneme-Isomaps (paper IV, Eq. 3, Fig. 7): per phoneme cluster two 2D maps with their Delaunay "
     "triangles, and the PCA model and marker names that turn a picked point into markers (Eq. 11)."), (
     PCA_MODEL,
@@ -383,7 +385,7 @@ ISOMAP = Kind("isomap", SCHEMAS["isomap"], (
 
 _HEAD_CONVENTION = Attr("convention", "str", "how the head motion applies")
 
-MOTION = Kind("motion", SCHEMAS["motion"], (
+MOTION = Kind("motion", 1, (
     "Marker motion in the head frame, with the head motion beside it. `facesynth synthesize` writes the "
     "`synthesis` variant (with the search path and per-frame provenance); `facesynth capture` writes a "
     "captured take as the `capture` variant (root attribute `source = \"capture\"`, no `coefficients`, "
@@ -470,7 +472,7 @@ FRAME_PROVENANCE = Group("provenance", "frame-provenance", (
 ), attrs=(Attr("origin", "str", "what made the frames: the motion's source", choices=("synthesis", "trajectory", "capture")),
           Attr("resampling", "str", "the rule for frames made at another rate, in words")), required=False)
 
-MESHANIM = Kind("meshanim", SCHEMAS["meshanim"], (
+MESHANIM = Kind("meshanim", 1, (
     "The face mesh moved by marker motion (paper VII-A), with the deformation weights of Eq. 14-15. "
     "Vertices and markers keep NaN where the driving motion has them (a capture with long gaps)."), (
     Dataset("vertices", "float32", ("Fo", "V", 3), "the animated mesh", "mesh units",
@@ -496,7 +498,7 @@ MESHANIM = Kind("meshanim", SCHEMAS["meshanim"], (
 
 _WEIGHT = _units("weight")
 
-CURVES = Kind("curves", SCHEMAS["curves"], (
+CURVES = Kind("curves", 1, (
     "Blendshape weight curves of one rig: `facesynth solve` writes a direct facial solve of marker motion "
     "(`source = \"solve\"`), `facesynth retarget` key-shape weights applied to keymorphs (Chuang & Bregler "
     "Eq. 9, `source = \"retarget\"`); a take's true weights are `truth`, weights read from a user's file "
@@ -517,7 +519,7 @@ CURVES = Kind("curves", SCHEMAS["curves"], (
           Attr("source", "str", "what made the weights", choices=("solve", "retarget", "truth", "import", "openfacefx")),
           Attr("method", "str", "how, in words (e.g. `linear`, `deformation-gradient`), or empty")))
 
-KEYSHAPES = Kind("keyshapes", SCHEMAS["keyshapes"], (
+KEYSHAPES = Kind("keyshapes", 1, (
     "Key-shapes chosen from a motion database, per emotion (Chuang & Bregler 2005 §4.1 PCA extremes, or "
     "Huang et al. §5.2 affinity propagation with merging to the error knee), with their keymorphs fitted on "
     "the built-in rig. A frame is a non-negative combination of its emotion's key-shapes (Eq. 8), solved "
@@ -545,7 +547,7 @@ KEYSHAPES = Kind("keyshapes", SCHEMAS["keyshapes"], (
           Attr("rig_name", "str", "the rig the keymorphs were fitted on", required=False),
           Attr("rig_sha256", "str", "sha256 of that rig's data", required=False)))
 
-TRAJECTORY = Kind("trajectory", SCHEMAS["trajectory"], (
+TRAJECTORY = Kind("trajectory", 1, (
     "The compact key-shape trajectory model (Huang et al. §5.4): per phone, and per (phone, emotion) with at "
     "least `min_tokens` training tokens, the mean and diagonal covariance of the frames' non-negative "
     "weights over one joint key-shape set (every emotion's key-shapes of a `keyshapes` artifact), with the "
@@ -578,7 +580,7 @@ TRAJECTORY = Kind("trajectory", SCHEMAS["trajectory"], (
           Attr("fit_rms", "float", "RMS per marker (mm) of the training frames' reconstruction from the weights", ge=0),
           Attr("covariance", "str", "the covariance's form", choices=("diagonal",))))
 
-COARTICULATION = Kind("coarticulation", SCHEMAS["coarticulation"], (
+COARTICULATION = Kind("coarticulation", 1, (
     "The fitted Cohen-Massaro coarticulation model (Cohen & Massaro 1993, exponent 1): per phone type (a "
     "`phone|emotion` label; `pau` one type) a target pose in the PCA coefficients of the database it was "
     "fitted on, a dominance magnitude and a rate; with that PCA model and the rest pose, so that "
@@ -597,7 +599,7 @@ COARTICULATION = Kind("coarticulation", SCHEMAS["coarticulation"], (
           Attr("fit_rms", "float", "RMS per marker (mm) of the fit on the training frames", ge=0)))
 
 #: Every kind's specification at its current schema.
-EXPRESSION = Kind("expression", SCHEMAS["expression"], (
+EXPRESSION = Kind("expression", 1, (
     "A bilinear style/content model of marker frames (Chuang & Bregler 2005, §3, Eq. 4): "
     "`y[k] = styles[s] . W[k] . content` over the PCA coefficients `y` of the normalized markers "
     "(the paper factors 2D video shape and texture; facesynth factors 3D markers)."), (
@@ -613,7 +615,7 @@ EXPRESSION = Kind("expression", SCHEMAS["expression"], (
     Dataset("sentences", "str", ("Sq",), "sentences whose takes were aligned across emotions and fitted"),
 ), attrs=(Attr("aligned_frames", "int", "content frames (aligned across emotions) the model was fitted on", ge=1),))
 
-HEADMOTION = Kind("headmotion", SCHEMAS["headmotion"], (
+HEADMOTION = Kind("headmotion", 1, (
     "Head motion chosen from captured segments by the pitch of new speech (Chuang & Bregler 2005, §5), "
     "with the cleaned pitch and the chosen segments; `facesynth synthesize --head-motion` puts it on a motion."), (
     Dataset("rotation", "float32", ("Fh", 3, 3), "head pose relative to rest: `x -> rotation @ x + translation`",
@@ -632,9 +634,8 @@ HEADMOTION = Kind("headmotion", SCHEMAS["headmotion"], (
     )),
 ))
 
-KINDS: dict[str, Kind] = {k.name: k for k in (CORPUS, NORMALIZED, PCA, MOTIONDB, ISOMAP, MOTION, MESHANIM, EXPRESSION,
-                                              HEADMOTION, CURVES, KEYSHAPES, TRAJECTORY,
-                                              COARTICULATION)}
+#: Every registered kind by name (always current).
+KINDS: Mapping[str, Kind] = ARTIFACT_KINDS.view(lambda entry: entry.load())
 
 BLOCKS: tuple[Block, ...] = (TABLES, HEAD_FRAMES, PCA_MODEL)
 
@@ -766,4 +767,6 @@ def main(argv: list[str]) -> int:
 
 
 if __name__ == "__main__":  # pragma: no cover
-    sys.exit(main(sys.argv[1:]))
+    from facesynth.model import spec  # this module as imported: the registry loads the kinds from it by name
+
+    sys.exit(spec.main(sys.argv[1:]))
