@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import argparse
 import csv
+import dataclasses
 import json
 import sys
 import tempfile
@@ -62,7 +63,7 @@ def corpus_statistics(corpus: Path) -> dict:
         changed += len(tiers["emotion"]) > 1
     gaps = np.array(gaps)
     return {
-        "curves": curve_statistics(curves, list(rig.arkit_names), 60.0),
+        "curves": dataclasses.asdict(curve_statistics(curves, list(rig.arkit_names), 60.0)),
         "blinks": {"per_minute": 60.0 * blinks / seconds, "count": blinks, "seconds": seconds,
                    "above_half_closure_s": {"median": float(np.median(blink_lengths)) if blink_lengths else None,
                                             "p90": float(np.percentile(blink_lengths, 90)) if blink_lengths else None}},
@@ -88,7 +89,7 @@ def main(argv=None) -> int:
     out = {"preset": args.preset, "seed": args.seed, **ours}
     if args.capture.exists():
         names, weights = read_live_link_face(args.capture)
-        real = curve_statistics([weights], names, 60.0)
+        real = dataclasses.asdict(curve_statistics([weights], names, 60.0))
         out["capture"] = {"path": args.capture.name, "frames": len(weights), "curves": real}
         out["side_by_side"] = {
             name: {"corpus_p5_p95": [round(v["p5"], 3), round(v["p95"], 3)],

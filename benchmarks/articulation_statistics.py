@@ -41,6 +41,7 @@ from __future__ import annotations
 
 import argparse
 import csv
+import dataclasses
 import importlib.util
 import json
 import tempfile
@@ -158,7 +159,7 @@ def summarise(source: dict) -> dict:
     """:func:`articulation_statistics` of a source, with its unit and take count."""
     stats = articulation_statistics(source["openings"], source["jaw"], ARTICULATION_FPS,
                                     source["envelopes"], source["phones"])
-    return {"unit": source["unit"], "takes": source["takes"], **stats}
+    return {"unit": source["unit"], "takes": source["takes"], **dataclasses.asdict(stats)}
 
 
 def _get(stats: dict, path: tuple[str, ...]) -> float:
@@ -213,7 +214,6 @@ def quick_actress(settings, lip_markers: list[str], takes: int = 24, seed: int =
 def calibrate(real: dict, lip_markers: list[str]) -> list[dict]:
     """Every point of :data:`GRID` (the other settings as in the defaults) with its
     :func:`calibration_distance` to the real statistics ``real``, best first."""
-    import dataclasses
     import itertools
 
     base = Config.load().settings("sample_corpus")

@@ -54,8 +54,8 @@ def measure(db_path: Path, corpus_path: Path, clean_dir: Path, split: str, overr
     t0 = time.perf_counter()
     for s in sentences:
         res = synthesize(db, s.utterance, {}, synth, tc=tc)
-        x = res["markers_capture"].astype(np.float64)
-        cat = res["concatenated"]
+        x = res.rendered.markers_capture.astype(np.float64)
+        cat = res.rendered.concatenated
         node, step = cat.node, cat.step
         d2 = second_differences(x)  # row f - 1 is centred on frame f
         joins = [f for f in range(1, len(node) - 1)

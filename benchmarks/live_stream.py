@@ -172,21 +172,22 @@ def offline(db_path: Path, corpus: Path, takes: list[str], config: Config, traje
                 decisions += session.synth.decision_s
                 utt = utterance(s.phones, s.starts, s.ends, s.emotions)
                 if method == "trajectory":
-                    batch = {"markers": synthesize_motion(trajectory, utt, config.settings("trajectory"),
-                                                          model.stream.fps)[0].markers}
+                    batch_markers = synthesize_motion(trajectory, utt, config.settings("trajectory"),
+                                                      model.stream.fps)[0].markers
                 else:
                     batch = synthesize(db, utt, {}, replace(model.synth, search=method))
+                    batch_markers = batch.rendered.markers
                     keep = np.array([p != PAU for p in utt.phones])
-                    differ += int(((np.array(s.committed) != batch["path"]) & keep).sum())
+                    differ += int(((np.array(s.committed) != batch.path) & keep).sum())
                     spoken += int(keep.sum())
-                assert batch["markers"].shape == live.shape, (take, batch["markers"].shape, live.shape)
-                rms.append(float(np.sqrt(((live - batch["markers"]) ** 2).sum(-1).mean())))
+                assert batch_markers.shape == live.shape, (take, batch_markers.shape, live.shape)
+                rms.append(float(np.sqrt(((live - batch_markers) ** 2).sum(-1).mean())))
                 # the curves: the live per-batch solve against `facesynth solve` of the batch markers
-                batch_arkit = model.arkit(model.solve(batch["markers"], None))
+                batch_arkit = model.arkit(model.solve(batch_markers, None))
                 jaw = model.arkit_names.index("jawOpen")
                 arkit_rms.append(float(np.sqrt(((session.arkit - batch_arkit) ** 2).mean())))
                 jaw_r.append(pearson(session.arkit[:, jaw], batch_arkit[:, jaw]))
-                o_live, o_batch = opening(live, names), opening(batch["markers"], names)
+                o_live, o_batch = opening(live, names), opening(batch_markers, names)
                 r_batch.append(pearson(o_live, o_batch))
                 clean, _ = truth.clean(take, names, db.reference)
                 clean = downsample(clean, db.fps, model.stream.fps)

@@ -64,10 +64,10 @@ def main() -> None:
 
     def row(name, seconds, path, jumps, utt, steps, truth):
         cost = float(sum(v.astype(np.float64).sum() for v in path_terms(path, tc, steps).values()))
-        markers = render_path(db, utt, path, s)["markers_capture"]
+        markers = render_path(db, utt, path, s).markers_capture
         m = sentence_metrics(markers, truth, utt, db.fps, db.marker_names, ev)
         return {"search": name, "seconds": round(seconds, 6), "jumps": int(jumps), "eq4_cost": round(cost, 2),
-                "rms_mm": round(m["rms_mm"], 4)}
+                "rms_mm": round(m.rms_mm, 4)}
 
     for sent in sentences:
         utt = sent.utterance

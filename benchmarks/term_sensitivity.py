@@ -34,9 +34,9 @@ def run(db: MotionDatabase, sentences, settings) -> tuple[list[np.ndarray], list
     paths, costs, squared, frames = [], [], 0.0, 0
     for s in sentences:
         res = synthesize(db, s.utterance, {}, settings, tc=tc)
-        paths.append(np.asarray(res["path"]))
-        costs.append(float(res["cost"]))
-        x = res["markers_capture"].astype(np.float64)
+        paths.append(np.asarray(res.path))
+        costs.append(float(res.cost))
+        x = res.rendered.markers_capture.astype(np.float64)
         n = min(len(x), len(s.truth))
         err = np.nansum((x[:n] - s.truth[:n]) ** 2, axis=2)
         squared, frames = squared + float(np.nansum(err)), frames + int(np.isfinite(err).sum())

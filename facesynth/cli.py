@@ -629,24 +629,16 @@ def keyshapes(ctx: Context, db: Path, method, count, sheet, output: Path):
 @click.option("-o", "--output", type=PATH, required=True, help="Output traj.h5.")
 @stage
 def train_trajectory(ctx: Context, db: Path, keyshapes_path: Path, output: Path):
-    """Train the compact key-shape trajectory model (Huang, Chen & Chuang §5.4) on the training takes.
-
-    Per phone, and per (phone, emotion) with enough tokens, the mean and diagonal covariance of
-    the frames' non-negative weights over every emotion's key-shapes, joined; the model file
-    alone then drives `facesynth synthesize --method trajectory`.
+    """Deprecated: the same as `facesynth fit-method trajectory DB --keyshapes K -o OUT`.
 
     \b
     Example:
       facesynth keyshapes db.h5 --method pca --count 7 -o keyshapes.h5
       facesynth train-trajectory db.h5 --keyshapes keyshapes.h5 -o traj.h5
-      facesynth synthesize --method trajectory traj.h5 --phonemes corpus/labels/sad_s017.TextGrid -o traj_motion.h5
     """
-    from facesynth.stages import train_trajectory as stage
-
-    s = stage.run(db, keyshapes_path, output, ctx.config.settings("trajectory"), ctx.overwrite)
-    ctx.detail(f"{s.samples} training frames, weights and Gaussians in {s.train_s:.2f} s")
-    ctx.say(f"trajectory model: {s.phones} phones and {s.pairs} (phone, emotion) Gaussians over {s.keyshapes} "
-            f"key-shapes (fit RMS {s.fit_rms_mm:.2f} mm per marker), {s.bytes} bytes -> {output}")
+    ctx.say("warning: `facesynth train-trajectory` is deprecated and will go in a later release; it runs "
+            "`facesynth fit-method trajectory`, which does the same.")
+    _fit_method(ctx, "trajectory", db, keyshapes_path, output)
 
 
 @main.command("fit-method")
@@ -660,8 +652,7 @@ def fit_method(ctx: Context, method: str, db: Path, keyshapes_path: Path | None,
     """Fit a synthesis method on the database's training takes and write its model.
 
     coarticulation: a Cohen-Massaro model per (phone, emotion) (coarticulation.iterations);
-    trajectory: Huang et al.'s Gaussians of key-shape weights (needs --keyshapes; the same as
-    facesynth train-trajectory). `facesynth synthesize --method METHOD MODEL` then needs the model
+    trajectory: Huang et al.'s Gaussians of key-shape weights (needs --keyshapes). `facesynth synthesize --method METHOD MODEL` then needs the model
     file alone. dp, greedy and mean read the database itself and have nothing to fit. The example
     asks for a quick fit of 8 iterations; the default is coarticulation.iterations = 40.
 
@@ -670,6 +661,10 @@ def fit_method(ctx: Context, method: str, db: Path, keyshapes_path: Path | None,
       facesynth fit-method coarticulation db.h5 -o coart.h5 --set coarticulation.iterations=8
       facesynth synthesize --method coarticulation coart.h5 --phonemes corpus/labels/sad_s017.TextGrid -o coart_motion.h5
     """
+    _fit_method(ctx, method, db, keyshapes_path, output)
+
+
+def _fit_method(ctx: Context, method: str, db: Path, keyshapes_path: Path | None, output: Path) -> None:
     from facesynth.domain.methods import MethodSettings
     from facesynth.stages import fit_method as stage
 
@@ -1046,7 +1041,7 @@ def batch(ctx: Context, script: Path, db_path: Path, method: str | None, output:
 @click.option("--truth", type=PATH, default=None,
               help="The corpus folder with clean ground truth (groundtruth/, markers.csv): adds errors against it and openfacefx.")
 @click.option("--trajectory", type=EXISTING, default=None,
-              help="A trajectory model trained on DB (facesynth train-trajectory): adds the trajectory method.")
+              help="A trajectory model trained on DB (facesynth fit-method trajectory): adds the trajectory method.")
 @click.option("-o", "--output", type=PATH, required=True, help="Report folder (metrics.json, table.md, index.html, plots).")
 @stage
 def evaluate(ctx: Context, db: Path, heldout: Path, truth: Path | None, trajectory: Path | None, output: Path):
@@ -1407,7 +1402,7 @@ def stream(ctx: Context, db_path: Path, audio: str, serve: str | None, livelink:
            lookahead: int | None, markers: bool, realtime: bool, workers: int):
     """Live synthesis: audio in as it arrives, frames of ARKit curves out with a fixed latency
     (JSON lines on standard output, or WebSocket messages), never revised (docs/live.md).
-    DB is the motion database, or with --method trajectory a trajectory model (train-trajectory).
+    DB is the motion database, or with --method trajectory a trajectory model (fit-method trajectory).
     With --serve it serves WebSocket clients until Ctrl-C or SIGTERM, e.g.
     `facesynth stream db.h5 --serve 127.0.0.1:8765 --livelink 127.0.0.1:11111`.
 

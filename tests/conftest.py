@@ -211,12 +211,13 @@ def tiny_db(tiny_artifacts, config, tmp_path_factory) -> Path:
 @pytest.fixture(scope="session")
 def tiny_trajectory(tiny_db, config, tmp_path_factory) -> Path:
     """A trajectory model (traj.h5) trained on the tiny database with 4 key-shapes, built once."""
-    from facesynth.stages import keyshapes, train_trajectory
+    from facesynth.domain.methods import MethodSettings
+    from facesynth.stages import fit_method, keyshapes
 
     def build(d: Path) -> None:
         ks = dataclasses.replace(config.settings("keyshapes"), count=4, curve_frames=200)
         keyshapes.run(tiny_db, d / "keyshapes.h5", ks)
-        train_trajectory.run(tiny_db, d / "keyshapes.h5", d / "traj.h5", config.settings("trajectory"))
+        fit_method.run("trajectory", tiny_db, d / "traj.h5", MethodSettings.of(config), keyshapes_path=d / "keyshapes.h5")
 
     return _built_once(tmp_path_factory, "tiny-trajectory", build) / "traj.h5"
 

@@ -40,7 +40,6 @@ def written(tiny_corpus, tiny_artifacts, tiny_db, held_out_take, config, tmp_pat
         rig_mesh,
         solve,
         synthesize,
-        train_trajectory,
     )
 
     d = tmp_path_factory.mktemp("check")
@@ -69,7 +68,7 @@ def written(tiny_corpus, tiny_artifacts, tiny_db, held_out_take, config, tmp_pat
                  ks, mesh_out=d / "retargeted_anim.h5")
     rig_mesh.run(out["curves"], out["rig_mesh"])
     out["trajectory"], out["trajectory_motion"] = d / "traj.h5", d / "traj_motion.h5"
-    train_trajectory.run(tiny_db, out["keyshapes"], out["trajectory"], config.settings("trajectory"))
+    fit_method.run("trajectory", tiny_db, out["trajectory"], MethodSettings.of(config), keyshapes_path=out["keyshapes"])
     every = MethodSettings.of(config)
     synthesize.run(out["trajectory"], out["trajectory_motion"], every, config.settings("ingest"), config.settings("align"),
                    method="trajectory", phones_path=tg)

@@ -244,8 +244,8 @@ def _forced_off() -> bool:
     return os.environ.get(FORCE_ENV, "").strip().lower() in _OFF
 
 
-def _explicit(spec: str) -> Choice:
-    """The device named by ``PYOPENCL_CTX``; refused with the reason when it cannot build."""
+def _explicit(spec: str) -> tuple[Device, Probe]:
+    """The device named by ``PYOPENCL_CTX`` and its probe; refused with the reason when it cannot build."""
     devices = list_devices()
     parts = spec.strip().split(":")
     try:
@@ -264,7 +264,7 @@ def _explicit(spec: str) -> Choice:
         raise OpenCLUnavailable(f"PYOPENCL_CTX={spec!r}: device {device.describe()} cannot build OpenCL kernels "
                                 f"({result.reason}); choose another device ('facesynth devices' lists them), "
                                 f"unset PYOPENCL_CTX, or set {FORCE_ENV}=off to run on NumPy.")
-    return Choice(device, f"PYOPENCL_CTX={spec}", (result,))
+    return device, result
 
 
 @lru_cache(maxsize=1)
@@ -274,8 +274,9 @@ def choice() -> Choice:
         return Choice(None, f"{FORCE_ENV}={os.environ[FORCE_ENV]}")
     spec = os.environ.get("PYOPENCL_CTX")
     if spec is not None and spec.strip():
-        chosen = _explicit(spec)
-        log.info("OpenCL device %s (%s)", chosen.device.describe(), chosen.reason)
+        device, result = _explicit(spec)
+        chosen = Choice(device, f"PYOPENCL_CTX={spec}", (result,))
+        log.info("OpenCL device %s (%s)", device.describe(), chosen.reason)
         return chosen
     probes = []
     for device in candidate_order(list_devices()):

@@ -25,6 +25,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from .registry import METHODS
+
 #: The settings section every command reads besides its own (the input bounds, facesynth.base.limits).
 ALWAYS_READ = "limits"
 
@@ -99,6 +101,14 @@ class Stage:
         """The output options naming a folder, for these parsed options."""
         return {name: folder for name, folder in self.folder_outputs.items() if folder.applies(options)}
 
+    def input_kinds(self) -> tuple[str, ...]:
+        """The artifact kinds it reads, the registered fitted models' kinds spelled out."""
+        return _kinds(self.inputs)
+
+    def output_kinds(self) -> tuple[str, ...]:
+        """The artifact kinds it writes, the registered fitted models' kinds spelled out."""
+        return _kinds(self.outputs)
+
     def load_core(self) -> Any:
         """The core function (imported now)."""
         return _load(self.core)
@@ -106,6 +116,24 @@ class Stage:
     def load_result(self) -> type | None:
         """The result class (imported now), or None."""
         return None if self.result is None else _load(self.result)
+
+
+#: In a stage's inputs or outputs: the model kinds of the fitted members of the method family
+#: (``facesynth fit-method``), as registered (:data:`facesynth.base.registry.METHODS`), and
+#: those of the fitted members that also stream.
+FITTED_MODELS = "<fitted models>"
+STREAMING_MODELS = "<fitted models that stream>"
+
+
+def _kinds(declared: tuple[str, ...]) -> tuple[str, ...]:
+    out: list[str] = []
+    for kind in declared:
+        if kind in (FITTED_MODELS, STREAMING_MODELS):
+            out += [e.facts["source_kind"] for e in METHODS.entries()
+                    if e.facts.get("fitted") and (kind == FITTED_MODELS or e.facts.get("streams"))]
+        else:
+            out.append(kind)
+    return tuple(dict.fromkeys(out))
 
 
 def _s(module: str, core: str = "run", result: str | None = None) -> tuple[str, str | None]:
@@ -169,7 +197,7 @@ STAGES: tuple[Stage, ...] = (
            "facesynth synthesize [--method M] db.h5|MODEL --phonemes X.TextGrid [--audio X.wav] -o motion.h5",
            _s("synthesize", "run", "SynthesizeResult"),
            reads=("synthesize", "ingest", "align", "trajectory", "coarticulation"),
-           inputs=("motiondb", "trajectory", "coarticulation", "headmotion"), outputs=("motion",),
+           inputs=("motiondb", FITTED_MODELS, "headmotion"), outputs=("motion",),
            output_options=("output",), takes="phones (or audio to align), audio (its loudness), emotions, constraints (dp)",
            paper="VI, VII-B (dp, greedy); mean, coarticulation, trajectory ([methods](methods.md))"),
     _stage("suggest", "Suggest motion nodes for a constraint at a time.",
@@ -201,15 +229,15 @@ STAGES: tuple[Stage, ...] = (
            _s("keyshapes", "run", "KeyshapesResult"), reads=("keyshapes",), inputs=("motiondb",),
            outputs=("keyshapes",), output_options=("output", "sheet"), makes="PNG contact sheet",
            paper="Chuang & Bregler 2005 §4.1, Eq. 8; Huang et al. §5.2"),
-    _stage("train-trajectory", "Train the compact key-shape trajectory model.",
+    _stage("train-trajectory", "Deprecated: the same as fit-method trajectory (warns).",
            "facesynth train-trajectory db.h5 --keyshapes keyshapes.h5 -o traj.h5",
-           _s("train_trajectory", "run", "TrainTrajectoryResult"), reads=("trajectory",),
+           _s("fit_method", "run", "FitMethodResult"), reads=("synthesize", "trajectory", "coarticulation"),
            inputs=("motiondb", "keyshapes"), outputs=("trajectory",), output_options=("output",),
            paper="Huang, Chen & Chuang §5.4"),
     _stage("fit-method", "Fit a synthesis method (coarticulation, trajectory) and write its model.",
            "facesynth fit-method coarticulation|trajectory db.h5 [--keyshapes K] -o model.h5",
            _s("fit_method", "run", "FitMethodResult"), reads=("synthesize", "trajectory", "coarticulation"),
-           inputs=("motiondb", "keyshapes"), outputs=("coarticulation", "trajectory"), output_options=("output",),
+           inputs=("motiondb", "keyshapes"), outputs=(FITTED_MODELS,), output_options=("output",),
            paper="Cohen & Massaro (coarticulation); Huang, Chen & Chuang §5.4 (trajectory)"),
     _stage("bind", "Place a capture's own markers on a rig.",
            "facesynth bind CAPTURE --rig builtin|RIG [--frame N] [--up AX --forward AX] -o markers.csv",
@@ -249,7 +277,7 @@ STAGES: tuple[Stage, ...] = (
     _stage("stream", "Live synthesis: audio in, frames of ARKit curves out.",
            "facesynth stream db.h5 [--audio X.wav | --serve HOST:PORT] [--livelink HOST:PORT]",
            _s("stream", "run"), reads=("stream", "synthesize", "align", "solve", "trajectory"),
-           inputs=("motiondb", "trajectory"),
+           inputs=("motiondb", STREAMING_MODELS),
            takes="live audio (and phone timings, emotion messages)",
            makes="JSON frames of ARKit curves (stdout or WebSocket), Live Link Face UDP",
            paper="VI-VII live: a fixed-lag Algorithm 1 ([live](live.md))"),
@@ -257,7 +285,7 @@ STAGES: tuple[Stage, ...] = (
            _s("batch", "run", "BatchResult"),
            reads=("batch", "synthesize", "ingest", "align", "deform", "render", "trajectory", "coarticulation", "solve",
                   "export"),
-           inputs=("motiondb", "trajectory", "coarticulation"), outputs=("motion", "curves", "meshanim"),
+           inputs=("motiondb", FITTED_MODELS), outputs=("motion", "curves", "meshanim"),
            output_options=("output",), folder_outputs={"output": Folder("the batch outputs", in_place=True)},
            takes="per line: audio, text (none: recognised) or phones, emotion(s), constraints",
            makes="per line ARKit CSV, glTF + WAV, USD, AVI, TextGrid, manifest; summary.csv, summary.html",
@@ -296,7 +324,7 @@ FOLDER_OUTPUTS: dict[str, Mapping[str, Folder]] = {s.name: s.folder_outputs for 
 
 def writers(kind: str) -> tuple[str, ...]:
     """The commands that write artifacts of ``kind``, in pipeline order ('facesynth synthesize', ...)."""
-    return tuple(s.command for s in STAGES if kind in s.outputs)
+    return tuple(s.command for s in STAGES if kind in s.output_kinds())
 
 
 def producers(kind: str) -> str:
@@ -331,7 +359,7 @@ def table() -> str:
     """The stage table (markdown), one row per stage of :data:`STAGES`."""
     rows = [_NOTE, "", "| command | what it does | reads | writes | settings | paper |", "|---|---|---|---|---|---|"]
     for s in STAGES:
-        reads, writes = _join(_list(s.inputs), _cell(s.takes)), _join(_list(s.outputs), _cell(s.makes))
+        reads, writes = _join(_list(s.input_kinds()), _cell(s.takes)), _join(_list(s.output_kinds()), _cell(s.makes))
         rows.append(f"| `{_cell(s.usage)}` | {_cell(s.summary)} | {reads} | {writes} | {_list(s.reads) or '—'} "
                     f"| {_cell(s.paper) or '—'} |")
     return "\n".join(rows) + "\n"

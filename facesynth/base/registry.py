@@ -18,8 +18,11 @@ Standard library only.
 from __future__ import annotations
 
 import importlib
+import re
+import sys
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, field
+from pathlib import Path
 from types import MappingProxyType
 from typing import Any
 
@@ -140,3 +143,55 @@ EXPORT_FORMATS = Registry("export format", "facesynth.domain.exports")
 CAPTURE_READERS = Registry("capture format", "facesynth.formats")
 #: Artifact kinds: ``target`` its :class:`facesynth.model.spec.Kind` (which holds its schema).
 ARTIFACT_KINDS = Registry("artifact kind", "facesynth.model")
+
+
+#: The registries by the name their docs tables use, with the facts each table shows (column
+#: header, fact, value when the member does not say).
+TABLES: dict[str, tuple[Registry, tuple[tuple[str, str, Any], ...]]] = {
+    "methods": (METHODS, (("reads", "source_kind", "motiondb"), ("streams", "streams", False))),
+    "export-formats": (EXPORT_FORMATS, (("file", "suffix", ""), ("batch output", "batch", False))),
+    "capture-formats": (CAPTURE_READERS, (("file names", "suffixes", ()),)),
+    "artifact-kinds": (ARTIFACT_KINDS, ()),
+}
+
+
+def _cell(value: Any) -> str:
+    if isinstance(value, bool):
+        return "yes" if value else ""
+    if isinstance(value, (tuple, list)):
+        return ", ".join(f"`*{v}`" for v in value)
+    return f"`{value}`" if value else ""
+
+
+def markdown(table: str) -> str:
+    """The docs table of one registry (``TABLES``): a row per member in registration order."""
+    registry, facts = TABLES[table]
+    head = ["name"] + [h for h, _, _ in facts] + ["what it is"]
+    rows = [f"| {' | '.join(head)} |", "|" + "---|" * len(head)]
+    for e in registry.entries():
+        cells = [f"`{e.name}`"] + [_cell(e.facts.get(key, default)) for _, key, default in facts] + [e.summary]
+        rows.append(f"| {' | '.join(cells)} |")
+    return "\n".join(rows)
+
+
+_TABLE = re.compile(r"(<!-- registry: ([\w-]+) -->\n)(?:.*?\n)?(<!-- /registry -->)", re.S)
+
+
+def document(text: str) -> str:
+    """``text`` with every registry table between its markers (``<!-- registry: NAME -->`` and
+    ``<!-- /registry -->``) written anew from the registries."""
+    return _TABLE.sub(lambda m: m.group(1) + markdown(m.group(2)) + "\n" + m.group(3), text)
+
+
+def main(argv: list[str]) -> int:
+    """``python -m facesynth.base.registry FILE...``: rewrite the registry tables of the docs."""
+    for name in argv:
+        path = Path(name)
+        path.write_text(document(path.read_text(encoding="utf-8")), encoding="utf-8")
+    return 0
+
+
+if __name__ == "__main__":  # pragma: no cover
+    from facesynth.base import registry  # the registries as the members' packages fill them
+
+    sys.exit(registry.main(sys.argv[1:]))

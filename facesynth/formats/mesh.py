@@ -128,14 +128,14 @@ def write_binding(path: Path, binding: dict[str, int], rigid: set[str] | None = 
     ``residual_mm`` and ``flagged`` (what ``facesynth bind`` knows), the columns ``residual_mm``
     (each marker's distance to its vertex after the fit) and ``flagged`` (1: farther than the
     setting; check it); readers ignore them."""
-    extra = residual_mm is not None
     with open(path, "w", encoding="utf-8", newline="") as fh:
         writer = csv.writer(fh)
         writer.writerow(["marker", "vertex"] + (["rigid"] if rigid is not None else [])
-                        + (["residual_mm", "flagged"] if extra else []))
+                        + (["residual_mm", "flagged"] if residual_mm is not None else []))
         for name, vertex in binding.items():
             writer.writerow([name, vertex] + ([int(name in rigid)] if rigid is not None else [])
-                            + ([f"{residual_mm[name]:.2f}", int(name in (flagged or set()))] if extra else []))
+                            + ([f"{residual_mm[name]:.2f}", int(name in (flagged or set()))]
+                               if residual_mm is not None else []))
 
 
 def read_rigid_markers(path: Path) -> list[str]:

@@ -398,8 +398,9 @@ def input_record(path: Path) -> dict:
     validated snapshot (the file is not opened again), and a path that now names another file
     (replaced while the command ran) is refused rather than recorded with the wrong hash."""
     path = Path(path)
-    handle, snapshot = next(((h, s) for h, s in _live_snapshots() if s.path == path), (None, None))
-    if snapshot is not None:
+    live = next(((h, s) for h, s in _live_snapshots() if s.path == path), None)
+    if live is not None:
+        handle, snapshot = live
         with contextlib.suppress(OSError):
             held, now = os.fstat(handle), os.stat(path)
             if (held.st_dev, held.st_ino) != (now.st_dev, now.st_ino):

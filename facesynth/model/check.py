@@ -218,12 +218,12 @@ def value_problem(snapshot: Snapshot, key: str, data: np.ndarray) -> str | None:
     if e is None:
         return None
     data = np.asarray(data)
+    if data.dtype.kind not in "fiu" or not data.size:  # only numbers have values to check
+        return None
     # One pass each for the minimum and the maximum, no temporaries: a NaN makes both NaN and
     # an infinity is one of them, so finite extremes mean every value is finite.
-    low = high = None
-    if data.dtype.kind in "fiu" and data.size:
-        low, high = data.min(), data.max()
-    if data.dtype.kind == "f" and data.size:
+    low, high = data.min(), data.max()
+    if data.dtype.kind == "f":
         if applies(e.finite, snapshot.variant):
             if not (np.isfinite(low) and np.isfinite(high)):
                 bad = int(data.size - np.count_nonzero(np.isfinite(data)))
@@ -235,19 +235,18 @@ def value_problem(snapshot: Snapshot, key: str, data: np.ndarray) -> str | None:
             bad = int(np.count_nonzero(np.isinf(data)))
             if bad:
                 return f"{bad} infinite value{'s' if bad > 1 else ''} where only finite numbers or NaN (missing) belong"
-    if data.dtype.kind in "iu" and data.size:
+    if data.dtype.kind in "iu":
         extreme = max(abs(int(low)), abs(int(high)))
         if extreme > MAX_INT:
             return f"holds {extreme}, beyond the largest integer an artifact holds (2^53)"
-    if data.dtype.kind in "fiu" and data.size:
-        if e.ge is not None:
-            if low < e.ge:  # NaN compares False: only where NaN is allowed
-                return f"holds {low.item():g}, below the smallest allowed value {e.ge:g}"
-        factor, symbol, offset = parse_size(e.below) if e.below is not None else (1, None, 0)
-        if symbol is not None and symbol in snapshot.sizes:
-            limit = factor * snapshot.sizes[symbol] + offset
-            if high >= limit:
-                return f"holds {high.item()}, but its values must stay below {e.below} = {limit}"
+    if e.ge is not None:
+        if low < e.ge:  # NaN compares False: only where NaN is allowed
+            return f"holds {low.item():g}, below the smallest allowed value {e.ge:g}"
+    factor, symbol, offset = parse_size(e.below) if e.below is not None else (1, None, 0)
+    if symbol is not None and symbol in snapshot.sizes:
+        limit = factor * snapshot.sizes[symbol] + offset
+        if high >= limit:
+            return f"holds {high.item()}, but its values must stay below {e.below} = {limit}"
     return None
 
 
@@ -396,16 +395,19 @@ class _Checker:
             self.say("/", f"attribute 'facesynth_schema' is {_show(schema)}; expected an integer.")
         else:
             self.report.schema = int(schema)
-            if self.report.kind and int(schema) != SCHEMAS[found]:
-                self.say("/", f"'{found}' schema {int(schema)} is not the supported schema {SCHEMAS[found]}; "
-                              f"rebuild it with this version's {PRODUCERS[found]}.")
-        known = self.report.kind is not None and self.report.schema == SCHEMAS.get(self.report.kind)
+            known_name = self.report.kind  # found, where it names a kind
+            if known_name is not None and int(schema) != SCHEMAS[known_name]:
+                self.say("/", f"'{known_name}' schema {int(schema)} is not the supported schema {SCHEMAS[known_name]}; "
+                              f"rebuild it with this version's {PRODUCERS[known_name]}.")
+        kind_name = self.report.kind
+        if kind_name is not None and self.report.schema != SCHEMAS[kind_name]:
+            kind_name = None  # a schema this version does not read: no specification to check against
         if found is not None:
             for a in COMMON_ATTRS:
                 if a.name not in ("facesynth_kind", "facesynth_schema"):
                     self._attr(self.f, "/", a)
-        if known:
-            self.kind = KINDS[self.report.kind]
+        if kind_name is not None:
+            self.kind = KINDS[kind_name]
             self.variant = self.kind.variant(attrs)
             for a in self.kind.attrs:
                 self._attr(self.f, "/", a)
@@ -453,7 +455,7 @@ class _Checker:
             for name, obj in hard.items():
                 if name not in declared:
                     what = "group" if isinstance(obj, h5py.Group) else "dataset" if isinstance(obj, h5py.Dataset) else "object"
-                    self.say(prefix + name, f"unexpected {what}; the '{self.kind.name}' schema {self.kind.schema} "
+                    self.say(prefix + name, f"unexpected {what}; the '{self.report.kind}' schema {self.report.schema} "
                                             "specification has no such key.")
                     self._outside_tree(obj, prefix + name, 1)
 
@@ -539,13 +541,17 @@ class _Checker:
     def _attr(self, obj, key: str, a: Attr) -> None:
         try:
             present = a.name in obj.attrs
-            value = obj.attrs[a.name] if present else None
         except OSError as exc:
             self.say(key, f"attribute '{a.name}' cannot be read ({exc}).")
             return
         if not present:
             if applies(a.required, self.variant):
                 self.say(key, f"missing attribute '{a.name}' ({a.type}{': ' + a.doc if a.doc else ''}).")
+            return
+        try:
+            value = obj.attrs[a.name]
+        except OSError as exc:
+            self.say(key, f"attribute '{a.name}' cannot be read ({exc}).")
             return
         name = f"attribute '{a.name}'"
         if a.type in ("str", "json"):

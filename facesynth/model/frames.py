@@ -22,19 +22,27 @@ from .tables import Phones, Takes, read_tables, write_tables
 class HeadFrames:
     """Normalized frames and the head motion removed from them.
 
-    markers : (F, M, 3) float32 mm, head motion removed (NaN where a long gap stayed).
+    markers : (F, M, 3) float32 mm, head motion removed (NaN where a long gap stayed); None where
+        they were not read (a motion database read without them, ``MotionDatabase.read``).
     reference : (M, 3) float32 mm, the closed-mouth rest pose of Eq. 1-2.
     head_rotation : (F, 3, 3) float32; captured = head_rotation @ normalized + head_translation.
     head_translation : (F, 3) float32 mm.
     fps : frames/s; origin_marker : the marker placed at the origin.
     """
 
-    markers: np.ndarray
+    markers: np.ndarray | None
     reference: np.ndarray
     head_rotation: np.ndarray
     head_translation: np.ndarray
     fps: float
     origin_marker: str
+
+    def loaded_markers(self) -> np.ndarray:
+        """:attr:`markers`, refused where they were not read (``MotionDatabase.read(markers=False)``;
+        a ``normalized`` artifact always has them)."""
+        if self.markers is None:
+            raise ValueError("the normalized markers were not read; read the motion database with markers=True")
+        return self.markers
 
 
 def read_head_frames(f: h5py.File) -> HeadFrames:
@@ -45,7 +53,7 @@ def read_head_frames(f: h5py.File) -> HeadFrames:
 
 def write_head_frames(g: h5py.File, frames: HeadFrames) -> None:
     """Write ``markers``, ``head_rotation``, ``head_translation`` and ``reference`` with units and rates."""
-    m = frames.markers
+    m = frames.loaded_markers()
     d = g.create_dataset("markers", data=m, chunks=(max(1, min(len(m), 1024)), m.shape[1], 3))
     d.attrs["units"] = "mm"
     d.attrs["fps"] = frames.fps

@@ -37,7 +37,7 @@ class Cluster:
     neighbors: int
     exact: int
     note: str
-    coefficients: np.ndarray | None = None
+    coefficients: np.ndarray
     triangles: dict[str, np.ndarray] = field(default_factory=dict)
 
 

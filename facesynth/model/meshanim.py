@@ -54,6 +54,9 @@ class MeshAnimation:
 
     def write(self, out: Path, *, config: str, inputs, overwrite: bool = False) -> None:
         """Write a ``meshanim`` artifact (with its deformation weights) to ``out``."""
+        if self.weights is None or self.bound_markers is None or self.vertex_of is None:
+            raise ValueError("a mesh animation is written with the deformation weights that made it "
+                             "(weights, bound_markers, vertex_of); one read from a file has none")
         with write_artifact(out, self.KIND, config=config, inputs=inputs, overwrite=overwrite) as g:
             v = g.create_dataset("vertices", data=self.vertices, chunks=(1,) + self.vertices.shape[1:])
             v.attrs.update(fps=self.fps, units="mesh units")

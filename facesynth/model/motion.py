@@ -8,8 +8,6 @@ from pathlib import Path
 
 import numpy as np
 
-from facesynth.base.errors import InputError
-
 from .artifacts import attr, open_artifact, read, read_strings, stamp, write_artifact, write_strings
 from .provenance import Provenance, SearchPath, of_motion
 
@@ -38,8 +36,8 @@ class Motion:
     capture_fps: float
     marker_names: list[str]
     reference: np.ndarray
-    head_rotation: np.ndarray | None
-    head_translation: np.ndarray | None
+    head_rotation: np.ndarray
+    head_translation: np.ndarray
     coefficients: np.ndarray | None = None
     path: SearchPath | None = None
     provenance: Provenance | None = None
@@ -53,11 +51,10 @@ class Motion:
     @classmethod
     def read(cls, path: Path) -> "Motion":
         """The marker motion and head motion (not the search path or provenance)."""
-        with open_artifact(path, cls.KIND) as f:
-            has_head = "head_rotation" in f
+        with open_artifact(path, cls.KIND) as f:  # the head motion is required: checked at the door
             return cls(read(f, "markers"), float(attr(f["markers"], "fps")), read(f, "markers_capture"),
                        float(attr(f["markers_capture"], "fps")), read_strings(f, "marker_names"), read(f, "reference"),
-                       read(f, "head_rotation") if has_head else None, read(f, "head_translation") if has_head else None,
+                       read(f, "head_rotation"), read(f, "head_translation"),
                        source=str(f.attrs.get("source", "synthesis")), take=str(f.attrs.get("take", "")))
 
     @staticmethod
@@ -89,10 +86,9 @@ class Motion:
         return of_motion(search, prov, len(self.markers), self.fps, self.source, self.take, len(self.markers_capture),
                          self.capture_fps)
 
-    def head(self, path: Path) -> tuple[np.ndarray, np.ndarray]:
-        """(rotations, translations) at the output rate; a clear error when there is none."""
-        if self.head_rotation is None:
-            raise InputError(f"{path}: no head motion to put back; set deform.apply_head_motion=false.")
+    def head(self) -> tuple[np.ndarray, np.ndarray]:
+        """(rotations, translations) at the output rate (every motion has them: the artifact
+        requires them)."""
         return self.head_rotation, self.head_translation
 
     def write(self, out: Path, *, config: str, inputs=(), records=None, overwrite: bool = False) -> None:
@@ -109,7 +105,7 @@ class Motion:
             if self.coefficients is not None:
                 c = g.create_dataset("coefficients", data=self.coefficients)
                 c.attrs["fps"] = self.capture_fps
-            if self.keyshape_weights is not None:
+            if self.keyshape_weights is not None and self.keyshape_names is not None:  # a pair (trajectory)
                 w = g.create_dataset("keyshape_weights", data=np.asarray(self.keyshape_weights, np.float32))
                 w.attrs.update(units="weight", fps=self.capture_fps)
                 write_strings(g, "keyshape_names", self.keyshape_names)

@@ -2,7 +2,7 @@
 per phone, and per (phone, emotion) where the training data allow, a Gaussian (mean and diagonal
 covariance) of the key-shape weights, with the key-shapes themselves, so that a whole utterance
 is synthesized from this file alone (:mod:`facesynth.domain.methods.trajectory`). Written by
-``facesynth train-trajectory``; read by ``facesynth synthesize --method trajectory``.
+``facesynth fit-method trajectory``; read by ``facesynth synthesize --method trajectory``.
 
 Key-shapes: one joint set, the union of every emotion's key-shapes of a ``keyshapes`` artifact;
 a frame's weights are its non-negative combination over the whole set (Eq. 5), so the weights of
@@ -94,7 +94,7 @@ class TrajectoryModel:
     def read(cls, path: Path) -> "TrajectoryModel":
         """The ``trajectory`` artifact at ``path``."""
         with open_artifact(path, cls.KIND) as f:
-            sampling = attr_choice(f, "sampling", SAMPLINGS, "train it again with `facesynth train-trajectory`")
+            sampling = attr_choice(f, "sampling", SAMPLINGS, "train it again with `facesynth fit-method trajectory`")
             return cls(read_strings(f, "marker_names"), read(f, "reference"), read(f, "keyshapes"),
                        read_strings(f, "keyshape_names"), read_strings(f, "keyshape_emotion"),
                        read_strings(f, "phones"), read(f, "means"), read(f, "variances"), read(f, "tokens"),

@@ -78,7 +78,7 @@ def run(capture: Path, out: Path, settings: BindSettings, normalize_settings: No
     for label, axis in (("--up", up), ("--forward", forward)):
         if axis is not None and axis not in AXES:
             raise InputError(f"{label} {axis!r} is not an axis; use one of {', '.join(AXES)}.")
-    if up is not None and up[1] == forward[1]:
+    if up is not None and forward is not None and up[1] == forward[1]:
         raise InputError(f"--up {up} and --forward {forward} lie on one axis; give two perpendicular axes.")
     take = read_mocap(Path(capture))
     positions = take.positions

@@ -44,7 +44,7 @@ def run(motion_path: Path, mesh: Path, binding_path: Path, out: Path, settings: 
     """Deform ``mesh`` by the marker motion of ``motion_path`` and write ``out`` (a ``meshanim`` artifact)."""
     check_output(out, overwrite)
     motion = Motion.read(motion_path)
-    head = motion.head(motion_path) if settings.apply_head_motion else None
+    head = motion.head() if settings.apply_head_motion else None
     vertices, faces = read_mesh(mesh)
     binding = read_binding(binding_path)
     names = motion.marker_names
@@ -54,7 +54,7 @@ def run(motion_path: Path, mesh: Path, binding_path: Path, out: Path, settings: 
     # eyes then look ahead rather than follow an invented gaze.
     gaze = np.full((len(frames), 2, 2), np.nan, np.float32)
     MeshAnimation(frames, motion.fps, vertices, faces, motion.markers, names, bound.weights, bound.markers,
-                  bound.vertex_of, fit["fit_rms"], gaze, motion.frame_provenance(motion_path)).write(
+                  bound.vertex_of, fit.fit_rms, gaze, motion.frame_provenance(motion_path)).write(
         out, config=settings_json(settings), inputs=[motion_path, mesh, binding_path], overwrite=overwrite)
-    return DeformResult(len(frames), len(vertices), bound.unreached, fit["scale"], fit["fit_rms"])
+    return DeformResult(len(frames), len(vertices), bound.unreached, fit.scale, fit.fit_rms)
 

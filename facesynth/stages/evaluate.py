@@ -174,7 +174,7 @@ def trained_on(model: TrajectoryModel, model_path: Path, db_path: Path) -> None:
     if not any(r.get("sha256") == sha256_of(db_path) for r in dbs):
         was = f" ({dbs[0].get('path')})" if dbs else ""
         raise InputError(f"{model_path}: was trained on another database{was}, not {db_path}; train it on {db_path} "
-                         "with `facesynth train-trajectory` so that every method learns from the same takes.")
+                         "with `facesynth fit-method trajectory` so that every method learns from the same takes.")
 
 
 @dataclass(frozen=True)
@@ -198,7 +198,7 @@ def run(db_path: Path, corpus: Path, out_dir: Path, settings: EvaluateSettings, 
     """Evaluate the database on the corpus's held-out takes and write the report to ``out_dir``.
     ``truth``: the
     corpus folder with clean ground truth (``groundtruth/``, ``markers.csv``). ``trajectory``: a
-    trajectory model trained on ``db_path`` (``facesynth train-trajectory``), synthesized with
+    trajectory model trained on ``db_path`` (``facesynth fit-method trajectory``), synthesized with
     ``trajectory_settings``, adds the trajectory method.
     """
     check_report_folder(out_dir, overwrite)

@@ -68,7 +68,7 @@ def aligned_blocks(norm: NormalizedFrames, splits, frame_step: int
         for e in emotions:
             i = takes_of[e]
             r = rows_of[i]
-            warped.append(bilinear.warp_take(fr.markers[takes.frames(i)], fr.fps, (phones.start[r], phones.end[r]),
+            warped.append(bilinear.warp_take(fr.loaded_markers()[takes.frames(i)], fr.fps, (phones.start[r], phones.end[r]),
                                              (phones.start[rr], phones.end[rr]), times))
         block = np.stack(warped)                                   # (S, n, M, 3)
         ok = np.isfinite(block).all(axis=(0, 2, 3))
@@ -181,6 +181,8 @@ def targets(model: bilinear.BilinearModel, model_path: Path, n: int, fps: float,
 
     I = model.styles.shape[1]
     if emotions_path is None:
+        if to is None:
+            raise InputError("give a target emotion (--to) or an emotions file (--emotions).")
         return np.repeat(model.style(to)[None], n, 0), np.full(n, intensity)
     t = np.arange(n) / fps
     utt = Utterance(["x"] * n, t, t + 1.0 / fps, [""] * n)
@@ -221,12 +223,8 @@ def restyle(model_path: Path, motion_path: Path, out: Path, settings: Expression
         results.append(bilinear.restyle(model, frames, target, alpha, iterations=settings.analyze_iterations,
                                         smooth_frames=settings.style_smoothing_s * fps, init=settings.analyze_init))
     (markers, styles), (capture, _) = results
-    head_r, head_t = motion.head_rotation, motion.head_translation
-    if head_r is None:
-        head_r = np.broadcast_to(np.eye(3, dtype=np.float32), (len(markers), 3, 3)).copy()
-        head_t = np.zeros((len(markers), 3), np.float32)
-    Motion(markers, motion.fps, capture, motion.capture_fps, motion.marker_names, motion.reference, head_r, head_t,
-           source="restyle").write(out, config=settings_json(settings),
+    Motion(markers, motion.fps, capture, motion.capture_fps, motion.marker_names, motion.reference,
+           motion.head_rotation, motion.head_translation, source="restyle").write(out, config=settings_json(settings),
                                    inputs=[p for p in (model_path, motion_path, emotions_path) if p is not None],
                                    overwrite=overwrite)
     ok = np.isfinite(styles).all(axis=1)

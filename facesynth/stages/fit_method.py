@@ -1,7 +1,7 @@
 """``facesynth fit-method``: fit a member of the method family (:mod:`facesynth.domain.methods`) on a
 motion database's training takes and write its model artifact, which ``facesynth synthesize
 --method NAME`` (and ``batch``) then read alone: ``trajectory`` (Huang et al. §5.4, over the
-key-shapes of a ``keyshapes`` artifact; ``facesynth train-trajectory`` is the same) and
+key-shapes of a ``keyshapes`` artifact; ``facesynth fit-method trajectory`` is the same) and
 ``coarticulation`` (Cohen-Massaro per (phone, emotion)). The other members read the database
 itself and have nothing to fit.
 """
@@ -44,5 +44,5 @@ def run(method: str, db_path: Path, out: Path, settings: MethodSettings, *, keys
     """Fit ``method`` on ``db_path``'s training takes (the trajectory method over the key-shapes of
     ``keyshapes_path``) and write ``out``."""
     s = fit_to_file(method, db_path, out, settings, keyshapes_path=keyshapes_path, overwrite=overwrite)
-    return FitMethodResult(s["method"], s["fit_rms_mm"], s["fit_s"], s["bytes"], s.get("labels"), s.get("keyshapes"),
-                           s.get("phones"), s.get("pairs"), s.get("samples"))
+    f = s.fit
+    return FitMethodResult(s.method, f.fit_rms_mm, s.fit_s, s.bytes, f.labels, f.keyshapes, f.phones, f.pairs, f.samples)

@@ -110,13 +110,15 @@ def read_manifest(path: Path, settings: IngestSettings) -> list[ManifestRow]:
 
 
 def _segments_for(row: ManifestRow, settings: IngestSettings, align_settings: AlignSettings, samples: np.ndarray,
-                  rate: int, where: str) -> list[Segment]:
+                  rate: int | None, where: str) -> list[Segment]:
     """The take's phone segments (seconds): read from its alignment file, or its transcript
-    aligned to ``samples`` (mono, ``rate`` Hz) with ``align_settings``."""
+    aligned to ``samples`` (mono, ``rate`` Hz; None: the take has no audio) with ``align_settings``."""
     if row.alignment is not None:
         if not row.alignment.exists():
             raise InputError(f"{where}: alignment file {row.alignment} not found; fix the manifest's alignment column.")
         return read_phone_segments(row.alignment, settings.phone_tiers)
+    if rate is None:  # read_manifest refuses such a row
+        raise InputError(f"{where}: a transcript to align but no audio; give its audio or its phone timing.")
 
     return align_samples(samples, rate, row.transcript, settings=align_settings, where=where)
 
@@ -137,7 +139,7 @@ def phone_emotions(row: ManifestRow, segs: list[Segment], settings: IngestSettin
         centre = 0.5 * (s.start + s.end)
         interval = next((e for e in tier if e.start <= centre < e.end), None)
         label = (interval.label if interval is not None else "").strip().lower()
-        if not label:
+        if interval is None or not label:
             out.append(row.emotion)
             continue
         label = aliases.get(label, label)
@@ -162,7 +164,7 @@ def ingest(rows: list[ManifestRow], settings: IngestSettings, align_settings: Al
             if p is not None and not p.exists():
                 raise InputError(f"{where}: {label} file {p} not found; fix the manifest's {label} column.")
         take = read_mocap(row.mocap)
-        if names is None:
+        if names is None or fps is None:  # the first take (they are set together)
             names, fps = take.names, take.fps
         elif take.names != names:
             extra = sorted(set(take.names) - set(names))

@@ -63,16 +63,34 @@ def nice_ticks(lo: float, hi: float, target: int = 5) -> np.ndarray:
     return np.round(ticks / step) * step + 0.0  # no -0.0 or 0.30000000000000004
 
 
-def map_transform(points: np.ndarray, size: int) -> dict:
-    """The affine map -> pixel transform of a map image: ``px = x0 + sx * x``, ``py = y0 + sy * y``
-    (sy < 0: y up), with the data range padded by 3% inside :func:`plot_box`."""
+@dataclass(frozen=True)
+class MapTransform:
+    """The affine map -> pixel transform of a map image: ``px = x0 + sx * x``, ``py = y0 + sy * y``.
+
+    x0, y0: pixel coordinates of the map's origin.
+    sx, sy: pixels per map unit (sy < 0: y up).
+    lo, hi: (x, y) the map range shown, in map units (the data range padded by 3%).
+    """
+
+    x0: float
+    sx: float
+    y0: float
+    sy: float
+    lo: tuple[float, float]
+    hi: tuple[float, float]
+
+
+def map_transform(points: np.ndarray, size: int) -> MapTransform:
+    """The map -> pixel transform of a map image of ``points`` (N, 2), with the data range padded
+    by 3% inside :func:`plot_box`."""
     lo, hi = points.min(0), points.max(0)
     span = np.maximum(hi - lo, 1e-9)
     lo, hi = lo - 0.03 * span, hi + 0.03 * span
     bx0, by0, bx1, by1 = plot_box(size)
     sx, sy = (bx1 - bx0) / (hi[0] - lo[0]), (by1 - by0) / (hi[1] - lo[1])
-    return {"x0": bx0 - sx * lo[0], "sx": sx, "y0": by1 + sy * lo[1], "sy": -sy,
-            "lo": [float(lo[0]), float(lo[1])], "hi": [float(hi[0]), float(hi[1])]}
+    # x0, sx, y0, sy stay NumPy float64 (a float): the page's JSON rounds them as before
+    return MapTransform(bx0 - sx * lo[0], sx, by1 + sy * lo[1], -sy,
+                        (float(lo[0]), float(lo[1])), (float(hi[0]), float(hi[1])))
 
 
 def render_map(points: np.ndarray, emotion: list[str], settings: IsomapSettings) -> tuple[np.ndarray, Callable]:
@@ -83,7 +101,7 @@ def render_map(points: np.ndarray, emotion: list[str], settings: IsomapSettings)
 
     def to_px(p):
         p = np.asarray(p, float)
-        return np.stack([t["x0"] + t["sx"] * p[..., 0], t["y0"] + t["sy"] * p[..., 1]], -1)
+        return np.stack([t.x0 + t.sx * p[..., 0], t.y0 + t.sy * p[..., 1]], -1)
 
     px = to_px(points)
     image = np.ones((size, size, 3))
@@ -114,14 +132,14 @@ def draw_axes(img, points: np.ndarray, size: int) -> None:
     for box in ((0, 0, x0 - 1, size - 1), (0, y1 + 1, size - 1, size - 1), (0, 0, size - 1, y0 - 1), (x1 + 1, 0, size - 1, size - 1)):
         draw.rectangle(box, fill=(255, 255, 255))
     draw.rectangle((x0, y0, x1, y1), outline=AXIS_COLOUR, width=1)
-    for v in nice_ticks(t["lo"][0], t["hi"][0]):
-        px = round(t["x0"] + t["sx"] * v)
+    for v in nice_ticks(t.lo[0], t.hi[0]):
+        px = round(t.x0 + t.sx * v)
         draw.line([(px, y1), (px, y1 + 5)], fill=AXIS_COLOUR, width=1)
         label = f"{v:g}"
         w = draw.textlength(label)
         draw.text((px - w / 2, y1 + 7), label, fill=AXIS_COLOUR)
-    for v in nice_ticks(t["lo"][1], t["hi"][1]):
-        py = round(t["y0"] + t["sy"] * v)
+    for v in nice_ticks(t.lo[1], t.hi[1]):
+        py = round(t.y0 + t.sy * v)
         draw.line([(x0 - 5, py), (x0, py)], fill=AXIS_COLOUR, width=1)
         label = f"{v:g}"
         w = draw.textlength(label)
@@ -177,7 +195,7 @@ def hover_data(clusters: list[Cluster], size: int, take_of_node: dict[int, str] 
         entry = {}
         for kind, points in (("isomap", c.isomap), ("pca", c.pca_map)):
             t = map_transform(points, size)
-            entry[kind] = {"t": [round(t[k], 6) for k in ("x0", "sx", "y0", "sy")],
+            entry[kind] = {"t": [round(v, 6) for v in (t.x0, t.sx, t.y0, t.sy)],
                            "p": [[float(f"{x:.5g}"), float(f"{y:.5g}"), int(n)] for (x, y), n in zip(points, c.node)]}
         maps[c.phone] = entry
         for n in np.unique(c.node):
@@ -403,8 +421,7 @@ def page(isomap_path: Path, db_path: Path, phones_path: Path, out: Path, setting
     if motion_path is not None:
         export.require_same_database(motion_path, Motion.KIND, "was synthesized", db_path,
                                      f"give a motion synthesized from {db_path}, or that motion's database")
-        path = Motion.read_search(motion_path)[0]
-        export.check_path(path, utt, db, motion_path, phones_path, db_path)
+        path = export.check_path(Motion.read_search(motion_path)[0], utt, db, motion_path, phones_path, db_path)
         differ = export.emotion_differences(path, utt)
         if differ:
             k = differ[0]
@@ -419,7 +436,7 @@ def page(isomap_path: Path, db_path: Path, phones_path: Path, out: Path, setting
             png = io.BytesIO()
             img.save(png, format="png")
             t = map_transform(cluster.isomap, settings.image_size)
-            pixels = np.stack([t["x0"] + t["sx"] * cluster.isomap[:, 0], t["y0"] + t["sy"] * cluster.isomap[:, 1]], -1)
+            pixels = np.stack([t.x0 + t.sx * cluster.isomap[:, 0], t.y0 + t.sy * cluster.isomap[:, 1]], -1)
             pictures[phone] = (png.getvalue(), pixels)
     data = export.page_data(maps, db, utt, constraints, path, pictures,
                             export.synthesize_command(db_path, phones_path, emotions_path))

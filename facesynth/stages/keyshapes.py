@@ -91,6 +91,8 @@ def contact_sheet(keyshapes: KeyShapes, out: Path, tile: int = 192, columns: int
     raster = rasterizer(scene.faces, scene.albedo, scene.eye, tile, tile, 2, False)
     rows = []
     for e in keyshapes.emotions.values():
+        if e.keymorphs is None:  # key-shapes as build() makes them have keymorphs
+            raise ValueError("the contact sheet shows the keymorphs, and these key-shapes have none")
         for start in range(0, e.count, columns):
             rows.append([(name, w) for name, w in zip(e.names[start:start + columns], e.keymorphs[start:start + columns])])
     sheet = Image.new("RGB", (tile * columns, tile * max(len(rows), 1)), (0, 0, 0))

@@ -54,7 +54,7 @@ class PcaResult:
 def run(normalized: Path, out: Path, settings: PcaSettings, overwrite: bool = False) -> PcaResult:
     """Fit the PCA to ``normalized`` and write ``out`` (a ``pca`` artifact)."""
     frames = NormalizedFrames.read(normalized)
-    markers, takes = frames.frames.markers, frames.takes
+    markers, takes = frames.frames.loaded_markers(), frames.takes
     train = np.zeros(len(markers), bool)
     for i in range(len(takes)):
         if takes.split[i] == "train":

@@ -94,8 +94,8 @@ def run(db_path: Path, out: Path, settings: PruneSettings, remove: str | None, a
         raise UsageError("give exactly one of --remove IDS or --auto.")
     check_output(out, overwrite)
     db = MotionDatabase.read(db_path, markers=True)
-    if auto:
-        found = detect(db.nodes, db.takes, db.frames.markers, db.coeffs, db.fps, settings)
+    if remove is None:  # so auto: exactly one of the two, as checked above
+        found = detect(db.nodes, db.takes, db.frames.loaded_markers(), db.coeffs, db.fps, settings)
     else:
         found = {i: reason for i in parse_ids(remove, len(db.nodes))}
     ids = list(found)

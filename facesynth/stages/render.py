@@ -39,4 +39,5 @@ def run(anims: list[Path], audios: list[Path], out: Path, settings: RenderSettin
     """Render the animations (mesh animations or rig curves) one after another, each with its audio
     (none: silence), into the AVI ``out``; ``compare``: one animation beside all, or one per animation
     (side-by-side view); curves pose ``rig_path`` (None: the built-in rig)."""
-    return RenderResult(**render_video(anims, audios, out, settings, compare, overwrite, rig_path, binding))
+    video = render_video(anims, audios, out, settings, compare, overwrite, rig_path, binding)
+    return RenderResult(video.frames, video.seconds, video.frames_per_s, video.notes)

@@ -36,12 +36,12 @@ def keymorphs(keyshapes: KeyShapes, rig: Rig, keymorph_path: Path | None, ridge:
     """(K, E) rig weights and (K, V, 3) meshes of every emotion's keymorphs, emotions in order."""
     names = [n for e in keyshapes.emotions.values() for n in e.names]
     if keymorph_path is not None:
-        weights, meshes = read_keymorphs(keymorph_path, names, rig)
-        if weights is None:
-            deltas = (meshes - rig.neutral).reshape(len(meshes), -1)
-            weights, _ = fit_rig_weights(deltas, rig.deltas.reshape(len(rig.deltas), -1), ridge)
-        else:
-            meshes = rig.evaluate(weights)
+        morphs = read_keymorphs(keymorph_path, names, rig)  # (weights, None) or (None, meshes)
+        if morphs[0] is not None:  # a CSV of rig weights: the meshes they make
+            return morphs[0], rig.evaluate(morphs[0])
+        meshes = morphs[1]  # a folder of meshes: the rig weights nearest them
+        deltas = (meshes - rig.neutral).reshape(len(meshes), -1)
+        weights, _ = fit_rig_weights(deltas, rig.deltas.reshape(len(rig.deltas), -1), ridge)
         return weights, meshes
     stored = all(e.keymorphs is not None for e in keyshapes.emotions.values())
     if stored and keyshapes.rig_sha256 == rig.sha256:
@@ -118,13 +118,14 @@ def run(motion_path: Path, keyshapes_path: Path, out: Path, settings: RetargetSe
     names = list(keyshapes.emotions)
     dominant = result.emotion_weights.argmax(1)
     inputs = [motion_path, keyshapes_path] + [p for p in (rig_path, keymorph_path) if p is not None and Path(p).is_file()]
+    residual = result.residual[np.arange(len(dominant)), dominant]
     curves = RigCurves(weights, motion.fps, list(rig.shape_names), rig.name, rig.sha256, "retarget", motion.head_rotation,
                        motion.head_translation, [names[i] for i in dominant],
                        result.emotion_weights[np.arange(len(dominant)), dominant],
-                       residual=result.residual[np.arange(len(dominant)), dominant],
+                       residual=residual,
                        method=f"key-shapes ({keyshapes.method}) and keymorphs, Eq. 9",
                        provenance=motion.frame_provenance(motion_path))
-    anim = None
+    mesh: tuple[MeshAnimation, Path] | None = None  # the mesh animation and where it goes (mesh_out)
     if mesh_out is not None:
         if settings.blend == "gradient":
             vertices = GradientBlender(rig.neutral, rig.faces, meshes_k, settings.anchor,
@@ -134,10 +135,11 @@ def run(motion_path: Path, keyshapes_path: Path, out: Path, settings: RetargetSe
             vertices = rig.neutral + (result.alpha @ offsets).reshape(len(result.alpha), -1, 3)
         anim = rig_animation(vertices, motion.fps, rig, motion.marker_names, motion.reference, str(motion_path))
         anim.provenance = curves.provenance
+        mesh = (anim, mesh_out)
     with published_together():  # the curves and the mesh animation, or neither
         curves.write(out, config=settings_json(settings), inputs=inputs, overwrite=overwrite)
-        if anim is not None:
-            anim.write(mesh_out, config=settings_json(settings), inputs=inputs, overwrite=overwrite)
+        if mesh is not None:
+            mesh[0].write(mesh[1], config=settings_json(settings), inputs=inputs, overwrite=overwrite)
     return RetargetResult(len(weights), int(result.alpha.shape[1]), rig.name,
-                          float(np.sqrt(np.nanmean(curves.residual**2))), settings.blend if anim is not None else None)
+                          float(np.sqrt(np.nanmean(residual**2))), settings.blend if mesh is not None else None)
 

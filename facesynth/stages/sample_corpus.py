@@ -36,5 +36,5 @@ def run(out_dir: Path, preset: str, seed: int, settings: SampleCorpusSettings | 
     the actress articulating with ``settings`` (``[sample_corpus]``; None: the defaults)."""
     with atomic_folder(out_dir, "the corpus", overwrite) as folder:  # renamed into place when complete
         summary = generate(folder, preset, seed, overwrite=True, settings=settings)
-    return SampleCorpusResult(summary["takes"], summary["frames"], summary["seconds"], summary["train_phones"],
-                              summary["contamination_events"])
+    return SampleCorpusResult(summary.takes, summary.frames, summary.seconds, summary.train_phones,
+                              summary.contamination_events)

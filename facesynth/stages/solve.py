@@ -44,7 +44,7 @@ def take_motion(normalized: NormalizedFrames, take: str | None, output_fps: floa
         raise InputError(f"{where}: no take {take!r}; it has {', '.join(names[:5])}.")
     frames = normalized.frames
     sl = normalized.takes.frames(names.index(take))
-    markers = frames.markers[sl].astype(np.float32)
+    markers = frames.loaded_markers()[sl].astype(np.float32)
     rel_r, rel_t = relative_to_take(frames.head_rotation[sl], frames.head_translation[sl], [slice(0, len(markers))])
     return Motion(downsample(markers, frames.fps, output_fps), output_fps, markers, frames.fps, normalized.marker_names,
                   frames.reference, downsample(rel_r, frames.fps, output_fps).astype(np.float32),

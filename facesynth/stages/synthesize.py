@@ -102,7 +102,7 @@ def run(source_path: Path, out: Path, settings: SynthesizeSettings | MethodSetti
                  overwrite=overwrite)
     write_s = time.perf_counter() - t0
     summary = result.summary
-    return SynthesizeResult(member.name, summary["phones"], summary["frames"], dict(summary.get("unseen", {})),
-                            list(read.warnings) + list(summary.get("warnings", [])), load_s, hash_wait_s, write_s, summary.get("cost"), summary.get("joins"),
-                            summary.get("device"), summary.get("energy"), summary.get("lambda"),
-                            dict(summary.get("fallbacks", {})), {k: v for k, v in summary.items() if k.endswith("_s")})
+    return SynthesizeResult(member.name, summary.phones, summary.frames, dict(summary.unseen),
+                            list(read.warnings) + list(summary.warnings), load_s, hash_wait_s, write_s, summary.cost,
+                            summary.joins, summary.device, summary.energy, summary.lam, dict(summary.fallbacks),
+                            dict(summary.phases))

@@ -128,7 +128,7 @@ class Objective:
         out = np.empty(len(sentences))
         if path_key in self.paths:
             for k, (sentence, path) in enumerate(zip(sentences, self.paths[path_key])):
-                out[k] = sentence_error(render_path(self.db, sentence.utterance, path, s)["markers_capture"], sentence.truth)
+                out[k] = sentence_error(render_path(self.db, sentence.utterance, path, s).markers_capture, sentence.truth)
         else:
             if self.tables:  # the pair terms once per fit length; per weights only the sums (bit-identical)
                 if fit not in self.terms:  # DSC and PGap do not depend on the fit: shared
@@ -140,8 +140,8 @@ class Objective:
             paths = []
             for k, sentence in enumerate(sentences):
                 res = synthesize(self.db, sentence.utterance, {}, s, tc=tc)
-                paths.append(res["path"])
-                out[k] = sentence_error(res["markers_capture"], sentence.truth)
+                paths.append(res.path)
+                out[k] = sentence_error(res.rendered.markers_capture, sentence.truth)
             self.paths[path_key] = paths
         self.scores[key] = (float(out.mean()), out)
         return out
@@ -159,7 +159,7 @@ def tunable(method: str | None, synth: SynthesizeSettings):
 
 
 def tune(db_path: Path, corpus: Path, settings: TuneSettings, synth: SynthesizeSettings, build: BuildDbSettings,
-         normalize_settings: NormalizeSettings, progress_fn=None, method: str | None = None) -> dict:
+         normalize_settings: NormalizeSettings, progress_fn=None, method: str | None = None) -> TuneResult:
     """Tune the weights, the boundary-fit length and the smoothing window of ``method`` (a search
     member, default ``synthesize.search``) on the validation takes of ``corpus``; returns the
     settings and the errors (mm^2) before and after on the validation and test takes.
@@ -225,20 +225,18 @@ def tune(db_path: Path, corpus: Path, settings: TuneSettings, synth: SynthesizeS
     improved = best_f < before_val
     if not improved:
         best_s, best_fit, best_f = start, fit0, before_val
-    summary = {"validation_sentences": len(validation), "test_sentences": len(test), "evaluations": state["done"],
-               "seconds": time.perf_counter() - t0, "validation_err_before": before_val, "validation_err_after": best_f,
-               "improved": improved, "method": member.name, "weights": {k: getattr(best_s, k) for k in WEIGHTS},
-               "smoothing_half_window": best_s.smoothing_half_window, "boundary_fit_frames": best_fit,
-               "boundary_fit_changed": best_fit != fit0,
-               "warnings": [] if improved else [
-                   f"no setting tried beat the start on the validation takes ({before_val:.4f} mm^2); the start settings are written unchanged."]}
+    result = TuneResult(len(validation), len(test), int(state["done"]), time.perf_counter() - t0, before_val, best_f, improved,
+                        member.name, {k: getattr(best_s, k) for k in WEIGHTS}, best_s.smoothing_half_window, best_fit,
+                        best_fit != fit0, [] if improved else [
+                            f"no setting tried beat the start on the validation takes ({before_val:.4f} mm^2); the start settings are written unchanged."])
     if test:
         before = objective.errors(start, fit0, test, "test")
         after = objective.errors(best_s, best_fit, test, "test")
-        summary.update(test_err_before=float(before.mean()), test_err_after=float(after.mean()),
-                       test_ci_before=bootstrap_mean(before, settings.seed), test_ci_after=bootstrap_mean(after, settings.seed),
-                       test_ci_difference=bootstrap_mean(after - before, settings.seed))
-    return summary
+        result = dataclasses.replace(result, test_err_before=float(before.mean()), test_err_after=float(after.mean()),
+                                     test_ci_before=bootstrap_mean(before, settings.seed),
+                                     test_ci_after=bootstrap_mean(after, settings.seed),
+                                     test_ci_difference=bootstrap_mean(after - before, settings.seed))
+    return result
 
 
 #: Start-simplex steps in log space: a factor e^0.7 (about 2) in every weight, but e^3.5 (about
@@ -252,23 +250,24 @@ def _simplex(v: np.ndarray) -> np.ndarray:
     return np.vstack([v] + [v + SIMPLEX_STEPS[i] * np.eye(len(v))[i] for i in range(len(v))])
 
 
-def write_config(path: Path, summary: dict, overwrite: bool) -> None:
+def write_config(path: Path, summary: TuneResult, overwrite: bool) -> None:
     """Write the tuned settings as TOML ``[synthesize]`` and ``[build_db]`` sections that
     ``--config`` accepts (a changed boundary-fit length takes effect when ``build-db`` runs again)."""
     lines = ["# Settings tuned by `facesynth tune` (paper VI-D): use with --config.",
-             f"# validation error (Eq. 13, mm^2): {summary['validation_err_before']:.4f} -> {summary['validation_err_after']:.4f}"]
-    if "test_err_before" in summary:
-        lo_b, hi_b = summary["test_ci_before"]
-        lo_a, hi_a = summary["test_ci_after"]
-        lines.append(f"# test error (Eq. 13, mm^2):       {summary['test_err_before']:.4f} [{lo_b:.4f}, {hi_b:.4f}] -> "
-                     f"{summary['test_err_after']:.4f} [{lo_a:.4f}, {hi_a:.4f}] (bootstrap 95% over sentences)")
-    lines += [f"# warning: {w}" for w in summary["warnings"]]
-    lines += ["", "[synthesize]"] + [f"{k} = {v!r}" for k, v in summary["weights"].items()]
-    if summary.get("method", "dp") != "dp":  # tuned for another search: the file says which
-        lines.append(f"search = {summary['method']!r}")
-    lines.append(f"smoothing_half_window = {summary['smoothing_half_window']}")
+             f"# validation error (Eq. 13, mm^2): {summary.validation_err_before:.4f} -> {summary.validation_err_after:.4f}"]
+    if summary.test_err_before is not None:
+        assert summary.test_ci_before is not None and summary.test_ci_after is not None
+        lo_b, hi_b = summary.test_ci_before
+        lo_a, hi_a = summary.test_ci_after
+        lines.append(f"# test error (Eq. 13, mm^2):       {summary.test_err_before:.4f} [{lo_b:.4f}, {hi_b:.4f}] -> "
+                     f"{summary.test_err_after:.4f} [{lo_a:.4f}, {hi_a:.4f}] (bootstrap 95% over sentences)")
+    lines += [f"# warning: {w}" for w in summary.warnings]
+    lines += ["", "[synthesize]"] + [f"{k} = {v!r}" for k, v in summary.weights.items()]
+    if summary.method != "dp":  # tuned for another search: the file says which
+        lines.append(f"search = {summary.method!r}")
+    lines.append(f"smoothing_half_window = {summary.smoothing_half_window}")
     lines += ["", "# Takes effect when the database is built again: facesynth build-db ... --config this file.",
-              "[build_db]", f"boundary_fit_frames = {summary['boundary_fit_frames']}"]
+              "[build_db]", f"boundary_fit_frames = {summary.boundary_fit_frames}"]
     with atomic_path(path, overwrite) as tmp:
         tmp.write_text("\n".join(lines) + "\n", encoding="utf-8")
 
@@ -319,7 +318,7 @@ def run(db_path: Path, corpus: Path, out: Path, settings: TuneSettings, synth: S
     """Tune ``method`` (a search member; default ``synthesize.search``) and write ``out``."""
     tunable(method, synth)  # refused before anything is read
     check_output(out, overwrite)
-    summary = tune(db_path, corpus, settings, synth, build, normalize_settings, progress_fn, method)
-    write_config(out, summary, overwrite)
-    return TuneResult(**summary)
+    result = tune(db_path, corpus, settings, synth, build, normalize_settings, progress_fn, method)
+    write_config(out, result, overwrite)
+    return result
 

@@ -51,23 +51,23 @@ def test_motion_statistics_of_a_sine():
     stats = motion_statistics([x], FPS)
     # |d/dt| = pi f |cos|: median pi f cos(pi/4); 95th percentile pi f cos(0.05 pi / 2);
     # |d2/dt2| = 2 (pi f)^2 |sin|: median 2 (pi f)^2 sin(pi/4)
-    assert stats["velocity"]["p50"] == pytest.approx(np.pi * f * np.cos(np.pi / 4), rel=0.02)
-    assert stats["velocity"]["p95"] == pytest.approx(np.pi * f * np.cos(0.025 * np.pi), rel=0.02)
-    assert stats["acceleration"]["p50"] == pytest.approx(2 * (np.pi * f) ** 2 * np.sin(np.pi / 4), rel=0.05)
+    assert stats.velocity.p50 == pytest.approx(np.pi * f * np.cos(np.pi / 4), rel=0.02)
+    assert stats.velocity.p95 == pytest.approx(np.pi * f * np.cos(0.025 * np.pi), rel=0.02)
+    assert stats.acceleration.p50 == pytest.approx(2 * (np.pi * f) ** 2 * np.sin(np.pi / 4), rel=0.05)
     # a mask keeps only the frames it holds: the still half adds nothing
     still = np.r_[x, np.full(3000, 0.5)]
     masked = motion_statistics([still], FPS, [np.r_[np.ones(2990, bool), np.zeros(3010, bool)]])
-    assert masked["velocity"]["p50"] == pytest.approx(stats["velocity"]["p50"], rel=0.02)
+    assert masked.velocity.p50 == pytest.approx(stats.velocity.p50, rel=0.02)
 
 
 def test_opening_events_count_syllables_per_second():
     t = np.arange(900) / FPS  # 30 s at 3 openings a second
     x = 0.5 - 0.5 * np.cos(2 * np.pi * 3.0 * t)
     events = opening_events([x], FPS)
-    assert events["openings_per_s"] == pytest.approx(3.0, abs=0.05)
-    assert events["closings_per_s"] == pytest.approx(3.0, abs=0.05)
+    assert events.openings_per_s == pytest.approx(3.0, abs=0.05)
+    assert events.closings_per_s == pytest.approx(3.0, abs=0.05)
     # ripples below the prominence are not events
-    assert opening_events([0.05 * x], FPS)["openings_per_s"] == 0.0
+    assert opening_events([0.05 * x], FPS).openings_per_s == 0.0
 
 
 def test_audio_lag_finds_a_known_delay_of_either_sign():
@@ -76,11 +76,11 @@ def test_audio_lag_finds_a_known_delay_of_either_sign():
     for delay in (3, -2, 0):
         opening = np.roll(env, delay)
         lag = audio_lag([env[50:-50]], [opening[50:-50]], FPS)
-        assert lag["lag_s"] == pytest.approx(delay / FPS, abs=0.2 / FPS)
-        assert lag["r"] > 0.99
+        assert lag.lag_s == pytest.approx(delay / FPS, abs=0.2 / FPS)
+        assert lag.r > 0.99
     # a sub-frame delay is found between frames
     fine = np.interp(np.arange(2000) - 1.5, np.arange(2000), env)
-    assert audio_lag([env[50:-50]], [fine[50:-50]], FPS)["lag_s"] == pytest.approx(1.5 / FPS, abs=0.35 / FPS)
+    assert audio_lag([env[50:-50]], [fine[50:-50]], FPS).lag_s == pytest.approx(1.5 / FPS, abs=0.35 / FPS)
 
 
 def test_autocorrelation_span_of_a_cosine_and_of_white_noise():

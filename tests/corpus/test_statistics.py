@@ -40,15 +40,15 @@ def test_compared_shapes_are_arkit_names():
 
 @pytest.mark.parametrize("shape", TESTED)
 def test_range_and_speed_within_a_factor_of_the_capture(both, shape):
-    ours, real = both[0]["shapes"][shape], both[1]["shapes"][shape]
-    assert real["p95"] / FACTOR < ours["p95"] < real["p95"] * FACTOR
-    assert real["mean_abs_velocity"] / FACTOR < ours["mean_abs_velocity"] < real["mean_abs_velocity"] * FACTOR
+    ours, real = both[0].shapes[shape], both[1].shapes[shape]
+    assert real.p95 / FACTOR < ours.p95 < real.p95 * FACTOR
+    assert real.mean_abs_velocity / FACTOR < ours.mean_abs_velocity < real.mean_abs_velocity * FACTOR
 
 
 def test_mouth_shapes_move_together_as_in_the_capture(both):
     def corr(stats, a, b):
-        names = stats["mouth_correlation"]["names"]
-        return stats["mouth_correlation"]["matrix"][names.index(a)][names.index(b)]
+        names = stats.mouth_correlation.names
+        return stats.mouth_correlation.matrix[names.index(a)][names.index(b)]
 
     for a, b in (("jawOpen", "mouthLowerDownLeft"), ("mouthFunnel", "mouthPucker"), ("mouthSmileLeft", "mouthSmileRight"),
                  ("jawOpen", "mouthUpperUpLeft")):

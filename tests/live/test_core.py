@@ -55,10 +55,10 @@ def test_fixed_lag_dp_is_the_whole_utterance_dp_when_the_lookahead_covers_it(db,
     live, frames, prefixes = _stream(model, utt)
     batch = _batch(db, utt, config)
     assert all(p == [] for p in prefixes)  # nothing is decided before the end
-    np.testing.assert_array_equal(live.committed, batch["path"])
+    np.testing.assert_array_equal(live.committed, batch.path)
     markers = np.stack([f.markers for f in frames])
-    assert markers.shape == batch["markers"].shape
-    np.testing.assert_allclose(markers, batch["markers"], atol=1e-4)
+    assert markers.shape == batch.rendered.markers.shape
+    np.testing.assert_allclose(markers, batch.rendered.markers, atol=1e-4)
 
 
 @pytest.mark.parametrize("method,lookahead,fps", [("dp", 0, 30), ("dp", 1, 30), ("dp", 2, 30), ("greedy", 1, 30),
@@ -74,7 +74,7 @@ def test_frames_are_sent_once_in_order_and_never_need_revision(db, utt, config, 
     # most frames go out before the end, and each sent frame is what rendering the final path gives
     early = [f for f in frames if f.ready_at < utt.ends[-1]]
     assert len(early) > len(frames) // 2
-    final = render_path(db, utt, np.array(live.committed), live.model.synth)["markers"]
+    final = render_path(db, utt, np.array(live.committed), live.model.synth).markers
     assert len(final) == len(frames)
     np.testing.assert_allclose(np.stack([f.markers for f in frames]), final, atol=1e-3)
     arkit = np.stack([f.arkit for f in frames])
@@ -96,7 +96,7 @@ def test_a_pause_does_not_hold_its_frames_back_for_the_next_phone(db, utt, confi
     wait = model.stream.pause_wait_s
     live, frames, _ = _stream(model, utt)
     markers = np.stack([f.markers for f in frames])
-    final = render_path(db, utt, np.array(live.committed), live.model.synth)["markers"]
+    final = render_path(db, utt, np.array(live.committed), live.model.synth).markers
     assert [f.index for f in frames] == list(range(len(final)))
     pause = _pause_frames(live, len(final))
     assert pause.sum() > 10
@@ -117,7 +117,7 @@ def test_a_pause_does_not_hold_its_frames_back_for_the_next_phone(db, utt, confi
 
 
 def test_a_short_lookahead_changes_few_decisions(db, utt, config):
-    whole = _batch(db, utt, config)["path"]
+    whole = _batch(db, utt, config).path
     live, _, _ = _stream(_model(db, config, method="dp", lookahead_phones=2), utt)
     spoken = np.array([p != "pau" for p in utt.phones])
     differ = (np.array(live.committed) != whole) & spoken
@@ -126,7 +126,7 @@ def test_a_short_lookahead_changes_few_decisions(db, utt, config):
 
 def test_greedy_with_the_whole_lookahead_is_batch_greedy(db, utt, config):
     live, _, _ = _stream(_model(db, config, method="greedy", lookahead_phones=len(utt)), utt)
-    batch = _batch(db, utt, config, search="greedy")["path"]
+    batch = _batch(db, utt, config, search="greedy").path
     spoken = np.array([p != "pau" for p in utt.phones])
     np.testing.assert_array_equal(np.array(live.committed)[spoken], batch[spoken])
 
@@ -175,8 +175,8 @@ def test_phones_declared_complete_release_every_frame_before_the_audio_ends(db, 
     frames = held + live.step(0.0)
     assert len(held) < len(frames) == live._total_frames()
     batch = _batch(db, utt, config)
-    np.testing.assert_array_equal(live.committed, batch["path"])  # the whole utterance in one window
-    np.testing.assert_allclose(np.stack([f.markers for f in frames]), batch["markers"], atol=1e-3)
+    np.testing.assert_array_equal(live.committed, batch.path)  # the whole utterance in one window
+    np.testing.assert_allclose(np.stack([f.markers for f in frames]), batch.rendered.markers, atol=1e-3)
     with pytest.raises(InputError, match="declared complete"):
         live.add_phone("aa", 10.0, 10.1)
     assert live.finish(utt.ends[-1]) == []
@@ -273,7 +273,7 @@ def test_trajectory_pauses_ease_toward_rest_without_waiting(trajectory_model, ut
 def test_the_trajectory_method_needs_a_trajectory_model(db, trajectory_model, tiny_trajectory, config, tiny_db):
     from facesynth.stages.stream import load_model
 
-    with pytest.raises(InputError, match="train-trajectory"):
+    with pytest.raises(InputError, match="fit-method trajectory"):
         _trajectory_model(db, config)
     with pytest.raises(InputError, match="build-db"):
         _model(trajectory_model, config, method="dp")

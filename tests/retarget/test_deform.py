@@ -58,7 +58,7 @@ def test_vertex_error_against_the_rig_ground_truth(face, config):
     # back of the head a little, where no marker is, and those vertices stay put.
     nearest = np.min(np.linalg.norm(rig.neutral[:, None] - rig.neutral[markers.vertices][None], axis=2), axis=1)
     moving = (displacement > 1.0) & (nearest < 20.0)[None]
-    assert fit["fit_rms"] < 1e-9 and fit["scale"] == pytest.approx(1.0)
+    assert fit.fit_rms < 1e-9 and fit.scale == pytest.approx(1.0)
     assert moving.sum() > 5000
     assert error[moving].mean() < 0.4 * displacement[moving].mean()
 
@@ -94,7 +94,7 @@ def test_the_production_rig_mesh(config):
     w[1, rig.shape_index("jawOpen")] = 0.8
     truth = rig.evaluate(w)
     frames, fit = animate(bound, truth[:, vertices], names, rig.neutral[vertices])
-    assert fit["scale"] == pytest.approx(1.0) and fit["fit_rms"] < 1e-9
+    assert fit.scale == pytest.approx(1.0) and fit.fit_rms < 1e-9
     assert np.allclose(frames[0], rig.neutral, atol=1e-4)
     displacement = np.linalg.norm(truth[1] - rig.neutral, axis=1)
     error = np.linalg.norm(frames[1] - truth[1], axis=1)

@@ -64,9 +64,9 @@ def test_metrics_worked_by_hand():
     syn[:, 2, 0] += 2.0  # one marker 2 mm off everywhere
     utt = Utterance(["aa", "p", "aa"], np.array([0.0, 0.04, 0.06]), np.array([0.04, 0.06, 0.1]), ["neutral"] * 3)
     m = evaluation.sentence_metrics(syn, truth, utt, 100.0, names, settings)
-    assert m["err_mm2"] == pytest.approx(4.0 / 3.0)  # Eq. 13: (2 mm)^2 on one of three markers
-    assert m["velocity_rms_mm_s"] == pytest.approx(0.0)
-    assert m["bilabials"] == 1 and m["lip_closure_rate"] == 1.0 and m["min_lip_gap_mm"] == 0.0
+    assert m.err_mm2 == pytest.approx(4.0 / 3.0)  # Eq. 13: (2 mm)^2 on one of three markers
+    assert m.velocity_rms_mm_s == pytest.approx(0.0)
+    assert m.bilabials == 1 and m.lip_closure_rate == 1.0 and m.min_lip_gap_mm == 0.0
 
 
 def test_missing_split_and_markers_are_named(tiny_db, tiny_artifacts):
@@ -102,4 +102,4 @@ def test_gaps_in_the_capture_are_left_out_of_the_error():
     truth[2:4, 2] = np.nan  # a long gap the normalizer could not fill
     utt = Utterance(["aa"], np.array([0.0]), np.array([0.06]), ["neutral"])
     m = evaluation.sentence_metrics(syn, truth, utt, 100.0, names, settings)
-    assert m["err_mm2"] == pytest.approx(3.0)  # every seen marker is off by (1, 1, 1) mm; the gap is skipped, not NaN
+    assert m.err_mm2 == pytest.approx(3.0)  # every seen marker is off by (1, 1, 1) mm; the gap is skipped, not NaN

@@ -43,8 +43,8 @@ def test_a_method_that_outputs_the_truth_scores_zero(tiny_sentences):
     settings = Config.load().settings("evaluate")
     s = sentences[0]
     m = evaluation.clean_metrics(s.clean, s.clean, s.utterance, db.fps, db.marker_names, settings)
-    assert m["err_clean_mm2"] == 0.0 and m["velocity_ms_clean"] == 0.0 and m["mouth_r"] == pytest.approx(1.0)
-    assert np.array_equal(m["_onsets"], m["_onsets_clean"], equal_nan=True)
+    assert m.err_clean_mm2 == 0.0 and m.velocity_ms_clean == 0.0 and m.mouth_r == pytest.approx(1.0)
+    assert np.array_equal(m.onsets, m.onsets_clean, equal_nan=True)
     # the rig path openfacefx takes (weights -> rig -> markers -> normalized head frame) gives
     # the clean truth back from the truth's own rig weights (written with four decimals)
     truth = read_truth(folder.folder / "groundtruth" / f"{s.take}_truth.csv")

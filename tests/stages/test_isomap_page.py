@@ -49,12 +49,12 @@ def test_images_have_axes_in_map_coordinates(page):
             img = np.asarray(Image.open(page / "img" / f"{phone}_{kind}.png").convert("L"))
             assert (img[y1, x0:x1 + 1] < 80).all() and (img[y0:y1 + 1, x0] < 80).all()  # the frame's bottom and left
             t = isomap.map_transform(points, size)
-            for v in isomap.nice_ticks(t["lo"][0], t["hi"][0]):  # tick marks below the frame
-                px = round(t["x0"] + t["sx"] * v)
+            for v in isomap.nice_ticks(t.lo[0], t.hi[0]):  # tick marks below the frame
+                px = round(t.x0 + t.sx * v)
                 assert (img[y1 + 1:y1 + 6, px] < 80).all()
             assert (img[y1 + 7:y1 + 20, x0:x1] < 128).any()  # tick labels
             # every frame lies inside the frame, where the transform puts it
-            px = np.stack([t["x0"] + t["sx"] * points[:, 0], t["y0"] + t["sy"] * points[:, 1]], -1)
+            px = np.stack([t.x0 + t.sx * points[:, 0], t.y0 + t.sy * points[:, 1]], -1)
             assert (px[:, 0] > x0).all() and (px[:, 0] < x1).all() and (px[:, 1] > y0).all() and (px[:, 1] < y1).all()
 
 
@@ -91,7 +91,7 @@ def test_page_in_headless_chromium_shows_axes_and_hover(page, tmp_path):
     maps = PhonemeMaps.read(page / "iso.h5")
     c = maps.clusters[sorted(maps.clusters)[0]]
     t = isomap.map_transform(c.isomap, Config.load().settings("isomap").image_size)
-    px, py = t["x0"] + t["sx"] * c.isomap[0, 0], t["y0"] + t["sy"] * c.isomap[0, 1]
+    px, py = t.x0 + t.sx * c.isomap[0, 0], t.y0 + t.sy * c.isomap[0, 1]
     probe = page / "img" / "probe.html"
     probe.write_text((page / "img" / "index.html").read_text() + (
         "<script>var b=document.querySelector('.map').getBoundingClientRect();"
@@ -106,7 +106,7 @@ def test_page_in_headless_chromium_shows_axes_and_hover(page, tmp_path):
     db_take = json.loads(re.search(r"id=\"mapdata\">(.*?)</script>", dom, re.S).group(1))["nodes"][str(node)]
     assert f"node {node}, take {db_take[0]}, {c.emotion[0]}" in tip
     x, y = (float(v) for v in re.search(r"x y: (\S+) (\S+)", tip).groups())
-    assert (x, y) == pytest.approx(tuple(c.isomap[0]), abs=2.0 / t["sx"])  # within two pixels
+    assert (x, y) == pytest.approx(tuple(c.isomap[0]), abs=2.0 / t.sx)  # within two pixels
     assert f"isomap pick isomap.h5 {c.phone} " in tip
 
 

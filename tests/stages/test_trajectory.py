@@ -215,8 +215,12 @@ def test_bad_input_exits_1_with_one_sentence_and_writes_nothing(tiny_trajectory,
 def test_the_cli_trains_and_synthesizes(tiny_db, tiny_corpus, held_out_take, tiny_trajectory, tmp_path):
     tg = tiny_corpus / "labels" / f"{held_out_take}.TextGrid"
     ks = tiny_trajectory.parent / "keyshapes.h5"
-    r = CliRunner().invoke(main, ["train-trajectory", str(tiny_db), "--keyshapes", str(ks), "-o", str(tmp_path / "t.h5")])
+    r = CliRunner().invoke(main, ["fit-method", "trajectory", str(tiny_db), "--keyshapes", str(ks), "-o", str(tmp_path / "t.h5")])
     assert r.exit_code == 0 and "trajectory model:" in r.output
+    # the deprecated name does the same, saying so
+    r = CliRunner().invoke(main, ["train-trajectory", str(tiny_db), "--keyshapes", str(ks), "-o", str(tmp_path / "u.h5")])
+    assert r.exit_code == 0 and "deprecated" in r.output and "fit-method trajectory" in r.output
+    assert (tmp_path / "u.h5").exists()
     r = CliRunner().invoke(main, ["synthesize", "--method", "trajectory", str(tmp_path / "t.h5"), "--phonemes", str(tg),
                                   "-o", str(tmp_path / "m.h5"), "--set", "trajectory.smoothness=5"])
     assert r.exit_code == 0 and "by the trajectory method" in r.output

@@ -276,8 +276,8 @@ def _write_json(path: Path, data: dict) -> None:
         tmp.write_text(json.dumps(data, indent=1, sort_keys=True) + "\n", encoding="utf-8")
 
 
-def _check_inputs(line: Line, job: Job) -> str:
-    """The line's emotion name (default neutral); raises InputError for a bad row."""
+def _check_inputs(line: Line, job: Job) -> tuple[str, Path]:
+    """The line's emotion name (default neutral) and audio file; raises InputError for a bad row."""
     if line.audio is None:
         raise InputError("no audio file given in the 'audio' column.")
     for name, p in (("audio", line.audio), ("alignment", line.alignment), ("emotions", line.emotions),
@@ -292,7 +292,7 @@ def _check_inputs(line: Line, job: Job) -> str:
         if name in EXPORT_FORMATS:
             EXPORT_FORMATS.get(name).require()
     return core.emotion_name(line.emotion or "neutral", job.ingest.emotions, job.ingest.emotion_aliases,
-                             "the emotion column")
+                             "the emotion column"), line.audio
 
 
 def run_line(line: Line, job: Job) -> LineResult:
@@ -310,7 +310,7 @@ def _run_line(line: Line, job: Job) -> LineResult:
         if line.problem:
             raise InputError(line.problem)
         old = _read_manifest(manifest_path(job, line.id))
-        emotion = _check_inputs(line, job)
+        emotion, audio = _check_inputs(line, job)
         key = input_key(line, job)
         outputs = output_paths(job, line.id)
         if not job.redo and old is not None and old.get("inputs") == key and old.get("status") == "ok" \
@@ -327,7 +327,7 @@ def _run_line(line: Line, job: Job) -> LineResult:
         for p in list(outputs.values()) + extra_paths(job, line.id) + [job.out_dir / f"{line.id}.TextGrid"]:
             if p.exists() and p.name not in made_here and not job.redo:
                 raise InputError(f"{p} exists and was not written by this batch; remove it or pass --overwrite.")
-        _do_line(line, job, emotion, key, outputs, result)
+        _do_line(line, job, emotion, audio, key, outputs, result)
         result.status = "ok"
     except FacesynthError as exc:
         if not line.problem:  # a line with a duplicated id must not touch the first one's files
@@ -354,17 +354,19 @@ def _read_manifest(path: Path) -> dict | None:
         return None
 
 
-def _do_line(line: Line, job: Job, emotion: str, key: dict, outputs: dict[str, Path], result: LineResult) -> None:
+def _do_line(line: Line, job: Job, emotion: str, audio: Path, key: dict, outputs: dict[str, Path],
+             result: LineResult) -> None:
+    """The line's outputs; ``emotion`` and ``audio`` (its audio file) as :func:`_check_inputs` found them."""
     t0 = time.perf_counter()
-    samples, rate = read_audio(line.audio)
+    samples, rate = read_audio(audio)
     result.audio_s = len(samples) / rate
     one_emotion = None if line.emotions is not None else emotion
     if line.alignment is not None:
-        read = core.read_utterance(job.ingest, phones_path=line.alignment, audio=line.audio,
+        read = core.read_utterance(job.ingest, phones_path=line.alignment, audio=audio,
                                    emotions_path=line.emotions, emotion=one_emotion, samples=(samples, rate))
         result.method = "given"
     else:  # a line without text is recognised (the script reader makes an empty cell None)
-        read = core.read_utterance(job.ingest, audio=line.audio, text=line.text, align=job.align,
+        read = core.read_utterance(job.ingest, audio=audio, text=line.text, align=job.align,
                                    emotions_path=line.emotions, emotion=one_emotion, samples=(samples, rate))
         assert read.alignment is not None  # audio is aligned or recognised
         result.method, result.recognized = read.alignment.method, read.alignment.recognized
@@ -378,7 +380,7 @@ def _do_line(line: Line, job: Job, emotion: str, key: dict, outputs: dict[str, P
     source, prepared, result.load_s = database(job.db, job.method, job.settings)
     constraints = core.constraints_for(member, source, line.constraints, utt)
     synthesis = core.synthesize(member, source, utt, job.settings, constraints, prepared=prepared,
-                                source_where=str(job.db), where=str(line.alignment or line.audio),
+                                source_where=str(job.db), where=str(line.alignment or audio),
                                 audio=(samples, rate))
     motion = synthesis.motion
     result.warnings += list(synthesis.summary.warnings)
@@ -391,7 +393,7 @@ def _do_line(line: Line, job: Job, emotion: str, key: dict, outputs: dict[str, P
             segments, words = read.alignment.phones, read.alignment.words
             write_textgrid(tmp, {"phones": segments, "words": words} if words else {"phones": segments}, segments[-1].end)
         result.outputs.append(grid.name)
-    records = [{"path": str(job.db), "kind": member.source_kind, "sha256": job.db_sha256}]
+    records: list[dict[str, str | None]] = [{"path": str(job.db), "kind": member.source_kind, "sha256": job.db_sha256}]
     records += [{"path": str(p), "kind": None, "sha256": key[name]}
                 for name, p in (("audio", line.audio), ("alignment", line.alignment), ("emotions", line.emotions),
                                 ("constraints", line.constraints)) if p is not None]
@@ -403,7 +405,7 @@ def _do_line(line: Line, job: Job, emotion: str, key: dict, outputs: dict[str, P
         result.outputs.append(motion_path.name)
     try:
         if any(rig_output(o) for o in job.outputs):
-            _rig_outputs(line, job, motion_path, outputs, (samples, rate), result)
+            _rig_outputs(line, job, motion_path, outputs, audio, (samples, rate), result)
         if "anim" in job.outputs:
             _mesh_outputs(line, job, motion, motion_path, outputs, result)
     finally:
@@ -417,16 +419,17 @@ def _do_line(line: Line, job: Job, emotion: str, key: dict, outputs: dict[str, P
                    "warnings": result.warnings, "recognized": result.recognized}})
 
 
-def _rig_outputs(line: Line, job: Job, motion_path: Path, outputs: dict[str, Path], audio: tuple, result: LineResult) -> None:
+def _rig_outputs(line: Line, job: Job, motion_path: Path, outputs: dict[str, Path], audio_path: Path, audio: tuple,
+                 result: LineResult) -> None:
     """The facial solve of the line's motion (as written at ``motion_path``, so the curves are
     those ``facesynth solve`` makes of it) on the job's rig, and what is made of its curves: the
     curves themselves, the Live Link Face CSV (at ``export.arkit_fps``), the glTF with the line's
-    audio beside it, the USD and the video (``audio``: the line's samples and rate, for a glTF
-    beside an audio file that is no WAV)."""
+    audio beside it, the USD and the video (``audio_path``: the line's audio file; ``audio``: its
+    samples and rate, for a glTF beside an audio file that is no WAV)."""
     assert job.solve is not None and job.export is not None  # prepare() fills them
     rig = rig_of(job)
     motion = Motion.read(motion_path)
-    where = str(line.alignment or line.audio)
+    where = str(line.alignment or audio_path)
     weights, residual, _ = solve_motion(motion, rig, job.solve, where)
     curves = solved_curves(motion, rig, weights, residual, motion.frame_provenance(motion_path))
     curves_path = outputs.get("curves") or job.out_dir / f"{line.id}.curves.h5.part-{os.getpid()}"
@@ -436,15 +439,15 @@ def _rig_outputs(line: Line, job: Job, motion_path: Path, outputs: dict[str, Pat
         if "curves" in outputs:
             result.outputs.append(curves_path.name)
         anim = from_curves(curves, rig, curves_path)
+        beside = audio_path if audio_path.suffix.lower() == ".wav" else audio  # a WAV is copied as it is
         for name in job.outputs:
             if name in EXPORT_FORMATS:
                 fmt = EXPORT_FORMATS.get(name)
-                audio = line.audio if line.audio.suffix.lower() == ".wav" else audio
                 written = write_export(fmt, anim.resampled(fmt.rate(anim, job.export)), outputs[name],
-                                       ExportOptions(name=line.id, audio=audio), overwrite=True)
+                                       ExportOptions(name=line.id, audio=beside), overwrite=True)
                 result.outputs += [f.name for f in written]
         if "avi" in outputs:
-            render_video([curves_path], [line.audio], outputs["avi"], job.render, None, overwrite=True,
+            render_video([curves_path], [audio_path], outputs["avi"], job.render, None, overwrite=True,
                          rig_path=job.rig, binding=job.rig_binding)
             result.outputs.append(outputs["avi"].name)
     finally:

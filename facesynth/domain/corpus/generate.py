@@ -115,21 +115,22 @@ def perform(words: list[str], emotion: str, rng: np.random.Generator, rig: Rig, 
     """The actress reads ``words`` in ``emotion`` (sometimes changing to another at a word boundary),
     articulating with ``settings`` (default: ``[sample_corpus]`` of configs/default.toml)."""
     settings = settings or default_settings()
-    second, switch_word = None, None
+    change_at: tuple[str, int] | None = None  # (the second emotion, the word it starts on)
     if len(words) >= 3 and rng.random() < change_probability:
         second = str(rng.choice([e for e in EMOTIONS if e != emotion]))
-        switch_word = int(rng.integers(1, len(words)))
-    styles = [STYLES[second if switch_word is not None and k >= switch_word else emotion] for k in range(len(words))]
+        change_at = (second, int(rng.integers(1, len(words))))
+    styles = [STYLES[change_at[0] if change_at is not None and k >= change_at[1] else emotion] for k in range(len(words))]
     utt = time_utterance(words, styles, rng, pause_prob)
     n_frames = int(np.floor(utt.duration * fps)) + 1
-    switch_s = utt.word_spans[switch_word][1] if switch_word is not None else None
-    track = emotion_track(emotion, second, switch_s, n_frames, fps, rng)
+    change = (change_at[0], utt.word_spans[change_at[1]][1]) if change_at is not None else None  # (second, switch_s)
+    track = emotion_track(emotion, change, n_frames, fps, rng)
     style_rows = [STYLES[e] for e in EMOTIONS]
     stiffness = track.blend @ np.array([s.stiffness for s in style_rows])
     amplitude = track.at(0.5 * (utt.starts + utt.ends), fps) @ np.array([s.amplitude for s in style_rows])
 
     f0, accents = pitch(utt, STYLES[emotion], fps, rng)
-    if second is not None:
+    if change is not None:
+        second, switch_s = change
         f0_second, accents_second = pitch(utt, STYLES[second], fps, rng)
         x = track.blend[:, EMOTIONS.index(second)]
         f0 = (1 - x) * f0 + x * f0_second
@@ -230,10 +231,28 @@ def default_settings() -> SampleCorpusSettings:
     return Config.load().settings("sample_corpus")
 
 
+@dataclass(frozen=True)
+class GeneratedCorpus:
+    """What :func:`generate` wrote.
+
+    takes: takes (one C3D, WAV and TextGrid each).
+    frames: capture frames over all takes.
+    train_phones: phone segments of the training takes.
+    contamination_events: marker spikes and swaps put into the capture (for prune to find).
+    seconds: capture length over all takes (s).
+    """
+
+    takes: int
+    frames: int
+    train_phones: int
+    contamination_events: int
+    seconds: float
+
+
 def generate(out_dir: Path, preset: str = "small", seed: int = 0, overwrite: bool = False,
-             settings: SampleCorpusSettings | None = None) -> dict:
+             settings: SampleCorpusSettings | None = None) -> GeneratedCorpus:
     """Write the sample corpus into ``out_dir``, the actress articulating with ``settings``
-    (default: :func:`default_settings`). Returns a summary (takes, frames, nodes...)."""
+    (default: :func:`default_settings`)."""
     settings = settings or default_settings()
     if preset not in PRESETS:
         raise InputError(f"unknown preset {preset!r}; choose tiny, small or paper.")
@@ -306,5 +325,5 @@ def generate(out_dir: Path, preset: str = "small", seed: int = 0, overwrite: boo
         writer = csv.DictWriter(fh, fieldnames=list(manifest_rows[0]))
         writer.writeheader()
         writer.writerows(manifest_rows)
-    return {"takes": len(manifest_rows), "frames": n_frames_total, "train_phones": n_phones_train,
-            "contamination_events": len(contamination), "seconds": n_frames_total / CAPTURE_FPS}
+    return GeneratedCorpus(len(manifest_rows), n_frames_total, n_phones_train, len(contamination),
+                           n_frames_total / CAPTURE_FPS)

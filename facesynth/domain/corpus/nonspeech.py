@@ -85,15 +85,18 @@ class EmotionTrack:
         return self.blend[idx]
 
 
-def emotion_track(first: str, second: str | None, switch_s: float | None, n_frames: int, fps: float,
+def emotion_track(first: str, change: tuple[str, float] | None, n_frames: int, fps: float,
                   rng: np.random.Generator) -> EmotionTrack:
-    """A take's emotion: ``first`` throughout, or ``first`` then ``second`` cross-faded around ``switch_s``."""
+    """A take's emotion: ``first`` throughout, or with ``change`` = (``second``, ``switch_s``)
+    ``first`` then ``second`` cross-faded around ``switch_s``."""
     t = np.arange(n_frames) / fps
     blend = np.zeros((n_frames, len(EMOTIONS)))
     a = EMOTIONS.index(first)
-    if second is None:
+    switch_s: float | None = None
+    if change is None:
         blend[:, a] = 1.0
     else:
+        second, switch_s = change
         ramp = rng.uniform(*SWITCH_RAMP_S)
         x = np.clip((t - switch_s) / ramp + 0.5, 0.0, 1.0)
         x = x * x * (3 - 2 * x)  # smooth onset/offset

@@ -94,7 +94,9 @@ def lexicon() -> dict[str, tuple[tuple[str, ...], tuple[int, ...]]]:
         if word not in cmu:
             continue
         arpabet = cmu[word][0]
-        phones = tuple(to_festival(p) for p in arpabet)
+        phones = tuple(f for p in arpabet if (f := to_festival(p)) is not None)
+        if len(phones) != len(arpabet):  # a phone with no Festival name: not a word to speak
+            continue
         stress = tuple(1 if p[-1] in "12" else 0 for p in arpabet)
         out[word] = (phones, stress)
     return out
@@ -106,12 +108,14 @@ def design_sentences(n: int, rng: np.random.Generator, min_phones: int, max_phon
     lex = lexicon()
     words = sorted(lex)
     covered: set[tuple[str, str]] = set()
-    sentences = []
+    sentences: list[list[str]] = []
     for _ in range(n):
-        best, best_score = None, -1
+        best: list[str] = []  # the first candidate replaces it (a score is >= 0)
+        best_score = -1
         for _ in range(40):
             target = int(rng.integers(min_phones, max_phones + 1))
-            sent, count = [], 0
+            sent: list[str] = []
+            count = 0
             while count < target:
                 w = words[int(rng.integers(len(words)))]
                 if count + len(lex[w][0]) > max_phones and count >= min_phones:

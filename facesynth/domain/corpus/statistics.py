@@ -10,6 +10,7 @@ inner-lip gap on the mesh at the centre of every bilabial.
 from __future__ import annotations
 
 import csv
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -49,7 +50,35 @@ def resample(weights: np.ndarray, fps: float, new_fps: float) -> np.ndarray:
     return np.stack([np.interp(new_t, t, weights[:, k]) for k in range(weights.shape[1])], 1)
 
 
-def curve_statistics(takes: list[np.ndarray], names: list[str], fps: float) -> dict:
+@dataclass(frozen=True)
+class ShapeStatistics:
+    """One shape's curve over a source's frames: ``p5`` and ``p95`` its 5th and 95th percentiles
+    (weight, 0..1) and ``mean_abs_velocity`` its mean |velocity| (weight per second)."""
+
+    p5: float
+    p95: float
+    mean_abs_velocity: float
+
+
+@dataclass(frozen=True)
+class MouthCorrelation:
+    """The Pearson correlation of the mouth shapes: ``names`` (:data:`MOUTH_SHAPES`) and ``matrix``
+    (len(names) x len(names), rounded to 3 decimals, 0 where a shape does not move)."""
+
+    names: list[str]
+    matrix: list[list[float]]
+
+
+@dataclass(frozen=True)
+class CurveStatistics:
+    """What :func:`curve_statistics` measured: ``shapes``, shape name (:data:`COMPARED_SHAPES`) -> its
+    statistics, and ``mouth_correlation``. ``dataclasses.asdict`` gives the JSON the benchmarks write."""
+
+    shapes: dict[str, ShapeStatistics]
+    mouth_correlation: MouthCorrelation
+
+
+def curve_statistics(takes: list[np.ndarray], names: list[str], fps: float) -> CurveStatistics:
     """Per shape: p5, p95 and mean |velocity| (1/s) over the frames of ``takes`` (each (T, K)
     in ``names`` order), and the correlation matrix of :data:`MOUTH_SHAPES`."""
     frames = np.concatenate(takes)
@@ -57,12 +86,12 @@ def curve_statistics(takes: list[np.ndarray], names: list[str], fps: float) -> d
     per_shape = {}
     for name in COMPARED_SHAPES:
         k = names.index(name)
-        per_shape[name] = {"p5": float(np.percentile(frames[:, k], 5)), "p95": float(np.percentile(frames[:, k], 95)),
-                           "mean_abs_velocity": float(speed[:, k].mean())}
+        per_shape[name] = ShapeStatistics(float(np.percentile(frames[:, k], 5)), float(np.percentile(frames[:, k], 95)),
+                                          float(speed[:, k].mean()))
     idx = [names.index(n) for n in MOUTH_SHAPES]
     with np.errstate(invalid="ignore", divide="ignore"):
         corr = np.corrcoef(frames[:, idx].T)
-    return {"shapes": per_shape, "mouth_correlation": {"names": list(MOUTH_SHAPES), "matrix": np.nan_to_num(corr).round(3).tolist()}}
+    return CurveStatistics(per_shape, MouthCorrelation(list(MOUTH_SHAPES), np.nan_to_num(corr).round(3).tolist()))
 
 
 def blink_events(blink: np.ndarray, fps: float, threshold: float = 0.5) -> list[tuple[int, float]]:
@@ -118,12 +147,29 @@ def normalise_by_range(curves: list[np.ndarray], low_pct: float = 5.0, high_pct:
     return [(np.asarray(c, np.float64) - low) / scale for c in curves], (low, high)
 
 
-def _percentiles(values: np.ndarray) -> dict[str, float]:
-    return {"p50": float(np.percentile(values, 50)), "p95": float(np.percentile(values, 95))}
+@dataclass(frozen=True)
+class Percentiles:
+    """The median (``p50``) and 95th percentile (``p95``) of a quantity, in its unit."""
+
+    p50: float
+    p95: float
+
+
+def _percentiles(values: np.ndarray) -> Percentiles:
+    return Percentiles(float(np.percentile(values, 50)), float(np.percentile(values, 95)))
+
+
+@dataclass(frozen=True)
+class MotionStatistics:
+    """Speed of range-normalised curves (:func:`motion_statistics`): ``velocity`` (range/s) and
+    ``acceleration`` (range/s^2), each in absolute value."""
+
+    velocity: Percentiles
+    acceleration: Percentiles
 
 
 def motion_statistics(curves: list[np.ndarray], fps: float = ARTICULATION_FPS,
-                      masks: list[np.ndarray] | None = None) -> dict:
+                      masks: list[np.ndarray] | None = None) -> MotionStatistics:
     """Speed of range-normalised curves (each (T,), e.g. from :func:`normalise_by_range`) at
     ``fps``: |velocity| (range/s, central differences) and |acceleration| (range/s^2, second
     differences), each as median and 95th percentile over the frames where ``masks`` (each (T,)
@@ -132,11 +178,19 @@ def motion_statistics(curves: list[np.ndarray], fps: float = ARTICULATION_FPS,
     speed = np.concatenate([np.abs(np.gradient(c, 1.0 / fps))[m] for c, m in zip(curves, masks) if len(c) > 2])
     accel = np.concatenate([np.abs(np.gradient(np.gradient(c, 1.0 / fps), 1.0 / fps))[m]
                             for c, m in zip(curves, masks) if len(c) > 2])
-    return {"velocity": _percentiles(speed), "acceleration": _percentiles(accel)}
+    return MotionStatistics(_percentiles(speed), _percentiles(accel))
+
+
+@dataclass(frozen=True)
+class OpeningEvents:
+    """Mouth openings (maxima) and closings (minima) per second of speech (:func:`opening_events`)."""
+
+    openings_per_s: float
+    closings_per_s: float
 
 
 def opening_events(curves: list[np.ndarray], fps: float = ARTICULATION_FPS, prominence: float = 0.25,
-                   masks: list[np.ndarray] | None = None) -> dict:
+                   masks: list[np.ndarray] | None = None) -> OpeningEvents:
     """Openings (maxima) and closings (minima) per second of range-normalised mouth-opening
     curves (each (T,)): the extrema that stand out by at least ``prominence`` of the range,
     counted where ``masks`` (each (T,) bool; default all) is true, per second of those frames."""
@@ -146,18 +200,28 @@ def opening_events(curves: list[np.ndarray], fps: float = ARTICULATION_FPS, prom
     seconds = sum(int(m.sum()) for m in masks) / fps
     openings = sum(int(m[find_peaks(c, prominence=prominence)[0]].sum()) for c, m in zip(curves, masks))
     closings = sum(int(m[find_peaks(-c, prominence=prominence)[0]].sum()) for c, m in zip(curves, masks))
-    return {"openings_per_s": openings / seconds, "closings_per_s": closings / seconds}
+    return OpeningEvents(openings / seconds, closings / seconds)
+
+
+@dataclass(frozen=True)
+class AudioLag:
+    """The mouth opening's lag behind the audio (:func:`audio_lag`): ``lag_s`` (s; positive: the
+    mouth moves after the sound), ``r`` the Pearson r at the best whole-frame lag and ``r_at_0``
+    at no lag."""
+
+    lag_s: float
+    r: float
+    r_at_0: float
 
 
 def audio_lag(envelopes: list[np.ndarray], openings: list[np.ndarray], fps: float = ARTICULATION_FPS,
-              max_lag_s: float = 0.4) -> dict:
+              max_lag_s: float = 0.4) -> AudioLag:
     """The lag (s) of the mouth opening behind the audio: the peak of their cross-correlation.
 
     envelopes, openings : per take, (T,) the audio's loudness envelope and the mouth opening at
     ``fps``. For every lag k (frames, |k| <= ``max_lag_s``) the Pearson r of envelope[t] and
     opening[t + k] over all takes' overlapping frames; the peak is refined by a parabola through
     it and its neighbours. Positive: the mouth moves after the sound; negative: before it.
-    Returns {"lag_s", "r" (at the best whole-frame lag), "r_at_0"}.
     """
     max_lag = int(round(max_lag_s * fps))
     lags = np.arange(-max_lag, max_lag + 1)
@@ -179,7 +243,7 @@ def audio_lag(envelopes: list[np.ndarray], openings: list[np.ndarray], fps: floa
         left, mid, right = r[best - 1], r[best], r[best + 1]
         curvature = left - 2 * mid + right
         shift = 0.5 * (left - right) / curvature if curvature < 0 else 0.0
-    return {"lag_s": float((lags[best] + shift) / fps), "r": float(r[best]), "r_at_0": float(r[max_lag])}
+    return AudioLag(float((lags[best] + shift) / fps), float(r[best]), float(r[max_lag]))
 
 
 def autocorrelation_span(curves: list[np.ndarray], fps: float = ARTICULATION_FPS, level: float = 0.5,
@@ -254,32 +318,56 @@ def speech_masks(phones: list[list[tuple[float, float, str]]], lengths: list[int
     return masks
 
 
+@dataclass(frozen=True)
+class ArticulationStatistics:
+    """All articulation statistics of one source (:func:`articulation_statistics`);
+    ``dataclasses.asdict`` gives the JSON the benchmarks write, keys in this order.
+
+    seconds: frames over all takes (s).
+    opening_range: percentile name ("p5", "p50", "p95") -> the mouth opening there (source unit).
+    jaw_range: the same of the jaw opening (weight).
+    speech_seconds: the speech frames (s), outside long pauses; None without phones.
+    opening, jaw: :func:`motion_statistics` of the range-normalised curves.
+    events: :func:`opening_events` of the range-normalised mouth opening.
+    coarticulation_span_s: :func:`autocorrelation_span` of the range-normalised mouth opening (s).
+    audio_lag: :func:`audio_lag`; None without the audio envelopes.
+    phone_class_opening: :func:`phone_class_opening`; None without phones.
+    """
+
+    seconds: float
+    opening_range: dict[str, float]
+    jaw_range: dict[str, float]
+    speech_seconds: float | None
+    opening: MotionStatistics
+    jaw: MotionStatistics
+    events: OpeningEvents
+    coarticulation_span_s: float
+    audio_lag: AudioLag | None
+    phone_class_opening: dict[str, float | None] | None
+
+
 def articulation_statistics(openings: list[np.ndarray], jaw: list[np.ndarray], fps: float = ARTICULATION_FPS,
                             envelopes: list[np.ndarray] | None = None,
-                            phones: list[list[tuple[float, float, str]]] | None = None) -> dict:
+                            phones: list[list[tuple[float, float, str]]] | None = None) -> ArticulationStatistics:
     """All articulation statistics of one source: takes' mouth openings (T,) in the source's
     unit and jaw-opening weights (T,) (ARKit ``jawOpen`` or its counterpart), all at ``fps``;
     optionally the audio envelopes (T,) (for the lag) and the phones (for the per-class opening).
-
-    Returns {"opening_range" (p5/p50/p95, source unit), "jaw_range" (p5/p50/p95, weight),
-    "opening" and "jaw" (:func:`motion_statistics` of the range-normalised curves), "events"
-    (:func:`opening_events`), both over the speech frames where the phones are known (all frames
-    otherwise), "speech_seconds", "coarticulation_span_s", "audio_lag" or None,
-    "phone_class_opening" or None, "seconds"}.
+    The speed and event statistics are over the speech frames where the phones are known (all
+    frames otherwise).
     """
     normalised, _ = normalise_by_range(openings)
     jaw_normalised, _ = normalise_by_range(jaw)
     masks = speech_masks(phones, [len(c) for c in openings], fps) if phones is not None else None
     all_open, all_jaw = np.concatenate(openings), np.concatenate(jaw)
-    return {
-        "seconds": float(len(all_open) / fps),
-        "opening_range": {f"p{q}": float(np.percentile(all_open, q)) for q in (5, 50, 95)},
-        "jaw_range": {f"p{q}": float(np.percentile(all_jaw, q)) for q in (5, 50, 95)},
-        "speech_seconds": float(sum(int(m.sum()) for m in masks) / fps) if masks is not None else None,
-        "opening": motion_statistics(normalised, fps, masks),
-        "jaw": motion_statistics(jaw_normalised, fps, masks),
-        "events": opening_events(normalised, fps, masks=masks),
-        "coarticulation_span_s": autocorrelation_span(normalised, fps, masks=masks),
-        "audio_lag": audio_lag(envelopes, normalised, fps) if envelopes is not None else None,
-        "phone_class_opening": phone_class_opening(normalised, phones, fps) if phones is not None else None,
-    }
+    return ArticulationStatistics(
+        seconds=float(len(all_open) / fps),
+        opening_range={f"p{q}": float(np.percentile(all_open, q)) for q in (5, 50, 95)},
+        jaw_range={f"p{q}": float(np.percentile(all_jaw, q)) for q in (5, 50, 95)},
+        speech_seconds=float(sum(int(m.sum()) for m in masks) / fps) if masks is not None else None,
+        opening=motion_statistics(normalised, fps, masks),
+        jaw=motion_statistics(jaw_normalised, fps, masks),
+        events=opening_events(normalised, fps, masks=masks),
+        coarticulation_span_s=autocorrelation_span(normalised, fps, masks=masks),
+        audio_lag=audio_lag(envelopes, normalised, fps) if envelopes is not None else None,
+        phone_class_opening=phone_class_opening(normalised, phones, fps) if phones is not None else None,
+    )

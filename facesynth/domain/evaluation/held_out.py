@@ -358,8 +358,41 @@ class EmotionClassifier:
         return self.pipeline.predict(np.nan_to_num(coeffs))
 
 
+@dataclass(frozen=True)
+class SentenceMetrics:
+    """Metrics of one sentence against its (noisy) capture (:func:`sentence_metrics`).
+
+    frames: frames compared (the shorter of the two, at the capture rate).
+    err_mm2: Eq. 13, the mean over frames of the summed squared marker distance (mm^2), over the
+        marker samples the capture has.
+    rms_mm: its square root (mm).
+    velocity_rms_mm_s: RMS of the velocity error (mm/s).
+    bilabials: /p b m/ tokens the capture sees the lips in.
+    lip_closure_rate, lip_closure_rate_capture: the fraction of those tokens whose smallest lip gap
+        is below ``evaluate.closure_mm`` in the synthesis and in the capture; None without tokens.
+    min_lip_gap_mm: the synthesis's smallest lip gap on a token, mean over tokens (mm); None
+        without tokens.
+    """
+
+    frames: int
+    err_mm2: float
+    rms_mm: float
+    velocity_rms_mm_s: float
+    bilabials: int
+    lip_closure_rate: float | None
+    lip_closure_rate_capture: float | None
+    min_lip_gap_mm: float | None
+
+    def row(self) -> dict[str, Any]:
+        """The fields as a per-sentence row of the report (``metrics.json``'s ``per_sentence``)."""
+        return {"frames": self.frames, "err_mm2": self.err_mm2, "rms_mm": self.rms_mm,
+                "velocity_rms_mm_s": self.velocity_rms_mm_s, "bilabials": self.bilabials,
+                "lip_closure_rate": self.lip_closure_rate, "lip_closure_rate_capture": self.lip_closure_rate_capture,
+                "min_lip_gap_mm": self.min_lip_gap_mm}
+
+
 def sentence_metrics(syn: np.ndarray, truth: np.ndarray, utt: Utterance, fps: float, names: list[str],
-                     settings: EvaluateSettings) -> dict:
+                     settings: EvaluateSettings) -> SentenceMetrics:
     """Metrics of one sentence: synthesized ``syn`` against captured ``truth`` (both (T, M, 3) mm at
     ``fps``): Eq. 13 error (mm^2) and its root, velocity RMS (mm/s), and lip closure on /p b m/.
     """
@@ -375,23 +408,47 @@ def sentence_metrics(syn: np.ndarray, truth: np.ndarray, utt: Utterance, fps: fl
         if not np.isnan(gaps_true[fa:fb]).all():
             closures.append((gaps_syn[fa:fb].min(), np.nanmin(gaps_true[fa:fb])))
     closures = np.array(closures).reshape(-1, 2)
-    return {
-        "frames": n, "err_mm2": err, "rms_mm": float(np.sqrt(err)),
-        "velocity_rms_mm_s": float(np.sqrt(np.nanmean(np.sum(vel**2, axis=2)))),
-        "bilabials": len(closures),
-        "lip_closure_rate": float((closures[:, 0] < settings.closure_mm).mean()) if len(closures) else None,
-        "lip_closure_rate_capture": float((closures[:, 1] < settings.closure_mm).mean()) if len(closures) else None,
-        "min_lip_gap_mm": float(closures[:, 0].mean()) if len(closures) else None,
-    }
+    return SentenceMetrics(
+        n, err, float(np.sqrt(err)), float(np.sqrt(np.nanmean(np.sum(vel**2, axis=2)))), len(closures),
+        float((closures[:, 0] < settings.closure_mm).mean()) if len(closures) else None,
+        float((closures[:, 1] < settings.closure_mm).mean()) if len(closures) else None,
+        float(closures[:, 0].mean()) if len(closures) else None,
+    )
+
+
+@dataclass(frozen=True)
+class CleanMetrics:
+    """Metrics of one sentence against its clean truth (:func:`clean_metrics`).
+
+    err_clean_mm2: Eq. 13 against the clean truth (mm^2).
+    velocity_ms_clean: mean squared velocity error (mm^2/s^2).
+    mouth_r: Pearson r of the inner-lip gaps (NaN where either does not move).
+    onsets, onsets_clean: (B,) float per /p b m/ token, the closure onset of the method and of the
+        truth (s; NaN = no closure).
+    sweep: (len(CLOSURE_SWEEP), B) bool, the method's closure flags at each :data:`CLOSURE_SWEEP`
+        multiple of ``evaluate.closure_mm``.
+    """
+
+    err_clean_mm2: float
+    velocity_ms_clean: float
+    mouth_r: float
+    onsets: np.ndarray
+    onsets_clean: np.ndarray
+    sweep: np.ndarray
+
+    def row(self) -> dict[str, Any]:
+        """The fields as keys of a per-sentence row: the arrays under ``_onsets``, ``_onsets_clean`` and
+        ``_sweep`` (a leading '_' keeps a key out of ``metrics.json``)."""
+        return {"err_clean_mm2": self.err_clean_mm2, "velocity_ms_clean": self.velocity_ms_clean,
+                "mouth_r": self.mouth_r, "_onsets": self.onsets, "_onsets_clean": self.onsets_clean,
+                "_sweep": self.sweep}
 
 
 def clean_metrics(syn: np.ndarray, clean: np.ndarray, utt: Utterance, fps: float, names: list[str],
-                  settings: EvaluateSettings) -> dict:
+                  settings: EvaluateSettings) -> CleanMetrics:
     """Metrics of one sentence against its clean truth (both (T, M, 3) mm in the normalized head
-    frame at ``fps``): ``err_clean_mm2`` (Eq. 13), ``velocity_ms_clean`` (mean squared velocity
-    error, mm^2/s^2), ``mouth_r`` (Pearson r of the inner-lip gaps), and per /p b m/ token the
-    closure onsets of the method and of the truth (``_onsets``, ``_onsets_clean``: (B,) s, NaN =
-    no closure; ``_sweep``: the method's closure flags at each :data:`CLOSURE_SWEEP` multiple)."""
+    frame at ``fps``): Eq. 13, the velocity error, the inner-lip gaps' correlation and per /p b m/
+    token the closure onsets (:class:`CleanMetrics`)."""
     n = min(len(syn), len(clean))
     syn, clean = syn[:n].astype(np.float64), clean[:n].astype(np.float64)
     vel = (np.diff(syn, axis=0) - np.diff(clean, axis=0)) * fps
@@ -400,14 +457,14 @@ def clean_metrics(syn: np.ndarray, clean: np.ndarray, utt: Utterance, fps: float
     a, b = gap_syn[seen], gap_clean[seen]
     r = float(np.corrcoef(a, b)[0, 1]) if len(a) > 2 and a.std() > 0 and b.std() > 0 else float("nan")
     tokens = bilabial_frames(utt, fps, n)
-    return {
-        "err_clean_mm2": float(np.nanmean(np.sum((syn - clean) ** 2, axis=2))),
-        "velocity_ms_clean": float(np.nanmean(np.sum(vel**2, axis=2))),
-        "mouth_r": r,
-        "_onsets": closure_onsets(gap_syn, tokens, fps, settings.closure_mm),
-        "_onsets_clean": closure_onsets(gap_clean, tokens, fps, settings.closure_mm),
-        "_sweep": np.array([np.isfinite(closure_onsets(gap_syn, tokens, fps, k * settings.closure_mm)) for k in CLOSURE_SWEEP]).reshape(len(CLOSURE_SWEEP), len(tokens)),
-    }
+    return CleanMetrics(
+        float(np.nanmean(np.sum((syn - clean) ** 2, axis=2))),
+        float(np.nanmean(np.sum(vel**2, axis=2))),
+        r,
+        closure_onsets(gap_syn, tokens, fps, settings.closure_mm),
+        closure_onsets(gap_clean, tokens, fps, settings.closure_mm),
+        np.array([np.isfinite(closure_onsets(gap_syn, tokens, fps, k * settings.closure_mm)) for k in CLOSURE_SWEEP]).reshape(len(CLOSURE_SWEEP), len(tokens)),
+    )
 
 
 def aggregate(rows: list[dict]) -> dict:
@@ -548,9 +605,12 @@ def method_outputs(db: MotionDatabase, s: Sentence, members: dict[str, Member], 
                           "joins": search_joins(db, s.utterance, motion.path.node)}
     if "baseline" in ablations:
         outputs["baseline"] = mean_pose_markers(db, s.utterance, by_emotion=False)
-    if ablations.get("dominance") is not None:
-        outputs["dominance"] = dominance_baseline(db, ablations["dominance"], s.utterance)
+    dominance = ablations.get("dominance")
+    if dominance is not None:
+        outputs["dominance"] = dominance_baseline(db, dominance, s.utterance)
     if rig is not None:
+        if s.to_reference is None:  # evaluate() passes the rig only with every sentence's clean truth
+            raise ValueError(f"{s.take}: the openfacefx baseline needs the clean truth's head frame")
         outputs["openfacefx"] = openfacefx_baseline(db, s.utterance, rig, vertices, s.to_reference)
     return outputs, extra
 
@@ -685,11 +745,10 @@ def evaluate(db_path: Path, corpus: Path, settings: EvaluateSettings, synth: Syn
     rig = vertices = None
     if with_baseline:
         missing = "it needs the clean truth folder (--truth), which holds the rig's marker binding" if not with_clean else openfacefx_missing()
-        if missing is None:
-
-            rig, vertices = load_face_rig(), folder.vertices(db.marker_names)
-        else:
+        if missing is not None:
             skipped["openfacefx"] = missing
+        elif folder is not None:  # with_clean: there is one
+            rig, vertices = load_face_rig(), folder.vertices(db.marker_names)
     rows = [member_rows()[m] for m in members]
     order = list(ROW_ORDER) + [r for r in rows if r not in ROW_ORDER]
     present = set(rows) | set(ablations) | ({"openfacefx"} if rig is not None else set())
@@ -702,19 +761,20 @@ def evaluate(db_path: Path, corpus: Path, settings: EvaluateSettings, synth: Syn
         outputs, extra = method_outputs(db, s, members, method_settings, ablations, rig, vertices, str(db_path))
         if "capture" in references:
             outputs["capture"] = s.truth
+        clean = s.clean if with_clean else None  # with_clean: every sentence has it
         if "clean" in references:
             outputs["clean"] = s.clean
-        record = {"take": s.take, "emotion": s.emotion, "fps": db.fps, "truth": (s.clean if with_clean else s.truth)[:, k]}
+        record = {"take": s.take, "emotion": s.emotion, "fps": db.fps, "truth": (clean if clean is not None else s.truth)[:, k]}
         boundaries = phone_boundaries(s.utterance, db.fps)
         for method in per_method:
             markers = outputs[method]
-            m = sentence_metrics(markers, s.truth, s.utterance, db.fps, db.marker_names, settings)
+            m = sentence_metrics(markers, s.truth, s.utterance, db.fps, db.marker_names, settings).row()
             m.update(take=s.take, emotion=s.emotion)
             m.update({key: v for key, v in extra.get(method, {}).items() if key != "joins"})
-            if with_baseline:
+            if classifier is not None:  # with_baseline
                 n = m["frames"]
-                if with_clean:
-                    m.update(clean_metrics(markers, s.clean, s.utterance, db.fps, db.marker_names, settings))
+                if clean is not None:
+                    m.update(clean_metrics(markers, clean, s.utterance, db.fps, db.marker_names, settings).row())
                 joins = extra[method]["joins"] if "joins" in extra.get(method, {}) else boundaries
                 m["_d2"] = second_differences(markers[:n], joins)
                 m["_d2_interior"] = interior_second_differences(markers[:n], joins)
@@ -731,7 +791,7 @@ def evaluate(db_path: Path, corpus: Path, settings: EvaluateSettings, synth: Syn
         metrics[method] = {"overall": aggregate(rows_of),
                            "per_emotion": {e: aggregate([r for r in rows_of if r["emotion"] == e]) for e in emotions},
                            "per_sentence": public}
-    if with_baseline:
+    if classifier is not None:  # with_baseline
         for method, entry in figures(per_method, settings, with_clean).items():
             metrics[method]["figures"] = entry
         index = resamples(len(sentences), settings.bootstrap_resamples, settings.seed)  # the figures' resamples

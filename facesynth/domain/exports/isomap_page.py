@@ -57,8 +57,8 @@ def check_maps(maps: PhonemeMaps, db: MotionDatabase, isomap_path: Path, db_path
 
 
 def check_path(path: SearchPath | None, utt: Utterance, db: MotionDatabase, motion_path: Path, phones_path: Path,
-               db_path: Path) -> None:
-    """The motion's search path is one of ``db``'s nodes per phone of ``utt``."""
+               db_path: Path) -> SearchPath:
+    """The motion's search ``path``, refused unless it is one of ``db``'s nodes per phone of ``utt``."""
     if path is None:
         raise InputError(f"{motion_path}: holds no search path (it was not made by facesynth synthesize); "
                          "give a motion synthesized for this utterance, or leave --motion out.")
@@ -71,6 +71,7 @@ def check_path(path: SearchPath | None, utt: Utterance, db: MotionDatabase, moti
         if utt.phones[k] != PAU and 0 <= node and (node >= len(db.nodes) or db.nodes.phone[int(node)] != path.node_phone[k]):
             raise InputError(f"{motion_path}: its path uses node {int(node)} at phone {k}, which {db_path} does not "
                              f"have as /{path.node_phone[k]}/; give a motion synthesized from {db_path}.")
+    return path
 
 
 def emotion_differences(path: SearchPath, utt: Utterance) -> list[int]:

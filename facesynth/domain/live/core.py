@@ -103,13 +103,13 @@ class LiveModel:
         self.stream = stream
         self.solve_settings = solve
         self.synth = replace(synth, output_fps=stream.fps, postprocess="deng", use_opencl=False)
-        self.greedy = None
-        self.db: MotionDatabase | None = None
+        self.greedy: Greedy | None = None
+        self.db: MotionDatabase | None = None  # None exactly for the trajectory method
         self.trajectory: TrajectoryModel | None = None
         if stream.method == "trajectory":
             if not isinstance(source, TrajectoryModel):
                 raise InputError("stream.method 'trajectory' streams from a trajectory model: give the output of "
-                                 "`facesynth train-trajectory` in place of the database.")
+                                 "`facesynth fit-method trajectory` in place of the database.")
             if trajectory is None:
                 raise ValueError("the trajectory method needs its [trajectory] settings")  # a caller's bug
             self.trajectory, self.trajectory_settings = source, trajectory
@@ -268,25 +268,25 @@ class LiveSynthesizer:
         c = len(self.committed)
         if upto <= c:
             return
-        if self.model.trajectory is not None:  # no nodes: a committed phone's frames may be sent
+        db = self.model.db
+        if db is None:  # the trajectory method: no nodes; a committed phone's frames may be sent
             self.committed.extend([-1] * (upto - c))
             return
         first = max(0, c - 1)
         phones = self.phones[first:]
         emotions = self.emotions[first:]
         if self.model.greedy is not None:
-            path = self._greedy(phones, emotions, self.committed[-1] if c else -1, pinned=c > 0)
+            path = self._greedy(self.model.greedy, phones, emotions, self.committed[-1] if c else -1, pinned=c > 0)
         else:
             constraints = {0: self.committed[-1]} if c else {}
             s = self.model.synth
-            steps = step_costs(phones, emotions, self.model.db.nodes.phone, self.model.db.nodes.emotion, constraints, s)
+            steps = step_costs(phones, emotions, db.nodes.phone, db.nodes.emotion, constraints, s)
             path = dp_numpy(self.model.dense, steps.total).path
         offset = c - first
         self.committed.extend(int(n) for n in path[offset : offset + upto - c])
 
-    def _greedy(self, phones: list[str], emotions: list[str], before: int, pinned: bool) -> np.ndarray:
-        """Greedy tiling of ``phones`` (the first pinned to ``before`` when ``pinned``)."""
-        greedy = self.model.greedy
+    def _greedy(self, greedy: Greedy, phones: list[str], emotions: list[str], before: int, pinned: bool) -> np.ndarray:
+        """Greedy tiling of ``phones`` by ``greedy`` (the first pinned to ``before`` when ``pinned``)."""
         start = 1 if pinned else 0
         nodes = np.full(len(phones), -1, np.int64)
         if pinned:
@@ -441,10 +441,9 @@ class LiveSynthesizer:
     def _render(self, first: int, stop: int) -> np.ndarray:
         """Markers (stop - first, M, 3) mm of output frames [first, stop), rendering the committed
         steps from two spoken phones before the step of frame ``first``."""
-        if self.model.trajectory is not None:
-            return self._solve(first, stop)
         db = self.model.db
-        assert db is not None
+        if db is None:  # the trajectory method
+            return self._solve(first, stop)
         fps = self.model.stream.fps
         c = len(self.committed)
         starts = np.array(self.starts[:c])
@@ -466,7 +465,7 @@ class LiveSynthesizer:
         shift = shift_frames / db.fps
         utt = Utterance(self.phones[k:c], np.array(self.starts[k:c]) - shift, np.array(self.ends[k:c]) - shift,
                         self.emotions[k:c])
-        out = render_path(db, utt, np.array(self.committed[k:c]), self.model.synth)["markers"]
+        out = render_path(db, utt, np.array(self.committed[k:c]), self.model.synth).markers
         base = int(round(shift * fps))
         lo, hi = first - base, stop - base
         if lo < 0 or hi > len(out):

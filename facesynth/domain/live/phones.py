@@ -115,19 +115,27 @@ def given_phones(items, where: str) -> list[tuple[str, float, float]]:
     (CMU/ARPAbet with or without stress digits, or Festival names), in time order."""
     if not isinstance(items, list):
         raise InputError(f"{where}: 'phones' must be a list of {{\"phone\", \"start\", \"end\"}} objects.")
-    names, starts, ends = [], [], []
+    names: list[str] = []
+    starts: list[float] = []
+    ends: list[float] = []
     for k, item in enumerate(items):
         if not isinstance(item, dict) or not isinstance(item.get("phone"), str):
             raise InputError(f"{where}: phone {k} must be an object with a 'phone' name and 'start' and 'end' times.")
-        a, b = item.get("start"), item.get("end")
-        if not all(isinstance(v, (int, float)) and not isinstance(v, bool) and np.isfinite(v) for v in (a, b)) \
-                or not 0 <= a < b:
+        a, b = _seconds(item.get("start")), _seconds(item.get("end"))
+        if a is None or b is None or not 0 <= a < b:
             raise InputError(f"{where}: phone {k} ({item['phone']!r}) needs finite times with 0 <= start < end, in seconds.")
         if starts and a < ends[-1] - 1e-6:
             raise InputError(f"{where}: phone {k} ({item['phone']!r}) starts at {a:.3f} s, before the previous phone "
                              f"ends ({ends[-1]:.3f} s); send phones in time order without overlap.")
         names.append(item["phone"])
-        starts.append(float(a))
-        ends.append(float(b))
+        starts.append(a)
+        ends.append(b)
     labels = map_phones(names, where, starts)
     return list(zip(labels, starts, ends))
+
+
+def _seconds(value) -> float | None:
+    """``value`` of a control message as a time in seconds: a finite number (not a bool), else None."""
+    if isinstance(value, (int, float)) and not isinstance(value, bool) and np.isfinite(value):
+        return float(value)
+    return None

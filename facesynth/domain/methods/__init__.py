@@ -72,14 +72,62 @@ class MethodSettings:
                       for name in ("synthesize", "trajectory", "coarticulation")})
 
 
+@dataclass(frozen=True)
+class SynthesisSummary:
+    """What a method reports about the motion it made.
+
+    phones: phones of the utterance.
+    frames: frames of the motion at the output rate.
+    unseen: what the source has nothing of (a phone, or '/aa/ in sad' for a (phone, emotion)
+        pair) -> what covered it.
+    warnings: sentences for the user (e.g. the loudness step could not move the mouth).
+    cost, joins, device: the searches' path cost (Eq. 4), joins between nodes not captured one
+        after the other, and where the search ran; None for the other methods.
+    energy, lam: the trajectory method's Eq. 6 energy and its smoothness weight lambda; None for
+        the other methods.
+    fallbacks: the trajectory method's phones covered by their viseme class's pooled Gaussian ->
+        that class.
+    phases: phase name (``search_s``...) -> seconds it took (the searches'
+        :meth:`~facesynth.domain.search.synthesis.SearchTimings.phases`).
+    """
+
+    phones: int
+    frames: int
+    unseen: dict[str, str] = field(default_factory=dict)
+    warnings: tuple[str, ...] = ()
+    cost: float | None = None
+    joins: int | None = None
+    device: str | None = None
+    energy: float | None = None
+    lam: float | None = None
+    fallbacks: dict[str, str] = field(default_factory=dict)
+    phases: dict[str, float] = field(default_factory=dict)
+
+
+@dataclass(frozen=True)
+class FitSummary:
+    """What a fitted member reports about its fit (:meth:`Method.fit`).
+
+    fit_rms_mm: RMS per marker of the model's fit to the training frames (mm).
+    labels: (phone, emotion) types of a coarticulation model; None for the trajectory model.
+    keyshapes, phones, pairs, samples: a trajectory model's key-shapes, phones with a Gaussian,
+        (phone, emotion) pairs with their own Gaussian and training frames; None for coarticulation.
+    """
+
+    fit_rms_mm: float
+    labels: int | None = None
+    keyshapes: int | None = None
+    phones: int | None = None
+    pairs: int | None = None
+    samples: int | None = None
+
+
 @dataclass
 class Synthesis:
-    """A method's result: the motion and ``summary``, what the method reports about it (figures
-    such as ``cost`` or ``energy``, ``*_s`` seconds of its phases, ``unseen`` phones and how they
-    were covered)."""
+    """A method's result: the motion and ``summary``, what the method reports about it."""
 
     motion: Any
-    summary: dict = field(default_factory=dict)
+    summary: SynthesisSummary
 
 
 class Method(ABC):
@@ -115,7 +163,7 @@ class Method(ABC):
         """The method's source artifact at ``path`` (a motion database, or its fitted model)."""
 
     def fit(self, db, settings: MethodSettings, *, keyshapes=None, where: str = "the database"):
-        """A model of ``db``'s training takes (fitted members); returns (model, summary dict)."""
+        """A model of ``db``'s training takes (fitted members); returns (model, :class:`FitSummary`)."""
         raise UsageError(f"the {self.name} method reads the motion database itself and has nothing to fit; "
                          f"fit one of {', '.join(fitted_names())}.")
 

@@ -35,7 +35,7 @@ from facesynth.base.phonemes import PAU
 from facesynth.domain.postprocess.concatenation import frame_ranges
 from facesynth.model.coarticulation import CoarticulationModel
 
-from . import Method, MethodSettings, Synthesis
+from . import FitSummary, Method, MethodSettings, Synthesis, SynthesisSummary
 from .core import frame_motion
 
 #: Ridge on the targets, relative to the mean diagonal of the design's Gram matrix at the
@@ -239,7 +239,7 @@ class CoarticulationMethod(Method):
 
     def fit(self, db, settings: MethodSettings, *, keyshapes=None, where: str = "the database"):
         """The model of ``db``'s training takes (``coarticulation.iterations`` L-BFGS-B iterations);
-        returns (CoarticulationModel, summary: ``labels``, ``fit_rms_mm``)."""
+        returns (CoarticulationModel, :class:`~facesynth.domain.methods.FitSummary` with ``labels``)."""
         sentences = training_sentences(db, by_emotion=True)
         if not sentences:
 
@@ -250,7 +250,7 @@ class CoarticulationMethod(Method):
         out = CoarticulationModel(list(model.phones), model.targets, model.magnitude, model.rate, db.model,
                                   list(db.marker_names), np.asarray(db.reference, np.float32), float(db.fps),
                                   int(settings.coarticulation.iterations), rms)
-        return out, {"labels": len(model.phones), "fit_rms_mm": rms}
+        return out, FitSummary(rms, labels=len(model.phones))
 
     def synthesize(self, source, utt, settings: MethodSettings, constraints=None, *, prepared=None,
                    where: str = "the utterance") -> Synthesis:
@@ -276,4 +276,4 @@ class CoarticulationMethod(Method):
         motion = frame_motion(self.name, utt, markers, coeffs, source.fps, settings.synthesize.output_fps,
                               source.marker_names, source.reference, list(utt.phones),
                               [e if p != PAU else "" for p, e in zip(utt.phones, utt.emotions)], "cpu (NumPy)")
-        return Synthesis(motion, {"phones": len(utt), "frames": len(motion.markers), "unseen": unseen})
+        return Synthesis(motion, SynthesisSummary(len(utt), len(motion.markers), unseen))

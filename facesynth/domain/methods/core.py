@@ -22,6 +22,7 @@ available (:func:`facesynth.base.limits.require_memory`) before doing it.
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import logging
 from dataclasses import dataclass, field
@@ -151,7 +152,7 @@ def synthesize(method: Method, source, utt: Utterance, settings: MethodSettings,
                                                  settings.synthesize)
         if warning is not None:
             log.warning("%s: %s", where, warning)
-            result.summary.setdefault("warnings", []).append(warning)
+            result.summary = dataclasses.replace(result.summary, warnings=result.summary.warnings + (warning,))
     return result
 
 

@@ -1,10 +1,11 @@
 """Fitting a member of the method family into its model artifact (``facesynth fit-method``,
-``facesynth train-trajectory``): the database read, the member's :meth:`~facesynth.domain.methods.Method.fit`
+``facesynth fit-method trajectory``): the database read, the member's :meth:`~facesynth.domain.methods.Method.fit`
 on its training takes, the model written with the settings and inputs that made it."""
 
 from __future__ import annotations
 
 import time
+from dataclasses import dataclass
 from pathlib import Path
 
 from facesynth.base.config import settings_json
@@ -13,14 +14,29 @@ from facesynth.model.artifacts import check_output
 from facesynth.model.keyshapes import KeyShapes
 from facesynth.model.motiondb import MotionDatabase
 
-from . import MethodSettings, get
+from . import FitSummary, MethodSettings, get
+
+
+@dataclass(frozen=True)
+class FittedModel:
+    """A model :func:`fit_to_file` fitted and wrote.
+
+    method: the member fitted.
+    fit: what the member reports about its fit (sizes, the fit's RMS in mm).
+    fit_s: seconds spent fitting.
+    bytes: the model file's size.
+    """
+
+    method: str
+    fit: FitSummary
+    fit_s: float
+    bytes: int
 
 
 def fit_to_file(method: str, db_path: Path, out: Path, settings: MethodSettings, *, keyshapes_path: Path | None = None,
-                overwrite: bool = False) -> dict:
+                overwrite: bool = False) -> FittedModel:
     """Fit ``method`` on ``db_path``'s training takes (the trajectory method over the key-shapes of
-    ``keyshapes_path``) and write ``out``; returns the method's summary (sizes, the fit's RMS) with
-    ``method``, ``fit_s`` and ``bytes``."""
+    ``keyshapes_path``) and write ``out``."""
     member = get(method)
     if not member.fitted:
         member.fit(None, settings)  # says, in one sentence, that there is nothing to fit
@@ -34,4 +50,4 @@ def fit_to_file(method: str, db_path: Path, out: Path, settings: MethodSettings,
     fit_s = time.perf_counter() - t0
     model.write(out, config=settings_json(member.fit_settings(settings)), inputs=[p for p in (db_path, keyshapes_path) if p is not None],
                 overwrite=overwrite)
-    return {"method": member.name, **summary, "fit_s": fit_s, "bytes": out.stat().st_size}
+    return FittedModel(member.name, summary, fit_s, out.stat().st_size)

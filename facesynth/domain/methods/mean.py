@@ -14,7 +14,7 @@ from facesynth.base.phonemes import PAU, viseme
 from facesynth.domain.postprocess.concatenation import frame_ranges
 from facesynth.domain.search.synthesis import unseen_phones
 
-from . import MethodSettings, Synthesis
+from . import MethodSettings, Synthesis, SynthesisSummary
 from .core import DatabaseMethod, frame_motion
 
 
@@ -69,4 +69,4 @@ class MeanMethod(DatabaseMethod):
         motion = frame_motion(self.name, utt, source.model.reconstruct(coeffs), coeffs, source.fps,
                               settings.synthesize.output_fps, source.marker_names, source.reference, list(utt.phones),
                               [e if p != PAU else "" for p, e in zip(utt.phones, used)], "cpu (NumPy)")
-        return Synthesis(motion, {"phones": len(utt), "frames": len(motion.markers), "unseen": unseen_phones(utt, source)})
+        return Synthesis(motion, SynthesisSummary(len(utt), len(motion.markers), unseen_phones(utt, source)))

@@ -13,7 +13,7 @@ from facesynth.base.opencl import use_opencl
 from facesynth.domain.search.pairs import transition_costs
 from facesynth.domain.search.synthesis import as_motion, synthesize, unseen_phones
 
-from . import MethodSettings, Synthesis
+from . import MethodSettings, Synthesis, SynthesisSummary
 from .core import DatabaseMethod
 
 
@@ -59,9 +59,9 @@ class SearchMethod(DatabaseMethod):
         s = self.settings_of(settings)
         res = synthesize(source, utt, dict(constraints or {}), s, tc=prepared)
         motion = as_motion(source, utt, res, s)
-        return Synthesis(motion, {"phones": len(utt), "frames": len(res["markers"]), "cost": res["cost"],
-                                  "joins": res["non_captured_joins"], "device": res["device"],
-                                  "unseen": unseen_phones(utt, source), **res["timings"]})
+        return Synthesis(motion, SynthesisSummary(len(utt), len(res.rendered.markers), unseen_phones(utt, source),
+                                                  cost=res.cost, joins=res.rendered.non_captured_joins,
+                                                  device=res.device, phases=res.timings.phases()))
 
 
 class DpMethod(SearchMethod):

@@ -47,7 +47,7 @@ from facesynth.domain.retarget.solve import nnls_weights
 from facesynth.model.motion import Motion, Provenance, SearchPath
 from facesynth.model.trajectory import TrajectoryModel
 
-from . import Method, MethodSettings, NotEvaluable, Synthesis
+from . import FitSummary, Method, MethodSettings, NotEvaluable, Synthesis, SynthesisSummary
 
 log = logging.getLogger(__name__)
 
@@ -450,20 +450,20 @@ class TrajectoryMethod(Method):
 
     def fit(self, db, settings: MethodSettings, *, keyshapes=None, where: str = "the database"):
         """The model of ``db``'s training takes over the joint key-shapes of ``keyshapes`` (a
-        KeyShapes, needed); returns (TrajectoryModel, summary: ``keyshapes``, ``phones``, ``pairs``,
-        ``samples``, ``fit_rms_mm``)."""
+        KeyShapes, needed); returns (TrajectoryModel, :class:`~facesynth.domain.methods.FitSummary` with
+        ``keyshapes``, ``phones``, ``pairs``, ``samples``)."""
         if keyshapes is None:
             raise UsageError("the trajectory method is fitted over key-shapes; give them with --keyshapes "
                              "(facesynth keyshapes).")
         model, samples = train_model(db, keyshapes, settings.trajectory, where)
-        return model, {"keyshapes": model.count, "phones": len(model.phones), "pairs": len(model.pair_phone),
-                       "samples": len(samples.rows), "fit_rms_mm": model.fit_rms}
+        return model, FitSummary(model.fit_rms, keyshapes=model.count, phones=len(model.phones),
+                                 pairs=len(model.pair_phone), samples=len(samples.rows))
 
     def synthesize(self, source, utt, settings: MethodSettings, constraints=None, *, prepared=None,
                    where: str = "the utterance") -> Synthesis:
         """The path of Eq. 6-7 (:func:`synthesize_motion`); the summary holds the Eq. 6 ``energy``,
-        ``lambda`` and the ``fallbacks`` (unseen phones and the viseme class that covered each)."""
+        ``lam`` (lambda) and the ``fallbacks`` (unseen phones and the viseme class that covered each)."""
         self.refuse_constraints(constraints)
         motion, path = synthesize_motion(source, utt, settings.trajectory, settings.synthesize.output_fps, where)
-        return Synthesis(motion, {"phones": len(utt), "frames": len(motion.markers), "energy": path.energy,
-                                  "lambda": path.lam, "fallbacks": path.targets.fallbacks})
+        return Synthesis(motion, SynthesisSummary(len(utt), len(motion.markers), energy=path.energy, lam=path.lam,
+                                                  fallbacks=path.targets.fallbacks))

@@ -34,7 +34,7 @@ def learned_cutoffs(coeffs: np.ndarray, segments: list[slice], fps: float, energ
             continue
         freqs, p = welch(x - x.mean(0), fs=fps, nperseg=32, axis=0)  # one frequency grid for every take
         total = p * len(x) if total is None else total + p * len(x)
-    if total is None:
+    if total is None or freqs is None:  # (set together) no segment long enough for a spectrum
         return np.full(k, fps / 2)
     cumulative = np.cumsum(total, axis=0) / np.maximum(total.sum(axis=0), 1e-30)
     return np.array([freqs[min(int(np.searchsorted(cumulative[:, j], energy)), len(freqs) - 1)] for j in range(k)])

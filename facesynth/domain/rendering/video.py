@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import contextlib
 import time
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -143,6 +144,8 @@ def render_frames(clip: MeshAnimation, settings: RenderSettings, compare: MeshAn
         for t in range(len(clip.vertices)):
             yield shaded.frame(clip.vertices[t], t)
         return
+    if compare is None:  # render_video refuses the view without --compare
+        raise UsageError("the side-by-side view needs --compare ANIM (e.g. the ground truth deformed onto the same mesh).")
     other = ShadedView(compare, settings, width)
     masks = [label_mask(text) for text in settings.labels]  # left: the animation rendered; right: --compare
     for t in range(len(clip.vertices)):
@@ -171,14 +174,29 @@ class AnimationReader:
         return pose_rig(RigCurves.read(path), self._rig, str(path), self.head_motion)
 
 
+@dataclass(frozen=True)
+class RenderedVideo:
+    """What :func:`render_video` wrote.
+
+    frames: video frames.
+    seconds: the video's length (s).
+    frames_per_s: frames rendered per second of wall time.
+    notes: what a plain mesh lacks (eye or mouth holes), once each, sorted.
+    """
+
+    frames: int
+    seconds: float
+    frames_per_s: float
+    notes: list[str]
+
+
 def render_video(anims: list[Path], audios: list[Path], out: Path, settings: RenderSettings,
                  compare: list[Path] | None = None, overwrite: bool = False, rig_path: Path | None = None,
-                 binding: Path | None = None) -> dict:
+                 binding: Path | None = None) -> RenderedVideo:
     """Render the animations (mesh animations or rig curves) one after another, each with its
     audio (none: silence), into the AVI ``out``; ``compare``: for the side-by-side view, one
     animation beside every one, or one per animation. Curves pose the rig ``rig_path`` (None:
-    the built-in rig; ``binding`` its markers for the marker view). Returns frames, seconds of
-    video and frames rendered per second.
+    the built-in rig; ``binding`` its markers for the marker view).
     """
     import imageio_ffmpeg
 
@@ -229,5 +247,4 @@ def render_video(anims: list[Path], audios: list[Path], out: Path, settings: Ren
         for frame in progress(frames, "render", length=n_frames):
             writer.send(np.ascontiguousarray(frame))
         writer.close()
-    return {"frames": n_frames, "seconds": n_frames / settings.fps,
-            "frames_per_s": n_frames / (time.perf_counter() - started), "notes": sorted(set(notes))}
+    return RenderedVideo(n_frames, n_frames / settings.fps, n_frames / (time.perf_counter() - started), sorted(set(notes)))

@@ -112,11 +112,24 @@ def bind(vertices: np.ndarray, faces: np.ndarray, binding: dict[str, int], motio
     return BoundMesh(vertices, faces, names, sources, weights, unreached)
 
 
+@dataclass(frozen=True)
+class PlacementFit:
+    """How the motion's reference markers were placed on the mesh (the similarity of
+    :func:`animate`).
+
+    scale: the similarity's scale from marker millimetres to mesh units.
+    fit_rms: RMS distance of the placed reference markers to their bound vertices (mesh units).
+    """
+
+    scale: float
+    fit_rms: float
+
+
 def animate(bound: BoundMesh, markers: np.ndarray, marker_names: list[str], reference: np.ndarray,
-            head: tuple[np.ndarray, np.ndarray] | None = None) -> tuple[np.ndarray, dict]:
+            head: tuple[np.ndarray, np.ndarray] | None = None) -> tuple[np.ndarray, PlacementFit]:
     """Vertices (T, V, 3) float32 for marker frames (T, M, 3) mm, optionally moved by a head
     motion (rotations (T, 3, 3), translations (T, 3) mm in the marker frame). Also returns
-    the fit report."""
+    how the markers were placed on the mesh."""
     cols = np.array([marker_names.index(m) for m in bound.markers])
     s, r, offset, residual = similarity_fit(reference[cols].astype(np.float64), bound.rest[bound.vertex_of])
     motion = (markers[:, cols] - reference[cols]) @ (s * r).T  # (T, K, 3) in mesh units
@@ -125,4 +138,4 @@ def animate(bound: BoundMesh, markers: np.ndarray, marker_names: list[str], refe
         out[t] = bound.rest + bound.weights @ motion[t]
         if head is not None:
             out[t] = apply(out[t], head[0][t], head[1][t], s, r, offset)
-    return out, {"scale": s, "fit_rms": residual}
+    return out, PlacementFit(s, residual)

@@ -92,18 +92,19 @@ class Rig:
                              f"{self.name!r} has {len(self.neutral)} vertices; use the binding made for this rig.")
         return np.array(cols), np.array([self.binding[marker_names[c]] for c in cols])
 
-    def _arkit(self) -> np.ndarray:
+    def arkit_matrix(self) -> np.ndarray:
+        """:attr:`arkit_to_rig`, refused for a rig without an ARKit mapping."""
         if self.arkit_to_rig is None:
             raise ValueError(f"rig {self.name!r} has no ARKit mapping")
         return self.arkit_to_rig
 
     def from_arkit(self, arkit_weights: np.ndarray) -> np.ndarray:
         """Rig weights (..., E) for ARKit weights (..., 52) in :attr:`arkit_names` order."""
-        return np.asarray(arkit_weights, dtype=np.float64) @ self._arkit()
+        return np.asarray(arkit_weights, dtype=np.float64) @ self.arkit_matrix()
 
     def to_arkit(self, rig_weights: np.ndarray) -> np.ndarray:
         """ARKit weights (..., 52) for rig weights (..., E): split shapes averaged, tongueOut 0."""
-        arkit_to_rig = self._arkit()
+        arkit_to_rig = self.arkit_matrix()
         counts = arkit_to_rig.sum(axis=1)
         return (np.asarray(rig_weights, dtype=np.float64) @ arkit_to_rig.T) / np.maximum(counts, 1.0)
 

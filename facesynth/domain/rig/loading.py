@@ -189,10 +189,11 @@ def marker_map(rig: Rig, marker_names: list[str], reference: np.ndarray, where: 
     return MarkerMap(cols, verts, s, r)
 
 
-def read_keymorphs(path: Path, names: list[str], rig: Rig) -> tuple[np.ndarray | None, np.ndarray | None]:
+def read_keymorphs(path: Path, names: list[str], rig: Rig) -> tuple[np.ndarray, None] | tuple[None, np.ndarray]:
     """Artist-made keymorphs for the key-shapes ``names``: a folder with ``<name>.obj`` per key-shape
     (meshes in the rig's vertex order and triangles) or a CSV with a ``keyshape`` column and one
-    column per rig shape (weights in [0, 1]). Returns (weights (K, E) or None, meshes (K, V, 3) or None).
+    column per rig shape (weights in [0, 1]). Returns (weights (K, E), None) for a CSV,
+    (None, meshes (K, V, 3)) for a folder.
     """
     import csv
 

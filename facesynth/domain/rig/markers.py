@@ -122,6 +122,8 @@ def build_marker_set(rig: Rig) -> MarkerSet:
     motion = np.linalg.norm(rig.deltas, axis=2).max(axis=0)  # (V,) mm, the largest any shape moves each vertex
     names, vertices = [], []
     landmarks = rig.landmarks68
+    if landmarks is None:
+        raise ValueError(f"rig {rig.name!r} has no 68-point landmarks to place the inner-lip markers on")
     for name, x, y in _layout():
         names.append(name)
         vertices.append(_front_vertex(rig, x, y))

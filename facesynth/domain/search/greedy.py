@@ -143,16 +143,18 @@ class Greedy:
         same = np.nonzero(self.viseme_of_anime == viseme(phone))[0]
         return (same if len(same) else np.arange(len(self.g.node))), False
 
-    def longest_runs(self, start: np.ndarray, phones: list[str], emotions: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """Unclustered LongestMatching from every start anime at once.
-        Returns (run lengths, emotion mismatches along each run)."""
+    def longest_runs(self, start: np.ndarray, phones: list[str], emotions: np.ndarray,
+                     suc: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Unclustered LongestMatching from every start anime at once, along ``suc`` (the
+        unclustered graph's single successors). Returns (run lengths, emotion mismatches along
+        each run)."""
         g = self.g
         cur = start.copy()
         alive = np.ones(len(cur), bool)
         length = np.ones(len(cur), np.int64)
         mismatches = (g.emotion[cur] != emotions[0]).astype(np.int64)
         for s in range(1, len(phones)):
-            nxt = g.suc[cur]
+            nxt = suc[cur]
             alive &= nxt >= 0
             alive[alive] = g.phones[nxt[alive], PHONE_ID[phones[s]]]
             if not alive.any():
@@ -200,8 +202,8 @@ class Greedy:
         while i < len(phones):
             cand, exact = self.candidates(phones[i])
             prev = int(g.node[out[-1]]) if out else before
-            if exact and not g.clustered:
-                length, mismatches = self.longest_runs(cand, phones[i:], emo[i:])
+            if exact and g.suc is not None:  # unclustered
+                length, mismatches = self.longest_runs(cand, phones[i:], emo[i:], g.suc)
                 tied = np.nonzero(length == length.max())[0]
                 cost = self.penalty * mismatches[tied]
                 if prev >= 0:

@@ -12,6 +12,7 @@ from __future__ import annotations
 import threading
 import time
 from collections.abc import Callable
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -21,7 +22,7 @@ from facesynth.base.opencl import device_record, use_opencl
 from facesynth.base.phonemes import PAU, viseme
 from facesynth.domain.head_motion.rotations import follow_sources
 from facesynth.domain.postprocess.cao import blend_jumps, learned_cutoffs, lowpass
-from facesynth.domain.postprocess.concatenation import concatenate, downsample
+from facesynth.domain.postprocess.concatenation import Concatenated, concatenate, downsample
 from facesynth.model.motion import Motion, Provenance, SearchPath
 from facesynth.model.motiondb import MotionDatabase, Nodes
 
@@ -127,14 +128,89 @@ def cao_joins(db: MotionDatabase, path: np.ndarray, phones: list[str]):
     return joins
 
 
-def synthesize(db: MotionDatabase, utt: Utterance, constraints: dict[int, int], settings: SynthesizeSettings, tc=None) -> dict:
-    """Search and post-process. Returns a dict of everything ``motion.h5`` stores, and
-    ``timings``: seconds spent choosing the device (the first time in a process), on the
-    transition costs (reading the per-node features, when ``tc`` is not given), the step
-    costs, the OpenCL set-up, the search and the post-processing. ``tc`` is a
-    :class:`~facesynth.domain.search.pairs.TransitionCosts` (made from ``db`` when None);
-    ``pairs_fraction`` is the fraction of the dense DP's pair costs the search computed."""
-    timings = {}
+@dataclass(frozen=True)
+class RenderedPath:
+    """A node path turned into motion (VII-B, :func:`render_path`).
+
+    concatenated: the concatenated, smoothed coefficients at the capture rate ((F, K)) with each
+        frame's node, source frame and input phone (-1 node and source frame where silence was
+        regenerated).
+    markers_capture: (F, M, 3) float32 markers in mm at the database's capture rate (Eq. 11).
+    markers: (T, M, 3) float32 markers in mm at ``synthesize.output_fps``.
+    non_captured_joins: joins between consecutive spoken phones whose nodes were not captured one
+        after the other.
+    take: (F,) int64 the take of each capture-rate frame's node, -1 for regenerated silence.
+    head_rotation: (T, 3, 3) rotation matrices of the source frames' head motion, relative to their
+        takes, at the output rate.
+    head_translation: (T, 3) mm, the same head motion's translation, at the output rate.
+    """
+
+    concatenated: Concatenated
+    markers_capture: np.ndarray
+    markers: np.ndarray
+    non_captured_joins: int
+    take: np.ndarray
+    head_rotation: np.ndarray
+    head_translation: np.ndarray
+
+
+@dataclass(frozen=True)
+class SearchTimings:
+    """Seconds spent in each phase of :func:`synthesize`.
+
+    device_choice_s: choosing the device (the first time in a process).
+    steps_s: the step costs (Eq. 5-10 per input phone).
+    search_s: the search itself (without ``opencl_setup_s``).
+    postprocess_s: concatenation, smoothing, Eq. 11 and down-sampling (:func:`render_path`).
+    transition_s: the transition costs (reading the per-node features); None when they were given.
+    opencl_setup_s: the OpenCL set-up (context, kernel, buffers; for the dense DP the matrix);
+        None when the search ran without it.
+    """
+
+    device_choice_s: float
+    steps_s: float
+    search_s: float
+    postprocess_s: float
+    transition_s: float | None = None
+    opencl_setup_s: float | None = None
+
+    def phases(self) -> dict[str, float]:
+        """The phases that ran, field name -> seconds, in the order they ran."""
+        order = ("device_choice_s", "transition_s", "steps_s", "opencl_setup_s", "search_s", "postprocess_s")
+        return {name: getattr(self, name) for name in order if getattr(self, name) is not None}
+
+
+@dataclass(frozen=True)
+class SearchSynthesis:
+    """What :func:`synthesize` made: the chosen path and its motion.
+
+    path: (U,) int64 the motion node chosen for each input phone.
+    cost: the path's Eq. 4 cost (COST* of Algorithm 1).
+    terms: cost term ("tc", "oc", "emp", "block") -> (U,) float32 its value at each step
+        (:func:`~facesynth.domain.search.costs.path_terms`; the ``path/terms`` the motion stores).
+    device: where the search ran; device_reason: why that device.
+    pairs_fraction: the fraction of the dense DP's pair costs the search computed (None for the
+        greedy search).
+    timings: seconds of each phase.
+    rendered: the path turned into motion (:func:`render_path`).
+    """
+
+    path: np.ndarray
+    cost: float
+    terms: dict[str, np.ndarray]
+    device: str
+    device_reason: str
+    pairs_fraction: float | None
+    timings: SearchTimings
+    rendered: RenderedPath
+
+
+def synthesize(db: MotionDatabase, utt: Utterance, constraints: dict[int, int], settings: SynthesizeSettings,
+               tc=None) -> SearchSynthesis:
+    """Search and post-process: everything ``motion.h5`` stores, and the seconds of each phase
+    (:class:`SearchTimings`). ``tc`` is a :class:`~facesynth.domain.search.pairs.TransitionCosts`
+    (made from ``db`` when None)."""
+    timings: dict[str, float] = {}
     t0 = time.perf_counter()
     on_device = use_opencl(settings.use_opencl)
     timings["device_choice_s"] = time.perf_counter() - t0
@@ -158,14 +234,13 @@ def synthesize(db: MotionDatabase, utt: Utterance, constraints: dict[int, int], 
     for t, node in constraints.items():  # Eq. 10 guarantees this; a failure is a bug
         assert path[t] == node, f"constraint at step {t} not met"
     t0 = time.perf_counter()
-    out = {"path": path, "cost": result.cost, "terms": path_terms(path, tc, steps), "device": device[0],
-           "pairs_fraction": fraction,
-           "device_reason": device[1], "timings": timings, **render_path(db, utt, path, settings)}
+    terms = path_terms(path, tc, steps)
+    rendered = render_path(db, utt, path, settings)
     timings["postprocess_s"] = time.perf_counter() - t0
-    return out
+    return SearchSynthesis(path, result.cost, terms, device[0], device[1], fraction, SearchTimings(**timings), rendered)
 
 
-def render_path(db: MotionDatabase, utt: Utterance, path: np.ndarray, settings: SynthesizeSettings) -> dict:
+def render_path(db: MotionDatabase, utt: Utterance, path: np.ndarray, settings: SynthesizeSettings) -> RenderedPath:
     """VII-B for a given node path: concatenate, smooth, regenerate pauses, Eq. 11, down-sample."""
     rest = db.model.project(db.reference[None])[0]
     cat = concatenate(
@@ -184,18 +259,17 @@ def render_path(db: MotionDatabase, utt: Utterance, path: np.ndarray, settings: 
     used = np.unique(cat.source_frame[cat.source_frame >= 0])
     sources = np.where(cat.source_frame >= 0, np.searchsorted(used, cat.source_frame), -1)
     head_r, head_t = follow_sources(sources, *db.head_relative(used))
-    return {"concatenated": cat, "markers_capture": markers, "markers": downsample(markers, db.fps, settings.output_fps),
-            "non_captured_joins": joins, "take": take,
-            "head_rotation": downsample(head_r, db.fps, settings.output_fps),
-            "head_translation": downsample(head_t, db.fps, settings.output_fps)}
+    return RenderedPath(cat, markers, downsample(markers, db.fps, settings.output_fps), joins, take,
+                        downsample(head_r, db.fps, settings.output_fps), downsample(head_t, db.fps, settings.output_fps))
 
 
-def as_motion(db: MotionDatabase, utt: Utterance, res: dict, settings: SynthesizeSettings) -> Motion:
+def as_motion(db: MotionDatabase, utt: Utterance, res: SearchSynthesis, settings: SynthesizeSettings) -> Motion:
     """The ``motion`` artifact's contents for a :func:`synthesize` result."""
-    cat = res["concatenated"]
-    path = SearchPath(res["path"], list(utt.phones), list(utt.emotions), [db.nodes.phone[j] for j in res["path"]],
-                      [db.nodes.emotion[j] for j in res["path"]], utt.starts, utt.ends, res["terms"], res["cost"],
-                      res["non_captured_joins"], settings.search, res["device"], res["device_reason"])
-    provenance = Provenance(cat.node, res["take"], db.takes.name, cat.source_frame, cat.step, cat.smoothed, db.fps)
-    return Motion(res["markers"], settings.output_fps, res["markers_capture"], db.fps, db.marker_names, db.reference,
-                  res["head_rotation"], res["head_translation"], cat.coeffs, path, provenance)
+    out = res.rendered
+    cat = out.concatenated
+    path = SearchPath(res.path, list(utt.phones), list(utt.emotions), [db.nodes.phone[j] for j in res.path],
+                      [db.nodes.emotion[j] for j in res.path], utt.starts, utt.ends, res.terms, res.cost,
+                      out.non_captured_joins, settings.search, res.device, res.device_reason)
+    provenance = Provenance(cat.node, out.take, db.takes.name, cat.source_frame, cat.step, cat.smoothed, db.fps)
+    return Motion(out.markers, settings.output_fps, out.markers_capture, db.fps, db.marker_names, db.reference,
+                  out.head_rotation, out.head_translation, cat.coeffs, path, provenance)

@@ -315,7 +315,8 @@ def _decoder(settings: AlignSettings, extra: dict, beam: float | None):
     dictionary already has: ``word(2)``, ``word(3)``, ...)."""
     import pocketsphinx
 
-    options = dict(lm=None, samprate=settings.sample_rate, frate=settings.frame_rate, loglevel="FATAL")
+    options: dict[str, object] = dict(lm=None, samprate=settings.sample_rate, frate=settings.frame_rate,
+                                      loglevel="FATAL")
     if beam is not None:
         options.update(beam=beam, wbeam=beam, pbeam=beam, maxhmmpf=-1)
     decoder = pocketsphinx.Decoder(**options)
@@ -371,11 +372,11 @@ def _pocketsphinx(audio: np.ndarray, words: list[str], settings: AlignSettings, 
         # "Failed to set up sub-word alignment": the words were placed, their phones were not
         if not word_pass or prons is None:
             raise _MethodFailed(str(exc)) from None
-        segments, word_segments = _phones_by_duration(word_pass, prons, frame)
-        placed = [w.label for w in word_segments]
+        timed, timed_words = _phones_by_duration(word_pass, prons, frame)
+        placed = [w.label for w in timed_words]
         if placed != words:
             raise _MethodFailed(f"{exc}; placed {len(placed)} of {len(words)} words") from None
-        return segments, word_segments, len(words)
+        return timed, timed_words, len(words)
     if alignment is None:
         raise _MethodFailed("no path")
     stressed = pronunciations(words)
