@@ -13,7 +13,7 @@ CONFIG := configs/default.toml
 PRESET ?= small
 SEED   ?= 0
 
-.PHONY: all demo test test-hostile lint docs report bench vendor clean
+.PHONY: all demo test test-hostile lint docs report bench vendor blender-addon clean
 
 all: demo
 
@@ -32,16 +32,18 @@ test: $(STAMP)
 
 # ruff's lint rules and mypy, as configured in pyproject.toml.
 lint: $(STAMP)
-	$(BIN)/ruff check facesynth tests benchmarks
+	$(BIN)/ruff check facesynth tests benchmarks blender
 	$(BIN)/mypy
 
 # The generated parts of the docs: the stage table of docs/pipeline.md (facesynth/base/pipeline.py),
-# the artifact reference of docs/file-format.md (facesynth/model/spec.py) and the settings
-# reference docs/configuration.md (facesynth/base/config.py).
+# the artifact reference of docs/file-format.md (facesynth/model/spec.py), the settings
+# reference docs/configuration.md (facesynth/base/config.py) and the tables of the registered
+# methods, export formats, capture formats and artifact kinds (facesynth/base/registry.py).
 docs: $(STAMP)
 	$(BIN)/python -m facesynth.base.pipeline docs/pipeline.md
 	$(BIN)/python -m facesynth.model.spec docs/file-format.md
 	$(BIN)/python -m facesynth.base.config > docs/configuration.md
+	$(BIN)/python -m facesynth.base.registry docs/methods.md docs/exports.md docs/inputs.md docs/file-format.md
 
 # The vendored three.js of the web player (facesynth/data/three.*), from npm: `npm ci` installs
 # into node_modules/ the versions pinned in package.json and package-lock.json; terser (pinned there
@@ -74,6 +76,11 @@ TUNE_EVALUATIONS ?= 12
 report: $(STAMP)
 	$(BIN)/python benchmarks/report.py --seeds $(SEEDS) --preset $(REPORT_PRESET) \
 	    --tune-evaluations $(TUNE_EVALUATIONS) --work $(OUT)/report --out docs
+
+# The Blender add-on (docs/blender.md): blender/facesynth_blender zipped for Blender's
+# Preferences > Add-ons > Install -> out/facesynth_blender.zip (Python's standard library only).
+blender-addon:
+	$(PYTHON) blender/make_zip.py $(OUT)
 
 # --- the demo pipeline: each artifact depends on what it is made from (the stage table
 # --- in docs/pipeline.md); a changed input or configuration reruns only what follows it.
