@@ -1,7 +1,16 @@
 import pytest
 
 from facesynth.base.errors import InputError
-from facesynth.base.phonemes import PHONES, VISEME_GROUPS, map_phones, to_festival, viseme
+from facesynth.base.phonemes import (
+    OTHER_DURATION_S,
+    PAU,
+    PHONES,
+    VISEME_GROUPS,
+    map_phones,
+    to_festival,
+    typical_duration,
+    viseme,
+)
 
 
 def test_cmu_stress_marks_are_dropped_and_unstressed_ah_becomes_schwa():
@@ -23,3 +32,13 @@ def test_table_vi_has_fifteen_visemes_and_covers_the_phone_set():
     assert viseme("p") == viseme("b") == viseme("m")
     assert viseme("f") != viseme("p")
     assert all(isinstance(viseme(p), int) for p in PHONES)
+
+
+def test_one_table_of_phone_durations():
+    """The actress's speech and the alignment's duration model read one table of typical phone
+    durations: diphthongs longest, then vowels, sibilants, other fricatives, stops, nasals, and
+    the rest (schwa, approximants, /hh/) shortest."""
+    assert typical_duration("ay") > typical_duration("iy") > typical_duration("s") > typical_duration("f")
+    assert typical_duration("f") > typical_duration("p") > typical_duration("m") > typical_duration("ax")
+    assert typical_duration("hh") == typical_duration("l") == OTHER_DURATION_S
+    assert all(typical_duration(p) > 0 for p in PHONES if p != PAU)

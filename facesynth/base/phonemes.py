@@ -45,6 +45,28 @@ PHONE_ID: dict[str, int] = {p: i for i, p in enumerate(PHONES)}
 
 VOWELS = frozenset("aa ae ah ao aw ax axr ay eh el em en er ey ih iy ow oy uh uw".split())
 
+#: Typical duration (s) of a phone in read English speech: inherent durations after Klatt (1979),
+#: rounded: diphthongs longest, schwa, approximants and /hh/ (aspiration, short in connected
+#: speech) shortest. The one table of phone durations: the virtual actress's speech and the
+#: alignment's duration model both read it (:func:`typical_duration`).
+TYPICAL_DURATION_S: dict[str, float] = {
+    **dict.fromkeys(("aw", "ay", "oy", "ey", "ow"), 0.150),
+    **dict.fromkeys(VOWELS - {"aw", "ay", "oy", "ey", "ow", "ax"}, 0.105),
+    "ax": 0.060,
+    **dict.fromkeys(("p", "b", "t", "d", "k", "g"), 0.075),
+    **dict.fromkeys(("s", "sh", "z", "zh", "ch", "jh"), 0.100),
+    **dict.fromkeys(("f", "v", "th", "dh"), 0.085),
+    **dict.fromkeys(("m", "n", "ng"), 0.065),
+}
+#: The duration of a phone the table does not list (approximants, /hh/, syllabic nasals).
+OTHER_DURATION_S = 0.060
+
+
+def typical_duration(phone: str) -> float:
+    """Typical duration (s) of a Festival phone in read English speech (:data:`TYPICAL_DURATION_S`)."""
+    return TYPICAL_DURATION_S.get(phone, OTHER_DURATION_S)
+
+
 _ARPABET = {
     "AA": "aa", "AE": "ae", "AH": "ah", "AO": "ao", "AW": "aw", "AX": "ax", "AXR": "axr",
     "AY": "ay", "B": "b", "CH": "ch", "D": "d", "DH": "dh", "EH": "eh", "EL": "el",

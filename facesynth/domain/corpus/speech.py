@@ -17,7 +17,7 @@ from importlib import resources
 import numpy as np
 from scipy.signal import butter, lfilter, sosfilt
 
-from facesynth.base.phonemes import PAU, VOWELS, pronunciations, to_festival
+from facesynth.base.phonemes import PAU, VOWELS, pronunciations, to_festival, typical_duration
 
 
 @dataclass(frozen=True)
@@ -63,24 +63,6 @@ _FRICATION = {"s": (4000, 7500, 0.30), "z": (4000, 7500, 0.18), "sh": (2000, 600
 _STOPS = {"p": 0.10, "b": 0.08, "t": 0.14, "d": 0.10, "k": 0.12, "g": 0.09}
 _VOICED_CONSONANTS = {"b", "d", "g", "v", "dh", "z", "zh", "jh", "m", "n", "ng", "l", "r", "w", "y", "em", "en", "el", "nx"}
 _NASALS = {"m", "n", "ng", "em", "en"}
-
-
-def _base_duration(phone: str) -> float:
-    if phone in ("aw", "ay", "oy", "ey", "ow"):
-        return 0.150
-    if phone == "ax":
-        return 0.060
-    if phone in VOWELS:
-        return 0.105
-    if phone in _STOPS:
-        return 0.075
-    if phone in ("s", "sh", "z", "zh", "ch", "jh"):
-        return 0.100
-    if phone in _FRICATION:
-        return 0.085
-    if phone in _NASALS:
-        return 0.065
-    return 0.060
 
 
 @lru_cache(maxsize=1)
@@ -165,7 +147,7 @@ def time_utterance(words: list[str], style: EmotionStyle | Sequence[EmotionStyle
     for k, w in enumerate(words):
         ph, st = lex[w]
         for p, s in zip(ph, st):
-            d = _base_duration(p) * styles[k].tempo * (1.25 if s else 1.0) * float(np.exp(rng.normal(0.0, 0.18)))
+            d = typical_duration(p) * styles[k].tempo * (1.25 if s else 1.0) * float(np.exp(rng.normal(0.0, 0.18)))
             if p in VOWELS and k == len(words) - 1:
                 d *= 1.3  # phrase-final lengthening
             phones.append(p)

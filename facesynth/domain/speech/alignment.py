@@ -42,7 +42,7 @@ import numpy as np
 
 from facesynth.base.config import AlignSettings
 from facesynth.base.errors import InputError
-from facesynth.base.phonemes import PAU, VOWELS, pronunciations, to_festival
+from facesynth.base.phonemes import PAU, pronunciations, to_festival, typical_duration
 from facesynth.formats.audio import resample
 from facesynth.formats.labels import Segment
 
@@ -215,7 +215,7 @@ def align_robust(samples: np.ndarray, rate: int, text: str, *, settings: AlignSe
         longest, at = longest_voiced_pause(phones, active & voiced, hop, skip=len(marks))
         # words after the last one the search placed, given typical durations: named in the method
         result = Alignment(phones, word_segs, f"{method}+durations" if filled else method, attempts, longest, at)
-        expected = sum(_typical_duration(p) for w in words for p in prons[w])
+        expected = sum(typical_duration(p) for w in words for p in prons[w])
         # a marked non-speech event may add up to max_voiced_pause_s of sound
         allowed = settings.max_rate_ratio * expected + len(marks) * settings.max_voiced_pause_s
         # an acoustic alignment shows a wrong text as speech aligned as pause (below); timing by
@@ -426,7 +426,7 @@ def _phones_by_duration(word_pass: list[tuple[str, int, int]], prons: dict, fram
             segments.append(Segment(start, end, PAU))
             continue
         word_segments.append(Segment(start, end, name))
-        d = np.array([_typical_duration(p) for p in prons[name]])
+        d = np.array([typical_duration(p) for p in prons[name]])
         edges = start + (end - start) * np.concatenate([[0.0], np.cumsum(d)]) / d.sum()
         segments += [Segment(float(x), float(y), p) for x, y, p in zip(edges[:-1], edges[1:], prons[name])]
     return segments, word_segments
@@ -457,7 +457,7 @@ def _chunks(audio: np.ndarray, words: list[str], active: np.ndarray, settings: A
         raise _MethodFailed("no silence to cut at")
     voiced = np.array([b - a for a, b in chunks], float)
     share = np.cumsum(voiced) / voiced.sum()
-    expected = np.array([sum(_typical_duration(p) for p in prons[w]) for w in words])
+    expected = np.array([sum(typical_duration(p) for p in prons[w]) for w in words])
     middle = (np.cumsum(expected) - expected / 2) / expected.sum()
     owner = np.searchsorted(share, middle)
     phones: list[Segment] = []
@@ -486,26 +486,6 @@ def _chunks(audio: np.ndarray, words: list[str], active: np.ndarray, settings: A
     return phones, word_segs
 
 
-def _typical_duration(phone: str) -> float:
-    """Typical duration (s) of a Festival phone in read English speech (inherent durations after
-    Klatt 1979, rounded): diphthongs longest, schwa and approximants shortest."""
-    if phone in ("aw", "ay", "oy", "ey", "ow"):
-        return 0.150
-    if phone == "ax":
-        return 0.060
-    if phone in VOWELS:
-        return 0.105
-    if phone in ("p", "b", "t", "d", "k", "g"):
-        return 0.075
-    if phone in ("s", "sh", "z", "zh", "ch", "jh"):
-        return 0.100
-    if phone in ("f", "v", "th", "dh", "hh"):
-        return 0.085
-    if phone in ("m", "n", "ng"):
-        return 0.065
-    return 0.060
-
-
 def _duration_model(words: list[str], prons: dict, active: np.ndarray, hop: float) -> tuple[list[Segment], list[Segment]]:
     """Each word's phones with typical durations, laid end to end over the voiced frames
     (silences longer than 0.25 s between them are skipped and stay pause) and scaled to fill them."""
@@ -522,7 +502,7 @@ def _duration_model(words: list[str], prons: dict, active: np.ndarray, hop: floa
     lengths = spans[:, 1] - spans[:, 0]
     cum = np.concatenate([[0.0], np.cumsum(lengths)])
     sequence = [(w, p) for w in words for p in prons[w]]
-    durations = np.array([_typical_duration(p) for _, p in sequence])
+    durations = np.array([typical_duration(p) for _, p in sequence])
     bounds = np.concatenate([[0.0], np.cumsum(durations)]) * cum[-1] / durations.sum()
 
     def real(t: float, left: bool) -> float:
