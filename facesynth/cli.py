@@ -671,8 +671,9 @@ def _fit_method(ctx: Context, method: str, db: Path, keyshapes_path: Path | None
     s = stage.run(method, db, output, MethodSettings.of(ctx.config), keyshapes_path=keyshapes_path,
                   overwrite=ctx.overwrite)
     ctx.detail(f"fitted in {s.fit_s:.2f} s")
-    what = (f"{s.phones} phones and {s.pairs} (phone, emotion) Gaussians over {s.keyshapes} key-shapes"
-            if method == "trajectory" else f"{s.labels} (phone, emotion) types")
+    parts = [f"{s.phones} phones and {s.pairs} (phone, emotion) Gaussians over {s.keyshapes} key-shapes"
+             if s.keyshapes is not None else "", f"{s.labels} (phone, emotion) types" if s.labels is not None else ""]
+    what = "; ".join(p for p in parts if p) or "fitted"
     ctx.say(f"{method} model: {what} (fit RMS {s.fit_rms_mm:.2f} mm per marker), {s.bytes} bytes -> {output}")
 
 
