@@ -23,6 +23,11 @@ TOP_LEVEL = ("facesynth", "facesynth.__main__", "facesynth.cli")
 DEFERRED = {
 }
 
+#: The domain's subject packages in the order they may import one another: each imports only
+#: those before it (and base, formats, model). docs/architecture.md's table says what each holds.
+DOMAIN_ORDER = ("postprocess", "speech", "head_motion", "rig", "search", "retarget", "rendering", "expression",
+                "database", "corpus", "capture", "methods", "live", "exports", "evaluation", "batch")
+
 #: Modules that import only the standard library (they are read before anything is installed
 #: or configured: the stage declarations, the registries).
 STDLIB_ONLY = ("facesynth.base.errors", "facesynth.base.pipeline", "facesynth.base.registry")
@@ -179,6 +184,15 @@ def test_no_package_import_circle():
     """No circle between packages either (a layer's folder; the domain's subject packages),
     imports inside functions included: each package can be read knowing only those below it."""
     assert _circles(PACKAGE_GRAPH) == []
+
+
+def test_the_domain_packages_import_only_those_before_them():
+    domain = {p.rpartition(".")[2] for p in PACKAGE_GRAPH if p.startswith("facesynth.domain.")}
+    assert sorted(domain - set(DOMAIN_ORDER)) == []  # a new package needs its place in the order
+    later = sorted(f"{p} imports {t}" for p, targets in PACKAGE_GRAPH.items() if p.startswith("facesynth.domain.")
+                   for t in targets if t.startswith("facesynth.domain.")
+                   and DOMAIN_ORDER.index(t.rpartition(".")[2]) > DOMAIN_ORDER.index(p.rpartition(".")[2]))
+    assert later == []
 
 
 def test_the_circle_finder_finds_a_circle():

@@ -192,6 +192,5 @@ def main(argv: list[str]) -> int:
 
 
 if __name__ == "__main__":  # pragma: no cover
-    from facesynth.base import registry  # the registries as the members' packages fill them
-
-    sys.exit(registry.main(sys.argv[1:]))
+    # this module as imported: its registries are the ones the members' packages fill
+    sys.exit(importlib.import_module("facesynth.base.registry").main(sys.argv[1:]))
