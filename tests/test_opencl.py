@@ -127,13 +127,15 @@ def test_devices_lists_each_device_with_why_it_does_not_build(no_device_builds):
 
 
 def test_verbose_says_which_device_and_why(monkeypatch, fresh_choice, tiny_db, tiny_corpus, held_out_take, tmp_path):
-    from facesynth.model.motiondb import MotionDatabase
+    from facesynth.domain.methods import search as search_method
+    from facesynth.domain.search import pairs, synthesis
 
     cpu = _device(0, 0, name="cpu0")
     monkeypatch.setattr(opencl, "list_devices", lambda: [cpu])
     monkeypatch.setattr(opencl, "probe", lambda d: opencl.Probe(d, True))
-    costs = MotionDatabase.transition_costs
-    monkeypatch.setattr(MotionDatabase, "transition_costs", lambda self, s, on=None: costs(self, s, False))  # no real device behind cpu0
+    costs = pairs.transition_costs
+    for module in (search_method, synthesis):  # no real device behind cpu0
+        monkeypatch.setattr(module, "transition_costs", lambda db, s, on=None: costs(db, s, False))
     tg = tiny_corpus / "labels" / f"{held_out_take}.TextGrid"
     r = CliRunner().invoke(main, ["synthesize", str(tiny_db), "--phonemes", str(tg), "-o", str(tmp_path / "m.h5"), "-v"])
     assert r.exit_code == 0, r.output
