@@ -95,7 +95,7 @@ def test_overwrite_replaces(tmp_path):
 
 _SLOW_WRITE = textwrap.dedent("""
     import sys, time
-    from facesynth import artifacts
+    from facesynth.model import artifacts
     publish = artifacts.publish
     def slow(tmp, path, overwrite):
         open(str(path) + ".ready", "w").close()  # the temporary file is complete: signal now
@@ -129,7 +129,7 @@ def test_signal_during_a_write_removes_the_temporary(tiny_artifacts, tmp_path, s
 # The second output of a command is not published: a signal arrives just after the first is in place.
 _SIGNAL_BETWEEN_OUTPUTS = textwrap.dedent("""
     import os, signal, sys
-    from facesynth import artifacts
+    from facesynth.model import artifacts
     publish = artifacts.publish
     def then_signal(tmp, path, overwrite):
         publish(tmp, path, overwrite)
@@ -247,7 +247,7 @@ _IN_PROCESS_THEN_WAIT = textwrap.dedent("""
 _IN_PROCESS_SLOW_WRITE = textwrap.dedent("""
     import sys, time
     from click.testing import CliRunner
-    from facesynth import artifacts
+    from facesynth.model import artifacts
     publish = artifacts.publish
     def slow(tmp, path, overwrite):
         open(str(path) + ".ready", "w").close()

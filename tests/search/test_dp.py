@@ -48,7 +48,7 @@ def test_ties_go_to_the_lowest_index(opencl_device):
 def test_buffers_split_below_the_allocation_limit_give_the_same_answer(monkeypatch, opencl_device):
     tc, obs = _random(700, 8, seed=3)
     ref = dp_numpy(tc, obs)
-    monkeypatch.setattr("facesynth.base.opencl.max_alloc_bytes", lambda: 3 * 700 * 96 * 4)  # three panels per buffer
+    monkeypatch.setattr("facesynth.domain.search.dp.max_alloc_bytes", lambda: 3 * 700 * 96 * 4)  # three panels per buffer
     runner = OpenCLDp(tc)
     assert len(runner.groups) == 3
     res = runner.run(obs)
