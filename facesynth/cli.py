@@ -308,7 +308,10 @@ def sample_corpus_cmd(ctx: Context, out_dir: Path, preset: str, seed: int):
 
     Presets: tiny (a few takes, for quick tests), small (the demo corpus: sentences s000 to
     s017 in four emotions; every example in facesynth's help uses it) and paper (the size of
-    the paper's database).
+    the paper's database). facegood: not the actress but a real performer shipped with
+    facesynth, FACEGOOD's seven takes (one speaker, presumably Mandarin, neutral, 11 minutes,
+    face solved from video into blendshape curves; MIT), as curves, WAV and a manifest whose
+    phones ingest recognises from the audio.
 
     \b
     Example:
@@ -317,6 +320,10 @@ def sample_corpus_cmd(ctx: Context, out_dir: Path, preset: str, seed: int):
     from facesynth.stages import sample_corpus as stage
 
     summary = stage.run(out_dir, preset, seed, ctx.config.settings("sample_corpus"), ctx.overwrite)
+    if preset == "facegood":
+        ctx.say(f"wrote {summary.takes} takes of {summary.performer}, {summary.seconds:.1f} s of speech and curves, "
+                f"to {out_dir}; ingest recognises their phones from the audio")
+        return
     ctx.say(f"wrote {summary.takes} takes, {summary.seconds:.1f} s of capture, "
             f"{summary.train_phones} training phones, {summary.contamination_events} contamination events to {out_dir}")
 
@@ -361,9 +368,16 @@ def align(ctx: Context, audio: Path, text: str | None, transcript: Path | None, 
 @main.command()
 @click.argument("manifest", type=EXISTING)
 @click.option("-o", "--output", type=PATH, required=True, help="Output corpus.h5.")
+@click.option("--rig", type=PATH, default=None,
+              help="The rig Live Link Face takes and other curves pose (default: the built-in rig, recorded at the "
+                   "virtual actress's markers); a folder of OBJ files or a .gltf/.glb, with --binding.")
+@click.option("--binding", type=EXISTING, default=None,
+              help="CSV marker,vertex: the markers recorded on the rig that curve takes pose.")
 @stage
-def ingest(ctx: Context, manifest: Path, output: Path):
-    """Read a capture manifest (mocap, audio, alignments) into a corpus artifact.
+def ingest(ctx: Context, manifest: Path, output: Path, rig: Path | None, binding: Path | None):
+    """Read a capture manifest into a corpus artifact: per take markers (C3D, TRC, CSV), a Live
+    Link Face CSV, another rig's curves with a mapping to ARKit, or a video (facesynth[video]);
+    audio; phone timing (a TextGrid, a transcript to align, or recognised from the audio).
 
     \b
     Example:
@@ -371,11 +385,16 @@ def ingest(ctx: Context, manifest: Path, output: Path):
     """
     from facesynth.stages import ingest as stage_ingest
 
-    s = stage_ingest.run(manifest, output, ctx.config.settings("ingest"), ctx.config.settings("align"), ctx.overwrite)
+    s = stage_ingest.run(manifest, output, ctx.config.settings("ingest"), ctx.config.settings("align"), ctx.overwrite,
+                         rig, binding)
     def takes(names: list[str]) -> str:
         listed = ", ".join(names[:4]) + (", ..." if len(names) > 4 else "")
         return f"{len(names)} take{'s' if len(names) != 1 else ''} ({listed})"
 
+    if s.recognized:
+        ctx.say(f"note: no alignment or transcript for {takes(s.recognized)}: phones recognised from the audio.")
+    if s.posed:
+        ctx.say("note: every take was posed from curves; its rest pose and head pose are recorded for normalize.")
     if s.without_audio:
         ctx.say(f"note: no audio for {takes(s.without_audio)}; head-motion needs it.")
     if s.without_phones:
@@ -412,7 +431,9 @@ def normalize(ctx: Context, corpus: Path, output: Path):
         ctx.say("no rigid markers are named; found from the data (spread: how much each one's distances to the others "
                 "vary): " + ", ".join(f"{n} {x:.2f} mm" for n, x in zip(s.rigid_markers, s.rigid_spreads_mm)))
     ctx.detail("head pose fitted on " + ", ".join(f"{n} (weight {w:.2f})" for n, w in zip(s.rigid_markers, s.rigid_weights)))
-    ctx.say(f"normalized {s.frames} frames (head pose on {len(s.rigid_markers)} rigid markers){gaps} -> {output}")
+    pose = "known head pose of takes posed from curves" if s.rigid_source == "known" else \
+        f"head pose on {len(s.rigid_markers)} rigid markers"
+    ctx.say(f"normalized {s.frames} frames ({pose}){gaps} -> {output}")
 
 
 @main.command()
@@ -750,6 +771,9 @@ def solve(ctx: Context, motion: Path, rig, binding, take, output: Path):
     from facesynth.stages import solve as stage
 
     s = stage.run(motion, output, ctx.config.settings("solve"), rig, binding, ctx.overwrite, take)
+    if s.exact:
+        ctx.say("note: a capture posed from curves (noise-free markers) is solved without smoothing or ridge "
+                "(solve.posed_captures).")
     ctx.say(f"solved {s.shapes} shapes of rig {s.rig} over {s.frames} frames ({s.iterations} iterations, "
             f"marker residual RMS {s.residual_rms:.3g} rig units; per marker median "
             f"{s.marker_residual_median_mm:.2f} mm, 95th percentile {s.marker_residual_p95_mm:.2f} mm) -> {output}")

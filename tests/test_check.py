@@ -33,8 +33,10 @@ def written(tiny_corpus, tiny_artifacts, tiny_db, held_out_take, config, tmp_pat
         expression,
         fit_method,
         head_motion,
+        ingest,
         isomap,
         keyshapes,
+        normalize,
         prune,
         retarget,
         rig_mesh,
@@ -78,6 +80,28 @@ def written(tiny_corpus, tiny_artifacts, tiny_db, held_out_take, config, tmp_pat
     for name, source in (("coarticulation", out["coarticulation"]), ("mean", tiny_db)):
         synthesize.run(source, out[f"{name}_motion"], every, config.settings("ingest"), config.settings("align"),
                        method=name, phones_path=tg)
+    # a corpus of takes posed from curves (a Live Link Face take) writes the rest pose and the known
+    # head pose, and its normalized capture says it is posed
+    from facesynth.domain.rig.face import load_face_rig
+    from facesynth.formats import livelink_face
+
+    (d / "live_link").mkdir()
+    livelink_face.write(d / "live_link" / "take.csv", load_face_rig().arkit_names, np.full((30, 52), 0.2), 60.0,
+                        head=np.full((30, 3), 0.1))
+    (d / "live_link" / "manifest.csv").write_text("take,mocap\nt,take.csv\n")
+    out["posed_corpus"], out["posed_normalized"] = d / "posed_corpus.h5", d / "posed_normalized.h5"
+    ingest.run(d / "live_link" / "manifest.csv", out["posed_corpus"], config.settings("ingest"), config.settings("align"))
+    normalize.run(out["posed_corpus"], out["posed_normalized"], config.settings("normalize"))
+    # no stage fits the articulation model yet: one fitted on a take's audio, its loudness the target
+    from facesynth.domain.speech import articulation
+    from facesynth.formats.audio import read_audio
+
+    samples, rate = read_audio(tiny_corpus / "audio" / f"{held_out_take}.wav")
+    raw = articulation.frame_features(samples, rate)
+    loudness = raw[::3, articulation.I_LOG_RMS:articulation.I_LOG_RMS + 1].astype(np.float64)
+    out["articulation"] = d / "articulation.h5"
+    articulation.fit([articulation.Take(raw, loudness, 100.0 / 3.0)], ("opening",)).write(
+        out["articulation"], config="{}", inputs=[])
     return out
 
 
@@ -124,7 +148,8 @@ def test_the_specification_covers_every_kind_at_its_schema():
 @pytest.mark.parametrize("name", ["corpus", "normalized", "pca", "motiondb", "pruned", "isomap", "motion", "greedy",
                                   "capture", "meshanim", "expression", "restyle", "headmotion", "keyshapes", "curves",
                                   "retargeted", "rig_mesh", "trajectory", "trajectory_motion", "coarticulation",
-                                  "coarticulation_motion", "mean_motion"])
+                                  "coarticulation_motion", "mean_motion", "posed_corpus", "posed_normalized",
+                                  "articulation"])
 def test_every_kind_written_by_its_stage_checks_clean(written, name):
     report = check.check_file(written[name])
     assert report.problems == []
@@ -212,7 +237,8 @@ DAMAGES = {
                        "`facesynth ingest`."),
     "an unknown kind": ("pca", lambda f: f.attrs.__setitem__("facesynth_kind", "wireframe"),
                         "/: unknown kind 'wireframe'; facesynth writes corpus, normalized, pca, motiondb, isomap, "
-                        "motion, meshanim, expression, headmotion, curves, keyshapes, trajectory, coarticulation."),
+                        "motion, meshanim, expression, headmotion, curves, keyshapes, trajectory, coarticulation, "
+                        "articulation."),
     "a capture without its take": ("capture", lambda f: f.attrs.__delitem__("take"),
                                    "/: missing attribute 'take' (str: the captured take)."),
 }

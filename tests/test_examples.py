@@ -12,12 +12,15 @@ installation.
 The shell blocks of a page of ``docs/`` (fenced ``sh``, ``bash`` or ``console``) run with bash,
 in order, in one such linked folder per page, with ``facesynth`` on the ``PATH``. A block that
 cannot run here says so in an HTML comment on the line before it, ``<!-- not run: REASON -->``
-(the reason is reported); every other block runs. Links between the README and the pages of
+(the reason is reported); a block that needs an optional extra names the module it imports,
+``<!-- needs: MODULE (EXTRA) -->``, and runs where that module is installed (CI installs them);
+every other block runs. Links between the README and the pages of
 ``docs/`` must resolve, anchors included.
 """
 
 from __future__ import annotations
 
+import importlib.util
 import os
 import re
 import shlex
@@ -217,19 +220,26 @@ def test_readme_block_runs(tmp_path):
 DOCS = ROOT / "docs"
 SHELL_LANGUAGES = ("sh", "bash", "console")
 NOT_RUN = re.compile(r"^<!--\s*not run:\s*(?P<reason>.*?)\s*-->$")
+NEEDS = re.compile(r"^<!--\s*needs:\s*(?P<module>[\w.]+)\s*\((?P<extra>[^)]*)\)\s*-->$")
 
 
 @dataclass(frozen=True)
 class Block:
     """A fenced code block of a Markdown page: its language tag ('' for none), its text
     (dedented to the fence), the line of its opening fence, and the reason given before it
-    for not running it (None: it runs)."""
+    for not running it (None: it runs), or the module of an optional extra it needs (None: none).
+    """
 
     page: Path
     line: int
     language: str
     text: str
     not_run: str | None
+    needs: str | None = None
+
+    def runs_here(self) -> bool:
+        """Not marked ``not run``, and the module it needs (if any) is installed."""
+        return self.not_run is None and (self.needs is None or importlib.util.find_spec(self.needs) is not None)
 
     @property
     def where(self) -> str:
@@ -253,13 +263,14 @@ def fenced_blocks(page: Path) -> list[Block]:
         indent, language = opening.group(1), opening.group(2).lower()
         before = next((line.strip() for line in reversed(lines[:i]) if line.strip()), "")
         reason = NOT_RUN.match(before)
+        needs = NEEDS.match(before)
         body, j = [], i + 1
         while j < len(lines) and lines[j].strip() != "```":
             body.append(lines[j][len(indent):] if lines[j].startswith(indent) else lines[j].lstrip())
             j += 1
         assert j < len(lines), f"{page.relative_to(ROOT)}:{i + 1}: a code block that is never closed"
         blocks.append(Block(page, i + 1, language, "".join(line + "\n" for line in body),
-                            reason.group("reason") if reason else None))
+                            reason.group("reason") if reason else None, needs.group("module") if needs else None))
         i = j + 1
     return blocks
 
@@ -316,7 +327,7 @@ def _written(blocks: list[Block]) -> set[str]:
 def test_doc_blocks_run(page, chain, tmp_path):
     """The page's shell blocks, in order, in one folder linked to what the chain left."""
     blocks = shell_blocks(DOCS / page)
-    runnable = [b for b in blocks if b.not_run is None]
+    runnable = [b for b in blocks if b.runs_here()]
     folder = tmp_path / "work"
     folder.mkdir()
     written = _written(runnable)

@@ -17,11 +17,12 @@ from facesynth.base.config import Config
 from facesynth.base.pipeline import producers
 from facesynth.base.registry import ARTIFACT_KINDS, CAPTURE_READERS, EXPORT_FORMATS, METHODS
 from facesynth.cli import main
+from facesynth.domain.capture.readers import read_capture
 from facesynth.domain.exports.animation import Exportable
 from facesynth.domain.exports.format import ExportFormat, ExportOptions
 from facesynth.domain.methods import FitSummary, Method, MethodSettings, Synthesis, SynthesisSummary
 from facesynth.domain.methods.core import frame_motion
-from facesynth.formats.mocap import CaptureReader, MarkerTake, read_mocap
+from facesynth.formats.mocap import MarkerTake
 from facesynth.model.artifacts import attr, open_artifact, read, read_strings, write_artifact, write_strings
 from facesynth.model.spec import Attr, Dataset, Kind
 
@@ -103,7 +104,7 @@ def toys():
     METHODS.register("toymean", ToyMethod, "a toy: the database's mean pose, held still", fitted=True,
                      source_kind="toymean")
     EXPORT_FORMATS.register("toy-txt", ToyText(), "a toy: the rig weights as text", suffix=".toy.txt", batch=True)
-    CAPTURE_READERS.register("toy", CaptureReader(read_toy_markers), "a toy: markers as text", suffixes=(".toym",))
+    CAPTURE_READERS.register("toy", read_toy_markers, "a toy: markers as text", suffixes=(".toym",))
     try:
         yield
     finally:
@@ -156,7 +157,7 @@ def test_toy_members_work_like_the_built_in_ones(toys, tiny_db, tiny_corpus, hel
     assert weights.ndim == 2 and weights.shape[1] == 55
     capture = tmp_path / "take.toym"
     capture.write_text("60\nA B\n0 0 0 1 1 1\n0 0 1 1 1 2\n")
-    take = read_mocap(capture)
+    take = read_capture(capture)
     assert take.names == ["A", "B"] and take.fps == 60 and take.positions.shape == (2, 2, 3)
 
 

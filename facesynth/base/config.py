@@ -39,8 +39,10 @@ else:  # pragma: no cover
 
 DEFAULTS_NAME = "configs/default.toml"
 
-#: Presets of ``facesynth sample-corpus --preset`` (sizes in :mod:`facesynth.domain.corpus.generate`).
-SAMPLE_CORPUS_PRESETS: tuple[str, ...] = ("tiny", "small", "paper")
+#: Presets of ``facesynth sample-corpus --preset``: the virtual actress's sizes
+#: (:mod:`facesynth.domain.corpus.generate`) and a real performer's takes shipped with facesynth
+#: (``facegood``: :mod:`facesynth.domain.capture.facegood`).
+SAMPLE_CORPUS_PRESETS: tuple[str, ...] = ("tiny", "small", "paper", "facegood")
 
 #: Phones a Table IV list may name: the Festival set without the pause.
 _SPOKEN_PHONES: tuple[str, ...] = tuple(p for p in PHONES if p != PAU)
@@ -107,6 +109,16 @@ class IngestSettings:
     max_audio_mismatch_s: float = setting("not in the paper: input check", unit="s", ge=0)
     phone_tiers: tuple[str, ...] = setting("not in the paper: TextGrid tier names", min_items=1)
     emotion_tiers: tuple[str, ...] = setting("not in the paper: TextGrid tier names of per-phone emotion")
+    recognize_phones: bool = setting("not in the paper: a take with audio but neither alignment nor transcript gets "
+                                     "its phones recognised from the audio (align.recognition); false: no phones")
+    curves_mapping: str = setting("not in the paper: another rig's curves -> ARKit (CSV source,arkit,weight) for takes "
+                                  "whose manifest row names none (relative to the working folder); empty: none")
+    curves_fps: float = setting("not in the paper: frame rate of curve takes without time (.npy) whose manifest row "
+                                "gives none; 0: none", unit="frames/s", ge=0, le=2000)
+    live_link_max_gap_s: float = setting("not in the paper: Live Link Face rows further apart leave a gap instead of "
+                                         "being interpolated", unit="s", gt=0, le=10)
+    video_eye_corners_mm: float = setting("not in the paper: a video take's scale, the distance between the outer eye "
+                                          "corners (adult biocular width 87-91 mm)", unit="mm", gt=0, le=1000)
 
 
 @dataclass(frozen=True)
@@ -146,6 +158,9 @@ class NormalizeSettings:
     rigid_max_spread_mm: float = setting("not in the paper: rigid markers found from the data when none are named; "
                                          "the most a pair's distance may vary (standard deviation)", unit="mm", gt=0)
     rigid_min_markers: int = setting("not in the paper: fewest rigid markers found from the data", ge=3, le=1000)
+    known_pose: bool = setting("not in the paper: a corpus whose takes were all posed from curves is normalized with "
+                               "their known rest pose as the reference and their known head pose (no fit); false: "
+                               "as any capture")
 
 
 @dataclass(frozen=True)
@@ -423,6 +438,12 @@ class SolveSettings:
                                unit="weight", gt=0)
     output_fps: float = setting("not in the papers: rate of the curves solved from a normalized capture (render's rate)",
                                 unit="frames/s", gt=0, le=1000)
+    posed_captures: str = setting("not in the papers: a normalized capture posed from curves (noise-free markers, rest "
+                                  "and head pose known) is solved 'exact' (no smoothing, no ridge, exact_iterations "
+                                  "and exact_tolerance) or 'regularized' (the settings above)",
+                                  choices=("exact", "regularized"))
+    exact_iterations: int = setting("not in the papers: most iterations of the exact solve", ge=1, le=1000000)
+    exact_tolerance: float = setting("not in the papers: the exact solve's stopping step", unit="weight", gt=0)
 
 
 @dataclass(frozen=True)

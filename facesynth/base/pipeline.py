@@ -162,7 +162,8 @@ STAGES: tuple[Stage, ...] = (
            paper="III (forced alignment)"),
     _stage("ingest", "Read a capture manifest into a corpus artifact.", "facesynth ingest manifest.csv -o corpus.h5",
            _s("ingest", "run", "IngestResult"), reads=("ingest", "align"), outputs=("corpus",),
-           output_options=("output",), takes="manifest + its files (takes with only a transcript are aligned)",
+           output_options=("output",), takes="manifest + its takes (markers, Live Link Face, curves, video), audio, phones "
+           "(a transcript aligned, audio alone recognised)",
            paper="III"),
     _stage("normalize", "Fill marker gaps and remove head motion.", "facesynth normalize corpus.h5 -o normalized.h5",
            _s("normalize", "run", "NormalizeResult"), reads=("normalize",), inputs=("corpus",),
@@ -322,6 +323,12 @@ READS: dict[str, tuple[str, ...]] = {s.name: s.reads + (ALWAYS_READ,) for s in S
 FOLDER_OUTPUTS: dict[str, Mapping[str, Folder]] = {s.name: s.folder_outputs for s in STAGES if s.folder_outputs}
 
 
+#: What writes a kind no command writes yet, for a message ("make it with ... first").
+OTHER_WRITERS: dict[str, str] = {
+    "articulation": "`python benchmarks/voice_articulation.py --model-out`",
+}
+
+
 def writers(kind: str) -> tuple[str, ...]:
     """The commands that write artifacts of ``kind``, in pipeline order ('facesynth synthesize', ...)."""
     return tuple(s.command for s in STAGES if kind in s.output_kinds())
@@ -329,7 +336,7 @@ def writers(kind: str) -> tuple[str, ...]:
 
 def producers(kind: str) -> str:
     """The commands that write ``kind``, for a message: '`facesynth synthesize` or `facesynth capture`'."""
-    names = [f"`{w}`" for w in writers(kind)] or ["`facesynth`"]
+    names = [f"`{w}`" for w in writers(kind)] or [OTHER_WRITERS.get(kind, "`facesynth`")]
     return names[0] if len(names) == 1 else ", ".join(names[:-1]) + " or " + names[-1]
 
 

@@ -139,8 +139,9 @@ METHODS = Registry("method", "facesynth.domain.methods")
 #: ``(Exportable, Path, ExportOptions) -> None``; facts: ``suffix``, ``needs`` (an optional extra).
 EXPORT_FORMATS = Registry("export format", "facesynth.domain.exports")
 #: Capture readers (a capture manifest's ``mocap`` column): ``target`` a
-#: :class:`facesynth.formats.mocap.CaptureReader`; facts: ``suffixes``.
-CAPTURE_READERS = Registry("capture format", "facesynth.formats")
+#: :class:`facesynth.domain.capture.readers.CaptureReader`, or a marker file's reader
+#: ``path -> MarkerTake``; facts: ``suffixes``, ``needs`` (an optional extra).
+CAPTURE_READERS = Registry("capture format", "facesynth.domain.capture")
 #: Artifact kinds: ``target`` its :class:`facesynth.model.spec.Kind` (which holds its schema).
 ARTIFACT_KINDS = Registry("artifact kind", "facesynth.model")
 

@@ -10,7 +10,6 @@ from __future__ import annotations
 import csv
 import logging
 import warnings
-from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -18,12 +17,13 @@ import numpy as np
 
 from facesynth.base import limits
 from facesynth.base.errors import InputError
-from facesynth.base.registry import CAPTURE_READERS
 
 from .c3dfile import MODEL_OUTPUT_GROUPS, C3dPoints, read_points
 
 log = logging.getLogger(__name__)
 
+#: The marker files :func:`read_mocap` reads.
+MARKER_SUFFIXES = (".c3d", ".trc", ".csv")
 _UNIT_TO_MM = {"mm": 1.0, "cm": 10.0, "m": 1000.0, "millimeters": 1.0, "meters": 1000.0}
 
 
@@ -47,40 +47,17 @@ def _unit_scale(unit: str, path: Path) -> float:
     return _UNIT_TO_MM[key]
 
 
-@dataclass(frozen=True)
-class CaptureReader:
-    """A capture format (registered in :mod:`facesynth.formats`, :data:`CAPTURE_READERS`):
-    ``read`` turns a file into a :class:`MarkerTake`; ``recognizes`` tells, from the file's
-    contents, whether a file with one of the format's suffixes is of this format (None: the
-    suffix says it). Among the formats sharing a suffix the first registered that recognizes
-    the file reads it."""
-
-    read: Callable[[Path], MarkerTake]
-    recognizes: Callable[[Path], bool] | None = None
-
-
-def capture_reader(path: Path) -> CaptureReader:
-    """The registered reader of ``path`` (by its suffix, then its contents); one sentence naming
-    the formats read for a file of none of them."""
-    suffix = Path(path).suffix.lower()
-    known = [e for e in CAPTURE_READERS.entries() if suffix in e.facts["suffixes"]]
-    for entry in known:
-        reader = entry.load()
-        if reader.recognizes is None or reader.recognizes(path):
-            return reader
-    suffixes = list(dict.fromkeys(x for e in CAPTURE_READERS.entries() for x in e.facts["suffixes"]))
-    if known:
-        raise InputError(f"{path}: not a capture file facesynth reads ({', '.join(e.summary for e in known)}); "
-                         "check the manifest's mocap column.")
-    raise InputError(f"{path}: unsupported mocap format {suffix!r}; use {', '.join(suffixes[:-1])} or {suffixes[-1]}.")
-
-
 def read_mocap(path: Path) -> MarkerTake:
-    """Read a capture file by its registered format (:func:`capture_reader`)."""
+    """Read a marker file (C3D, TRC or marker CSV, by its suffix: :data:`MARKER_SUFFIXES`) and
+    check it (:func:`check_take`). Every kind of take a manifest may name, markers among them, is
+    read by :func:`facesynth.domain.capture.readers.read_capture`."""
     path = Path(path)
     if not path.exists():
         raise InputError(f"{path}: mocap file not found; check the manifest's mocap column.")
-    take = capture_reader(path).read(path)
+    suffix = path.suffix.lower()
+    if suffix not in MARKER_SUFFIXES:
+        raise InputError(f"{path}: not a marker file ({suffix!r}); use .c3d, .trc or .csv.")
+    take = {".c3d": read_c3d, ".trc": read_trc, ".csv": read_csv}[suffix](path)
     if take.positions.shape[0] == 0:
         raise InputError(f"{path}: the take has no frames; re-export it or drop it from the manifest.")
     if len(set(take.names)) != len(take.names):
@@ -428,7 +405,8 @@ def read_csv(path: Path) -> MarkerTake:
     except StopIteration:
         raise InputError(f"{path}: empty CSV file; export the take again.") from None
     if "time" not in header:
-        raise InputError(f"{path}: the CSV header has no 'time' column (seconds); add one.")
+        raise InputError(f"{path}: the CSV header has no 'time' column (seconds) for a marker CSV; add one "
+                         "(another rig's curves need their mapping to ARKit in the manifest's mapping column).")
     names = []
     for column in header:
         if column.endswith("_x") and column[:-2] + "_y" in header and column[:-2] + "_z" in header:
@@ -463,8 +441,3 @@ def write_csv(path: Path, take: MarkerTake) -> None:
         writer.writerow(["frame", "time"] + [f"{n}_{a}" for n in take.names for a in "xyz"])
         for i, xyz in enumerate(take.positions):
             writer.writerow([i, f"{i / take.fps:.6f}"] + ["" if np.isnan(v) else f"{v:.4f}" for v in xyz.reshape(-1)])
-
-
-C3D = CaptureReader(read_c3d)
-TRC = CaptureReader(read_trc)
-CSV = CaptureReader(read_csv)

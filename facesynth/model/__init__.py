@@ -42,3 +42,5 @@ ARTIFACT_KINDS.register("keyshapes", "facesynth.model.spec:KEYSHAPES", "key-shap
 ARTIFACT_KINDS.register("trajectory", "facesynth.model.spec:TRAJECTORY", "a fitted key-shape trajectory model")
 ARTIFACT_KINDS.register("coarticulation", "facesynth.model.spec:COARTICULATION",
                         "a fitted Cohen-Massaro coarticulation model")
+ARTIFACT_KINDS.register("articulation", "facesynth.model.spec:ARTICULATION",
+                        "a fitted acoustic articulation model (voice features to mouth curves)")

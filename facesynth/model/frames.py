@@ -70,12 +70,17 @@ def write_head_frames(g: h5py.File, frames: HeadFrames) -> None:
 
 @dataclass
 class NormalizedFrames:
-    """A ``normalized`` artifact: the corpus tables and its frames with head motion removed."""
+    """A ``normalized`` artifact: the corpus tables and its frames with head motion removed.
+
+    posed : every take was posed from curves, its known rest pose the reference and its known
+    head pose removed: the markers carry no measurement noise (root attribute ``capture`` =
+    ``posed``; see ``solve.posed_captures``)."""
 
     takes: Takes
     phones: Phones
     marker_names: list[str]
     frames: HeadFrames
+    posed: bool = False
 
     KIND = "normalized"
 
@@ -83,13 +88,22 @@ class NormalizedFrames:
     def read(cls, path: Path) -> "NormalizedFrames":
         """The ``normalized`` artifact at ``path``."""
         with open_artifact(path, cls.KIND) as f:
-            return cls(*read_tables(f), read_head_frames(f))
+            posed = "capture" in f.attrs and attr(f, "capture") == "posed"
+            return cls(*read_tables(f), read_head_frames(f), posed)
+
+    @classmethod
+    def read_posed(cls, path: Path) -> bool:
+        """Whether the ``normalized`` artifact at ``path`` is of a capture posed from curves (its
+        root attribute alone is read)."""
+        with open_artifact(path, cls.KIND) as f:
+            return "capture" in f.attrs and attr(f, "capture") == "posed"
 
     def write(self, path: Path, *, config: str, inputs, overwrite: bool = False) -> None:
         """Write a ``normalized`` artifact to ``path``."""
         with write_artifact(path, self.KIND, config=config, inputs=inputs, overwrite=overwrite) as g:
             write_tables(g, self.takes, self.phones, self.marker_names)
             write_head_frames(g, self.frames)
+            g.attrs["capture"] = "posed" if self.posed else "markers"
 
 
 def relative_to_take(rotations: np.ndarray, translations: np.ndarray, take_ranges: list[slice]) -> tuple[np.ndarray, np.ndarray]:

@@ -49,13 +49,17 @@ class Motion:
     KIND = "motion"
 
     @classmethod
-    def read(cls, path: Path) -> "Motion":
-        """The marker motion and head motion (not the search path or provenance)."""
+    def read(cls, path: Path, *, search: bool = False) -> "Motion":
+        """The marker motion and head motion; with ``search``, also the search path and per-frame
+        provenance (:meth:`read_search`), so :meth:`frame_provenance` needs no file."""
         with open_artifact(path, cls.KIND) as f:  # the head motion is required: checked at the door
-            return cls(read(f, "markers"), float(attr(f["markers"], "fps")), read(f, "markers_capture"),
-                       float(attr(f["markers_capture"], "fps")), read_strings(f, "marker_names"), read(f, "reference"),
-                       read(f, "head_rotation"), read(f, "head_translation"),
-                       source=str(f.attrs.get("source", "synthesis")), take=str(f.attrs.get("take", "")))
+            motion = cls(read(f, "markers"), float(attr(f["markers"], "fps")), read(f, "markers_capture"),
+                         float(attr(f["markers_capture"], "fps")), read_strings(f, "marker_names"), read(f, "reference"),
+                         read(f, "head_rotation"), read(f, "head_translation"),
+                         source=str(f.attrs.get("source", "synthesis")), take=str(f.attrs.get("take", "")))
+        if search:
+            motion.path, motion.provenance = cls.read_search(path)
+        return motion
 
     @staticmethod
     def read_search(path: Path) -> tuple[SearchPath | None, Provenance | None]:
@@ -79,10 +83,15 @@ class Motion:
                                     read(f, "provenance/smoothed").astype(bool), float(attr(v, "fps")))
             return search, provenance
 
-    def frame_provenance(self, path: Path):
+    def frame_provenance(self, path: Path | None = None):
         """Where each output frame came from (a :class:`~facesynth.model.provenance.FrameProvenance`,
-        read from the motion at ``path``); None for a restyled motion, which records nothing."""
-        search, prov = self.read_search(path) if self.source in ("synthesis", "trajectory") else (None, None)
+        read from the motion at ``path``, or with ``path`` None from the search path and provenance
+        this object holds: a motion just synthesized, or read with ``search``); None for a restyled
+        motion, which records nothing."""
+        if path is None:
+            search, prov = self.path, self.provenance
+        else:
+            search, prov = self.read_search(path) if self.source in ("synthesis", "trajectory") else (None, None)
         return of_motion(search, prov, len(self.markers), self.fps, self.source, self.take, len(self.markers_capture),
                          self.capture_fps)
 

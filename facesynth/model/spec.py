@@ -24,7 +24,7 @@ from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 from pathlib import Path
 
-from facesynth.base.pipeline import writers
+from facesynth.base.pipeline import producers, writers
 from facesynth.base.registry import ARTIFACT_KINDS
 
 from .kinds import ENCODING_VERSION
@@ -66,6 +66,11 @@ SYMBOLS: dict[str, str] = {
     "Ph": "phones with a Gaussian in a trajectory model",
     "Pe": "(phone, emotion) pairs with a Gaussian of their own in a trajectory model",
     "Pc": "phone types of a coarticulation model (a phone with its emotion, or the pause)",
+    "Ya": "curves an articulation model predicts",
+    "Ca": "offsets of an articulation model's context",
+    "Da": "voice features per analysis frame of an articulation model",
+    "Xa": "columns of an articulation model's context (offsets times features, loudness hinges included)",
+    "Kn": "loudness knots of an articulation model",
 }
 
 #: The largest magnitude of any float in an artifact where numbers must be finite (mm, s, costs,
@@ -282,6 +287,13 @@ CORPUS = Kind("corpus", 1, "The ingested capture (paper III): every take concate
             "mm", (MM, _fps()), finite=False),
     Dataset("rigid", "bool", ("M",), "true: the marker moves only with the head (the binding's `rigid` column), "
             "the set `normalize` fits the head pose on; all false when the corpus names none", required=False),
+    Dataset("rest_pose", "float32", ("M", 3), "the markers at rest (every weight 0, no head motion) when every take "
+            "was posed from curves (Live Link Face, another rig's curves): `normalize`'s reference", "mm", (MM,),
+            required=False),
+    Dataset("known_head_rotation", "float32", ("F", 3, 3), "with `rest_pose`: the head rotation each frame was posed "
+            "with, `markers = known_head_rotation @ posed + known_head_translation`", required=False),
+    Dataset("known_head_translation", "float32", ("F", 3), "with `rest_pose`: see `known_head_rotation`", "mm", (MM,),
+            required=False),
     TABLES,
     Group("audio", "audio", "all takes' audio, mono, concatenated", (
         Dataset("samples", "float32", ("S",), "samples of every take, one after another"),
@@ -292,7 +304,10 @@ CORPUS = Kind("corpus", 1, "The ingested capture (paper III): every take concate
 
 NORMALIZED = Kind("normalized", 1, "The capture with head motion removed (paper III, Eq. 1-2).", (
     TABLES, HEAD_FRAMES,
-))
+), attrs=(Attr("capture", "str", "`posed`: every take was posed from curves and its known rest pose is the reference "
+               "and its known head pose removed (noise-free markers; `solve.posed_captures`); `markers`: a capture "
+               "(absent in files written before it, read as `markers`)", choices=("markers", "posed"),
+               required=False),))
 
 PCA = Kind("pca", 1, "The normalized frames and their PCA coefficients (paper III, Eq. 11).", (
     TABLES, PCA_MODEL,
@@ -598,6 +613,33 @@ COARTICULATION = Kind("coarticulation", 1, (
           Attr("iterations", "int", "L-BFGS-B iterations allowed to the fit", ge=1),
           Attr("fit_rms", "float", "RMS per marker (mm) of the fit on the training frames", ge=0)))
 
+ARTICULATION = Kind("articulation", 1, (
+    "The acoustic articulation model (issue 42): ridge regression from the voice's frame features "
+    "(`feature_names`, 10 ms analysis frames, normalized as `normalization` says), each averaged over `pool` "
+    "frames around every offset of `offsets_s` from an output frame's time (with the loudness hinges at `knots` "
+    "where `expand` is 1), to the mouth's curves `target_names`: `curves = context @ coef + intercept`, the "
+    "context offset-major. `facesynth.domain.speech.articulation.predict` needs this file alone."), (
+    Dataset("target_names", "str", ("Ya",), "the predicted curves (ARKit names, or `opening`)"),
+    Dataset("offsets_s", "float64", ("Ca",), "offsets of the context from the frame time", "s", (SECONDS,)),
+    Dataset("feature_names", "str", ("Da",), "the voice features, in column order"),
+    Dataset("feature_mean", "float64", ("Da",), "mean of each feature over the training frames with speech"),
+    Dataset("feature_std", "float64", ("Da",), "standard deviation of each feature (floored at 1e-6)", ge=0),
+    Dataset("coef", "float64", ("Xa", "Ya"), "regression coefficients on the normalized context"),
+    Dataset("intercept", "float64", ("Ya",), "intercept of each curve"),
+    Dataset("target_mean", "float64", ("Ya",), "mean of each curve over the training frames"),
+    Dataset("target_std", "float64", ("Ya",), "standard deviation of each curve over the training frames", ge=0),
+    Dataset("knots", "float64", ("Kn",), "knots of the loudness hinges, standardized log RMS"),
+), attrs=(Attr("pool", "int", "analysis frames averaged around each offset", ge=1),
+          Attr("normalization", "str", "how the features are standardized", choices=("global", "utterance", "running")),
+          Attr("tau_s", "float", "time constant of the running normalization, s", gt=0),
+          Attr("gate", "float", "a frame has speech within this (log amplitude) of the loudest frame so far", gt=0),
+          Attr("peak_decay", "float", "how fast the loudest level falls, log amplitude/s", ge=0),
+          Attr("alpha", "float", "the ridge penalty per standardized column, times the training frames", ge=0),
+          Attr("expand", "int", "1: the loudness hinges are columns of the context", ge=0, le=1),
+          Attr("analysis_rate", "int", "sample rate of the analysis frames, Hz", gt=0),
+          Attr("hop", "int", "samples between analysis frames", ge=1),
+          Attr("window", "int", "samples of an analysis frame's window", ge=1)))
+
 #: Every kind's specification at its current schema.
 EXPRESSION = Kind("expression", 1, (
     "A bilinear style/content model of marker frames (Chuang & Bregler 2005, §3, Eq. 4): "
@@ -731,7 +773,7 @@ def markdown() -> str:
         out += [f"### `{b.name}`", "", b.doc, ""] + _rows(b.entries) + [""]
     out += ["## Kinds", ""]
     for k in KINDS.values():
-        by = " and ".join(f"`{w}`" for w in k.producers)
+        by = " and ".join(f"`{w}`" for w in k.producers) or producers(k.name)
         out += [f"### `{k.name}` (schema {k.schema}, written by {by})", "", k.doc, ""]
         blocks = [e.name for e in k.entries if isinstance(e, Block)]
         if blocks:

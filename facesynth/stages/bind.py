@@ -23,11 +23,11 @@ import numpy as np
 
 from facesynth.base.config import BindSettings, NormalizeSettings
 from facesynth.base.errors import InputError
+from facesynth.domain.capture.readers import CaptureOptions, read_capture
 from facesynth.domain.head_motion.rigid import fill_gaps, find_rigid_markers, head_pose, typical_frame
 from facesynth.domain.retarget.bind import AXES, bind_markers, jaw_sides
 from facesynth.domain.rig.loading import load_rig_mesh
 from facesynth.formats.mesh import write_binding
-from facesynth.formats.mocap import read_mocap
 from facesynth.model.artifacts import atomic_path, check_output
 
 
@@ -71,7 +71,8 @@ class BindResult:
 def run(capture: Path, out: Path, settings: BindSettings, normalize_settings: NormalizeSettings,
         rig_path: Path | None = None, up: str | None = None, forward: str | None = None,
         overwrite: bool = False) -> BindResult:
-    """Bind the markers of ``capture`` (C3D, TRC or CSV) to the rig and write the CSV ``out``."""
+    """Bind the markers of ``capture`` (any capture a manifest may name: markers, or a video's tracked
+    landmarks) to the rig and write the CSV ``out``."""
     check_output(out, overwrite)
     if (up is None) != (forward is None):
         raise InputError("give both --up and --forward (the capture's axes), or neither to find them from the data.")
@@ -80,7 +81,7 @@ def run(capture: Path, out: Path, settings: BindSettings, normalize_settings: No
             raise InputError(f"{label} {axis!r} is not an axis; use one of {', '.join(AXES)}.")
     if up is not None and forward is not None and up[1] == forward[1]:
         raise InputError(f"--up {up} and --forward {forward} lie on one axis; give two perpendicular axes.")
-    take = read_mocap(Path(capture))
+    take = read_capture(Path(capture), CaptureOptions(need_audio=False))
     positions = take.positions
     frame = settings.frame if settings.frame >= 0 else typical_frame(positions)
     if frame >= len(positions):

@@ -28,7 +28,7 @@ import numpy as np
 from facesynth.base.config import ExportSettings
 from facesynth.base.errors import UsageError
 from facesynth.base.registry import EXPORT_FORMATS
-from facesynth.domain.exports.animation import load, use_mesh
+from facesynth.domain.exports.animation import Exportable, load, use_mesh
 from facesynth.domain.exports.format import ExportFormat, ExportOptions, audio_path, write_export
 from facesynth.formats.audio import read_audio
 from facesynth.model.artifacts import check_output, check_output_folder
@@ -56,7 +56,19 @@ class ExportResult:
 def run(artifact: Path, fmt: str, output: Path, settings: ExportSettings, *, fps: float | None = None,
         head_motion: bool = False, audio: Path | None = None, mesh: Path | None = None,
         overwrite: bool = False) -> ExportResult:
-    """Export ``artifact`` as ``fmt`` (a registered export format) to ``output``."""
+    """Export ``artifact`` as ``fmt`` (a registered export format) to ``output``.
+
+    The steps are the ones :mod:`facesynth.api` calls (:func:`export_format`, :func:`write`), so
+    the command and the API write the same files."""
+    form = export_format(fmt, output, audio, overwrite)
+    return write(form, load(artifact), output, settings, fps=fps, head_motion=head_motion, audio=audio, mesh=mesh,
+                 overwrite=overwrite)
+
+
+def export_format(fmt: str, output: Path, audio: Path | None = None, overwrite: bool = False) -> ExportFormat:
+    """The registered export format ``fmt``, after the checks made before any work: its optional
+    dependency installed, ``audio`` only for a format that names one (and a WAV that reads), the
+    outputs writable and not clobbered."""
     if fmt not in EXPORT_FORMATS:
         raise UsageError(f"unknown format {fmt!r}; choose one of {', '.join(EXPORT_FORMATS.names())}.")
     form: ExportFormat = EXPORT_FORMATS.get(fmt)
@@ -71,7 +83,14 @@ def run(artifact: Path, fmt: str, output: Path, settings: ExportSettings, *, fps
     if audio is not None:
         check_output(audio_path(output), overwrite)
         read_audio(audio)  # a WAV that cannot be read is refused before anything is written
-    anim = load(artifact)
+    return form
+
+
+def write(form: ExportFormat, anim: Exportable, output: Path, settings: ExportSettings, *, fps: float | None = None,
+          head_motion: bool = False, audio: Path | None = None, mesh: Path | None = None,
+          overwrite: bool = False) -> ExportResult:
+    """The core of ``export``: ``anim`` (with the faces of ``mesh`` when given) written as ``form``
+    at ``output``, at ``fps`` or the format's rate (:meth:`ExportFormat.rate`)."""
     if mesh is not None:
         anim = use_mesh(anim, mesh)
     form.check(anim, head_motion)

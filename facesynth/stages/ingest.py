@@ -1,10 +1,20 @@
 """``facesynth ingest``: a manifest of takes -> the ``corpus`` artifact (paper III).
 
 The manifest is a CSV with the columns ``take, mocap, audio, alignment, transcript,
-emotion, sentence, split`` (paths relative to the manifest); only ``take`` and ``mocap`` are
-required. A take with an empty ``alignment`` and a ``transcript`` is aligned with
-:mod:`facesynth.domain.speech.alignment`. A take with neither has no phones, and one with an empty ``audio``
-no audio: ``normalize``, ``pca``, ``solve`` (on the normalized takes), ``rig-mesh`` and
+emotion, sentence, split`` and, for takes that need them, ``mapping, names, fps`` (paths
+relative to the manifest); only ``take`` and ``mocap`` are required. ``mocap`` names a take of
+any registered capture format (:func:`facesynth.domain.capture.readers.read_capture`): markers,
+a Live Link Face CSV, another rig's curves (with ``mapping``, and ``names`` and ``fps`` for a
+``.npy``) or a video (whose sound is the take's audio when ``audio`` is empty). Curve takes
+pose ``--rig`` (the built-in rig by default); when every take was posed, their rest pose and
+head pose are recorded with the markers.
+
+A take with an empty ``alignment`` and a ``transcript`` is aligned with
+:mod:`facesynth.domain.speech.alignment`; one with audio and neither gets its phones recognised
+from the audio (:func:`facesynth.domain.speech.recognition.recognize`, ``ingest.recognize_phones``),
+as ``synthesize --audio`` does (audio in which no speech is found leaves the take without
+phones, with a warning). A take without audio and alignment has no phones, and one without
+audio no audio: ``normalize``, ``pca``, ``solve`` (on the normalized takes), ``rig-mesh`` and
 ``render`` (silent) accept such takes; ``build-db`` (and what needs a database) needs phone
 timing, and ``head-motion`` audio. An empty ``emotion`` is neutral.
 Phones are mapped to the Festival set; marker gaps stay NaN here.
@@ -23,7 +33,8 @@ manifest (the sample corpus writes one), the markers it marks are recorded in th
 from __future__ import annotations
 
 import csv
-from dataclasses import dataclass
+import logging
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 import numpy as np
@@ -32,11 +43,17 @@ from facesynth.base.config import AlignSettings, IngestSettings, settings_json
 from facesynth.base.errors import InputError
 from facesynth.base.phonemes import map_phones
 from facesynth.base.progress import progress
-from facesynth.domain.speech.alignment import align_samples
+from facesynth.domain.capture.posing import CaptureTake
+from facesynth.domain.capture.readers import CaptureOptions, read_capture
+from facesynth.domain.rig.face import Rig
+from facesynth.domain.rig.loading import load_rig
+from facesynth.domain.speech.alignment import AlignmentFailed, align_samples
+from facesynth.domain.speech.recognition import recognize
 from facesynth.formats.audio import read_audio, resample
 from facesynth.formats.labels import Segment, check_segments, read_phone_segments, read_textgrid
 from facesynth.formats.mesh import read_rigid_markers
-from facesynth.formats.mocap import read_mocap
+from facesynth.formats.video import SUFFIXES as VIDEO_SUFFIXES
+from facesynth.model.artifacts import check_output
 from facesynth.model.corpus import Corpus
 from facesynth.model.tables import Phones, Takes
 
@@ -44,6 +61,8 @@ REQUIRED_COLUMNS = ("take", "mocap")
 #: The sample rate recorded for a corpus none of whose takes has audio (no samples are stored).
 NO_AUDIO_RATE = 16000
 SPLITS = ("train", "val", "test")
+
+log = logging.getLogger(__name__)
 
 
 @dataclass
@@ -59,6 +78,9 @@ class ManifestRow:
     emotion: str
     sentence: str
     split: str
+    mapping: Path | None = None
+    names: Path | None = None
+    fps: float | None = None
 
 
 def read_manifest(path: Path, settings: IngestSettings) -> list[ManifestRow]:
@@ -96,13 +118,23 @@ def read_manifest(path: Path, settings: IngestSettings) -> list[ManifestRow]:
             mocap = (raw.get("mocap") or "").strip()
             if not mocap:
                 raise InputError(f"{where}: take {take!r} has no mocap file; give its marker file in the mocap column.")
-            if transcript and not alignment and not audio:
+            if transcript and not alignment and not audio and Path(mocap).suffix.lower() not in VIDEO_SUFFIXES:
                 raise InputError(f"{where}: take {take!r} has a transcript to align but no audio; give its audio, "
                                  f"or its phone timing in the alignment column, or leave the transcript empty.")
+            mapping = (raw.get("mapping") or "").strip()
+            names = (raw.get("names") or "").strip()
+            fps_text = (raw.get("fps") or "").strip()
+            try:
+                fps = float(fps_text) if fps_text else None
+            except ValueError:
+                fps = None
+            if fps_text and (fps is None or not 0 < fps <= 2000):
+                raise InputError(f"{where}: the fps {fps_text!r} is not a frame rate; give frames per second (e.g. 30).")
             rows.append(ManifestRow(
                 line, take, base / mocap, base / audio if audio else None,
                 base / alignment if alignment else None, transcript, emotion,
                 (raw.get("sentence") or take).strip(), split,
+                base / mapping if mapping else None, base / names if names else None, fps,
             ))
     if not rows:
         raise InputError(f"{path}: the manifest lists no takes.")
@@ -150,20 +182,79 @@ def phone_emotions(row: ManifestRow, segs: list[Segment], settings: IngestSettin
     return out
 
 
-def ingest(rows: list[ManifestRow], settings: IngestSettings, align_settings: AlignSettings):
-    """Read and check every take; a take with only a transcript is aligned with ``align_settings``.
-    Returns (markers (F,M,3) float32 mm, names, fps, takes, phones, audio list of (samples, rate);
-    a take without audio has no samples and rate None, a take with neither alignment nor
-    transcript no phones)."""
+@dataclass
+class Ingested:
+    """Every take read (:func:`ingest`).
+
+    markers : (F, M, 3) float32 mm; names : the M markers; fps : frames/s; takes, phones : the
+    tables; audio : per take (samples, rate), a take without audio having no samples and rate
+    None; rigid : the rigid markers the takes' readers name ([] for marker files); rest,
+    known_rotation, known_translation : when every take was posed from curves on one rig, the
+    rest pose (M, 3) and the head pose per frame ((F, 3, 3), (F, 3) mm), else None; recognized :
+    the takes whose phones were recognised from their audio."""
+
+    markers: np.ndarray
+    names: list[str]
+    fps: float
+    takes: Takes
+    phones: Phones
+    audio: list[tuple[np.ndarray, int | None]]
+    rigid: list[str]
+    rest: np.ndarray | None
+    known_rotation: np.ndarray | None
+    known_translation: np.ndarray | None
+    recognized: list[str]
+
+
+def capture_options(settings: IngestSettings, rig: Rig | None = None) -> CaptureOptions:
+    """The takes' capture options from ``[ingest]`` (a manifest row's columns override them)."""
+    return CaptureOptions(rig=rig, mapping=Path(settings.curves_mapping) if settings.curves_mapping else None,
+                          fps=settings.curves_fps or None, face_width_mm=settings.video_eye_corners_mm,
+                          max_interpolated_s=settings.live_link_max_gap_s)
+
+
+def take_options(row: ManifestRow, defaults: CaptureOptions) -> CaptureOptions:
+    """The capture options of one take: its manifest row's mapping, names and fps over ``defaults``;
+    a video needs its own sound unless the row gives the audio."""
+    return replace(defaults, mapping=row.mapping or defaults.mapping, names=row.names or defaults.names,
+                   fps=row.fps or defaults.fps, need_audio=row.audio is None)
+
+
+def _recognized(samples: np.ndarray, rate: int, align_settings: AlignSettings, where: str) -> list[Segment]:
+    """The phones recognised from a take's audio; none (with a warning) when it holds no speech."""
+    try:
+        return list(recognize(samples, rate, settings=align_settings, where=where).phones)
+    except AlignmentFailed as exc:
+        log.warning("%s; the take has no phones.", str(exc).rstrip("."))
+        return []
+
+
+def ingest(rows: list[ManifestRow], settings: IngestSettings, align_settings: AlignSettings,
+           options: CaptureOptions | None = None) -> Ingested:
+    """Read and check every take (with ``options``, else those of ``settings``); a take with only
+    a transcript is aligned with ``align_settings``, one with audio alone recognised (see the
+    module docstring)."""
     markers, audio, starts, counts = [], [], [], []
     phone_take, phone_start, phone_end, phone_label, phone_emotion = [], [], [], [], []
     names = fps = None
+    options = options or capture_options(settings)
+    rigid: list[str] = []
+    rests, poses, recognized = [], [], []
     for i, row in enumerate(progress(rows, "ingest")):
         where = f"take {row.take!r} (manifest line {row.line})"
         for label, p in (("mocap", row.mocap), ("audio", row.audio)):
             if p is not None and not p.exists():
                 raise InputError(f"{where}: {label} file {p} not found; fix the manifest's {label} column.")
-        take = read_mocap(row.mocap)
+        take = read_capture(row.mocap, take_options(row, options))
+        own_audio = None
+        if isinstance(take, CaptureTake):
+            rigid = rigid or list(take.rigid)
+            rests.append(take.rest)
+            poses.append(take.head_pose)
+            own_audio = take.audio
+        else:
+            rests.append(None)
+            poses.append(None)
         if names is None or fps is None:  # the first take (they are set together)
             names, fps = take.names, take.fps
         elif take.names != names:
@@ -179,19 +270,27 @@ def ingest(rows: list[ManifestRow], settings: IngestSettings, align_settings: Al
         samples, rate = np.zeros(0, np.float32), None
         if row.audio is not None:
             samples, rate = read_audio(row.audio)
+        elif own_audio is not None:  # a video's own sound
+            samples, rate = own_audio
+        if rate is not None:
             audio_s = len(samples) / rate
             if abs(audio_s - motion_s) > settings.max_audio_mismatch_s:
-                raise InputError(
-                    f"{row.audio}: audio lasts {audio_s:.2f} s but the motion {motion_s:.2f} s; "
-                    f"trim or pad them to the same length (tolerance {settings.max_audio_mismatch_s:g} s)."
-                )
+                what = f"{row.audio}: audio lasts {audio_s:.2f} s but the motion ({row.mocap})" if row.audio \
+                    else f"{row.mocap}: its sound lasts {audio_s:.2f} s but its pictures"
+                raise InputError(f"{what} {motion_s:.2f} s; trim or pad them to the same length (tolerance "
+                                 f"{settings.max_audio_mismatch_s:g} s).")
         segs: list[Segment] = []
-        if row.alignment is not None or row.transcript:  # a take without either has no phones
+        source = str(row.alignment or row.audio or row.mocap)
+        if row.alignment is not None or row.transcript:
             segs = _segments_for(row, settings, align_settings, samples, rate, where)
-            source = str(row.alignment or row.audio)
             check_segments(segs, source)
-            if segs[-1].end > motion_s + settings.max_audio_mismatch_s:
-                raise InputError(f"{source}: the alignment ends at {segs[-1].end:.2f} s, after the motion ({motion_s:.2f} s); use the take's own alignment.")
+        elif rate is not None and settings.recognize_phones:  # audio alone: the phones recognised from it
+            segs = _recognized(samples, rate, align_settings, source)
+            if segs:
+                recognized.append(row.take)
+                check_segments(segs, source)
+        if segs and segs[-1].end > motion_s + settings.max_audio_mismatch_s:
+            raise InputError(f"{source}: the alignment ends at {segs[-1].end:.2f} s, after the motion ({motion_s:.2f} s); use the take's own alignment.")
         labels = map_phones([s.label for s in segs], source, [s.start for s in segs]) if segs else []
         starts.append(sum(counts))
         counts.append(take.positions.shape[0])
@@ -206,7 +305,15 @@ def ingest(rows: list[ManifestRow], settings: IngestSettings, align_settings: Al
                   [r.split for r in rows], [r.transcript for r in rows], np.array(starts), np.array(counts))
     phones = Phones(np.array(phone_take, np.int64), np.array(phone_start, np.float64), np.array(phone_end, np.float64),
                     phone_label, phone_emotion)
-    return np.concatenate(markers).astype(np.float32), names, fps, takes, phones, audio
+    rest = rests[0]
+    posed = rest is not None and all(r is not None and np.array_equal(r, rest) for r in rests) \
+        and all(p is not None for p in poses)
+    known_r = np.concatenate([p[0] for p in poses]).astype(np.float32) if posed else None  # type: ignore[index]
+    known_t = np.concatenate([p[1] for p in poses]).astype(np.float32) if posed else None  # type: ignore[index]
+    if names is None or fps is None:  # read_manifest refuses a manifest without takes
+        raise InputError("the manifest lists no takes.")
+    return Ingested(np.concatenate(markers).astype(np.float32), names, fps, takes, phones, audio, rigid,
+                    rest if posed else None, known_r, known_t, recognized)
 
 
 @dataclass(frozen=True)
@@ -216,9 +323,11 @@ class IngestResult:
     takes, frames, markers, phones: counts (takes, capture frames, markers per frame, phone segments).
     fps: the capture's frame rate (Hz).
     missing_fraction: the share of marker samples missing (gaps), 0 to 1.
-    rigid_markers: the markers the binding file (markers.csv) flags rigid.
+    rigid_markers: the markers the binding file (markers.csv), or the takes' reader, flags rigid.
     without_audio: the takes without audio (head-motion needs it).
     without_phones: the takes without phone timing (left out of the database).
+    recognized: the takes whose phones were recognised from their audio.
+    posed: every take was posed from curves (its rest pose and head pose recorded).
     """
 
     takes: int
@@ -230,23 +339,31 @@ class IngestResult:
     rigid_markers: list[str]
     without_audio: list[str]
     without_phones: list[str]
+    recognized: list[str]
+    posed: bool
 
 
 def run(manifest: Path, out: Path, settings: IngestSettings, align_settings: AlignSettings,
-        overwrite: bool = False) -> IngestResult:
-    """Read the takes of ``manifest`` and write ``out`` (a ``corpus`` artifact)."""
+        overwrite: bool = False, rig_path: Path | None = None, binding: Path | None = None) -> IngestResult:
+    """Read the takes of ``manifest`` and write ``out`` (a ``corpus`` artifact); curve takes pose
+    the rig ``rig_path`` with the markers of ``binding`` (neither: the built-in rig and the
+    virtual actress's markers; a binding alone: the built-in rig)."""
+    check_output(out, overwrite)
+    rig = None if rig_path is None and binding is None else load_rig(rig_path, binding)
     rows = read_manifest(manifest, settings)
-    markers, names, fps, takes, phones, audio = ingest(rows, settings, align_settings)
-    rate = next((r for _, r in audio if r is not None), NO_AUDIO_RATE)
-    samples = [resample(s, r, rate) if r is not None else s for s, r in audio]
+    got = ingest(rows, settings, align_settings, capture_options(settings, rig))
+    rate = next((r for _, r in got.audio if r is not None), NO_AUDIO_RATE)
+    samples = [resample(s, r, rate) if r is not None else s for s, r in got.audio]
     audio_start = np.cumsum([0] + [len(s) for s in samples[:-1]])
     binding = manifest.parent / "markers.csv"
-    rigid = [n for n in read_rigid_markers(binding) if n in names] if binding.is_file() else []
-    Corpus(takes, phones, names, markers, fps, np.concatenate(samples).astype(np.float32), audio_start,
-           np.array([len(s) for s in samples], np.int64), rate, rigid).write(
-        out, config=settings_json(settings), inputs=[manifest], overwrite=overwrite)
-    missing = float(np.isnan(markers).any(axis=2).mean())
-    return IngestResult(len(takes), int(markers.shape[0]), len(names), len(phones), fps, missing, rigid,
-                        [r.take for r in rows if r.audio is None],
-                        [takes.name[i] for i in range(len(takes)) if not (phones.take == i).any()])
+    rigid = [n for n in read_rigid_markers(binding) if n in got.names] if binding.is_file() else got.rigid
+    Corpus(got.takes, got.phones, got.names, got.markers, got.fps, np.concatenate(samples).astype(np.float32),
+           audio_start, np.array([len(s) for s in samples], np.int64), rate, rigid, got.rest, got.known_rotation,
+           got.known_translation).write(out, config=settings_json(settings), inputs=[manifest], overwrite=overwrite)
+    missing = float(np.isnan(got.markers).any(axis=2).mean())
+    takes, phones = got.takes, got.phones
+    return IngestResult(len(takes), int(got.markers.shape[0]), len(got.names), len(phones), got.fps, missing, rigid,
+                        [takes.name[i] for i, (_, r) in enumerate(got.audio) if r is None],
+                        [takes.name[i] for i in range(len(takes)) if not (phones.take == i).any()],
+                        got.recognized, got.rest is not None)
 

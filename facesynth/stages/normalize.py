@@ -12,6 +12,12 @@ else the largest group of markers whose mutual distances vary by at most
 reported), each weighted by the inverse of its residual, so neither
 one noisy marker nor jaw opening leaks into the head pose. The origin marker only places the
 reference: it is at 0 in the reference frame.
+
+A corpus whose takes were all posed from curves (Live Link Face, another rig's curves:
+``Corpus.posed``) carries its rest pose and the head pose of every frame exactly; unless
+``normalize.known_pose`` is false or the settings name a reference, the rest pose is the
+reference and the known pose is removed (``normalized = R^T (captured - t)``, no fit), and the
+artifact says so (``capture = posed``), so that ``solve`` may take the markers as noise-free.
 """
 
 from __future__ import annotations
@@ -24,7 +30,7 @@ import numpy as np
 
 from facesynth.base.config import NormalizeSettings, settings_json
 from facesynth.base.errors import InputError
-from facesynth.domain.head_motion.rigid import choose_rigid, fill_gaps, head_pose, typical_frame
+from facesynth.domain.head_motion.rigid import RigidChoice, choose_rigid, fill_gaps, head_pose, typical_frame
 from facesynth.model.corpus import Corpus
 from facesynth.model.frames import HeadFrames, NormalizedFrames
 from facesynth.model.tables import Phones, Takes
@@ -96,12 +102,21 @@ def build_reference(candidates: np.ndarray, origin: int, rigid: np.ndarray, fram
     return reference - reference[origin]
 
 
+def uses_known_pose(settings: NormalizeSettings, known: tuple[np.ndarray, np.ndarray, np.ndarray] | None) -> bool:
+    """Whether a corpus with a known rest and head pose (``known``) is normalized with them."""
+    return known is not None and settings.known_pose and not (settings.reference_take or settings.reference_frame >= 0)
+
+
 def normalize(markers: np.ndarray, names: list[str], takes: Takes, phones: Phones, fps: float,
-              settings: NormalizeSettings, corpus_rigid=()):
+              settings: NormalizeSettings, corpus_rigid=(),
+              known: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None):
     """Fill gaps, then remove head motion, fitted on the rigid markers (the settings', else
-    ``corpus_rigid``, else found from the data). Returns (normalized, rotations, translations,
-    reference, origin index, list of unfilled gaps (take, marker, start_s, length_s), the
-    :class:`~facesynth.domain.head_motion.rigid.RigidChoice`, the rigid markers' weights)."""
+    ``corpus_rigid``, else found from the data), or with ``known`` (rest pose (M, 3) mm, head
+    rotations (F, 3, 3), translations (F, 3) mm of a posed corpus; see :func:`uses_known_pose`)
+    removed as it is. Returns (normalized, rotations, translations, reference, origin index, list
+    of unfilled gaps (take, marker, start_s, length_s), the
+    :class:`~facesynth.domain.head_motion.rigid.RigidChoice` (source ``known`` with no markers
+    for a known pose), the rigid markers' weights)."""
     filled = markers.astype(np.float64).copy()
     long_gaps = []
     for i in range(len(takes)):
@@ -110,6 +125,15 @@ def normalize(markers: np.ndarray, names: list[str], takes: Takes, phones: Phone
             track, runs = fill_gaps(filled[sl, m], settings.max_gap_frames)
             filled[sl, m] = track
             long_gaps += [(takes.name[i], names[m], s / fps, n / fps) for s, n in runs]
+    if known is not None and uses_known_pose(settings, known):
+        rest, r, t = (np.asarray(a, np.float64) for a in known)
+        origin = choose_origin(rest[None], names, settings)
+        shift = rest[origin]
+        # captured = R posed + t and the reference is rest - shift: normalized = R^T (captured - t) - shift,
+        # and captured = R normalized + (t + R shift)
+        normalized = np.einsum("fji,fmj->fmi", r, filled - t[:, None, :]) - shift
+        return (normalized.astype(np.float32), r, t + r @ shift, rest - shift, origin, long_gaps,
+                RigidChoice(np.zeros(0, np.int64), "known"), np.zeros(0))
     unknown = [n for n in settings.rigid_markers if n not in names]
     if unknown:
         raise InputError(f"normalize.rigid_markers names unknown markers {unknown}; use names from the corpus.")
@@ -142,7 +166,8 @@ class NormalizeResult:
     long_gaps: gaps too long to fill, as (take, marker, start_s, length_s); PCA projects those frames.
     rigid_markers: the markers the head pose was fitted on.
     rigid_weights: each one's weight in that fit.
-    rigid_source: where the rigid markers came from: 'data' (found from the data), or the binding.
+    rigid_source: where the rigid markers came from: 'data' (found from the data), 'settings', 'corpus' (the
+        binding, or the takes' reader), or 'known': no fit, the head pose of a posed corpus removed as it is.
     rigid_spreads_mm: with ``rigid_source`` 'data', how much each one's distances to the others vary (mm).
     warnings: what the user should know.
     """
@@ -161,11 +186,15 @@ def run(corpus_path: Path, out: Path, settings: NormalizeSettings, overwrite: bo
     """Normalize ``corpus_path`` and write ``out`` (a ``normalized`` artifact)."""
     corpus = Corpus.read(corpus_path, audio=False)
     names = corpus.marker_names
+    known = None
+    if corpus.rest_pose is not None and corpus.known_head_rotation is not None \
+            and corpus.known_head_translation is not None:
+        known = (corpus.rest_pose, corpus.known_head_rotation, corpus.known_head_translation)
     normalized, rotations, translations, reference, origin, long_gaps, choice, weights = normalize(
-        corpus.markers, names, corpus.takes, corpus.phones, corpus.fps, settings, corpus.rigid_markers)
+        corpus.markers, names, corpus.takes, corpus.phones, corpus.fps, settings, corpus.rigid_markers, known)
     frames = HeadFrames(normalized, reference.astype(np.float32), rotations.astype(np.float32),
                         translations.astype(np.float32), corpus.fps, names[origin])
-    NormalizedFrames(corpus.takes, corpus.phones, names, frames).write(
+    NormalizedFrames(corpus.takes, corpus.phones, names, frames, uses_known_pose(settings, known)).write(
         out, config=settings_json(settings), inputs=[corpus_path], overwrite=overwrite)
     return NormalizeResult(len(normalized), names[origin], long_gaps, [names[k] for k in choice.indices],
                            [float(w) for w in weights], choice.source,

@@ -11,11 +11,20 @@ The input is a ``motion`` artifact, or a ``normalized`` one (a user's own captur
 ``ingest`` and ``normalize``, with no database): then one take of it (``--take``, or the only
 one) is solved, its markers resampled to ``solve.output_fps``, the head motion kept relative to
 the take's mean pose as ``capture`` does, and the normalize reference serves as the rest pose.
+
+A normalized capture posed from curves (``capture = posed``: Live Link Face, another rig's
+curves) has no measurement noise: its markers are the rig's surface, its reference the rig's rest
+pose and its head pose known. The smoothing and ridge terms are priors against marker noise and
+only bias such a solve (they damp the eye shapes, which move the markers by 2-3 mm), so with
+``solve.posed_captures = "exact"`` (the default) it is solved without them, to
+``solve.exact_iterations`` and ``solve.exact_tolerance`` (:func:`settings_for`); the curves record
+the settings used (their ``config``) and say so in ``method``. A ``motion`` artifact (a
+synthesis) is always solved with the regularized settings.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 import numpy as np
@@ -27,6 +36,7 @@ from facesynth.domain.retarget.solve import solve_motion, solved_curves
 from facesynth.domain.rig.face import Rig
 from facesynth.domain.rig.loading import load_rig, marker_map
 from facesynth.model.artifacts import artifact_kind, check_output
+from facesynth.model.curves import RigCurves
 from facesynth.model.frames import NormalizedFrames, relative_to_take
 from facesynth.model.motion import Motion
 
@@ -63,6 +73,7 @@ class SolveResult:
     marker_residual_median_mm, marker_residual_p95_mm: the median and 95th percentile of each
         bound marker's distance from the solved rig, per frame, in the motion's millimetres.
     take: the solved take (a capture), or None.
+    exact: solved without smoothing or ridge (a capture posed from curves, ``solve.posed_captures``).
     """
 
     frames: int
@@ -73,27 +84,81 @@ class SolveResult:
     marker_residual_median_mm: float
     marker_residual_p95_mm: float
     take: str | None
+    exact: bool = False
 
 
 def run(motion_path: Path, out: Path, settings: SolveSettings, rig_path: Path | None = None,
         binding: Path | None = None, overwrite: bool = False, take: str | None = None) -> SolveResult:
     """Solve ``motion_path`` (a ``motion``, or one take of a ``normalized`` artifact) on the rig
-    (built-in when ``rig_path`` is None, with ``binding`` when given) and write ``out``."""
+    (built-in when ``rig_path`` is None, with ``binding`` when given) and write ``out``.
+
+    The steps are the ones :mod:`facesynth.api` calls (:func:`read_motion`, :func:`solve`,
+    :func:`write`, :func:`recorded_inputs`), so the command and the API write the same artifact."""
     check_output(out, overwrite)
     rig = load_rig(rig_path, binding)
+    motion = read_motion(motion_path, settings, take)
+    used, exact = settings_for(motion_path, settings)
+    solved = solve(motion, rig, used, str(motion_path), exact=exact)
+    write(solved, out, used, recorded_inputs(motion_path, rig_path), overwrite=overwrite)
+    return solved.result
+
+
+def settings_for(motion_path: Path, settings: SolveSettings) -> tuple[SolveSettings, bool]:
+    """(the settings ``motion_path`` is solved with, whether they are the exact ones): for a
+    normalized capture posed from curves with ``posed_captures = "exact"``, ``settings`` without
+    smoothing or ridge, with ``exact_iterations`` and ``exact_tolerance`` (see the module
+    docstring); else ``settings``."""
+    if settings.posed_captures == "exact" and artifact_kind(motion_path) == NormalizedFrames.KIND \
+            and NormalizedFrames.read_posed(motion_path):
+        return replace(settings, smooth=0.0, ridge=0.0, iterations=settings.exact_iterations,
+                       tolerance=settings.exact_tolerance), True
+    return settings, False
+
+
+def read_motion(motion_path: Path, settings: SolveSettings, take: str | None = None) -> Motion:
+    """What ``solve`` solves from ``motion_path``: a ``motion`` artifact (with its search path and
+    provenance), or the take ``take`` of a ``normalized`` one (:func:`take_motion`, at
+    ``settings.output_fps``)."""
     if artifact_kind(motion_path) == NormalizedFrames.KIND:
-        motion = take_motion(NormalizedFrames.read(motion_path), take, settings.output_fps, str(motion_path))
-    else:
-        if take is not None:
-            raise InputError(f"{motion_path}: --take picks a take of a normalized capture; a motion artifact has one.")
-        motion = Motion.read(motion_path)
-    weights, residual, iterations = solve_motion(motion, rig, settings, str(motion_path))
-    inputs = [motion_path] + ([rig_path] if rig_path is not None and Path(rig_path).is_file() else [])
-    solved_curves(motion, rig, weights, residual, motion.frame_provenance(motion_path)).write(
-        out, config=settings_json(settings), inputs=inputs, overwrite=overwrite)
+        return take_motion(NormalizedFrames.read(motion_path), take, settings.output_fps, str(motion_path))
+    if take is not None:
+        raise InputError(f"{motion_path}: --take picks a take of a normalized capture; a motion artifact has one.")
+    return Motion.read(motion_path, search=True)
+
+
+@dataclass
+class Solved:
+    """The curves of a solve and what ``solve`` reports about them."""
+
+    curves: RigCurves
+    result: SolveResult
+
+
+def solve(motion: Motion, rig: Rig, settings: SolveSettings, where: str = "the motion", exact: bool = False) -> Solved:
+    """The core of ``solve``: ``motion`` solved on ``rig`` (:func:`solve_motion`), as ``curves``
+    (``source = "solve"``) carrying where each frame came from (the motion's own provenance).
+    Messages name ``where``; ``exact``: ``settings`` are the exact ones (:func:`settings_for`)."""
+    weights, residual, iterations = solve_motion(motion, rig, settings, where)
+    method = "bounded least squares, no smoothing or ridge (a capture posed from curves)" if exact else None
+    curves = solved_curves(motion, rig, weights, residual, motion.frame_provenance(), method)
     marker_mm = per_marker_residual_mm(motion, rig, weights)
-    return SolveResult(len(weights), len(rig.shape_names), iterations, float(np.sqrt(np.nanmean(residual**2))),
-                       rig.name, float(np.nanmedian(marker_mm)), float(np.nanpercentile(marker_mm, 95)), motion.take)
+    return Solved(curves, SolveResult(len(weights), len(rig.shape_names), iterations,
+                                      float(np.sqrt(np.nanmean(residual**2))), rig.name,
+                                      float(np.nanmedian(marker_mm)), float(np.nanpercentile(marker_mm, 95)),
+                                      motion.take, exact))
+
+
+def write(solved: Solved, out: Path, settings: SolveSettings, inputs: list[Path], *, overwrite: bool = False) -> None:
+    """Write the ``curves`` artifact of ``solved`` at ``out``: ``settings`` as its ``config``,
+    ``inputs`` (:func:`recorded_inputs`) as its provenance."""
+    solved.curves.write(out, config=settings_json(settings), inputs=inputs, overwrite=overwrite)
+
+
+def recorded_inputs(motion: Path | None, rig: Path | str | None = None) -> list[Path]:
+    """The files solved curves record as their inputs: the motion's, and the rig's when it is one
+    file (a glTF; a folder of OBJs is named by the curves' ``rig_name`` and ``rig_sha256``)."""
+    return ([Path(motion)] if motion is not None else []) + (
+        [Path(rig)] if rig is not None and Path(rig).is_file() else [])
 
 
 

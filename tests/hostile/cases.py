@@ -15,7 +15,8 @@ checks the contract:
 * or exit 0, when the mutation left a file that is still valid, with every artifact written
   passing ``facesynth check`` (finite numbers, shapes and bounds of the specification).
 
-Input kinds: captures (``trc``, ``c3d``, ``csv`` through ``ingest``), audio (``wav``,
+Input kinds: captures (``trc``, ``c3d``, ``csv`` through ``ingest``; a Live Link Face CSV
+``livelink``, another rig's ``curves`` CSV and its ``mapping`` to ARKit through ``ingest``), audio (``wav``,
 ``flac`` through ``ingest``), phone timings (``textgrid``, ``lab``, ``hts`` through
 ``synthesize``), ``emotions`` and ``constraints`` files (``synthesize``), meshes (``obj``,
 ``ply``) and the ``binding`` CSV (``deform``), ``toml`` settings (``pca --config``) and every
@@ -56,7 +57,10 @@ MEMORY_CAP = 6 << 30
 TEXT_KINDS = ("trc", "csv", "textgrid", "lab", "hts", "emotions", "constraints", "obj", "ply", "binding", "toml")
 BINARY_KINDS = ("c3d", "wav", "flac")
 ARTIFACT_KINDS = ("corpus", "normalized", "pca", "motiondb", "isomap", "motion", "meshanim")
-KINDS = TEXT_KINDS + BINARY_KINDS + ARTIFACT_KINDS
+#: Capture takes that pose the rig (issue 41), text files; after the others so that adding them
+#: left the quick selection of the older kinds as it was.
+CAPTURE_KINDS = ("livelink", "curves", "mapping")
+KINDS = TEXT_KINDS + BINARY_KINDS + ARTIFACT_KINDS + CAPTURE_KINDS
 
 BYTE_MUTATIONS = ("truncate", "random_bytes", "empty")
 NUMBER_MUTATIONS = ("nan", "inf", "negative", "zero", "huge")
@@ -70,7 +74,7 @@ HDF5_MUTATIONS = ("wrong_dtype", "wrong_shape", "missing_dataset", "extra_datase
 
 def mutations(kind: str) -> tuple[str, ...]:
     """The mutations that apply to an input kind."""
-    if kind in TEXT_KINDS:
+    if kind in TEXT_KINDS or kind in CAPTURE_KINDS:
         return BYTE_MUTATIONS + NUMBER_MUTATIONS + ("non_utf8",)
     if kind == "flac":
         return BYTE_MUTATIONS
@@ -206,6 +210,7 @@ def build_bases(root: Path, corpus_dir: Path, artifacts: dict[str, Path] | None 
     v, f = read_mesh(corpus_dir / "face.obj")
     trimesh.Trimesh(v, f, process=False).export(str(root / "face.ply"), encoding="ascii")
     b.files["ply"] = root / "face.ply"
+    _capture_bases(b, root, corpus_dir, row)
     (root / "settings.toml").write_text(
         "[pca]\nn_components = 6\nvariance_target = 0.0\n\n[synthesize]\npnt = 1.0\noutput_fps = 30.0\n\n"
         "[normalize]\nmax_gap_frames = 12\nreference_silence_s = 0.2\n", encoding="utf-8")
@@ -251,6 +256,35 @@ def build_bases(root: Path, corpus_dir: Path, artifacts: dict[str, Path] | None 
     b.files["constraints"] = root / "constraints.txt"
     (root / "secret.bin").write_bytes(b"SECRET-" * 4096)
     return b
+
+
+def _capture_bases(b: Bases, root: Path, corpus_dir: Path, row: dict) -> None:
+    """The take's truth as a Live Link Face CSV (60 frames/s) and as another rig's curves (a CSV
+    of three channels at 30 frames/s) with their mapping to ARKit."""
+    from facesynth.domain.corpus.truth import read_truth
+    from facesynth.formats import livelink_face
+    from facesynth.formats.blendshape_curves import write_mapping
+
+    truth = read_truth(corpus_dir / "groundtruth" / f"{row['take']}_truth.csv")
+    names = list(truth.arkit_names)
+
+    def at(fps: float) -> tuple[np.ndarray, np.ndarray]:
+        t = np.arange(0, truth.time_s[-1] + 1e-9, 1 / fps)
+        return t, np.stack([np.interp(t, truth.time_s, truth.arkit_weights[:, k]) for k in range(len(names))], 1)
+
+    _, arkit = at(60.0)
+    head = np.stack([0.1 * np.sin(np.arange(len(arkit)) / 30), np.zeros(len(arkit)), np.zeros(len(arkit))], 1)
+    livelink_face.write(root / "take_livelink.csv", names, arkit, 60.0, head=head)
+    t, arkit = at(30.0)
+    channels = {"JawDrop": "jawOpen", "Smile_L": "mouthSmileLeft", "Smile_R": "mouthSmileRight"}
+    with open(root / "take_curves.csv", "w", encoding="utf-8", newline="") as fh:
+        w = csv.writer(fh)
+        w.writerow(["time", *channels])
+        for i, time_s in enumerate(t):
+            w.writerow([f"{time_s:.6f}"] + [f"{arkit[i, names.index(a)]:.5f}" for a in channels.values()])
+    write_mapping(root / "take_mapping.csv", [(c, a, 1.0, "") for c, a in channels.items()])
+    b.files["livelink"], b.files["curves"], b.files["mapping"] = (root / "take_livelink.csv", root / "take_curves.csv",
+                                                                 root / "take_mapping.csv")
 
 
 def _first_constraint(db: Path, segs, nodes) -> str:
@@ -489,10 +523,13 @@ def prepare(bases: Bases, kind: str, mutation: str, seed: int, folder: Path) -> 
 def command(bases: Bases, kind: str, path: Path, out_dir: Path) -> tuple[list, list[Path]]:
     """The command that reads ``path`` as an input of ``kind``, and the outputs it writes."""
     f = bases.files
-    if kind in ("trc", "c3d", "csv", "wav", "flac"):
+    if kind in ("trc", "c3d", "csv", "wav", "flac") + CAPTURE_KINDS:
         row = dict(bases.take)
         c = bases.corpus_dir
-        row["mocap"] = str(path if kind in ("trc", "c3d", "csv") else c / row["mocap"])
+        row["mocap"] = str(path if kind in ("trc", "c3d", "csv", "livelink", "curves") else c / row["mocap"])
+        if kind in ("curves", "mapping"):
+            row["mocap"] = str(path if kind == "curves" else f["curves"])
+            row["mapping"] = str(path if kind == "mapping" else f["mapping"])
         row["audio"] = str(path if kind in ("wav", "flac") else c / row["audio"])
         row["alignment"] = str(c / row["alignment"])
         manifest = path.parent / "manifest.csv"

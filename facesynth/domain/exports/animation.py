@@ -180,35 +180,54 @@ def load(path: Path, motion: Path | None = None) -> Exportable:
         found = f"a '{kind}' artifact" if kind else "no facesynth artifact"
         raise InputError(f"{path}: is {found}; export reads a 'motion', 'meshanim' or 'curves' "
                          "artifact (the output of facesynth synthesize, deform or solve, among others).")
+    artifact: Motion | MeshAnimation | RigCurves
     if kind == "motion":
+        artifact = Motion.read(path, search=True)
+    elif kind == "meshanim":
+        artifact = MeshAnimation.read(path)
+    else:
+        artifact = RigCurves.read(path)
+    if kind == "motion" or motion is None:
+        return of_artifact(artifact, path)
+    out = _exportable(artifact, path)
+    if artifact_kind(Path(motion)) != "motion":
+        raise InputError(f"{motion}: is not a motion artifact; pass the output of {PRODUCERS['motion']}.")
+    m = Motion.read(Path(motion))
+    given = m.frame_provenance(Path(motion))
+    return _labelled(out, None if given is None else given.resampled(out.n_frames, m.fps, out.fps))
 
-        m = Motion.read(path)
-        out = Exportable("motion", path, m.fps, len(m.markers), markers=m.markers, marker_names=list(m.marker_names),
-                         head_rotation=m.head_rotation, head_translation=m.head_translation)
-        return _labelled(out, m.frame_provenance(path))
-    if kind == "meshanim":
 
-        a = MeshAnimation.read(path)
+def of_artifact(artifact: Motion | MeshAnimation | RigCurves, path: Path) -> Exportable:
+    """A motion, mesh animation or rig curves (read from ``path``, or made in memory: then
+    ``path`` only names it in messages) as an :class:`Exportable`, labelled with where its frames
+    came from (a motion's from the search path and provenance it holds). Curves must drive the
+    built-in rig."""
+    out = _exportable(artifact, Path(path))
+    return _labelled(out, artifact.frame_provenance() if isinstance(artifact, Motion) else out.provenance)
+
+
+def _exportable(artifact: Motion | MeshAnimation | RigCurves, path: Path) -> Exportable:
+    """:func:`of_artifact` before the labels."""
+    if isinstance(artifact, Motion):
+        m = artifact
+        return Exportable("motion", path, m.fps, len(m.markers), markers=m.markers, marker_names=list(m.marker_names),
+                          head_rotation=m.head_rotation, head_translation=m.head_translation)
+    if isinstance(artifact, MeshAnimation):
+        a = artifact
         if a.vertices.shape[1] != len(a.rest):
             raise InputError(f"{path}: /vertices moves {a.vertices.shape[1]} vertices but /rest has {len(a.rest)}; "
                              "make the mesh animation again with `facesynth deform`.")
-        out = Exportable("meshanim", path, a.fps, len(a.vertices), markers=a.markers, marker_names=list(a.marker_names),
-                         rest=a.rest.astype(np.float64), faces=a.faces.astype(np.int64), vertices=a.vertices,
-                         gaze=a.gaze, provenance=a.provenance)
-    else:
-        c = RigCurves.read(path)
+        return Exportable("meshanim", path, a.fps, len(a.vertices), markers=a.markers, marker_names=list(a.marker_names),
+                          rest=a.rest.astype(np.float64), faces=a.faces.astype(np.int64), vertices=a.vertices,
+                          gaze=a.gaze, provenance=a.provenance)
+    if isinstance(artifact, RigCurves):
+        c = artifact
         if c.rig_name != BUILTIN_RIG_NAME or c.rig_sha256 != builtin_rig_sha256():
             raise InputError(f"{path}: the curves drive the rig '{c.rig_name}', not the built-in {BUILTIN_RIG_NAME} rig "
                              "this version exports; solve the motion again on the built-in rig (`facesynth solve`).")
-        out = from_curves(c, load_face_rig(), path)
-    if motion is not None:
-
-        if artifact_kind(Path(motion)) != "motion":
-            raise InputError(f"{motion}: is not a motion artifact; pass the output of {PRODUCERS['motion']}.")
-        m = Motion.read(Path(motion))
-        given = m.frame_provenance(Path(motion))
-        return _labelled(out, None if given is None else given.resampled(out.n_frames, m.fps, out.fps))
-    return _labelled(out, out.provenance)
+        return from_curves(c, load_face_rig(), path)
+    raise TypeError(f"{path}: a {type(artifact).__name__} is not an animation; give a Motion, MeshAnimation or "
+                    "RigCurves")
 
 
 def from_curves(c: RigCurves, rig: Rig, path: Path) -> Exportable:

@@ -25,6 +25,7 @@ from __future__ import annotations
 import dataclasses
 import json
 import logging
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -34,7 +35,15 @@ from facesynth.base.config import AlignSettings, IngestSettings, settings_json
 from facesynth.base.errors import InputError, UsageError
 from facesynth.base.limits import require_memory
 from facesynth.domain.postprocess.concatenation import downsample, frame_ranges
-from facesynth.domain.search.inputs import Utterance, apply_emotions, emotion_name, read_constraints, utterance
+from facesynth.domain.search.inputs import (
+    Utterance,
+    apply_emotions,
+    emotion_name,
+    given_spans,
+    read_constraints,
+    set_emotions,
+    utterance,
+)
 from facesynth.domain.search.inputs import read_utterance as read_phone_file
 from facesynth.domain.speech import loudness
 from facesynth.domain.speech.alignment import Alignment
@@ -74,17 +83,21 @@ class UtteranceInput:
 def read_utterance(ingest: IngestSettings, *, phones_path: Path | None = None, audio: Path | None = None,
                    text: str | None = None, align: AlignSettings | None = None, emotions_path: Path | None = None,
                    emotion: str | None = None, samples: tuple[np.ndarray, int] | None = None,
-                   where: str | None = None) -> UtteranceInput:
-    """The utterance: phones from ``phones_path``, or ``audio`` aligned to ``text`` (recognised when
+                   where: str | None = None, phones: Utterance | None = None,
+                   spans: Sequence[tuple[float, float, str]] | None = None) -> UtteranceInput:
+    """The utterance: phones from ``phones_path`` (or ``phones``, an utterance made in memory,
+    which is copied, not changed), or ``audio`` aligned to ``text`` (recognised when
     ``text`` is None) with ``align``; ``samples`` ((n,) float32, rate Hz) when the audio is already
     read. With both ``phones_path`` and ``audio``, the phones are the file's (refused when they end
     more than ``ingest.max_audio_mismatch_s`` after the audio) and the audio is read for its
     loudness (:mod:`facesynth.domain.speech.loudness`). Emotions from the span file
-    ``emotions_path``, or one ``emotion`` name for every phone, or neutral. ``where`` names the
-    audio in messages (default its path)."""
-    if phones_path is not None and text is not None:
+    ``emotions_path`` (or ``spans``, (start_s, end_s, emotion) triples), or one ``emotion`` name for
+    every phone, or neutral. ``where`` names the audio in messages (default its path)."""
+    if phones_path is not None and phones is not None:
+        raise TypeError("read_utterance: give the phones as a file or as an utterance, not both")
+    if (phones_path is not None or phones is not None) and text is not None:
         raise UsageError("--text is aligned to --audio; with the phones given by --phonemes, leave out --text.")
-    if emotions_path is not None and emotion is not None:
+    if sum(x is not None for x in (emotions_path, emotion, spans)) > 1:
         raise UsageError("give one emotion for the whole utterance or an emotions file, not both.")
     aligned = None
     warnings: list[str] = []
@@ -93,12 +106,17 @@ def read_utterance(ingest: IngestSettings, *, phones_path: Path | None = None, a
     if audio is not None:
 
         data, rate = samples if samples is not None else read_audio(audio)
-    if phones_path is not None:
-        utt = read_phone_file(phones_path, ingest.phone_tiers)
+    if phones_path is not None or phones is not None:
+        if phones_path is not None:
+            utt = read_phone_file(phones_path, ingest.phone_tiers)
+        else:
+            assert phones is not None
+            utt = dataclasses.replace(phones, emotions=list(phones.emotions))
         if data is not None:
             end, audio_s = float(utt.ends[-1]), len(data) / rate
             if end > audio_s + ingest.max_audio_mismatch_s:
-                raise InputError(f"the phone timing {phones_path} ends at {end:.2f} s, after the audio {audio} "
+                timing = phones_path if phones_path is not None else "given"
+                raise InputError(f"the phone timing {timing} ends at {end:.2f} s, after the audio {audio} "
                                  f"({audio_s:.2f} s, ingest.max_audio_mismatch_s = {ingest.max_audio_mismatch_s:g} s "
                                  "allowed); give the phone timing of this audio.")
     elif audio is not None:
@@ -120,6 +138,8 @@ def read_utterance(ingest: IngestSettings, *, phones_path: Path | None = None, a
         raise UsageError("give the utterance's phones with --phonemes, or the speech with --audio (and --text).")
     if emotions_path is not None:
         apply_emotions(utt, emotions_path, ingest.emotions, ingest.emotion_aliases)
+    elif spans is not None:
+        set_emotions(utt, given_spans(spans), ingest.emotions, ingest.emotion_aliases)
     elif emotion is not None:
         name = emotion_name(emotion, ingest.emotions, ingest.emotion_aliases, where or "the emotion")
         utt.emotions = [name] * len(utt)

@@ -291,10 +291,11 @@ def solve_motion(motion: "Motion", rig: "Rig", settings: "SolveSettings", where:
 
 
 def solved_curves(motion: "Motion", rig: "Rig", weights: np.ndarray, residual: np.ndarray,
-                  provenance: "FrameProvenance | None") -> "RigCurves":
+                  provenance: "FrameProvenance | None", method: str | None = None) -> "RigCurves":
     """The ``curves`` artifact of a solve of ``motion`` on ``rig`` (:func:`solve_motion`'s
     weights (T, E) and residual (T,)): ``source = "solve"``, at the motion's rate, with its head
-    motion and ``provenance`` (where each frame came from)."""
+    motion and ``provenance`` (where each frame came from); ``method`` says how, in words (None:
+    the regularized solve)."""
     return RigCurves(weights, motion.fps, list(rig.shape_names), rig.name, rig.sha256, "solve", motion.head_rotation,
                      motion.head_translation, residual=residual,
-                     method="bounded least squares with temporal smoothness", provenance=provenance)
+                     method=method or "bounded least squares with temporal smoothness", provenance=provenance)

@@ -12,7 +12,7 @@ import numpy as np
 
 from facesynth.base.errors import InputError, SearchError
 from facesynth.base.phonemes import PAU, map_phones
-from facesynth.formats.labels import read_phone_segments, read_text, read_textgrid
+from facesynth.formats.labels import Segment, check_segments, read_phone_segments, read_text, read_textgrid
 
 log = logging.getLogger(__name__)
 
@@ -52,8 +52,26 @@ def utterance(phones, starts, ends, emotions=None) -> Utterance:
 
 def read_utterance(phones_path: Path, tier_names=("phones",)) -> Utterance:
     """The utterance of a TextGrid (first tier of ``tier_names``) or ``.lab`` file, in the Festival set."""
-    segs = read_phone_segments(phones_path, tier_names)
-    labels = map_phones([s.label for s in segs], str(phones_path), [s.start for s in segs])
+    return _of_segments(read_phone_segments(phones_path, tier_names), str(phones_path))
+
+
+def phones_utterance(phones, where: str = "the phones given") -> Utterance:
+    """The utterance of ``phones``, (phone, start_s, end_s) triples in time order (Festival or
+    CMU/ARPAbet names, seconds), checked as a phone file is (sorted, no overlap, within the
+    limits) and mapped to the Festival set; messages name ``where``."""
+    segs = []
+    for i, item in enumerate(phones):
+        try:
+            label, start, end = item
+            segs.append(Segment(float(start), float(end), str(label)))
+        except (TypeError, ValueError):
+            raise InputError(f"{where}, item {i}: expected (phone, start_s, end_s), got {item!r}.") from None
+    check_segments(segs, where)
+    return _of_segments(segs, where)
+
+
+def _of_segments(segs, where: str) -> Utterance:
+    labels = map_phones([s.label for s in segs], where, [s.start for s in segs])
     return utterance(labels, [s.start for s in segs], [s.end for s in segs])
 
 
@@ -95,12 +113,35 @@ def apply_emotions(utt: Utterance, path: Path, emotions, aliases) -> None:
                 start, end, label = float(parts[0]), float(parts[1]), parts[2]
             except (ValueError, IndexError):
                 raise InputError(f"{path}, line {n}: expected 'start_s end_s emotion', got {line!r}.") from None
-            if not (math.isfinite(start) and math.isfinite(end)):
-                raise InputError(f"{path}, line {n}: the span {start:g} to {end:g} s must be finite seconds.")
-            if end <= start:
-                raise InputError(f"{path}, line {n}: the span ends at or before it starts.")
-            spans.append((start, end, label, f"{path}, line {n}"))
-    spans.sort()
+            spans.append(_span(start, end, label, f"{path}, line {n}"))
+    set_emotions(utt, spans, emotions, aliases)
+
+
+def given_spans(spans, where: str = "the emotion spans given") -> list[tuple[float, float, str, str]]:
+    """Emotion spans given as (start_s, end_s, emotion) triples, checked as a span file's lines
+    are, each with the place messages name (``where``, item i)."""
+    out = []
+    for i, item in enumerate(spans):
+        try:
+            start, end, label = item
+            out.append(_span(float(start), float(end), str(label), f"{where}, item {i}"))
+        except (TypeError, ValueError):
+            raise InputError(f"{where}, item {i}: expected (start_s, end_s, emotion), got {item!r}.") from None
+    return out
+
+
+def _span(start: float, end: float, label: str, where: str) -> tuple[float, float, str, str]:
+    if not (math.isfinite(start) and math.isfinite(end)):
+        raise InputError(f"{where}: the span {start:g} to {end:g} s must be finite seconds.")
+    if end <= start:
+        raise InputError(f"{where}: the span ends at or before it starts.")
+    return (start, end, label, where)
+
+
+def set_emotions(utt: Utterance, spans: list[tuple[float, float, str, str]], emotions, aliases) -> None:
+    """Set each phone's emotion from ``spans`` ((start_s, end_s, emotion, where) each) by the rules
+    of :func:`apply_emotions`."""
+    spans = sorted(spans)
     for (_, a1, _, wa), (b0, _, _, wb) in zip(spans, spans[1:]):
         if b0 < a1 - 1e-9:
             raise InputError(f"{wb}: emotion span overlaps the one at {wa.split(', ', 1)[1]}; make spans disjoint.")
@@ -151,13 +192,37 @@ def read_constraints(path: Path, utt: Utterance, node_phone: list[str]) -> dict[
                 place = f"phone {index}"
         except ValueError:
             raise InputError(f"{where}: expected 'INDEX NODE' or 'TIMEs NODE' with numbers, got {line!r}.") from None
-        if not 0 <= node < len(node_phone):
-            raise SearchError(f"{where}: node {node} does not exist (the database has nodes 0 to {len(node_phone) - 1}).")
-        if utt.phones[index] == PAU:
-            raise SearchError(f"{where}: {place} is a pause, whose frames are interpolated; constrain a spoken phone.")
-        if node_phone[node] != utt.phones[index]:
-            raise SearchError(f"{where}: node {node} is /{node_phone[node]}/ but {place} is /{utt.phones[index]}/; pick a node of that phone (see facesynth suggest).")
-        if index in out:
-            raise SearchError(f"{where}: {place} is already constrained to node {out[index]}; keep one constraint per phone.")
-        out[index] = node
+        _add_constraint(out, index, node, place, where, utt, node_phone)
     return out
+
+
+def given_constraints(constraints, utt: Utterance, node_phone: list[str],
+                      where: str = "the constraints given") -> dict[int, int]:
+    """Hard motion-node constraints given as {phone index: node id} (0-based phone index of
+    ``utt``), checked as a constraints file's lines are. Returns a new {phone index: node id}."""
+    out: dict[int, int] = {}
+    for at, node in dict(constraints).items():
+        here = f"{where}, phone {at!r}"
+        if isinstance(at, bool) or not isinstance(at, (int, np.integer)) or isinstance(node, bool) \
+                or not isinstance(node, (int, np.integer)):
+            raise InputError(f"{here}: expected a phone index and a node id, both whole numbers, got {at!r}: {node!r}.")
+        index, node = int(at), int(node)
+        if not 0 <= index < len(utt):
+            raise SearchError(f"{here}: phone index {index} is out of range (0 to {len(utt) - 1}).")
+        _add_constraint(out, index, node, f"phone {index}", here, utt, node_phone)
+    return out
+
+
+def _add_constraint(out: dict[int, int], index: int, node: int, place: str, where: str, utt: Utterance,
+                    node_phone: list[str]) -> None:
+    """Add ``index -> node`` to ``out`` after the checks every constraint passes (the node
+    exists, is of the phone's phone, the phone is spoken and not constrained already)."""
+    if not 0 <= node < len(node_phone):
+        raise SearchError(f"{where}: node {node} does not exist (the database has nodes 0 to {len(node_phone) - 1}).")
+    if utt.phones[index] == PAU:
+        raise SearchError(f"{where}: {place} is a pause, whose frames are interpolated; constrain a spoken phone.")
+    if node_phone[node] != utt.phones[index]:
+        raise SearchError(f"{where}: node {node} is /{node_phone[node]}/ but {place} is /{utt.phones[index]}/; pick a node of that phone (see facesynth suggest).")
+    if index in out:
+        raise SearchError(f"{where}: {place} is already constrained to node {out[index]}; keep one constraint per phone.")
+    out[index] = node

@@ -28,12 +28,14 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from facesynth.base.config import SynthesizeSettings
+from facesynth.base.jit import worth
 from facesynth.base.opencl import context, kernel, queue, use_opencl
 from facesynth.domain.postprocess.concatenation import end_slope_weights
 from facesynth.model.motiondb import MotionDatabase
 
 from .costs import transition_matrix
 from .dp import PanelMatrix
+from .pairs_numba import block_numba
 
 #: Pivots of the cheap lower and upper bounds (triangle inequality of the mixed norm) that
 #: ``build-db`` stores; a search uses as many as the database holds. More pivots give tighter
@@ -352,7 +354,10 @@ class TransitionCosts:
             return np.zeros((len(rows), len(cols)), np.float32)
         if self.opencl:
             return self.device.block(rows, cols)
-        return self.block_numpy(rows, cols)
+        if not worth(1.6e-6 * len(rows) * len(cols)):  # NumPy's time per pair here
+            return self.block_numpy(rows, cols)
+
+        return block_numba(self, rows, cols)
 
     def block_numpy(self, rows: np.ndarray, cols: np.ndarray) -> np.ndarray:
         """The NumPy reference of :meth:`block`: Table I's rules on the pair terms, in the

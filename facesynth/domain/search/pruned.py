@@ -39,8 +39,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from facesynth.base.jit import worth
+
 from .dp import DpResult
 from .pairs import TransitionCosts
+from .pairs_numba import column_minima_numba
 
 #: States used as dominance references per step.
 REFERENCES = 4
@@ -153,6 +156,15 @@ def _column_minima_numpy(tc: TransitionCosts, rows: np.ndarray, phi: np.ndarray,
     return best, evals
 
 
+def _host_minima(tc: TransitionCosts, t_count: int):
+    """The column scan without a device: numba's (the same minima as :func:`_column_minima_numpy`)
+    where it pays for its start-up (about 2 us of NumPy per node and step here), else NumPy's."""
+    if not worth(2e-6 * tc.n * t_count):
+        return lambda *a, **k: _column_minima_numpy(tc, *a, **k)
+
+    return lambda *a, **k: column_minima_numba(tc, *a, **k)
+
+
 def dp_pruned(tc: TransitionCosts, obs: np.ndarray, keep_last: bool = False) -> tuple[DpResult, PruneStats]:
     """Algorithm 1 for observation costs ``obs`` ((T, N) float32: OC + EMP + B per step) over the
     transition costs ``tc`` (computed on demand; on OpenCL when ``tc.opencl``). Returns the
@@ -175,7 +187,7 @@ def dp_pruned(tc: TransitionCosts, obs: np.ndarray, keep_last: bool = False) -> 
         dead[live] = False
         phi[0, dead] = np.inf
     stats.live.append(len(live))
-    minima = tc.device.column_minima if tc.opencl else (lambda *a: _column_minima_numpy(tc, *a))
+    minima = tc.device.column_minima if tc.opencl else _host_minima(tc, t_count)
     for t in range(1, t_count):
         last = t == t_count - 1
         prev = phi[t - 1]
@@ -256,7 +268,7 @@ def backward_pruned(tc: TransitionCosts, obs: np.ndarray, stop: int = 0) -> tupl
     obs = np.asarray(obs, np.float32)
     t_count, n = obs.shape
     stats = PruneStats(dense_pairs=(t_count - 1 - stop) * n * n)
-    minima = tc.device.column_minima if tc.opencl else (lambda *a, **k: _column_minima_numpy(tc, *a, **k))
+    minima = tc.device.column_minima if tc.opencl else _host_minima(tc, t_count)
     beta = obs[-1].copy()
     suc = tc._suc
     nodes = np.arange(n, dtype=np.int32)

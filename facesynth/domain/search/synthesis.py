@@ -18,6 +18,7 @@ import numpy as np
 
 from facesynth.base.config import SynthesizeSettings
 from facesynth.base.errors import UsageError
+from facesynth.base.jit import worth
 from facesynth.base.opencl import device_record, use_opencl
 from facesynth.base.phonemes import PAU, viseme
 from facesynth.domain.head_motion.rotations import follow_sources
@@ -28,6 +29,7 @@ from facesynth.model.motiondb import MotionDatabase, Nodes
 
 from .costs import StepCosts, path_terms, step_costs
 from .dp import DpResult, OpenCLDp, dp_numpy
+from .dp_numba import dp_numba
 from .greedy import Greedy, anime_graph, cluster_graph, motion_features
 from .inputs import Utterance
 from .pairs import transition_costs
@@ -86,7 +88,11 @@ def search(tc, steps: StepCosts, settings: SynthesizeSettings, *, while_running:
                 helper.join()
         return result, device_record(settings.use_opencl), stats.fraction
     if not tc.opencl:
-        return dp_numpy(tc.dense(), steps.total), device_record(settings.use_opencl), 1.0
+        dense, obs = tc.dense(), steps.total
+        if not worth(1e-9 * dense.size * len(obs)):  # NumPy's time per min-plus term here
+            return dp_numpy(dense, obs), device_record(settings.use_opencl), 1.0
+
+        return dp_numba(dense, obs), device_record(settings.use_opencl), 1.0
     t0 = time.perf_counter()
     runner = OpenCLDp(tc.panels())
     if timings is not None:

@@ -1,0 +1,171 @@
+"""The voice's articulation (facesynth.domain.speech.articulation) and its ``articulation``
+artifact, on audio and arrays made here: streaming equals batch, the model round-trips bit for
+bit and checks clean, a fit recovers a known linear map, and everything is deterministic."""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+import pytest
+
+from facesynth.base.errors import ArtifactError, InputError
+from facesynth.domain.speech import articulation as A
+from facesynth.model import check
+from facesynth.model.articulation import ArticulationModel
+
+RATE = A.RATE
+FPS = 30.0
+
+
+def speechlike(seconds: float, seed: int = 0) -> np.ndarray:
+    """(n,) float32 at 16 kHz: syllables of a voiced buzz (120 Hz pulses through two resonances)
+    with noise bursts, after a quarter second of silence."""
+    from scipy.signal import lfilter
+
+    rng = np.random.default_rng(seed)
+    n = int(seconds * RATE)
+    t = np.arange(n) / RATE
+    buzz = (np.sin(2 * np.pi * 120 * t) > 0.95).astype(float)
+    out = np.zeros(n)
+    for f in (700, 1200):
+        r = np.exp(-np.pi * 100 / RATE)
+        out += lfilter([1.0], [1.0, -2 * r * np.cos(2 * np.pi * f / RATE), r * r], buzz)
+    env = np.clip(np.sin(2 * np.pi * 3.0 * t), 0, None) ** 2
+    hiss = rng.normal(0, 0.05, n) * (np.sin(2 * np.pi * 1.5 * t + 1) > 0.9)
+    x = out / np.abs(out).max() * 0.5 * env + hiss
+    x[: RATE // 4] = 0.0
+    return x.astype(np.float32)
+
+
+def fitted(**kw) -> tuple[ArticulationModel, np.ndarray]:
+    x = speechlike(6.0)
+    raw = A.frame_features(x, RATE)
+    n = int(6.0 * FPS)
+    env = np.interp(np.arange(n) / FPS, np.arange(len(raw)) * A.FRAME_S, raw[:, A.I_LOG_RMS])
+    targets = np.stack([np.exp(env), -env], 1)
+    return A.fit([A.Take(raw, targets, FPS)], ("opening", "mouthFunnel"), **kw), x
+
+
+def test_features_shape_and_silence():
+    x = speechlike(1.0)
+    raw = A.frame_features(x, RATE)
+    assert raw.shape == (A.frame_count(len(x)), A.N_FEATURES) == (100, 40) and raw.dtype == np.float32
+    assert np.isfinite(raw).all()
+    assert raw[5, A.I_LOG_RMS] == pytest.approx(0.5 * np.log(A.POWER_FLOOR), abs=1e-3)  # digital silence
+    assert raw[5, A.I_VOICING] == 0
+
+
+@pytest.mark.parametrize("chunk", [320, 33, 4000])
+def test_streaming_features_equal_batch(chunk):
+    x = speechlike(1.3)
+    s = A.StreamingFeatures()
+    out = [s.push(x[a:a + chunk]) for a in range(0, len(x), chunk)] + [s.finish()]
+    np.testing.assert_allclose(np.concatenate(out), A.frame_features(x, RATE), atol=1e-4, rtol=1e-4)
+
+
+def test_running_normalization_continues_across_chunks():
+    rng = np.random.default_rng(1)
+    raw = rng.normal(size=(700, A.N_FEATURES)).astype(np.float32)
+    raw[:, A.I_LOG_RMS] = rng.normal(-3, 1, 700)
+    norm = A.Normalizer(mode="running", tau_s=0.5)
+    z = norm.apply(raw)
+    st = A.RunningState.start(norm)
+    np.testing.assert_allclose(np.concatenate([st.update(norm, raw[:300]), st.update(norm, raw[300:])]), z, atol=1e-5)
+
+
+def test_ridge_recovers_a_linear_map():
+    rng = np.random.default_rng(2)
+    x = rng.normal(size=(2000, 5))
+    w = np.array([[1.0], [-2.0], [0.5], [0.0], [3.0]])
+    coef, intercept = A.ridge(x, x @ w + 4.0, 1e-8)
+    np.testing.assert_allclose(coef, w, atol=1e-5)
+    np.testing.assert_allclose(intercept, [4.0], atol=1e-5)
+
+
+def test_fit_recovers_a_known_linear_relation_of_the_context():
+    """Targets made as a linear map of the model's own context: the fit finds that map's curves."""
+    x = speechlike(6.0)
+    raw = A.frame_features(x, RATE)
+    times = np.arange(int(6.0 * FPS)) / FPS
+    probe = A.fit([A.Take(raw, np.zeros((len(times), 1)), FPS)], ("t",), alpha=1e-9)
+    ctx = A.design(probe, raw, times).astype(np.float64)
+    width = A.N_FEATURES + A.N_EXPANDED  # context columns per offset, offset-major
+    assert ctx.shape[1] == len(A.DEFAULT_OFFSETS_S) * width
+    w = np.zeros((ctx.shape[1], 1))
+    w[A.I_LOG_RMS], w[11 * width + A.I_VOICING] = 0.3, -0.2  # loudness at -250 ms, voicing at +60 ms
+    y = ctx @ w + 0.5
+    model = A.fit([A.Take(raw, y, FPS)], ("t",), alpha=1e-9)
+    np.testing.assert_allclose(A.predict_raw(model, raw, times), y, atol=1e-3)
+
+
+def test_model_predicts_what_it_learned_and_is_deterministic():
+    model, x = fitted()
+    again, _ = fitted()
+    for f in dataclasses.fields(model):
+        a, b = getattr(model, f.name), getattr(again, f.name)
+        assert np.array_equal(a, b) if isinstance(a, np.ndarray) else a == b, f.name
+    pred = A.predict(model, x, RATE, 180, FPS)
+    assert pred.shape == (180, 2)
+    assert np.array_equal(pred, A.predict(again, x, RATE, 180, FPS))
+    raw = A.frame_features(x, RATE)
+    env = np.interp(np.arange(180) / FPS, np.arange(len(raw)) * A.FRAME_S, raw[:, A.I_LOG_RMS])
+    assert np.corrcoef(pred[:, 1], -env)[0, 1] > 0.95
+    assert A.model_look_ahead_s(model) == pytest.approx(0.086)
+
+
+@pytest.mark.parametrize("chunk", [320, 33, 4000])
+def test_streaming_predictions_equal_batch_and_respect_the_look_ahead(chunk):
+    model, x = fitted()
+    sp = A.StreamingPredictor(model, FPS)
+    outs, emitted_at = [], []
+    for a in range(0, len(x), chunk):
+        o = sp.push(x[a:a + chunk])
+        outs.append(o)
+        emitted_at += [(a + len(x[a:a + chunk])) / RATE] * len(o)
+    outs.append(sp.finish())
+    stream = np.concatenate(outs)
+    np.testing.assert_allclose(stream, A.predict(model, x, RATE, len(stream), FPS), atol=1e-5)
+    lag = np.array(emitted_at) - np.arange(len(emitted_at)) / FPS
+    look = A.model_look_ahead_s(model)
+    assert lag.min() >= look - A.FRAME_S / 2 - 1e-9  # offsets round to analysis frames
+    assert lag.max() <= look + chunk / RATE + A.FRAME_S + 1 / FPS
+
+
+def test_streaming_refuses_utterance_normalization_and_other_rates():
+    model, _ = fitted(normalization="utterance")
+    with pytest.raises(InputError, match="whole audio"):
+        A.StreamingPredictor(model, FPS)
+    with pytest.raises(InputError, match="16000 Hz"):
+        A.StreamingPredictor(fitted()[0], FPS, rate=44100)
+
+
+def test_round_trip_is_bit_exact_and_checks_clean(tmp_path):
+    model, x = fitted()
+    path = tmp_path / "articulation.h5"
+    model.write(path, config="{}", inputs=[])
+    again = ArticulationModel.read(path)
+    for f in dataclasses.fields(model):
+        if f.name == "inputs":
+            continue
+        a, b = getattr(model, f.name), getattr(again, f.name)
+        if isinstance(a, np.ndarray):
+            assert a.dtype == b.dtype and np.array_equal(a, b), f.name
+        else:
+            assert a == b, f.name
+    assert np.array_equal(A.predict(again, x, RATE, 180, FPS), A.predict(model, x, RATE, 180, FPS))
+    report = check.check_file(path)
+    assert report.problems == []
+    assert report.lines() == [f"{path}: ok (articulation, schema 1)"]
+
+
+def test_model_of_other_features_is_refused():
+    model, x = fitted()
+    with pytest.raises(ArtifactError, match="other voice features"):
+        A.predict(dataclasses.replace(model, hop=80), x, RATE, 10, FPS)
+
+
+def test_fit_refuses_mismatched_targets():
+    raw = A.frame_features(speechlike(1.0), RATE)
+    with pytest.raises(InputError, match="expected"):
+        A.fit([A.Take(raw, np.zeros((30, 3)), FPS)], ("opening",))
