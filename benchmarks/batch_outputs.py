@@ -28,7 +28,7 @@ from batch_throughput import build_db
 
 from facesynth.base.config import Config
 
-OUTPUTS = ("motion", "curves", "arkit", "gltf", "usd", "avi", "anim")
+OUTPUTS = ("motion", "curves", "arkit-csv", "gltf", "usd", "avi", "anim")
 
 
 def measure(corpus: Path, db: Path, take: str, work: Path, repeats: int) -> dict:
@@ -46,7 +46,7 @@ def measure(corpus: Path, db: Path, take: str, work: Path, repeats: int) -> dict
     values = [config.settings(n) for n in ("batch", "synthesize", "ingest", "align", "deform", "render")]
     line = read_script(script)[0]
     kinds = [(k,) for k in OUTPUTS if k != "usd" or usd.available()]
-    kinds.append(tuple(k for k in ("curves", "arkit", "gltf", "usd", "avi") if k != "usd" or usd.available()))
+    kinds.append(tuple(k for k in ("curves", "arkit-csv", "gltf", "usd", "avi") if k != "usd" or usd.available()))
     result = {}
     for outputs in [("motion",)] + kinds:  # the first run loads the database
         values[0] = dataclasses.replace(values[0], outputs=outputs)

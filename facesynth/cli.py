@@ -989,7 +989,7 @@ def player(ctx: Context, artifact: Path | None, audio: Path | None, motion: Path
               help="The synthesis method of every line (default: dp, following synthesize.search), as for synthesize.")
 @click.option("-o", "--output", type=PATH, required=True, help="Output folder (per-line files and the summary).")
 @click.option("--outputs", default=None, metavar="KINDS",
-              help="Comma-separated: motion, curves, arkit, gltf, usd, avi, anim (default: batch.outputs).")
+              help="Comma-separated: motion, curves, avi, anim and the export formats (arkit-csv, gltf, usd, ...; default: batch.outputs).")
 @click.option("--rig", type=PATH, default=None,
               help="The rig of curves, arkit, gltf, usd and avi: a folder of OBJ files or a .gltf/.glb (default: built-in).")
 @click.option("--rig-binding", type=EXISTING, default=None,

@@ -225,7 +225,7 @@ def test_rig_outputs_from_one_solve_named_in_the_manifest(tiny_corpus, tiny_db, 
     row = takes["neutral_s001"]
     script = _write(tmp_path / "s.csv", [("id", "audio", "alignment"),
                                          ("one", str(tiny_corpus / row["audio"]), str(tiny_corpus / row["alignment"]))])
-    kinds = ("motion", "curves", "arkit", "gltf", "avi")
+    kinds = ("motion", "curves", "arkit-csv", "gltf", "avi")
     settings = _settings(config, outputs=kinds)
     settings[5] = dataclasses.replace(settings[5], width=64, height=48)
     out = tmp_path / "out"
@@ -351,7 +351,7 @@ def test_a_user_s_rig_takes_the_rig_outputs(tiny_corpus, tiny_db, takes, config,
     row = takes["neutral_s001"]
     script = _write(tmp_path / "s.csv", [("id", "audio", "alignment"),
                                          ("one", str(tiny_corpus / row["audio"]), str(tiny_corpus / row["alignment"]))])
-    values = _settings(config, outputs=("curves", "arkit", "gltf", "avi"))
+    values = _settings(config, outputs=("curves", "arkit-csv", "gltf", "avi"))
     values[5] = dataclasses.replace(values[5], width=64, height=48)
     _, job = batch.prepare(script, tiny_db, tmp_path / "out", *values, rig=folder, rig_binding=binding)
     result = run_line(read_script(script)[0], job)
@@ -372,3 +372,12 @@ def test_a_user_s_rig_takes_the_rig_outputs(tiny_corpus, tiny_db, takes, config,
             p.rename(p.with_name(f"shape_{p.name}"))
     with pytest.raises(InputError, match="none of the shapes of rig 'myrig' has an ARKit name"):
         batch.prepare(script, tiny_db, tmp_path / "o3", *values, rig=folder, rig_binding=binding)
+
+
+def test_the_old_name_of_an_output_still_works_with_a_warning():
+    from facesynth.domain.batch.line import output_names
+
+    names, warnings = output_names(("motion", "arkit", "arkit-csv"))
+    assert names == ("motion", "arkit-csv")
+    assert len(warnings) == 1 and "'arkit' is now called 'arkit-csv'" in warnings[0]
+    assert output_names(("curves", "gltf")) == (("curves", "gltf"), [])
