@@ -18,7 +18,9 @@ import wave
 from dataclasses import dataclass, field
 from typing import IO
 
-#: The 52 ARKit blendshapes, in the Live Link Face CSV's column order (Apple's spelling).
+#: The 52 ARKit blendshapes, in the Live Link Face CSV's column order (Apple's spelling). The add-on
+#: runs in Blender's own Python, without facesynth, so it keeps its own copy; the tests check it
+#: against the CSV facesynth writes.
 ARKIT_NAMES = (
     "eyeBlinkLeft", "eyeLookDownLeft", "eyeLookInLeft", "eyeLookOutLeft", "eyeLookUpLeft", "eyeSquintLeft",
     "eyeWideLeft", "eyeBlinkRight", "eyeLookDownRight", "eyeLookInRight", "eyeLookOutRight", "eyeLookUpRight",

@@ -57,7 +57,12 @@ def read_mocap(path: Path) -> MarkerTake:
     suffix = path.suffix.lower()
     if suffix not in MARKER_SUFFIXES:
         raise InputError(f"{path}: not a marker file ({suffix!r}); use .c3d, .trc or .csv.")
-    take = {".c3d": read_c3d, ".trc": read_trc, ".csv": read_csv}[suffix](path)
+    return checked({".c3d": read_c3d, ".trc": read_trc, ".csv": read_csv}[suffix](path), path)
+
+
+def checked(take: MarkerTake, path: Path) -> MarkerTake:
+    """``take`` as read from ``path``, refused in one sentence when it has no frames or two
+    markers of one name, or fails :func:`check_take`."""
     if take.positions.shape[0] == 0:
         raise InputError(f"{path}: the take has no frames; re-export it or drop it from the manifest.")
     if len(set(take.names)) != len(take.names):

@@ -21,7 +21,7 @@ from typing import Any
 from facesynth.base.errors import InputError
 from facesynth.base.registry import CAPTURE_READERS
 from facesynth.domain.rig.face import Rig
-from facesynth.formats.mocap import MarkerTake, check_take
+from facesynth.formats.mocap import MarkerTake, checked
 
 #: The scale of a video take when nothing else is said (mm between the outer eye corners).
 EYE_CORNERS_MM = 90.0
@@ -95,10 +95,4 @@ def read_capture(path: Path, options: CaptureOptions | None = None) -> MarkerTak
     if not path.exists():
         raise InputError(f"{path}: mocap file not found; check the manifest's mocap column.")
     _, reader = capture_reader(path, options)
-    take = reader.read(path, options)
-    if take.positions.shape[0] == 0:
-        raise InputError(f"{path}: the take has no frames; re-export it or drop it from the manifest.")
-    if len(set(take.names)) != len(take.names):
-        raise InputError(f"{path}: duplicate marker names; every marker needs its own label.")
-    check_take(take, str(path))
-    return take
+    return checked(reader.read(path, options), path)
