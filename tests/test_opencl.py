@@ -2,8 +2,10 @@
 the whole pipeline, says why once, and gets the same results."""
 
 import os
+import shutil
 import subprocess
 import sys
+from pathlib import Path
 
 import h5py
 import numpy as np
@@ -153,6 +155,13 @@ def test_a_real_pocl_build_failure_falls_back(tiny_db, tiny_corpus, held_out_tak
         pytest.skip("no PoCL device on this machine to break")
     env = {k: v for k, v in os.environ.items() if k not in ("PYOPENCL_CTX", opencl.FORCE_ENV)}
     env["POCL_EXTRA_BUILD_FLAGS"] = "-mcpu=generic"
+    # only PoCL's drivers: a GPU's (which builds) would be taken instead of falling back
+    vendors = tmp_path / "vendors"
+    vendors.mkdir()
+    for icd in Path("/etc/OpenCL/vendors").glob("*.icd"):
+        if "pocl" in icd.name.lower():
+            shutil.copy(icd, vendors / icd.name)
+    env["OCL_ICD_VENDORS"] = str(vendors)
     tg = tiny_corpus / "labels" / f"{held_out_take}.TextGrid"
     out = tmp_path / "m.h5"
     r = subprocess.run([sys.executable, "-m", "facesynth.cli", "synthesize", str(tiny_db), "--phonemes", str(tg),

@@ -3,11 +3,13 @@ read a database or a fitted model, make an utterance, synthesize it with any mem
 method family, solve it onto a rig and export it (``docs/api.md`` says what is public and how
 versions change it).
 
-A thin facade over the stages: each function calls the very steps its command runs
-(:mod:`facesynth.stages.synthesize`, :mod:`~facesynth.stages.solve`,
-:mod:`~facesynth.stages.export`), so an output written here holds the same bytes as the
-command's for the same inputs and settings. Each returns the model objects the stages use
-(:class:`Motion`, :class:`RigCurves`, ...), and writes its artifact too when given ``output``.
+A thin facade over the domain: each function calls the very steps its command runs
+(:func:`facesynth.domain.methods.core.synthesize_utterance`,
+:mod:`facesynth.domain.retarget.facial_solve`, :func:`facesynth.domain.exports.format.export`),
+so an output written here holds the same bytes as the command's for the same inputs and
+settings. The API sits below the stages and imports none of them. Each function returns the
+model objects the stages use (:class:`Motion`, :class:`RigCurves`, ...), and writes its artifact
+too when given ``output``.
 
 Settings come from a :class:`Config` (:func:`load_config`: the packaged defaults, a TOML file
 and ``section.key=value`` overrides, as the command line's ``--config`` and ``--set``); without
@@ -44,8 +46,10 @@ from facesynth.base.errors import (
 )
 from facesynth.base.registry import EXPORT_FORMATS, METHODS
 from facesynth.domain import methods as family
-from facesynth.domain.exports.animation import of_artifact
+from facesynth.domain.exports import format as exporting
+from facesynth.domain.exports.animation import load, of_artifact
 from facesynth.domain.methods import Method, MethodSettings, core
+from facesynth.domain.retarget import facial_solve
 from facesynth.domain.rig.face import Rig
 from facesynth.domain.rig.loading import load_rig
 from facesynth.domain.search.inputs import given_constraints, phones_utterance, read_constraints
@@ -58,9 +62,6 @@ from facesynth.model.meshanim import MeshAnimation
 from facesynth.model.motion import Motion
 from facesynth.model.motiondb import MotionDatabase
 from facesynth.model.trajectory import TrajectoryModel
-from facesynth.stages import export as export_stage
-from facesynth.stages import solve as solve_stage
-from facesynth.stages import synthesize as synthesize_stage
 
 __all__ = [
     "__version__",
@@ -280,12 +281,12 @@ def synthesize(source: StrPath | MotionDatabase | FittedModel, utterance: Uttera
         elif constraints is not None:
             assert isinstance(constraints, Mapping)
             chosen = given_constraints(constraints, utterance.data.utterance, src.nodes.phone)
-        made = synthesize_stage.synthesize(member, src, utterance.data, settings, chosen, head=head,
-                                           source_where=source_where, where=utterance.where)
+        made = core.synthesize_utterance(member, src, utterance.data, settings, chosen, head=head,
+                                         source_where=source_where, where=utterance.where)
         if output is not None:
-            recorded = synthesize_stage.recorded_inputs(source_file, utterance.phones_file, utterance.emotions_file,
-                                                        constraints_path, utterance.audio_file, head_path)
-            synthesize_stage.write(made, Path(output), [input_record(p) for p in recorded], overwrite=overwrite)
+            recorded = core.motion_inputs(source_file, utterance.phones_file, utterance.emotions_file,
+                                          constraints_path, utterance.audio_file, head_path)
+            core.write_motion(made, Path(output), [input_record(p) for p in recorded], overwrite=overwrite)
     return made.motion
 
 
@@ -313,17 +314,17 @@ def solve(motion: StrPath | Motion, *, rig: StrPath | Rig | None = None, binding
         motion_path = _file(motion)
         exact = False
         if motion_path is not None:
-            moving = solve_stage.read_motion(motion_path, settings, take)
-            settings, exact = solve_stage.settings_for(motion_path, settings)  # a posed capture: the exact solve
+            moving = facial_solve.read_motion(motion_path, settings, take)
+            settings, exact = facial_solve.settings_for(motion_path, settings)  # a posed capture: the exact solve
         elif take is not None:
             raise UsageError("take picks a take of a normalized capture's file; a Motion is one take already.")
         else:
             assert isinstance(motion, Motion)
             moving = motion
-        solved = solve_stage.solve(moving, target, settings, str(motion_path or "the motion given"), exact=exact)
+        solved = facial_solve.solve(moving, target, settings, str(motion_path or "the motion given"), exact=exact)
         if output is not None:
-            solve_stage.write(solved, Path(output), settings, solve_stage.recorded_inputs(motion_path, rig_path),
-                              overwrite=overwrite)
+            facial_solve.write(solved, Path(output), settings, facial_solve.recorded_inputs(motion_path, rig_path),
+                               overwrite=overwrite)
     return solved.curves
 
 
@@ -339,15 +340,15 @@ def export(animation: StrPath | Motion | MeshAnimation | RigCurves, format: str,
     cfg = _config(config)
     out = Path(output)
     with _limits(cfg):
-        form = export_stage.export_format(format, out, _path(audio), overwrite)
+        form = exporting.chosen_format(format, out, _path(audio), overwrite)
         animation_path = _file(animation)
         if animation_path is not None:
-            anim = export_stage.load(animation_path)
+            anim = load(animation_path)
         else:
             assert isinstance(animation, (Motion, MeshAnimation, RigCurves))
             anim = of_artifact(animation, Path(f"the {_KIND_WHAT[animation.KIND]} given"))
-        done = export_stage.write(form, anim, out, cfg.settings("export"), fps=fps, head_motion=head_motion,
-                                  audio=_path(audio), mesh=_path(mesh), overwrite=overwrite)
+        done = exporting.export(form, anim, out, cfg.settings("export"), fps=fps, head_motion=head_motion,
+                                audio=_path(audio), mesh=_path(mesh), overwrite=overwrite)
     return list(done.files)
 
 

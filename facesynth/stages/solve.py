@@ -24,67 +24,15 @@ synthesis) is always solved with the regularized settings.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
 from pathlib import Path
 
-import numpy as np
+from facesynth.base.config import SolveSettings
+from facesynth.domain.retarget import facial_solve
+from facesynth.domain.retarget.facial_solve import SolveResult
+from facesynth.domain.rig.loading import load_rig
+from facesynth.model.artifacts import check_output
 
-from facesynth.base.config import SolveSettings, settings_json
-from facesynth.base.errors import InputError
-from facesynth.domain.postprocess.concatenation import downsample
-from facesynth.domain.retarget.solve import solve_motion, solved_curves
-from facesynth.domain.rig.face import Rig
-from facesynth.domain.rig.loading import load_rig, marker_map
-from facesynth.model.artifacts import artifact_kind, check_output
-from facesynth.model.curves import RigCurves
-from facesynth.model.frames import NormalizedFrames, relative_to_take
-from facesynth.model.motion import Motion
-
-
-def take_motion(normalized: NormalizedFrames, take: str | None, output_fps: float, where: str) -> Motion:
-    """One take of a ``normalized`` artifact as captured motion (``source = "capture"``) at
-    ``output_fps``: markers (T, M, 3) mm in the head frame, the reference as rest pose, the head
-    motion relative to the take's mean. ``take`` None: the only take."""
-    names = normalized.takes.name
-    if take is None:
-        if len(names) != 1:
-            raise InputError(f"{where}: it holds {len(names)} takes ({', '.join(names[:4])}...); choose one with --take.")
-        take = names[0]
-    if take not in names:
-        raise InputError(f"{where}: no take {take!r}; it has {', '.join(names[:5])}.")
-    frames = normalized.frames
-    sl = normalized.takes.frames(names.index(take))
-    markers = frames.loaded_markers()[sl].astype(np.float32)
-    rel_r, rel_t = relative_to_take(frames.head_rotation[sl], frames.head_translation[sl], [slice(0, len(markers))])
-    return Motion(downsample(markers, frames.fps, output_fps), output_fps, markers, frames.fps, normalized.marker_names,
-                  frames.reference, downsample(rel_r, frames.fps, output_fps).astype(np.float32),
-                  downsample(rel_t, frames.fps, output_fps).astype(np.float32), source="capture", take=take)
-
-
-@dataclass(frozen=True)
-class SolveResult:
-    """What ``facesynth solve`` solved.
-
-    frames: frames of the curves.
-    shapes: the rig's blendshapes.
-    iterations: the solver's iterations.
-    residual_rms: RMS marker residual (rig units).
-    rig: the rig's name.
-    marker_residual_median_mm, marker_residual_p95_mm: the median and 95th percentile of each
-        bound marker's distance from the solved rig, per frame, in the motion's millimetres.
-    take: the solved take (a capture), or None.
-    exact: solved without smoothing or ridge (a capture posed from curves, ``solve.posed_captures``).
-    """
-
-    frames: int
-    shapes: int
-    iterations: int
-    residual_rms: float
-    rig: str
-    marker_residual_median_mm: float
-    marker_residual_p95_mm: float
-    take: str | None
-    exact: bool = False
+__all__ = ["SolveResult", "run"]
 
 
 def run(motion_path: Path, out: Path, settings: SolveSettings, rig_path: Path | None = None,
@@ -92,80 +40,12 @@ def run(motion_path: Path, out: Path, settings: SolveSettings, rig_path: Path | 
     """Solve ``motion_path`` (a ``motion``, or one take of a ``normalized`` artifact) on the rig
     (built-in when ``rig_path`` is None, with ``binding`` when given) and write ``out``.
 
-    The steps are the ones :mod:`facesynth.api` calls (:func:`read_motion`, :func:`solve`,
-    :func:`write`, :func:`recorded_inputs`), so the command and the API write the same artifact."""
+    The steps are the ones :mod:`facesynth.api` calls (:mod:`facesynth.domain.retarget.facial_solve`),
+    so the command and the API write the same artifact."""
     check_output(out, overwrite)
     rig = load_rig(rig_path, binding)
-    motion = read_motion(motion_path, settings, take)
-    used, exact = settings_for(motion_path, settings)
-    solved = solve(motion, rig, used, str(motion_path), exact=exact)
-    write(solved, out, used, recorded_inputs(motion_path, rig_path), overwrite=overwrite)
+    motion = facial_solve.read_motion(motion_path, settings, take)
+    used, exact = facial_solve.settings_for(motion_path, settings)
+    solved = facial_solve.solve(motion, rig, used, str(motion_path), exact=exact)
+    facial_solve.write(solved, out, used, facial_solve.recorded_inputs(motion_path, rig_path), overwrite=overwrite)
     return solved.result
-
-
-def settings_for(motion_path: Path, settings: SolveSettings) -> tuple[SolveSettings, bool]:
-    """(the settings ``motion_path`` is solved with, whether they are the exact ones): for a
-    normalized capture posed from curves with ``posed_captures = "exact"``, ``settings`` without
-    smoothing or ridge, with ``exact_iterations`` and ``exact_tolerance`` (see the module
-    docstring); else ``settings``."""
-    if settings.posed_captures == "exact" and artifact_kind(motion_path) == NormalizedFrames.KIND \
-            and NormalizedFrames.read_posed(motion_path):
-        return replace(settings, smooth=0.0, ridge=0.0, iterations=settings.exact_iterations,
-                       tolerance=settings.exact_tolerance), True
-    return settings, False
-
-
-def read_motion(motion_path: Path, settings: SolveSettings, take: str | None = None) -> Motion:
-    """What ``solve`` solves from ``motion_path``: a ``motion`` artifact (with its search path and
-    provenance), or the take ``take`` of a ``normalized`` one (:func:`take_motion`, at
-    ``settings.output_fps``)."""
-    if artifact_kind(motion_path) == NormalizedFrames.KIND:
-        return take_motion(NormalizedFrames.read(motion_path), take, settings.output_fps, str(motion_path))
-    if take is not None:
-        raise InputError(f"{motion_path}: --take picks a take of a normalized capture; a motion artifact has one.")
-    return Motion.read(motion_path, search=True)
-
-
-@dataclass
-class Solved:
-    """The curves of a solve and what ``solve`` reports about them."""
-
-    curves: RigCurves
-    result: SolveResult
-
-
-def solve(motion: Motion, rig: Rig, settings: SolveSettings, where: str = "the motion", exact: bool = False) -> Solved:
-    """The core of ``solve``: ``motion`` solved on ``rig`` (:func:`solve_motion`), as ``curves``
-    (``source = "solve"``) carrying where each frame came from (the motion's own provenance).
-    Messages name ``where``; ``exact``: ``settings`` are the exact ones (:func:`settings_for`)."""
-    weights, residual, iterations = solve_motion(motion, rig, settings, where)
-    method = "bounded least squares, no smoothing or ridge (a capture posed from curves)" if exact else None
-    curves = solved_curves(motion, rig, weights, residual, motion.frame_provenance(), method)
-    marker_mm = per_marker_residual_mm(motion, rig, weights)
-    return Solved(curves, SolveResult(len(weights), len(rig.shape_names), iterations,
-                                      float(np.sqrt(np.nanmean(residual**2))), rig.name,
-                                      float(np.nanmedian(marker_mm)), float(np.nanpercentile(marker_mm, 95)),
-                                      motion.take, exact))
-
-
-def write(solved: Solved, out: Path, settings: SolveSettings, inputs: list[Path], *, overwrite: bool = False) -> None:
-    """Write the ``curves`` artifact of ``solved`` at ``out``: ``settings`` as its ``config``,
-    ``inputs`` (:func:`recorded_inputs`) as its provenance."""
-    solved.curves.write(out, config=settings_json(settings), inputs=inputs, overwrite=overwrite)
-
-
-def recorded_inputs(motion: Path | None, rig: Path | str | None = None) -> list[Path]:
-    """The files solved curves record as their inputs: the motion's, and the rig's when it is one
-    file (a glTF; a folder of OBJs is named by the curves' ``rig_name`` and ``rig_sha256``)."""
-    return ([Path(motion)] if motion is not None else []) + (
-        [Path(rig)] if rig is not None and Path(rig).is_file() else [])
-
-
-
-def per_marker_residual_mm(motion: Motion, rig: Rig, weights: np.ndarray) -> np.ndarray:
-    """(T, B) distance in the motion's millimetres between each bound marker's displacement and
-    the solved rig's displacement at its vertex (NaN where the marker is unseen)."""
-    mmap = marker_map(rig, motion.marker_names, motion.reference, "")
-    disp = mmap.displacements(motion.markers, motion.reference)
-    fitted = np.tensordot(weights, rig.deltas[:, mmap.vertices], axes=(1, 0))
-    return np.linalg.norm(disp - fitted, axis=2) / mmap.scale

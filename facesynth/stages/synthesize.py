@@ -12,15 +12,12 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
-import numpy as np
-
 from facesynth.base.config import AlignSettings, IngestSettings, SynthesizeSettings
 from facesynth.domain import methods
-from facesynth.domain.methods import Method, MethodSettings, SynthesisSummary, core
+from facesynth.domain.methods import MethodSettings, core
 from facesynth.domain.methods.search import memory_estimate as memory_estimate  # the DP's estimate, where it always was
 from facesynth.model.artifacts import check_output, input_records_in_background
 from facesynth.model.head_motion import HeadMotion
-from facesynth.model.motion import Motion
 
 
 @dataclass(frozen=True)
@@ -73,8 +70,9 @@ def run(source_path: Path, out: Path, settings: SynthesizeSettings | MethodSetti
     ``headmotion`` artifact, see ``facesynth head-motion``) replaces the head motion of the output
     (the source takes' for the searches, none for the others).
 
-    The steps are the ones :mod:`facesynth.api` calls (:func:`synthesize`, :func:`write`,
-    :func:`recorded_inputs`), so the command and the API write the same artifact."""
+    The steps are the ones :mod:`facesynth.api` calls (:func:`core.synthesize_utterance`,
+    :func:`core.write_motion`, :func:`core.motion_inputs`), so the command and the API write the
+    same artifact."""
     settings = method_settings(settings)
     member = methods.get(method or settings.synthesize.search)
     if constraints_path is not None:
@@ -86,18 +84,18 @@ def run(source_path: Path, out: Path, settings: SynthesizeSettings | MethodSetti
     load_s = time.perf_counter() - t0
     # hashed from here, while the method runs: the source's record comes from the file just
     # validated (not opened again), and a source replaced meanwhile is refused
-    records = input_records_in_background(recorded_inputs(source_path, phones_path, emotions_path, constraints_path,
+    records = input_records_in_background(core.motion_inputs(source_path, phones_path, emotions_path, constraints_path,
                                                           audio, head_motion_path))
     read = core.read_utterance(ingest_settings, phones_path=phones_path, audio=audio, text=text, align=align_settings,
                                emotions_path=emotions_path)
     constraints = core.constraints_for(member, source, constraints_path, read.utterance)
-    made = synthesize(member, source, read, settings, constraints, head=head, source_where=str(source_path),
-                      where=str(phones_path or audio))
+    made = core.synthesize_utterance(member, source, read, settings, constraints, head=head,
+                                     source_where=str(source_path), where=str(phones_path or audio))
     t0 = time.perf_counter()
     input_records = records()
     hash_wait_s = time.perf_counter() - t0
     t0 = time.perf_counter()
-    write(made, out, input_records, overwrite=overwrite)
+    core.write_motion(made, out, input_records, overwrite=overwrite)
     write_s = time.perf_counter() - t0
     summary = made.summary
     return SynthesizeResult(member.name, summary.phones, summary.frames, dict(summary.unseen),
@@ -109,44 +107,3 @@ def run(source_path: Path, out: Path, settings: SynthesizeSettings | MethodSetti
 def method_settings(settings: SynthesizeSettings | MethodSettings) -> MethodSettings:
     """``settings`` as the :class:`MethodSettings` (``[synthesize]`` alone: the packaged defaults for the rest)."""
     return MethodSettings.packaged(synthesize=settings) if isinstance(settings, SynthesizeSettings) else settings
-
-
-@dataclass
-class Synthesized:
-    """A motion made and what its artifact records.
-
-    motion: the :class:`~facesynth.model.motion.Motion` (with its search path and provenance).
-    summary: what the method reports about it.
-    config: the JSON its artifact records as ``config`` (:func:`core.recorded_config`).
-    """
-
-    motion: Motion
-    summary: SynthesisSummary
-    config: str
-
-
-def synthesize(member: Method, source, read: core.UtteranceInput, settings: MethodSettings,
-               constraints: dict[int, int] | None = None, *, head: HeadMotion | None = None,
-               source_where: str = "the source", where: str = "the utterance") -> Synthesized:
-    """The core of ``synthesize``: ``member``'s motion of the utterance ``read`` from ``source`` (its
-    database or fitted model, read), after the shared checks (:func:`core.synthesize`), with ``head``'s
-    head motion instead of the source's when given. Messages name ``source_where`` and ``where``."""
-    result = core.synthesize(member, source, read.utterance, settings, constraints, source_where=source_where,
-                             where=where, audio=read.audio)
-    motion = result.motion
-    if head is not None:
-        motion.head_rotation, motion.head_translation = head.at(np.arange(len(motion.markers)) / motion.fps)
-    return Synthesized(motion, result.summary, core.recorded_config(member, settings, read.audio is not None))
-
-
-def write(made: Synthesized, out: Path, records: list[dict], *, overwrite: bool = False) -> None:
-    """Write the ``motion`` artifact of ``made`` at ``out``, recording ``records`` (the inputs'
-    :func:`~facesynth.model.artifacts.input_record`, in :func:`recorded_inputs`' order)."""
-    made.motion.write(out, config=made.config, records=records, overwrite=overwrite)
-
-
-def recorded_inputs(source: Path | None, phones: Path | None = None, emotions: Path | None = None,
-                    constraints: Path | None = None, audio: Path | None = None,
-                    head_motion: Path | None = None) -> list[Path]:
-    """The files a synthesized motion records as its inputs, in this order; the ones not given are left out."""
-    return [Path(p) for p in (source, phones, emotions, constraints, audio, head_motion) if p is not None]

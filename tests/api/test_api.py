@@ -1,5 +1,5 @@
 """The public Python API (``facesynth.api``, offered by ``import facesynth``): its names, its
-cheap import, one path with the command line (the command and the API call the same stage steps
+cheap import, one path with the command line (the command and the API call the same domain steps
 and write the same bytes for the same inputs), objects made in memory, and its errors."""
 
 from __future__ import annotations
@@ -20,9 +20,9 @@ import facesynth
 from facesynth import api
 from facesynth.base.errors import FacesynthError
 from facesynth.cli import main
-from facesynth.stages import export as export_stage
-from facesynth.stages import solve as solve_stage
-from facesynth.stages import synthesize as synthesize_stage
+from facesynth.domain.exports import format as exporting
+from facesynth.domain.methods import core
+from facesynth.domain.retarget import facial_solve
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -222,7 +222,7 @@ def test_a_motion_exports_from_memory_as_from_its_file(held_out_synthesized, tmp
 
 
 def test_the_command_and_the_api_go_through_the_same_steps(held_out_synthesized, inputs, monkeypatch, tmp_path):
-    """One path: the command line's synthesize, solve and export call the stage steps the API calls."""
+    """One path: the command line's synthesize, solve and export call the domain steps the API calls."""
     calls: list[str] = []
 
     def spy(module, name):
@@ -233,8 +233,8 @@ def test_the_command_and_the_api_go_through_the_same_steps(held_out_synthesized,
             return real(*args, **kwargs)
         monkeypatch.setattr(module, name, wrapper)
 
-    for module, name in [(synthesize_stage, "synthesize"), (synthesize_stage, "write"), (solve_stage, "solve"),
-                         (solve_stage, "write"), (export_stage, "export_format"), (export_stage, "write")]:
+    for module, name in [(core, "synthesize_utterance"), (core, "write_motion"), (facial_solve, "solve"),
+                         (facial_solve, "write"), (exporting, "chosen_format"), (exporting, "export")]:
         spy(module, name)
     cli("synthesize", inputs["db"], "--phonemes", inputs["phones"], "-o", tmp_path / "m.h5")
     cli("solve", tmp_path / "m.h5", "-o", tmp_path / "c.h5")
@@ -244,8 +244,8 @@ def test_the_command_and_the_api_go_through_the_same_steps(held_out_synthesized,
     motion = facesynth.synthesize(inputs["db"], facesynth.utterance_from_phones(inputs["phones"]),
                                   output=tmp_path / "m2.h5")
     facesynth.export(facesynth.solve(motion, output=tmp_path / "c2.h5"), "arkit-csv", tmp_path / "c2.csv")
-    assert calls == by_command == ["synthesize.synthesize", "synthesize.write", "solve.solve", "solve.write",
-                                   "export.export_format", "export.write"]
+    assert calls == by_command == ["core.synthesize_utterance", "core.write_motion", "facial_solve.solve",
+                                   "facial_solve.write", "format.chosen_format", "format.export"]
 
 
 # --- objects in memory ----------------------------------------------------------------------

@@ -5,7 +5,8 @@ A format is an :class:`ExportFormat` (its own module) registered by one line in
 export`` and the outputs of ``facesynth batch`` both write through :func:`write_export`: the
 format's refusals (what the artifact lacks, what to run first), its optional dependency, its rate,
 the publishing (a file or a folder, renamed into place whole; a glTF's audio beside it, or
-neither) and the files written.
+neither) and the files written. ``facesynth export`` and :func:`facesynth.export` share the steps
+around it: :func:`chosen_format` (the checks made before any work) and :func:`export`.
 """
 
 from __future__ import annotations
@@ -18,11 +19,20 @@ from pathlib import Path
 import numpy as np
 
 from facesynth.base.config import ExportSettings
-from facesynth.base.errors import InputError
-from facesynth.formats.audio import write_wav
-from facesynth.model.artifacts import atomic_folder, atomic_path, publish, published_together, temporary_path
+from facesynth.base.errors import InputError, UsageError
+from facesynth.base.registry import EXPORT_FORMATS
+from facesynth.formats.audio import read_audio, write_wav
+from facesynth.model.artifacts import (
+    atomic_folder,
+    atomic_path,
+    check_output,
+    check_output_folder,
+    publish,
+    published_together,
+    temporary_path,
+)
 
-from .animation import Exportable
+from .animation import Exportable, use_mesh
 
 
 @dataclass(frozen=True)
@@ -129,3 +139,59 @@ def _write_one(fmt: ExportFormat, anim: Exportable, output: Path, options: Expor
     with atomic_path(output, overwrite) as tmp:
         fmt.write(anim, tmp, options, audio_name)
     return [Path(output)]
+
+
+@dataclass(frozen=True)
+class ExportResult:
+    """What ``facesynth export`` wrote.
+
+    frames: frames exported.
+    fps: their rate (frames/s).
+    seconds: the animation's length (s).
+    files: every file written: the output first, then a glTF's audio beside it, or an OBJ
+        sequence's files inside its folder.
+    kind: the kind of artifact exported ('motion', 'meshanim' or 'curves').
+    """
+
+    frames: int
+    fps: float
+    seconds: float
+    files: list[Path]
+    kind: str
+
+
+def chosen_format(fmt: str, output: Path, audio: Path | None = None, overwrite: bool = False) -> ExportFormat:
+    """The registered export format ``fmt``, after the checks made before any work: its optional
+    dependency installed, ``audio`` only for a format that names one (and a WAV that reads), the
+    outputs writable and not clobbered."""
+    if fmt not in EXPORT_FORMATS:
+        raise UsageError(f"unknown format {fmt!r}; choose one of {', '.join(EXPORT_FORMATS.names())}.")
+    form: ExportFormat = EXPORT_FORMATS.get(fmt)
+    form.require()
+    if audio is not None and not form.takes_audio:
+        takes = [e.name for e in EXPORT_FORMATS.entries() if e.load().takes_audio]
+        raise UsageError(f"--audio goes with {' and '.join(takes)} (the other formats carry no audio reference).")
+    if form.folder:
+        check_output_folder(output, form.folder_what, overwrite)
+    else:
+        check_output(output, overwrite)
+    if audio is not None:
+        check_output(audio_path(output), overwrite)
+        read_audio(audio)  # a WAV that cannot be read is refused before anything is written
+    return form
+
+
+def export(form: ExportFormat, anim: Exportable, output: Path, settings: ExportSettings, *, fps: float | None = None,
+          head_motion: bool = False, audio: Path | None = None, mesh: Path | None = None,
+          overwrite: bool = False) -> ExportResult:
+    """What ``facesynth export`` and :func:`facesynth.export` write: ``anim`` (with the faces of ``mesh`` when given) written as ``form``
+    at ``output``, at ``fps`` or the format's rate (:meth:`ExportFormat.rate`)."""
+    if mesh is not None:
+        anim = use_mesh(anim, mesh)
+    form.check(anim, head_motion)
+    rate = fps if fps is not None else form.rate(anim, settings)
+    if not (np.isfinite(rate) and 0 < rate <= 1000):
+        raise UsageError(f"--fps {rate:g} is not a frame rate; give a number of frames per second in (0, 1000].")
+    anim = anim.resampled(rate)
+    files = write_export(form, anim, output, ExportOptions(head_motion, Path(output).stem, audio), overwrite)
+    return ExportResult(anim.n_frames, anim.fps, anim.duration_s, files, anim.kind)

@@ -49,10 +49,11 @@ from facesynth.domain.speech import loudness
 from facesynth.domain.speech.alignment import Alignment
 from facesynth.domain.speech.recognition import align_or_recognize
 from facesynth.formats.audio import read_audio
+from facesynth.model.head_motion import HeadMotion
 from facesynth.model.motion import Motion, Provenance, SearchPath
 from facesynth.model.motiondb import MotionDatabase
 
-from . import Method, MethodSettings, Synthesis
+from . import Method, MethodSettings, Synthesis, SynthesisSummary
 
 log = logging.getLogger(__name__)
 
@@ -174,6 +175,48 @@ def synthesize(method: Method, source, utt: Utterance, settings: MethodSettings,
             log.warning("%s: %s", where, warning)
             result.summary = dataclasses.replace(result.summary, warnings=result.summary.warnings + (warning,))
     return result
+
+
+@dataclass
+class Synthesized:
+    """A motion made and what its artifact records.
+
+    motion: the :class:`~facesynth.model.motion.Motion` (with its search path and provenance).
+    summary: what the method reports about it.
+    config: the JSON its artifact records as ``config`` (:func:`recorded_config`).
+    """
+
+    motion: Motion
+    summary: SynthesisSummary
+    config: str
+
+
+def synthesize_utterance(member: Method, source, read: UtteranceInput, settings: MethodSettings,
+                         constraints: dict[int, int] | None = None, *, head: HeadMotion | None = None,
+                         source_where: str = "the source", where: str = "the utterance") -> Synthesized:
+    """What ``facesynth synthesize`` and :func:`facesynth.synthesize` make: ``member``'s motion of
+    the utterance ``read`` from ``source`` (its database or fitted model, read), after the shared
+    checks (:func:`synthesize`, with the utterance's audio), with ``head``'s head motion instead of
+    the source's when given. Messages name ``source_where`` and ``where``."""
+    result = synthesize(member, source, read.utterance, settings, constraints, source_where=source_where,
+                        where=where, audio=read.audio)
+    motion = result.motion
+    if head is not None:
+        motion.head_rotation, motion.head_translation = head.at(np.arange(len(motion.markers)) / motion.fps)
+    return Synthesized(motion, result.summary, recorded_config(member, settings, read.audio is not None))
+
+
+def write_motion(made: Synthesized, out: Path, records: list[dict], *, overwrite: bool = False) -> None:
+    """Write the ``motion`` artifact of ``made`` at ``out``, recording ``records`` (the inputs'
+    :func:`~facesynth.model.artifacts.input_record`, in :func:`motion_inputs`' order)."""
+    made.motion.write(out, config=made.config, records=records, overwrite=overwrite)
+
+
+def motion_inputs(source: Path | None, phones: Path | None = None, emotions: Path | None = None,
+                  constraints: Path | None = None, audio: Path | None = None,
+                  head_motion: Path | None = None) -> list[Path]:
+    """The files a synthesized motion records as its inputs, in this order; the ones not given are left out."""
+    return [Path(p) for p in (source, phones, emotions, constraints, audio, head_motion) if p is not None]
 
 
 def recorded_config(method: Method, settings: MethodSettings, with_audio: bool) -> str:

@@ -9,6 +9,8 @@
   key-shape weights (Eq. 8 / Huang Eq. 5);
 * :mod:`.solve`: bounded least squares for rig weights: keymorph fitting and the direct per-frame
   facial solve with a temporal smoothness term;
+* :mod:`.facial_solve`: that solve for a motion or a capture's take, the steps ``facesynth
+  solve`` and :func:`facesynth.solve` share;
 * :mod:`.gradients`: deformation-gradient blending of keymorph meshes (Sumner & Popović 2005, Huang
   et al. §3): polar decomposition, rotations blended in log space, one sparse factorization.
 
