@@ -24,13 +24,18 @@ mouth_oh_c``: the two channels that open the jaw in FACEGOOD's rig (unrounded an
 
 Methods, all at 30 frames/s on the take's whole length, no lag (none is searched):
 
-- ``facesynth``: the phones recognised from the audio (see :func:`phones_from_audio`),
-  ``facesynth synthesize --phonemes PHONES --audio TAKE.wav`` on a database built once from the
+- ``facesynth``: ``facesynth synthesize --audio TAKE.wav`` (audio alone: the phones recognised
+  inside, the same phones :func:`phones_from_audio` finds) on a database built once from the
   built-in actress (``small`` preset, seed 0, cached in ``--work``), then ``facesynth solve``
-  onto the built-in rig: facesynth as it ships, the mouth opening with the voice's loudness too
-  (``synthesize.loudness_weight``). Mouth opening = its inner-lip gap (``evaluate.lip_markers``);
-  channels = the solve's curves.
-- ``facesynth_phones``: the same from the phones alone (no ``--audio``): what the loudness adds.
+  onto the built-in rig: facesynth as it ships for audio alone, the mouth taking the voice's
+  articulation (``synthesize.voice_recognized``, the packaged articulation model). Mouth
+  opening = its inner-lip gap (``evaluate.lip_markers``); channels = the solve's curves.
+- ``facesynth_loudness``: ``synthesize --phonemes PHONES --audio TAKE.wav``, the same phones
+  given as a file: the voice's loudness alone moves the mouth (``synthesize.voice_given``), as
+  audio alone did before the articulation model.
+- ``facesynth_phones``: the same from the phones alone (no ``--audio``).
+- ``voice``: the packaged articulation model's own curves from the audio (fitted on
+  1114_2_01..03, so fair on the other takes only): the voice alone, no phones, no motion.
 - ``facesynth_before`` (with ``--before-work``): the same from the database of an earlier run
   (e.g. the actress before calibration), so that the two are paired on the same phones.
 - ``coarticulation``: the same chain with ``synthesize --method coarticulation`` (the
@@ -100,8 +105,11 @@ TABLE = Path(__file__).resolve().parent / "data" / "facegood_arkit.tsv"
 #: The real mouth opening: FACEGOOD's two jaw-opening channels (see the module docstring).
 REAL_OPENING = ("mouth_stretch_c", "mouth_oh_c")
 CHANNELS = ("opening", "jawOpen", "mouthClose", "mouthFunnel", "mouthPucker", "mouthPress")
-METHODS = ("facesynth", "facesynth_phones", "facesynth_before", "coarticulation", "coarticulation_phones",
-           "actress_mean", "openfacefx", "energy", "phone_mean")
+METHODS = ("facesynth", "facesynth_loudness", "facesynth_phones", "facesynth_before", "coarticulation",
+           "coarticulation_phones", "actress_mean", "openfacefx", "voice", "energy", "phone_mean")
+#: The packaged articulation model (``synthesize.articulation_model`` empty), whose curves are the
+#: ``voice`` method.
+ARTICULATION_MODEL = Path(__file__).resolve().parents[1] / "facesynth" / "data" / "articulation.h5"
 #: The rig shapes (built-in rig, ICT names) behind each channel of the facial solve.
 RIG_SHAPES = {"jawOpen": ("jawOpen",), "mouthClose": ("mouthClose",), "mouthFunnel": ("mouthFunnel",),
               "mouthPucker": ("mouthPucker",), "mouthPress": ("mouthPress_L", "mouthPress_R")}
@@ -304,27 +312,30 @@ def build_database(work: Path, corpus_config: Path | None = None) -> Path:
     return db
 
 
-def facesynth_method(db: Path, phones: Path, folder: Path, n: int, lip_markers, method: str = "dp",
+def facesynth_method(db: Path, phones: Path | None, folder: Path, n: int, lip_markers, method: str = "dp",
                      audio: Path | None = None, loudness_weight: float | None = None,
                      solve: bool = True) -> dict[str, np.ndarray]:
     """facesynth's channels (n,) for a take: synthesize with ``method`` from ``db`` (the database,
-    or the method's fitted model) on the recognised ``phones``, with the take's ``audio`` (its
-    loudness moves the mouth too: ``synthesize.loudness_weight``, or ``loudness_weight`` where
-    given) or without it (phones alone), solve onto the built-in rig (unless ``solve`` is False:
-    the mouth opening alone), read back."""
+    or the method's fitted model) on the recognised ``phones`` given as a file, with the take's
+    ``audio`` (the voice moves the mouth too, by ``synthesize.voice_given``: its loudness,
+    ``synthesize.loudness_weight`` or ``loudness_weight`` where given) or without it (phones
+    alone); or, ``phones`` None, from the audio alone (``synthesize --audio``: the phones
+    recognised inside, the voice's articulation by ``synthesize.voice_recognized``); solve onto
+    the built-in rig (unless ``solve`` is False: the mouth opening alone), read back."""
     from facesynth.domain.evaluation.held_out import lip_gaps
     from facesynth.model.curves import RigCurves
     from facesynth.model.motion import Motion
 
     tag = (("" if method == "dp" else f".{method}") + ("" if audio is not None else ".phones")
-           + ("" if loudness_weight is None else f".w{loudness_weight:g}"))
+           + ("" if phones is not None else ".audio") + ("" if loudness_weight is None else f".w{loudness_weight:g}"))
     motion, curves = folder / f"motion{tag}.h5", folder / f"curves{tag}.h5"
-    given = ["--phonemes", str(phones)] + (["--audio", str(audio)] if audio is not None else [])
+    given = (["--phonemes", str(phones)] if phones is not None else []) + (["--audio", str(audio)] if audio is not None else [])
     if loudness_weight is not None:
         given += ["--set", f"synthesize.loudness_weight={loudness_weight:g}"]
     # The cached motion holds only for the phones, audio, options and [synthesize] settings it was made from.
-    made_from = [phones.read_bytes(), audio.read_bytes() if audio is not None else b"", " ".join(given).encode(),
-                 settings_json(Config.load().settings("synthesize")).encode()]
+    made_from = [phones.read_bytes() if phones is not None else b"", audio.read_bytes() if audio is not None else b"",
+                 " ".join(given).encode(), settings_json(Config.load().settings("synthesize")).encode(),
+                 settings_json(Config.load().settings("align")).encode(), ARTICULATION_MODEL.read_bytes()]
     digest = hashlib.sha256(b"\0".join(made_from)).hexdigest()
     stamp = folder / f"inputs{tag}.sha256"
     if not stamp.exists() or stamp.read_text() != digest:
@@ -345,6 +356,18 @@ def facesynth_method(db: Path, phones: Path, folder: Path, n: int, lip_markers, 
         for channel, shapes in RIG_SHAPES.items():
             out[channel] = c.weights[:, [names.index(s) for s in shapes]].mean(1)
     return {k: fit_length(v, n) for k, v in out.items()}
+
+
+def voice_method(samples: np.ndarray, rate: int, n: int) -> dict[str, np.ndarray]:
+    """The packaged articulation model's own curves (n,) for a take's audio (opening, jawOpen,
+    mouthFunnel, mouthPucker): what the voice alone says, before any motion takes it in. Fitted on
+    1114_2_01..03: fair only on the other takes."""
+    from facesynth.domain.speech import articulation
+    from facesynth.model.articulation import ArticulationModel
+
+    model = ArticulationModel.read(ARTICULATION_MODEL)
+    pred = articulation.predict(model, samples, rate, n, FPS)
+    return {c: pred[:, model.column(c)] for c in ("opening", "jawOpen", "mouthFunnel", "mouthPucker")}
 
 
 def actress_mean_method(database, segs: list[Segment], n: int, lip_markers) -> dict[str, np.ndarray]:
@@ -483,8 +506,10 @@ def main(argv=None) -> dict:
         segs, source = phones_from_audio(wav, folder / "phones.TextGrid", align_settings)
         sources.add(source)
         phones = folder / "phones.TextGrid"
-        methods = {"facesynth": facesynth_method(db, phones, folder, n, lip_markers, audio=wav),
+        methods = {"facesynth": facesynth_method(db, None, folder, n, lip_markers, audio=wav),
+                   "facesynth_loudness": facesynth_method(db, phones, folder, n, lip_markers, audio=wav),
                    "facesynth_phones": facesynth_method(db, phones, folder, n, lip_markers),
+                   "voice": voice_method(samples, rate, n),
                    "coarticulation": facesynth_method(coarticulation, phones, folder, n, lip_markers, "coarticulation",
                                                       audio=wav),
                    "coarticulation_phones": facesynth_method(coarticulation, phones, folder, n, lip_markers,

@@ -7,7 +7,8 @@ FACEGOOD (one speaker, Mandarin, ARKit-like curves at 30 frames/s; ``--data`` la
 (the only takes any choice of the model was made on, by leave-one-take-out within them), scored on
 the fair takes 1114_2_04, 1114_2_05, 1114_3_15 (used for no choice, as in docs/real-speech.md).
 The targets are the benchmark's own real channels (``real_speech_lipsync.real_curves``): the mouth
-opening, jawOpen, mouthFunnel, mouthPucker. Scores are that benchmark's: Pearson r per 10 s
+opening, jawOpen, mouthFunnel, mouthPucker, and two closure scores made of the opening (every
+closure, and the closings within speech). Scores are that benchmark's: Pearson r per 10 s
 window, the mean over windows with 95% bootstrap intervals over windows and over takes (2000
 resamples, seed 0), and paired differences against the loudness envelope alone (``energy``,
 :func:`facesynth.domain.speech.loudness.envelope` smoothed over 0.1 s, as in that benchmark).
@@ -19,7 +20,8 @@ other six; the fitting never sees the take it scores.
         > benchmarks/voice_articulation.json
 
 ``--model-out`` writes the model fitted on the calibration takes as an ``articulation`` artifact
-(the one writer of that kind so far). Takes seconds (the features of about 12 minutes of audio,
+(the one writer of that kind so far; ``facesynth/data/articulation.h5``, the packaged model, is
+its output). Takes seconds (the features of about 12 minutes of audio,
 and eight ridge fits).
 """
 
@@ -33,6 +35,7 @@ from pathlib import Path
 
 import numpy as np
 
+from facesynth.base.hashing import sha256_of
 from facesynth.domain.evaluation.bootstrap import interval, paired_difference, resamples
 from facesynth.domain.speech import articulation as A
 from facesynth.domain.speech.loudness import envelope
@@ -46,7 +49,10 @@ FPS = bench.FPS
 CALIBRATION = ("1114_2_01", "1114_2_02", "1114_2_03")
 FAIR = ("1114_2_04", "1114_2_05", "1114_3_15")
 ALL = ("1114_2_01", "1114_2_02", "1114_2_03", "1114_2_04", "1114_2_05", "1114_3_15", "1114_3_16")
-TARGETS = ("opening", "jawOpen", "mouthFunnel", "mouthPucker")
+#: The model's targets: the real channels, and the closure scores made of the real opening
+#: (:func:`facesynth.domain.speech.articulation.closure_target`: every closure, and the closings
+#: within speech), which the fusion's closures come from.
+TARGETS = ("opening", "closure", "closing", "jawOpen", "mouthFunnel", "mouthPucker")
 #: The channels the loudness envelope alone is scored on (it says nothing of rounding).
 ENERGY_CHANNELS = ("opening", "jawOpen")
 
@@ -60,6 +66,8 @@ def load_take(data: Path, take: str, names: list[str], table: dict) -> dict:
     samples, rate = read_audio(wav)
     n = min(len(values), int(np.floor(len(samples) / rate * FPS)))
     real = {k: v[:n] for k, v in bench.real_curves(values, names, table).items()}
+    real["closure"] = A.closure_target(real["opening"], FPS)
+    real["closing"] = A.closure_target(real["opening"], FPS, kind="closing")
     return {"take": take, "samples": samples, "rate": rate, "n": n, "real": real,
             "raw": A.frame_features(samples, rate), "paths": [wav, curves]}
 
@@ -136,10 +144,13 @@ def main(argv=None) -> dict:
                  args.window_s, args.resamples, args.seed)
     fair.update(fitted_on=list(CALIBRATION), scored_on=list(FAIR), look_ahead_s=round(A.model_look_ahead_s(model), 4))
     if args.model_out:
+        # the takes it was fitted on by name and digest, not by path: the packaged model names no
+        # folder of the machine that fitted it
         settings = {"offsets_s": list(A.DEFAULT_OFFSETS_S), "pool": model.pool, "alpha": model.alpha,
-                    "normalization": model.normalization, "tau_s": model.tau_s, "expand": model.expand}
-        model.write(args.model_out, config=json.dumps(settings), inputs=[p for t in CALIBRATION for p in takes[t]["paths"]],
-                    overwrite=True)
+                    "normalization": model.normalization, "tau_s": model.tau_s, "expand": model.expand,
+                    "fitted_on": {f"FACEGOOD/{p.parent.name}/{p.name}": sha256_of(p)
+                                  for t in CALIBRATION for p in takes[t]["paths"]}}
+        model.write(args.model_out, config=json.dumps(settings, sort_keys=True), inputs=[], overwrite=True)
 
     loto = score([(takes[held], methods_of(fit_on([takes[t] for t in ALL if t != held]), takes[held],
                                            args.energy_smooth_s)) for held in ALL],

@@ -248,6 +248,26 @@ class SynthesizeSettings:
                                           "and the ease of its weight around pinned_phones", unit="s", gt=0, le=1)
     loudness_lip_markers: tuple[str, ...] = setting("not in the paper: upper and lower inner-lip markers whose "
                                                     "gap the loudness moves", min_items=2, max_items=2)
+    voice_recognized: str = setting("not in the paper: with the phones recognised from the audio (audio alone), what "
+                                    "the voice does to the mouth: its articulation (the acoustic articulation model), "
+                                    "its loudness alone, or nothing", choices=("articulation", "loudness", "off"))
+    voice_given: str = setting("not in the paper: the same with the phones given or aligned to a transcript",
+                               choices=("articulation", "loudness", "off"))
+    articulation_model: str = setting("not in the paper: the articulation artifact the voice's articulation comes "
+                                      "from; empty: the packaged model (fitted on FACEGOOD's calibration takes)")
+    voice_weight: float = setting("not in the paper: the share of the mouth opening the voice's articulation takes "
+                                  "where the voice is clear; 0: the phones' opening", ge=0, le=1)
+    voice_rounding_weight: float = setting("not in the paper: the share of the lips' rounding (mouthFunnel, "
+                                           "mouthPucker) the voice's articulation takes; 0: the phones' rounding",
+                                           ge=0, le=1)
+    voice_closure_threshold: float = setting("not in the paper: a peak of the articulation model's closure score "
+                                             "at least this high closes the lips; above 1: never", ge=0)
+    voice_closing_threshold: float = setting("not in the paper: a closing of the method's own motion is kept where "
+                                             "the model's closing score reaches this near it; above 1: none kept",
+                                             ge=0)
+    voice_pin_recognized: bool = setting("not in the paper: with the phones recognised, whether pinned_phones keep "
+                                         "their closure against the voice's articulation (recognised /p b m/ are "
+                                         "often wrong)")
 
 
 @dataclass(frozen=True)
@@ -511,6 +531,10 @@ class StreamSettings:
                                   "that falls further behind is disconnected", unit="messages", ge=1, le=100000)
     max_message_bytes: int = setting("not in the papers: largest WebSocket message a client may send",
                                      unit="bytes", ge=1024, le=1 << 26)
+    voice: str = setting("not in the papers: with the phones recognised from the audio, frames from the voice's "
+                         "articulation as soon as its audio (and the model's look-ahead) arrives (articulation), "
+                         "or from the phones once the recogniser settles them (off: the DP's captured motion, "
+                         "about a second later)", choices=("articulation", "off"))
 
 
 @dataclass(frozen=True)

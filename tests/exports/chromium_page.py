@@ -20,16 +20,19 @@ CHROMIUM = shutil.which("chromium")
 
 
 class ChromiumPage:
-    """``url`` in a headless Chromium with a ``width`` x ``height`` viewport (SwiftShader WebGL);
-    a context manager that ends the browser it started."""
+    """``url`` in a headless Chromium with a ``width`` x ``height`` viewport (SwiftShader WebGL) and
+    any further command-line ``flags`` (a fake microphone, say); a context manager that ends the
+    browser it started."""
 
-    def __init__(self, url: str, profile: Path, width: int = 900, height: int = 800, timeout_s: float = 60.0):
+    def __init__(self, url: str, profile: Path, width: int = 900, height: int = 800, timeout_s: float = 60.0,
+                 flags: tuple[str, ...] = ()):
         from websockets.sync.client import connect
 
         cmd = [CHROMIUM, "--headless", "--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
                "--disable-background-networking", "--disable-component-update", "--disable-sync", "--no-first-run",
                "--hide-scrollbars", f"--window-size={width},{height}", "--force-device-scale-factor=1",
-               f"--user-data-dir={profile}", "--remote-debugging-address=127.0.0.1", "--remote-debugging-port=0", url]
+               f"--user-data-dir={profile}", "--remote-debugging-address=127.0.0.1", "--remote-debugging-port=0",
+               *flags, url]
         (Path(profile) / "DevToolsActivePort").unlink(missing_ok=True)  # a stale one from an earlier browser
         self.browser = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         self.ids = itertools.count(1)

@@ -1,11 +1,13 @@
 """The player's live mode as a person uses it: ``facesynth player --live`` writes a page that holds
 the built-in rig with its 52 ARKit blendshapes; opened in headless Chromium (where the Debian
-package is installed) against a stream server on 127.0.0.1, it sends its speech in real time,
-shows the frames as they arrive and opens the mouth."""
+package is installed) against a stream server on 127.0.0.1, it sends its speech in real time (a
+file, or a microphone: Chromium's fake capture device playing the sample voice), shows the frames
+as they arrive, opens the mouth and measures the latency."""
 
 import asyncio
 import itertools
 import json
+import math
 import re
 import shutil
 import subprocess
@@ -13,9 +15,11 @@ import threading
 import time
 import urllib.request
 import wave
+from pathlib import Path
 
 import numpy as np
 import pytest
+from chromium_page import ChromiumPage
 from click.testing import CliRunner
 
 from facesynth.base.config import Config
@@ -28,6 +32,33 @@ from facesynth.model.motiondb import MotionDatabase
 
 CHROMIUM = shutil.which("chromium")
 pytest.importorskip("websockets", reason="the stream server needs the websockets package")
+needs_chromium = pytest.mark.skipif(CHROMIUM is None, reason="headless Chromium (Debian package 'chromium') is not installed")
+
+
+@pytest.fixture(scope="module")
+def stream_url(tiny_db):
+    """A ``facesynth stream --serve 127.0.0.1:0`` server on the tiny database, in a thread of
+    this process (each page that connects is its own session); its WebSocket URL."""
+    config = Config.load()
+    model = LiveModel(MotionDatabase.read(tiny_db), config.settings("synthesize"), config.settings("stream"),
+                      config.settings("solve"))
+    loop = asyncio.new_event_loop()
+    server = StreamServer(model, config.settings("align"), "127.0.0.1", 0)
+    loop.run_until_complete(server.start())
+    thread = threading.Thread(target=loop.run_forever, daemon=True)
+    thread.start()
+    try:
+        yield f"ws://127.0.0.1:{server.port}"
+    finally:
+        asyncio.run_coroutine_threadsafe(server.stop(), loop).result(10)
+        loop.call_soon_threadsafe(loop.stop)
+        thread.join(10)
+        loop.close()
+
+
+def _dashed(dataset: dict) -> dict:
+    """``document.body.dataset``'s keys as the page's HTML names them (``liveReceived`` -> ``live-received``)."""
+    return {re.sub(r"[A-Z]", lambda m: "-" + m.group(0).lower(), k): v for k, v in dataset.items()}
 
 
 def _open_until_done(url: str, tmp_path, deadline_s: float) -> dict:
@@ -58,8 +89,7 @@ def _open_until_done(url: str, tmp_path, deadline_s: float) -> dict:
                 reply = json.loads(cdp.recv(timeout=10))
                 while reply.get("id") != n:
                     reply = json.loads(cdp.recv(timeout=10))
-                data = json.loads(reply["result"]["result"].get("value") or "{}")
-                body = {re.sub(r"[A-Z]", lambda m: "-" + m.group(0).lower(), k): v for k, v in data.items()}
+                body = _dashed(json.loads(reply["result"]["result"].get("value") or "{}"))
                 if body.get("live-done") == "1" or body.get("errors", "0") != "0" or time.monotonic() - start > deadline_s:
                     return body
                 time.sleep(0.25)
@@ -91,29 +121,15 @@ def test_a_live_page_needs_a_websocket_url_and_no_artifact(tmp_path, tiny_corpus
     assert r.exit_code == 2 and "either an ARTIFACT" in r.output
 
 
-@pytest.mark.skipif(CHROMIUM is None, reason="headless Chromium (Debian package 'chromium') is not installed")
-def test_live_page_in_headless_chromium(tiny_db, tiny_corpus, held_out_take, tmp_path):
+@needs_chromium
+def test_live_page_in_headless_chromium(stream_url, tiny_corpus, held_out_take, tmp_path):
     config = Config.load()
-    model = LiveModel(MotionDatabase.read(tiny_db), config.settings("synthesize"), config.settings("stream"),
-                      config.settings("solve"))
-    loop = asyncio.new_event_loop()
-    server = StreamServer(model, config.settings("align"), "127.0.0.1", 0)
-    loop.run_until_complete(server.start())
-    thread = threading.Thread(target=loop.run_forever, daemon=True)
-    thread.start()
-    try:
-        url = f"ws://127.0.0.1:{server.port}"
-        wav = tiny_corpus / "audio" / f"{held_out_take}.wav"
-        out = tmp_path / "live.html"
-        r = CliRunner().invoke(main, ["player", "--live", url, "--audio", str(wav), "-o", str(out)])
-        assert r.exit_code == 0, r.output
-        seconds = float(re.search(r"([0-9.]+) s of speech", r.output).group(1))
-        body = _open_until_done(out.as_uri() + "#start", tmp_path, deadline_s=seconds + 30)
-    finally:
-        asyncio.run_coroutine_threadsafe(server.stop(), loop).result(10)
-        loop.call_soon_threadsafe(loop.stop)
-        thread.join(10)
-        loop.close()
+    wav = tiny_corpus / "audio" / f"{held_out_take}.wav"
+    out = tmp_path / "live.html"
+    r = CliRunner().invoke(main, ["player", "--live", stream_url, "--audio", str(wav), "-o", str(out)])
+    assert r.exit_code == 0, r.output
+    seconds = float(re.search(r"([0-9.]+) s of speech", r.output).group(1))
+    body = _open_until_done(out.as_uri() + "#start", tmp_path, deadline_s=seconds + 30)
     assert body.get("ready") == "1", body
     assert body["errors"] == "0", body["error-text"]
     frames = int(body["live-received"])
@@ -124,3 +140,123 @@ def test_live_page_in_headless_chromium(tiny_db, tiny_corpus, held_out_take, tmp
     assert int(body["frame"]) == frames - 1 and 5 <= int(body["live-shown"]) <= frames
     assert float(body["jaw-max"]) > 0.2  # the mouth opened on the speech
     assert float(body["jaw"]) < 0.5 * float(body["jaw-max"])  # and closed at its end
+    assert body["live-states"].split(" | ")[:3] == ["connecting", "connected", "streaming (file)"]
+    _check_latency(body, frames)
+
+
+def _check_latency(body: dict, frames: int) -> None:
+    """Every frame's latency was measured, and the page's median, p95 and last are times after
+    the speech they show (finite, positive: a frame cannot come back before its audio went out)."""
+    assert int(body["latency-count"]) == frames
+    median, p95, last = (float(body[f"latency-{k}"]) for k in ("median", "p95", "last"))
+    assert all(math.isfinite(v) and v > 0 for v in (median, p95, last)), body
+    assert median <= p95 < 30_000, body  # (ms; seconds off would be a wrong origin, not a slow server)
+
+
+def _wait(page, done, deadline_s: float, what: str) -> dict:
+    """``page.dataset()`` once ``done(dataset)`` holds, polled; fails after ``deadline_s``."""
+    start = time.monotonic()
+    while True:
+        body = _dashed(page.dataset())
+        if done(body):
+            return body
+        assert time.monotonic() - start < deadline_s and body.get("errors") == "0", f"{what}: {body}"
+        time.sleep(0.2)
+
+
+def _live_page(url: str, tmp_path: Path) -> Path:
+    """A live page for the server at ``url`` with no speech of its own (the microphone's page)."""
+    out = tmp_path / "mic.html"
+    r = CliRunner().invoke(main, ["player", "--live", url, "-o", str(out)])
+    assert r.exit_code == 0, r.output
+    return out
+
+
+def _speak_into_the_microphone(page, seconds: float) -> tuple[dict, float]:
+    """Press the microphone button (a user gesture, as a click is), let the fake device speak for
+    ``seconds`` of captured audio, press it again; the page once the server has sent its end, and
+    the wall-clock seconds the microphone was on."""
+    _wait(page, lambda b: b.get("live") == "connected", 30, "the page did not connect")
+    click = "document.getElementById('livemic').click()"
+    page.call("Runtime.evaluate", expression=click, userGesture=True)
+    on = time.monotonic()
+    _wait(page, lambda b: float(b.get("mic-seconds", 0)) >= seconds and int(b.get("live-received", 0)) > 0,
+          seconds + 30, "no frames came back from the microphone")
+    assert page.evaluate("document.getElementById('livemic').textContent") == "stop microphone"
+    page.call("Runtime.evaluate", expression=click, userGesture=True)
+    wall = time.monotonic() - on
+    body = _wait(page, lambda b: b.get("live-done") == "1", 30, "the stream did not finish")
+    assert page.evaluate("document.getElementById('livemic').textContent") == "microphone"
+    assert page.evaluate("document.getElementById('livemic').disabled") is True  # one stream a connection
+    return body, wall
+
+
+def _fake_microphone(wav: Path) -> tuple[str, ...]:
+    """Chromium's flags for a microphone that is granted without asking and plays ``wav``."""
+    return ("--use-fake-ui-for-media-stream", "--use-fake-device-for-media-stream",
+            f"--use-file-for-fake-audio-capture={wav}")
+
+
+def _check_microphone_stream(body: dict, seconds_on: float) -> None:
+    frames, fps = int(body["live-received"]), Config.load().settings("stream").fps
+    assert body["errors"] == "0", body["error-text"]
+    states = body["live-states"].split(" | ")
+    assert states[:3] == ["connecting", "connected", "streaming (microphone)"], states
+    # after the second press the server was told the end and answered with its own
+    assert states[-2:] == ["finishing", f"finished ({frames} frames)"] and body["live"] == states[-1], states
+    captured = float(body["mic-seconds"])
+    # captured at the speed of speech (16 kHz samples as they came), all of it animated
+    assert 0.5 * seconds_on < captured < seconds_on + 0.5, (captured, seconds_on)
+    assert frames == pytest.approx(captured * fps, abs=3)
+    assert 5 <= int(body["live-shown"]) <= frames
+    assert float(body["jaw-max"]) > 0.2  # the mouth opened on the voice the fake microphone played
+    _check_latency(body, frames)
+
+
+@needs_chromium
+def test_microphone_in_headless_chromium(stream_url, tiny_corpus, held_out_take, tmp_path):
+    # the fake microphone plays the sample voice's held-out take (16 kHz mono, looped): deterministic speech
+    wav = tiny_corpus / "audio" / f"{held_out_take}.wav"
+    with ChromiumPage(_live_page(stream_url, tmp_path).as_uri(), tmp_path / "profile", flags=_fake_microphone(wav)) as page:
+        body, seconds_on = _speak_into_the_microphone(page, 3.0)
+    assert body["mic-capture"] == "AudioWorklet at 16000 Hz"  # the browser resampled the microphone
+    _check_microphone_stream(body, seconds_on)
+
+
+@needs_chromium
+def test_microphone_without_audio_worklet_or_16_khz_context(stream_url, tiny_corpus, held_out_take, tmp_path):
+    """An older browser's path: no AudioWorklet (a ScriptProcessorNode captures) and a context at
+    the device's rate (the page's own resampler makes the 16 kHz)."""
+    wav = tiny_corpus / "audio" / f"{held_out_take}.wav"
+    with ChromiumPage(_live_page(stream_url, tmp_path).as_uri(), tmp_path / "profile", flags=_fake_microphone(wav)) as page:
+        page.evaluate("""{
+            const Base = window.AudioContext;
+            window.AudioContext = class extends Base {
+              constructor() { super(); }  // the device's rate, whatever is asked
+              get audioWorklet() { return undefined; }
+            };
+        }""")
+        body, seconds_on = _speak_into_the_microphone(page, 3.0)
+    kind, rate = re.fullmatch(r"(\S+) at (\d+) Hz", body["mic-capture"]).groups()
+    assert kind == "ScriptProcessorNode" and int(rate) != 16000, body["mic-capture"]
+    _check_microphone_stream(body, seconds_on)
+
+
+@needs_chromium
+def test_a_refused_or_missing_microphone_says_so(stream_url, tmp_path):
+    press = "document.getElementById('livemic').click()"
+    # a device, but the permission prompt is answered no (as a person who refuses it)
+    flags = ("--use-fake-device-for-media-stream", "--deny-permission-prompts")
+    with ChromiumPage(_live_page(stream_url, tmp_path).as_uri(), tmp_path / "profile", flags=flags) as page:
+        _wait(page, lambda b: b.get("live") == "connected", 30, "the page did not connect")
+        page.call("Runtime.evaluate", expression=press, userGesture=True)
+        body = _wait(page, lambda b: b["live"] != "connected", 30, "no answer to the microphone button")
+        assert body["live"] == "microphone refused: allow this page to use the microphone and press microphone again."
+        # a browser that gives the page no getUserMedia at all
+        page.evaluate("Object.defineProperty(navigator, 'mediaDevices', { value: undefined, configurable: true })")
+        page.call("Runtime.evaluate", expression=press, userGesture=True)
+        body = _wait(page, lambda b: b["live"].startswith("no microphone"), 30, "no answer without getUserMedia")
+        assert body["live"].count(".") == 1 and body["live"].endswith(".")  # one sentence
+        assert page.evaluate("document.getElementById('livemic').textContent") == "microphone"
+    assert body["errors"] == "0" and body["error-text"] == "", body  # said in the state line, not thrown
+    assert body["live-received"] == "0" and "latency-count" not in body

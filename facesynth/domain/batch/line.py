@@ -381,7 +381,7 @@ def _do_line(line: Line, job: Job, emotion: str, audio: Path, key: dict, outputs
     constraints = core.constraints_for(member, source, line.constraints, utt)
     synthesis = core.synthesize(member, source, utt, job.settings, constraints, prepared=prepared,
                                 source_where=str(job.db), where=str(line.alignment or audio),
-                                audio=(samples, rate))
+                                audio=(samples, rate), recognized=read.recognized)
     motion = synthesis.motion
     result.warnings += list(synthesis.summary.warnings)
     result.synthesize_s = time.perf_counter() - t0 - result.load_s

@@ -58,6 +58,7 @@ from facesynth.base.config import SolveSettings, StreamSettings, SynthesizeSetti
 from facesynth.base.errors import InputError
 from facesynth.base.phonemes import PAU
 from facesynth.domain.methods import trajectory as trajectory_method
+from facesynth.domain.methods.voice import articulation_model
 from facesynth.domain.postprocess.concatenation import downsample_sources
 from facesynth.domain.retarget.solve import solve_curves
 from facesynth.domain.rig.face import load_face_rig
@@ -70,6 +71,13 @@ from facesynth.domain.search.pairs import transition_costs
 from facesynth.domain.search.synthesis import render_path
 from facesynth.model.motiondb import MotionDatabase
 from facesynth.model.trajectory import TrajectoryModel
+
+#: The rig shapes that speak: the voice sets jawOpen, mouthFunnel and mouthPucker, and an emotion's
+#: pose (:meth:`LiveModel.emotion_pose`) leaves these at 0, keeping its smile, frown and stretch.
+SPEECH_SHAPES = ("jawOpen", "jawForward", "jawLeft", "jawRight", "mouthClose", "mouthFunnel", "mouthPucker",
+                 "mouthLeft", "mouthRight", "mouthLowerDown_L", "mouthLowerDown_R", "mouthUpperUp_L", "mouthUpperUp_R",
+                 "mouthPress_L", "mouthPress_R", "mouthRollLower", "mouthRollUpper", "mouthShrugLower",
+                 "mouthShrugUpper")
 
 
 @dataclass
@@ -143,11 +151,15 @@ class LiveModel:
             rest_coeffs = db.model.project(db.reference[None])[0]
             #: (M, 3) mm: the rest pose as the PCA model reconstructs it (where silences settle)
             self.rest_markers = db.model.reconstruct(rest_coeffs[None])[0].astype(np.float32)
-        rig = builtin_rig()
+        rig = self.rig = builtin_rig()
         self.face = load_face_rig()
         self.marker_map = marker_map(rig, self.marker_names, self.reference,
                                      "the trajectory model" if self.db is None else "the motion database")
         self.basis = rig.deltas[:, self.marker_map.vertices]
+        #: the articulation model frames come from when the phones would be recognised
+        #: (``stream.voice = "articulation"``, :mod:`facesynth.domain.live.voice`), else None
+        self.voice_model = articulation_model(synth.articulation_model) if stream.voice == "articulation" else None
+        self._poses: dict[str, np.ndarray] = {}
 
     @property
     def arkit_names(self) -> tuple[str, ...]:
@@ -164,6 +176,34 @@ class LiveModel:
                                iterations=self.solve_settings.iterations, tolerance=self.solve_settings.tolerance,
                                initial=None if previous is None else previous[1])
         return w if previous is None else w[1:]
+
+    def markers_of(self, weights: np.ndarray) -> np.ndarray:
+        """(T, M, 3) float32 mm markers of rig weights (T, E): the reference, the bound markers moved
+        by the rig's shapes at their vertices, carried back into the motion's frame and units."""
+        mm = self.marker_map
+        rig_disp = np.tensordot(np.asarray(weights, np.float64), self.basis, axes=(1, 0))  # (T, B, 3) rig units
+        out = np.repeat(np.asarray(self.reference, np.float64)[None], len(rig_disp), 0)
+        out[:, mm.columns] += rig_disp @ mm.rotation / mm.scale
+        return out.astype(np.float32)
+
+    def emotion_pose(self, emotion: str) -> np.ndarray:
+        """(E,) rig weights of ``emotion``'s pose without the speech: the mean of the database's
+        captured frames of that emotion (the rest pose for a trajectory model) solved onto the
+        rig, its speech shapes (:data:`SPEECH_SHAPES`) at 0. Computed once per emotion."""
+        if emotion not in self._poses:
+            markers = self.rest_markers
+            db = self.db
+            if db is not None:
+                frames = [np.arange(a, a + n) for a, n, e in zip(db.nodes.frame_start, db.nodes.frame_count,
+                                                                   db.nodes.emotion) if e == emotion]
+                if frames:
+                    mean = np.asarray(db.coeffs)[np.concatenate(frames)].mean(0)
+                    markers = db.model.reconstruct(mean[None])[0].astype(np.float32)
+            weights = self.solve(np.asarray(markers, np.float32)[None], None)[0]
+            names = list(self.rig.shape_names)
+            weights[[names.index(n) for n in SPEECH_SHAPES if n in names]] = 0.0
+            self._poses[emotion] = weights
+        return self._poses[emotion]
 
     def arkit(self, weights: np.ndarray) -> np.ndarray:
         """(T, 52) ARKit weights in [0, 1] (:attr:`arkit_names` order) for rig weights (T, E)."""

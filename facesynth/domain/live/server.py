@@ -97,7 +97,7 @@ def run_pipe(model: LiveModel, align: AlignSettings, source: BinaryIO, write: Ca
             break
         out(session.audio(data))
     out(session.end())
-    return session.synth.sent
+    return session.sent
 
 
 class StreamServer:

@@ -25,9 +25,11 @@ import numpy as np
 from facesynth.base.config import AlignSettings
 from facesynth.base.errors import InputError
 from facesynth.base.phonemes import PAU
+from facesynth.domain.speech.articulation import model_look_ahead_s
 
 from .core import Frame, LiveModel, LiveSynthesizer
 from .phones import SAMPLE_RATE, PhoneRecognizer, given_phones
+from .voice import VoiceFrames
 
 #: Decimals of the weights and markers in a frame message.
 DECIMALS = 4
@@ -42,6 +44,7 @@ class Session:
         self.mode = "recognize"
         self.markers = False
         self.recognizer: PhoneRecognizer | None = None
+        self.voice: VoiceFrames | None = None  # frames from the voice (recognize mode, stream.voice)
         self.samples = 0
         self._odd = b""
         self.started = False
@@ -51,10 +54,18 @@ class Session:
         """Seconds of audio received."""
         return self.samples / SAMPLE_RATE
 
+    @property
+    def sent(self) -> int:
+        """Frames sent so far."""
+        return self.voice.sent if self.voice is not None else self.synth.sent
+
     def hello(self) -> dict:
         """The first message a client gets: what the frames hold."""
+        voice = self.model.voice_model
         return {"type": "hello", "fps": self.model.stream.fps, "method": self.model.stream.method,
                 "lookahead_phones": self.model.stream.lookahead_phones, "sample_rate": SAMPLE_RATE,
+                "voice": self.model.stream.voice,
+                "voice_lookahead_s": None if voice is None else round(model_look_ahead_s(voice), 4),
                 "arkit_names": list(self.model.arkit_names), "marker_names": list(self.model.marker_names),
                 "emotions": self.model.emotions}
 
@@ -67,6 +78,11 @@ class Session:
         whole = len(data) - len(data) % 2
         self._odd = data[whole:]
         self.samples += whole // 2
+        if self.mode == "recognize" and self.model.voice_model is not None:
+            if self.voice is None:
+                self.voice = VoiceFrames(self.model, self.model.voice_model, self.model.synth, self.synth.emotion)
+            samples = np.frombuffer(data[:whole], "<i2").astype(np.float32) / 32768.0
+            return self._frames(self.voice.push(samples, self.time))
         if self.mode == "recognize":
             if self.recognizer is None:
                 self.recognizer = PhoneRecognizer(self.align, self.model.stream.recognition_hold,
@@ -102,6 +118,8 @@ class Session:
             return []
         if kind == "emotion":
             self.synth.set_emotion(str(message.get("name")))
+            if self.voice is not None:
+                self.voice.set_emotion(self.synth.emotion)
             return []
         if kind == "phones":
             if self.mode != "given":
@@ -120,6 +138,10 @@ class Session:
         """End of the stream: the remaining phones and frames."""
         if self.synth.finished:
             return []
+        if self.voice is not None or (self.mode == "recognize" and self.model.voice_model is not None):
+            self.synth.finished = True
+            frames = self.voice.finish(self.time) if self.voice is not None else []
+            return self._frames(frames) + [{"type": "end", "frames": self.sent}]
         if self.recognizer is not None:
             for phone in self.recognizer.end():
                 self.synth.add_phone(*phone)

@@ -80,7 +80,9 @@ class SynthesisSummary:
     frames: frames of the motion at the output rate.
     unseen: what the source has nothing of (a phone, or '/aa/ in sad' for a (phone, emotion)
         pair) -> what covered it.
-    warnings: sentences for the user (e.g. the loudness step could not move the mouth).
+    warnings: sentences for the user (e.g. the voice could not move the mouth).
+    voice: what the utterance's voice did to the mouth (:mod:`.voice`): ``articulation``,
+        ``loudness``, or ``off`` (no audio, or the step was off or could not run).
     cost, joins, device: the searches' path cost (Eq. 4), joins between nodes not captured one
         after the other, and where the search ran; None for the other methods.
     energy, lam: the trajectory method's Eq. 6 energy and its smoothness weight lambda; None for
@@ -102,6 +104,7 @@ class SynthesisSummary:
     lam: float | None = None
     fallbacks: dict[str, str] = field(default_factory=dict)
     phases: dict[str, float] = field(default_factory=dict)
+    voice: str = "off"
 
 
 @dataclass(frozen=True)

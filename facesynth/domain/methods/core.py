@@ -25,6 +25,7 @@ from __future__ import annotations
 import dataclasses
 import json
 import logging
+import time
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -45,7 +46,6 @@ from facesynth.domain.search.inputs import (
     utterance,
 )
 from facesynth.domain.search.inputs import read_utterance as read_phone_file
-from facesynth.domain.speech import loudness
 from facesynth.domain.speech.alignment import Alignment
 from facesynth.domain.speech.recognition import align_or_recognize
 from facesynth.formats.audio import read_audio
@@ -53,9 +53,15 @@ from facesynth.model.head_motion import HeadMotion
 from facesynth.model.motion import Motion, Provenance, SearchPath
 from facesynth.model.motiondb import MotionDatabase
 
-from . import Method, MethodSettings, Synthesis, SynthesisSummary
+from . import Method, MethodSettings, Synthesis, SynthesisSummary, voice
 
 log = logging.getLogger(__name__)
+
+#: The ``[synthesize]`` settings of the voice step (:mod:`.voice`), recorded by a motion made with
+#: the audio by a method whose own section is another.
+VOICE_SETTINGS = ("loudness_weight", "loudness_smoothing_s", "loudness_lip_markers", "pinned_phones",
+                  "voice_recognized", "voice_given", "articulation_model", "voice_weight", "voice_rounding_weight",
+                  "voice_closure_threshold", "voice_closing_threshold", "voice_pin_recognized")
 
 
 class DatabaseMethod(Method):
@@ -79,6 +85,11 @@ class UtteranceInput:
     alignment: Alignment | None = None
     warnings: list[str] = field(default_factory=list)
     audio: tuple[np.ndarray, int] | None = None
+
+    @property
+    def recognized(self) -> bool:
+        """Whether the phones were recognised from the audio (no transcript, no phones given)."""
+        return self.alignment is not None and bool(self.alignment.recognized)
 
 
 def read_utterance(ingest: IngestSettings, *, phones_path: Path | None = None, audio: Path | None = None,
@@ -158,23 +169,40 @@ def constraints_for(method: Method, source, path: Path | None, utt: Utterance) -
 
 def synthesize(method: Method, source, utt: Utterance, settings: MethodSettings, constraints: dict[int, int] | None = None,
                *, prepared=None, source_where: str = "the source", where: str = "the utterance",
-               audio: tuple[np.ndarray, int] | None = None) -> Synthesis:
+               audio: tuple[np.ndarray, int] | None = None, recognized: bool = False) -> Synthesis:
     """``method``'s motion of ``utt`` from ``source``, after the memory check (its message names
     ``source_where``; the method's own messages name the utterance, ``where``). With the
-    utterance's ``audio`` ((n,) mono samples, rate Hz) and ``synthesize.loudness_weight`` above 0,
-    the mouth opening then follows the audio's loudness too (:mod:`facesynth.domain.speech.loudness`); a
-    motion without the lip markers is left as it is, and the summary's ``warnings`` say so."""
+    utterance's ``audio`` ((n,) mono samples, rate Hz), the mouth then takes what the voice says
+    (:mod:`facesynth.domain.methods.voice`: its articulation or its loudness, by whether the
+    phones were ``recognized`` from that audio); a motion without the lip markers is left as it
+    is, and the summary's ``warnings`` say so."""
     method.refuse_constraints(constraints)
     check_memory(method, source, utt, settings, source_where)
     result = method.synthesize(source, utt, settings, constraints, prepared=prepared, where=where)
-    if audio is not None and settings.synthesize.loudness_weight > 0:
-
-        result.motion, warning = loudness.follow(result.motion, *audio, utt.starts, utt.ends, list(utt.phones),
-                                                 settings.synthesize)
+    if audio is not None:
+        t0 = time.perf_counter()
+        result.motion, done, warning = voice.apply(result.motion, *audio, utt.starts, utt.ends, list(utt.phones),
+                                                   settings.synthesize, recognized=recognized)
+        phases = {**result.summary.phases, "voice_s": time.perf_counter() - t0}
+        result.summary = dataclasses.replace(result.summary, voice=done.path, phases=phases)
         if warning is not None:
             log.warning("%s: %s", where, warning)
             result.summary = dataclasses.replace(result.summary, warnings=result.summary.warnings + (warning,))
     return result
+
+
+def recorded_config(method: Method, settings: MethodSettings, with_audio: bool) -> str:
+    """The ``config`` a motion made by ``method`` records (JSON): its settings section, and, with
+    the audio given to a method whose section is not ``[synthesize]`` (``trajectory``), the
+    settings of the voice step that moved its mouth as ``synthesize.<name>`` keys."""
+    section = method.recorded_settings(settings)
+    config = json.loads(settings_json(section))
+    if with_audio and section is not settings.synthesize:
+        s = settings.synthesize
+        for name in VOICE_SETTINGS:
+            value = getattr(s, name)
+            config[f"synthesize.{name}"] = list(value) if isinstance(value, tuple) else value
+    return json.dumps(config, sort_keys=True)
 
 
 @dataclass
@@ -199,7 +227,7 @@ def synthesize_utterance(member: Method, source, read: UtteranceInput, settings:
     checks (:func:`synthesize`, with the utterance's audio), with ``head``'s head motion instead of
     the source's when given. Messages name ``source_where`` and ``where``."""
     result = synthesize(member, source, read.utterance, settings, constraints, source_where=source_where,
-                        where=where, audio=read.audio)
+                        where=where, audio=read.audio, recognized=read.recognized)
     motion = result.motion
     if head is not None:
         motion.head_rotation, motion.head_translation = head.at(np.arange(len(motion.markers)) / motion.fps)
@@ -217,20 +245,6 @@ def motion_inputs(source: Path | None, phones: Path | None = None, emotions: Pat
                   head_motion: Path | None = None) -> list[Path]:
     """The files a synthesized motion records as its inputs, in this order; the ones not given are left out."""
     return [Path(p) for p in (source, phones, emotions, constraints, audio, head_motion) if p is not None]
-
-
-def recorded_config(method: Method, settings: MethodSettings, with_audio: bool) -> str:
-    """The ``config`` a motion made by ``method`` records (JSON): its settings section, and, with
-    the audio given to a method whose section is not ``[synthesize]`` (``trajectory``), the
-    settings of the loudness step that moved its mouth as ``synthesize.<name>`` keys."""
-    section = method.recorded_settings(settings)
-    config = json.loads(settings_json(section))
-    if with_audio and section is not settings.synthesize:
-        s = settings.synthesize
-        for name in ("loudness_weight", "loudness_smoothing_s", "loudness_lip_markers", "pinned_phones"):
-            value = getattr(s, name)
-            config[f"synthesize.{name}"] = list(value) if isinstance(value, tuple) else value
-    return json.dumps(config, sort_keys=True)
 
 
 def check_memory(method: Method, source, utt: Utterance, settings: MethodSettings, where: str) -> None:

@@ -35,10 +35,10 @@ average with time constant ``tau_s``, updated only on frames with speech, starte
 training set's statistics, so it runs frame by frame and adapts to a new voice within seconds).
 
 **Model** (:func:`fit`, :func:`predict`, :class:`StreamingPredictor`): ridge regression from the
-normalized features (plus a few loudness hinges, :func:`expand`) read at 12 offsets from -250 ms
-to +60 ms around each output frame, to the mouth's curves of a capture (FACEGOOD's ARKit curves,
+normalized features (plus a few loudness hinges, :func:`expand`) read at 10 offsets from -250 ms
+to +20 ms around each output frame, to the mouth's curves of a capture (FACEGOOD's ARKit curves,
 any performer's curves with their audio). The context is a learned FIR filter over the feature
-stream: it reads the coming vowel's formants (look-ahead 86 ms) and the syllable's envelope
+stream: it reads the onset of the coming sound (look-ahead 46 ms) and the syllable's envelope
 behind it. Linear because, held out by take on FACEGOOD, it matched a small MLP; it fits in
 seconds on a few minutes of capture and predicts with one matrix product per frame. The fitted
 parameters are a :class:`facesynth.model.articulation.ArticulationModel` (the ``articulation``
@@ -349,8 +349,11 @@ class StreamingFeatures:
 # ---------------------------------------------------------------- the model
 
 #: The default context: offsets (s) from the frame time at which the features are read (-250 ms
-#: behind: the syllable's envelope; +60 ms ahead: the coming vowel's formants).
-DEFAULT_OFFSETS_S = (-0.25, -0.2, -0.15, -0.12, -0.09, -0.06, -0.04, -0.02, 0.0, 0.02, 0.04, 0.06)
+#: behind: the syllable's envelope; +20 ms ahead: the coming sound's onset). The look-ahead is
+#: 46 ms, short enough for live frames within 80 ms of their sound; reading further ahead (+40,
+#: +60 ms: 66 and 86 ms) added 0.002 to the mouth-opening r on FACEGOOD's scored takes (0.732 to
+#: 0.734), too little to be worth the latency.
+DEFAULT_OFFSETS_S = (-0.25, -0.2, -0.15, -0.12, -0.09, -0.06, -0.04, -0.02, 0.0, 0.02)
 #: Knots (standardized log RMS) of the loudness hinges of :func:`expand`.
 KNOTS = (-1.5, -0.75, 0.0, 0.75)
 #: Columns :func:`expand` adds.
@@ -414,6 +417,53 @@ def predict(model: ArticulationModel, samples: np.ndarray, rate: int, n_frames: 
     read silence."""
     check_model(model)
     return predict_raw(model, frame_features(samples, rate), np.arange(n_frames) / float(fps))
+
+
+# ---------------------------------------------------------------- closure targets of a capture
+
+def closure_frames_of(opening: np.ndarray, depth: float = 0.25, prominence: float = 0.25) -> np.ndarray:
+    """Frames (K,) of the closures of a mouth-opening curve (T,): its minima that, with the curve
+    scaled so that its 5th percentile is 0 and its 95th is 1, lie below ``depth`` and stand out by
+    ``prominence`` (the closures ``benchmarks/real_speech_lipsync.py`` scores)."""
+    from scipy.signal import find_peaks
+
+    x = np.asarray(opening, np.float64)
+    low, high = np.percentile(x, [5, 95]) if len(x) else (0.0, 0.0)
+    if high <= low:
+        return np.zeros(0, np.int64)
+    frames, _ = find_peaks(-(x - low) / (high - low), height=-depth, prominence=prominence)
+    return frames.astype(np.int64)
+
+
+def closings_of(opening: np.ndarray, frames: np.ndarray, flat: int = 2) -> np.ndarray:
+    """(K,) bool: which closures ``frames`` of an opening (T,) are closings within speech (the curve
+    stays at its minimum for at most ``flat`` frames) rather than rests (a plateau: the mouth
+    closed through a pause)."""
+    x = np.asarray(opening, np.float64)
+    out = np.zeros(len(frames), bool)
+    for i, e in enumerate(frames):
+        level = x[e] + 1e-4
+        a = b = int(e)
+        while a > 0 and x[a - 1] <= level and e - a < flat + 1:
+            a -= 1
+        while b < len(x) - 1 and x[b + 1] <= level and b - e < flat + 1:
+            b += 1
+        out[i] = b - a + 1 <= flat
+    return out
+
+
+def closure_target(opening: np.ndarray, fps: float, kind: str = "closure", sigma_s: float = 0.1) -> np.ndarray:
+    """(T,) 0..1, a target the model learns to score closures with from a captured opening (T,) at
+    ``fps``: a Gaussian bump of ``sigma_s`` around each of its closures (:func:`closure_frames_of`;
+    ``kind`` "closing": only the closings within speech, :func:`closings_of`), so that the model
+    scores, per frame, how near the lips are to closing."""
+    frames = closure_frames_of(opening)
+    if kind == "closing":
+        frames = frames[closings_of(opening, frames)]
+    if len(frames) == 0:
+        return np.zeros(len(opening))
+    d = np.abs(np.arange(len(opening))[:, None] - frames[None]).min(1) / (sigma_s * fps)
+    return np.exp(-0.5 * d * d)
 
 
 # ---------------------------------------------------------------- fitting
@@ -521,7 +571,9 @@ class StreamingPredictor:
         pools is in), or of all up to the audio's end when ``final``."""
         half, y = self.model.pool // 2, len(self.model.target_names)
         total = self.first_kept + len(self.normed)  # analysis frames normalized so far
-        end = int(np.floor(self.frames.samples / RATE * self.fps + 1e-9))  # output frames within the audio
+        # output frames within the audio: those whose time lies before its end (as many as batch
+        # synthesis gives the utterance)
+        end = int(np.ceil(self.frames.samples / RATE * self.fps - 1e-9))
         if end <= self.done:
             return np.zeros((0, y))
         times = np.arange(self.done, end) / self.fps

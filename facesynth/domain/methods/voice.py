@@ -1,0 +1,332 @@
+"""The voice in the mouth: every method's motion takes what the speech says about the mouth.
+
+The phones say which shape the mouth takes; the voice says how far and how the speaker moved it.
+With the utterance's audio given, :func:`apply` moves the motion a method made (the DP's captured
+motion above all) toward what the voice says, in one of two ways (``synthesize.voice_recognized``
+when the phones were recognised from the audio, ``synthesize.voice_given`` when they were given
+or aligned to a transcript):
+
+* ``"articulation"``: the acoustic articulation model (:mod:`facesynth.domain.speech.articulation`,
+  the ``articulation`` artifact ``synthesize.articulation_model``; the packaged one, fitted on
+  FACEGOOD's calibration takes, by default) predicts the mouth's curves from the voice, and
+  :func:`fuse` takes them in (below);
+* ``"loudness"``: the voice's loudness alone (:func:`facesynth.domain.speech.loudness.follow`), the
+  special case of a "model" whose one prediction is the loudness envelope, mapped by rank, with
+  no closure score and no rounding;
+* ``"off"``: the phones alone.
+
+**The fusion** (:func:`fuse`), where the voice is clear (its confidence, :func:`confidence`):
+
+1. *Rounding.* The predicted mouthFunnel and mouthPucker, each mapped affinely onto the range of
+   that shape's weight in the method's motion (the weights a least-squares fit of the built-in
+   rig's mouth shapes gives, :class:`RigShapes`), blended in by ``voice_rounding_weight x
+   confidence`` along the shape's own marker displacement. A motion whose markers the built-in
+   rig does not bind keeps its rounding.
+2. *Opening.* The predicted opening mapped affinely onto the method's inner-lip gaps in this
+   utterance (its 5th..95th percentiles onto theirs, :func:`range_map`: no unit, no gain, the
+   method's own range) and blended with the method's gap by ``voice_weight x confidence``.
+3. *Closures.* Each peak of the model's closure score above ``voice_closure_threshold`` takes the
+   gap down to the method's most closed gap (a Gaussian dip of :data:`CLOSURE_SIGMA_S`); the
+   method's own closings (the phones' /p b m/ and others: deep minima of its gap) are kept where
+   the model's closing score confirms them (``voice_closing_threshold``). ``pinned_phones`` keep
+   the method's closure (weight 0 over the phone) unless the voice says the lips were open (the
+   prediction over the phone above :data:`PINNED_OPEN_QUANTILE` of the utterance's): with the
+   phones recognised (``voice_pin_recognized`` false, the default) the phones' /p b m/ are not
+   trusted to pin, the voice decides.
+4. *Motion.* As the loudness step moves it: every marker along its direction by the step that
+   brings the lip gap to its target (:func:`facesynth.domain.speech.loudness.move_to_gaps`).
+
+Why the two paths differ (``docs/real-speech.md``): with the phones recognised from the audio
+(the only case FACEGOOD's Mandarin speech allows, and audio alone in general), the voice's
+articulation beats the loudness alone and the phones' own closures; with the phones given (text
+aligned, TTS timings), on the virtual actress the phones' opening is better than the voice's and
+the loudness step is ahead of the articulation, so the given path keeps the loudness step. Both
+are settings, and ``voice_weight = 0`` with ``voice_rounding_weight = 0`` leaves the phones alone.
+"""
+
+from __future__ import annotations
+
+import functools
+from dataclasses import dataclass, replace
+from pathlib import Path
+
+import numpy as np
+
+from facesynth.base.config import SynthesizeSettings
+from facesynth.base.errors import InputError
+from facesynth.domain.postprocess.concatenation import downsample, frame_ranges
+from facesynth.domain.rig.face import Rig
+from facesynth.domain.rig.loading import load_rig, marker_map
+from facesynth.domain.speech import articulation as voice_model
+from facesynth.domain.speech import loudness
+from facesynth.domain.speech.loudness import lip_gaps, move_to_gaps, moving_average, opening_direction
+from facesynth.model.articulation import ArticulationModel
+from facesynth.model.motion import Motion
+
+#: The packaged articulation model (fitted on FACEGOOD's calibration takes 1114_2_01..03 by
+#: ``benchmarks/voice_articulation.py --model-out``).
+PACKAGED_MODEL = Path(__file__).resolve().parents[2] / "data" / "articulation.h5"
+#: The voice's paths (``synthesize.voice_recognized``, ``synthesize.voice_given``).
+VOICE_PATHS = ("articulation", "loudness", "off")
+#: The frame rate the closure score is fitted at (the captures' 30/s).
+CLOSURE_FIT_FPS = 30.0
+#: The width (s) of the Gaussian dip a closure makes in the lip gap.
+CLOSURE_SIGMA_S = 0.03
+#: Closures of the voice at least this far apart (s).
+CLOSURE_SPACING_S = 0.15
+#: How far (s) from a method's closing the model's closing score may confirm it.
+CLOSING_REACH_S = 0.067
+#: A pinned phone keeps its closure unless the predicted opening over it ranks above this quantile.
+PINNED_OPEN_QUANTILE = 0.75
+#: The voice's confidence: 0 at ``SNR_NONE`` and 1 at ``SNR_FULL`` (log RMS above the running
+#: noise floor, which rises by ``FLOOR_RISE_PER_S`` a second). On FACEGOOD's clean takes a
+#: confidence of 1 everywhere was best (chosen on the calibration takes); a noisy recording's
+#: floor rises with its noise and the phones keep their motion where the voice is not above it.
+SNR_NONE, SNR_FULL, FLOOR_RISE_PER_S = 0.5, 1.5, 0.2
+#: The rig's mouth shapes fitted to read the motion's rounding (jaw, lips), by ARKit name.
+MOUTH_SHAPES = ("jawOpen", "jawForward", "jawLeft", "jawRight", "mouthClose", "mouthFunnel", "mouthPucker",
+                "mouthLeft", "mouthRight", "mouthSmile_L", "mouthSmile_R", "mouthStretch_L", "mouthStretch_R",
+                "mouthLowerDown_L", "mouthLowerDown_R", "mouthUpperUp_L", "mouthUpperUp_R", "mouthPress_L",
+                "mouthPress_R", "mouthRollLower", "mouthRollUpper", "mouthShrugLower", "mouthShrugUpper",
+                "mouthFrown_L", "mouthFrown_R", "mouthDimple_L", "mouthDimple_R")
+#: The predicted shapes the fusion moves the motion toward.
+ROUNDING_SHAPES = ("mouthFunnel", "mouthPucker")
+
+
+@dataclass(frozen=True)
+class VoiceSummary:
+    """What the voice did to a motion: ``path`` (one of :data:`VOICE_PATHS`), the closures the voice
+    added and the method's closings it kept, the pinned phones kept and vetoed, the mean confidence."""
+
+    path: str
+    closures_from_voice: int = 0
+    closings_kept: int = 0
+    pinned_kept: int = 0
+    pinned_vetoed: int = 0
+    mean_confidence: float = 0.0
+
+
+@functools.lru_cache(maxsize=4)
+def _read_model(path: Path, mtime_ns: int) -> ArticulationModel:
+    model = ArticulationModel.read(path)
+    voice_model.check_model(model, str(path))
+    return model
+
+
+def articulation_model(setting: str) -> ArticulationModel:
+    """The articulation model of ``synthesize.articulation_model``: the file it names, or the packaged
+    one when empty (read once per process and file version)."""
+    path = Path(setting) if setting else PACKAGED_MODEL
+    if not path.is_file():
+        raise InputError(f"synthesize.articulation_model: {path} is not a file; give an articulation model "
+                         "(benchmarks/voice_articulation.py --model-out), or leave it empty for the packaged one.")
+    model = _read_model(path.resolve(), path.stat().st_mtime_ns)
+    if "opening" not in model.target_names:
+        raise InputError(f"{path}: the articulation model predicts {', '.join(model.target_names)}, not the mouth's "
+                         "'opening' the fusion needs; fit it with an 'opening' target.")
+    return model
+
+
+@functools.lru_cache(maxsize=1)
+def _builtin_rig() -> Rig:
+    return load_rig(None, None)
+
+
+def apply(motion: Motion, samples: np.ndarray, rate: int, starts: np.ndarray, ends: np.ndarray, phones: list[str],
+          settings: SynthesizeSettings, *, recognized: bool) -> tuple[Motion, VoiceSummary, str | None]:
+    """``motion`` with what the voice ``samples`` (mono, ``rate`` Hz) says about the mouth, by the
+    path ``settings`` choose for phones ``recognized`` from the audio or not (module docstring);
+    returns (the motion, what was done, a warning or None)."""
+    path = settings.voice_recognized if recognized else settings.voice_given
+    if path == "off" or (path == "loudness" and settings.loudness_weight <= 0):
+        return motion, VoiceSummary("off"), None
+    if path == "loudness":
+        moved, warning = loudness.follow(motion, samples, rate, starts, ends, phones, settings)
+        return moved, VoiceSummary("loudness" if warning is None else "off"), warning
+    if settings.voice_weight <= 0 and settings.voice_rounding_weight <= 0:
+        return motion, VoiceSummary("off"), None
+    return fuse(motion, samples, rate, starts, ends, phones, articulation_model(settings.articulation_model),
+                settings, pinned=recognized is False or settings.voice_pin_recognized)
+
+
+# ---------------------------------------------------------------- the voice's side
+
+def confidence(raw: np.ndarray, times_s: np.ndarray) -> np.ndarray:
+    """(T,) 0..1 how clearly the voice is heard at ``times_s`` (T,) s, from the raw features (K, D)
+    of :func:`facesynth.domain.speech.articulation.frame_features`: each frame's log RMS above the
+    running noise floor (a running minimum rising by :data:`FLOOR_RISE_PER_S` a second), from
+    :data:`SNR_NONE` (0) to :data:`SNR_FULL` (1), the highest over the speech around it
+    (0.3 s: the jaw moves through a syllable's quiet parts too); causal but for that window."""
+    e = raw[:, voice_model.FEATURE_NAMES.index("log_rms")].astype(np.float64)
+    if not len(e):
+        return np.zeros(len(times_s))
+    ramp = FLOOR_RISE_PER_S * voice_model.FRAME_S * np.arange(len(e))
+    floor = np.minimum.accumulate(e - ramp) + ramp  # f_k = min(e_k, f_{k-1} + rise)
+    c = np.clip((e - floor - SNR_NONE) / (SNR_FULL - SNR_NONE), 0.0, 1.0)
+    from scipy.ndimage import maximum_filter1d
+
+    c = maximum_filter1d(c, size=int(round(0.3 / voice_model.FRAME_S)) | 1, mode="nearest")
+    idx = np.clip(np.rint(np.asarray(times_s) / voice_model.FRAME_S).astype(np.int64), 0, len(e) - 1)
+    return c[idx]
+
+
+def closure_frames(score: np.ndarray, fps: float, threshold: float) -> np.ndarray:
+    """Frames (K,) of the peaks of a closure score (T,) at ``fps`` that reach ``threshold``, at least
+    :data:`CLOSURE_SPACING_S` apart; the score is averaged over a 1/30 s frame (the rate it was
+    fitted at) first, so a fast output rate does not split a peak in two."""
+    from scipy.signal import find_peaks
+
+    if len(score) < 3:
+        return np.zeros(0, np.int64)
+    k = 2 * int(round(fps / CLOSURE_FIT_FPS / 2)) + 1  # odd: centred, so the peak does not shift
+    x = moving_average(np.asarray(score, np.float64), k) if k > 1 else np.asarray(score, np.float64)
+    peaks, _ = find_peaks(x, height=threshold, distance=max(1, int(round(CLOSURE_SPACING_S * fps))))
+    return peaks.astype(np.int64)
+
+
+# ---------------------------------------------------------------- the fusion on curves
+
+def range_map(predicted: np.ndarray, opening: np.ndarray, low: float = 5.0, high: float = 95.0) -> np.ndarray:
+    """(T,) the prediction (T,) mapped affinely so that its ``low``..``high`` percentiles land on the
+    method's openings' (T,), with a soft floor above 0 below them (a clipped floor is a plateau, and
+    a closure's dip into a plateau is no minimum): the method's range, the prediction's shape."""
+    p, o = np.asarray(predicted, np.float64), np.asarray(opening, np.float64)
+    a, b = np.percentile(p, [low, high])
+    c, d = np.percentile(o, [low, high])
+    if b - a <= 1e-12:
+        return o.copy()
+    q = c + (p - a) * (d - c) / (b - a)
+    c = max(c, 0.05 * (d - c), 1e-6)
+    return np.where(q < c, c * np.exp(np.minimum(q - c, 0.0) / c), q)
+
+
+def method_closings(opening: np.ndarray, closing: np.ndarray | None, fps: float, threshold: float) -> np.ndarray:
+    """Frames (K,) of the method's own closures (the deep minima of its gap ``opening`` (T,),
+    :func:`facesynth.domain.speech.articulation.closure_frames_of`) that the voice's closing score
+    ``closing`` (T,) confirms: it reaches ``threshold`` within :data:`CLOSING_REACH_S`."""
+    if closing is None or threshold > 1.0 or len(opening) < 3:
+        return np.zeros(0, np.int64)
+    frames = voice_model.closure_frames_of(opening)
+    reach = max(1, int(round(CLOSING_REACH_S * fps)))
+    c = np.asarray(closing, np.float64)
+    return np.array([e for e in frames if c[max(0, e - reach):e + reach + 1].max() >= threshold], np.int64)
+
+
+def target_gap(opening: np.ndarray, predicted: np.ndarray, score: np.ndarray | None, closing: np.ndarray | None,
+               conf: np.ndarray, pinned: list[tuple[int, int]], fps: float,
+               settings: SynthesizeSettings) -> tuple[np.ndarray, dict]:
+    """(T,) target lip gap (mm) from the method's gap ``opening`` (T,) mm, the predicted opening
+    ``predicted`` (T,) (any unit), the closure and closing scores (T,) or None, the confidence
+    ``conf`` (T,) and the pinned phones' frame ranges [a, b) at ``fps`` (module docstring, 2-3);
+    and what was done."""
+    o = np.asarray(opening, np.float64)
+    n = len(o)
+    q = range_map(predicted, o)
+    w = settings.voice_weight * np.asarray(conf, np.float64)
+    rank = (np.argsort(np.argsort(predicted)) + 0.5) / max(n, 1)
+    kept = [(a, max(b, a + 1)) for a, b in pinned if rank[a:max(b, a + 1)].mean() <= PINNED_OPEN_QUANTILE]
+    w = w * loudness.weights(n, kept, 1.0, max(1, int(round(settings.loudness_smoothing_s * fps))))
+    target = (1.0 - w) * o + w * q
+    from_voice = closure_frames(score, fps, settings.voice_closure_threshold) if score is not None \
+        else np.zeros(0, np.int64)
+    kept_closings = method_closings(o, closing, fps, settings.voice_closing_threshold)
+    events = np.union1d(from_voice, kept_closings).astype(np.int64)
+    if len(events):
+        # down to the method's most closed gap; scaling toward it (not clipping at it) keeps each dip
+        # a strict minimum, so the lips close there and open on both sides
+        closed = float(min(o.min(), target.min()))
+        t = np.arange(n)
+        sigma = max(CLOSURE_SIGMA_S * fps, 0.5)
+        dip = np.zeros(n)
+        for e in events:  # sparse: each touches a few frames
+            a, b = max(0, e - int(4 * sigma) - 1), min(n, e + int(4 * sigma) + 2)
+            dip[a:b] = np.maximum(dip[a:b], np.exp(-0.5 * ((t[a:b] - e) / sigma) ** 2))
+        target = closed + (target - closed) * (1.0 - dip)
+    return target, {"closures_from_voice": int(len(from_voice)), "closings_kept": int(len(kept_closings)),
+                    "pinned_kept": len(kept), "pinned_vetoed": len(pinned) - len(kept),
+                    "mean_confidence": float(np.mean(conf)) if n else 0.0}
+
+
+class RigShapes:
+    """The built-in rig's mouth shapes as marker motion in a motion's head frame: ``directions``
+    (S, M, 3) mm per unit weight of each of ``names`` (zero rows for the markers the rig does not
+    bind), and ``solve`` (S, M * 3), the least-squares map from marker displacements (from the
+    motion's reference) to those weights (a linear stand-in for ``facesynth solve`` over the
+    mouth's shapes)."""
+
+    def __init__(self, rig: Rig, marker_names: list[str], reference: np.ndarray):
+        mmap = marker_map(rig, list(marker_names), np.asarray(reference, np.float64), "the motion")
+        self.names = tuple(n for n in MOUTH_SHAPES if n in rig.shape_names)
+        idx = [rig.shape_names.index(n) for n in self.names]
+        deltas = np.asarray(rig.deltas[idx][:, mmap.vertices], np.float64)  # (S, B, 3) rig units and frame
+        self.directions = np.zeros((len(idx), len(marker_names), 3))
+        self.directions[:, mmap.columns] = deltas @ mmap.rotation / mmap.scale  # the motion's frame, mm
+        self.solve = np.linalg.pinv(self.directions.reshape(len(idx), -1).T, rcond=1e-6)
+        self.reference = np.asarray(reference, np.float64)
+
+    def weights(self, markers: np.ndarray, names: list[str]) -> np.ndarray:
+        """(T, S') the least-squares weights of the shapes ``names`` in marker frames (T, M, 3) mm."""
+        rows = [self.names.index(n) for n in names]
+        disp = (np.asarray(markers, np.float32) - self.reference.astype(np.float32)).reshape(len(markers), -1)
+        return (disp @ self.solve[rows].T.astype(np.float32)).astype(np.float64)
+
+
+def rig_rounding(markers: np.ndarray, shapes: RigShapes, predicted: dict[str, np.ndarray], blend: np.ndarray) -> np.ndarray:
+    """Marker frames (T, M, 3) with the rounding shapes moved toward the predictions: each predicted
+    curve (T,) mapped affinely onto the range of that shape's weight in the motion
+    (:func:`range_map`), blended by ``blend`` (T,), the difference added along the shape's markers."""
+    names = [n for n in predicted if n in shapes.names]
+    markers = np.asarray(markers, np.float64)
+    if not names:
+        return markers
+    current = shapes.weights(markers, names)
+    steps = np.zeros((len(markers), len(names)))
+    for j, name in enumerate(names):
+        lo, hi = np.percentile(current[:, j], [5, 95])
+        if hi - lo > 1e-6:
+            steps[:, j] = blend * (range_map(predicted[name], current[:, j]) - current[:, j])
+    directions = shapes.directions[[shapes.names.index(n) for n in names]].reshape(len(names), -1)
+    return markers + (steps.astype(np.float32) @ directions.astype(np.float32)).reshape(markers.shape)
+
+
+def fuse(motion: Motion, samples: np.ndarray, rate: int, starts: np.ndarray, ends: np.ndarray, phones: list[str],
+         model: ArticulationModel, settings: SynthesizeSettings, *, pinned: bool = True,
+         rig: Rig | None = None) -> tuple[Motion, VoiceSummary, str | None]:
+    """``motion`` (of the utterance with ``phones`` from ``starts`` to ``ends`` s) with the voice's
+    articulation predicted by ``model`` from ``samples`` (mono, ``rate`` Hz), as the module docstring
+    says; ``pinned``: whether ``synthesize.pinned_phones`` keep their closure; ``rig``: the rig whose
+    mouth shapes read the rounding (the built-in one by default). Returns (the motion, what was
+    done, a warning or None)."""
+    names = list(motion.marker_names)
+    lips = tuple(settings.loudness_lip_markers)
+    missing = [m for m in lips if m not in names]
+    if missing:
+        return motion, VoiceSummary("off"), (
+            f"the voice's articulation was not applied to the mouth: the motion has no marker {missing[0]!r}; set "
+            "synthesize.loudness_lip_markers to its upper and lower inner-lip markers, or synthesize.voice_weight = 0.")
+    frames, fps = motion.markers_capture.astype(np.float64), motion.capture_fps
+    n = len(frames)
+    raw = voice_model.frame_features(samples, rate)
+    times = np.arange(n) / fps
+    # predicted at the output rate and interpolated to the capture rate: the model's curves are
+    # smoother than 30/s (a 30 ms pooled context), and that is 4 times less work at 120/s
+    coarse = np.arange(int(np.floor(times[-1] * motion.fps)) + 2) / motion.fps if n else np.zeros(0)
+    at_coarse = voice_model.predict_raw(model, raw, coarse)
+    pred = {c: np.interp(times, coarse, at_coarse[:, j]) for j, c in enumerate(model.target_names)}
+    conf = confidence(raw, times)
+    moved = frames
+    rounding = {c: pred[c] for c in ROUNDING_SHAPES if c in pred}
+    if settings.voice_rounding_weight > 0 and rounding:
+        rig = rig if rig is not None else _builtin_rig()
+        if all(m in rig.binding for m in lips) and sum(m in rig.binding for m in names) >= 3:
+            moved = rig_rounding(frames, RigShapes(rig, names, motion.reference), rounding,
+                                 settings.voice_rounding_weight * conf)
+    gap = lip_gaps(moved, names, lips)
+    ranges = frame_ranges(np.asarray(starts, float), np.asarray(ends, float), fps)
+    kept = [r for r, p in zip(ranges, phones) if p in settings.pinned_phones] if pinned else []
+    target, done = target_gap(gap, pred["opening"], pred.get("closure"), pred.get("closing"), conf, kept, fps,
+                              settings)
+    li, lj = names.index(lips[0]), names.index(lips[1])
+    moved = move_to_gaps(moved, opening_direction(moved, gap), (li, lj), target).astype(motion.markers_capture.dtype)
+    return (replace(motion, markers_capture=moved, markers=downsample(moved, fps, motion.fps)),
+            VoiceSummary("articulation", **done), None)

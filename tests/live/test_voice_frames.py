@@ -1,0 +1,127 @@
+"""Live frames from the voice (facesynth.domain.live.voice): sent within the model's look-ahead of
+their sound, equal to what the articulation model predicts from the whole audio, the emotion's
+pose around the voice's mouth, and the phone-driven path when the voice is off."""
+
+import json
+import wave
+from dataclasses import replace
+
+import numpy as np
+import pytest
+
+from facesynth.base.config import Config
+from facesynth.domain.live.core import SPEECH_SHAPES, LiveModel
+from facesynth.domain.live.session import Session
+from facesynth.domain.speech import articulation
+from facesynth.model.motiondb import MotionDatabase
+
+CHUNK = 320  # 20 ms of 16 kHz PCM, as a browser or a phone sends it
+
+
+@pytest.fixture(scope="module")
+def db(tiny_db):
+    return MotionDatabase.read(tiny_db)
+
+
+@pytest.fixture(scope="module")
+def model(db, config):
+    return LiveModel(db, config.settings("synthesize"), config.settings("stream"), config.settings("solve"))
+
+
+@pytest.fixture(scope="module")
+def pcm(tiny_corpus, held_out_take) -> bytes:
+    with wave.open(str(tiny_corpus / "audio" / f"{held_out_take}.wav")) as w:
+        return w.readframes(w.getnframes())
+
+
+def _run(model, pcm: bytes, before: list[dict] = (), switch_at: int | None = None, emotion: str = "happy"):
+    """Stream ``pcm`` in 20 ms chunks; returns the frame messages and, per frame, the audio
+    received (s) when it was sent."""
+    session = Session(model, Config.load().settings("align"), "test")
+    frames, received = [], []
+    for message in before:
+        out = [m for m in session.control(json.dumps(message)) if m["type"] == "frame"]
+        frames += out
+        received += [session.time] * len(out)
+    for k, a in enumerate(range(0, len(pcm), 2 * CHUNK)):
+        if switch_at is not None and k == switch_at:
+            session.control(json.dumps({"type": "emotion", "name": emotion}))
+        out = [m for m in session.audio(pcm[a:a + 2 * CHUNK]) if m["type"] == "frame"]
+        frames += out
+        received += [session.time] * len(out)
+    tail = session.end()
+    frames += [m for m in tail if m["type"] == "frame"]
+    received += [session.time] * (len(tail) - 1)
+    assert tail[-1] == {"type": "end", "frames": len(frames)}
+    return session, frames, np.array(received)
+
+
+def test_frames_go_out_within_the_look_ahead_of_their_sound(model, pcm):
+    session, frames, received = _run(model, pcm)
+    assert session.recognizer is None  # no phone recogniser runs
+    seconds = len(pcm) / 2 / 16000
+    assert [f["index"] for f in frames] == list(range(int(np.ceil(seconds * 30))))  # batch's frame count
+    times = np.array([f["time"] for f in frames])
+    lag = received[:-3] - times[:-3]  # the last frames wait for the end of the audio
+    look = articulation.model_look_ahead_s(model.voice_model)
+    assert look <= 0.05
+    assert lag.max() <= look + CHUNK / 16000 + articulation.FRAME_S + 1e-6
+    assert session.hello()["voice_lookahead_s"] == pytest.approx(look, abs=1e-4)
+
+
+def test_the_mouth_is_what_the_model_predicts_from_the_whole_audio(model, pcm):
+    _, frames, _ = _run(model, pcm)
+    samples = np.frombuffer(pcm, "<i2").astype(np.float32) / 32768.0
+    vm = model.voice_model
+    predicted = articulation.predict(vm, samples, 16000, len(frames), 30.0)
+    names = list(model.arkit_names)
+    jaw = np.array([f["arkit"][names.index("jawOpen")] for f in frames])
+    funnel = np.array([f["arkit"][names.index("mouthFunnel")] for f in frames])
+    np.testing.assert_allclose(funnel, np.clip(predicted[:, vm.target_names.index("mouthFunnel")], 0, 1), atol=2e-4)
+    open_jaw = np.clip(predicted[:, vm.target_names.index("jawOpen")], 0, 1)
+    assert np.all(jaw <= open_jaw + 2e-4)  # the closure score only closes the jaw
+    assert np.corrcoef(jaw, open_jaw)[0, 1] > 0.9
+    assert jaw.max() > 0.1 and jaw.min() < 0.3 * jaw.max()
+
+
+def test_an_emotion_switch_changes_the_face_around_the_voice_mouth(model, pcm, db):
+    assert "happy" in set(db.nodes.emotion)
+    _, plain, _ = _run(model, pcm)
+    _, switched, _ = _run(model, pcm, switch_at=40)
+    names = list(model.arkit_names)
+    first = next(f["index"] for a, f in zip(plain, switched) if a["arkit"] != f["arkit"])
+    assert 40 * CHUNK / 16000 * 30 - 3 <= first  # nothing before the switch changed
+    mouth = [names.index(n) for n in ("jawOpen", "mouthFunnel", "mouthPucker")]
+    a, b = np.array(plain[-1]["arkit"]), np.array(switched[-1]["arkit"])
+    np.testing.assert_allclose(a[mouth], b[mouth])  # the voice's mouth is the same
+    assert np.abs(a - b).max() > 0.01  # the face around it is the emotion's
+
+
+def test_the_emotion_pose_leaves_the_speech_shapes_to_the_voice(model):
+    pose = model.emotion_pose("neutral")
+    rig = list(model.rig.shape_names)
+    assert np.all(pose[[rig.index(n) for n in SPEECH_SHAPES if n in rig]] == 0)
+    markers = model.markers_of(pose[None])[0]
+    again = model.solve(markers[None], None)[0]
+    np.testing.assert_allclose(again, pose, atol=0.02)  # the markers the pose makes solve back to it
+
+
+def test_voice_off_streams_the_recognised_phones(model, pcm, config):
+    off = LiveModel(model.db, config.settings("synthesize"), replace(config.settings("stream"), voice="off"),
+                    config.settings("solve"))
+    assert off.voice_model is None
+    session, frames, received = _run(off, pcm)
+    assert session.recognizer is not None and session.voice is None
+    assert len(frames) == 70  # 2.32 s at 30 frames/s, as batch synthesis gives
+    assert session.hello()["voice"] == "off"
+
+
+def test_given_phones_keep_their_path(model, pcm, tiny_corpus, held_out_take):
+    from facesynth.domain.search.inputs import read_utterance
+
+    utt = read_utterance(tiny_corpus / "labels" / f"{held_out_take}.TextGrid")
+    phones = [{"phone": p, "start": float(a), "end": float(b)} for p, a, b in zip(utt.phones, utt.starts, utt.ends)]
+    session, frames, _ = _run(model, pcm, before=[{"type": "start", "phones": "given"},
+                                                  {"type": "phones", "phones": phones, "final": True}])
+    assert session.voice is None and session.recognizer is None
+    assert len(frames) == 70

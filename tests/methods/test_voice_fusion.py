@@ -1,0 +1,150 @@
+"""The voice in the mouth (facesynth.domain.methods.voice): the fusion's cores on curves, its paths
+by where the phones came from, and what it does to a synthesized motion with real audio."""
+
+from dataclasses import replace
+
+import numpy as np
+import pytest
+
+from facesynth.base.errors import InputError
+from facesynth.domain.methods import MethodSettings, core
+from facesynth.domain.methods import voice
+from facesynth.domain.speech import articulation
+from facesynth.domain.speech.loudness import lip_gaps
+
+
+@pytest.fixture(scope="module")
+def synth(config):
+    return config.settings("synthesize")
+
+
+def test_range_map_keeps_the_shape_in_the_method_range():
+    rng = np.random.default_rng(0)
+    predicted = rng.normal(size=500)
+    opening = 2.0 + 6.0 * rng.random(500)
+    mapped = voice.range_map(predicted, opening)
+    assert np.corrcoef(mapped, predicted)[0, 1] > 0.99  # monotone, nearly affine
+    np.testing.assert_allclose(np.percentile(mapped, [5, 95]), np.percentile(opening, [5, 95]), rtol=0.02)
+    assert mapped.min() > 0  # the soft floor stays above a closed mouth
+    assert np.array_equal(voice.range_map(np.ones(10), np.arange(10.0)), np.arange(10.0))  # a flat prediction says nothing
+
+
+def test_target_gap_follows_the_voice_and_closes_where_it_says(synth):
+    fps, n = 30.0, 300
+    t = np.arange(n) / fps
+    opening = 5 + 3 * np.sin(2 * np.pi * 0.7 * t)  # the method's gaps, mm
+    predicted = np.sin(2 * np.pi * 1.3 * t)  # the voice's opening, another rhythm
+    score = np.zeros(n)
+    score[150] = 1.0
+    score = np.convolve(score, np.exp(-0.5 * (np.arange(-9, 10) / 3.0) ** 2), "same")
+    target, done = voice.target_gap(opening, predicted, score, None, np.ones(n), [], fps, synth)
+    assert np.corrcoef(target[:140], predicted[:140])[0, 1] > 0.95  # weight 1: the voice's opening
+    assert target[150] == pytest.approx(min(opening.min(), target.min()), abs=1e-6)  # closed at the score's peak
+    assert target[150] < target[145] and target[150] < target[155]
+    assert done["closures_from_voice"] == 1
+    none, _ = voice.target_gap(opening, predicted, None, None, np.ones(n), [], fps, replace(synth, voice_weight=0.0))
+    np.testing.assert_allclose(none, opening)  # weight 0: the phones' opening
+    quiet, _ = voice.target_gap(opening, predicted, None, None, np.zeros(n), [], fps, synth)
+    np.testing.assert_allclose(quiet, opening)  # no confidence in the voice: the phones' opening
+
+
+def test_a_pinned_phone_keeps_its_closure_unless_the_voice_says_open(synth):
+    fps, n = 30.0, 120
+    opening = np.full(n, 6.0)
+    opening[50:56] = 0.2  # the method's /p/ closure
+    predicted = np.linspace(0, 1, n)  # the voice rises through the utterance
+    closed_voice, done = voice.target_gap(opening, predicted, None, None, np.ones(n), [(50, 56)], fps, synth)
+    assert closed_voice[52] == pytest.approx(0.2) and done["pinned_kept"] == 1  # low prediction there: kept
+    loud = predicted.copy()
+    loud[45:60] = 5.0  # the voice says the lips were wide open over the phone
+    _, vetoed = voice.target_gap(opening, loud, None, None, np.ones(n), [(50, 56)], fps, synth)
+    assert vetoed["pinned_vetoed"] == 1
+
+
+def test_the_closure_targets_mark_a_capture_closures():
+    x = np.full(200, 10.0)
+    x[40:43] = [3, 0.5, 3]  # a closing within speech
+    x[120:140] = 0.5  # a rest: the mouth closed through a pause
+    frames = articulation.closure_frames_of(x)
+    assert 41 in frames
+    closings = articulation.closure_target(x, 30.0, kind="closing")
+    every = articulation.closure_target(x, 30.0)
+    assert closings[41] == pytest.approx(1.0) and every[41] == pytest.approx(1.0)
+    assert closings[130] < 0.05  # a rest is no closing
+
+
+def test_the_packaged_model_predicts_what_the_fusion_reads():
+    model = voice.articulation_model("")
+    assert {"opening", "closure", "closing", "jawOpen", "mouthFunnel", "mouthPucker"} <= set(model.target_names)
+    assert articulation.model_look_ahead_s(model) <= 0.05  # live frames within 80 ms of their sound
+
+
+def test_a_missing_model_file_is_one_sentence(tmp_path):
+    with pytest.raises(InputError, match="is not a file; give an articulation model"):
+        voice.articulation_model(str(tmp_path / "none.h5"))
+
+
+@pytest.fixture(scope="module")
+def spoken(tiny_db, tiny_corpus, held_out_take, config):
+    """The held-out take's phones and audio, read as synthesize reads them, and the database."""
+    from facesynth.domain.methods import get
+
+    member = get("dp")
+    source = member.read(tiny_db)
+    read = core.read_utterance(config.settings("ingest"), phones_path=tiny_corpus / "labels" / f"{held_out_take}.TextGrid",
+                               audio=tiny_corpus / "audio" / f"{held_out_take}.wav")
+    return member, source, read
+
+
+def _gap(motion, synth):
+    return lip_gaps(motion.markers, list(motion.marker_names), tuple(synth.loudness_lip_markers))
+
+
+def test_recognised_phones_take_the_voice_articulation_given_phones_the_loudness(spoken, config):
+    member, source, read = spoken
+    settings = MethodSettings.of(config)
+    settings = replace(settings, synthesize=replace(settings.synthesize, use_opencl=False))
+    phones = core.synthesize(member, source, read.utterance, settings)
+    given = core.synthesize(member, source, read.utterance, settings, audio=read.audio)
+    heard = core.synthesize(member, source, read.utterance, settings, audio=read.audio, recognized=True)
+    assert (phones.summary.voice, given.summary.voice, heard.summary.voice) == ("off", "loudness", "articulation")
+    s = settings.synthesize
+    samples, rate = read.audio
+    model = voice.articulation_model("")
+    predicted = articulation.predict(model, samples, rate, len(phones.motion.markers), phones.motion.fps)
+    opening = predicted[:, model.target_names.index("opening")]
+    r_before = np.corrcoef(_gap(phones.motion, s), opening)[0, 1]
+    r_after = np.corrcoef(_gap(heard.motion, s), opening)[0, 1]
+    assert r_after > r_before + 0.1 and r_after > 0.8  # the mouth now follows what the voice says
+    # off is the phones alone, bit for bit
+    off = core.synthesize(member, source, read.utterance,
+                          replace(settings, synthesize=replace(s, voice_recognized="off")), audio=read.audio,
+                          recognized=True)
+    assert np.array_equal(off.motion.markers, phones.motion.markers)
+
+
+def test_the_fusion_is_deterministic_and_moves_only_where_the_mouth_does(spoken, config):
+    member, source, read = spoken
+    settings = MethodSettings.of(config)
+    settings = replace(settings, synthesize=replace(settings.synthesize, use_opencl=False))
+    made = [core.synthesize(member, source, read.utterance, settings, audio=read.audio, recognized=True).motion
+            for _ in range(2)]
+    assert np.array_equal(made[0].markers, made[1].markers)
+    phones = core.synthesize(member, source, read.utterance, settings).motion
+    moved = np.linalg.norm(made[0].markers - phones.markers, axis=-1).mean(0)  # (M,) mm
+    names = list(phones.marker_names)
+    brows = [i for i, m in enumerate(names) if m.startswith(("BROW", "FH"))]
+    mouth = [names.index(m) for m in ("ULI_C", "LLI_C")]
+    assert moved[mouth].mean() > 0.5
+    assert moved[brows].mean() < 0.2 * moved[mouth].mean()
+
+
+def test_audio_that_is_silence_leaves_the_phones(spoken, config):
+    member, source, read = spoken
+    settings = MethodSettings.of(config)
+    settings = replace(settings, synthesize=replace(settings.synthesize, use_opencl=False))
+    samples, rate = read.audio
+    quiet = (np.zeros_like(samples), rate)
+    phones = core.synthesize(member, source, read.utterance, settings).motion
+    heard = core.synthesize(member, source, read.utterance, settings, audio=quiet, recognized=True).motion
+    assert np.abs(heard.markers - phones.markers).max() < 0.5  # no confidence anywhere: barely moved
