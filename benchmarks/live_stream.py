@@ -143,7 +143,8 @@ def offline(db_path: Path, corpus: Path, takes: list[str], config: Config, traje
     for method, lookahead, hold, pause_wait in CONFIGS:
         if method == "trajectory" and trajectory is None:
             continue
-        stream = replace(config.settings("stream"), method=method, lookahead_phones=lookahead, recognition_hold=hold)
+        stream = replace(config.settings("stream"), method=method, lookahead_phones=lookahead, recognition_hold=hold,
+                         voice="off")  # these rows measure the phones' path
         if pause_wait is not None:
             stream = replace(stream, pause_wait_s=pause_wait)
         model = LiveModel(trajectory if method == "trajectory" else db, config.settings("synthesize"), stream,
@@ -251,9 +252,13 @@ async def _client(port: int, pcm: bytes, t_start: float) -> list[float]:
     return latencies
 
 
-def concurrent(db_path: Path, pcm: bytes, counts: list[int], seconds: float, workers: int) -> dict:
+def concurrent(db_path: Path, pcm: bytes, counts: list[int], seconds: float, workers: int,
+               settings: tuple[str, ...] = ()) -> dict:
+    """K clients at once for each K of ``counts``, each pushing ``seconds`` of ``pcm`` in real time to
+    one ``facesynth stream --serve`` with ``workers`` processes and ``settings`` (``--set`` values)."""
+    extra = [a for value in settings for a in ("--set", value)]
     proc = subprocess.Popen([sys.executable, "-m", "facesynth.cli", "stream", str(db_path), "--serve", "127.0.0.1:0",
-                             "--workers", str(workers)], stderr=subprocess.PIPE, stdout=subprocess.DEVNULL)
+                             "--workers", str(workers), *extra], stderr=subprocess.PIPE, stdout=subprocess.DEVNULL)
     try:
         with selectors.DefaultSelector() as sel:
             sel.register(proc.stderr, selectors.EVENT_READ)
@@ -270,15 +275,83 @@ def concurrent(db_path: Path, pcm: bytes, counts: list[int], seconds: float, wor
         for k in counts:
             lat = np.concatenate(asyncio.run(run(k)))
             out[str(k)] = {"latency_median_ms": round(1000 * float(np.median(lat)), 1),
-                           "latency_p95_ms": round(1000 * float(np.percentile(lat, 95)), 1), "frames": int(len(lat))}
-            print("concurrent", workers, k, out[str(k)], file=sys.stderr)
+                           "latency_p95_ms": round(1000 * float(np.percentile(lat, 95)), 1),
+                           "latency_max_ms": round(1000 * float(np.max(lat)), 1), "frames": int(len(lat))}
+            print("concurrent", workers, settings, k, out[str(k)], file=sys.stderr)
         base = out[str(counts[0])]["latency_p95_ms"]
         held = [k for k in counts if out[str(k)]["latency_p95_ms"] <= base + 100]
-        return {"workers": workers, "streams": out, "held": max(held) if held else 0,
+        return {"workers": workers, "settings": list(settings), "streams": out, "held": max(held) if held else 0,
                 "criterion": "p95 within 100 ms of one stream's"}
     finally:
         proc.terminate()
         proc.wait(30)
+
+
+def real_voice(db_path: Path, facegood: Path, takes: list[str], work: Path, config: Config, counts: list[int],
+               seconds: float, workers: int) -> dict:
+    """A real voice (FACEGOOD's takes, ``benchmarks/real_speech_lipsync.py``'s layout) streamed with
+    the voice's frames (``stream.voice = "articulation"``, the default) and with the phones' (``off``,
+    the path before): per take, the simulated real-time latency (as ``offline``) and the live mouth
+    against the speaker's captured mouth and against batch ``synthesize --audio`` of the same audio
+    (solved onto the rig, as that benchmark does; cached in ``work``); then ``concurrent`` on the
+    first take's audio for both."""
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    import real_speech_lipsync as rs
+
+    names_file = facegood / "shirley_1015_bs_name.npy"
+    if not names_file.exists():
+        raise SystemExit(f"{facegood}: no shirley_1015_bs_name.npy; see benchmarks/real_speech_lipsync.py")
+    channel_names = [str(x) for x in rs.load_npy(names_file)]
+    table = rs.read_table()
+    db = MotionDatabase.read(db_path)
+    align, lip = config.settings("align"), config.settings("evaluate").lip_markers
+    models = {voice: LiveModel(db, config.settings("synthesize"), replace(config.settings("stream"), voice=voice),
+                               config.settings("solve")) for voice in ("articulation", "off")}
+    rows: dict[str, dict[str, list]] = {v: {"latency": [], "r_capture": [], "r_batch": [], "jaw_r_capture": [],
+                                             "rtf_cpu": []} for v in models}
+    batch_r, batch_jaw_r = [], []
+    for take in takes:
+        wav = facegood / "wav" / f"{take}.wav"
+        pcm = read_pcm(wav)
+        values = np.asarray(rs.load_npy(facegood / "bs_value_npy" / f"bs_value_{take}.npy"), np.float64)
+        n = min(len(values), int(np.floor(len(pcm) / 32000 * rs.FPS)))
+        real = {k: v[:n] for k, v in rs.real_curves(values, channel_names, table).items()}
+        spans = rs.windows(n, rs.FPS, 10.0)
+        folder = work / "takes" / take
+        folder.mkdir(parents=True, exist_ok=True)
+        batch = rs.facesynth_method(db_path, None, folder, n, lip, audio=wav)
+        batch_r.append(rs.window_r(batch["opening"], real["opening"], spans))
+        batch_jaw_r.append(rs.window_r(batch["jawOpen"], real["jawOpen"], spans))
+        for voice, model in models.items():
+            live, times, latency, _, cpu, session = stream_offline(model, align, pcm, None)
+            o_live = rs.fit_length(opening(live, list(db.marker_names)), n)
+            jaw = rs.fit_length(session.arkit[:, model.arkit_names.index("jawOpen")], n)
+            row = rows[voice]
+            row["latency"].append(latency)
+            row["r_capture"].append(rs.window_r(o_live, real["opening"], spans))
+            row["r_batch"].append(rs.window_r(o_live, batch["opening"], spans))
+            row["jaw_r_capture"].append(rs.window_r(jaw, real["jawOpen"], spans))
+            row["rtf_cpu"].append(cpu / (len(pcm) / 32000))
+            print("real voice", take, voice, round(float(np.nanmean(row["r_capture"][-1])), 3), file=sys.stderr)
+    r_batch = float(np.nanmean(np.concatenate(batch_r)))
+    out: dict = {"takes": takes, "batch_synthesize_audio": {
+        "mouth_r_capture": round(r_batch, 3), "jaw_open_r_capture": round(float(np.nanmean(np.concatenate(batch_jaw_r))), 3)}}
+    for voice, row in rows.items():
+        lat = np.concatenate(row["latency"])
+        r_live = float(np.nanmean(np.concatenate(row["r_capture"])))
+        out[f"voice_{voice}"] = {
+            "latency_median_ms": round(1000 * float(np.median(lat)), 1),
+            "latency_p95_ms": round(1000 * float(np.percentile(lat, 95)), 1),
+            "latency_max_ms": round(1000 * float(np.max(lat)), 1),
+            "rtf_cpu": round(float(np.mean(row["rtf_cpu"])), 4),
+            "mouth_r_capture": round(r_live, 3),
+            "mouth_r_batch": round(float(np.nanmean(np.concatenate(row["r_batch"]))), 3),
+            "jaw_open_r_capture": round(float(np.nanmean(np.concatenate(row["jaw_r_capture"]))), 3),
+            "quality_ratio": round(r_live / r_batch, 3)}
+    pcm = read_pcm(facegood / "wav" / f"{takes[0]}.wav")
+    out["concurrent"] = {voice: concurrent(db_path, pcm, counts, seconds, workers, (f"stream.voice={voice}",))
+                         for voice in models}
+    return out
 
 
 def main() -> None:
@@ -292,6 +365,12 @@ def main() -> None:
     ap.add_argument("--workers", default="1,2", help="server processes (--workers) to measure")
     ap.add_argument("--skip-concurrent", action="store_true")
     ap.add_argument("--skip-offline", action="store_true")
+    ap.add_argument("--facegood", type=Path, default=None,
+                    help="FACEGOOD's folder (benchmarks/real_speech_lipsync.py's layout): the real-voice section")
+    ap.add_argument("--facegood-takes", default="1114_2_04,1114_2_05,1114_3_15",
+                    help="its takes streamed (default: the three no choice was made on)")
+    ap.add_argument("--work", type=Path, default=Path("out/live_bench"), help="cache of the batch syntheses")
+    ap.add_argument("--voice-seconds", type=float, default=20.0, help="real voice per concurrent stream")
     args = ap.parse_args()
     config = Config.load()
     rows = list(csv.DictReader(open(args.corpus / "manifest.csv")))
@@ -304,6 +383,10 @@ def main() -> None:
         counts = [int(x) for x in args.streams.split(",")]
         pcm = read_pcm(args.corpus / "audio" / f"{takes[0]}.wav")
         result["concurrent"] = [concurrent(args.db, pcm, counts, args.seconds, int(w)) for w in args.workers.split(",")]
+    if args.facegood is not None:
+        result["real_voice"] = real_voice(args.db, args.facegood, args.facegood_takes.split(","), args.work, config,
+                                          [int(x) for x in args.streams.split(",")], args.voice_seconds,
+                                          int(args.workers.split(",")[-1]))
     result["load_average_after"] = os.getloadavg()
     print(json.dumps(result, indent=1))
 

@@ -481,7 +481,8 @@ def build_db(ctx: Context, pca_path: Path, output: Path):
 @click.option("--phonemes", type=EXISTING, default=None, help="The utterance's phone timing (TextGrid or .lab).")
 @click.option("--audio", type=EXISTING, default=None,
               help="The speech: aligned on the fly to --text (without it, recognised: align.recognition), or "
-                   "with --phonemes its timing; the mouth opens with its loudness too (synthesize.loudness_weight).")
+                   "with --phonemes its timing; the voice shapes the mouth too (synthesize.voice_recognized, "
+                   "synthesize.voice_given).")
 @click.option("--text", default=None, help="What --audio says.")
 @click.option("--emotions", type=EXISTING, default=None, help="Emotion spans: 'start_s end_s emotion' lines, or a TextGrid tier 'emotions'.")
 @click.option("--constraints", type=EXISTING, default=None, help="Motion-node constraints: 'INDEX NODE' or 'TIMEs NODE' lines (dp only).")
@@ -497,8 +498,10 @@ def synthesize(ctx: Context, db: Path, method, phonemes, audio, text, emotions, 
     --method picks the member of the method family: dp (the default; --search greedy or
     synthesize.search = greedy runs the greedy search instead), greedy, mean, and the fitted
     trajectory (Huang et al. Eq. 6-7) and coarticulation (Cohen-Massaro) models, whose model file
-    (facesynth fit-method) is then the first argument. With --audio, the mouth opens with the
-    voice's loudness as well as with the phones (synthesize.loudness_weight; 0: phones alone).
+    (facesynth fit-method) is then the first argument. With --audio the voice shapes the mouth
+    too: recognised without --text or --phonemes, its articulation (the acoustic articulation
+    model: opening, rounding, closures; synthesize.voice_recognized), else its loudness
+    (synthesize.voice_given, synthesize.loudness_weight); "off": the phones alone.
 
     \b
     Example:
@@ -526,7 +529,8 @@ def synthesize(ctx: Context, db: Path, method, phonemes, audio, text, emotions, 
         ctx.say(f"warning: the trajectory model has no Gaussian of /{phone}/; it uses the pooled Gaussian of its "
                 f"viseme class ({group}).")
     phases = [("device choice", "device_choice_s"), ("transition costs", "transition_s"), ("step costs", "steps_s"),
-              ("OpenCL set-up", "opencl_setup_s"), ("search", "search_s"), ("post-processing", "postprocess_s")]
+              ("OpenCL set-up", "opencl_setup_s"), ("search", "search_s"), ("post-processing", "postprocess_s"),
+              ("the voice", "voice_s")]
     timed = ([("read database" if on_database else "read model", s.load_s)]
              + [(label, s.phases[key]) for label, key in phases if s.phases.get(key) is not None]
              + [("input hashes", s.hash_wait_s), ("write", s.write_s)])
@@ -1426,8 +1430,11 @@ def head_motion(ctx: Context, db: Path, audio: Path, corpus_path: Path, output: 
 def stream(ctx: Context, db_path: Path, audio: str, serve: str | None, livelink: str | None, method: str | None,
            lookahead: int | None, markers: bool, realtime: bool, workers: int):
     """Live synthesis: audio in as it arrives, frames of ARKit curves out with a fixed latency
-    (JSON lines on standard output, or WebSocket messages), never revised (docs/live.md).
-    DB is the motion database, or with --method trajectory a trajectory model (fit-method trajectory).
+    (JSON lines on standard output, or WebSocket messages), never revised (docs/live.md). From a
+    voice alone each frame goes out once its audio and 46 ms more have arrived, the mouth the
+    voice's articulation (stream.voice); with phones given by a TTS engine, the motion nodes are
+    chosen with a bounded look-ahead. DB is the motion database, or with --method trajectory a
+    trajectory model (fit-method trajectory).
     With --serve it serves WebSocket clients until Ctrl-C or SIGTERM, e.g.
     `facesynth stream db.h5 --serve 127.0.0.1:8765 --livelink 127.0.0.1:11111`.
 

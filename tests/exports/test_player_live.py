@@ -141,16 +141,19 @@ def test_live_page_in_headless_chromium(stream_url, tiny_corpus, held_out_take, 
     assert float(body["jaw-max"]) > 0.2  # the mouth opened on the speech
     assert float(body["jaw"]) < 0.5 * float(body["jaw-max"])  # and closed at its end
     assert body["live-states"].split(" | ")[:3] == ["connecting", "connected", "streaming (file)"]
-    _check_latency(body, frames)
+    # a file is sent up to 100 ms ahead of its time in the speech, so its frames may come back before it
+    _check_latency(body, frames, ahead_ms=100.0)
 
 
-def _check_latency(body: dict, frames: int) -> None:
-    """Every frame's latency was measured, and the page's median, p95 and last are times after
-    the speech they show (finite, positive: a frame cannot come back before its audio went out)."""
+def _check_latency(body: dict, frames: int, ahead_ms: float = 0.0) -> None:
+    """Every frame's latency was measured, and the page's median, p95 and last (ms) are finite and
+    no earlier than the audio they show could have reached the server: ``ahead_ms`` before its
+    time in the speech (a microphone's sample goes only once it is spoken: 0, so positive)."""
     assert int(body["latency-count"]) == frames
     median, p95, last = (float(body[f"latency-{k}"]) for k in ("median", "p95", "last"))
-    assert all(math.isfinite(v) and v > 0 for v in (median, p95, last)), body
-    assert median <= p95 < 30_000, body  # (ms; seconds off would be a wrong origin, not a slow server)
+    shown = {k: v for k, v in body.items() if k.startswith("latency")}
+    assert all(math.isfinite(v) and v > -ahead_ms for v in (median, p95, last)), shown
+    assert median <= p95 < 30_000, shown  # (seconds off would be a wrong origin, not a slow server)
 
 
 def _wait(page, done, deadline_s: float, what: str) -> dict:
@@ -209,7 +212,7 @@ def _check_microphone_stream(body: dict, seconds_on: float) -> None:
     assert 0.5 * seconds_on < captured < seconds_on + 0.5, (captured, seconds_on)
     assert frames == pytest.approx(captured * fps, abs=3)
     assert 5 <= int(body["live-shown"]) <= frames
-    assert float(body["jaw-max"]) > 0.2  # the mouth opened on the voice the fake microphone played
+    assert float(body["jaw-max"]) > 0.1  # the mouth opened on the voice the fake microphone played (rest: 0.02)
     _check_latency(body, frames)
 
 
