@@ -2,7 +2,7 @@
 against the batch output of the same utterance.
 
     .venv/bin/python benchmarks/live_stream.py --db db.h5 --corpus corpus/ [--trajectory traj.h5] \
-        [--takes 8] [--streams 1,4,8,12] [--seconds 8] > benchmarks/live_stream.json
+        [--takes 8] [--streams 1,4,8,12] [--seconds 8] [--facegood FACEGOOD_DIR] > benchmarks/live_stream.json
 
 ``--db`` is a database built from the sample corpus ``--corpus`` (its held-out takes are the
 utterances; their clean ground truth scores the mouth); ``--trajectory``, a trajectory model
@@ -32,6 +32,15 @@ trained on it (``facesynth train-trajectory``), adds the rows of the trajectory 
    clients push ``--seconds`` of audio each at real-time speed (20 ms chunks) at once, and latency is measured
    on the clock of this process (frame received minus the send of the chunk holding its sample).
    A stream count is **held** when its p95 latency stays within 100 ms of one stream's.
+3. ``voice_on_actress``: the voice's frames (``stream.voice = "articulation"``, the default for
+   audio) on the held-out takes: latency as in 1., the live mouth opening against the clean
+   truth beside batch ``synthesize --audio`` (the phones recognised, the voice fused).
+4. ``real_voice`` (with ``--facegood``): a real voice, FACEGOOD's takes (the three used for no
+   choice by default), streamed with the voice's frames and with the phones' (``stream.voice =
+   "off"``): latency, CPU, and the live mouth opening and jawOpen against the speaker's capture
+   and against batch ``synthesize --audio`` of the same audio (cached in ``--work``, as
+   ``real_speech_lipsync.py`` caches it), then 2. on that voice, both ways, at ``--voice-seconds``.
+   The rows of 1. measure the phones' path (``stream.voice = "off"``); 2. runs the defaults.
 
 Prints JSON; the machine's load average is beside the numbers (a shared machine's wall times
 scale with it).
@@ -56,9 +65,11 @@ import numpy as np
 
 from facesynth.base.config import Config
 from facesynth.base.phonemes import PAU
+from facesynth.domain import methods
 from facesynth.domain.evaluation.held_out import TruthFolder
 from facesynth.domain.live.core import LiveModel
 from facesynth.domain.live.session import Session
+from facesynth.domain.methods import MethodSettings, core
 from facesynth.domain.methods.trajectory import synthesize_motion
 from facesynth.domain.postprocess.concatenation import downsample
 from facesynth.domain.search.inputs import read_utterance, utterance
@@ -287,6 +298,42 @@ def concurrent(db_path: Path, pcm: bytes, counts: list[int], seconds: float, wor
         proc.wait(30)
 
 
+def actress_voice(db_path: Path, corpus: Path, takes: list[str], config: Config) -> dict:
+    """The voice's frames (``stream.voice = "articulation"``) on the actress's held-out takes: the
+    simulated real-time latency (as ``offline``) and the live mouth opening against her clean
+    truth, beside batch synthesis from the same audio alone (the phones recognised, the voice's
+    articulation fused: ``synthesize --audio``)."""
+    db = MotionDatabase.read(db_path)
+    truth = TruthFolder.open(corpus, db.marker_names, config.settings("normalize"))
+    model = LiveModel(db, config.settings("synthesize"), config.settings("stream"), config.settings("solve"))
+    settings = MethodSettings.of(config)
+    settings = replace(settings, synthesize=replace(settings.synthesize, use_opencl=False))
+    names = list(db.marker_names)
+    member = methods.get("dp")
+    latency, r_live, r_batch, cpu, audio_s = [], [], [], 0.0, 0.0
+    for take in takes:
+        wav = corpus / "audio" / f"{take}.wav"
+        pcm = read_pcm(wav)
+        live, _, lat, _, t_cpu, _ = stream_offline(model, config.settings("align"), pcm, None)
+        latency.append(lat)
+        cpu += t_cpu
+        audio_s += len(pcm) / 32000
+        read = core.read_utterance(config.settings("ingest"), audio=wav, align=config.settings("align"))
+        batch = core.synthesize_utterance(member, db, read, settings).motion.markers
+        clean, _ = truth.clean(take, names, db.reference)
+        clean = downsample(clean, db.fps, model.stream.fps)
+        n = min(len(clean), len(live), len(batch))
+        o_truth = opening(clean[:n], names)
+        r_live.append(pearson(opening(live[:n], names), o_truth))
+        r_batch.append(pearson(opening(batch[:n], names), o_truth))
+    lat = np.concatenate(latency)
+    return {"takes": takes, "latency_median_ms": round(1000 * float(np.median(lat)), 1),
+            "latency_p95_ms": round(1000 * float(np.percentile(lat, 95)), 1), "rtf_cpu": round(cpu / audio_s, 4),
+            "mouth_r_truth_live": round(float(np.nanmean(r_live)), 3),
+            "mouth_r_truth_batch_audio": round(float(np.nanmean(r_batch)), 3),
+            "quality_ratio": round(float(np.nanmean(r_live) / np.nanmean(r_batch)), 3)}
+
+
 def real_voice(db_path: Path, facegood: Path, takes: list[str], work: Path, config: Config, counts: list[int],
                seconds: float, workers: int) -> dict:
     """A real voice (FACEGOOD's takes, ``benchmarks/real_speech_lipsync.py``'s layout) streamed with
@@ -379,6 +426,7 @@ def main() -> None:
               "cpus": os.cpu_count(), "load_average": os.getloadavg()}
     if not args.skip_offline:
         result["offline"] = offline(args.db, args.corpus, takes, config, args.trajectory)
+    result["voice_on_actress"] = actress_voice(args.db, args.corpus, takes, config)
     if not args.skip_concurrent:
         counts = [int(x) for x in args.streams.split(",")]
         pcm = read_pcm(args.corpus / "audio" / f"{takes[0]}.wav")

@@ -16,6 +16,7 @@ from facesynth.domain.corpus.statistics import (
     normalise_by_range,
     opening_events,
     phone_class_opening,
+    phone_opening_z,
     speech_masks,
 )
 from facesynth.domain.rig.face import load_face_rig
@@ -113,6 +114,19 @@ def test_phone_class_opening_averages_the_frames_of_each_class():
     out = phone_class_opening([x], phones, FPS)
     assert out["open_vowel"] == 1.0 and out["bilabial"] == 0.0 and out["pause"] == 0.0
     assert out["close_vowel"] is None
+
+
+def test_phone_opening_z_is_the_standardized_opening_over_each_phone():
+    t = np.arange(60) / FPS
+    x = np.where(t < 1.0, 2.0, 0.0)  # open for the vowel, closed for /f/
+    phones = [[(0.0, 1.0, "aa"), (1.0, 2.0, "f")]]
+    out = phone_opening_z([x], phones, [np.ones(60, bool)], FPS)
+    assert out["aa"] == pytest.approx(1.0) and out["f"] == pytest.approx(-1.0)  # mean 1, sd 1
+    assert out["jh"] is None
+    # standardized over speech only: a long closed pause does not move the scale
+    quiet = np.concatenate([x, np.zeros(60)])
+    mask = np.concatenate([np.ones(60, bool), np.zeros(60, bool)])
+    assert phone_opening_z([quiet], phones, [mask], FPS)["aa"] == pytest.approx(1.0)
 
 
 def test_the_settings_reach_the_articulation(rig, marker_set):

@@ -7,8 +7,7 @@ import numpy as np
 import pytest
 
 from facesynth.base.errors import InputError
-from facesynth.domain.methods import MethodSettings, core
-from facesynth.domain.methods import voice
+from facesynth.domain.methods import MethodSettings, core, voice
 from facesynth.domain.speech import articulation
 from facesynth.domain.speech.loudness import lip_gaps
 

@@ -96,20 +96,32 @@ def _t(**kw) -> dict[str, float]:
 
 #: Viseme targets per Festival phone (channels not named are 0). Rounding (funnel/pucker)
 #: comes from :data:`_ROUNDED` through the look-ahead; here only what the phone itself sets.
+#:
+#: Revised against real speakers (docs/real-speech.md, "The actress's phones"): the mouth
+#: opening per phone in standard units showed English speakers nearly closing /f v/ and /jh/
+#: where facesynth opened them, and /aa/ overshooting, /ey/ short; her own truth agreed for
+#: /f v/ (-0.1 against FACEGOOD's -0.4 to -0.9), /aa/ (+1.7 against +0.5 to +0.7) and /jh/. So:
+#: /f v/ with the jaw nearly closed and the lower lip pushed up and tucked under the upper teeth,
+#: the upper lip not raised (labiodentals: the lower lip meets the upper incisors; Ladefoged &
+#: Johnson, *A Course in Phonetics*); on the built-in rig mouthRollLower alone parts the inner
+#: lips (9 mm at the weight /f/ had, half an /aa/), with mouthShrugLower 0.3 they stay 3 mm apart; /ch jh/ with a high jaw and the lips barely parted (postalveolars have
+#: among the highest jaw positions of the consonants; Keating, Lindblom, Lubker & Kreiman 1994);
+#: /aa/ less open, /ey/ more. /r/ and /ao/ are left: her truth already opens them no more than
+#: the real speakers do (/r/ -0.4, /ao/ +1.3), so what opens them in synthesis is the search.
 VISEME_TARGETS: dict[str, dict[str, float]] = {
-    "aa": _t(jawOpen=0.42, lowerDown=0.35, upperUp=0.15), "ae": _t(jawOpen=0.36, lowerDown=0.35, upperUp=0.25, spread=0.2, stretch=0.15),
+    "aa": _t(jawOpen=0.36, lowerDown=0.3, upperUp=0.15), "ae": _t(jawOpen=0.36, lowerDown=0.35, upperUp=0.25, spread=0.2, stretch=0.15),
     "ah": _t(jawOpen=0.32, lowerDown=0.3, upperUp=0.12), "ax": _t(jawOpen=0.18, lowerDown=0.15),
     "ao": _t(jawOpen=0.36, lowerDown=0.25), "aw": _t(jawOpen=0.38, lowerDown=0.3), "ay": _t(jawOpen=0.36, lowerDown=0.3, spread=0.12),
     "eh": _t(jawOpen=0.26, lowerDown=0.3, upperUp=0.15, spread=0.18, stretch=0.1), "er": _t(jawOpen=0.16, shrugUpper=0.15),
-    "axr": _t(jawOpen=0.16), "ey": _t(jawOpen=0.22, lowerDown=0.25, spread=0.28, stretch=0.12),
+    "axr": _t(jawOpen=0.16), "ey": _t(jawOpen=0.3, lowerDown=0.3, spread=0.28, stretch=0.12),
     "ih": _t(jawOpen=0.16, lowerDown=0.2, spread=0.25, stretch=0.1), "iy": _t(jawOpen=0.1, lowerDown=0.12, spread=0.4, stretch=0.2),
     "ow": _t(jawOpen=0.26, lowerDown=0.12), "oy": _t(jawOpen=0.26, lowerDown=0.12), "uh": _t(jawOpen=0.17),
     "uw": _t(jawOpen=0.1), "el": _t(jawOpen=0.16, lowerDown=0.1), "en": _t(jawOpen=0.12, lowerDown=0.1),
     "em": _t(jawOpen=0.05), "p": _t(jawOpen=0.06), "b": _t(jawOpen=0.06), "m": _t(jawOpen=0.05),
-    "f": _t(jawOpen=0.08, rollLower=0.55, upperUp=0.2, shrugUpper=0.1), "v": _t(jawOpen=0.08, rollLower=0.5, upperUp=0.18, shrugUpper=0.1),
+    "f": _t(jawOpen=0.03, rollLower=0.3, shrugLower=0.3, shrugUpper=0.1), "v": _t(jawOpen=0.03, rollLower=0.28, shrugLower=0.3, shrugUpper=0.1),
     "w": _t(jawOpen=0.08), "r": _t(jawOpen=0.12), "y": _t(jawOpen=0.08, spread=0.3, stretch=0.1),
     "sh": _t(jawOpen=0.08, upperUp=0.25, lowerDown=0.15, jawForward=0.12), "zh": _t(jawOpen=0.08, upperUp=0.25, lowerDown=0.15, jawForward=0.12),
-    "ch": _t(jawOpen=0.08, upperUp=0.25, lowerDown=0.15, jawForward=0.1), "jh": _t(jawOpen=0.08, upperUp=0.25, lowerDown=0.15, jawForward=0.1),
+    "ch": _t(jawOpen=0.04, upperUp=0.12, lowerDown=0.05, jawForward=0.1), "jh": _t(jawOpen=0.04, upperUp=0.12, lowerDown=0.05, jawForward=0.1),
     "s": _t(jawOpen=0.05, spread=0.22, stretch=0.15, jawForward=0.08, lowerDown=0.1),
     "z": _t(jawOpen=0.05, spread=0.2, stretch=0.15, jawForward=0.08, lowerDown=0.1),
     "th": _t(jawOpen=0.12, lowerDown=0.2, upperUp=0.1), "dh": _t(jawOpen=0.12, lowerDown=0.2, upperUp=0.1),

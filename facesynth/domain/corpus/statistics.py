@@ -293,6 +293,31 @@ def phone_class_opening(curves: list[np.ndarray], phones: list[list[tuple[float,
     return {name: (sums[name] / counts[name] if counts[name] else None) for name in sums}
 
 
+#: Phones whose mean opening in standard units is reported (:func:`phone_opening_z`): the vowels
+#: and consonants whose jaw real speakers and the actress were seen to disagree on, and /p b m/.
+Z_PHONES = ("aa", "ae", "ah", "ao", "ey", "eh", "iy", "uw", "f", "v", "r", "jh", "ch", "sh", "p", "b", "m")
+
+
+def phone_opening_z(curves: list[np.ndarray], phones: list[list[tuple[float, float, str]]], masks: list[np.ndarray],
+                    fps: float = ARTICULATION_FPS) -> dict[str, float | None]:
+    """Mean of the mouth opening in standard units over each phone of :data:`Z_PHONES`: every take's
+    curve (T,) standardized by the mean and standard deviation of its speech frames (``masks``,
+    :func:`speech_masks`), then averaged over the frames of every token of the phone (phones per
+    take as (start s, end s, Festival label)); None for a phone with no frames."""
+    sums = dict.fromkeys(Z_PHONES, 0.0)
+    counts = dict.fromkeys(Z_PHONES, 0)
+    for curve, segs, mask in zip(curves, phones, masks):
+        speech = curve[mask] if mask.any() else curve
+        z = (curve - speech.mean()) / max(float(speech.std()), 1e-12)
+        t = np.arange(len(curve)) / fps
+        for a, b, label in segs:
+            if label in sums:
+                sel = (t >= a) & (t < b)
+                sums[label] += float(z[sel].sum())
+                counts[label] += int(sel.sum())
+    return {p: (sums[p] / counts[p] if counts[p] else None) for p in Z_PHONES}
+
+
 def speech_masks(phones: list[list[tuple[float, float, str]]], lengths: list[int], fps: float = ARTICULATION_FPS,
                  min_pause_s: float = MIN_PAUSE_S) -> list[np.ndarray]:
     """Per take, (T,) bool: the frames of speech, i.e. outside every pause (consecutive phones
@@ -332,6 +357,7 @@ class ArticulationStatistics:
     coarticulation_span_s: :func:`autocorrelation_span` of the range-normalised mouth opening (s).
     audio_lag: :func:`audio_lag`; None without the audio envelopes.
     phone_class_opening: :func:`phone_class_opening`; None without phones.
+    phone_opening_z: :func:`phone_opening_z`; None without phones.
     """
 
     seconds: float
@@ -344,6 +370,7 @@ class ArticulationStatistics:
     coarticulation_span_s: float
     audio_lag: AudioLag | None
     phone_class_opening: dict[str, float | None] | None
+    phone_opening_z: dict[str, float | None] | None = None
 
 
 def articulation_statistics(openings: list[np.ndarray], jaw: list[np.ndarray], fps: float = ARTICULATION_FPS,
@@ -370,4 +397,6 @@ def articulation_statistics(openings: list[np.ndarray], jaw: list[np.ndarray], f
         coarticulation_span_s=autocorrelation_span(normalised, fps, masks=masks),
         audio_lag=audio_lag(envelopes, normalised, fps) if envelopes is not None else None,
         phone_class_opening=phone_class_opening(normalised, phones, fps) if phones is not None else None,
+        phone_opening_z=phone_opening_z(openings, phones, masks, fps) if phones is not None and masks is not None
+        else None,
     )
