@@ -10,7 +10,10 @@ from facesynth.base.errors import ArtifactError, InputError
 from facesynth.domain.live.core import LiveModel, LiveSynthesizer
 from facesynth.domain.live.phones import given_phones
 from facesynth.domain.methods.trajectory import synthesize_motion
+from facesynth.domain.search.costs import step_costs
+from facesynth.domain.search.dp import dp_numpy
 from facesynth.domain.search.inputs import read_utterance
+from facesynth.domain.search.pairs import transition_costs
 from facesynth.domain.search.synthesis import render_path, synthesize
 from facesynth.model.motiondb import MotionDatabase
 
@@ -116,12 +119,24 @@ def test_a_pause_does_not_hold_its_frames_back_for_the_next_phone(db, utt, confi
             assert f.ready_at <= ends[k] + 1e-9, (f.index, f.ready_at, ends[k])
 
 
-def test_a_short_lookahead_changes_few_decisions(db, utt, config):
-    whole = _batch(db, utt, config).path
-    live, _, _ = _stream(_model(db, config, method="dp", lookahead_phones=2), utt)
-    spoken = np.array([p != "pau" for p in utt.phones])
-    differ = (np.array(live.committed) != whole) & spoken
-    assert differ.sum() <= spoken.sum() // 2
+@pytest.mark.parametrize("lookahead", [1, 2, 3])
+def test_a_short_lookahead_costs_little(db, utt, config, lookahead):
+    """The fixed-lag path's cost (Eq. 4, the whole utterance's objective) is within 1% of the
+    whole-utterance optimum. Its nodes may differ more: a small database holds near-equal
+    stretches (on the tiny corpus a run of 7 of 16 spoken steps differs at every look-ahead
+    from 1 to 4, for 0.004% to 0.5% of the cost)."""
+    s = replace(config.settings("synthesize"), use_opencl=False)
+    tc = transition_costs(db, s, False).dense()
+    steps = step_costs(list(utt.phones), list(utt.emotions), db.nodes.phone, db.nodes.emotion, {}, s).total
+
+    def cost(path) -> float:
+        path = np.asarray(path)
+        return float(steps[np.arange(len(path)), path].sum() + tc[path[:-1], path[1:]].sum())
+
+    best = dp_numpy(tc, steps)
+    assert cost(best.path) == pytest.approx(best.cost, rel=1e-5)  # the objective the DP minimizes
+    live, _, _ = _stream(_model(db, config, method="dp", lookahead_phones=lookahead), utt)
+    assert best.cost <= cost(live.committed) <= 1.01 * best.cost
 
 
 def test_greedy_with_the_whole_lookahead_is_batch_greedy(db, utt, config):
