@@ -109,7 +109,8 @@ $(OUT)/isomap.h5: $(OUT)/db_clean.h5 $(CONFIG)
 	$(FS) isomap $< -o $@ --images $(OUT)/isomaps --overwrite
 
 # Two held-out (test) sentences of the small corpus, each asked for in another emotion (the mouth
-# opening with the phones and the voice's loudness), solved onto the built-in rig and rendered
+# opening with the phones and the voice: its loudness, the phones being given; synthesize.voice_given),
+# solved onto the built-in rig and rendered
 # beside openfacefx's lip sync of the same phones on the same rig and timing (left "facesynth",
 # right "openfacefx").
 DEMO_TAKES  := happy_s016 sad_s017

@@ -347,9 +347,9 @@ def export(animation: StrPath | Motion | MeshAnimation | RigCurves, format: str,
         else:
             assert isinstance(animation, (Motion, MeshAnimation, RigCurves))
             anim = of_artifact(animation, Path(f"the {_KIND_WHAT[animation.KIND]} given"))
-        done = exporting.export(form, anim, out, cfg.settings("export"), fps=fps, head_motion=head_motion,
-                                audio=_path(audio), mesh=_path(mesh), overwrite=overwrite)
-    return list(done.files)
+        _, files = exporting.export(form, anim, out, cfg.settings("export"), fps=fps, head_motion=head_motion,
+                                    audio=_path(audio), mesh=_path(mesh), overwrite=overwrite)
+    return list(files)
 
 
 # --- helpers --------------------------------------------------------------------------------

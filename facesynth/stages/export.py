@@ -20,14 +20,31 @@ place), never replacing an existing output without ``--overwrite``.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from pathlib import Path
 
 from facesynth.base.config import ExportSettings
 from facesynth.domain.exports import format as exporting
 from facesynth.domain.exports.animation import load
-from facesynth.domain.exports.format import ExportResult
 
-__all__ = ["ExportResult", "run"]
+
+@dataclass(frozen=True)
+class ExportResult:
+    """What ``facesynth export`` wrote.
+
+    frames: frames exported.
+    fps: their rate (frames/s).
+    seconds: the animation's length (s).
+    files: every file written: the output first, then a glTF's audio beside it, or an OBJ
+        sequence's files inside its folder.
+    kind: the kind of artifact exported ('motion', 'meshanim' or 'curves').
+    """
+
+    frames: int
+    fps: float
+    seconds: float
+    files: list[Path]
+    kind: str
 
 
 def run(artifact: Path, fmt: str, output: Path, settings: ExportSettings, *, fps: float | None = None,
@@ -38,5 +55,6 @@ def run(artifact: Path, fmt: str, output: Path, settings: ExportSettings, *, fps
     The steps are the ones :mod:`facesynth.api` calls (:func:`exporting.chosen_format`,
     :func:`exporting.export`), so the command and the API write the same files."""
     form = exporting.chosen_format(fmt, output, audio, overwrite)
-    return exporting.export(form, load(artifact), output, settings, fps=fps, head_motion=head_motion, audio=audio,
-                            mesh=mesh, overwrite=overwrite)
+    anim, files = exporting.export(form, load(artifact), output, settings, fps=fps, head_motion=head_motion,
+                                   audio=audio, mesh=mesh, overwrite=overwrite)
+    return ExportResult(anim.n_frames, anim.fps, anim.duration_s, files, anim.kind)

@@ -24,15 +24,39 @@ synthesis) is always solved with the regularized settings.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from pathlib import Path
 
 from facesynth.base.config import SolveSettings
 from facesynth.domain.retarget import facial_solve
-from facesynth.domain.retarget.facial_solve import SolveResult
 from facesynth.domain.rig.loading import load_rig
 from facesynth.model.artifacts import check_output
 
-__all__ = ["SolveResult", "run"]
+
+@dataclass(frozen=True)
+class SolveResult:
+    """What ``facesynth solve`` solved.
+
+    frames: frames of the curves.
+    shapes: the rig's blendshapes.
+    iterations: the solver's iterations.
+    residual_rms: RMS marker residual (rig units).
+    rig: the rig's name.
+    marker_residual_median_mm, marker_residual_p95_mm: the median and 95th percentile of each
+        bound marker's distance from the solved rig, per frame, in the motion's millimetres.
+    take: the solved take (a capture), or None.
+    exact: solved without smoothing or ridge (a capture posed from curves, ``solve.posed_captures``).
+    """
+
+    frames: int
+    shapes: int
+    iterations: int
+    residual_rms: float
+    rig: str
+    marker_residual_median_mm: float
+    marker_residual_p95_mm: float
+    take: str | None
+    exact: bool = False
 
 
 def run(motion_path: Path, out: Path, settings: SolveSettings, rig_path: Path | None = None,
@@ -48,4 +72,6 @@ def run(motion_path: Path, out: Path, settings: SolveSettings, rig_path: Path | 
     used, exact = facial_solve.settings_for(motion_path, settings)
     solved = facial_solve.solve(motion, rig, used, str(motion_path), exact=exact)
     facial_solve.write(solved, out, used, facial_solve.recorded_inputs(motion_path, rig_path), overwrite=overwrite)
-    return solved.result
+    return SolveResult(len(solved.curves.weights), len(rig.shape_names), solved.iterations, solved.residual_rms,
+                       rig.name, solved.marker_residual_median_mm, solved.marker_residual_p95_mm, motion.take,
+                       solved.exact)

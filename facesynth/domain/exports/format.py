@@ -141,25 +141,6 @@ def _write_one(fmt: ExportFormat, anim: Exportable, output: Path, options: Expor
     return [Path(output)]
 
 
-@dataclass(frozen=True)
-class ExportResult:
-    """What ``facesynth export`` wrote.
-
-    frames: frames exported.
-    fps: their rate (frames/s).
-    seconds: the animation's length (s).
-    files: every file written: the output first, then a glTF's audio beside it, or an OBJ
-        sequence's files inside its folder.
-    kind: the kind of artifact exported ('motion', 'meshanim' or 'curves').
-    """
-
-    frames: int
-    fps: float
-    seconds: float
-    files: list[Path]
-    kind: str
-
-
 def chosen_format(fmt: str, output: Path, audio: Path | None = None, overwrite: bool = False) -> ExportFormat:
     """The registered export format ``fmt``, after the checks made before any work: its optional
     dependency installed, ``audio`` only for a format that names one (and a WAV that reads), the
@@ -183,9 +164,11 @@ def chosen_format(fmt: str, output: Path, audio: Path | None = None, overwrite: 
 
 def export(form: ExportFormat, anim: Exportable, output: Path, settings: ExportSettings, *, fps: float | None = None,
           head_motion: bool = False, audio: Path | None = None, mesh: Path | None = None,
-          overwrite: bool = False) -> ExportResult:
-    """What ``facesynth export`` and :func:`facesynth.export` write: ``anim`` (with the faces of ``mesh`` when given) written as ``form``
-    at ``output``, at ``fps`` or the format's rate (:meth:`ExportFormat.rate`)."""
+          overwrite: bool = False) -> tuple[Exportable, list[Path]]:
+    """What ``facesynth export`` and :func:`facesynth.export` write: ``anim`` (with the faces of
+    ``mesh`` when given) written as ``form`` at ``output``, at ``fps`` or the format's rate
+    (:meth:`ExportFormat.rate`). Returns the animation as written (resampled) and every file
+    written: the output first, then a glTF's audio beside it, or an OBJ sequence's files."""
     if mesh is not None:
         anim = use_mesh(anim, mesh)
     form.check(anim, head_motion)
@@ -194,4 +177,4 @@ def export(form: ExportFormat, anim: Exportable, output: Path, settings: ExportS
         raise UsageError(f"--fps {rate:g} is not a frame rate; give a number of frames per second in (0, 1000].")
     anim = anim.resampled(rate)
     files = write_export(form, anim, output, ExportOptions(head_motion, Path(output).stem, audio), overwrite)
-    return ExportResult(anim.n_frames, anim.fps, anim.duration_s, files, anim.kind)
+    return anim, files

@@ -48,32 +48,6 @@ def take_motion(normalized: NormalizedFrames, take: str | None, output_fps: floa
                   downsample(rel_t, frames.fps, output_fps).astype(np.float32), source="capture", take=take)
 
 
-@dataclass(frozen=True)
-class SolveResult:
-    """What ``facesynth solve`` solved.
-
-    frames: frames of the curves.
-    shapes: the rig's blendshapes.
-    iterations: the solver's iterations.
-    residual_rms: RMS marker residual (rig units).
-    rig: the rig's name.
-    marker_residual_median_mm, marker_residual_p95_mm: the median and 95th percentile of each
-        bound marker's distance from the solved rig, per frame, in the motion's millimetres.
-    take: the solved take (a capture), or None.
-    exact: solved without smoothing or ridge (a capture posed from curves, ``solve.posed_captures``).
-    """
-
-    frames: int
-    shapes: int
-    iterations: int
-    residual_rms: float
-    rig: str
-    marker_residual_median_mm: float
-    marker_residual_p95_mm: float
-    take: str | None
-    exact: bool = False
-
-
 def settings_for(motion_path: Path, settings: SolveSettings) -> tuple[SolveSettings, bool]:
     """(the settings ``motion_path`` is solved with, whether they are the exact ones): for a
     normalized capture posed from curves with ``posed_captures = "exact"``, ``settings`` without
@@ -99,10 +73,22 @@ def read_motion(motion_path: Path, settings: SolveSettings, take: str | None = N
 
 @dataclass
 class Solved:
-    """The curves of a solve and what ``solve`` reports about them."""
+    """The curves of a solve and what it reports about them.
+
+    curves: the ``curves`` artifact's content (weights (T, E) float32, head motion, provenance).
+    iterations: the solver's iterations.
+    residual_rms: RMS marker residual (rig units).
+    marker_residual_median_mm, marker_residual_p95_mm: the median and 95th percentile of each
+        bound marker's distance from the solved rig, per frame, in the motion's millimetres.
+    exact: solved without smoothing or ridge (a capture posed from curves, ``solve.posed_captures``).
+    """
 
     curves: RigCurves
-    result: SolveResult
+    iterations: int
+    residual_rms: float
+    marker_residual_median_mm: float
+    marker_residual_p95_mm: float
+    exact: bool
 
 
 def solve(motion: Motion, rig: Rig, settings: SolveSettings, where: str = "the motion", exact: bool = False) -> Solved:
@@ -113,10 +99,8 @@ def solve(motion: Motion, rig: Rig, settings: SolveSettings, where: str = "the m
     method = "bounded least squares, no smoothing or ridge (a capture posed from curves)" if exact else None
     curves = solved_curves(motion, rig, weights, residual, motion.frame_provenance(), method)
     marker_mm = per_marker_residual_mm(motion, rig, weights)
-    return Solved(curves, SolveResult(len(weights), len(rig.shape_names), iterations,
-                                      float(np.sqrt(np.nanmean(residual**2))), rig.name,
-                                      float(np.nanmedian(marker_mm)), float(np.nanpercentile(marker_mm, 95)),
-                                      motion.take, exact))
+    return Solved(curves, iterations, float(np.sqrt(np.nanmean(residual**2))), float(np.nanmedian(marker_mm)),
+                  float(np.nanpercentile(marker_mm, 95)), exact)
 
 
 def write(solved: Solved, out: Path, settings: SolveSettings, inputs: list[Path], *, overwrite: bool = False) -> None:
