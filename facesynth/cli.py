@@ -1140,7 +1140,7 @@ def tune(ctx: Context, db: Path, validation: Path, method: str | None, output: P
 
     \b
     Example:
-      facesynth tune db.h5 --validation corpus.h5 -o tuned.toml --set tune.max_evaluations=12 --set tune.starts=3
+      facesynth tune db.h5 --validation corpus.h5 -o tuned.toml --set tune.max_evaluations=6 --set tune.starts=2
       facesynth synthesize db.h5 --phonemes corpus/labels/neutral_s016.TextGrid --config tuned.toml -o tuned.h5
     """
     from facesynth.base.progress import Overall
