@@ -754,6 +754,41 @@ def bind(ctx: Context, capture: Path, rig, frame, up, forward, output: Path):
             f"median {s.residual_median_mm:.2f} mm, 95th percentile {s.residual_p95_mm:.2f} mm) -> {output}")
 
 
+@main.command("fit-articulation")
+@click.argument("normalized", type=EXISTING)
+@click.option("--corpus", "corpus_path", type=EXISTING, required=True,
+              help="The ingested capture NORMALIZED was made from (facesynth ingest): its audio.")
+@click.option("--binding", type=EXISTING, default=None, help=_BINDING_HELP)
+@click.option("--takes", default=None, help="Comma-separated takes to fit on (default: every take with audio).")
+@click.option("-o", "--output", type=PATH, required=True, help="Output articulation.h5.")
+@stage
+def fit_articulation(ctx: Context, normalized: Path, corpus_path: Path, binding, takes, output: Path):
+    """Fit the voice's articulation model on a performer's own capture with its audio.
+
+    Per take: the voice's features against the mouth's opening, its closures and, where the
+    markers are bound on the built-in rig, the rig's jawOpen, mouthFunnel and mouthPucker (a
+    facial solve); ridge regression with a 46 ms look-ahead. Name the output in
+    synthesize.articulation_model so that this performer's voice shapes the mouth.
+
+    \b
+    Example:
+      facesynth fit-articulation normalized.h5 --corpus corpus.h5 -o articulation.h5
+      facesynth synthesize db.h5 --audio corpus/audio/neutral_s016.wav --set synthesize.articulation_model=articulation.h5 -o voiced.h5
+    """
+    from facesynth.stages import fit_articulation as stage
+
+    c = ctx.config
+    s = stage.run(normalized, corpus_path, output, c.settings("synthesize"), c.settings("solve"), binding=binding,
+                  takes=None if takes is None else [t.strip() for t in takes.split(",") if t.strip()],
+                  overwrite=ctx.overwrite)
+    if not s.solved:
+        ctx.say("note: the capture's markers are not bound on the rig (give --binding): the model predicts the "
+                "opening and closures alone, and the phones keep the lips' rounding.")
+    ctx.say(f"fitted the voice's articulation on {len(s.takes)} takes ({s.seconds:.0f} s of audio; look-ahead "
+            f"{1000 * s.look_ahead_s:.0f} ms): " + ", ".join(f"{k} r {v:.2f}" for k, v in s.fit_r.items())
+            + f" on the takes fitted -> {output}")
+
+
 @main.command()
 @click.argument("motion", type=EXISTING)
 @click.option("--rig", type=PATH, default=None, help=_RIG_HELP)

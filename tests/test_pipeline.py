@@ -88,7 +88,7 @@ def test_every_kind_has_its_writers_named():
     for kind in SCHEMAS:
         # a kind no command writes yet names what does write it (pipeline.OTHER_WRITERS)
         assert pipeline.writers(kind) or kind in pipeline.OTHER_WRITERS, f"no stage declares that it writes '{kind}'"
-    assert PRODUCERS["articulation"] == "`python benchmarks/voice_articulation.py --model-out`"
+    assert PRODUCERS["articulation"] == "`facesynth fit-articulation`"
     assert PRODUCERS["motion"] == ("`facesynth synthesize`, `facesynth expression restyle`, `facesynth batch` "
                                    "or `facesynth capture`")
     assert PRODUCERS["pca"] == "`facesynth pca`"

@@ -245,6 +245,11 @@ STAGES: tuple[Stage, ...] = (
            _s("bind", "run", "BindResult"), reads=("bind", "normalize"), output_options=("output",),
            takes="a capture (C3D, TRC, CSV) + rig", makes="binding CSV (`marker,vertex,rigid,residual_mm,flagged`)",
            paper="a user's markers placed on a rig"),
+    _stage("fit-articulation", "Fit the voice's articulation model on a performer's capture with its audio.",
+           "facesynth fit-articulation normalized.h5 --corpus corpus.h5 [--binding B] [--takes T,...] -o articulation.h5",
+           _s("fit_articulation", "run", "FitArticulationResult"), reads=("synthesize", "solve"),
+           inputs=("normalized", "corpus"), outputs=("articulation",), output_options=("output",),
+           takes="binding CSV (a capture's own markers)", paper="the voice's articulation (ridge regression)"),
     _stage("solve", "Solve the rig's blendshape weights that best explain the markers.",
            "facesynth solve motion.h5|normalized.h5 [--take T] [--rig RIG] [--binding B] -o curves.h5",
            _s("solve", "run", "SolveResult"), reads=("solve",), inputs=("motion", "normalized"), outputs=("curves",),
@@ -324,9 +329,7 @@ FOLDER_OUTPUTS: dict[str, Mapping[str, Folder]] = {s.name: s.folder_outputs for 
 
 
 #: What writes a kind no command writes yet, for a message ("make it with ... first").
-OTHER_WRITERS: dict[str, str] = {
-    "articulation": "`python benchmarks/voice_articulation.py --model-out`",
-}
+OTHER_WRITERS: dict[str, str] = {}
 
 
 def writers(kind: str) -> tuple[str, ...]:

@@ -3,8 +3,9 @@ regression) from the voice's frame features, read at fixed offsets around each o
 the mouth's curves of a capture (jawOpen, the mouth opening, funnel, pucker, ...), with the
 features' normalization, so that the mouth is predicted from audio with this file alone
 (:mod:`facesynth.domain.speech.articulation` holds the features, the fit and the prediction).
-Written by ``benchmarks/voice_articulation.py --model-out`` (no command writes it yet); read by
-:func:`facesynth.domain.speech.articulation.predict`.
+Written by ``facesynth fit-articulation`` (a performer's capture) and by
+``benchmarks/voice_articulation.py --model-out`` (FACEGOOD: the packaged model); read by
+``synthesize.articulation_model`` (:func:`facesynth.domain.methods.voice.articulation_model`).
 """
 
 from __future__ import annotations

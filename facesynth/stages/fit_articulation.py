@@ -1,0 +1,63 @@
+"""``facesynth fit-articulation``: the acoustic articulation model fitted on a performer's own
+capture with its audio (:mod:`facesynth.domain.methods.voice_fit`), written as an
+``articulation`` artifact that ``synthesize.articulation_model`` names: the voice of this
+performer then shapes the mouth of ``synthesize --audio``, ``batch`` and ``stream``.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass
+from pathlib import Path
+
+from facesynth.base.config import SolveSettings, SynthesizeSettings
+from facesynth.domain.methods.voice_fit import fit_performer, performer_takes
+from facesynth.domain.rig.loading import load_rig
+from facesynth.domain.speech.articulation import model_look_ahead_s
+from facesynth.model.artifacts import check_output
+from facesynth.model.corpus import Corpus
+from facesynth.model.frames import NormalizedFrames
+
+
+@dataclass(frozen=True)
+class FitArticulationResult:
+    """What ``facesynth fit-articulation`` fitted.
+
+    takes: the takes fitted on (those with audio).
+    seconds: their audio, s.
+    targets: the curves the model predicts.
+    solved: whether the rig's curves (jawOpen, mouthFunnel, mouthPucker) are among them (the
+        capture's markers bound on the rig).
+    fit_r: per target, Pearson r of the model's prediction on the takes it was fitted on.
+    look_ahead_s: how far past a frame's time the model reads the audio, s.
+    bytes: the model file's size.
+    """
+
+    takes: list[str]
+    seconds: float
+    targets: list[str]
+    solved: bool
+    fit_r: dict[str, float]
+    look_ahead_s: float
+    bytes: int
+
+
+def run(normalized_path: Path, corpus_path: Path, out: Path, synthesize: SynthesizeSettings, solve: SolveSettings, *,
+        binding: Path | None = None, takes: list[str] | None = None, overwrite: bool = False) -> FitArticulationResult:
+    """Fit the articulation model on the takes (all with audio, or ``takes``) of ``corpus_path``
+    (an ingested capture: its audio) and ``normalized_path`` (its normalized frames), the markers
+    bound on the built-in rig by its own binding or ``binding``, and write ``out``."""
+    check_output(out, overwrite)
+    corpus = Corpus.read(corpus_path)
+    normalized = NormalizedFrames.read(normalized_path)
+    rig = load_rig(None, binding, need_binding=False)
+    data = performer_takes(corpus, normalized, rig, solve, tuple(synthesize.loudness_lip_markers), takes=takes,
+                           where=str(corpus_path))
+    model, fit_r = fit_performer(data)
+    settings = {"offsets_s": [float(x) for x in model.offsets_s], "pool": model.pool, "alpha": model.alpha,
+                "normalization": model.normalization, "tau_s": model.tau_s, "expand": model.expand,
+                "lip_markers": list(synthesize.loudness_lip_markers), "takes": data.names_used}
+    inputs = [corpus_path, normalized_path] + ([binding] if binding is not None else [])
+    model.write(out, config=json.dumps(settings, sort_keys=True), inputs=inputs, overwrite=overwrite)
+    return FitArticulationResult(data.names_used, data.seconds, list(data.names), data.solved, fit_r,
+                                 model_look_ahead_s(model), out.stat().st_size)
