@@ -93,6 +93,7 @@ from pathlib import Path
 import numpy as np
 
 from facesynth.base.config import Config, settings_json
+from facesynth.base.hashing import sha256_of
 from facesynth.base.phonemes import PAU, to_festival
 from facesynth.domain.evaluation.baselines import openfacefx_arkit, openfacefx_missing, rig_markers
 from facesynth.domain.evaluation.bootstrap import interval, paired_difference, resamples
@@ -332,10 +333,11 @@ def facesynth_method(db: Path, phones: Path | None, folder: Path, n: int, lip_ma
     given = (["--phonemes", str(phones)] if phones is not None else []) + (["--audio", str(audio)] if audio is not None else [])
     if loudness_weight is not None:
         given += ["--set", f"synthesize.loudness_weight={loudness_weight:g}"]
-    # The cached motion holds only for the phones, audio, options and [synthesize] settings it was made from.
+    # The cached motion holds only for the source, phones, audio, options and settings it was made from.
     made_from = [phones.read_bytes() if phones is not None else b"", audio.read_bytes() if audio is not None else b"",
                  " ".join(given).encode(), settings_json(Config.load().settings("synthesize")).encode(),
-                 settings_json(Config.load().settings("align")).encode(), ARTICULATION_MODEL.read_bytes()]
+                 settings_json(Config.load().settings("align")).encode(), ARTICULATION_MODEL.read_bytes(),
+                 sha256_of(db).encode()]  # the database (or model) too: another one, another motion
     digest = hashlib.sha256(b"\0".join(made_from)).hexdigest()
     stamp = folder / f"inputs{tag}.sha256"
     if not stamp.exists() or stamp.read_text() != digest:
@@ -616,7 +618,7 @@ def markdown(result: dict) -> str:
     for m, c in result["closures"].items():
         lines.append(f"| {m} | {_fmt(c['recall'])} | {_fmt(c['precision'])} | {c['closures']} |")
     if result.get("loudness_sweep"):
-        lines += ["", "| synthesize.loudness_weight | facesynth's mouth-opening r [95%] |", "|---|---|"]
+        lines += ["", "| synthesize.loudness_weight | the loudness step's mouth-opening r (phones given) [95%] |", "|---|---|"]
         lines += [f"| {w} | {_fmt(cell)} |" for w, cell in result["loudness_sweep"].items()]
     lines += ["", "| take | seconds | " + " | ".join(f"{m} opening r" for m in methods) + " |",
               "|---|---|" + "---|" * len(methods)]

@@ -285,7 +285,8 @@ def synthesize(source: StrPath | MotionDatabase | FittedModel, utterance: Uttera
                                          source_where=source_where, where=utterance.where)
         if output is not None:
             recorded = core.motion_inputs(source_file, utterance.phones_file, utterance.emotions_file,
-                                          constraints_path, utterance.audio_file, head_path)
+                                          constraints_path, utterance.audio_file, head_path,
+                                          settings.synthesize.articulation_model)
             core.write_motion(made, Path(output), [input_record(p) for p in recorded], overwrite=overwrite)
     return made.motion
 

@@ -52,7 +52,7 @@ def run(normalized_path: Path, corpus_path: Path, out: Path, synthesize: Synthes
     normalized = NormalizedFrames.read(normalized_path)
     rig = load_rig(None, binding, need_binding=False)
     data = performer_takes(corpus, normalized, rig, solve, tuple(synthesize.loudness_lip_markers), takes=takes,
-                           where=str(corpus_path))
+                           where=str(corpus_path), normalized_where=str(normalized_path))
     model, fit_r = fit_performer(data)
     settings = {"offsets_s": [float(x) for x in model.offsets_s], "pool": model.pool, "alpha": model.alpha,
                 "normalization": model.normalization, "tau_s": model.tau_s, "expand": model.expand,

@@ -17,7 +17,8 @@ curves) has no measurement noise: its markers are the rig's surface, its referen
 pose and its head pose known. The smoothing and ridge terms are priors against marker noise and
 only bias such a solve (they damp the eye shapes, which move the markers by 2-3 mm), so with
 ``solve.posed_captures = "exact"`` (the default) it is solved without them, to
-``solve.exact_iterations`` and ``solve.exact_tolerance`` (:func:`settings_for`); the curves record
+``solve.exact_iterations`` and ``solve.exact_tolerance``
+(:func:`facesynth.domain.retarget.facial_solve.settings_for`); the curves record
 the settings used (their ``config``) and say so in ``method``. A ``motion`` artifact (a
 synthesis) is always solved with the regularized settings.
 """

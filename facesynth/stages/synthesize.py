@@ -85,7 +85,8 @@ def run(source_path: Path, out: Path, settings: SynthesizeSettings | MethodSetti
     # hashed from here, while the method runs: the source's record comes from the file just
     # validated (not opened again), and a source replaced meanwhile is refused
     records = input_records_in_background(core.motion_inputs(source_path, phones_path, emotions_path, constraints_path,
-                                                          audio, head_motion_path))
+                                                             audio, head_motion_path,
+                                                             settings.synthesize.articulation_model))
     read = core.read_utterance(ingest_settings, phones_path=phones_path, audio=audio, text=text, align=align_settings,
                                emotions_path=emotions_path)
     constraints = core.constraints_for(member, source, constraints_path, read.utterance)

@@ -6,8 +6,9 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from facesynth.base.errors import InputError
+from facesynth.base.errors import ArtifactError, InputError
 from facesynth.domain.methods import MethodSettings, core, voice
+from facesynth.domain.postprocess.concatenation import frame_ranges
 from facesynth.domain.speech import articulation
 from facesynth.domain.speech.loudness import lip_gaps
 
@@ -147,3 +148,51 @@ def test_audio_that_is_silence_leaves_the_phones(spoken, config):
     phones = core.synthesize(member, source, read.utterance, settings).motion
     heard = core.synthesize(member, source, read.utterance, settings, audio=quiet, recognized=True).motion
     assert np.abs(heard.markers - phones.markers).max() < 0.5  # no confidence anywhere: barely moved
+
+
+def test_pinned_phones_keep_their_closure_and_rounding_stays_in_the_method_range(spoken, config):
+    """With the phones given (pinned /p b m/) the voice neither opens a kept closure nor shifts the
+    lips' rounding off the range the method's motion has."""
+    member, source, read = spoken
+    settings = MethodSettings.of(config)
+    s = replace(settings.synthesize, use_opencl=False)
+    motion = core.synthesize(member, source, read.utterance, replace(settings, synthesize=s)).motion
+    samples, rate = read.audio
+    model = voice.articulation_model("")
+    utt = read.utterance
+    fused, done, _ = voice.fuse(motion, samples, rate, utt.starts, utt.ends, list(utt.phones), model, s, pinned=True)
+    fps = motion.capture_fps
+    names, lips = list(motion.marker_names), tuple(s.loudness_lip_markers)
+    before, after = (lip_gaps(m.markers_capture, names, lips) for m in (motion, fused))
+    ranges = frame_ranges(np.asarray(utt.starts), np.asarray(utt.ends), fps)
+    pinned = [r for r, p in zip(ranges, utt.phones) if p in s.pinned_phones]
+    raw = articulation.frame_features(samples, rate)
+    opening = articulation.predict_raw(model, raw, np.arange(len(before)) / fps)[:, model.target_names.index("opening")]
+    kept = voice.kept_pinned(pinned, opening)
+    assert kept and done.pinned_kept == len(kept)
+    for a, b in kept:
+        assert after[a:b].min() <= before[a:b].min() + 0.05  # the closure is kept, not opened
+    shapes = voice.RigShapes(voice._builtin_rig(), names, motion.reference)
+    for name in voice.ROUNDING_SHAPES:
+        w0, w1 = (shapes.weights(m.markers_capture, [name])[:, 0] for m in (motion, fused))
+        lo, hi = np.percentile(w0, [5, 95])
+        assert abs(np.median(w1) - np.median(w0)) < 0.25 * (hi - lo)  # moved within its range, not off it
+
+
+def test_no_voice_past_the_audio_end():
+    raw = articulation.frame_features(np.sin(np.arange(16000) * 0.05).astype(np.float32) * 0.3, 16000)
+    c = voice.confidence(raw, np.array([0.5, 0.9, 1.2, 2.0]))
+    assert c[2] == 0 and c[3] == 0
+
+
+def test_a_fit_leaves_out_unknown_frames_and_a_broken_model_is_refused():
+    rng = np.random.default_rng(0)
+    x = (rng.normal(0, 0.1, 16000 * 4)).astype(np.float32)
+    raw = articulation.frame_features(x, 16000)
+    targets = rng.normal(size=(120, 2))
+    targets[30:50, 0] = np.nan  # a capture's gap
+    model = articulation.fit([articulation.Take(raw, targets, 30.0)], ("opening", "jawOpen"))
+    assert np.isfinite(model.coef).all() and np.isfinite(model.intercept).all()
+    model.coef[0, 0] = np.nan
+    with pytest.raises(ArtifactError, match="not all finite"):
+        articulation.check_model(model, "m.h5")

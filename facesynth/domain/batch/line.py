@@ -225,6 +225,8 @@ def input_key(line: Line, job: Job) -> dict:
     rig_outputs = any(rig_output(o) for o in job.outputs)
     if rig_outputs:
         files.update(rig_binding=job.rig_binding)
+    if job.settings.synthesize.articulation_model:  # a performer's own voice model, by its content
+        files.update(articulation_model=Path(job.settings.synthesize.articulation_model))
     key: dict[str, object] = {name: sha256_of(p) for name, p in files.items() if p is not None}
     key.update(db=job.db_sha256, text=_text_sha(line.text) if line.alignment is None else "", emotion=line.emotion or "",
                outputs=sorted(job.outputs), version=__version__, method=job.method,

@@ -159,6 +159,10 @@ class LiveModel:
         #: the articulation model frames come from when the phones would be recognised
         #: (``stream.voice = "articulation"``, :mod:`facesynth.domain.live.voice`), else None
         self.voice_model = articulation_model(synth.articulation_model) if stream.voice == "articulation" else None
+        if self.voice_model is not None and "jawOpen" not in self.voice_model.target_names:
+            raise InputError(f"synthesize.articulation_model {synth.articulation_model or '(packaged)'} predicts no "
+                             "jawOpen, which live frames move the jaw by; fit it on a capture whose markers the rig "
+                             "binds (fit-articulation --binding), or set stream.voice = \"off\".")
         self._poses: dict[str, np.ndarray] = {}
 
     @property

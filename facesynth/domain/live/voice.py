@@ -11,7 +11,10 @@ time plus the articulation model's look-ahead (:func:`facesynth.domain.speech.ar
   closure score rises above ``synthesize.voice_closure_threshold``;
 * the rest of the face is the emotion's pose: the mean of the database's captured frames of the
   stream's emotion (the ``emotion`` control message changes it from the next frame), solved onto
-  the built-in rig once per emotion, with its mouth shapes left to the voice.
+  the built-in rig once per emotion, with its mouth shapes left to the voice (a trajectory model
+  has no frames: its rest pose, whatever the emotion);
+* where nobody speaks the mouth rests: the voice's shapes are scaled by its confidence, the
+  loudness of the last 0.25 s to the look-ahead above a running noise floor, as batch fusion's.
 
 No phone recogniser runs: a recognised phone settles a phone or more after it ends (300 ms and
 more), long after the frames it could refine were sent, and recognition is what costs a stream
@@ -21,18 +24,27 @@ is ``stream.voice = "off"``; given phones (a TTS engine) always take it, with it
 
 from __future__ import annotations
 
+from collections import deque
+
 import numpy as np
 
 from facesynth.base.config import SynthesizeSettings
+from facesynth.domain.methods.voice import FLOOR_RISE_PER_S, SNR_FULL, SNR_NONE
 from facesynth.domain.speech.articulation import StreamingPredictor, model_look_ahead_s
 from facesynth.model.articulation import ArticulationModel
 
 from .core import Frame
+from .phones import SAMPLE_RATE
 
 #: The rig shapes the voice sets, by the articulation model's target of the same name.
 VOICE_SHAPES = ("jawOpen", "mouthFunnel", "mouthPucker")
 #: The closure score's rise (above the threshold) over which the jaw goes from open to closed.
 CLOSURE_RAMP = 0.3
+#: The voice's loudness is read in frames of this many samples (10 ms at 16 kHz).
+ENERGY_HOP = 160
+#: How far back from a frame's time the voice's confidence looks (s): the jaw moves through a
+#: syllable's quiet parts too (batch looks 0.15 s each way).
+CONFIDENCE_BACK_S = 0.25
 
 
 class VoiceFrames:
@@ -51,40 +63,91 @@ class VoiceFrames:
         self.slots = {name: names.index(name) for name in self.columns if name in names}
         self.emotion = emotion
         self.sent = 0
+        self.samples = 0
         self.look_ahead_s = model_look_ahead_s(voice_model)
-        self._last: np.ndarray | None = None
+        # the voice's confidence, as batch fusion's (:func:`facesynth.domain.methods.voice.confidence`):
+        # each 10 ms's log RMS above a running noise floor; the recent values are kept
+        self._pending = np.zeros(0, np.float32)
+        self._floor: float | None = None
+        self._confidence: deque[float] = deque(maxlen=int(round(2.0 * SAMPLE_RATE / ENERGY_HOP)))
+        self._hops = 0  # 10 ms frames of confidence computed so far
 
     def set_emotion(self, name: str) -> None:
         """The emotion of the frames from the next one on."""
         self.emotion = name
 
-    def weights(self, predictions: np.ndarray) -> np.ndarray:
-        """(k, E) rig weights for (k, Y) predictions: the emotion's pose with the voice's mouth."""
+    def weights(self, predictions: np.ndarray, confidence: np.ndarray | None = None) -> np.ndarray:
+        """(k, E) rig weights for (k, Y) predictions: the emotion's pose with the voice's mouth,
+        scaled by the voice's ``confidence`` (k,) 0..1 (none: 1), so that the mouth rests where
+        nobody speaks."""
         base = self.model.emotion_pose(self.emotion)
         w = np.repeat(base[None], len(predictions), 0)
-        open_share = np.ones(len(predictions))
+        share = np.ones(len(predictions)) if confidence is None else np.asarray(confidence, np.float64)
+        open_share = share.copy()
         if self.closure is not None and self.threshold <= 1.0:
-            open_share = 1.0 - np.clip((predictions[:, self.closure] - self.threshold) / CLOSURE_RAMP, 0.0, 1.0)
+            open_share *= 1.0 - np.clip((predictions[:, self.closure] - self.threshold) / CLOSURE_RAMP, 0.0, 1.0)
         for name, slot in self.slots.items():
             value = np.clip(predictions[:, self.columns[name]], 0.0, 1.0)
-            w[:, slot] = value * open_share if name == "jawOpen" else value
+            w[:, slot] = value * (open_share if name == "jawOpen" else share)
         return w
+
+    def _listen(self, samples: np.ndarray) -> None:
+        """The confidence of the 10 ms frames ``samples`` (the newest audio) completes."""
+        x = np.concatenate([self._pending, np.asarray(samples, np.float32)])
+        whole = len(x) // ENERGY_HOP * ENERGY_HOP
+        self._pending = x[whole:]
+        if not whole:
+            return
+        hops = x[:whole].reshape(-1, ENERGY_HOP).astype(np.float64)
+        energy = np.log(np.sqrt((hops * hops).mean(1)) + 1e-5)
+        rise = FLOOR_RISE_PER_S * ENERGY_HOP / SAMPLE_RATE
+        for e in energy:
+            self._floor = e if self._floor is None else min(e, self._floor + rise)
+            self._confidence.append(float(np.clip((e - self._floor - SNR_NONE) / (SNR_FULL - SNR_NONE), 0.0, 1.0)))
+        self._hops += len(energy)
+
+    def _confidence_at(self, times: np.ndarray) -> np.ndarray:
+        """(k,) the voice's confidence at ``times`` s: the highest over the heard 10 ms frames from
+        :data:`CONFIDENCE_BACK_S` before each time to its look-ahead after it."""
+        kept = np.array(self._confidence)
+        first = self._hops - len(kept)  # the 10 ms frame of kept[0]
+        hop_s = ENERGY_HOP / SAMPLE_RATE
+        out = np.zeros(len(times))
+        for k, t in enumerate(times):
+            a = max(int(np.floor((t - CONFIDENCE_BACK_S) / hop_s)) - first, 0)
+            b = min(int(np.ceil((t + self.look_ahead_s) / hop_s)) - first, len(kept))
+            out[k] = kept[a:b].max() if b > a else 0.0
+        return out
 
     def _frames(self, predictions: np.ndarray, now: float) -> list[Frame]:
         if not len(predictions):
             return []
-        w = self.weights(predictions)
+        fps = self.model.stream.fps
+        w = self.weights(predictions, self._confidence_at(np.arange(self.sent, self.sent + len(predictions)) / fps))
         arkit = self.model.arkit(w)
         markers = self.model.markers_of(w)
-        fps = self.model.stream.fps
         frames = [Frame(self.sent + k, (self.sent + k) / fps, arkit[k], markers[k], now) for k in range(len(w))]
         self.sent += len(w)
         return frames
 
     def push(self, samples: np.ndarray, now: float) -> list[Frame]:
         """The frames that the audio up to ``now`` (s received, ``samples`` the newest) decides."""
+        self.samples += len(samples)
+        self._listen(samples)
         return self._frames(self.predictor.push(samples), now)
 
     def finish(self, now: float) -> list[Frame]:
-        """End of stream: the remaining frames, up to the audio's end."""
-        return self._frames(self.predictor.finish(), now)
+        """End of stream: the remaining frames, as many in all as batch synthesis gives the audio (its
+        capture frames down-sampled to the stream's rate; one more or less than the frames whose time
+        lies within the audio, by the rounding of the two grids)."""
+        rest = self.predictor.finish()
+        grid, fps = self.model.grid_fps, self.model.stream.fps
+        n_capture = int(round(self.samples / SAMPLE_RATE * grid))
+        total = int(np.floor((n_capture - 1) / (grid / fps))) + 1 if n_capture > 0 else 0
+        want = max(total - self.sent, 0)
+        if len(rest) > want:
+            rest = rest[:want]
+        elif len(rest) < want:  # a frame past the audio's end: its last prediction, held
+            last = rest[-1:] if len(rest) else self.predictor.intercept[None]
+            rest = np.concatenate([rest, np.repeat(last, want - len(rest), 0)])
+        return self._frames(rest, now)

@@ -241,10 +241,13 @@ def write_motion(made: Synthesized, out: Path, records: list[dict], *, overwrite
 
 
 def motion_inputs(source: Path | None, phones: Path | None = None, emotions: Path | None = None,
-                  constraints: Path | None = None, audio: Path | None = None,
-                  head_motion: Path | None = None) -> list[Path]:
-    """The files a synthesized motion records as its inputs, in this order; the ones not given are left out."""
-    return [Path(p) for p in (source, phones, emotions, constraints, audio, head_motion) if p is not None]
+                  constraints: Path | None = None, audio: Path | None = None, head_motion: Path | None = None,
+                  articulation_model: str = "") -> list[Path]:
+    """The files a synthesized motion records as its inputs, in this order; the ones not given are
+    left out. ``articulation_model``: ``synthesize.articulation_model``, recorded with the audio
+    (a performer's own voice model; the packaged one, empty, is part of facesynth)."""
+    model = Path(articulation_model) if audio is not None and articulation_model else None
+    return [Path(p) for p in (source, phones, emotions, constraints, audio, head_motion, model) if p is not None]
 
 
 def check_memory(method: Method, source, utt: Utterance, settings: MethodSettings, where: str) -> None:

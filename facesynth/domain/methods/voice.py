@@ -20,13 +20,14 @@ or aligned to a transcript):
 1. *Rounding.* The predicted mouthFunnel and mouthPucker, each mapped affinely onto the range of
    that shape's weight in the method's motion (the weights a least-squares fit of the built-in
    rig's mouth shapes gives, :class:`RigShapes`), blended in by ``voice_rounding_weight x
-   confidence`` along the shape's own marker displacement. A motion whose markers the built-in
-   rig does not bind keeps its rounding.
+   confidence`` along the shape's own marker displacement (not over a pinned phone that keeps its
+   closure, below). A motion whose markers the built-in rig does not bind keeps its rounding.
 2. *Opening.* The predicted opening mapped affinely onto the method's inner-lip gaps in this
    utterance (its 5th..95th percentiles onto theirs, :func:`range_map`: no unit, no gain, the
    method's own range) and blended with the method's gap by ``voice_weight x confidence``.
-3. *Closures.* Each peak of the model's closure score above ``voice_closure_threshold`` takes the
-   gap down to the method's most closed gap (a Gaussian dip of :data:`CLOSURE_SIGMA_S`); the
+3. *Closures* (wherever the score says, in silence too: the mouth rests closed). Each peak of the
+   model's closure score above ``voice_closure_threshold`` takes the gap down to the method's most
+   closed gap (a Gaussian dip of :data:`CLOSURE_SIGMA_S`); the
    method's own closings (the phones' /p b m/ and others: deep minima of its gap) are kept where
    the model's closing score confirms them (``voice_closing_threshold``). ``pinned_phones`` keep
    the method's closure (weight 0 over the phone) unless the voice says the lips were open (the
@@ -156,7 +157,8 @@ def confidence(raw: np.ndarray, times_s: np.ndarray) -> np.ndarray:
     of :func:`facesynth.domain.speech.articulation.frame_features`: each frame's log RMS above the
     running noise floor (a running minimum rising by :data:`FLOOR_RISE_PER_S` a second), from
     :data:`SNR_NONE` (0) to :data:`SNR_FULL` (1), the highest over the speech around it
-    (0.3 s: the jaw moves through a syllable's quiet parts too); causal but for that window."""
+    (0.3 s: the jaw moves through a syllable's quiet parts too); causal but for that window; 0 past
+    the audio's end (a motion may outlast its audio by ``ingest.max_audio_mismatch_s``)."""
     e = raw[:, voice_model.FEATURE_NAMES.index("log_rms")].astype(np.float64)
     if not len(e):
         return np.zeros(len(times_s))
@@ -166,8 +168,9 @@ def confidence(raw: np.ndarray, times_s: np.ndarray) -> np.ndarray:
     from scipy.ndimage import maximum_filter1d
 
     c = maximum_filter1d(c, size=int(round(0.3 / voice_model.FRAME_S)) | 1, mode="nearest")
-    idx = np.clip(np.rint(np.asarray(times_s) / voice_model.FRAME_S).astype(np.int64), 0, len(e) - 1)
-    return c[idx]
+    times_s = np.asarray(times_s, np.float64)
+    idx = np.clip(np.rint(times_s / voice_model.FRAME_S).astype(np.int64), 0, len(e) - 1)
+    return c[idx] * (times_s <= (len(e) - 0.5) * voice_model.FRAME_S)  # past the audio's end: no voice
 
 
 def closure_frames(score: np.ndarray, fps: float, threshold: float) -> np.ndarray:
@@ -186,18 +189,31 @@ def closure_frames(score: np.ndarray, fps: float, threshold: float) -> np.ndarra
 
 # ---------------------------------------------------------------- the fusion on curves
 
-def range_map(predicted: np.ndarray, opening: np.ndarray, low: float = 5.0, high: float = 95.0) -> np.ndarray:
+def range_map(predicted: np.ndarray, opening: np.ndarray, low: float = 5.0, high: float = 95.0, *,
+              floor: bool = True) -> np.ndarray:
     """(T,) the prediction (T,) mapped affinely so that its ``low``..``high`` percentiles land on the
-    method's openings' (T,), with a soft floor above 0 below them (a clipped floor is a plateau, and
-    a closure's dip into a plateau is no minimum): the method's range, the prediction's shape."""
+    method's values' (T,): the method's range, the prediction's shape. With ``floor`` (lip gaps,
+    which are positive) a soft floor above 0 below the low percentile (a clipped floor is a plateau,
+    and a closure's dip into a plateau is no minimum); without it (rig weights, which may be
+    negative against the motion's reference) the map is affine throughout."""
     p, o = np.asarray(predicted, np.float64), np.asarray(opening, np.float64)
     a, b = np.percentile(p, [low, high])
     c, d = np.percentile(o, [low, high])
     if b - a <= 1e-12:
         return o.copy()
     q = c + (p - a) * (d - c) / (b - a)
+    if not floor:
+        return q
     c = max(c, 0.05 * (d - c), 1e-6)
     return np.where(q < c, c * np.exp(np.minimum(q - c, 0.0) / c), q)
+
+
+def kept_pinned(pinned: list[tuple[int, int]], predicted: np.ndarray) -> list[tuple[int, int]]:
+    """The pinned phones' frame ranges [a, b) (each at least frame a) that keep the method's closure:
+    those over which the predicted opening (T,) does not rank above :data:`PINNED_OPEN_QUANTILE` of
+    the utterance's (the voice says the lips were open over the others)."""
+    rank = (np.argsort(np.argsort(predicted)) + 0.5) / max(len(predicted), 1)
+    return [(a, max(b, a + 1)) for a, b in pinned if rank[a:max(b, a + 1)].mean() <= PINNED_OPEN_QUANTILE]
 
 
 def method_closings(opening: np.ndarray, closing: np.ndarray | None, fps: float, threshold: float) -> np.ndarray:
@@ -223,8 +239,7 @@ def target_gap(opening: np.ndarray, predicted: np.ndarray, score: np.ndarray | N
     n = len(o)
     q = range_map(predicted, o)
     w = settings.voice_weight * np.asarray(conf, np.float64)
-    rank = (np.argsort(np.argsort(predicted)) + 0.5) / max(n, 1)
-    kept = [(a, max(b, a + 1)) for a, b in pinned if rank[a:max(b, a + 1)].mean() <= PINNED_OPEN_QUANTILE]
+    kept = kept_pinned(pinned, predicted)
     w = w * loudness.weights(n, kept, 1.0, max(1, int(round(settings.loudness_smoothing_s * fps))))
     target = (1.0 - w) * o + w * q
     from_voice = closure_frames(score, fps, settings.voice_closure_threshold) if score is not None \
@@ -284,7 +299,7 @@ def rig_rounding(markers: np.ndarray, shapes: RigShapes, predicted: dict[str, np
     for j, name in enumerate(names):
         lo, hi = np.percentile(current[:, j], [5, 95])
         if hi - lo > 1e-6:
-            steps[:, j] = blend * (range_map(predicted[name], current[:, j]) - current[:, j])
+            steps[:, j] = blend * (range_map(predicted[name], current[:, j], floor=False) - current[:, j])
     directions = shapes.directions[[shapes.names.index(n) for n in names]].reshape(len(names), -1)
     return markers + (steps.astype(np.float32) @ directions.astype(np.float32)).reshape(markers.shape)
 
@@ -314,18 +329,21 @@ def fuse(motion: Motion, samples: np.ndarray, rate: int, starts: np.ndarray, end
     at_coarse = voice_model.predict_raw(model, raw, coarse)
     pred = {c: np.interp(times, coarse, at_coarse[:, j]) for j, c in enumerate(model.target_names)}
     conf = confidence(raw, times)
+    ranges = frame_ranges(np.asarray(starts, float), np.asarray(ends, float), fps)
+    pinned_ranges = [r for r, p in zip(ranges, phones) if p in settings.pinned_phones] if pinned else []
     moved = frames
     rounding = {c: pred[c] for c in ROUNDING_SHAPES if c in pred}
     if settings.voice_rounding_weight > 0 and rounding:
         rig = rig if rig is not None else _builtin_rig()
         if all(m in rig.binding for m in lips) and sum(m in rig.binding for m in names) >= 3:
+            # a pinned phone keeps the method's lips whole, its closure and their shape
+            free = loudness.weights(n, kept_pinned(pinned_ranges, pred["opening"]), 1.0,
+                                    max(1, int(round(settings.loudness_smoothing_s * fps))))
             moved = rig_rounding(frames, RigShapes(rig, names, motion.reference), rounding,
-                                 settings.voice_rounding_weight * conf)
+                                 settings.voice_rounding_weight * conf * free)
     gap = lip_gaps(moved, names, lips)
-    ranges = frame_ranges(np.asarray(starts, float), np.asarray(ends, float), fps)
-    kept = [r for r, p in zip(ranges, phones) if p in settings.pinned_phones] if pinned else []
-    target, done = target_gap(gap, pred["opening"], pred.get("closure"), pred.get("closing"), conf, kept, fps,
-                              settings)
+    target, done = target_gap(gap, pred["opening"], pred.get("closure"), pred.get("closing"), conf, pinned_ranges,
+                              fps, settings)
     li, lj = names.index(lips[0]), names.index(lips[1])
     moved = move_to_gaps(moved, opening_direction(moved, gap), (li, lj), target).astype(motion.markers_capture.dtype)
     return (replace(motion, markers_capture=moved, markers=downsample(moved, fps, motion.fps)),

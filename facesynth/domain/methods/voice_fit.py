@@ -41,6 +41,8 @@ from facesynth.model.frames import NormalizedFrames
 FIT_FPS = 30.0
 #: The rig shapes fitted as targets where the markers are bound (ARKit names of the built-in rig).
 RIG_TARGETS = ("jawOpen", "mouthFunnel", "mouthPucker")
+#: The fewest frames (at :data:`FIT_FPS`) of a take with audio that it is fitted on.
+MIN_FRAMES = 10
 
 
 @dataclass(frozen=True)
@@ -57,13 +59,14 @@ class PerformerTakes:
 
 
 def performer_takes(corpus: Corpus, normalized: NormalizedFrames, rig: Rig, solve: SolveSettings,
-                    lips: tuple[str, ...], *, takes: list[str] | None = None,
-                    where: str = "the capture") -> PerformerTakes:
-    """The targets and voice features of every take of ``corpus`` with audio (or of ``takes``),
-    from its ``normalized`` frames (the same takes; checked) solved onto ``rig``."""
+                    lips: tuple[str, ...], *, takes: list[str] | None = None, where: str = "the capture",
+                    normalized_where: str = "the normalized frames") -> PerformerTakes:
+    """The targets and voice features of every take of ``corpus`` with audio (or of ``takes``, each
+    of which must have audio), from its ``normalized`` frames (the same takes; checked) solved onto
+    ``rig``. Messages name ``where`` (the corpus) and ``normalized_where``."""
     names = list(corpus.takes.name)
     if list(normalized.takes.name) != names:
-        raise InputError(f"{where}: the normalized frames hold other takes than the corpus "
+        raise InputError(f"{normalized_where}: it holds other takes than {where} "
                          f"({', '.join(normalized.takes.name[:3])}... against {', '.join(names[:3])}...); "
                          "give the normalized artifact made from this corpus.")
     missing = [m for m in lips if m not in corpus.marker_names]
@@ -80,13 +83,14 @@ def performer_takes(corpus: Corpus, normalized: NormalizedFrames, rig: Rig, solv
     for name in wanted:
         i = names.index(name)
         a, n = int(corpus.audio_start[i]), int(corpus.audio_count[i])
-        if n == 0:
+        motion = facial_solve.take_motion(normalized, name, FIT_FPS, str(normalized_where))
+        frames = min(len(motion.markers), int(np.floor(n / corpus.sample_rate * FIT_FPS)))
+        if frames < MIN_FRAMES:
+            if takes is not None:  # a take asked for by name is fitted on or refused, never dropped
+                raise InputError(f"{where}: take {name!r} has {n / corpus.sample_rate:.2f} s of audio with its "
+                                 f"frames (at least {MIN_FRAMES / FIT_FPS:.2f} s needed); leave it out of --takes.")
             continue
         samples = corpus.audio[a:a + n]
-        motion = facial_solve.take_motion(normalized, name, FIT_FPS, where)
-        frames = min(len(motion.markers), int(np.floor(n / corpus.sample_rate * FIT_FPS)))
-        if frames < 10:
-            continue
         opening = lip_gaps(motion.markers[:frames], list(motion.marker_names), tuple(lips)).astype(np.float64)
         columns = [opening, articulation.closure_target(opening, FIT_FPS),
                    articulation.closure_target(opening, FIT_FPS, kind="closing")]
@@ -99,8 +103,8 @@ def performer_takes(corpus: Corpus, normalized: NormalizedFrames, rig: Rig, solv
         used.append(name)
         seconds += n / corpus.sample_rate
     if not out:
-        raise InputError(f"{where}: no take has audio to fit the voice's articulation on; ingest the capture with "
-                         "its audio (the manifest's audio column).")
+        raise InputError(f"{where}: no take has {MIN_FRAMES / FIT_FPS:.2f} s or more of audio with its frames to fit "
+                         "the voice's articulation on; ingest the capture with its audio (the manifest's audio column).")
     return PerformerTakes(out, target_names, used, seconds, bound)
 
 
@@ -112,7 +116,8 @@ def fit_performer(data: PerformerTakes) -> tuple[ArticulationModel, dict[str, fl
     real = np.concatenate([t.targets for t in data.takes])
     r = {}
     for j, name in enumerate(data.names):
-        a, b = predicted[:, j] - predicted[:, j].mean(), real[:, j] - real[:, j].mean()
+        known = np.isfinite(real[:, j])  # a capture's gaps are left out, as the fit leaves them out
+        a, b = predicted[known, j] - predicted[known, j].mean(), real[known, j] - real[known, j].mean()
         d = float(np.sqrt((a * a).sum() * (b * b).sum()))
         r[name] = float((a * b).sum() / d) if d > 0 else float("nan")
     return model, r

@@ -381,6 +381,9 @@ def check_model(model: ArticulationModel, where: str = "the articulation model")
     if np.shape(model.coef) != (width, len(model.target_names)):
         raise ArtifactError(f"{where}: coef has shape {np.shape(model.coef)}, expected "
                             f"({width}, {len(model.target_names)}); fit it again.")
+    if not (np.isfinite(model.coef).all() and np.isfinite(model.intercept).all()):
+        raise ArtifactError(f"{where}: its coefficients are not all finite numbers; fit it again on frames with "
+                            "every target known.")
 
 
 def normalizer_of(model: ArticulationModel) -> Normalizer:
@@ -413,8 +416,8 @@ def predict_raw(model: ArticulationModel, raw: np.ndarray, times_s: np.ndarray) 
 
 def predict(model: ArticulationModel, samples: np.ndarray, rate: int, n_frames: int, fps: float) -> np.ndarray:
     """(n_frames, Y) float64 predicted curves (the model's ``target_names``, in their units) at
-    frame times f / fps s of mono ``samples`` (n,) at ``rate`` Hz; frames past the audio's end
-    read silence."""
+    frame times f / fps s of mono ``samples`` (n,) at ``rate`` Hz; a frame past the audio's end
+    reads the audio's last analysis frames (its context is clipped to them)."""
     check_model(model)
     return predict_raw(model, frame_features(samples, rate), np.arange(n_frames) / float(fps))
 
@@ -456,7 +459,21 @@ def closure_target(opening: np.ndarray, fps: float, kind: str = "closure", sigma
     """(T,) 0..1, a target the model learns to score closures with from a captured opening (T,) at
     ``fps``: a Gaussian bump of ``sigma_s`` around each of its closures (:func:`closure_frames_of`;
     ``kind`` "closing": only the closings within speech, :func:`closings_of`), so that the model
-    scores, per frame, how near the lips are to closing."""
+    scores, per frame, how near the lips are to closing. Frames where the opening is unknown (NaN,
+    a capture's gap) are NaN: the fit leaves them out."""
+    opening = np.asarray(opening, np.float64)
+    unknown = ~np.isfinite(opening)
+    if unknown.all():
+        return np.full(len(opening), np.nan)
+    if unknown.any():  # the closures are found on the curve bridged over its gaps
+        t = np.arange(len(opening))
+        opening = np.interp(t, t[~unknown], opening[~unknown])
+    target = _closure_bumps(opening, fps, kind, sigma_s)
+    target[unknown] = np.nan
+    return target
+
+
+def _closure_bumps(opening: np.ndarray, fps: float, kind: str, sigma_s: float) -> np.ndarray:
     frames = closure_frames_of(opening)
     if kind == "closing":
         frames = frames[closings_of(opening, frames)]
@@ -524,6 +541,11 @@ def fit(takes: list[Take], target_names: tuple[str, ...] | list[str], *, offsets
         RATE, HOP, WIN)
     x = np.concatenate([design(model, t.raw, t.times_s) for t in takes])
     y = np.concatenate([t.targets for t in takes]).astype(np.float64)
+    known = np.isfinite(y).all(1) & np.isfinite(x).all(1)  # frames of a capture's gaps (NaN) are left out
+    if known.sum() < 2 * len(target_names):
+        raise InputError(f"only {int(known.sum())} frames have every target known; fit the articulation model on "
+                         "takes whose lip markers are seen.")
+    x, y = x[known], y[known]
     model.coef, model.intercept = ridge(x, y, alpha)
     model.target_mean, model.target_std = y.mean(0), y.std(0)
     return model
@@ -571,8 +593,7 @@ class StreamingPredictor:
         pools is in), or of all up to the audio's end when ``final``."""
         half, y = self.model.pool // 2, len(self.model.target_names)
         total = self.first_kept + len(self.normed)  # analysis frames normalized so far
-        # output frames within the audio: those whose time lies before its end (as many as batch
-        # synthesis gives the utterance)
+        # output frames within the audio: those whose time lies before its end
         end = int(np.ceil(self.frames.samples / RATE * self.fps - 1e-9))
         if end <= self.done:
             return np.zeros((0, y))
