@@ -345,10 +345,7 @@ def real_voice(db_path: Path, facegood: Path, takes: list[str], work: Path, conf
     sys.path.insert(0, str(Path(__file__).resolve().parent))
     import real_speech_lipsync as rs
 
-    names_file = facegood / "shirley_1015_bs_name.npy"
-    if not names_file.exists():
-        raise SystemExit(f"{facegood}: no shirley_1015_bs_name.npy; see benchmarks/real_speech_lipsync.py")
-    channel_names = [str(x) for x in rs.load_npy(names_file)]
+    channel_names = rs.channel_names(facegood)
     table = rs.read_table()
     db = MotionDatabase.read(db_path)
     align, lip = config.settings("align"), config.settings("evaluate").lip_markers

@@ -234,23 +234,13 @@ def main(argv=None) -> dict:
     ap.add_argument("--data", type=Path, required=True, help="the FACEGOOD folder (see real_speech_lipsync.py)")
     ap.add_argument("--work", type=Path, required=True,
                     help="cache: phones, databases, motion and curves (empty it after changing facesynth)")
-    ap.add_argument("--window-s", type=float, default=10.0)
-    ap.add_argument("--energy-smooth-s", type=float, default=0.1)
-    ap.add_argument("--closure-depth", type=float, default=0.25)
-    ap.add_argument("--closure-prominence", type=float, default=0.25)
-    ap.add_argument("--closure-tolerance-frames", type=int, default=3)
-    ap.add_argument("--resamples", type=int, default=2000)
-    ap.add_argument("--seed", type=int, default=0)
-    ap.add_argument("--out", type=Path, default=None, help="also write a markdown table here")
+    bench.add_scoring_options(ap)
     args = ap.parse_args(argv)
 
     missing = openfacefx_missing()
     if missing:
         raise SystemExit(missing)
-    names_file = args.data / "shirley_1015_bs_name.npy"
-    if not names_file.exists():
-        raise SystemExit(f"{args.data}: no shirley_1015_bs_name.npy; see real_speech_lipsync.py's docstring")
-    names = [str(s) for s in bench.load_npy(names_file)]
+    names = bench.channel_names(args.data)
     config = Config.load()
     align_settings, lip_markers = config.settings("align"), config.settings("evaluate").lip_markers
     table = bench.read_table()

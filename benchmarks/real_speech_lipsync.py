@@ -439,6 +439,27 @@ def fit_length(x: np.ndarray, n: int) -> np.ndarray:
 
 # ---------------------------------------------------------------- the run
 
+def add_scoring_options(ap: argparse.ArgumentParser) -> None:
+    """The options of every real-speech benchmark's scoring: windows, the energy envelope, closures,
+    the bootstrap, and ``--out`` (a markdown table)."""
+    ap.add_argument("--window-s", type=float, default=10.0)
+    ap.add_argument("--energy-smooth-s", type=float, default=0.1)
+    ap.add_argument("--closure-depth", type=float, default=0.25)
+    ap.add_argument("--closure-prominence", type=float, default=0.25)
+    ap.add_argument("--closure-tolerance-frames", type=int, default=3)
+    ap.add_argument("--resamples", type=int, default=2000)
+    ap.add_argument("--seed", type=int, default=0)
+    ap.add_argument("--out", type=Path, default=None, help="also write a markdown table here")
+
+
+def channel_names(data: Path) -> list[str]:
+    """FACEGOOD's 116 channel names, in the column order of its curves (``--data``'s names file)."""
+    names_file = data / "shirley_1015_bs_name.npy"
+    if not names_file.exists():
+        raise SystemExit(f"{data}: no shirley_1015_bs_name.npy; see the layout in real_speech_lipsync.py's docstring")
+    return [str(s) for s in load_npy(names_file)]
+
+
 def main(argv=None) -> dict:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--data", type=Path, required=True, help="the FACEGOOD folder (see the module docstring)")
@@ -453,23 +474,13 @@ def main(argv=None) -> dict:
     ap.add_argument("--loudness-weights", default=None,
                     help="comma-separated values of synthesize.loudness_weight: the DP's mouth-opening r with each "
                          "(loudness_sweep in the JSON), e.g. on the takes the weight is chosen on")
-    ap.add_argument("--window-s", type=float, default=10.0)
-    ap.add_argument("--energy-smooth-s", type=float, default=0.1)
-    ap.add_argument("--closure-depth", type=float, default=0.25)
-    ap.add_argument("--closure-prominence", type=float, default=0.25)
-    ap.add_argument("--closure-tolerance-frames", type=int, default=3)
-    ap.add_argument("--resamples", type=int, default=2000)
-    ap.add_argument("--seed", type=int, default=0)
-    ap.add_argument("--out", type=Path, default=None, help="also write a markdown table here")
+    add_scoring_options(ap)
     args = ap.parse_args(argv)
 
     missing = openfacefx_missing()
     if missing:
         raise SystemExit(missing)
-    names_file = args.data / "shirley_1015_bs_name.npy"
-    if not names_file.exists():
-        raise SystemExit(f"{args.data}: no shirley_1015_bs_name.npy; see the layout in this script's docstring")
-    names = [str(s) for s in load_npy(names_file)]
+    names = channel_names(args.data)
     take_names = args.takes.split(",") if args.takes else sorted(p.stem for p in (args.data / "wav").glob("*.wav"))
     if not take_names:
         raise SystemExit(f"{args.data / 'wav'}: no takes")

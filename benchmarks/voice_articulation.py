@@ -130,10 +130,7 @@ def main(argv=None) -> dict:
     ap.add_argument("--resamples", type=int, default=2000)
     ap.add_argument("--seed", type=int, default=0)
     args = ap.parse_args(argv)
-    names_file = args.data / "shirley_1015_bs_name.npy"
-    if not names_file.exists():
-        raise SystemExit(f"{args.data}: no shirley_1015_bs_name.npy; see real_speech_lipsync.py's docstring")
-    names = [str(s) for s in bench.load_npy(names_file)]
+    names = bench.channel_names(args.data)
     table = bench.read_table()
     started = time.perf_counter()
     takes = {t: load_take(args.data, t, names, table) for t in ALL}
