@@ -398,7 +398,8 @@ def input_record(path: Path) -> dict:
     validated snapshot (the file is not opened again), and a path that now names another file
     (replaced while the command ran) is refused rather than recorded with the wrong hash."""
     path = Path(path)
-    live = next(((h, s) for h, s in _live_snapshots() if s.path == path), None)
+    where = os.path.abspath(path)  # a file of the same name opened from another folder is another file
+    live = next(((h, s) for h, s in _live_snapshots() if _OPENED_AT.get(h) == where), None)
     if live is not None:
         handle, snapshot = live
         with contextlib.suppress(OSError):
@@ -488,6 +489,8 @@ def write_artifact(
 #: What :func:`open_artifact` validated, by the operating-system file handle of the open file
 #: (``h5py`` hands out a new File object for ``dataset.file``; the handle is the same).
 _SNAPSHOTS: dict[int, tuple[Snapshot, tuple[int, int]]] = {}  # handle -> (snapshot, (device, inode))
+#: The absolute path each of those files was opened at (its snapshot keeps the path as given).
+_OPENED_AT: dict[int, str] = {}
 
 
 def _live_snapshots() -> Iterator[tuple[int, Snapshot]]:
@@ -499,6 +502,7 @@ def _live_snapshots() -> Iterator[tuple[int, Snapshot]]:
             st = None
         if st is None or (st.st_dev, st.st_ino) != ids:
             _SNAPSHOTS.pop(handle, None)
+            _OPENED_AT.pop(handle, None)
             continue
         yield handle, snap
 
@@ -606,6 +610,7 @@ def open_artifact(path: Path, kind: str) -> h5py.File:
     if handle is not None and snapshot is not None:
         st = os.fstat(handle)
         _SNAPSHOTS[handle] = (snapshot, (st.st_dev, st.st_ino))
+        _OPENED_AT[handle] = os.path.abspath(path)
     return f
 
 

@@ -470,3 +470,23 @@ def test_a_database_replaced_while_synthesize_runs_is_not_mixed(tiny_db, tmp_pat
     assert np.isfinite(tc).all() and tc.max() < 1e5  # still the validated snapshot's features
     with pytest.raises(InputError, match="was replaced while this command ran"):
         artifacts.input_record(db)
+
+
+def test_a_file_of_the_same_name_in_another_folder_is_not_a_replacement(tiny_db, tmp_path, monkeypatch):
+    """A database opened as ``db.h5`` from one folder and still open does not make another
+    folder's ``db.h5`` look replaced (the record is of the file the name now means there)."""
+    from facesynth.model.motiondb import MotionDatabase
+
+    (tmp_path / "a").mkdir()
+    (tmp_path / "b").mkdir()
+    _copy(tiny_db, tmp_path / "a" / "db.h5")
+    other = _copy(tiny_db, tmp_path / "b" / "db.h5")
+    with h5py.File(other, "r+") as f:
+        f.attrs["note"] = "another file"
+    monkeypatch.chdir(tmp_path / "a")
+    first = MotionDatabase.read(Path("db.h5"))  # kept open, as a caller's object keeps it
+    monkeypatch.chdir(tmp_path / "b")
+    second = MotionDatabase.read(Path("db.h5"))
+    record = artifacts.input_record(Path("db.h5"))
+    assert record["kind"] == "motiondb" and record["sha256"] == artifacts.sha256_of(other)
+    del first, second
