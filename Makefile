@@ -17,11 +17,15 @@ SEED   ?= 0
 
 all: demo
 
+# pip compiles what it installs to bytecode one file at a time; compileall does it on every core
+# (11 s against 18 s on two), ignoring a file that does not compile as pip does. facesynth is
+# compiled too: an editable install leaves it to the first run.
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
-	$(BIN)/python -m pip install --quiet --quiet -e '.[test,lint]'
-	$(BIN)/python -m compileall -q facesynth  # an editable install leaves this to the first run
+	$(BIN)/python -m pip install --quiet --quiet --no-compile -e '.[test,lint]'
+	$(BIN)/python -m compileall -qq -j 0 "$$($(BIN)/python -c 'import sysconfig; print(sysconfig.get_path("purelib"))')" || true
+	$(BIN)/python -m compileall -q facesynth
 	touch $@
 
 # The suite on every core (pytest-xdist; TEST_WORKERS=0 runs it in one process).

@@ -65,18 +65,21 @@ def pytest_collection_modifyitems(session, config, items):
     the first half of the list goes to one worker and the second half to the other, and a worker
     that runs out takes tests from the end of the other's list. The two longest pieces of work,
     the whole chain on the small corpus (built by the first test that needs it) and the manual's
-    examples (docs/pipeline.md, a session of their own), each start one half, followed by half of
-    the tests that read that chain; the short tests come after them and are what gets taken.
+    examples (docs/pipeline.md, a session of their own, which needs the chain), each start one
+    half, followed by half of the tests that read that chain; the short tests come after them and
+    are what gets taken. The README's block, as long as building the chain and independent of it,
+    runs before the manual, so the second worker is not idle while the first builds the chain.
     Without xdist the order only changes when the chain is built."""
     manual = [item for item in items if item.name == "test_doc_blocks_run[pipeline.md]"]
+    readme = [item for item in items if item.name == "test_readme_block_runs"]
     chain = [item for item in items if "chain" in getattr(item, "fixturenames", ()) and item not in manual]
     if not chain or not manual:
         return
-    moved = {id(item) for item in chain + manual}
+    moved = {id(item) for item in chain + manual + readme}
     rest = [item for item in items if id(item) not in moved]
     first, second = chain[0::2], chain[1::2]
     fill = max(0, len(items) // 2 - len(first))
-    items[:] = first + rest[:fill] + manual + second + rest[fill:]
+    items[:] = first + rest[:fill] + readme + manual + second + rest[fill:]
 
 
 @pytest.fixture
@@ -230,20 +233,19 @@ def held_out_take(tiny_corpus) -> str:
 
 
 @pytest.fixture(scope="session")
-def small_db_and_truth(tmp_path_factory, config) -> tuple[Path, Path]:
-    """The 'small' preset's database (about 1,700 nodes) and its contamination ground truth."""
-    from facesynth.domain.corpus.generate import generate
-    from facesynth.stages import build_db, ingest, normalize, pca
+def chain(built_once) -> Path:
+    """The folder where the top-level help's example ran: the whole chain on the 'small'
+    preset's sample corpus (seed 0), from ``sample-corpus`` to the video (tests/help_examples.py)."""
+    from help_examples import run_chain
 
-    def build(d: Path) -> None:
-        generate(d / "corpus", "small", seed=0)
-        ingest.run(d / "corpus" / "manifest.csv", d / "corpus.h5", config.settings("ingest"), config.settings("align"))
-        normalize.run(d / "corpus.h5", d / "normalized.h5", config.settings("normalize"))
-        pca.run(d / "normalized.h5", d / "pca.h5", config.settings("pca"))
-        build_db.run(d / "pca.h5", d / "db.h5", config.settings("build_db"))
+    return built_once("chain", run_chain)
 
-    d = _built_once(tmp_path_factory, "small", build)
-    return d / "db.h5", d / "corpus" / "contamination.csv"
+
+@pytest.fixture(scope="session")
+def small_db_and_truth(chain) -> tuple[Path, Path]:
+    """The 'small' preset's database (about 1,700 nodes) and its contamination ground truth, as
+    the chain built them."""
+    return chain / "db.h5", chain / "corpus" / "contamination.csv"
 
 
 @pytest.fixture(scope="session")

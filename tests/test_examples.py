@@ -3,8 +3,8 @@ block and every shell block of ``docs/*.md`` runs as written, so that a changed 
 the build, not the user.
 
 The top-level help's example (the whole chain on the ``small`` sample corpus) runs once per
-session in an empty folder; it is the folder the top-level help promises every other command's
-example runs in. Each command's example then runs in a fresh folder holding links to everything
+session in an empty folder (the ``chain`` fixture of conftest.py); it is the folder the
+top-level help promises every other command's example runs in. Each command's example then runs in a fresh folder holding links to everything
 that chain left, except the outputs the example writes. The README block runs with bash in an
 empty folder of its own, with ``.venv/bin/facesynth`` (its first line) pointing at this
 installation.
@@ -31,95 +31,13 @@ import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
-import click
 import pytest
 from click.testing import CliRunner
+from help_examples import HELP, command_paths, help_text, outputs, run_line
 
 from facesynth.cli import main
 
 ROOT = Path(__file__).resolve().parents[1]
-#: Options whose value is a file or folder the command writes.
-OUTPUT_OPTIONS = {"-o", "--output", "--images"}
-
-
-def _commands(group: click.Group = main, path: tuple[str, ...] = ()):
-    """Every command path below ``group``, the group's own first: ('isomap', 'pick'), ..."""
-    yield path, group
-    if isinstance(group, click.Group):
-        for name in group.list_commands(click.Context(group)):
-            yield from _commands(group.commands[name], path + (name,))
-
-
-def help_text(path: tuple[str, ...]) -> str:
-    """The ``--help`` output of a command, as a user sees it."""
-    result = CliRunner().invoke(main, [*path, "--help"], prog_name="facesynth")
-    assert result.exit_code == 0, result.output
-    return result.output
-
-
-def examples(text: str) -> list[str]:
-    """The example lines of a help text: the indented lines after a line 'Example...:' up to
-    the next blank line, with backslash continuations joined."""
-    lines, out, inside = text.splitlines(), [], False
-    for line in lines:
-        stripped = line.strip()
-        if stripped.startswith("Example") and stripped.endswith(":"):
-            inside = True
-        elif inside and not stripped:
-            inside = False
-        elif inside:
-            if out and out[-1].endswith("\\"):
-                out[-1] = out[-1][:-1].rstrip() + " " + stripped
-            else:
-                out.append(stripped)
-    return out
-
-
-HELP = {" ".join(path) or "facesynth": examples(help_text(path)) for path, _ in _commands()}
-
-
-def outputs(line: str) -> list[str]:
-    """The files and folders an example line writes (relative to the folder it runs in)."""
-    words = shlex.split(line)
-    out = [words[i + 1] for i, w in enumerate(words[:-1]) if w in OUTPUT_OPTIONS or w in (">", ">>")]
-    if words[:2] == ["facesynth", "sample-corpus"]:
-        out.append(words[2])
-    return [w.rstrip("/") for w in out]
-
-
-def run_line(line: str, folder: Path) -> None:
-    """Run one example line in ``folder``: ``facesynth ARGS [> FILE]`` through click's CliRunner,
-    or ``echo TEXT > FILE`` (``>> FILE`` appends); anything else is an error, so examples stay
-    within what runs here."""
-    words = shlex.split(line)
-    target, append = None, False
-    if len(words) >= 2 and words[-2] in (">", ">>"):
-        words, target, append = words[:-2], folder / words[-1], words[-2] == ">>"
-    if words[0] == "echo" and target is not None:
-        with open(target, "a" if append else "w") as fh:
-            fh.write(" ".join(words[1:]) + "\n")
-        return
-    assert words[0] == "facesynth", f"an example line this test cannot run: {line!r}"
-    cwd = os.getcwd()
-    os.chdir(folder)
-    try:
-        result = CliRunner().invoke(main, words[1:], prog_name="facesynth", catch_exceptions=False)
-    finally:
-        os.chdir(cwd)
-    assert result.exit_code == 0, f"{line}\n{result.output}"
-    if target is not None:
-        target.write_text(result.stdout)
-
-
-@pytest.fixture(scope="session")
-def chain(built_once) -> Path:
-    """The folder where the top-level help's example (the whole chain on the small corpus) ran."""
-
-    def build(folder: Path) -> None:
-        for line in HELP["facesynth"]:
-            run_line(line, folder)
-
-    return built_once("chain", build)
 
 
 def test_every_help_has_an_example():
@@ -147,7 +65,7 @@ def test_help_example_runs(name, chain, tmp_path):
 def test_short_help_is_never_cut_mid_sentence():
     """Click ends a command's one-line summary at the first word ending in '.' (such as
     'Eq.'), so the first sentence of every help must be whole."""
-    for path, command in _commands():
+    for path, command in command_paths():
         summary = command.get_short_help_str(limit=1000)
         whole = summary.endswith((".", ")")) and not re.search(r"\b(Eqs?|Figs?|Tab)\.$", summary)
         assert whole and summary.count("(") == summary.count(")"), (path, summary)

@@ -21,7 +21,9 @@ from facesynth.stages import capture, deform, export, keyshapes, retarget, rig_m
 
 
 @pytest.fixture(scope="module")
-def chain(tiny_db, tiny_corpus, tiny_artifacts, held_out_take, tmp_path_factory):
+def carried(tiny_db, tiny_corpus, tiny_artifacts, held_out_take, tmp_path_factory):
+    """The held-out sentence synthesized from the tiny database and carried through every stage
+    that keeps a motion's provenance (solve, rig-mesh, deform, retarget, capture)."""
     config = Config.load()
     d = tmp_path_factory.mktemp("provenance")
     synthesize.run(tiny_db, d / "m.h5", config.settings("synthesize"), config.settings("ingest"),
@@ -50,8 +52,8 @@ def _expected(path):
     return m, search, phone, emotion, prov.node[j], take
 
 
-def test_every_artifact_of_the_chain_keeps_the_motions_provenance(chain):
-    m, search, phone, emotion, node, take = _expected(chain / "m.h5")
+def test_every_artifact_of_the_chain_keeps_the_motions_provenance(carried):
+    m, search, phone, emotion, node, take = _expected(carried / "m.h5")
     assert len(set(phone)) > 3 and (node >= 0).sum() > len(node) // 2  # a real utterance, mostly from the database
     # each frame's phone is the one whose span holds the frame's time (to a capture-rate frame)
     t = np.arange(len(phone)) / m.fps
@@ -60,7 +62,7 @@ def test_every_artifact_of_the_chain_keeps_the_motions_provenance(chain):
         assert p in [search.phone[k] for k in inside]
     for name, reader in (("c.h5", RigCurves.read), ("r.h5", MeshAnimation.read), ("a.h5", MeshAnimation.read),
                          ("rt.h5", RigCurves.read), ("rt_mesh.h5", MeshAnimation.read)):
-        prov = reader(chain / name).provenance
+        prov = reader(carried / name).provenance
         assert prov is not None, name
         assert prov.origin == "synthesis"
         assert prov.phone == phone and prov.emotion == emotion and prov.take == take, name
@@ -68,34 +70,34 @@ def test_every_artifact_of_the_chain_keeps_the_motions_provenance(chain):
         assert [s.phone for s in prov.segments] == search.phone
         assert [s.node for s in prov.segments] == [int(n) for n in search.node]
         np.testing.assert_array_equal([s.start for s in prov.segments], search.start)
-        report = check.check_file(chain / name)
+        report = check.check_file(carried / name)
         assert report.problems == [], name
 
 
-def test_a_captured_take_carries_its_name_and_no_phones(chain, held_out_take):
-    prov = RigCurves.read(chain / "cap_c.h5").provenance
+def test_a_captured_take_carries_its_name_and_no_phones(carried, held_out_take):
+    prov = RigCurves.read(carried / "cap_c.h5").provenance
     assert prov.origin == "capture" and prov.segments == []
     assert set(prov.take) == {held_out_take} and set(prov.phone) == {""} and (prov.node == -1).all()
-    cap = Motion.read(chain / "cap.h5")
+    cap = Motion.read(carried / "cap.h5")
     np.testing.assert_array_equal(prov.source_frame, nearest_frames(len(cap.markers), cap.fps, len(cap.markers_capture),
                                                                     cap.capture_fps))
-    assert check.check_file(chain / "cap_c.h5").problems == []
+    assert check.check_file(carried / "cap_c.h5").problems == []
 
 
-def test_gltf_extras_carry_the_provenance(chain):
-    _, search, phone, emotion, node, take = _expected(chain / "m.h5")
-    export.run(chain / "c.h5", "gltf", chain / "c.gltf", Config.load().settings("export"), overwrite=True)
-    doc = json.loads((chain / "c.gltf").read_text())
+def test_gltf_extras_carry_the_provenance(carried):
+    _, search, phone, emotion, node, take = _expected(carried / "m.h5")
+    export.run(carried / "c.h5", "gltf", carried / "c.gltf", Config.load().settings("export"), overwrite=True)
+    doc = json.loads((carried / "c.gltf").read_text())
     p = doc["animations"][0]["extras"]["facesynth_provenance"]
     assert p["frames"]["phone"] == phone and p["frames"]["emotion"] == emotion and p["frames"]["take"] == take
     assert p["frames"]["node"] == node.tolist()
     assert [s["phone"] for s in p["phones"]] == search.phone and [s["node"] for s in p["phones"]] == search.node.tolist()
 
 
-def test_resampled_export_takes_the_nearest_source_frame(chain):
-    c = RigCurves.read(chain / "c.h5")
-    export.run(chain / "c.h5", "gltf", chain / "c60.gltf", Config.load().settings("export"), fps=60.0, overwrite=True)
-    p = json.loads((chain / "c60.gltf").read_text())["animations"][0]["extras"]["facesynth_provenance"]
+def test_resampled_export_takes_the_nearest_source_frame(carried):
+    c = RigCurves.read(carried / "c.h5")
+    export.run(carried / "c.h5", "gltf", carried / "c60.gltf", Config.load().settings("export"), fps=60.0, overwrite=True)
+    p = json.loads((carried / "c60.gltf").read_text())["animations"][0]["extras"]["facesynth_provenance"]
     n = len(p["frames"]["phone"])
     assert n == pytest.approx(2 * c.n_frames, abs=1)
     # frame i at i/60 s: the nearest 30 frames/s frame is round(i / 2) (halves round up)
@@ -106,12 +108,12 @@ def test_resampled_export_takes_the_nearest_source_frame(chain):
 
 @pytest.mark.skipif(not usd.available(), reason="usd-core (pxr) is not installed: pip install 'facesynth[usd]'")
 @pytest.mark.parametrize("name", ["c.h5", "a.h5"])
-def test_usd_custom_data_carries_the_provenance(chain, name):
+def test_usd_custom_data_carries_the_provenance(carried, name):
     from pxr import Usd
 
-    _, search, phone, emotion, node, take = _expected(chain / "m.h5")
-    out = chain / f"{name}.usda"
-    export.run(chain / name, "usda", out, Config.load().settings("export"), overwrite=True)
+    _, search, phone, emotion, node, take = _expected(carried / "m.h5")
+    out = carried / f"{name}.usda"
+    export.run(carried / name, "usda", out, Config.load().settings("export"), overwrite=True)
     stage = Usd.Stage.Open(str(out))
     data = stage.GetPrimAtPath("/Face").GetCustomData()["facesynth"]["provenance"]
     assert list(data["phone"]) == phone and list(data["emotion"]) == emotion and list(data["take"]) == take
@@ -120,14 +122,14 @@ def test_usd_custom_data_carries_the_provenance(chain, name):
     assert data["origin"] == "synthesis"
 
 
-def test_the_player_labels_a_capture_with_its_take_and_a_synthesis_with_its_phones(chain, held_out_take):
+def test_the_player_labels_a_capture_with_its_take_and_a_synthesis_with_its_phones(carried, held_out_take):
     from facesynth.domain.exports.animation import load
     from facesynth.domain.exports.player import payload
 
-    captured = payload(load(chain / "cap_c.h5"))
+    captured = payload(load(carried / "cap_c.h5"))
     assert captured["phones"] == [] and [r["emotion"] for r in captured["take_runs"]] == [held_out_take]
     assert captured["take_runs"][0]["end"] == pytest.approx(captured["duration"])
-    synthesized = payload(load(chain / "a.h5"))  # a deformed mesh: its phones from its own provenance
-    search, _ = Motion.read_search(chain / "m.h5")
+    synthesized = payload(load(carried / "a.h5"))  # a deformed mesh: its phones from its own provenance
+    search, _ = Motion.read_search(carried / "m.h5")
     assert [p["phone"] for p in synthesized["phones"]] == search.phone and synthesized["take_runs"] == []
-    assert synthesized["frame_provenance"]["phone"] == _expected(chain / "m.h5")[2]
+    assert synthesized["frame_provenance"]["phone"] == _expected(carried / "m.h5")[2]
