@@ -57,3 +57,25 @@ def test_masked_frames_do_not_count_and_unseen_phones_get_the_mean():
     assert np.abs(fitted.targets).max() < 50.0
     out = fitted.predict(["pau", "q", "pau"], np.array([0.0, 0.1, 0.2]), np.array([0.1, 0.2, 0.3]), 36, 120.0)
     assert out.shape == (36, 2) and np.isfinite(out).all()
+
+
+def test_the_objective_gradient_matches_finite_differences(monkeypatch):
+    from facesynth.domain.methods import coarticulation
+
+    objectives = []
+    minimize = coarticulation.minimize
+
+    def recording(fun, x0, **options):
+        objectives.append(fun)
+        return minimize(fun, x0, **options)
+
+    monkeypatch.setattr(coarticulation, "minimize", recording)
+    rng = np.random.default_rng(3)
+    truth = DominanceModel(("a", "b", "c", "d", "pau"), rng.normal(0, 5, (5, 3)), np.array([1.0, 4.0, 0.5, 1.0, 2.0]),
+                           np.array([15.0, 40.0, 10.0, 25.0, 8.0]))
+    fit_dominance(_sentences(truth, rng, n=4), 120.0, max_iterations=1)
+    x = np.concatenate([rng.normal(0, 0.5, 5), np.log(rng.uniform(5, 50, 5))])
+    _, gradient = objectives[0](x)
+    step = 1e-6
+    central = np.array([(objectives[0](x + e)[0] - objectives[0](x - e)[0]) / (2 * step) for e in np.eye(len(x)) * step])
+    assert np.allclose(gradient, central, rtol=1e-4, atol=1e-9 * np.abs(gradient).max())

@@ -103,7 +103,15 @@ from facesynth.model.corpus import Corpus
 from facesynth.model.motiondb import MotionDatabase
 
 from .baselines import fit_rigid, openfacefx_arkit, openfacefx_missing, rig_markers
-from .bootstrap import Statistic, interval, paired_difference, pooled_percentile, resamples
+from .bootstrap import (
+    ResampledStatistic,
+    Statistic,
+    interval,
+    paired_difference,
+    pooled_means,
+    pooled_percentile,
+    resamples,
+)
 
 BILABIALS = ("p", "b", "m")
 
@@ -486,33 +494,46 @@ def aggregate(rows: list[dict]) -> dict:
     return out
 
 
-def _weighted_root(key: str):
-    def stat(rows: list[dict], idx: np.ndarray) -> float:
-        w = np.array([rows[i]["frames"] for i in idx], float)
-        return float(np.sqrt(np.sum(w * np.array([rows[i][key] for i in idx])) / np.sum(w)))
+def _field(rows: list[dict], key: str) -> np.ndarray:
+    """(n,) float: one per-sentence field of ``rows``."""
+    return np.array([r[key] for r in rows], float)
+
+
+def _weighted_root(key: str) -> Callable[[list[dict], np.ndarray], np.ndarray]:
+    def stat(rows: list[dict], idx: np.ndarray) -> np.ndarray:
+        w = _field(rows, "frames")[idx]
+        return np.sqrt(np.sum(w * _field(rows, key)[idx], axis=-1) / np.sum(w, axis=-1))
     return stat
 
 
-def _of_rows(stat: Callable[[list[dict], np.ndarray], float]) -> Callable[[list[dict]], Statistic]:
-    """A figure ``stat(rows, idx)`` as :data:`FIGURES` holds it: rows -> (idx -> float)."""
-    return lambda rows: lambda idx: stat(rows, idx)
+def _of_rows(stat: Callable[[list[dict], np.ndarray], np.ndarray]) -> Callable[[list[dict]], Statistic]:
+    """A figure ``stat(rows, idx)`` as :data:`FIGURES` holds it: rows -> (idx -> float), computed on
+    all resamples at once (:class:`~facesynth.domain.evaluation.bootstrap.ResampledStatistic`).
+    ``stat`` takes a method's rows (one per sentence) and the sentence indices ``idx`` (..., n) of
+    resamples, and returns the figure of each resample, shape (...) (NaN where undefined)."""
+    return lambda rows: ResampledStatistic(lambda index: stat(rows, index))
 
 
-def _mean_r(rows, idx):
-    values = np.array([rows[i]["mouth_r"] for i in idx], float)
-    return float(np.nanmean(values)) if np.isfinite(values).any() else float("nan")
+def _mean_r(rows: list[dict], idx: np.ndarray) -> np.ndarray:
+    values = _field(rows, "mouth_r")[idx]
+    missing = np.isnan(values)
+    count = np.sum(~missing, axis=-1)
+    total = np.sum(np.where(missing, 0.0, values), axis=-1)  # np.nanmean's sum
+    defined = np.isfinite(values).any(axis=-1)
+    return np.divide(total, count, out=np.full(total.shape, np.nan), where=defined)
 
 
-def _closure_rate(rows, idx):
-    onsets = np.concatenate([rows[i]["_onsets"] for i in idx])
-    return float(np.isfinite(onsets).mean()) if len(onsets) else float("nan")
+def _closure_rate(rows: list[dict], idx: np.ndarray) -> np.ndarray:
+    return pooled_means([np.isfinite(r["_onsets"]).astype(float) for r in rows], idx)
 
 
-def _closure_delay(rows, idx):
-    a = np.concatenate([rows[i]["_onsets"] for i in idx])
-    b = np.concatenate([rows[i]["_onsets_clean"] for i in idx])
-    both = np.isfinite(a) & np.isfinite(b)
-    return float(1000.0 * np.abs(a[both] - b[both]).mean()) if both.any() else float("nan")
+def _closure_delay(rows: list[dict], idx: np.ndarray) -> np.ndarray:
+    delays = []
+    for r in rows:
+        a, b = np.asarray(r["_onsets"], float), np.asarray(r["_onsets_clean"], float)
+        both = np.isfinite(a) & np.isfinite(b)
+        delays.append(np.abs(a[both] - b[both]))
+    return 1000.0 * pooled_means(delays, idx)
 
 
 def _join_p99(rows: list[dict]) -> Statistic:
@@ -523,8 +544,10 @@ def _interior_p99(rows: list[dict]) -> Statistic:
     return pooled_percentile([r["_d2_interior"] for r in rows], JOIN_PERCENTILE)
 
 
-def _emotion_accuracy(rows, idx):
-    return float(sum(rows[i]["emotion_correct"] for i in idx) / max(1, sum(rows[i]["frames"] for i in idx)))
+def _emotion_accuracy(rows: list[dict], idx: np.ndarray) -> np.ndarray:
+    correct = np.array([r["emotion_correct"] for r in rows], np.int64)[idx].sum(axis=-1)
+    frames = np.array([r["frames"] for r in rows], np.int64)[idx].sum(axis=-1)
+    return correct / np.maximum(1, frames)
 
 
 #: key -> (label, statistic, needs the clean truth, lower is better). The statistic takes a
@@ -551,15 +574,18 @@ def figures(per_method: dict[str, list[dict]], settings: EvaluateSettings, with_
     n = len(per_method["dp"])
     index = resamples(n, settings.bootstrap_resamples, settings.seed)
     out: dict = {}
+    dp_statistics: dict[str, Statistic] = {}  # prepared once for every paired difference
     for method, rows in per_method.items():
         entry = {}
-        for key, (_, stat, clean, _) in FIGURES.items():
+        for key, (_, figure, clean, _) in FIGURES.items():
             if (clean and not with_clean) or any(_needed(key) not in r for r in rows):
                 continue
-            entry[key] = interval(stat(rows), n, index)
-            if method != "dp" and method not in REFERENCES and key in out.get("dp", {}):
-                dp_rows = per_method["dp"]
-                entry[f"dp_minus.{key}"] = paired_difference(stat(dp_rows), stat(rows), n, index)
+            stat = figure(rows)
+            entry[key] = interval(stat, n, index)
+            if method == "dp":
+                dp_statistics[key] = stat
+            elif method not in REFERENCES and key in out.get("dp", {}):
+                entry[f"dp_minus.{key}"] = paired_difference(dp_statistics[key], stat, n, index)
         if with_clean and all("_sweep" in r for r in rows):
             sweep = np.concatenate([r["_sweep"] for r in rows], axis=1)
             entry["closure_sweep"] = {f"{k * settings.closure_mm:g}": (float(sweep[j].mean()) if sweep.shape[1] else None)

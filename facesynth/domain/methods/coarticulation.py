@@ -30,6 +30,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import minimize
 
+from facesynth.base.blas import one_blas_thread
 from facesynth.base.errors import InputError
 from facesynth.base.phonemes import PAU
 from facesynth.domain.postprocess.concatenation import frame_ranges
@@ -84,9 +85,21 @@ class DominanceModel:
 def token_weights(starts: np.ndarray, ends: np.ndarray, alpha: np.ndarray, theta: np.ndarray, n_frames: int,
                   fps: float) -> np.ndarray:
     """Normalized dominances (n_frames, n) of n tokens: row t sums to 1."""
-    t = np.arange(n_frames)[:, None] / fps
+    return normalized_dominances(centre_distances(np.arange(n_frames), starts, ends, fps), alpha, theta)
+
+
+def centre_distances(frames: np.ndarray, starts: np.ndarray, ends: np.ndarray, fps: float) -> np.ndarray:
+    """|t - c_i| (T, n) in s from the times of ``frames`` (T,) at ``fps`` to the centres of n tokens
+    (``starts``, ``ends`` (n,) s)."""
+    t = np.asarray(frames)[:, None] / fps
     centres = 0.5 * (np.asarray(starts) + np.asarray(ends))[None, :]
-    log_d = np.log(alpha)[None, :] - theta[None, :] * np.abs(t - centres)
+    return np.abs(t - centres)
+
+
+def normalized_dominances(distances: np.ndarray, alpha: np.ndarray, theta: np.ndarray) -> np.ndarray:
+    """Dominances (T, n) of n tokens (magnitudes ``alpha`` (n,), rates ``theta`` (n,) 1/s) at
+    ``distances`` (T, n) s from their centres, normalized so that row t sums to 1."""
+    log_d = np.log(alpha)[None, :] - theta[None, :] * distances
     log_d -= log_d.max(axis=1, keepdims=True)  # no underflow far from every centre
     d = np.exp(log_d)
     return d / d.sum(axis=1, keepdims=True)
@@ -95,10 +108,9 @@ def token_weights(starts: np.ndarray, ends: np.ndarray, alpha: np.ndarray, theta
 @dataclass
 class _Sequence:
     token_type: np.ndarray  # (n,) index into the phone types
-    starts: np.ndarray
-    ends: np.ndarray
-    frames: np.ndarray      # (T,) frame indices kept for fitting
+    distances: np.ndarray   # (T_kept, n) s, |t - c_i| from the kept frames to the token centres
     poses: np.ndarray       # (T_kept, K)
+    type_pairs: np.ndarray  # (n * n,) flat index p(i) * P + p(j) into the (P, P) Gram matrix, row-major over (i, j)
 
 
 def fit_dominance(sentences: list[tuple[list[str], np.ndarray, np.ndarray, np.ndarray, np.ndarray]], fps: float,
@@ -111,57 +123,52 @@ def fit_dominance(sentences: list[tuple[list[str], np.ndarray, np.ndarray, np.nd
     """
     types = sorted({p for s in sentences for p in s[0]})
     index = {p: k for k, p in enumerate(types)}
+    n_types = len(types)
     seqs = []
     for phones, starts, ends, poses, mask in sentences:
         keep = np.nonzero(mask & np.isfinite(poses).all(axis=1))[0]
-        seqs.append(_Sequence(np.array([index[p] for p in phones]), np.asarray(starts, float), np.asarray(ends, float),
-                              keep, poses[keep].astype(np.float64)))
-    n_types = len(types)
+        token_type = np.array([index[p] for p in phones], dtype=np.int64)
+        seqs.append(_Sequence(token_type, centre_distances(keep, np.asarray(starts, float), np.asarray(ends, float), fps),
+                              poses[keep].astype(np.float64), (token_type[:, None] * n_types + token_type[None, :]).ravel()))
     total = np.concatenate([s.poses for s in seqs])
     y_norm = float((total**2).sum())
+    type_pairs = np.concatenate([sq.type_pairs for sq in seqs])
+    all_token_types = np.concatenate([sq.token_type for sq in seqs])
 
-    onehots = []
-    for sq in seqs:
-        onehot = np.zeros((len(sq.token_type), n_types))
-        onehot[np.arange(len(sq.token_type)), sq.token_type] = 1.0
-        onehots.append(onehot)
-
-    def weights_of(x: np.ndarray) -> list[tuple[np.ndarray, np.ndarray]]:
-        """Per sequence, the normalized token dominances (T_kept, n) and |t - c_i| (T_kept, n) s."""
+    def weights_of(x: np.ndarray) -> list[np.ndarray]:
+        """Per sequence, the normalized token dominances (T_kept, n)."""
         alpha, theta = np.exp(x[:n_types]), np.exp(x[n_types:])
-        out = []
-        for sq in seqs:
-            n_frames = int(sq.frames.max()) + 1 if len(sq.frames) else 0
-            w = token_weights(sq.starts, sq.ends, alpha[sq.token_type], theta[sq.token_type], n_frames, fps)[sq.frames]
-            tau = np.abs(sq.frames[:, None] / fps - 0.5 * (sq.starts + sq.ends)[None, :])
-            out.append((w, tau))
-        return out
+        return [normalized_dominances(sq.distances, alpha[sq.token_type], theta[sq.token_type]) for sq in seqs]
 
     ridge = [0.0]
 
     def solve(x: np.ndarray, with_gradient: bool = False):
-        tokens = weights_of(x)
-        blocks = [w @ onehot for (w, _), onehot in zip(tokens, onehots)]  # (T_kept, P) per sequence
-        gram = sum(a.T @ a for a in blocks)
+        # The design of a sequence is W E, W (T_kept, n) its dominances and E (n, P) its tokens' one-hot
+        # types, so the normal equations are assembled from the small token products: E^T (W^T W) E scatters
+        # the (n, n) Gram matrix of the tokens onto their types' pairs, E^T (W^T Y) sums its rows by type.
+        weights = weights_of(x)
+        gram = np.bincount(type_pairs, weights=np.concatenate([(w.T @ w).ravel() for w in weights]),
+                           minlength=n_types * n_types).reshape(n_types, n_types)
         if not ridge[0]:
             ridge[0] = RELATIVE_RIDGE * max(float(np.trace(gram)) / n_types, 1e-12)
         gram = gram + ridge[0] * np.eye(n_types)
-        rhs = sum(a.T @ sq.poses for a, sq in zip(blocks, seqs))
+        rhs = np.zeros((n_types, total.shape[1]))
+        np.add.at(rhs, all_token_types, np.concatenate([w.T @ sq.poses for w, sq in zip(weights, seqs)]))
         targets = np.linalg.solve(gram, rhs)
         residual = ridge[0] * float((targets**2).sum())  # the ridge belongs to the objective, so the gradient below is exact
         gradient = np.zeros(2 * n_types)
         theta = np.exp(x[n_types:])
-        for (w, tau), a, sq in zip(tokens, blocks, seqs):
-            fitted = a @ targets
+        for w, sq in zip(weights, seqs):
+            token_targets = targets[sq.token_type]                                        # (n, K)
+            fitted = w @ token_targets
             error = fitted - sq.poses
             residual += float((error**2).sum())
             if with_gradient:
                 # variable projection: d residual / dx = 2 sum_t error_t . dF_t/dx at the solved targets, with
                 # dF_t/dx = sum_i w_ti g_ti (T_p(i) - F_t), g = d log D_i / dx (1 for log alpha, -theta |tau| for log theta)
-                token_targets = targets[sq.token_type]                                    # (n, K)
                 h = w * (error @ token_targets.T - (error * fitted).sum(axis=1, keepdims=True))  # (T_kept, n)
                 np.add.at(gradient, sq.token_type, 2.0 * h.sum(axis=0))
-                np.add.at(gradient, n_types + sq.token_type, 2.0 * (h * (-theta[sq.token_type] * tau)).sum(axis=0))
+                np.add.at(gradient, n_types + sq.token_type, 2.0 * (h * (-theta[sq.token_type] * sq.distances)).sum(axis=0))
         return targets, residual, gradient
 
     # start: equal magnitudes, a 60 ms dominance decay (theta = 1/0.06 s); the ridge is fixed there
@@ -172,8 +179,9 @@ def fit_dominance(sentences: list[tuple[list[str], np.ndarray, np.ndarray, np.nd
         _, residual, gradient = solve(x, with_gradient=True)
         return residual / y_norm, gradient / y_norm
 
-    result = minimize(objective, x0, jac=True, method="L-BFGS-B", bounds=bounds, options={"maxiter": max_iterations})
-    targets, _, _ = solve(result.x)
+    with one_blas_thread():  # products of tens of rows
+        result = minimize(objective, x0, jac=True, method="L-BFGS-B", bounds=bounds, options={"maxiter": max_iterations})
+        targets, _, _ = solve(result.x)
     return DominanceModel(tuple(types), targets, np.exp(result.x[:n_types]), np.exp(result.x[n_types:]))
 
 

@@ -44,6 +44,7 @@ import numpy as np
 from scipy import sparse
 from scipy.sparse.linalg import splu
 
+from facesynth.base.blas import one_blas_thread
 from facesynth.base.opencl import aligned_empty, context, kernel, queue
 from facesynth.base.opencl import use_opencl as device_ok
 
@@ -258,10 +259,8 @@ class GradientBlender:
 
     def linear(self, alpha: np.ndarray) -> np.ndarray:
         """(T, V, 3) float32 linear blend ``rest + sum_k alpha_k (G_k - rest)`` for alpha (T, K)."""
-        from threadpoolctl import threadpool_limits
-
         a = np.asarray(alpha, np.float32)
-        with threadpool_limits(1):
+        with one_blas_thread():
             return self.rest.astype(np.float32) + (a @ self.offsets).reshape(len(a), len(self.rest), 3)
 
     def blend(self, alpha: np.ndarray) -> np.ndarray:
@@ -269,9 +268,7 @@ class GradientBlender:
 
         Runs with one BLAS thread: SuperLU's back-substitution calls BLAS on small supernodes, where
         waking threads costs more than the work (3 to 6 times slower on a busy two-core machine)."""
-        from threadpoolctl import threadpool_limits
-
-        with threadpool_limits(1):
+        with one_blas_thread():
             return self._blend(np.asarray(alpha, np.float32))
 
     def _blend(self, a: np.ndarray) -> np.ndarray:
