@@ -13,6 +13,7 @@ import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
 
+import c3d
 import numpy as np
 
 from facesynth.base import limits
@@ -220,24 +221,51 @@ def _c3d_unit_scale(unit: str, path: Path) -> float:
 
 
 def write_c3d(path: Path, take: MarkerTake) -> None:
-    """Write markers (mm) as a float C3D; NaN samples are written as missing (residual -1)."""
-    import c3d
+    """Write markers (mm) as a float C3D; NaN samples are written as missing (residual -1).
 
-    writer = c3d.Writer(point_rate=float(take.fps), point_units="mm  ")
+    The header and parameters are the ``c3d`` library's; the frames are :func:`_point_records`,
+    the bytes the library's own frame loop writes, encoded for the whole take at once."""
+    writer = _RecordsWriter(_point_records(take.positions), point_rate=float(take.fps), point_units="mm  ")
     writer.set_point_labels(take.names)
-    n_markers = len(take.names)
-    empty_analog = np.zeros((0, 0), dtype=np.float32)
-    frames = []
-    for xyz in take.positions:
-        points = np.zeros((n_markers, 5), dtype=np.float32)
-        missing = np.isnan(xyz).any(axis=1)
-        points[:, :3] = np.where(missing[:, None], 0.0, xyz)
-        points[:, 3] = np.where(missing, -1.0, 0.0)
-        frames.append((points, empty_analog))
-    writer.add_frames(frames)
     with open(path, "wb") as fh, warnings.catch_warnings():
         warnings.simplefilter("ignore")
         writer.write(fh)
+
+
+def _point_records(positions: np.ndarray) -> np.ndarray:
+    """The C3D float point records of a take: positions (T, M, 3) mm, NaN where missing ->
+    (T, M, 4) float32 x, y, z and residual word, 0 for a sample and -1 for a missing one.
+
+    A missing sample keeps the coordinates of the marker's last sample before it (0 before its
+    first), as the ``c3d`` library's writer leaves them; readers go by the residual."""
+    positions = np.asarray(positions, np.float32)
+    missing = np.isnan(positions).any(axis=2)                                     # (T, M)
+    n_frames, n_markers = missing.shape
+    sampled_at = np.where(missing, -1, np.arange(n_frames)[:, None])
+    last_sample = np.maximum.accumulate(sampled_at, axis=0)                       # (T, M), -1 before the first
+    records = np.empty((n_frames, n_markers, 4), np.float32)
+    records[..., :3] = positions
+    records[..., 3] = np.where(missing, -1.0, 0.0)
+    frame, marker = np.nonzero(missing)
+    held = last_sample[frame, marker]
+    records[frame, marker, :3] = np.where((held >= 0)[:, None], positions[np.maximum(held, 0), marker], 0.0)
+    return records
+
+
+class _RecordsWriter(c3d.Writer):
+    """``c3d.Writer`` for float points (its default, negative point scale) given as their records
+    (T, M, 4) (:func:`_point_records`), without analog channels: written in one piece rather
+    than frame by frame."""
+
+    def __init__(self, records: np.ndarray, **options) -> None:
+        super().__init__(**options)
+        self.records = records
+        empty_analog = np.zeros((0, 0), np.float32)
+        self.add_frames([(frame, empty_analog) for frame in records])  # the header's counts
+
+    def _write_frames(self, handle) -> None:
+        handle.write(self.records.astype("<f4", copy=False).tobytes())
+        self._pad_block(handle)
 
 
 def text_ends_with_newline(path: Path) -> bool:

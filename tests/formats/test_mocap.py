@@ -24,6 +24,33 @@ def test_round_trip_keeps_names_rate_and_gaps(tmp_path, writer, suffix):
     np.testing.assert_allclose(back.positions, take.positions, atol=1e-3)
 
 
+@pytest.mark.filterwarnings("ignore:No analog data")
+def test_c3d_bytes_are_those_of_the_c3d_librarys_frame_loop(tmp_path):
+    """write_c3d encodes the frames at once; the c3d library, fed frame by frame, writes the
+    same bytes (a missing sample keeps the marker's last coordinates, 0 before its first)."""
+    import c3d
+
+    rng = np.random.default_rng(2)
+    positions = rng.normal(0, 50, (40, 5, 3)).astype(np.float32)
+    positions[rng.random((40, 5)) < 0.2] = np.nan
+    positions[:6, 1] = np.nan
+    positions[7, 3, 1] = np.nan
+    positions[:, 4] = np.nan
+    names = ["A", "B", "C", "D", "E"]
+    write_c3d(tmp_path / "fast.c3d", MarkerTake(positions, names, 100.0))
+    writer = c3d.Writer(point_rate=100.0, point_units="mm  ")
+    writer.set_point_labels(names)
+    for xyz in positions:
+        missing = np.isnan(xyz).any(axis=1)
+        points = np.zeros((5, 5), np.float32)
+        points[:, :3] = np.where(missing[:, None], 0.0, xyz)
+        points[:, 3] = np.where(missing, -1.0, 0.0)
+        writer.add_frames([(points, np.zeros((0, 0), np.float32))])
+    with open(tmp_path / "library.c3d", "wb") as fh:
+        writer.write(fh)
+    assert (tmp_path / "fast.c3d").read_bytes() == (tmp_path / "library.c3d").read_bytes()
+
+
 def test_truncated_c3d_is_refused(tmp_path):
     p = tmp_path / "t.c3d"
     write_c3d(p, _take())

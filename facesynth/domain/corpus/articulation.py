@@ -45,6 +45,8 @@ from facesynth.base.config import SampleCorpusSettings
 from facesynth.base.phonemes import PAU, VOWELS
 from facesynth.domain.rig.face import Rig
 
+from .recurrences_numba import damped_response
+
 #: Articulatory channels and the rig shapes each drives (a sided channel drives _L and _R).
 CHANNELS: dict[str, tuple[str, ...]] = {
     "jawOpen": ("jawOpen",), "jawForward": ("jawForward",),
@@ -197,20 +199,15 @@ def critically_damped(inputs: np.ndarray, omega: np.ndarray, fps: float, substep
     """Drive critically damped second-order systems ``x'' = w^2 (u - x) - 2 w x'``.
 
     inputs : (T, C) piecewise-constant inputs u per frame; omega : (T, C) or (C,) natural
-    frequencies (rad/s). Starts at rest at the first input. Returns x : (T, C).
+    frequencies (rad/s). Starts at rest at the first input; ``substeps`` semi-implicit Euler
+    steps per frame (stable for w * dt << 1). Returns x : (T, C).
     """
-    inputs = np.asarray(inputs, float)
-    omega = np.broadcast_to(np.asarray(omega, float), inputs.shape)
-    dt = 1.0 / (fps * substeps)
-    x = inputs[0].copy()
-    v = np.zeros_like(x)
+    inputs = np.ascontiguousarray(inputs, dtype=np.float64)
+    frequencies = np.empty_like(inputs)
+    frequencies[...] = omega  # (T, C) or (C,) -> (T, C)
     out = np.empty_like(inputs)
-    for t in range(len(inputs)):
-        u, w = inputs[t], omega[t]
-        for _ in range(substeps):  # semi-implicit Euler, stable for w*dt << 1
-            v += dt * (w * w * (u - x) - 2.0 * w * v)
-            x += dt * v
-        out[t] = x
+    if len(inputs):
+        damped_response(inputs, frequencies, 1.0 / (fps * substeps), substeps, out)
     return out
 
 

@@ -226,6 +226,16 @@ def _capture(clean: np.ndarray, rotations: np.ndarray, translations: np.ndarray,
     return captured + rng.normal(0.0, MARKER_NOISE_MM, captured.shape)
 
 
+def _write_head(path: Path, rotations: np.ndarray, translations: np.ndarray) -> None:
+    """``groundtruth/<take>_head.csv``: per frame the head rotation (T, 3, 3), row-major with 8
+    decimals, and translation (T, 3) mm with 5, as ``csv.writer`` writes the rows (``\\r\\n``)."""
+    row_format = ",".join(["%.8f"] * 9 + ["%.5f"] * 3) + "\r\n"
+    rows = np.concatenate([rotations.reshape(len(rotations), 9), translations], axis=1)
+    with open(path, "w", newline="") as fh:
+        csv.writer(fh).writerow([f"r{i}{j}" for i in range(3) for j in range(3)] + ["tx", "ty", "tz"])
+        fh.write("".join(row_format % tuple(row) for row in rows.tolist()))
+
+
 def default_settings() -> SampleCorpusSettings:
     """The ``[sample_corpus]`` settings of configs/default.toml."""
     return Config.load().settings("sample_corpus")
@@ -302,11 +312,7 @@ def generate(out_dir: Path, preset: str = "small", seed: int = 0, overwrite: boo
                        {"phones": phones, "words": words, "emotion": emotion_segments(perf.emotion, CAPTURE_FPS, utt.duration)},
                        utt.duration)
         write_c3d(out_dir / "groundtruth" / f"{take}.c3d", MarkerTake(clean.astype(np.float32), markers.names, CAPTURE_FPS))
-        with open(out_dir / "groundtruth" / f"{take}_head.csv", "w", newline="") as fh:
-            writer = csv.writer(fh)
-            writer.writerow([f"r{i}{j}" for i in range(3) for j in range(3)] + ["tx", "ty", "tz"])
-            for r, tr in zip(perf.rotations, perf.translations):
-                writer.writerow([f"{v:.8f}" for v in r.reshape(-1)] + [f"{v:.5f}" for v in tr])
+        _write_head(out_dir / "groundtruth" / f"{take}_head.csv", perf.rotations, perf.translations)
         write_truth(out_dir / "groundtruth" / f"{take}_truth.csv", rig, CAPTURE_FPS, perf.weights,
                     perf.emotion.labels(), perf.emotion.frame_intensity())
         n_frames_total += len(captured)

@@ -11,13 +11,15 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cache, lru_cache
 from importlib import resources
 
 import numpy as np
 from scipy.signal import butter, lfilter, sosfilt
 
 from facesynth.base.phonemes import PAU, VOWELS, pronunciations, to_festival, typical_duration
+
+from .recurrences_numba import section_cascade
 
 
 @dataclass(frozen=True)
@@ -211,24 +213,55 @@ def head_motion(f0: np.ndarray, style: EmotionStyle, fps: float, rng: np.random.
         nod -= style.head_gain * np.deg2rad(rng.uniform(0.5, 1.5)) * np.exp(-((t - end - 0.1) ** 2) / (2 * 0.12**2))
     yaw = style.head_gain * smooth_noise(np.deg2rad(1.5), 150)
     roll = style.head_gain * smooth_noise(np.deg2rad(0.8), 150)
-    rotations = np.stack([_euler(a, b, c) for a, b, c in zip(nod, yaw, roll)])
+    rotations = _euler(nod, yaw, roll)
     translations = np.stack([smooth_noise(1.5, 200), smooth_noise(1.5, 200), smooth_noise(2.0, 200)], 1)
     return rotations, translations
 
 
-def _euler(pitch_x: float, yaw_y: float, roll_z: float) -> np.ndarray:
+def _euler(pitch_x: np.ndarray, yaw_y: np.ndarray, roll_z: np.ndarray) -> np.ndarray:
+    """Rotations (T, 3, 3) ``Rz @ Ry @ Rx`` for the angles (T,) rad about x, y and z."""
     cx, sx, cy, sy, cz, sz = np.cos(pitch_x), np.sin(pitch_x), np.cos(yaw_y), np.sin(yaw_y), np.cos(roll_z), np.sin(roll_z)
-    rx = np.array([[1, 0, 0], [0, cx, -sx], [0, sx, cx]])
-    ry = np.array([[cy, 0, sy], [0, 1, 0], [-sy, 0, cy]])
-    rz = np.array([[cz, -sz, 0], [sz, cz, 0], [0, 0, 1]])
+    one, zero = np.ones_like(cx), np.zeros_like(cx)
+
+    def matrices(*entries: np.ndarray) -> np.ndarray:  # nine (T,) entries, row by row -> (T, 3, 3)
+        return np.stack(entries, axis=-1).reshape(-1, 3, 3)
+
+    rx = matrices(one, zero, zero, zero, cx, -sx, zero, sx, cx)
+    ry = matrices(cy, zero, sy, zero, one, zero, -sy, zero, cy)
+    rz = matrices(cz, -sz, zero, sz, cz, zero, zero, zero, one)
     return rz @ ry @ rx
 
 
-def _resonator(freq: float, bandwidth: float, rate: int) -> tuple[np.ndarray, np.ndarray]:
+def _resonators(freqs: np.ndarray, bandwidth: float, rate: int) -> tuple[np.ndarray, np.ndarray]:
+    """Second-order resonators of unit gain at DC, one per centre frequency.
+
+    freqs : (n,) Hz; bandwidth : Hz. Returns (numerators (n, 3), denominators (n, 3)), the
+    numerators zero past their first coefficient and the denominators starting with 1.
+    """
     r = np.exp(-np.pi * bandwidth / rate)
-    theta = 2 * np.pi * freq / rate
-    a = np.array([1.0, -2 * r * np.cos(theta), r * r])
-    return np.array([a.sum()]), a  # unit gain at DC
+    theta = 2 * np.pi * freqs / rate
+    denominators = np.stack([np.ones_like(theta), -2 * r * np.cos(theta), np.full_like(theta, r * r)], axis=1)
+    numerators = np.zeros_like(denominators)
+    numerators[:, 0] = denominators.sum(axis=1)  # unit gain at DC
+    return numerators, denominators
+
+
+@cache
+def _butter_low_pass(order: int, cutoff: float) -> tuple[np.ndarray, np.ndarray]:
+    """Butterworth low-pass ``(b, a)``, ``cutoff`` a fraction of the Nyquist rate; shared, so
+    read-only."""
+    b, a = butter(order, cutoff)
+    b.flags.writeable = a.flags.writeable = False
+    return b, a
+
+
+@cache
+def _butter_band_pass(order: int, low: float, high: float) -> np.ndarray:
+    """Butterworth band-pass second-order sections (``sos``), the edges fractions of the Nyquist
+    rate; shared, so read-only (``sosfilt`` takes a writable copy)."""
+    sos = butter(order, [low, high], btype="band", output="sos")
+    sos.flags.writeable = False
+    return sos
 
 
 def synthesize_audio(utt: ReadSentence, f0_frames: np.ndarray, fps: float, style: EmotionStyle,
@@ -241,7 +274,7 @@ def synthesize_audio(utt: ReadSentence, f0_frames: np.ndarray, fps: float, style
     f0 = np.interp(ts, np.arange(len(f0_frames)) / fps, f0_frames)
     phase = np.cumsum(f0 / rate)
     pulses = np.diff(np.floor(phase), prepend=0.0)
-    b_glot, a_glot = butter(2, 800 / (rate / 2))
+    b_glot, a_glot = _butter_low_pass(2, 800 / (rate / 2))
     source = lfilter(b_glot, a_glot, pulses) * 20.0 + 0.02 * rng.normal(size=n)
 
     idx = np.clip(np.searchsorted(utt.ends, ts, side="right"), 0, len(utt.phones) - 1)
@@ -259,16 +292,13 @@ def synthesize_audio(utt: ReadSentence, f0_frames: np.ndarray, fps: float, style
     excitation = source * voice_env
     hh = np.array([p == "hh" for p in phones])[idx]
     excitation += 0.25 * rng.normal(size=n) * _smooth(hh.astype(float), int(0.01 * rate))
-    states = [np.zeros(2) for _ in range(3)]
-    for s in range(0, n, block):
-        e = min(s + block, n)
-        tc = ts[(s + e) // 2]
-        y = excitation[s:e]
-        for k in range(3):
-            fk = float(np.interp(tc, centers, formants[:, k]))
-            b, a = _resonator(fk, 60.0 + 40.0 * k, rate)
-            y, states[k] = lfilter(b, a, y, zi=states[k])
-        out[s:e] = y
+    # Three resonators in series, their formants those at the middle sample of each block.
+    block_starts = np.arange(0, n, block)
+    block_middles = ts[(block_starts + np.minimum(block_starts + block, n)) // 2]
+    resonators = [_resonators(np.interp(block_middles, centers, formants[:, k]), 60.0 + 40.0 * k, rate) for k in range(3)]
+    numerators = np.stack([b for b, _ in resonators], axis=1)    # (n_blocks, 3, 3)
+    denominators = np.stack([a for _, a in resonators], axis=1)  # (n_blocks, 3, 3)
+    section_cascade(excitation, block, numerators, denominators, out)
     # Frication and bursts.
     for i, p in enumerate(phones):
         s, e = int(utt.starts[i] * rate), int(utt.ends[i] * rate)
@@ -276,13 +306,13 @@ def synthesize_audio(utt: ReadSentence, f0_frames: np.ndarray, fps: float, style
             continue
         if p in _FRICATION:
             lo, hi, amp = _FRICATION[p]
-            sos = butter(4, [lo / (rate / 2), min(hi, 0.45 * rate) / (rate / 2)], btype="band", output="sos")
+            sos = _butter_band_pass(4, lo / (rate / 2), min(hi, 0.45 * rate) / (rate / 2)).copy()
             env = np.sin(np.linspace(0, np.pi, e - s)) ** 0.5
             out[s:e] += amp * 6.0 * sosfilt(sos, rng.normal(size=e - s)) * env
         elif p in _STOPS:
             b0 = s + int(0.6 * (e - s))
             length = e - b0
-            sos = butter(2, [1500 / (rate / 2), 0.45], btype="band", output="sos")
+            sos = _butter_band_pass(2, 1500 / (rate / 2), 0.45).copy()
             out[b0:e] += _STOPS[p] * 8.0 * sosfilt(sos, rng.normal(size=length)) * np.exp(-np.arange(length) / (0.008 * rate))
     out *= style.loudness
     peak = np.max(np.abs(out)) + 1e-9

@@ -21,6 +21,7 @@ the head frame are ``groundtruth/<take>.c3d``.
 from __future__ import annotations
 
 import csv
+import re
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -48,21 +49,34 @@ class TakeTruth:
     arkit_weights: np.ndarray
 
 
-def _number(v: float) -> str:
-    text = f"{v:.4f}".rstrip("0").rstrip(".")
-    return "0" if text in ("", "-0") else text
+#: The zeros ending a ``%.4f`` number, with its point when nothing is left after it.
+_TRAILING_ZEROS = re.compile(r"\.?0+(?=[,\n]|$)")
+
+
+def _number_rows(values: np.ndarray) -> list[str]:
+    """values : (T, K) -> T lines of K comma-separated numbers, each rounded to four decimals
+    (``%.4f``, correctly rounded), its trailing zeros and a bare point stripped, ``-0`` as ``0``.
+
+    A ``%.4f`` text has exactly four decimals and a minus sign only in front, so ``-0.0000`` in
+    the text is always a whole field (a negative number that rounds to zero); the stripping runs
+    on the text of all the rows at once."""
+    row_format = ",".join(["%.4f"] * values.shape[1])
+    text = "\n".join(row_format % tuple(row) for row in np.asarray(values, np.float64).tolist())
+    return _TRAILING_ZEROS.sub("", text.replace("-0.0000", "0.0000")).split("\n")
 
 
 def write_truth(path: Path, rig: Rig, fps: float, weights: np.ndarray, emotion: list[str], intensity: np.ndarray) -> None:
-    """Write one take's truth. weights : (T, E) rig weights; emotion : T labels; intensity : (T,)."""
+    """Write one take's truth. weights : (T, E) rig weights; emotion : T labels; intensity : (T,).
+
+    The rows are written as ``csv.writer`` writes them (``\\r\\n`` line ends); no field needs
+    quoting (numbers and the emotion names)."""
     arkit = rig.to_arkit(weights)
+    numbers = _number_rows(np.column_stack([intensity, weights, arkit]))
     with open(path, "w", newline="", encoding="utf-8") as fh:
         writer = csv.writer(fh)
         writer.writerow(["time_s", "emotion", "intensity"] + [f"rig:{n}" for n in rig.shape_names]
                         + [f"arkit:{n}" for n in rig.arkit_names])
-        for t in range(len(weights)):
-            writer.writerow([f"{t / fps:.6f}", emotion[t], _number(intensity[t])]
-                            + [_number(v) for v in weights[t]] + [_number(v) for v in arkit[t]])
+        fh.write("".join(f"{t / fps:.6f},{emotion[t]},{numbers[t]}\r\n" for t in range(len(weights))))
 
 
 def read_truth(path: Path) -> TakeTruth:
