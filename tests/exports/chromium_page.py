@@ -48,13 +48,24 @@ class ChromiumPage:
             page = next(t for t in targets if t["type"] == "page")
             self.cdp = connect(page["webSocketDebuggerUrl"], max_size=None).__enter__()
             self.call("Emulation.setDeviceMetricsOverride", width=width, height=height, deviceScaleFactor=1, mobile=False)
-            while self.evaluate("document.body && document.body.dataset.ready") != "1":
-                if time.monotonic() - start > timeout_s:
-                    raise RuntimeError(f"the page did not get ready: {self.evaluate('document.body.innerText')}")
-                time.sleep(0.2)
+            self._wait_ready(url, start + timeout_s)
         except BaseException:
             self.close()
             raise
+
+    def _wait_ready(self, url: str, deadline: float) -> None:
+        """Wait until the document at ``url`` says ``data-ready="1"`` on its body."""
+        ready = f"location.href === {json.dumps(url)} && document.body && document.body.dataset.ready"
+        while self.evaluate(ready) != "1":
+            if time.monotonic() > deadline:
+                raise RuntimeError(f"the page did not get ready: {self.evaluate('document.body && document.body.innerText')}")
+            time.sleep(0.2)
+
+    def navigate(self, url: str, timeout_s: float = 60.0) -> None:
+        """Load ``url`` in this page (a new document: give it another address than the current
+        one, not only another fragment) and wait until it is ready."""
+        self.call("Page.navigate", url=url)
+        self._wait_ready(url, time.monotonic() + timeout_s)
 
     def call(self, method: str, **params) -> dict:
         n = next(self.ids)
