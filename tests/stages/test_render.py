@@ -206,6 +206,11 @@ def test_avi_has_every_frame_and_audio_of_equal_length(anim, tmp_path):
     assert n_frames == s.frames
     audio, rate = _audio_of(out, tmp_path)
     assert len(audio) / rate == pytest.approx(s.frames / 30.0, abs=1e-3)
+    # the sound is the audio file's own, at its own rate, to 16-bit rounding (cut or padded at the end)
+    source, source_rate = sf.read(anim[1])
+    assert rate == source_rate
+    n = min(len(audio), len(source))
+    assert np.abs(audio[:n] - source[:n]).max() <= 1 / 32768
     reader = imageio_ffmpeg.read_frames(str(out))
     meta = next(reader)
     assert tuple(meta["size"]) == (640, 480)

@@ -58,16 +58,21 @@ def draw_markers(points_px: np.ndarray, width: int, height: int, radius: int = 3
     return img
 
 
+#: The sample rate (Hz) of a video's silent soundtrack (a clip with audio keeps its audio's rate).
+SILENCE_RATE = 48000
+
 #: Audio may be longer or shorter than its animation by at most this many video frames;
 #: the difference (rounding of the frame count) is cut or padded with silence.
 MAX_AUDIO_MISMATCH_FRAMES = 2
 
 
-def clip_audio(audio_path: Path, n_frames: int, fps: float, rate: int, anim_path: Path | None = None) -> np.ndarray:
+def clip_audio(audio_path: Path, n_frames: int, fps: float, rate: int, anim_path: Path | None = None,
+               loaded: tuple[np.ndarray, int] | None = None) -> np.ndarray:
     """The clip's audio at ``rate`` (samples,) float, cut or padded to exactly n_frames / fps
-    seconds. An audio file longer or shorter than that by more than
-    :data:`MAX_AUDIO_MISMATCH_FRAMES` frames is an InputError: it is another utterance's."""
-    samples, src_rate = read_audio(audio_path)
+    seconds (to the nearest sample). An audio file longer or shorter than that by more than
+    :data:`MAX_AUDIO_MISMATCH_FRAMES` frames is an InputError: it is another utterance's.
+    ``loaded``: the file's (samples, rate) as :func:`read_audio` returned them, not read again."""
+    samples, src_rate = loaded if loaded is not None else read_audio(audio_path)
     samples = resample(samples, src_rate, rate)
     need = int(round(n_frames / fps * rate))
     if abs(len(samples) - need) > MAX_AUDIO_MISMATCH_FRAMES / fps * rate:
@@ -194,7 +199,8 @@ def render_video(anims: list[Path], audios: list[Path], out: Path, settings: Ren
                  compare: list[Path] | None = None, overwrite: bool = False, rig_path: Path | None = None,
                  binding: Path | None = None) -> RenderedVideo:
     """Render the animations (mesh animations or rig curves) one after another, each with its
-    audio (none: silence), into the AVI ``out``; ``compare``: for the side-by-side view, one
+    audio (none: silence), into the AVI ``out`` (its sound 16-bit PCM at the audio files' sample
+    rate, the highest of them where they differ); ``compare``: for the side-by-side view, one
     animation beside every one, or one per animation. Curves pose the rig ``rig_path`` (None:
     the built-in rig; ``binding`` its markers for the marker view).
     """
@@ -222,11 +228,14 @@ def render_video(anims: list[Path], audios: list[Path], out: Path, settings: Ren
     for path, c in zip(anims + compare, clips + others):
         if abs(c.fps - settings.fps) > 1e-6:
             raise InputError(f"{path}: animation is at {c.fps:g} fps but render.fps is {settings.fps:g}; set one to the other.")
-    rate = 48000
     n_frames = sum(len(c.vertices) for c in clips)
-    if audios:
-        audio = np.concatenate([clip_audio(a, len(c.vertices), settings.fps, rate, p) for c, a, p in zip(clips, audios, anims)])
+    if audios:  # the sound at the clips' own rate (their highest where they differ): no resampling in the common case
+        loaded = [read_audio(a) for a in audios]
+        rate = max(r for _, r in loaded)
+        audio = np.concatenate([clip_audio(a, len(c.vertices), settings.fps, rate, p, sound)
+                                for c, a, p, sound in zip(clips, audios, anims, loaded)])
     else:  # a capture without audio: a silent soundtrack of the video's length
+        rate = SILENCE_RATE
         audio = np.zeros(int(round(n_frames / settings.fps * rate)), np.float32)
     # The temporary audio lies beside the output (NAME.tmp-PID.wav: removed on every exit, and by
     # the next run after a kill); ffmpeg gets absolute paths, which never read as options.
