@@ -18,13 +18,14 @@ SEED   ?= 0
 all: demo
 
 # pip compiles what it installs to bytecode one file at a time; compileall does it on every core
-# (11 s against 18 s on two), ignoring a file that does not compile as pip does. facesynth is
-# compiled too: an editable install leaves it to the first run.
+# and leaves out the packages' own test folders, which nothing imports (8 s against pip's 18 s on
+# two cores), ignoring a file that does not compile as pip does. facesynth is compiled too: an
+# editable install leaves it to the first run.
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
 	$(BIN)/python -m pip install --quiet --quiet --no-compile -e '.[test,lint]'
-	$(BIN)/python -m compileall -qq -j 0 "$$($(BIN)/python -c 'import sysconfig; print(sysconfig.get_path("purelib"))')" || true
+	$(BIN)/python -m compileall -qq -j 0 -x '/tests?/' "$$($(BIN)/python -c 'import sysconfig; print(sysconfig.get_path("purelib"))')" || true
 	$(BIN)/python -m compileall -q facesynth
 	touch $@
 
