@@ -47,7 +47,7 @@ from facesynth.base.opencl import use_opencl
 from facesynth.domain import methods
 from facesynth.domain.evaluation.held_out import heldout
 from facesynth.domain.methods import MethodSettings, core
-from facesynth.domain.search.pairs import PairTerms, TransitionCosts, boundary_states, node_features
+from facesynth.domain.search.pairs import PairTerms, TransitionCosts, boundary_states, node_features, pivot_distances
 from facesynth.domain.search.synthesis import render_path, synthesize
 from facesynth.model.artifacts import atomic_path, check_output
 from facesynth.model.motiondb import MotionDatabase
@@ -110,12 +110,14 @@ class Objective:
         self.scores: dict[tuple, tuple[float, np.ndarray]] = {}
 
     def features_for(self, fit: int):
-        """The database's transition features with boundary velocities fitted over ``fit`` frames."""
+        """The database's transition features with boundary velocities fitted over ``fit`` frames,
+        their pivot distances computed once (every weight setting's search bounds with them)."""
         if fit not in self.features:
             db = self.db
             states = boundary_states(db.coeffs, db.nodes, db.model, fit)
-            self.features[fit] = dataclasses.replace(self.base_features, first_vel=states[2], last_vel=states[3],
-                                                     pivot_distances=None)
+            fitted = dataclasses.replace(self.base_features, first_vel=states[2], last_vel=states[3],
+                                         pivot_distances=None)
+            self.features[fit] = dataclasses.replace(fitted, pivot_distances=pivot_distances(fitted))
         return self.features[fit]
 
     def errors(self, s: SynthesizeSettings, fit: int, sentences, tag: str) -> np.ndarray:
