@@ -286,15 +286,18 @@ def main():
     replaced: remove them first, or add --overwrite).
 
     \b
-    Example (the whole chain on the built-in corpus, from capture to video):
+    Example (the whole chain on the built-in corpus, from capture to video, then audio alone):
       facesynth sample-corpus corpus/ --preset small
       facesynth ingest corpus/manifest.csv -o corpus.h5
       facesynth normalize corpus.h5 -o normalized.h5
       facesynth pca normalized.h5 -o pca.h5
       facesynth build-db pca.h5 -o db.h5
-      facesynth synthesize db.h5 --phonemes corpus/labels/neutral_s016.TextGrid -o motion.h5
+      echo "0 1000 happy" > happy.txt
+      facesynth synthesize db.h5 --phonemes corpus/labels/neutral_s016.TextGrid --emotions happy.txt \\
+          -o motion.h5
       facesynth solve motion.h5 -o curves.h5
       facesynth render curves.h5 --audio corpus/audio/neutral_s016.wav -o neutral_s016.avi
+      facesynth synthesize db.h5 --audio corpus/audio/neutral_s016.wav -o heard.h5
     """
 
 

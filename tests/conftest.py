@@ -59,27 +59,33 @@ def pytest_generate_tests(metafunc):
                              ids=[f"{d.spec}-{d.name}" for d in working] or ["no-device"])
 
 
+#: Short tests the first worker runs before it reads the chain, which the second builds: at least
+#: as long as building it takes (the suite's short tests take 0.3 s on average; more only delays
+#: the chain's readers a little).
+LEAD_BEFORE_CHAIN = 200
+
+
 @pytest.hookimpl(trylast=True)  # after ``-m`` and ``-k`` deselected theirs
 def pytest_collection_modifyitems(session, config, items):
     """Order the suite for pytest-xdist's work stealing (``make test`` runs ``--dist worksteal``):
     the first half of the list goes to one worker and the second half to the other, and a worker
-    that runs out takes tests from the end of the other's list. The two longest pieces of work,
-    the whole chain on the small corpus (built by the first test that needs it) and the manual's
-    examples (docs/pipeline.md, a session of their own, which needs the chain), each start one
-    half, followed by half of the tests that read that chain; the short tests come after them and
-    are what gets taken. The README's block, as long as building the chain and independent of it,
-    runs before the manual, so the second worker is not idle while the first builds the chain.
-    Without xdist the order only changes when the chain is built."""
+    that runs out takes tests from the end of the other's list. The longest piece of work, the
+    manual's examples (docs/pipeline.md, a session of their own), starts the second half: it builds
+    the chain on the small corpus (the first test that needs it builds it) and runs on it. The
+    first half starts with :data:`LEAD_BEFORE_CHAIN` short tests, so that its worker does not wait
+    for the chain, then half of the tests that read the chain; the other half follows the manual.
+    The rest of the short tests come after them and are what gets taken. Without xdist the order
+    only changes when the chain is built."""
     manual = [item for item in items if item.name == "test_doc_blocks_run[pipeline.md]"]
-    readme = [item for item in items if item.name == "test_readme_block_runs"]
     chain = [item for item in items if "chain" in getattr(item, "fixturenames", ()) and item not in manual]
     if not chain or not manual:
         return
-    moved = {id(item) for item in chain + manual + readme}
+    moved = {id(item) for item in chain + manual}
     rest = [item for item in items if id(item) not in moved]
     first, second = chain[0::2], chain[1::2]
     fill = max(0, len(items) // 2 - len(first))
-    items[:] = first + rest[:fill] + readme + manual + second + rest[fill:]
+    lead = min(LEAD_BEFORE_CHAIN, fill)
+    items[:] = rest[:lead] + first + rest[lead:fill] + manual + second + rest[fill:]
 
 
 @pytest.fixture
@@ -234,11 +240,12 @@ def held_out_take(tiny_corpus) -> str:
 
 @pytest.fixture(scope="session")
 def chain(built_once) -> Path:
-    """The folder where the top-level help's example ran: the whole chain on the 'small'
-    preset's sample corpus (seed 0), from ``sample-corpus`` to the video (tests/help_examples.py)."""
-    from help_examples import run_chain
+    """The folder where the README's block ran, as written, with bash: the whole chain on the
+    'small' preset's sample corpus (seed 0), from ``sample-corpus`` to the video, then audio
+    alone; the top-level help's example is the same commands (tests/help_examples.py)."""
+    from help_examples import run_readme
 
-    return built_once("chain", run_chain)
+    return built_once("chain", run_readme) / "out" / "example"
 
 
 @pytest.fixture(scope="session")

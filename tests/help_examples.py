@@ -1,11 +1,18 @@
-"""The examples of facesynth's ``--help`` texts, and running their lines as a user would: what
-tests/test_examples.py checks, and what the ``chain`` fixture of tests/conftest.py builds (the
-top-level help's example, the whole chain on the ``small`` sample corpus)."""
+"""The examples of facesynth's ``--help`` texts and the README's shell block, and running them as
+a user would: what tests/test_examples.py checks, and what the ``chain`` fixture of
+tests/conftest.py builds. The top-level help's example and the README's block are one chain (the
+whole pipeline on the ``small`` sample corpus, its video, and audio alone): the chain runs the
+README's block as written, with bash, and a test holds the two to the same commands."""
 
 from __future__ import annotations
 
 import os
+import re
 import shlex
+import signal
+import subprocess
+import sys
+import tempfile
 from pathlib import Path
 
 import click
@@ -13,6 +20,7 @@ from click.testing import CliRunner
 
 from facesynth.cli import main
 
+ROOT = Path(__file__).resolve().parents[1]
 #: Options whose value is a file or folder the command writes.
 OUTPUT_OPTIONS = {"-o", "--output", "--images"}
 
@@ -86,7 +94,65 @@ def run_line(line: str, folder: Path) -> None:
         target.write_text(result.stdout)
 
 
-def run_chain(folder: Path) -> None:
-    """Run the top-level help's example (sample corpus to video) in the empty ``folder``."""
-    for line in HELP["facesynth"]:
-        run_line(line, folder)
+def readme_block() -> str:
+    """The README's shell block that runs the pipeline (the one that sets ``fs``)."""
+    blocks = re.findall(r"```sh\n(.*?)```", (ROOT / "README.md").read_text(), flags=re.S)
+    [block] = [b for b in blocks if re.search(r"^fs=", b, flags=re.M)]
+    return block
+
+
+def facesynth_launcher(path: Path) -> Path:
+    """An executable ``path`` that runs this installation's ``facesynth`` (what ``pip install``
+    puts in ``.venv/bin``)."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(f"#!/bin/sh\nexec {shlex.quote(sys.executable)} -c "
+                    "'from facesynth.cli import main; main(prog_name=\"facesynth\")' \"$@\"\n")
+    path.chmod(0o755)
+    return path
+
+
+def run_bash(script: str, folder: Path, path_first: Path | None = None, timeout_s: float = 1200):
+    """Run ``script`` with ``bash -euo pipefail`` in ``folder`` (``path_first`` ahead on the
+    PATH), in a session of its own whose processes left behind (a server started with ``&``)
+    are ended when it returns."""
+    env = dict(os.environ)
+    if path_first is not None:
+        env["PATH"] = f"{path_first}{os.pathsep}{env.get('PATH', '')}"
+    # files, not pipes: a process left in the background keeps a pipe open after bash ends
+    with tempfile.TemporaryFile("w+") as out, tempfile.TemporaryFile("w+") as err:
+        process = subprocess.Popen(["bash", "-euo", "pipefail", "-x", "-c", script], cwd=folder, env=env,
+                                   stdout=out, stderr=err, text=True, start_new_session=True)
+        try:
+            process.wait(timeout=timeout_s)
+        finally:
+            try:
+                os.killpg(process.pid, signal.SIGTERM)
+            except ProcessLookupError:
+                pass
+            if process.poll() is None:
+                process.kill()
+                process.wait()
+        out.seek(0)
+        err.seek(0)
+        return subprocess.CompletedProcess(process.args, process.returncode, out.read(), err.read())
+
+
+def readme_commands() -> list[list[str]]:
+    """The command lines of the README's block as the top-level help writes them, as words:
+    its ``$fs ...`` and ``echo ...`` lines without their comments, ``$fs`` as ``facesynth``."""
+    out = []
+    for line in readme_block().splitlines():
+        words = shlex.split(line, comments=True)
+        if words[:1] == ["$fs"]:
+            words[0] = "facesynth"
+        if words[:1] in (["facesynth"], ["echo"]):
+            out.append(words)
+    return out
+
+
+def run_readme(folder: Path) -> None:
+    """Run the README's block as written, with bash, in the empty ``folder`` (its first line's
+    ``.venv/bin/facesynth`` there runs this installation); it works in ``folder/out/example``."""
+    facesynth_launcher(folder / ".venv" / "bin" / "facesynth")
+    done = run_bash(readme_block(), folder)
+    assert done.returncode == 0, done.stderr[-4000:]

@@ -2,12 +2,13 @@
 block and every shell block of ``docs/*.md`` runs as written, so that a changed option breaks
 the build, not the user.
 
-The top-level help's example (the whole chain on the ``small`` sample corpus) runs once per
-session in an empty folder (the ``chain`` fixture of conftest.py); it is the folder the
-top-level help promises every other command's example runs in. Each command's example then runs in a fresh folder holding links to everything
-that chain left, except the outputs the example writes. The README block runs with bash in an
-empty folder of its own, with ``.venv/bin/facesynth`` (its first line) pointing at this
-installation.
+The README's block (the whole chain on the ``small`` sample corpus, then audio alone) runs once
+per session with bash in an empty folder of its own, with ``.venv/bin/facesynth`` (its first
+line) pointing at this installation: the ``chain`` fixture of conftest.py. The top-level help's
+example is the same commands (a test holds them together), and the folder the chain leaves is
+the one the top-level help promises every other command's example runs in: each command's
+example runs in a fresh folder holding links to everything that chain left, except the outputs
+the example writes.
 
 The shell blocks of a page of ``docs/`` (fenced ``sh``, ``bash`` or ``console``) run with bash,
 in order, in one such linked folder per page, with ``facesynth`` on the ``PATH``. A block that
@@ -21,23 +22,28 @@ every other block runs. Links between the README and the pages of
 from __future__ import annotations
 
 import importlib.util
-import os
 import re
 import shlex
-import signal
 import subprocess
 import sys
-import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
-from help_examples import HELP, command_paths, help_text, outputs, run_line
+from help_examples import (
+    HELP,
+    ROOT,
+    command_paths,
+    facesynth_launcher,
+    help_text,
+    outputs,
+    readme_commands,
+    run_bash,
+    run_line,
+)
 
 from facesynth.cli import main
-
-ROOT = Path(__file__).resolve().parents[1]
 
 
 def test_every_help_has_an_example():
@@ -45,10 +51,17 @@ def test_every_help_has_an_example():
     assert not missing
 
 
-def test_the_whole_chain_goes_from_corpus_to_video(chain):
-    steps = [shlex.split(line)[1] for line in HELP["facesynth"]]
-    assert steps[0] == "sample-corpus" and steps[-1] == "render"
+def test_the_top_level_help_and_the_readme_show_the_same_chain():
+    """One chain in two places, run once (the ``chain`` fixture runs the README's block)."""
+    assert [shlex.split(line) for line in HELP["facesynth"]] == readme_commands()
+
+
+def test_the_readme_block_goes_from_corpus_to_video_and_from_audio_alone(chain):
+    steps = [words[1] for words in readme_commands() if words[0] == "facesynth"]
+    assert steps[0] == "sample-corpus"
+    assert {"ingest", "normalize", "pca", "build-db", "synthesize", "solve", "render"} <= set(steps)
     assert (chain / "neutral_s016.avi").stat().st_size > 0
+    assert (chain / "heard.h5").stat().st_size > 0  # audio alone
 
 
 @pytest.mark.parametrize("name", [name for name in HELP if name != "facesynth"])
@@ -76,61 +89,6 @@ def test_top_level_help_lists_commands_in_pipeline_order():
     assert listed[:6] == ["sample-corpus", "align", "ingest", "normalize", "pca", "build-db"]
     assert listed.index("synthesize") < listed.index("deform") < listed.index("render") < listed.index("evaluate")
     assert sorted(listed) == sorted(main.commands)
-
-
-def readme_block() -> str:
-    """The README's shell block that runs the pipeline (the one that sets ``fs``)."""
-    blocks = re.findall(r"```sh\n(.*?)```", (ROOT / "README.md").read_text(), flags=re.S)
-    [block] = [b for b in blocks if re.search(r"^fs=", b, flags=re.M)]
-    return block
-
-
-def facesynth_launcher(path: Path) -> Path:
-    """An executable ``path`` that runs this installation's ``facesynth`` (what ``pip install``
-    puts in ``.venv/bin``)."""
-    path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_text(f"#!/bin/sh\nexec {shlex.quote(sys.executable)} -c "
-                    "'from facesynth.cli import main; main(prog_name=\"facesynth\")' \"$@\"\n")
-    path.chmod(0o755)
-    return path
-
-
-def run_bash(script: str, folder: Path, path_first: Path | None = None, timeout_s: float = 1200):
-    """Run ``script`` with ``bash -euo pipefail`` in ``folder`` (``path_first`` ahead on the
-    PATH), in a session of its own whose processes left behind (a server started with ``&``)
-    are ended when it returns."""
-    env = dict(os.environ)
-    if path_first is not None:
-        env["PATH"] = f"{path_first}{os.pathsep}{env.get('PATH', '')}"
-    # files, not pipes: a process left in the background keeps a pipe open after bash ends
-    with tempfile.TemporaryFile("w+") as out, tempfile.TemporaryFile("w+") as err:
-        process = subprocess.Popen(["bash", "-euo", "pipefail", "-x", "-c", script], cwd=folder, env=env,
-                                   stdout=out, stderr=err, text=True, start_new_session=True)
-        try:
-            process.wait(timeout=timeout_s)
-        finally:
-            try:
-                os.killpg(process.pid, signal.SIGTERM)
-            except ProcessLookupError:
-                pass
-            if process.poll() is None:
-                process.kill()
-                process.wait()
-        out.seek(0)
-        err.seek(0)
-        return subprocess.CompletedProcess(process.args, process.returncode, out.read(), err.read())
-
-
-def test_readme_block_runs(tmp_path):
-    block = readme_block()
-    facesynth_launcher(tmp_path / ".venv" / "bin" / "facesynth")
-    done = run_bash(block, tmp_path)
-    assert done.returncode == 0, done.stderr[-4000:]
-    steps = [shlex.split(line)[1] for line in block.splitlines() if line.lstrip().startswith("$fs ")]
-    assert steps[0] == "sample-corpus"
-    assert {"ingest", "normalize", "pca", "build-db", "synthesize", "solve", "render"} <= set(steps)
-    videos = list(tmp_path.rglob("*.avi"))
-    assert videos and all(v.stat().st_size > 0 for v in videos)
 
 
 # --- the shell blocks of docs/ -------------------------------------------------------------
