@@ -216,6 +216,12 @@ def kept_pinned(pinned: list[tuple[int, int]], predicted: np.ndarray) -> list[tu
     return [(a, max(b, a + 1)) for a, b in pinned if rank[a:max(b, a + 1)].mean() <= PINNED_OPEN_QUANTILE]
 
 
+def pinned_free(kept: list[tuple[int, int]], n: int, fps: float, settings: SynthesizeSettings) -> np.ndarray:
+    """(n,) 0..1: 0 over the kept pinned phones' frame ranges (:func:`kept_pinned`), 1 elsewhere,
+    eased over ``synthesize.loudness_smoothing_s``: how far the voice may move each frame's lips."""
+    return loudness.weights(n, kept, 1.0, max(1, int(round(settings.loudness_smoothing_s * fps))))
+
+
 def method_closings(opening: np.ndarray, closing: np.ndarray | None, fps: float, threshold: float) -> np.ndarray:
     """Frames (K,) of the method's own closures (the deep minima of its gap ``opening`` (T,),
     :func:`facesynth.domain.speech.articulation.closure_frames_of`) that the voice's closing score
@@ -240,7 +246,7 @@ def target_gap(opening: np.ndarray, predicted: np.ndarray, score: np.ndarray | N
     q = range_map(predicted, o)
     w = settings.voice_weight * np.asarray(conf, np.float64)
     kept = kept_pinned(pinned, predicted)
-    w = w * loudness.weights(n, kept, 1.0, max(1, int(round(settings.loudness_smoothing_s * fps))))
+    w = w * pinned_free(kept, n, fps, settings)
     target = (1.0 - w) * o + w * q
     from_voice = closure_frames(score, fps, settings.voice_closure_threshold) if score is not None \
         else np.zeros(0, np.int64)
@@ -337,8 +343,7 @@ def fuse(motion: Motion, samples: np.ndarray, rate: int, starts: np.ndarray, end
         rig = rig if rig is not None else _builtin_rig()
         if all(m in rig.binding for m in lips) and sum(m in rig.binding for m in names) >= 3:
             # a pinned phone keeps the method's lips whole, its closure and their shape
-            free = loudness.weights(n, kept_pinned(pinned_ranges, pred["opening"]), 1.0,
-                                    max(1, int(round(settings.loudness_smoothing_s * fps))))
+            free = pinned_free(kept_pinned(pinned_ranges, pred["opening"]), n, fps, settings)
             moved = rig_rounding(frames, RigShapes(rig, names, motion.reference), rounding,
                                  settings.voice_rounding_weight * conf * free)
     gap = lip_gaps(moved, names, lips)
