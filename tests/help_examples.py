@@ -106,7 +106,7 @@ def facesynth_launcher(path: Path) -> Path:
     puts in ``.venv/bin``)."""
     path.parent.mkdir(parents=True, exist_ok=True)
     path.write_text(f"#!/bin/sh\nexec {shlex.quote(sys.executable)} -c "
-                    "'from facesynth.cli import main; main(prog_name=\"facesynth\")' \"$@\"\n")
+                    "'import sys; sys.argv[0] = \"facesynth\"; from facesynth.cli import run; run()' \"$@\"\n")
     path.chmod(0o755)
     return path
 
