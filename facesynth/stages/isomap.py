@@ -93,9 +93,18 @@ def map_transform(points: np.ndarray, size: int) -> MapTransform:
                         (float(lo[0]), float(lo[1])), (float(hi[0]), float(hi[1])))
 
 
+#: scipy's Gaussian kernels reach ``int(KERNEL_TRUNCATE * sigma + 0.5)`` pixels from their centre.
+KERNEL_TRUNCATE = 4.0
+
+
 def render_map(points: np.ndarray, emotion: list[str], settings: IsomapSettings) -> tuple[np.ndarray, Callable]:
     """Eq. 3 image of a 2D map (size x size x 3 uint8) and the map -> pixel transform
-    (:func:`map_transform`; the axes are drawn by :func:`draw_axes`)."""
+    (:func:`map_transform`; the axes are drawn by :func:`draw_axes`).
+
+    Each emotion's Gaussians are summed and blended only over the box its frames' kernels
+    reach: outside it the density is exactly zero and the blend leaves the pixels as they are,
+    and inside it each pixel's sum is the whole image's (the same kernel taps in the same order),
+    so the picture is the one of blending every pixel."""
     size = settings.image_size
     t = map_transform(points, size)
 
@@ -104,20 +113,29 @@ def render_map(points: np.ndarray, emotion: list[str], settings: IsomapSettings)
         return np.stack([t.x0 + t.sx * p[..., 0], t.y0 + t.sy * p[..., 1]], -1)
 
     px = to_px(points)
-    image = np.ones((size, size, 3))
+    image = np.ones((3, size, size))  # one plane per colour channel
     emo = np.array(emotion)
+    s = settings.kernel_sigma_px
+    reach = int(KERNEL_TRUNCATE * s + 0.5)
     for name, colour in EMOTION_COLOURS.items():
         sel = emo == name
         if not sel.any():
             continue
-        grid = np.zeros((size, size))
         ij = np.clip(np.round(px[sel]).astype(int), 0, size - 1)
-        np.add.at(grid, (ij[:, 1], ij[:, 0]), 1.0)
+        lo = np.maximum(ij.min(0) - reach, 0)
+        hi = np.minimum(ij.max(0) + reach + 1, size)
+        shape = (hi[1] - lo[1], hi[0] - lo[0])  # rows (y), columns (x)
+        cells = (ij[:, 1] - lo[1]) * shape[1] + (ij[:, 0] - lo[0])
+        grid = np.bincount(cells, minlength=shape[0] * shape[1]).astype(np.float64).reshape(shape)
         # A sum of unnormalized Gaussians of peak rho (Eq. 3), clamped at one.
-        s = settings.kernel_sigma_px
-        density = np.minimum(1.0, settings.rho * gaussian_filter(grid, s, mode="constant") * (2 * np.pi * s * s))
-        image = image * (1 - density[..., None]) + (np.array(colour) / 255.0) * density[..., None]
-    return (image * 255).astype(np.uint8), to_px
+        density = np.minimum(1.0, settings.rho * gaussian_filter(grid, s, mode="constant", truncate=KERNEL_TRUNCATE)
+                             * (2 * np.pi * s * s))
+        keep = 1 - density
+        for plane, value in zip(image[:, lo[1]:hi[1], lo[0]:hi[0]], np.array(colour) / 255.0):
+            plane *= keep
+            if value:  # adding 0 leaves a pixel as it is
+                plane += value * density
+    return (image.transpose(1, 2, 0) * 255).astype(np.uint8), to_px
 
 
 def draw_axes(img, points: np.ndarray, size: int) -> None:

@@ -82,3 +82,37 @@ def test_pick_outside_and_unknown_phone_are_clear(iso):
         isomap.pick(d / "iso.h5", "zh", 0, 0)
     r = CliRunner().invoke(main, ["isomap", "pick", str(d / "iso.h5"), "ax", "1e6", "0"])
     assert r.exit_code == 1 and r.output.startswith("error: /ax/")
+
+
+def _blend_every_pixel(points, emotion, settings):
+    """Eq. 3 blended over the whole image, emotion after emotion (what :func:`isomap.render_map`
+    must equal, bit for bit)."""
+    from scipy.ndimage import gaussian_filter
+
+    size, s = settings.image_size, settings.kernel_sigma_px
+    t = isomap.map_transform(points, size)
+    px = np.stack([t.x0 + t.sx * points[:, 0], t.y0 + t.sy * points[:, 1]], -1)
+    image = np.ones((size, size, 3))
+    for name, colour in isomap.EMOTION_COLOURS.items():
+        sel = np.array(emotion) == name
+        if not sel.any():
+            continue
+        grid = np.zeros((size, size))
+        ij = np.clip(np.round(px[sel]).astype(int), 0, size - 1)
+        np.add.at(grid, (ij[:, 1], ij[:, 0]), 1.0)
+        density = np.minimum(1.0, settings.rho * gaussian_filter(grid, s, mode="constant") * (2 * np.pi * s * s))
+        image = image * (1 - density[..., None]) + (np.array(colour) / 255.0) * density[..., None]
+    return (image * 255).astype(np.uint8)
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_the_map_image_blends_only_where_the_kernels_reach_and_is_the_whole_image_blend(seed):
+    rng = np.random.default_rng(seed)
+    settings = Config.load().settings("isomap")
+    # clustered points of four emotions (one emotion's cluster small, so its box is too), some
+    # on the plot's edges and repeated frames on one pixel
+    points = np.concatenate([rng.normal(0, 1, (300, 2)), rng.normal(3, 0.2, (40, 2)), [[-4, -4], [6, 5], [6, 5]]])
+    emotion = list(rng.choice(["neutral", "angry", "happy"], 300)) + ["sad"] * 40 + ["angry"] * 3
+    image, _ = isomap.render_map(points, emotion, settings)
+    np.testing.assert_array_equal(image, _blend_every_pixel(points, emotion, settings))
+    assert (image != 255).any(axis=2).mean() > 0.05  # the kernels drew something
