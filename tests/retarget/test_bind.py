@@ -5,10 +5,11 @@ import csv
 
 import numpy as np
 import pytest
+from scipy.spatial import cKDTree
 from scipy.spatial.transform import Rotation
 
-from facesynth.domain.head_motion.rigid import typical_frame
-from facesynth.domain.retarget.bind import axis_rotation, bind_markers
+from facesynth.domain.head_motion.rigid import similarity_fit, typical_frame
+from facesynth.domain.retarget.bind import _icp, _start_rotations, axis_rotation, bind_markers, front_surface
 from facesynth.domain.rig.face import load_face_rig
 from facesynth.formats.mocap import read_mocap
 
@@ -107,3 +108,39 @@ def test_jaw_sides_keeps_markers_on_their_side_of_the_jaw():
     assert sides[0].tolist() == sides[1].tolist() == [2, 3, 5]
     assert sides[2].tolist() == sides[3].tolist() == [0, 1, 4]
     assert sides[4] is None
+
+
+def _icp_one_start(points, surface, tree, scale, rotation, keep, iterations, scale_bounds):
+    """Trimmed ICP with scale from one start, step by step with :func:`similarity_fit` (what
+    each start of the batched ICP must equal, bit for bit)."""
+    t = surface.mean(0) - scale * rotation @ points.mean(0)
+    n_keep = max(3, int(np.ceil(keep * len(points))))
+    rms = np.inf
+    for _ in range(iterations):
+        dist, nearest = tree.query(scale * points @ rotation.T + t)
+        best = np.argsort(dist)[:n_keep]
+        new_rms = float(np.sqrt(np.mean(dist[best] ** 2)))
+        s, r, _, _ = similarity_fit(points[best], surface[nearest[best]])
+        scale, rotation = float(np.clip(s, *scale_bounds)), r
+        t = surface[nearest[best]].mean(0) - scale * rotation @ points[best].mean(0)
+        if abs(rms - new_rms) < 1e-6 * max(new_rms, 1e-12):
+            break
+        rms = new_rms
+    dist, _ = tree.query(scale * points @ rotation.T + t)
+    return scale, rotation, t, float(np.sqrt(np.mean(np.sort(dist)[:n_keep] ** 2)))
+
+
+def test_the_starts_stepped_together_are_each_starts_own_icp(tiny_corpus):
+    rig = load_face_rig()
+    truth = _truth(tiny_corpus)
+    points = _moved(rig.neutral[list(truth.values())], 3, scale=1.2)[0]
+    surface = rig.neutral[front_surface(rig.neutral)].astype(np.float64)
+    tree = cKDTree(surface)
+    starts = _start_rotations(points)[::8]  # capture and principal axes, some far from the answer
+    scales = np.array([0.7, 1.0, 1.4, 1.0, 0.7, 1.4][: len(starts)])
+    together = _icp(points, surface, tree, scales, np.array([r for _, r in starts]), 0.8, 60, (0.3, 3.0))
+    for k, (_, rotation) in enumerate(starts):
+        alone = _icp_one_start(points, surface, tree, scales[k], rotation, 0.8, 60, (0.3, 3.0))
+        assert together[0][k] == alone[0] and together[3][k] == alone[3]
+        np.testing.assert_array_equal(together[1][k], alone[1])
+        np.testing.assert_array_equal(together[2][k], alone[2])

@@ -36,8 +36,6 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.spatial import cKDTree
 
-from facesynth.domain.head_motion.rigid import similarity_fit
-
 #: A rig vertex rides on the jaw when jaw opening moves it by at least this share of its largest move.
 JAW_VERTEX_SHARE = 0.35
 
@@ -120,29 +118,56 @@ def front_surface(vertices: np.ndarray) -> np.ndarray:
     return np.nonzero(z >= 0.5 * (z.min() + z.max()))[0]
 
 
-def _icp(points: np.ndarray, surface: np.ndarray, tree: cKDTree, scale: float, rotation: np.ndarray,
-         keep: float, iterations: int, scale_bounds: tuple[float, float]) -> tuple[float, np.ndarray, np.ndarray, float]:
-    """Trimmed ICP with scale from a start (``scale``, ``rotation``; the centroids matched).
-    Returns (scale, rotation, translation, trimmed RMS in rig units)."""
-    centre = surface.mean(0)
-    t = centre - scale * rotation @ points.mean(0)
+def _icp(points: np.ndarray, surface: np.ndarray, tree: cKDTree, scales: np.ndarray, rotations: np.ndarray,
+         keep: float, iterations: int, scale_bounds: tuple[float, float]
+         ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Trimmed ICP with scale from S starts at once (``scales`` (S,), ``rotations`` (S, 3, 3); the
+    centroids matched), each start stepping until its trimmed RMS settles or ``iterations`` are
+    done. The starts step together, so each step is one nearest-vertex query and one batch of
+    3 x 3 fits for all of them. Returns (scales (S,), rotations (S, 3, 3), translations (S, 3),
+    trimmed RMS (S,) in rig units)."""
+    scale = np.array(scales, np.float64)
+    rotation = np.array(rotations, np.float64)
+    t = surface.mean(0) - (scale[:, None, None] * rotation) @ points.mean(0)
     n_keep = max(3, int(np.ceil(keep * len(points))))
-    rms = np.inf
+    rms = np.full(len(scale), np.inf)
+    going = np.arange(len(scale))  # the starts still stepping
     for _ in range(iterations):
-        moved = scale * points @ rotation.T + t
-        dist, nearest = tree.query(moved)
-        best = np.argsort(dist)[:n_keep]
-        new_rms = float(np.sqrt(np.mean(dist[best] ** 2)))
-        s, r, t_new, _ = similarity_fit(points[best], surface[nearest[best]])
-        s = float(np.clip(s, *scale_bounds))
-        t_new = surface[nearest[best]].mean(0) - s * r @ points[best].mean(0)
-        scale, rotation, t = s, r, t_new
-        if abs(rms - new_rms) < 1e-6 * max(new_rms, 1e-12):
+        if not len(going):
             break
-        rms = new_rms
-    moved = scale * points @ rotation.T + t
-    dist, _ = tree.query(moved)
-    return scale, rotation, t, float(np.sqrt(np.mean(np.sort(dist)[:n_keep] ** 2)))
+        dist, nearest = _nearest(points, tree, scale[going], rotation[going], t[going])
+        best = np.argsort(dist, axis=1)[:, :n_keep]
+        new_rms = np.sqrt(np.mean(np.take_along_axis(dist, best, 1) ** 2, axis=1))
+        source, target = points[best], surface[np.take_along_axis(nearest, best, 1)]
+        s, r = _similarities(source, target)
+        s = np.clip(s, *scale_bounds)
+        scale[going], rotation[going] = s, r
+        t[going] = target.mean(1) - ((s[:, None, None] * r) @ source.mean(1)[:, :, None])[..., 0]
+        settled = np.abs(rms[going] - new_rms) < 1e-6 * np.maximum(new_rms, 1e-12)
+        rms[going] = new_rms
+        going = going[~settled]
+    dist, _ = _nearest(points, tree, scale, rotation, t)
+    return scale, rotation, t, np.sqrt(np.mean(np.sort(dist, axis=1)[:, :n_keep] ** 2, axis=1))
+
+
+def _nearest(points: np.ndarray, tree: cKDTree, scale: np.ndarray, rotation: np.ndarray, t: np.ndarray
+             ) -> tuple[np.ndarray, np.ndarray]:
+    """Distances and indices ((S, N) each) of the nearest surface vertex to each of the (N, 3)
+    ``points`` moved by each of S similarities (``scale * points @ rotation.T + t``)."""
+    moved = (scale[:, None, None] * points) @ rotation.transpose(0, 2, 1) + t[:, None, :]
+    dist, nearest = tree.query(moved.reshape(-1, 3))
+    return dist.reshape(moved.shape[:2]), nearest.reshape(moved.shape[:2])
+
+
+def _similarities(source: np.ndarray, target: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Umeyama's scale and rotation (:func:`facesynth.domain.head_motion.rigid.similarity_fit`) of S point sets at once: (S,) scales
+    and (S, 3, 3) rotations best taking each (S, K, 3) ``source`` onto its ``target``."""
+    a = source - source.mean(1)[:, None, :]
+    b = target - target.mean(1)[:, None, :]
+    u, sing, vt = np.linalg.svd(b.transpose(0, 2, 1) @ a)
+    d = np.ones((len(source), 3))
+    d[np.linalg.det(u @ vt) < 0, 2] = -1.0
+    return (sing * d).sum(1) / (a**2).sum((1, 2)), (u * d[:, None, :]) @ vt
 
 
 def vertex_normals(vertices: np.ndarray, faces: np.ndarray) -> np.ndarray:
@@ -220,11 +245,10 @@ def fit_to_surface(points: np.ndarray, vertices: np.ndarray, faces: np.ndarray |
     radius_points = np.sqrt(((points - points.mean(0)) ** 2).sum(1).mean())
     radius_rig = np.sqrt(((surface - surface.mean(0)) ** 2).sum(1).mean())
     s0 = radius_rig / max(radius_points, 1e-9)
-    fits = []
-    for name, rotation in starts:
-        for factor in (0.7, 1.0, 1.4):
-            s, r, t, rms = _icp(points, surface, tree, s0 * factor, rotation, keep, iterations, (0.35 * s0, 2.8 * s0))
-            fits.append(SurfaceFit(s, r, t, rms, f"{name}, scale x{factor:g}"))
+    tried = [(f"{name}, scale x{factor:g}", s0 * factor, rotation) for name, rotation in starts for factor in (0.7, 1.0, 1.4)]
+    fitted = _icp(points, surface, tree, np.array([s for _, s, _ in tried]), np.array([r for _, _, r in tried]),
+                  keep, iterations, (0.35 * s0, 2.8 * s0))
+    fits = [SurfaceFit(float(s), r, t, float(rms), name) for (name, _, _), s, r, t, rms in zip(tried, *fitted)]
     # compare fits in the capture's millimetres, so a shrunken fit does not win by its scale
     fits.sort(key=lambda f: f.rms / f.scale)
     if faces is None:
