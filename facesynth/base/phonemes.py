@@ -151,5 +151,13 @@ def cmudict() -> dict[str, tuple[tuple[str, ...], ...]]:
 
 
 def pronunciations(words) -> dict[str, tuple[tuple[str, ...], ...]]:
-    """The CMU dictionary entries of just these words (much faster than the whole)."""
+    """The CMU dictionary entries of just these words (much faster than the whole), in the
+    dictionary's order."""
+    return dict(_pronunciations_of(frozenset(words)))
+
+
+@lru_cache(maxsize=16)
+def _pronunciations_of(words: frozenset[str]) -> dict[str, tuple[tuple[str, ...], ...]]:
+    """:func:`pronunciations`, kept for the last few sets of words (an alignment looks its words
+    up more than once)."""
     return _parse(_cmudict_lines(), set(words))
