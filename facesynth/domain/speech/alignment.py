@@ -198,8 +198,9 @@ def align_robust(samples: np.ndarray, rate: int, text: str, *, settings: AlignSe
     for method in settings.methods:
         try:
             filled = 0
-            if method == "pocketsphinx":
-                phones, word_segs, filled = _pocketsphinx(audio, words, settings, extra, None, prons, active)
+            if method == "pocketsphinx":  # the decoder that looked the words up, not yet used for audio
+                fresh, decoder = decoder, None
+                phones, word_segs, filled = _pocketsphinx(audio, words, settings, extra, None, prons, active, fresh)
             elif method == "wide-beam":
                 phones, word_segs, filled = _pocketsphinx(audio, words, settings, extra, settings.wide_beam, prons,
                                                           active)
@@ -344,7 +345,7 @@ def _pronunciation_table(words: list[str], extra: dict, decoder) -> dict[str, tu
 
 
 def _pocketsphinx(audio: np.ndarray, words: list[str], settings: AlignSettings, extra: dict, beam: float | None,
-                  prons: dict | None = None, active: np.ndarray | None = None
+                  prons: dict | None = None, active: np.ndarray | None = None, decoder=None
                   ) -> tuple[list[Segment], list[Segment], int]:
     """Forced alignment of ``audio`` (float32 at ``settings.sample_rate``) to ``words``; raises
     :class:`_MethodFailed` when pocketsphinx fails or places fewer words. When the words it
@@ -353,8 +354,11 @@ def _pocketsphinx(audio: np.ndarray, words: list[str], settings: AlignSettings, 
     places none, and ``prons`` and ``active`` (the voice activity of ``audio``'s frames) are
     given, the rest get typical durations over the voiced frames after the placed words. When
     the words are placed but their phones cannot be ("Failed to set up sub-word alignment"),
-    each word's phones share its span by typical durations. Returns (phones, words, how many words got durations instead of an acoustic alignment)."""
-    decoder = _decoder(settings, extra, beam)
+    each word's phones share its span by typical durations. ``decoder``: one that
+    :func:`_decoder` made with the same ``extra`` and ``beam`` and that has only looked words up
+    (None: one is made). Returns (phones, words, how many words got durations instead of an acoustic alignment)."""
+    if decoder is None:
+        decoder = _decoder(settings, extra, beam)
     pcm = pcm16(audio)
     frame = 1.0 / settings.frame_rate
     word_pass = None
