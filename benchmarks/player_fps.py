@@ -32,7 +32,7 @@ import tempfile
 import time
 from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "tests" / "exports"))
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "tests"))
 from chromium_page import CHROMIUM, ChromiumPage  # noqa: E402
 from render_fps import FPS, animation, speaking_weights  # noqa: E402
 

@@ -5,15 +5,11 @@ file, or a microphone: Chromium's fake capture device playing the sample voice),
 as they arrive, opens the mouth and measures the latency."""
 
 import asyncio
-import itertools
-import json
 import math
 import re
 import shutil
-import subprocess
 import threading
 import time
-import urllib.request
 import wave
 from pathlib import Path
 
@@ -65,38 +61,13 @@ def _open_until_done(url: str, tmp_path, deadline_s: float) -> dict:
     """Open ``url`` in headless Chromium in real time (a live page cannot run on virtual time: its
     frames come over a socket) and read ``document.body.dataset`` through the DevTools protocol
     (on 127.0.0.1) until the page says the stream is done or ``deadline_s`` passes."""
-    from websockets.sync.client import connect
-
-    cmd = [CHROMIUM, "--headless", "--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
-           "--disable-background-networking", "--disable-component-update", "--disable-sync", "--no-first-run",
-           "--autoplay-policy=no-user-gesture-required", f"--user-data-dir={tmp_path / 'profile'}",
-           "--remote-debugging-address=127.0.0.1", "--remote-debugging-port=0", url]
-    browser = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-    try:
-        start = time.monotonic()
-        port_file = tmp_path / "profile" / "DevToolsActivePort"
-        while not port_file.exists() or not port_file.read_text().strip():
-            assert time.monotonic() - start < 30 and browser.poll() is None, "Chromium did not start"
-            time.sleep(0.1)
-        port = int(port_file.read_text().split()[0])
-        targets = json.loads(urllib.request.urlopen(f"http://127.0.0.1:{port}/json/list", timeout=10).read())
-        page = next(t for t in targets if t["type"] == "page")
-        expression = ("JSON.stringify(Object.assign({}, document.body.dataset, "
-                      "{'error-text': document.getElementById('errors').textContent}))")
-        with connect(page["webSocketDebuggerUrl"], max_size=None) as cdp:
-            for n in itertools.count(1):
-                cdp.send(json.dumps({"id": n, "method": "Runtime.evaluate", "params": {"expression": expression}}))
-                reply = json.loads(cdp.recv(timeout=10))
-                while reply.get("id") != n:
-                    reply = json.loads(cdp.recv(timeout=10))
-                body = _dashed(json.loads(reply["result"]["result"].get("value") or "{}"))
-                if body.get("live-done") == "1" or body.get("errors", "0") != "0" or time.monotonic() - start > deadline_s:
-                    return body
-                time.sleep(0.25)
-    finally:
-        browser.terminate()
-        browser.wait(10)
-    raise AssertionError("unreachable")
+    start = time.monotonic()
+    with ChromiumPage(url, tmp_path / "profile", flags=("--autoplay-policy=no-user-gesture-required",)) as page:
+        while True:
+            body = _dashed(page.dataset())
+            if body.get("live-done") == "1" or body.get("errors", "0") != "0" or time.monotonic() - start > deadline_s:
+                return body
+            time.sleep(0.25)
 
 
 def test_live_targets_are_the_rig_shapes_each_arkit_name_drives(tiny_corpus, held_out_take):

@@ -4,17 +4,12 @@ DevTools protocol: for a picked time or phone the highlighted nodes are the ones
 suggest`` lists as time-correct and context-correct, the synthesized path's node is marked,
 and a click on a node writes the constraint line that makes ``synthesize`` use that node."""
 
-import contextlib
-import itertools
 import json
 import re
-import shutil
-import subprocess
-import time
-import urllib.request
 
 import numpy as np
 import pytest
+from chromium_page import CHROMIUM, ChromiumPage
 from click.testing import CliRunner
 
 from facesynth.cli import main
@@ -26,7 +21,6 @@ from facesynth.model.motion import Motion
 from facesynth.model.motiondb import MotionDatabase
 from facesynth.stages import suggest
 
-CHROMIUM = shutil.which("chromium")
 needs_chromium = pytest.mark.skipif(CHROMIUM is None, reason="headless Chromium (Debian package 'chromium') is not installed")
 
 
@@ -47,43 +41,14 @@ def made(tiny_db, spliced_sentence, tmp_path_factory):
     return {"dir": d, "db": tiny_db, "tg": tg, "iso": d / "iso.h5", "motion": d / "motion.h5", "page": d / "page.html"}
 
 
-class Browser:
-    """Headless Chromium with one page, driven over the DevTools protocol on 127.0.0.1."""
+class Browser(ChromiumPage):
+    """The page in headless Chromium, with the constraint GUI's clicks and state."""
 
     def __init__(self, url: str, profile):
-        from websockets.sync.client import connect
-
-        cmd = [CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
-               "--disable-component-update", "--disable-sync", "--no-first-run", "--window-size=1300,1000",
-               f"--user-data-dir={profile}", "--remote-debugging-address=127.0.0.1", "--remote-debugging-port=0", url]
-        self.process = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-        start = time.monotonic()
-        port_file = profile / "DevToolsActivePort"
-        while not port_file.exists() or not port_file.read_text().strip():
-            assert time.monotonic() - start < 30 and self.process.poll() is None, "Chromium did not start"
-            time.sleep(0.1)
-        port = int(port_file.read_text().split()[0])
-        targets = json.loads(urllib.request.urlopen(f"http://127.0.0.1:{port}/json/list", timeout=10).read())
-        self.stack = contextlib.ExitStack()
-        self.cdp = self.stack.enter_context(connect(next(t for t in targets if t["type"] == "page")["webSocketDebuggerUrl"],
-                                                    max_size=None))
-        self.ids = itertools.count(1)
-        while self.js("document.body && document.body.dataset.ready") != "1":
-            assert time.monotonic() - start < 30, "the page did not get ready"
-            time.sleep(0.1)
-
-    def call(self, method: str, **params):
-        n = next(self.ids)
-        self.cdp.send(json.dumps({"id": n, "method": method, "params": params}))
-        while True:
-            reply = json.loads(self.cdp.recv(timeout=20))
-            if reply.get("id") == n:
-                return reply.get("result", {})
+        super().__init__(url, profile, 1300, 1000)
 
     def js(self, expression: str):
-        result = self.call("Runtime.evaluate", expression=expression, returnByValue=True)
-        assert "exceptionDetails" not in result, result
-        return result["result"].get("value")
+        return self.evaluate(expression)
 
     def click(self, x: float, y: float) -> None:
         """A real mouse click at page coordinates (CSS pixels)."""
@@ -93,11 +58,6 @@ class Browser:
     def state(self) -> dict:
         return self.js("Object.assign({}, document.getElementById('mapbox').dataset, "
                        "{errors: document.body.dataset.errors, box: document.getElementById('constraints').value})")
-
-    def close(self) -> None:
-        self.stack.close()
-        self.process.terminate()
-        self.process.wait(10)
 
 
 @pytest.fixture

@@ -4,11 +4,11 @@ checked in headless Chromium where it is installed."""
 
 import json
 import re
-import shutil
 import subprocess
 
 import numpy as np
 import pytest
+from chromium_page import CHROMIUM, remove_singleton_folder
 from PIL import Image
 
 from facesynth.base.config import Config
@@ -16,7 +16,6 @@ from facesynth.model.isomap import PhonemeMaps
 from facesynth.model.motiondb import MotionDatabase
 from facesynth.stages import isomap
 
-CHROMIUM = shutil.which("chromium")
 needs_chromium = pytest.mark.skipif(CHROMIUM is None, reason="headless Chromium (Debian package 'chromium') is not installed")
 
 
@@ -31,7 +30,10 @@ def _chromium(tmp_path, url, *args, timeout=120):
     profile = tmp_path / "profile"
     cmd = [CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
            "--disable-component-update", "--disable-sync", "--no-first-run", f"--user-data-dir={profile}", *args, url]
-    return subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
+    try:
+        return subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
+    finally:
+        remove_singleton_folder(profile)
 
 
 def test_tick_values_are_round_and_inside():

@@ -8,6 +8,7 @@ import base64
 import io
 import itertools
 import json
+import os
 import shutil
 import subprocess
 import time
@@ -17,6 +18,17 @@ from pathlib import Path
 import numpy as np
 
 CHROMIUM = shutil.which("chromium")
+
+
+def remove_singleton_folder(profile: Path) -> None:
+    """Remove the folder Chromium made in the system's temporary folder for its singleton socket
+    (named by the profile's ``SingletonSocket`` link), which a browser ended by a signal leaves
+    behind. Call it once the browser has exited."""
+    link = Path(profile) / "SingletonSocket"
+    if link.is_symlink():
+        folder = Path(os.readlink(link)).parent
+        if folder.name.startswith("org.chromium.Chromium."):
+            shutil.rmtree(folder, ignore_errors=True)
 
 
 class ChromiumPage:
@@ -33,7 +45,8 @@ class ChromiumPage:
                "--hide-scrollbars", f"--window-size={width},{height}", "--force-device-scale-factor=1",
                f"--user-data-dir={profile}", "--remote-debugging-address=127.0.0.1", "--remote-debugging-port=0",
                *flags, url]
-        (Path(profile) / "DevToolsActivePort").unlink(missing_ok=True)  # a stale one from an earlier browser
+        self.profile = Path(profile)
+        (self.profile / "DevToolsActivePort").unlink(missing_ok=True)  # a stale one from an earlier browser
         self.browser = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         self.ids = itertools.count(1)
         try:
@@ -105,6 +118,7 @@ class ChromiumPage:
         except subprocess.TimeoutExpired:
             self.browser.kill()
             self.browser.wait()
+        remove_singleton_folder(self.profile)
 
     def __enter__(self) -> "ChromiumPage":
         return self
