@@ -160,8 +160,9 @@ def _nearest(points: np.ndarray, tree: cKDTree, scale: np.ndarray, rotation: np.
 
 
 def _similarities(source: np.ndarray, target: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Umeyama's scale and rotation (:func:`facesynth.domain.head_motion.rigid.similarity_fit`) of S point sets at once: (S,) scales
-    and (S, 3, 3) rotations best taking each (S, K, 3) ``source`` onto its ``target``."""
+    """Umeyama's scale and rotation of S point sets at once (as
+    :func:`facesynth.domain.head_motion.rigid.similarity_fit` fits one): (S,) scales and
+    (S, 3, 3) rotations best taking each (S, K, 3) ``source`` onto its ``target``."""
     a = source - source.mean(1)[:, None, :]
     b = target - target.mean(1)[:, None, :]
     u, sing, vt = np.linalg.svd(b.transpose(0, 2, 1) @ a)
