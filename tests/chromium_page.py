@@ -1,6 +1,6 @@
 """A page opened in headless Chromium (the Debian package ``chromium``) and driven over the
-DevTools protocol on 127.0.0.1: evaluate JavaScript, take screenshots. Used by the player's
-tests and by ``benchmarks/player_fps.py``."""
+DevTools protocol on 127.0.0.1: evaluate JavaScript, take screenshots. Used by the tests of the
+player, the live page and the Isomap pages, and by ``benchmarks/player_fps.py``."""
 
 from __future__ import annotations
 
