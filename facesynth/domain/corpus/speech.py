@@ -258,7 +258,7 @@ def _butter_low_pass(order: int, cutoff: float) -> tuple[np.ndarray, np.ndarray]
 @cache
 def _butter_band_pass(order: int, low: float, high: float) -> np.ndarray:
     """Butterworth band-pass second-order sections (``sos``), the edges fractions of the Nyquist
-    rate; shared, so read-only (``sosfilt`` takes a writable copy)."""
+    rate; shared, so read-only: give ``sosfilt`` a copy (it needs a writable array)."""
     sos = butter(order, [low, high], btype="band", output="sos")
     sos.flags.writeable = False
     return sos
