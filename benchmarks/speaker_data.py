@@ -63,6 +63,7 @@ import shutil
 import sys
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
+from functools import partial
 from pathlib import Path
 from typing import Any
 
@@ -296,8 +297,8 @@ def haskins(root: Path, files: list[str]) -> Iterator[Utterance]:
                         m["opening"], jaw=m["jaw"], rounding=m["rounding"])
 
 
-def video_clips(root: Path, files: list[str]) -> Iterator[Utterance]:
-    """Talking-face clips with their sound: speaker = ``face<clip stem>``."""
+def video_clips(speaker_of: dict[str, str], root: Path, files: list[str]) -> Iterator[Utterance]:
+    """Talking-face clips with their sound; ``speaker_of`` maps a clip's file stem to its speaker."""
     from facesynth.domain.capture.video_take import track
     from facesynth.formats import video
 
@@ -311,8 +312,21 @@ def video_clips(root: Path, files: list[str]) -> Iterator[Utterance]:
         if m["opening"] is None or m["rounding"] is None:
             continue
         samples = video.sound(path, info.audio_rate)
-        yield Utterance(f"face{path.stem}", path.stem, samples, info.audio_rate, np.arange(len(points)) / info.fps,
-                        m["opening"], rounding=m["rounding"])
+        yield Utterance(speaker_of[path.stem], path.stem, samples, info.audio_rate,
+                        np.arange(len(points)) / info.fps, m["opening"], rounding=m["rounding"])
+
+
+#: video-retalking's example faces: clip stem -> (speaker, sex, frame rate).
+RETALKING = {"1": ("face1", "M", "22 frames/s, variable"), "2": ("face2", "M", "25 frames/s"),
+             "3": ("face3", "F", "25 frames/s"), "4": ("face4", "F", "30 frames/s"),
+             "5": ("face5", "F", "25 frames/s")}
+#: GRID clips in LipNet's evaluation samples: clip stem -> (speaker, sex). Speakers are told apart
+#: by their faces (GRID's speaker numbers are not in the file names); ``id2_vcd_swwp2s`` is the
+#: same man as ``pwij3p``.
+GRID = {"bbaf2n": ("grid01", "M"), "brbk7n": ("grid02", "F"), "lbax4n": ("grid03", "M"), "lbbc2a": ("grid04", "F"),
+        "lrwp9a": ("grid05", "F"), "lwbsza": ("grid06", "F"), "pwij3p": ("grid07", "M"),
+        "id2_vcd_swwp2s": ("grid07", "M"), "sbia1a": ("grid08", "M"), "sbwe5n": ("grid09", "M"),
+        "swiz3n": ("grid10", "M")}
 
 
 def facegood(root: Path, files: list[str]) -> Iterator[Utterance]:
@@ -359,6 +373,20 @@ SOURCES = {s.name: s for s in (
             "M04": Speaker("M", "English (US)", "EMA (NDI Wave, 100 Hz) with a head-mounted microphone, 44.1 kHz; "
                                                 "IEEE sentence, normal rate")},
            "mm (lip sensor distance)", "lip protrusion (mm, from the utterance's median)", haskins),
+    Source("video_retalking", "github.com/OpenTalker/video-retalking (examples/face/*.mp4)",
+           "Apache-2.0 (the repository); the footage's own origin and rights are not stated", False,
+           {spk: Speaker(sex, "English (presumably; not checked by listening)",
+                         f"broadcast-style video ({fps}), frontal, its AAC sound track at 44.1 kHz; lips tracked with "
+                         "MediaPipe Face Mesh") for spk, sex, fps in RETALKING.values()},
+           "inner-lip gap / outer eye corners' distance", "minus mouth width / outer eye corners' distance",
+           partial(video_clips, {k: v[0] for k, v in RETALKING.items()})),
+    Source("grid", "github.com/rizkiarm/LipNet (evaluation/samples/: clips of the GRID corpus)",
+           "CC BY 4.0 (the GRID corpus, Cooke, Barker, Cunningham and Shao 2006; attribution required)", True,
+           {spk: Speaker(sex, "English (British)", "GRID studio: frontal video 25 frames/s, 360x288 MPEG-1, with its "
+                                                   "sound (MP2, 44.1 kHz); lips tracked with MediaPipe Face Mesh")
+            for spk, sex in GRID.values()},
+           "inner-lip gap / outer eye corners' distance", "minus mouth width / outer eye corners' distance",
+           partial(video_clips, {k: v[0] for k, v in GRID.items()})),
     Source("facegood", "github.com/FACEGOOD/FACEGOOD-Audio2Face (code/train/wav, code/train/bs_value)", "MIT", True,
            {"performer": Speaker("F", "Mandarin (presumably)", "studio microphone, 16 kHz; face solved from video "
                                                                "into 116 blendshape curves, 30 frames/s")},
@@ -1139,6 +1167,22 @@ stem_e2va wavfiles/JJWMNE16.wav 60ea5e06696b8f477c5c4d6006cf890aa722772196279f5d
 haskins example/F01_B01_S01_R01_N.mat 719c8b59406257d44933e67c0567915b9a6469211f2dec4cd627ab77955ea496
 haskins example/M01_B01_S01_R01_N.mat 0a72df9305655cb94622929a6de8f4076bad90240de4829d0ea35e1c8e7bac9d
 haskins test/M04_B02_S44_R01_N.pkl 1b3bece68a4c8e310eea815e93975dcfed82d54b0b4c50a3db78dc84a37f09a5
+video_retalking examples/face/1.mp4 60fb69b90af2edbcec762530bfab8be5be2753bca9f3f897005772b544313f94
+video_retalking examples/face/2.mp4 f7d30499bc380f4d18c18b1837fc1f6eb280fa21d79a9f7c6dd66db94296c43c
+video_retalking examples/face/3.mp4 707d58aa3511138bd69e51944a732e010cc6d9063d3d79c178b50fc33cdc0ecf
+video_retalking examples/face/4.mp4 414be3ad61f09432adfbc4933e0163539e94f74fc445c2b9114f8c64e38a480e
+video_retalking examples/face/5.mp4 f664ca850492bbe151898174f83e054ca90f7390696232a9935e10f88a31dfd4
+grid evaluation/samples/GRID/bbaf2n.mpg e468120039e208b5ff9b9e269f8dc96bbddc45701f8dddcf2c0ae21abc0df546
+grid evaluation/samples/GRID/brbk7n.mpg 2122707c6dd3b59a32b5272870afb37397dc6b20cf52241cf8ff7cfda7b3efa3
+grid evaluation/samples/GRID/lbax4n.mpg 8f80c8ced6a8cb47d55c5c01704d4669b410369af653f6be7fbda9003337dedf
+grid evaluation/samples/GRID/lbbc2a.mpg 9447e5e0732eeaf4444b5ba1e3412c8a9e194975ba7c814fa64c4c41c83d4e4c
+grid evaluation/samples/GRID/lrwp9a.mpg 1a6c86fc5e7d4e9ee66a891f188f9a648c9b8be3bdc2431d73ac7e533aa70b3f
+grid evaluation/samples/GRID/lwbsza.mpg 09090d1f7a8a946233a015a1b4258fafcb790ed6dbbd884ed88ae51fe36841a0
+grid evaluation/samples/GRID/pwij3p.mpg a610d98c101dde3587cc66d70cb569d3b1d0111cfad90bd0037e47e21316beda
+grid evaluation/samples/GRID/sbia1a.mpg 768e49272122f1577839db576ea00146d08e83d778c7fe8b9ca1b194dff57c7d
+grid evaluation/samples/GRID/sbwe5n.mpg 6707e709f1d713a6ff6673c85605e2fa721cfe59749c56b9f34e6d159c5fdf55
+grid evaluation/samples/GRID/swiz3n.mpg 080f3e1511879a3baa41cdc31aa7029981f29c71434a570de3d52ee78f9e5dd0
+grid evaluation/samples/id2_vcd_swwp2s.mpg 3bb8cffd51399caaf0c97abcd32bcab3493b2878ffda73bd648490ea47c75cc0
 facegood shirley_1015_bs_name.npy e564a3ca9f6136efc2201b9d77c1daf346cc1fbbde0b8d9a41b1ae24540aed43
 facegood wav/1114_2_01.wav d3e5ce7435e179ea8598f285fcad34b4faf81fe75755479a108752402c0ccdf9
 facegood wav/1114_2_02.wav 1e046d9a37a1a5702f7b74c78144236da838d86a1c804c77f3802ea603aa4a7b
