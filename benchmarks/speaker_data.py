@@ -46,8 +46,12 @@ data without a licence that grants use serves local benchmarks only), utterances
 ``lag_s``, the lag at which the opening best follows the audio's log-RMS envelope (positive =
 the mouth leads the sound), searched within +-0.3 s on the cross-correlation of the two per-
 utterance z-scored curves pooled over the speaker's utterances, with ``lag_r`` (r at that lag)
-and ``r0`` (r at lag 0). Articulation normally leads the sound by a few tens of ms; a lag of more
-than about 0.15 s means a misaligned file.
+and ``r0`` (r at lag 0), and ``sync``: "ok", "offset" (best lag beyond 0.15 s: articulation
+normally leads the sound by a few tens of ms, so more means a misaligned file) or "weak" (best r
+below 0.2: the curves are too weakly related to tell, e.g. a short clip, continuous speech over
+noise, or a face that listens while someone else talks). ``READY-<source>`` holds the source's
+summary: speakers, seconds, and the same check pooled over all its utterances (``pooled_sync``;
+None when they differ in frame rate), which is steadier than one short clip's.
 
     python benchmarks/speaker_data.py --raw RAW_DIR [RAW_DIR ...] --out SPEECH_DATA [--sources stem_e2va,haskins]
 """
@@ -61,6 +65,8 @@ import json
 import pickle
 import shutil
 import sys
+import tempfile
+import zipfile
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from functools import partial
@@ -77,6 +83,10 @@ HERE = Path(__file__).resolve().parent
 MAX_GAP_S = 0.1
 #: Lags searched by the sync check (s).
 MAX_LAG_S = 0.3
+#: The sync check's verdicts: a best lag beyond this (s) is an ``offset``...
+OFFSET_S = 0.15
+#: ...unless the best r is below this: then the curves are too weakly related to tell (``weak``).
+WEAK_R = 0.2
 
 
 @dataclass(frozen=True)
@@ -219,6 +229,14 @@ def sync_lag(pairs: list[tuple[np.ndarray, np.ndarray]], rate: float, max_lag_s:
             "r0": round(float(r[k]), 3)}
 
 
+def sync_verdict(lag: dict[str, float]) -> str:
+    """"ok", "offset" (best lag beyond :data:`OFFSET_S`) or "weak" (best r below :data:`WEAK_R`)
+    for a :func:`sync_lag` result."""
+    if lag["lag_r"] < WEAK_R:
+        return "weak"
+    return "offset" if abs(lag["lag_s"]) > OFFSET_S else "ok"
+
+
 # ---------------------------------------------------------------- readers
 
 def stem_e2va(root: Path, files: list[str]) -> Iterator[Utterance]:
@@ -329,14 +347,42 @@ GRID = {"bbaf2n": ("grid01", "M"), "brbk7n": ("grid02", "F"), "lbax4n": ("grid03
         "swiz3n": ("grid10", "M")}
 
 
-def facegood(root: Path, files: list[str]) -> Iterator[Utterance]:
-    """FACEGOOD's takes: ``wav/<take>.wav`` (16 kHz) with ``bs_value_npy/bs_value_<take>.npy``
-    (frames, 116) at 30 frames/s and the channel names ``shirley_1015_bs_name.npy``."""
+#: PC-AVS's demo clips (VoxCeleb2 crops): clip stem -> (speaker, sex). Speakers told apart by
+#: their faces: 741400104 and 741400163 are one man, 00002 and 517600055 one woman.
+PCAVS = {"00015": ("vox01", "M"), "00086": ("vox02", "M"), "00373": ("vox03", "F"), "681100216": ("vox04", "M"),
+         "741400104": ("vox05", "M"), "741400163": ("vox05", "M"), "00002": ("vox06", "F"),
+         "517600055": ("vox06", "F"), "00010": ("vox07", "M"), "00098": ("vox08", "M"), "00473": ("vox09", "M"),
+         "620900105": ("vox10", "M"), "731200067": ("vox11", "M"), "796100172": ("vox12", "M")}
+
+
+def zipped_clips(speaker_of: dict[str, str], root: Path, files: list[str]) -> Iterator[Utterance]:
+    """Talking-face clips inside zip archives (members whose stem ``speaker_of`` names), read as
+    :func:`video_clips` reads loose ones."""
+    with tempfile.TemporaryDirectory() as tmp:
+        members = []
+        for rel in files:
+            with zipfile.ZipFile(root / rel) as archive:
+                for member in sorted(archive.namelist()):
+                    if member.endswith(".mp4") and Path(member).stem in speaker_of:
+                        archive.extract(member, tmp)
+                        members.append(member)
+        yield from video_clips(speaker_of, Path(tmp), members)
+
+
+def load_lipsync() -> Any:
+    """``benchmarks/real_speech_lipsync.py`` as a module (FACEGOOD's channels and table)."""
     spec = importlib.util.spec_from_file_location("real_speech_lipsync", HERE / "real_speech_lipsync.py")
     if spec is None or spec.loader is None:
         raise InputError(f"{HERE / 'real_speech_lipsync.py'}: cannot be loaded; run this script from the repository.")
     lipsync = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(lipsync)
+    return lipsync
+
+
+def facegood(root: Path, files: list[str]) -> Iterator[Utterance]:
+    """FACEGOOD's takes: ``wav/<take>.wav`` (16 kHz) with ``bs_value_npy/bs_value_<take>.npy``
+    (frames, 116) at 30 frames/s and the channel names ``shirley_1015_bs_name.npy``."""
+    lipsync = load_lipsync()
     names = lipsync.channel_names(root)
     table = lipsync.read_table()
     for rel in files:
@@ -387,6 +433,15 @@ SOURCES = {s.name: s for s in (
             for spk, sex in GRID.values()},
            "inner-lip gap / outer eye corners' distance", "minus mouth width / outer eye corners' distance",
            partial(video_clips, {k: v[0] for k, v in GRID.items()})),
+    Source("pcavs", "github.com/Hangz-nju-cuhk/Talking-Face_PC-AVS (misc/*.zip: VoxCeleb2 clips)",
+           "CC BY 4.0 (the repository); the clips are VoxCeleb2 excerpts of online videos whose rights are not "
+           "granted", False,
+           {spk: Speaker(sex, "English (presumably; not checked by listening)",
+                         "interview and broadcast video (VoxCeleb2), 224x224 face crops at 25 frames/s with 16 kHz "
+                         "sound, each clip its own microphone and room; lips tracked with MediaPipe Face Mesh")
+            for spk, sex in PCAVS.values()},
+           "inner-lip gap / outer eye corners' distance", "minus mouth width / outer eye corners' distance",
+           partial(zipped_clips, {k: v[0] for k, v in PCAVS.items()})),
     Source("facegood", "github.com/FACEGOOD/FACEGOOD-Audio2Face (code/train/wav, code/train/bs_value)", "MIT", True,
            {"performer": Speaker("F", "Mandarin (presumably)", "studio microphone, 16 kHz; face solved from video "
                                                                "into 116 blendshape curves, 30 frames/s")},
@@ -434,9 +489,10 @@ def check_files(root: Path, table: dict[str, str]) -> None:
                              "the file it was prepared from, use the repository's copy at the commit named there.")
 
 
-def prepare(source: Source, root: Path, rels: list[str], out: Path) -> list[dict]:
+def prepare(source: Source, root: Path, rels: list[str], out: Path) -> tuple[list[dict], dict]:
     """Write ``source``'s utterances under ``out/<source>`` (via a temporary folder) and return its
-    speakers' entries for speakers.json."""
+    speakers' entries for speakers.json and the source's summary (speakers, seconds, and the sync
+    check pooled over all its utterances where they share one frame rate, else None)."""
     tmp = out / f".{source.name}.partial"
     shutil.rmtree(tmp, ignore_errors=True)
     stats: dict[str, dict] = {}
@@ -459,15 +515,20 @@ def prepare(source: Source, root: Path, rels: list[str], out: Path) -> list[dict
     entries = []
     for speaker, s in sorted(stats.items()):
         info = source.speakers[speaker]
+        lag = sync_lag(pairs[speaker], s["rate"])
         entries.append({"source": source.name, "speaker": speaker, "sex": info.sex, "language": info.language,
                         "setting": info.setting, "repository": source.repository, "licence": source.licence,
                         "may_ship": source.may_ship, "utterances": s["utterances"],
                         "seconds": round(s["seconds"], 2), "rate": s["rate"], "opening_unit": source.opening_unit,
-                        "jaw": s["jaw"], "rounding": source.rounding, **sync_lag(pairs[speaker], s["rate"])})
+                        "jaw": s["jaw"], "rounding": source.rounding, **lag, "sync": sync_verdict(lag)})
+    rates = {e["rate"] for e in entries}
+    pooled = sync_lag([p for spk in sorted(pairs) for p in pairs[spk]], rates.pop()) if len(rates) == 1 else None
+    summary = {"source": source.name, "speakers": len(entries), "seconds": round(sum(e["seconds"] for e in entries), 1),
+               "pooled_sync": pooled}
     final = out / source.name
     shutil.rmtree(final, ignore_errors=True)
     tmp.rename(final)
-    return entries
+    return entries, summary
 
 
 def main(argv=None) -> dict:
@@ -488,7 +549,8 @@ def main(argv=None) -> dict:
     args.out.mkdir(parents=True, exist_ok=True)
     listing = args.out / "speakers.json"
     entries = [e for e in (json.loads(listing.read_text()) if listing.exists() else []) if e["source"] not in wanted]
-    missing = []
+    missing: list[str] = []
+    summaries: list[dict] = []
     for name in wanted:
         source, table = SOURCES[name], tables[name]
         rels = sorted(table)
@@ -500,12 +562,14 @@ def main(argv=None) -> dict:
             missing.append(name)
             continue
         check_files(root, table)
-        entries.extend(prepare(source, root, rels, args.out))
+        speakers, summary = prepare(source, root, rels, args.out)
+        entries.extend(speakers)
+        summaries.append(summary)
         order = list(SOURCES)
         entries.sort(key=lambda e: (order.index(e["source"]), e["speaker"]))
         listing.write_text(json.dumps(entries, indent=1) + "\n")
-        (args.out / f"READY-{name}").write_text(f"{sum(e['seconds'] for e in entries if e['source'] == name):.1f} s\n")
-    result = {"speakers": entries, "missing": missing,
+        (args.out / f"READY-{name}").write_text(json.dumps(summary) + "\n")
+    result = {"speakers": entries, "sources": summaries, "missing": missing,
               "seconds": round(sum(e["seconds"] for e in entries), 1),
               "by_sex": {sex: sum(e["sex"] == sex for e in entries) for sex in ("F", "M")}}
     print(json.dumps(result, indent=1))
@@ -1183,6 +1247,9 @@ grid evaluation/samples/GRID/sbia1a.mpg 768e49272122f1577839db576ea00146d08e83d7
 grid evaluation/samples/GRID/sbwe5n.mpg 6707e709f1d713a6ff6673c85605e2fa721cfe59749c56b9f34e6d159c5fdf55
 grid evaluation/samples/GRID/swiz3n.mpg 080f3e1511879a3baa41cdc31aa7029981f29c71434a570de3d52ee78f9e5dd0
 grid evaluation/samples/id2_vcd_swwp2s.mpg 3bb8cffd51399caaf0c97abcd32bcab3493b2878ffda73bd648490ea47c75cc0
+pcavs misc/Audio_Source.zip c2db3448e2269050e066fc43fc705d29e6638f75c01cdab4b8781b89f1664979
+pcavs misc/Input.zip cce17109e931d3b29062a7ec949ff4a2e14dba0d6576cca2751a3de426be9dc3
+pcavs misc/Pose_Source.zip 80052de6b2e3519be1a9d0a71ecfb51c7c88f48cb0b5dc159def9aef4c668297
 facegood shirley_1015_bs_name.npy e564a3ca9f6136efc2201b9d77c1daf346cc1fbbde0b8d9a41b1ae24540aed43
 facegood wav/1114_2_01.wav d3e5ce7435e179ea8598f285fcad34b4faf81fe75755479a108752402c0ccdf9
 facegood wav/1114_2_02.wav 1e046d9a37a1a5702f7b74c78144236da838d86a1c804c77f3802ea603aa4a7b
