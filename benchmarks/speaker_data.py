@@ -46,8 +46,9 @@ data without a licence that grants use serves local benchmarks only), utterances
 ``lag_s``, the lag at which the opening best follows the audio's log-RMS envelope (positive =
 the mouth leads the sound), searched within +-0.3 s on the cross-correlation of the two per-
 utterance z-scored curves pooled over the speaker's utterances, with ``lag_r`` (r at that lag)
-and ``r0`` (r at lag 0), and ``sync``: "ok", "offset" (best lag beyond 0.15 s: articulation
-normally leads the sound by a few tens of ms, so more means a misaligned file) or "weak" (best r
+and ``r0`` (r at lag 0), and ``sync``: "ok", "offset" (best lag beyond 0.15 s and its r at
+least 0.1 above lag 0's: articulation normally leads the sound by a few tens of ms, so more means
+a misaligned file; in a clip of a few seconds the peak wanders, hence the margin) or "weak" (best r
 below 0.2: the curves are too weakly related to tell, e.g. a short clip, continuous speech over
 noise, or a face that listens while someone else talks). ``READY-<source>`` holds the source's
 summary: speakers, seconds, and the same check pooled over all its utterances (``pooled_sync``;
@@ -83,8 +84,10 @@ HERE = Path(__file__).resolve().parent
 MAX_GAP_S = 0.1
 #: Lags searched by the sync check (s).
 MAX_LAG_S = 0.3
-#: The sync check's verdicts: a best lag beyond this (s) is an ``offset``...
+#: The sync check's verdicts: a best lag beyond this (s) whose r beats lag 0's by OFFSET_GAIN is
+#: an ``offset``...
 OFFSET_S = 0.15
+OFFSET_GAIN = 0.1
 #: ...unless the best r is below this: then the curves are too weakly related to tell (``weak``).
 WEAK_R = 0.2
 
@@ -230,11 +233,12 @@ def sync_lag(pairs: list[tuple[np.ndarray, np.ndarray]], rate: float, max_lag_s:
 
 
 def sync_verdict(lag: dict[str, float]) -> str:
-    """"ok", "offset" (best lag beyond :data:`OFFSET_S`) or "weak" (best r below :data:`WEAK_R`)
-    for a :func:`sync_lag` result."""
+    """"ok", "offset" (best lag beyond :data:`OFFSET_S` with an r :data:`OFFSET_GAIN` above lag
+    0's) or "weak" (best r below :data:`WEAK_R`) for a :func:`sync_lag` result."""
     if lag["lag_r"] < WEAK_R:
         return "weak"
-    return "offset" if abs(lag["lag_s"]) > OFFSET_S else "ok"
+    shifted = abs(lag["lag_s"]) > OFFSET_S and lag["lag_r"] - lag["r0"] >= OFFSET_GAIN
+    return "offset" if shifted else "ok"
 
 
 # ---------------------------------------------------------------- readers

@@ -170,3 +170,5 @@ def test_sync_verdict_names_offsets_and_weak_evidence():
     assert bench.sync_verdict({"lag_s": 0.04, "lag_r": 0.5, "r0": 0.45}) == "ok"
     assert bench.sync_verdict({"lag_s": -0.24, "lag_r": 0.5, "r0": 0.1}) == "offset"
     assert bench.sync_verdict({"lag_s": 0.0, "lag_r": 0.1, "r0": 0.1}) == "weak"
+    # a far peak hardly better than lag 0 is a broad peak, not an offset
+    assert bench.sync_verdict({"lag_s": 0.24, "lag_r": 0.53, "r0": 0.47}) == "ok"
