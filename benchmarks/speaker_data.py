@@ -405,7 +405,7 @@ def facegood(root: Path, files: list[str]) -> Iterator[Utterance]:
 # ---------------------------------------------------------------- the sources
 
 SOURCES = {s.name: s for s in (
-    Source("stem_e2va", "github.com/zziqian/STEM-E2VA", "none stated (the README: samples released for review)",
+    Source("stem_e2va", "github.com/zziqian/STEM-E2VA at a71b72090501", "none stated (the README: samples released for review)",
            False,
            {"CXY": Speaker("F", "Mandarin", "EMA (250 Hz) with the articulograph's microphone, 48 kHz; read "
                                             "sentences in seven emotions"),
@@ -414,7 +414,7 @@ SOURCES = {s.name: s for s in (
             "JJW": Speaker("M", "Mandarin", "EMA (250 Hz) with the articulograph's microphone, 48 kHz; read "
                                             "sentences in seven emotions")},
            "mm (lip sensor distance)", "minus lip-corner distance (mm)", stem_e2va),
-    Source("haskins", "github.com/jaekookang/Python-EMA-Viewer (Haskins IEEE rate comparison samples)",
+    Source("haskins", "github.com/jaekookang/Python-EMA-Viewer (Haskins IEEE rate comparison samples) at 4c09b275e336",
            "none stated in the repository", False,
            {"F01": Speaker("F", "English (US)", "EMA (NDI Wave, 100 Hz) with a head-mounted microphone, 44.1 kHz; "
                                                 "IEEE sentence, normal rate"),
@@ -423,21 +423,21 @@ SOURCES = {s.name: s for s in (
             "M04": Speaker("M", "English (US)", "EMA (NDI Wave, 100 Hz) with a head-mounted microphone, 44.1 kHz; "
                                                 "IEEE sentence, normal rate")},
            "mm (lip sensor distance)", "lip protrusion (mm, from the utterance's median)", haskins),
-    Source("video_retalking", "github.com/OpenTalker/video-retalking (examples/face/*.mp4)",
+    Source("video_retalking", "github.com/OpenTalker/video-retalking (examples/face/*.mp4) at d32e8e582482",
            "Apache-2.0 (the repository); the footage's own origin and rights are not stated", False,
            {spk: Speaker(sex, "English (presumably; not checked by listening)",
                          f"broadcast-style video ({fps}), frontal, its AAC sound track at 44.1 kHz; lips tracked with "
                          "MediaPipe Face Mesh") for spk, sex, fps in RETALKING.values()},
            "inner-lip gap / outer eye corners' distance", "minus mouth width / outer eye corners' distance",
            partial(video_clips, {k: v[0] for k, v in RETALKING.items()})),
-    Source("grid", "github.com/rizkiarm/LipNet (evaluation/samples/: clips of the GRID corpus)",
+    Source("grid", "github.com/rizkiarm/LipNet (evaluation/samples/: clips of the GRID corpus) at bec592aa1e66",
            "CC BY 4.0 (the GRID corpus, Cooke, Barker, Cunningham and Shao 2006; attribution required)", True,
            {spk: Speaker(sex, "English (British)", "GRID studio: frontal video 25 frames/s, 360x288 MPEG-1, with its "
                                                    "sound (MP2, 44.1 kHz); lips tracked with MediaPipe Face Mesh")
             for spk, sex in GRID.values()},
            "inner-lip gap / outer eye corners' distance", "minus mouth width / outer eye corners' distance",
            partial(video_clips, {k: v[0] for k, v in GRID.items()})),
-    Source("pcavs", "github.com/Hangz-nju-cuhk/Talking-Face_PC-AVS (misc/*.zip: VoxCeleb2 clips)",
+    Source("pcavs", "github.com/Hangz-nju-cuhk/Talking-Face_PC-AVS (misc/*.zip: VoxCeleb2 clips) at 201d2b946caa",
            "CC BY 4.0 (the repository); the clips are VoxCeleb2 excerpts of online videos whose rights are not "
            "granted", False,
            {spk: Speaker(sex, "English (presumably; not checked by listening)",
@@ -446,7 +446,7 @@ SOURCES = {s.name: s for s in (
             for spk, sex in PCAVS.values()},
            "inner-lip gap / outer eye corners' distance", "minus mouth width / outer eye corners' distance",
            partial(zipped_clips, {k: v[0] for k, v in PCAVS.items()})),
-    Source("facegood", "github.com/FACEGOOD/FACEGOOD-Audio2Face (code/train/wav, code/train/bs_value)", "MIT", True,
+    Source("facegood", "github.com/FACEGOOD/FACEGOOD-Audio2Face (code/train/wav, code/train/bs_value; as real_speech_lipsync.py reads it)", "MIT", True,
            {"performer": Speaker("F", "Mandarin (presumably)", "studio microphone, 16 kHz; face solved from video "
                                                                "into 116 blendshape curves, 30 frames/s")},
            "blendshape weight (mouth_stretch_c + mouth_oh_c)", "mouthFunnel + mouthPucker (weights)", facegood),
@@ -490,7 +490,7 @@ def check_files(root: Path, table: dict[str, str]) -> None:
                              "benchmarks/speaker_data.py's FILES is needed).")
         if sha256(path) != digest:
             raise InputError(f"{path}: sha256 differs from the one in benchmarks/speaker_data.py's FILES; this is not "
-                             "the file it was prepared from, use the repository's copy at the commit named there.")
+                             "the file it was prepared from, use the repository's copy at the commit named in SOURCES.")
 
 
 def prepare(source: Source, root: Path, rels: list[str], out: Path) -> tuple[list[dict], dict]:
