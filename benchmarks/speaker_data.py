@@ -493,22 +493,19 @@ def check_files(root: Path, table: dict[str, str]) -> None:
                              "the file it was prepared from, use the repository's copy at the commit named in SOURCES.")
 
 
-def prepare(source: Source, root: Path, rels: list[str], out: Path) -> tuple[list[dict], dict]:
-    """Write ``source``'s utterances under ``out/<source>`` (via a temporary folder) and return its
-    speakers' entries for speakers.json and the source's summary (speakers, seconds, and the sync
-    check pooled over all its utterances where they share one frame rate, else None)."""
-    tmp = out / f".{source.name}.partial"
-    shutil.rmtree(tmp, ignore_errors=True)
+def write_utterances(utterances: Iterator[Utterance], folder: Path) -> tuple[dict[str, dict], dict[str, list]]:
+    """Write each utterance's wav and npz under ``folder/<speaker>/``; return per speaker its
+    totals ({utterances, seconds, jaw, rate}) and its (opening, loudness) pairs for the sync check."""
     stats: dict[str, dict] = {}
     pairs: dict[str, list] = {}
-    for u in source.reader(root, rels):
-        folder = tmp / u.speaker
-        folder.mkdir(parents=True, exist_ok=True)
-        write_wav(folder / f"{u.name}.wav", u.samples, u.rate)
+    for u in utterances:
+        speaker_folder = folder / u.speaker
+        speaker_folder.mkdir(parents=True, exist_ok=True)
+        write_wav(speaker_folder / f"{u.name}.wav", u.samples, u.rate)
         arrays = {"times": u.times, "opening": u.opening}
         arrays.update({k: v for k, v in (("jaw", u.jaw), ("rounding", u.rounding)) if v is not None})
         columns: dict[str, Any] = {k: np.asarray(v, np.float64) for k, v in arrays.items()}
-        np.savez(folder / f"{u.name}.npz", **columns)
+        np.savez(speaker_folder / f"{u.name}.npz", **columns)
         s = stats.setdefault(u.speaker, {"utterances": 0, "seconds": 0.0, "jaw": u.jaw is not None})
         s["utterances"] += 1
         s["seconds"] += len(u.samples) / u.rate
@@ -516,6 +513,20 @@ def prepare(source: Source, root: Path, rels: list[str], out: Path) -> tuple[lis
         s["rate"] = round(frame_rate, 3)
         pairs.setdefault(u.speaker, []).append(
             (u.opening, log_rms(u.samples, u.rate, u.times, max(2.0 / frame_rate, 0.025))))
+    return stats, pairs
+
+
+def prepare(source: Source, root: Path, rels: list[str], out: Path) -> tuple[list[dict], dict]:
+    """Write ``source``'s utterances under ``out/<source>`` (via a temporary folder) and return its
+    speakers' entries for speakers.json and the source's summary (speakers, seconds, and the sync
+    check pooled over all its utterances where they share one frame rate, else None)."""
+    tmp = out / f".{source.name}.partial"
+    shutil.rmtree(tmp, ignore_errors=True)
+    try:
+        stats, pairs = write_utterances(source.reader(root, rels), tmp)
+    except BaseException:
+        shutil.rmtree(tmp, ignore_errors=True)  # no half-written source is left behind
+        raise
     entries = []
     for speaker, s in sorted(stats.items()):
         info = source.speakers[speaker]

@@ -4,6 +4,7 @@ not shipped; it is not part of the test suite)."""
 
 import importlib.util
 import json
+import subprocess
 import sys
 from pathlib import Path
 
@@ -172,3 +173,24 @@ def test_sync_verdict_names_offsets_and_weak_evidence():
     assert bench.sync_verdict({"lag_s": 0.0, "lag_r": 0.1, "r0": 0.1}) == "weak"
     # a far peak hardly better than lag 0 is a broad peak, not an offset
     assert bench.sync_verdict({"lag_s": 0.24, "lag_r": 0.53, "r0": 0.47}) == "ok"
+
+
+def test_a_reader_failing_midway_leaves_no_partial_source(tmp_path):
+    def reader(root, files):
+        yield bench.Utterance("s1", "u1", np.zeros(800, np.float32), 8000, np.arange(10) / 100.0, np.ones(10))
+        raise InputError("u2: broken")
+
+    source = bench.Source("made_up", "nowhere", "none", False, {"s1": bench.Speaker("F", "x", "y")}, "mm", "none",
+                          reader)
+    with pytest.raises(InputError, match="u2: broken"):
+        bench.prepare(source, tmp_path, [], tmp_path / "out")
+    assert not (tmp_path / "out").exists() or not any((tmp_path / "out").iterdir())
+
+
+def test_the_script_refuses_a_missing_raw_folder_in_one_sentence(tmp_path):
+    script = Path(__file__).resolve().parents[1] / "benchmarks" / "speaker_data.py"
+    run = subprocess.run([sys.executable, str(script), "--raw", str(tmp_path / "absent"), "--out", str(tmp_path / "o")],
+                         capture_output=True, text=True, check=False)
+    assert run.returncode == 1
+    assert run.stderr.strip() == f"{tmp_path / 'absent'}: not a folder; --raw names folders holding the raw copies."
+    assert not (tmp_path / "o").exists()
