@@ -49,7 +49,8 @@ def _audio_source(stream: BinaryIO, where: str) -> tuple[BinaryIO | wave.Wave_re
         if (reader.getframerate(), reader.getnchannels(), reader.getsampwidth()) != (SAMPLE_RATE, 1, 2):
             raise InputError(f"{where}: the WAV is {reader.getframerate()} Hz, {reader.getnchannels()} channel(s), "
                              f"{8 * reader.getsampwidth()}-bit; live input is {SAMPLE_RATE} Hz mono 16-bit "
-                             f"(convert it, e.g. ffmpeg -i IN -ar {SAMPLE_RATE} -ac 1 -c:a pcm_s16le OUT.wav).")
+                             "(give the file with --audio FILE, which converts any sound file, or convert it, "
+                             f"e.g. ffmpeg -i IN -ar {SAMPLE_RATE} -ac 1 -c:a pcm_s16le OUT.wav).")
         return reader, b""
     return stream, head
 
