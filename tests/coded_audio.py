@@ -73,3 +73,10 @@ def correlation(a: np.ndarray, b: np.ndarray) -> float:
     y = np.asarray(b[:n], np.float64).reshape(n, -1)
     x, y = x - x.mean(axis=0), y - y.mean(axis=0)
     return float((x * y).sum() / np.sqrt((x * x).sum() * (y * y).sum()))
+
+
+def boundary_shift(a, b) -> float:
+    """The largest shift (s) between the phone boundaries of two segmentations with the same
+    phones (``Segment``-like: start, end, label); the phones must be the same."""
+    assert [s.label for s in a] == [s.label for s in b]
+    return max((max(abs(x.start - y.start), abs(x.end - y.end)) for x, y in zip(a, b)), default=0.0)
