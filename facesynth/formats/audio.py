@@ -157,8 +157,8 @@ def pcm16(samples: np.ndarray) -> bytes:
 
 
 def write_wav(path: Path, samples: np.ndarray, rate: int) -> None:
-    """Write mono 16-bit PCM WAV."""
-    sf.write(str(path), np.clip(samples, -1.0, 1.0), int(rate), subtype="PCM_16")
+    """Write mono 16-bit PCM WAV (whatever ``path``'s name: a temporary name is published later)."""
+    sf.write(str(path), np.clip(samples, -1.0, 1.0), int(rate), format="WAV", subtype="PCM_16")
 
 
 def is_wav(path: Path) -> bool:
