@@ -83,3 +83,11 @@ def test_what_is_no_speech_is_refused_before_a_frame(tiny_db, coded_speech, name
     code, messages, output = _stream(tiny_db, "--audio", str(coded_speech[name]))
     assert code == 1 and messages == []
     assert output.startswith(f"error: {coded_speech[name]}{said}") and output.count("\n") == 1
+
+
+@pytest.mark.parametrize("name", ["m4a", "mp4", "opus", "ogg", "mp3"])
+def test_a_sound_file_on_standard_input_is_refused_not_streamed_as_noise(tiny_db, coded_speech, name):
+    """Standard input takes PCM (or a WAV); a container there was streamed as raw samples."""
+    code, messages, output = _stream(tiny_db, input=coded(coded_speech, name).read_bytes())
+    assert code == 1 and messages == [] and output.count("\n") == 1
+    assert output.startswith("error: standard input: this is ") and "give the file with --audio FILE" in output
