@@ -26,6 +26,7 @@ import re
 import struct
 import subprocess
 from pathlib import Path
+from typing import NoReturn
 
 import imageio_ffmpeg
 import numpy as np
@@ -81,7 +82,7 @@ def _read_soundfile(path: Path) -> tuple[np.ndarray, int] | None:
 def _read_ffmpeg(path: Path) -> tuple[np.ndarray, int]:
     """(samples (n, channels) float32, rate) of the first audio stream of ``path``, decoded by
     the bundled ffmpeg (see the module docstring)."""
-    cmd = [imageio_ffmpeg.get_ffmpeg_exe(), "-hide_banner", "-nostdin", "-v", "error", "-i", str(path),
+    cmd = [imageio_ffmpeg.get_ffmpeg_exe(), "-hide_banner", "-nostdin", "-v", "error", "-i", _input(path),
            "-map", "0:a:0", "-vn", "-sn", "-dn", "-c:a", "pcm_f32le", "-f", "wav", "pipe:1"]
     result = subprocess.run(cmd, capture_output=True, check=False)
     if result.returncode != 0:
@@ -122,11 +123,17 @@ def _wav_layout(raw: bytes) -> tuple[int, int, int]:
     raise ValueError("no samples chunk")
 
 
-def _refuse(path: Path, decode_log: str) -> None:
+def _input(path: Path) -> str:
+    """``path`` as ffmpeg's input: through its ``file:`` protocol, so that a name with a colon
+    (``take:2.m4a``) or a leading dash is a file, not a protocol or an option."""
+    return f"file:{path}"
+
+
+def _refuse(path: Path, decode_log: str) -> NoReturn:
     """Raise the one sentence that says why ffmpeg gave no samples for ``path``: not a media
     file, a media file without an audio stream, or a stream that does not decode (ffmpeg is
     asked again, without an output, for its description of the file's streams)."""
-    probe = subprocess.run([imageio_ffmpeg.get_ffmpeg_exe(), "-hide_banner", "-nostdin", "-i", str(path)],
+    probe = subprocess.run([imageio_ffmpeg.get_ffmpeg_exe(), "-hide_banner", "-nostdin", "-i", _input(path)],
                            capture_output=True, text=True, errors="replace", check=False).stderr
     detail = _last_line(decode_log) or _last_line(probe)
     if not re.search(r"^Input #0", probe, re.MULTILINE):

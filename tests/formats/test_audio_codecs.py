@@ -15,6 +15,7 @@ import dataclasses
 import re
 import shutil
 import subprocess
+from pathlib import Path
 
 import imageio_ffmpeg
 import numpy as np
@@ -127,3 +128,11 @@ def test_an_audio_stream_without_samples_is_refused(tmp_path):
 def test_a_missing_file_is_named(tmp_path):
     with pytest.raises(InputError, match=re.escape(f"{tmp_path / 'take.m4a'}: audio file not found; check the path.")):
         read_audio(tmp_path / "take.m4a")
+
+
+def test_a_name_ffmpeg_would_take_for_a_protocol_or_an_option_is_a_file(coded_speech, tmp_path, monkeypatch):
+    m4a = coded(coded_speech, "m4a")
+    monkeypatch.chdir(tmp_path)
+    for name in ("take:2.m4a", "-y.m4a"):  # relative, as a user types them
+        shutil.copyfile(m4a, name)
+        np.testing.assert_array_equal(read_audio(Path(name))[0], read_audio(m4a)[0])
