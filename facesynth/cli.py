@@ -341,7 +341,8 @@ def sample_corpus_cmd(ctx: Context, out_dir: Path, preset: str, seed: int):
 def align(ctx: Context, audio: Path, text: str | None, transcript: Path | None, dict_path: Path | None, output: Path):
     """Forced-align speech to its text; writes a phone TextGrid in the Festival phone set.
 
-    pocketsphinx first; when it fails or places fewer words, a wider beam, then chunks cut at
+    AUDIO is any sound file or video with sound that ffmpeg reads (WAV, FLAC, M4A, MP3, Opus,
+    MP4, ...). pocketsphinx first; when it fails or places fewer words, a wider beam, then chunks cut at
     silences, then typical phone durations over the voiced span (align.methods; the one used
     is printed). Speech aligned as pause for longer than align.max_voiced_pause_s is warned
     about: the text may lack words. Non-speech marked in the text ([breath], [laugh],
@@ -483,7 +484,8 @@ def build_db(ctx: Context, pca_path: Path, output: Path):
                    "fitted on it (facesynth fit-method).")
 @click.option("--phonemes", type=EXISTING, default=None, help="The utterance's phone timing (TextGrid or .lab).")
 @click.option("--audio", type=EXISTING, default=None,
-              help="The speech: aligned on the fly to --text (without it, recognised: align.recognition), or "
+              help="The speech (any sound file or video with sound ffmpeg reads: WAV, FLAC, M4A, MP3, Opus, MP4, "
+                   "...): aligned on the fly to --text (without it, recognised: align.recognition), or "
                    "with --phonemes its timing; the voice shapes the mouth too (synthesize.voice_recognized, "
                    "synthesize.voice_given).")
 @click.option("--text", default=None, help="What --audio says.")
@@ -906,7 +908,8 @@ def openfacefx(ctx: Context, motion: Path, rig, output: Path):
 @main.command()
 @click.argument("anims", nargs=-1, required=True, type=EXISTING)
 @click.option("--audio", "audios", multiple=True, type=EXISTING,
-              help="Audio of each animation, in order (none: a silent soundtrack).")
+              help="Audio of each animation, in order (any sound file or video with sound; none: a silent "
+                   "soundtrack).")
 @click.option("--view", type=click.Choice(choices("render", "view")), default=None, help="Default: render.view.")
 @click.option("--compare", multiple=True, type=EXISTING,
               help="Animation shown beside for the side-by-side view: one for all, or one per animation in order.")
@@ -948,7 +951,9 @@ def render(ctx: Context, anims, audios, view, compare, rig, binding, output: Pat
 @click.option("--fps", type=float, default=None,
               help="Frame rate of the output (default: export.arkit_fps for arkit-csv, else the animation's).")
 @click.option("--head-motion", is_flag=True, help="Put the head motion in (Head* columns, node or xform animation).")
-@click.option("--audio", type=EXISTING, default=None, help="WAV copied beside a gltf/glb and named in it.")
+@click.option("--audio", type=EXISTING, default=None,
+              help="Speech put beside a gltf/glb as a WAV and named in it (a WAV is copied; any other sound file or "
+                   "video with sound, decoded).")
 @click.option("--mesh", type=EXISTING, default=None,
               help="Mesh (.obj/.ply) whose faces to write, with the animation's vertex count.")
 @click.option("-o", "--output", type=PATH, required=True, help="Output file (a folder for obj-seq).")
@@ -979,7 +984,8 @@ def export(ctx: Context, artifact: Path, fmt: str, fps: float | None, head_motio
 @main.command()
 @click.argument("artifact", type=EXISTING, required=False)
 @click.option("--audio", type=EXISTING, default=None,
-              help="WAV played with the animation (embedded in the page); with --live, the speech the page sends.")
+              help="Speech played with the animation (embedded in the page; any sound file or video with sound); "
+                   "with --live, the speech the page sends.")
 @click.option("--motion", type=EXISTING, default=None,
               help="The synthesized motion a mesh animation or curves came from: its phones, emotion and provenance.")
 @click.option("--live", "live_url", default=None, metavar="WS_URL",
@@ -1425,7 +1431,8 @@ def expression_restyle(ctx: Context, model: Path, motion: Path, to, emotions, in
 
 @main.command("head-motion")
 @click.argument("db", type=EXISTING)
-@click.option("--audio", type=EXISTING, required=True, help="The speech (WAV) to move the head to.")
+@click.option("--audio", type=EXISTING, required=True,
+              help="The speech to move the head to (any sound file or video with sound).")
 @click.option("--corpus", "corpus_path", type=EXISTING, required=True,
               help="The corpus artifact (ingest's) the database was built from: it holds every take's audio.")
 @click.option("-o", "--output", type=PATH, required=True, help="Output head.h5.")
@@ -1456,7 +1463,9 @@ def head_motion(ctx: Context, db: Path, audio: Path, corpus_path: Path, output: 
 @main.command()
 @click.argument("db_path", metavar="DB", type=EXISTING)
 @click.option("--audio", type=PATH, default="-", show_default=True,
-              help="WAV (16 kHz mono 16-bit) or raw 16-bit PCM at 16 kHz; '-' reads standard input.")
+              help="A sound file or video with sound (any format and rate, decoded and resampled to 16 kHz; .pcm "
+                   "or .raw: raw 16-bit PCM at 16 kHz); '-' reads standard input: a 16 kHz mono 16-bit WAV or raw "
+                   "PCM.")
 @click.option("--serve", default=None, metavar="HOST:PORT", help="Serve WebSocket clients instead (e.g. 127.0.0.1:8765).")
 @click.option("--livelink", default=None, metavar="HOST:PORT", help="Also send Live Link Face UDP packets (port 11111).")
 @click.option("--method", type=click.Choice(choices("stream", "method")), default=None, help="Decisions (default: stream.method).")

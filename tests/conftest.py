@@ -273,3 +273,17 @@ def held_out_synthesized(tiny_db, tiny_corpus, held_out_take, config, tmp_path_f
     d = _built_once(tmp_path_factory, "held-out-synthesized", build)
     return {"motion": d / "m.h5", "curves": d / "c.h5", "anim": d / "a.h5",
             "audio": tiny_corpus / "audio" / f"{held_out_take}.wav"}
+
+
+@pytest.fixture(scope="session")
+def coded_speech(tiny_corpus, held_out_take, tmp_path_factory) -> dict[str, Path]:
+    """The held-out sentence (``wav``: the corpus's own 16 kHz file) encoded as the files users
+    have (tests/coded_audio.py): ``m4a``, ``mp3``, ``opus``, ``ogg``, ``mp4`` (those the bundled
+    ffmpeg can encode: get them with ``coded_audio.coded``), ``silent.mp4`` (no sound) and
+    ``notes`` (a text file named ``notes.m4a``)."""
+    from coded_audio import FORMATS, encode_all
+
+    wav = tiny_corpus / "audio" / f"{held_out_take}.wav"
+    d = _built_once(tmp_path_factory, "coded-speech", lambda d: encode_all(wav, d))
+    files = {name: d / file for name, (file, _, _) in FORMATS.items() if (d / file).exists()}
+    return {"wav": wav, **files, "silent": d / "silent.mp4", "notes": d / "notes.m4a"}

@@ -45,10 +45,6 @@ EMOTIONS = {"neutral": "neutral", "happy": "happy", "angry": "angry", "sad": "sa
 #: fitted by ``facesynth fit-method`` instead of a database.
 METHODS = ("dp", "greedy", "mean", "trajectory", "coarticulation")
 
-#: Audio ``facesynth synthesize --audio`` reads.
-AUDIO_SUFFIXES = (".wav", ".flac")
-
-
 class AddonError(Exception):
     """A problem the user can fix, said in one sentence (the operator's report)."""
 
@@ -162,7 +158,8 @@ def write_spans(path: str, spans) -> None:
 
 
 def audio_duration_s(path: str) -> float | None:
-    """A WAV file's length (s), or None where Python's ``wave`` cannot tell (FLAC, odd WAVs)."""
+    """A WAV file's length (s), or None where Python's ``wave`` cannot tell (FLAC, M4A, MP3, odd
+    WAVs: the last emotion span then runs to the end)."""
     try:
         with wave.open(path, "rb") as w:
             return w.getnframes() / float(w.getframerate())
@@ -176,7 +173,8 @@ def audio_duration_s(path: str) -> float | None:
 class Request:
     """One animation asked of facesynth (paths absolute).
 
-    audio : the speech (WAV or FLAC); text : what it says ('' to recognise it); database : the
+    audio : the speech (any sound file, or video with sound, that ffmpeg reads: WAV, FLAC, M4A,
+    MP3, Opus, Ogg, MP4, ...); text : what it says ('' to recognise it); database : the
     database (db.h5) or fitted model; method : one of :data:`METHODS`; emotions : a spans file
     ('' for none); rig, binding : a user's rig and its marker binding ('' for the built-in rig);
     fps : the scene's frame rate; head : whether to export the head's rotation."""
@@ -195,14 +193,13 @@ class Request:
 
 
 def check_request(r: Request) -> None:
-    """Refuse in one sentence what facesynth would refuse later: missing files, audio it does not
-    read, an unknown method."""
+    """Refuse in one sentence what facesynth would refuse later: missing files, an unknown method.
+    Whether the sound reads is facesynth's to say (it reads any sound file or video with sound
+    that ffmpeg reads), and its sentence is the operator's report."""
     if not r.audio:
         raise AddonError("no sound chosen: pick a sound file or a sound strip.")
     if not os.path.isfile(r.audio):
         raise AddonError(f"the sound file {r.audio} does not exist.")
-    if os.path.splitext(r.audio)[1].lower() not in AUDIO_SUFFIXES:
-        raise AddonError(f"the sound file {r.audio} is not WAV or FLAC, which facesynth reads; convert it first.")
     if not r.database:
         raise AddonError("no database chosen: pick the facesynth database (db.h5) or fitted model.")
     if not os.path.isfile(r.database):

@@ -63,7 +63,8 @@ class FACESYNTH_OT_animate(bpy.types.Operator):
     bl_options = {"REGISTER", "UNDO"}
 
     audio: StringProperty(options={"SKIP_SAVE"}, name="Sound", subtype="FILE_PATH",
-                          description="The speech: a WAV or FLAC file (placed as a sound strip at the start frame)")
+                          description="The speech: a sound file (WAV, FLAC, M4A, MP3, Opus, ...) or a video "
+                                      "with sound (placed as a sound strip at the start frame)")
     sound_strip: StringProperty(options={"SKIP_SAVE"}, name="Sound strip",
                                 description="Or, with no sound file, a sound strip of the sequencer: its sound, "
                                             "from the strip's start")

@@ -33,7 +33,8 @@ class FacesynthMappingItem(bpy.types.PropertyGroup):
 class FacesynthSettings(bpy.types.PropertyGroup):
     """What the panel holds for the operator (``scene.facesynth``)."""
 
-    audio_source: EnumProperty(name="Sound from", items=[("FILE", "File", "A WAV or FLAC file"),
+    audio_source: EnumProperty(name="Sound from", items=[("FILE", "File", "A sound file (WAV, FLAC, M4A, MP3, Opus, "
+                                                                          "...) or a video with sound"),
                                                          ("STRIP", "Sound strip", "A sound strip of the sequencer")])
     audio: StringProperty(name="Sound file", subtype="FILE_PATH")
     sound_strip: StringProperty(name="Sound strip")

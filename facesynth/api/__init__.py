@@ -197,7 +197,7 @@ def utterance_from_phones(phones: StrPath | Sequence[tuple[str, float, float]], 
     --phonemes``), or (phone, start_s, end_s) triples in time order (Festival or CMU/ARPAbet
     names). ``emotions``: a spans file (``start_s end_s emotion`` lines, or a TextGrid tier
     ``emotions``) or (start_s, end_s, emotion) triples; a phone takes the span holding its middle,
-    neutral outside every span. ``audio``: the speech these phones time (a WAV): the mouth then
+    neutral outside every span. ``audio``: the speech these phones time (any sound file or video with sound): the mouth then
     opens with its loudness too (``synthesize.loudness_weight``)."""
     cfg = _config(config)
     with _limits(cfg):
@@ -213,7 +213,8 @@ def utterance_from_phones(phones: StrPath | Sequence[tuple[str, float, float]], 
 def utterance_from_audio(audio: StrPath, text: str | None = None, *,
                          emotions: StrPath | Sequence[tuple[float, float, str]] | None = None,
                          config: Config | None = None) -> Utterance:
-    """An utterance from speech (a WAV): aligned to ``text``, what it says, or without text
+    """An utterance from speech (any sound file or video with sound ffmpeg reads: WAV, M4A, MP3,
+    Opus, MP4, ...): aligned to ``text``, what it says, or without text
     recognised from the audio (English), as ``synthesize --audio [--text]``. A transcript that
     does not match the speech is a warning (:attr:`Utterance.warnings`), not an error.
     ``emotions`` as for :func:`utterance_from_phones`."""
@@ -335,8 +336,8 @@ def export(animation: StrPath | Motion | MeshAnimation | RigCurves, format: str,
     """Write ``animation`` (a motion, a mesh animation or rig curves on the built-in rig, or its
     file) for another tool as ``format`` (:func:`export_formats`: ``arkit-csv``, ``gltf``,
     ``glb``, ``usd``, ``usda``, ``c3d``, ``obj-seq``, ...) at ``output``, as ``facesynth export``:
-    at ``fps`` (default: the format's rate), with the head motion when ``head_motion``, the WAV
-    ``audio`` copied beside a glTF, the faces of ``mesh``. Returns every file written, the output
+    at ``fps`` (default: the format's rate), with the head motion when ``head_motion``, the speech
+    ``audio`` beside a glTF as a WAV (a WAV copied, any other file decoded), the faces of ``mesh``. Returns every file written, the output
     first (an OBJ sequence: the files in its folder)."""
     cfg = _config(config)
     out = Path(output)

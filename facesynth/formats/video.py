@@ -1,4 +1,4 @@
-"""Video files read for their frames and their sound (mp4, mov, mkv, avi, mpg, ...), through the
+"""Video files read for their frames (mp4, mov, mkv, avi, mpg, ...), through the
 ffmpeg that ``imageio-ffmpeg`` ships: what ``ingest`` tracks a filmed face in
 (:mod:`facesynth.domain.capture.video_take`). Writing video is :mod:`facesynth.domain.rendering.video`.
 
@@ -6,7 +6,8 @@ ffmpeg that ``imageio-ffmpeg`` ships: what ``ingest`` tracks a filmed face in
   sound), from ffmpeg's report of the first video and audio streams.
 * :func:`frames`: the pictures as (H, W, 3) uint8 RGB at the container's nominal rate (ffmpeg
   ``-r``: a phone's variable-rate video is resampled to its nominal rate).
-* :func:`sound`: the first audio stream mixed to mono float32 in [-1, 1] at its own rate.
+
+Its sound is read by :func:`facesynth.formats.audio.read_audio`, the one decoder of every audio input.
 """
 
 from __future__ import annotations
@@ -67,15 +68,3 @@ def frames(path: Path, info: VideoInfo) -> Iterator[np.ndarray]:
                          "video.") from None
     finally:
         reader.close()
-
-
-def sound(path: Path, rate: int) -> np.ndarray:
-    """The video's first audio stream as (S,) float32 mono in [-1, 1] at ``rate`` Hz."""
-    cmd = [imageio_ffmpeg.get_ffmpeg_exe(), "-hide_banner", "-loglevel", "error", "-i", str(path), "-map", "0:a:0",
-           "-vn", "-ac", "1", "-ar", str(int(rate)), "-f", "s16le", "-acodec", "pcm_s16le", "pipe:1"]
-    result = subprocess.run(cmd, capture_output=True, check=False)
-    if result.returncode != 0 or not result.stdout:
-        detail = result.stderr.decode(errors="replace").strip()[-120:] or "no samples"
-        raise InputError(f"{path}: ffmpeg cannot decode its sound ({detail}); give the take's audio as a WAV in the "
-                         "manifest's audio column.")
-    return np.frombuffer(result.stdout, np.int16).astype(np.float32) / 32768.0

@@ -7,8 +7,10 @@ the database once and starts a transport. See docs/live.md.
 from __future__ import annotations
 
 import asyncio
+import io
 import sys
 import time
+import wave
 from collections.abc import Callable
 from dataclasses import replace
 from pathlib import Path
@@ -19,8 +21,14 @@ from facesynth.base.errors import InputError
 from facesynth.domain import methods
 from facesynth.domain.live.core import LiveModel
 from facesynth.domain.live.livelink import LiveLinkSender
+from facesynth.domain.live.phones import SAMPLE_RATE
 from facesynth.domain.live.server import StreamServer, run_pipe
+from facesynth.formats.audio import pcm16, read_audio, resample
 from facesynth.model.artifacts import artifact_kind
+
+#: Files ``--audio`` streams as they are, raw 16-bit little-endian PCM at 16 kHz mono (as standard
+#: input); every other file is decoded (:func:`live_wav`).
+RAW_SUFFIXES = (".pcm", ".raw")
 
 
 def parse_address(text: str, what: str) -> tuple[str, int]:
@@ -68,17 +76,38 @@ def run_stdin(model: LiveModel, align: AlignSettings, source: BinaryIO, write: C
 
 def run(model: LiveModel, align: AlignSettings, audio: str | Path, write: Callable[[str], None], *,
         livelink: str | None = None, markers: bool = False, realtime: bool = False) -> int:
-    """Stream the audio file ``audio`` ('-': standard input) through :func:`run_stdin`; returns
-    the number of frames."""
+    """Stream the audio file ``audio`` ('-': standard input, a WAV or raw PCM) through
+    :func:`run_stdin`; returns the number of frames. A file is decoded by :func:`live_wav`
+    (whatever its format and rate), except a ``.pcm`` or ``.raw`` file: raw 16 kHz PCM as on
+    standard input."""
     if str(audio) == "-":
         return run_stdin(model, align, sys.stdin.buffer, write, where="standard input", livelink=livelink,
                          markers=markers, realtime=realtime)
     path = Path(audio)
     if not path.is_file():
         raise InputError(f"{path}: no such audio file.")
-    with open(path, "rb") as fh:
-        return run_stdin(model, align, fh, write, where=str(path), livelink=livelink, markers=markers,
-                         realtime=realtime)
+    if path.suffix.lower() in RAW_SUFFIXES:
+        with open(path, "rb") as fh:
+            return run_stdin(model, align, fh, write, where=str(path), livelink=livelink, markers=markers,
+                             realtime=realtime)
+    return run_stdin(model, align, live_wav(path), write, where=str(path), livelink=livelink, markers=markers,
+                     realtime=realtime)
+
+
+def live_wav(path: Path) -> BinaryIO:
+    """The speech of the file ``path`` (any file :func:`read_audio` reads: WAV, FLAC, M4A, MP3,
+    Opus, a video's sound, ...) as an in-memory WAV in the live input's format: 16 kHz
+    (polyphase resampling), mono, 16-bit. A 16 kHz 16-bit mono WAV comes out with its own samples,
+    so it streams exactly as it does on standard input."""
+    samples, rate = read_audio(path)
+    buffer = io.BytesIO()
+    with wave.open(buffer, "wb") as w:
+        w.setnchannels(1)
+        w.setsampwidth(2)
+        w.setframerate(SAMPLE_RATE)
+        w.writeframes(pcm16(resample(samples, rate, SAMPLE_RATE)))
+    buffer.seek(0)
+    return buffer
 
 
 class _Paced:

@@ -225,6 +225,7 @@ def main() -> None:
     failures["missing_executable"] = call(audio=job["audio"], database=job["database"])
     prefs.facesynth_executable = job["facesynth"]
     failures["bad_audio"] = call(audio=job["bad_audio"], database=job["database"])
+    failures["silent_video"] = call(audio=job["silent_video"], database=job["database"])
     bpy.context.view_layer.objects.active = arm
     failures["no_shape_keys"] = call(audio=job["audio"], database=job["database"])
     other = bpy.data.objects.new("Other", bpy.data.meshes.new("Other"))

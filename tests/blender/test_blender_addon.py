@@ -21,6 +21,7 @@ import shutil
 import subprocess
 from pathlib import Path
 
+import imageio_ffmpeg
 import numpy as np
 import pytest
 from addon_check import (
@@ -90,6 +91,8 @@ def run_blender(folder: Path, tiny_db: Path, tiny_corpus: Path, take: str, synth
 
     [row] = [r for r in csv.DictReader(open(tiny_corpus / "manifest.csv")) if r["take"] == take]
     (folder / "bad.wav").write_text("this is not a sound\n")
+    subprocess.run([imageio_ffmpeg.get_ffmpeg_exe(), "-hide_banner", "-nostdin", "-v", "error", "-y", "-f", "lavfi", "-i",
+                    "color=c=gray:s=64x48:r=25:d=1", "-c:v", "mpeg4", str(folder / "silent.mp4")], check=True)
     job = {"zip": str(zip_path), "facesynth": exe, "missing_executable": str(folder / "no-such" / "facesynth"),
            "vertices": str(folder / "vertices.f32"), "faces": str(folder / "faces.i32"),
            "shapes": str(folder / "shapes.f32"), "rig_names": rig["names"],
@@ -98,6 +101,7 @@ def run_blender(folder: Path, tiny_db: Path, tiny_corpus: Path, take: str, synth
            "audio": str(tiny_corpus / "audio" / f"{take}.wav"), "text": row["transcript"],
            "database": str(tiny_db), "method": "dp", "mapping": MAPPING, "work_dir": str(folder / "work"),
            "strip_work_dir": str(folder / "work-strip"), "bad_audio": str(folder / "bad.wav"),
+           "silent_video": str(folder / "silent.mp4"),
            "render": str(folder / "blender_face.png"), "render_key": "JawDrop", "result": str(folder / "result.json")}
     (folder / "job.json").write_text(json.dumps(job))
     env = dict(os.environ, BLENDER_USER_SCRIPTS=str(folder / "user" / "scripts"),
@@ -204,6 +208,7 @@ def test_emotion_markers_become_spans(blender_run):
 @pytest.mark.parametrize("case, words", [
     ("missing_executable", ["facesynth executable", "no-such/facesynth", "does not exist", "preference"]),
     ("bad_audio", ["facesynth synthesize failed", "bad.wav"]),
+    ("silent_video", ["facesynth synthesize failed", "silent.mp4: has no audio stream"]),
     ("no_shape_keys", ["mesh", "shape keys"]),
     ("no_arkit_names", ["none of the shape keys of 'Other' has an ARKit name", "mapping"]),
 ])

@@ -123,3 +123,26 @@ def test_the_rendered_actress_is_tracked_where_her_truth_is_known(mediapipe, tin
     print(f"video: {len(cols)} landmarks bound; error median {np.median(error):.2f} mm, 95th percentile "
           f"{np.percentile(error, 95):.2f} mm; mouth opening r {r:.3f}, slope {slope:.2f}")
     assert len(cols) > 400 and np.median(error) < 4.0 and abs(s - 1) < 0.1
+
+
+def test_a_videos_sound_is_read_by_the_one_audio_reader(coded_speech, monkeypatch):
+    """The take's audio is what ``read_audio`` gives for the film (its sound at its own rate,
+    float32), whatever tracks the face; a film without sound is refused when the take needs it.
+    The tracker is replaced by a still face here, so this runs without MediaPipe."""
+    from coded_audio import coded
+
+    from facesynth.domain.capture import video_take
+    from facesynth.domain.capture.readers import CaptureOptions
+    from facesynth.formats.audio import read_audio
+
+    still = np.random.default_rng(0).uniform(0.3, 0.7, (video_take.LANDMARKS, 3))
+    monkeypatch.setattr(video_take, "face_mesh_module", lambda where: None)
+    monkeypatch.setattr(video_take, "track", lambda pictures, where: np.stack([still for _ in pictures]))
+    film = coded(coded_speech, "mp4")
+    take = video_take.read_video_take(film, CaptureOptions())
+    samples, rate = read_audio(film)
+    assert take.audio is not None and take.audio[1] == rate == 16000
+    np.testing.assert_array_equal(take.audio[0], samples)
+    assert abs(len(samples) / rate - len(take.positions) / take.fps) < 0.1
+    with pytest.raises(InputError, match="the video has no sound; give the take's audio in the manifest's audio column"):
+        video_take.read_video_take(coded_speech["silent"], CaptureOptions())

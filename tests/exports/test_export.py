@@ -14,6 +14,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 from click.testing import CliRunner
+from coded_audio import COMPRESSED, coded
 
 from facesynth.cli import main
 from facesynth.domain.corpus.generate import CAPTURE_FPS
@@ -319,4 +320,30 @@ def test_ctrl_c_between_the_scene_and_its_audio_leaves_neither(made, tmp_path, m
     r = fs("export", made["curves"], "--format", "glb", "--audio", made["audio"], "-o", tmp_path / "face.glb")
     assert r.exit_code == 130, r.output
     assert r.output.strip().splitlines() == ["interrupted; no output was written."], r.output
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("name", COMPRESSED)
+def test_gltf_audio_from_coded_speech_is_a_wav_of_its_sound(made, coded_speech, tmp_path, name):
+    """``export --audio`` with the sentence as M4A, MP3, Opus, Ogg or an MP4: the file beside the
+    glTF is a 16-bit WAV of the decoded sound (not the file's bytes under a .wav name), at the
+    file's own rate, the WAV's sound within the codec's error (r > 0.99 at 16 kHz)."""
+    import soundfile as sf
+
+    from facesynth.formats.audio import read_audio, resample
+
+    out = tmp_path / "face.glb"
+    ok("export", made["curves"], "--format", "glb", "--audio", coded(coded_speech, name), "-o", out)
+    info = sf.info(tmp_path / "face.wav")
+    assert (info.format, info.subtype, info.channels) == ("WAV", "PCM_16", 1)
+    got, rate = read_audio(tmp_path / "face.wav")
+    wav, wav_rate = read_audio(coded_speech["wav"])
+    got = resample(got, rate, wav_rate)
+    assert abs(len(got) - len(wav)) <= 16 and np.corrcoef(got[:len(wav)], wav[:len(got)])[0, 1] > 0.99
+
+
+@pytest.mark.parametrize("bad, says", [("silent", "has no audio stream"), ("notes", "unreadable audio")])
+def test_gltf_audio_without_sound_is_refused_before_anything_is_written(made, coded_speech, tmp_path, bad, says):
+    refused("export", made["curves"], "--format", "gltf", "--audio", coded_speech[bad], "-o", tmp_path / "face.gltf",
+            says=f"{coded_speech[bad]}: {says}")
     assert list(tmp_path.iterdir()) == []

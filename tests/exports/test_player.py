@@ -3,12 +3,14 @@ Debian package is installed) loads without errors, shows the artifact's frame co
 duration, moves the mesh when scrubbed, lists each phone with its emotion and provenance, and
 needs no network."""
 
+import base64
 import re
 
 import numpy as np
 import pytest
 from chromium_page import CHROMIUM, ChromiumPage
 from click.testing import CliRunner
+from coded_audio import COMPRESSED, coded
 
 from facesynth.base.config import Config
 from facesynth.cli import main
@@ -129,3 +131,21 @@ def test_the_face_parts_on_the_page_are_the_renderers(tmp_path):
     placed = np.stack([scene.positions(s, g)[scene.n_skin:] for s, g in zip(skins, gaze)]).reshape(len(weights), -1)
     assert face["vertices"] == scene.n_vertices and np.abs(np.abs(gaze).max()) > 0.05
     assert np.abs(shown - placed).max() < 0.01  # mm: the principal targets and int16 steps
+
+
+@pytest.mark.parametrize("name", COMPRESSED)
+def test_the_pages_speech_from_coded_speech(page, coded_speech, tmp_path, name):
+    """``player --audio`` (and the live page's) with the sentence as M4A, MP3, Opus, Ogg or an
+    MP4's sound: the page holds its sound as a WAV, and the live page's 16 kHz PCM follows the
+    WAV's at r > 0.99 with the same number of samples; a silent video writes no page."""
+    path = coded(coded_speech, name)
+    r = CliRunner().invoke(main, ["player", str(page / "a.h5"), "--motion", str(page / "m.h5"), "--audio", str(path),
+                                  "-o", str(tmp_path / "p.html")])
+    assert r.exit_code == 0, r.output
+    assert "data:audio/wav;base64," in (tmp_path / "p.html").read_text()
+    pcm = [np.frombuffer(base64.b64decode(player.live_payload("ws://127.0.0.1:1", p)["pcm"]), "<i2")
+           for p in (coded_speech["wav"], path)]
+    assert len(pcm[1]) == len(pcm[0]) and np.corrcoef(pcm[0], pcm[1])[0, 1] > 0.99
+    r = CliRunner().invoke(main, ["player", str(page / "a.h5"), "--audio", str(coded_speech["silent"]),
+                                  "-o", str(tmp_path / "silent.html")])
+    assert r.exit_code == 1 and "has no audio stream" in r.output and not (tmp_path / "silent.html").exists()

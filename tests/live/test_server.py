@@ -96,13 +96,16 @@ def test_live_link_packets_follow_the_frames_and_realtime_paces_the_reading(tiny
 
 
 def test_stdin_wav_at_another_rate_is_refused(tiny_db, tmp_path):
+    """On standard input the live format is required; the same file given with --audio is
+    resampled (tests/live/test_stream_audio_files.py)."""
     path = tmp_path / "a.wav"
     with wave.open(str(path), "wb") as w:
         w.setnchannels(1), w.setsampwidth(2), w.setframerate(44100)
         w.writeframes(b"\0\0" * 4410)
-    result = CliRunner().invoke(main, ["stream", str(tiny_db), "--audio", str(path)])
-    assert result.exit_code == 1
-    assert "the WAV is 44100 Hz, 1 channel(s), 16-bit; live input is 16000 Hz mono 16-bit" in result.output
+    result = CliRunner().invoke(main, ["stream", str(tiny_db)], input=path.read_bytes())
+    assert result.exit_code == 1 and result.stdout == ""
+    assert ("standard input: the WAV is 44100 Hz, 1 channel(s), 16-bit; live input is 16000 Hz mono 16-bit (give the "
+            "file with --audio FILE, which converts any sound file,") in result.output
 
 
 async def _stream(port: int, pcm: bytes, chunk: int = 3200, before=()) -> list[dict]:

@@ -381,3 +381,40 @@ def test_the_old_name_of_an_output_still_works_with_a_warning():
     assert names == ("motion", "arkit-csv")
     assert len(warnings) == 1 and "'arkit' is now called 'arkit-csv'" in warnings[0]
     assert output_names(("curves", "gltf")) == (("curves", "gltf"), [])
+
+
+def test_lines_of_coded_speech_give_the_wavs_motion(tiny_corpus, tiny_db, takes, held_out_take, coded_speech, config,
+                                                    client, tmp_path):
+    """A script whose lines are the held-out sentence as the WAV, M4A, MP3, Opus, Ogg and an MP4
+    (aligned to its text): every line the WAV's phones (boundaries within 50 ms) and motion
+    (r > 0.95, as ``synthesize``: tests/stages/test_synthesize.py says why); the M4A line's glTF
+    has a real WAV beside it, decoded (not the M4A's bytes under a .wav name); a line whose
+    audio is a silent video fails alone, in one sentence."""
+    import h5py
+    import numpy as np
+    import soundfile as sf
+    from coded_audio import COMPRESSED, correlation
+
+    text = takes[held_out_take]["transcript"]
+    names = ["wav"] + [n for n in COMPRESSED if n in coded_speech]
+    script = _write(tmp_path / "s.csv", [("id", "audio", "text")] + [(n, str(coded_speech[n]), text) for n in names]
+                    + [("silent", str(coded_speech["silent"]), text)])
+    settings = _settings(config, outputs=("motion",))
+    s = batch.run(script, tiny_db, tmp_path / "out", *settings, client=client)
+    failed = {r.id: r.reason for r in s.results if r.reason}
+    assert s.ok == len(names) and list(failed) == ["silent"]
+    assert failed["silent"].startswith(f"{coded_speech['silent']}: has no audio stream")
+    got = {}
+    for n in names:
+        with h5py.File(tmp_path / "out" / f"{n}.motion.h5") as f:
+            got[n] = ([p.decode() for p in f["path/phone"][()]], f["path/start"][()], f["markers"][()])
+    for n in names[1:]:
+        assert got[n][0] == got["wav"][0] and np.abs(got[n][1] - got["wav"][1]).max() <= 0.05, n
+        assert correlation(got["wav"][2], got[n][2]) > 0.95, n
+    if "m4a" in coded_speech:
+        s = batch.run(_write(tmp_path / "g.csv", [("id", "audio", "text"), ("g", str(coded_speech["m4a"]), text)]),
+                      tiny_db, tmp_path / "gl", *_settings(config, outputs=("gltf",)), client=client)
+        assert s.ok == 1, s.results[0].reason
+        sound, rate = sf.read(tmp_path / "gl" / "g.wav")
+        assert sf.info(tmp_path / "gl" / "g.wav").format == "WAV" and rate == 16000
+        assert abs(len(sound) - sf.info(coded_speech["wav"]).frames) <= 16

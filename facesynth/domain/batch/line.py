@@ -56,7 +56,7 @@ from facesynth.domain.rendering.video import render_video
 from facesynth.domain.retarget.deform import animate, bind
 from facesynth.domain.retarget.solve import solve_motion, solved_curves
 from facesynth.domain.rig.loading import arkit_to_rig, load_rig
-from facesynth.formats.audio import read_audio
+from facesynth.formats.audio import is_wav, read_audio
 from facesynth.formats.labels import write_textgrid
 from facesynth.formats.mesh import read_binding, read_mesh
 from facesynth.model.artifacts import atomic_path, sha256_of
@@ -441,7 +441,7 @@ def _rig_outputs(line: Line, job: Job, motion_path: Path, outputs: dict[str, Pat
         if "curves" in outputs:
             result.outputs.append(curves_path.name)
         anim = from_curves(curves, rig, curves_path)
-        beside = audio_path if audio_path.suffix.lower() == ".wav" else audio  # a WAV is copied as it is
+        beside = audio_path if is_wav(audio_path) else audio  # a WAV is copied as it is, any other file written as one
         for name in job.outputs:
             if name in EXPORT_FORMATS:
                 fmt = EXPORT_FORMATS.get(name)

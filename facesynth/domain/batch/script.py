@@ -3,7 +3,7 @@
 Columns (header names are case-insensitive; others are ignored):
 
 - ``id`` (required): the line's name, used for its output files (letters, digits, ``. _ -``);
-- ``audio`` (required): its speech (WAV or FLAC);
+- ``audio`` (required): its speech (any sound file or video with sound that ffmpeg reads: WAV, FLAC, M4A, MP3, Opus, MP4, ...);
 - ``text`` (optional): what is said (aligned with :func:`facesynth.domain.speech.alignment.align_robust`);
   a line without text (no such column, or an empty cell) is recognised from its audio
   (:mod:`facesynth.domain.speech.recognition`);

@@ -7,8 +7,9 @@ downloaded at run time; later MediaPipe releases ship no models and drop the
 ``mediapipe.solutions`` API used here). Without it a video is refused with one sentence saying
 what to install.
 
-* The pictures and the sound come from :mod:`facesynth.formats.video` (ffmpeg), at the
-  container's nominal frame rate.
+* The pictures come from :mod:`facesynth.formats.video` (ffmpeg), at the container's nominal
+  frame rate; the sound from :func:`facesynth.formats.audio.read_audio`, the reader of every
+  audio input (the same ffmpeg), at its own rate.
 * Face Mesh (``refine_landmarks``: 468 face points and 10 iris points) tracks the first face of
   each frame; a frame without a face is a gap (NaN markers, filled by ``normalize`` when short).
 * MediaPipe gives x, y in [0, 1] of the picture's width and height and a depth z in the scale of
@@ -47,6 +48,7 @@ import numpy as np
 
 from facesynth.base.errors import InputError
 from facesynth.formats import video
+from facesynth.formats.audio import read_audio
 
 from .posing import CaptureTake
 from .readers import CaptureOptions, CaptureReader
@@ -151,7 +153,7 @@ def read_video_take(path: Path, options: CaptureOptions) -> CaptureTake:
         notes.append(f"a face was found in only {int(found.sum())} of {len(found)} frames; the others are gaps")
     elif not found.all():
         notes.append(f"{int((~found).sum())} of {len(found)} frames hold no face and are gaps")
-    audio = None if info.audio_rate is None else (video.sound(path, info.audio_rate), info.audio_rate)
+    audio = None if info.audio_rate is None else read_audio(path)
     log.info("%s: tracked %d frames at %g frames/s in %.1f s (%.3f mm per pixel).", path, len(points), info.fps,
              time.perf_counter() - started, mm_per_px)
     for note in notes:

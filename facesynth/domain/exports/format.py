@@ -21,7 +21,7 @@ import numpy as np
 from facesynth.base.config import ExportSettings
 from facesynth.base.errors import InputError, UsageError
 from facesynth.base.registry import EXPORT_FORMATS
-from facesynth.formats.audio import read_audio, write_wav
+from facesynth.formats.audio import is_wav, read_audio, write_wav
 from facesynth.model.artifacts import (
     atomic_folder,
     atomic_path,
@@ -38,8 +38,9 @@ from .animation import Exportable, use_mesh
 @dataclass(frozen=True)
 class ExportOptions:
     """How one export is written: ``head_motion`` puts the head's motion in; ``name`` names the
-    scene (default the output's stem); ``audio``: the speech to put beside the output (a WAV file to
-    copy, or (samples, rate) to write), for formats that name an audio file (glTF)."""
+    scene (default the output's stem); ``audio``: the speech to put beside the output as a WAV (an
+    audio file: a WAV is copied, any other sound file or video decoded and written as 16-bit WAV;
+    or (samples, rate) to write), for formats that name an audio file (glTF)."""
 
     head_motion: bool = False
     name: str | None = None
@@ -112,8 +113,10 @@ def write_export(fmt: ExportFormat, anim: Exportable, output: Path, options: Exp
             with atomic_path(wav, overwrite) as tmp:
                 if isinstance(options.audio, tuple):
                     write_wav(tmp, *options.audio)
-                else:
+                elif is_wav(options.audio):
                     shutil.copyfile(options.audio, tmp)
+                else:  # M4A, MP3, Opus, a video's sound, FLAC ...: decoded, written as 16-bit WAV
+                    write_wav(tmp, *read_audio(options.audio))
             _write_one(fmt, anim, output, options, overwrite, wav.name)
         return [output, wav]
     return _write_one(fmt, anim, output, options, overwrite, None)
@@ -143,7 +146,7 @@ def _write_one(fmt: ExportFormat, anim: Exportable, output: Path, options: Expor
 
 def chosen_format(fmt: str, output: Path, audio: Path | None = None, overwrite: bool = False) -> ExportFormat:
     """The registered export format ``fmt``, after the checks made before any work: its optional
-    dependency installed, ``audio`` only for a format that names one (and a WAV that reads), the
+    dependency installed, ``audio`` only for a format that names one (and an audio file that reads), the
     outputs writable and not clobbered."""
     if fmt not in EXPORT_FORMATS:
         raise UsageError(f"unknown format {fmt!r}; choose one of {', '.join(EXPORT_FORMATS.names())}.")
@@ -158,7 +161,7 @@ def chosen_format(fmt: str, output: Path, audio: Path | None = None, overwrite: 
         check_output(output, overwrite)
     if audio is not None:
         check_output(audio_path(output), overwrite)
-        read_audio(audio)  # a WAV that cannot be read is refused before anything is written
+        read_audio(audio)  # audio that cannot be read is refused before anything is written
     return form
 
 

@@ -52,7 +52,7 @@ from facesynth.domain.rendering.camera import framing
 from facesynth.domain.rendering.parts import build_scene, face_focus
 from facesynth.domain.rendering.raster import BACKGROUND, shading_params
 from facesynth.domain.rig.face import load_face_rig
-from facesynth.formats.audio import read_audio, resample
+from facesynth.formats.audio import pcm16, read_audio, resample
 
 from .animation import Exportable
 
@@ -220,7 +220,7 @@ def live_payload(url: str, audio: Path | None = None, jitter_s: float = LIVE_JIT
         if rate != SAMPLE_RATE:
             samples, rate = resample(samples, rate, SAMPLE_RATE), SAMPLE_RATE
         data["audio"] = _wav_uri(samples, rate)
-        data["pcm"] = _b64(np.round(np.clip(samples, -1.0, 1.0) * 32767).astype("<i2"))
+        data["pcm"] = base64.b64encode(pcm16(samples)).decode("ascii")
     return data
 
 

@@ -1,7 +1,8 @@
 """The transports of ``facesynth stream``.
 
 - :func:`run_pipe`: audio on a byte stream (standard input: a WAV or raw 16-bit PCM at 16 kHz
-  mono), one JSON message per line out (the ``hello``, the frames, the ``end``).
+  mono; an MP4, Ogg, FLAC, MP3 or Matroska file there is refused, naming ``--audio FILE``), one
+  JSON message per line out (the ``hello``, the frames, the ``end``).
 - :class:`StreamServer`: a WebSocket server (the ``websockets`` package). A client sends binary
   messages of PCM and text messages of JSON control (:mod:`.session`); it gets the ``hello``,
   then the frames as JSON text messages, and ``{"type": "error", "message": ...}`` for a bad
@@ -49,9 +50,26 @@ def _audio_source(stream: BinaryIO, where: str) -> tuple[BinaryIO | wave.Wave_re
         if (reader.getframerate(), reader.getnchannels(), reader.getsampwidth()) != (SAMPLE_RATE, 1, 2):
             raise InputError(f"{where}: the WAV is {reader.getframerate()} Hz, {reader.getnchannels()} channel(s), "
                              f"{8 * reader.getsampwidth()}-bit; live input is {SAMPLE_RATE} Hz mono 16-bit "
-                             f"(convert it, e.g. ffmpeg -i IN -ar {SAMPLE_RATE} -ac 1 -c:a pcm_s16le OUT.wav).")
+                             "(give the file with --audio FILE, which converts any sound file, or convert it, "
+                             f"e.g. ffmpeg -i IN -ar {SAMPLE_RATE} -ac 1 -c:a pcm_s16le OUT.wav).")
         return reader, b""
+    container = _container(head)
+    if container is not None:
+        raise InputError(f"{where}: this is {container}, not raw PCM; give the file with --audio FILE, which decodes it, "
+                         f"or send 16 kHz mono 16-bit PCM (e.g. ffmpeg -i IN -ar {SAMPLE_RATE} -ac 1 -f s16le -).")
     return stream, head
+
+
+def _container(head: bytes) -> str | None:
+    """The kind of sound file whose first 12 bytes are ``head`` (None: taken as raw PCM). Speech
+    starts near silence, so raw PCM does not begin with these signatures in practice."""
+    if head[4:8] == b"ftyp":
+        return "an MP4/M4A/MOV file"
+    for magic, kind in ((b"OggS", "an Ogg file (Opus, Vorbis)"), (b"fLaC", "a FLAC file"), (b"ID3", "an MP3 file"),
+                        (b"\x1aE\xdf\xa3", "a Matroska/WebM file")):
+        if head.startswith(magic):
+            return kind
+    return None
 
 
 class _Prefixed(io.RawIOBase):
