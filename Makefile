@@ -13,7 +13,7 @@ CONFIG := configs/default.toml
 PRESET ?= small
 SEED   ?= 0
 
-.PHONY: all demo test test-hostile lint docs report bench vendor blender-addon clean
+.PHONY: all demo test test-hostile lint docs report bench vendor blender-addon figures clean
 
 all: demo
 
@@ -90,6 +90,12 @@ TUNE_EVALUATIONS ?= 12
 report: $(STAMP)
 	$(BIN)/python benchmarks/report.py --seeds $(SEEDS) --preset $(REPORT_PRESET) \
 	    --tune-evaluations $(TUNE_EVALUATIONS) --work $(OUT)/report --out docs
+
+# The figures of docs/inputs.md's video route (docs/images/video_actress_*.png): the virtual
+# actress rendered, taken back through ingest, bind, normalize and solve --binding, and the rig
+# beside the film at rest and mid-sentence (needs facesynth[video]; about a minute on 2 cores).
+figures: $(STAMP)
+	$(BIN)/python benchmarks/video_route_figures.py --work $(OUT)/figures --out docs/images
 
 # The Blender add-on (docs/blender.md): blender/facesynth_blender zipped for Blender's
 # Preferences > Add-ons > Install -> out/facesynth_blender.zip (Python's standard library only).

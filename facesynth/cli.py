@@ -1018,7 +1018,7 @@ def player(ctx: Context, artifact: Path | None, audio: Path | None, motion: Path
     if live_url is not None:
         if motion is not None:
             raise click.UsageError("--motion is for an ARTIFACT; a live page takes its frames from the stream.")
-        s = stage.run_live(live_url, output, audio=audio, overwrite=ctx.overwrite)
+        s = stage.run_live(live_url, output, audio=audio, view=ctx.config.settings("render"), overwrite=ctx.overwrite)
         ctx.say(f"live player for {live_url} ({s.vertices} vertices, {s.targets} ARKit morph targets, "
                 f"{s.seconds:.2f} s of speech to send) -> {output} ({s.bytes / 1e6:.1f} MB)")
         return

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from facesynth.base.config import Config
-from facesynth.domain.rendering import parts, video
+from facesynth.domain.rendering import parts
 from facesynth.domain.rendering.camera import Camera
 from facesynth.domain.rendering.raster import NumbaRasterizer, NumpyRasterizer
 from facesynth.domain.rig.face import load_face_rig
@@ -26,7 +26,7 @@ def _rig_frame(width, height, samples, **named):
     for name, value in named.items():
         w[rig.shape_index(name)] = value
     scene = parts.build_scene(rig.neutral, rig.faces)
-    cam = Camera.fit(rig.neutral, width, height, 30.0, 25.0, 6.0, video.face_focus(scene)).scaled(samples)
+    cam = Camera.fit(parts.frame_points(scene), width, height, 30.0, 25.0, 6.0).scaled(samples)
     points = scene.positions(rig.evaluate(w), np.array([[0.3, 0.1], [0.3, 0.1]]))
     normals = parts.vertex_normals(points, scene.faces, scene.incidence)
     return scene, cam.project(points), cam.directions(normals)

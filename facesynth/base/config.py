@@ -257,6 +257,10 @@ class SynthesizeSettings:
                                       "from; empty: the packaged model (fitted on FACEGOOD's calibration takes)")
     voice_weight: float = setting("not in the paper: the share of the mouth opening the voice's articulation takes "
                                   "where the voice is clear; 0: the phones' opening", ge=0, le=1)
+    voice_opening_map: str = setting("not in the paper: how the articulation's predicted opening becomes lip gaps: "
+                                     "by rank onto the method's own gaps (their distribution: as often closed, half "
+                                     "and wide open as the method's mouth) or affinely, its 5th..95th percentiles "
+                                     "onto theirs", choices=("percentiles", "rank"))
     voice_rounding_weight: float = setting("not in the paper: the share of the lips' rounding (mouthFunnel, "
                                            "mouthPucker) the voice's articulation takes; 0: the phones' rounding",
                                            ge=0, le=1)

@@ -17,7 +17,7 @@ import numpy as np
 from facesynth.base.config import KeyshapesSettings, settings_json
 from facesynth.base.errors import InputError
 from facesynth.domain.rendering.camera import Camera
-from facesynth.domain.rendering.parts import build_scene, vertex_normals
+from facesynth.domain.rendering.parts import build_scene, frame_points, vertex_normals
 from facesynth.domain.rendering.raster import rasterizer
 from facesynth.domain.retarget.keyshapes import Selection, select_affinity, select_pca
 from facesynth.domain.retarget.solve import fit_rig_weights
@@ -87,7 +87,7 @@ def contact_sheet(keyshapes: KeyShapes, out: Path, tile: int = 192, columns: int
 
     rig = builtin_rig()
     scene = build_scene(rig.neutral, rig.faces)
-    camera = Camera.fit(rig.neutral, tile, tile, 24.0).scaled(2)
+    camera = Camera.fit(frame_points(scene), tile, tile, 24.0).scaled(2)
     raster = rasterizer(scene.faces, scene.albedo, scene.eye, tile, tile, 2, False)
     rows = []
     for e in keyshapes.emotions.values():

@@ -64,10 +64,12 @@ def run(artifact: Path, output: Path, *, audio: Path | None = None, motion: Path
     return PlayerResult(anim.n_frames, anim.fps, anim.duration_s, len(anim.phones), len(html.encode("utf-8")))
 
 
-def run_live(url: str, output: Path, *, audio: Path | None = None, overwrite: bool = False) -> LivePlayerResult:
-    """Write a live page (the built-in rig, connecting to the stream server at ``url``) to ``output``."""
+def run_live(url: str, output: Path, *, audio: Path | None = None, view: RenderSettings | None = None,
+             overwrite: bool = False) -> LivePlayerResult:
+    """Write a live page (the built-in rig, connecting to the stream server at ``url``) to ``output``
+    with the camera of ``view`` (``render``'s settings; None: the defaults)."""
     check_output(output, overwrite)
-    data = live_payload(url, audio)
+    data = live_payload(url, audio, view=view)
     html = page(data)
     with atomic_path(output, overwrite) as tmp:
         Path(tmp).write_text(html, encoding="utf-8")

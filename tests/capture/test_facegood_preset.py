@@ -68,6 +68,28 @@ def test_the_mapping_is_facegoods_table_plus_one_row():
     assert shipped == expected
 
 
+def test_the_performer_rests_at_the_rigs_neutral():
+    """Her quiet frames (the tenth of each take with the least jaw opening) map to no expression:
+    every ARKit weight's median there is 0, eyes and brows included (the mapping leaves them out:
+    FACEGOOD's takes never move them), so a database of her motion rests at the rig's neutral and
+    needs no neutral of her own subtracted."""
+    from facesynth.domain.rig.face import load_face_rig
+    from facesynth.formats.blendshape_curves import read_mapping
+
+    rig = load_face_rig()
+    arrays, _, _ = facegood.shipped()
+    mapping = read_mapping(DATA / facegood.MAPPING_FILE, [str(n) for n in arrays["names"]], rig.arkit_names, "FACEGOOD")
+    arkit = np.clip(arrays["curves"].astype(np.float64) @ mapping, 0.0, 1.0)
+    jaw = rig.arkit_names.index("jawOpen")
+    start = 0
+    for take, n in zip(arrays["takes"], arrays["frames"]):
+        frames = arkit[start:start + n]
+        start += n
+        quiet = frames[frames[:, jaw] <= np.percentile(frames[:, jaw], 10)]
+        assert np.median(quiet, axis=0).max() <= 0.01, take
+        assert np.percentile(frames[:, jaw], 90) > 0.2, take  # and she speaks: the jaw opens well
+
+
 def test_the_shipped_curves_and_speech_are_facegoods(shared_assets):
     source = shared_assets / "real-speech" / "facegood"
     if not source.is_dir():

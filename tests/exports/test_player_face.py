@@ -14,7 +14,7 @@ from scipy.spatial.transform import Rotation
 from facesynth.base.config import Config
 from facesynth.domain.exports.animation import load
 from facesynth.domain.rendering.camera import Camera
-from facesynth.domain.rendering.parts import build_scene, face_focus
+from facesynth.domain.rendering.parts import build_scene, frame_points
 from facesynth.domain.rendering.raster import BACKGROUND
 from facesynth.domain.rendering.video import ShadedView
 from facesynth.model.curves import RigCurves
@@ -116,7 +116,7 @@ def test_eyes_are_where_render_puts_them_and_are_drawn(made, page):
     points = scene.positions(a.vertices[frame].astype(np.float64))
     h, w = img.shape[:2]
     cfg = Config.load().settings("render")
-    camera = Camera.fit(a.rest, w, h, cfg.fov_deg, cfg.yaw_deg, cfg.pitch_deg, face_focus(scene))
+    camera = Camera.fit(frame_points(scene), w, h, cfg.fov_deg, cfg.yaw_deg, cfg.pitch_deg)
     for (start, count), shown in zip(scene.eyeball_vertices, eyes):
         expected = camera.project(points[start:start + count].mean(axis=0)[None])[0, :2]
         assert np.abs(expected - shown).max() < 1.5
@@ -135,7 +135,7 @@ def _mouth_pixels(img: np.ndarray, a: MeshAnimation, frame: int) -> np.ndarray:
     scene = build_scene(a.rest, a.faces)
     h, w = img.shape[:2]
     cfg = Config.load().settings("render")
-    camera = Camera.fit(a.rest, w, h, cfg.fov_deg, cfg.yaw_deg, cfg.pitch_deg, face_focus(scene))
+    camera = Camera.fit(frame_points(scene), w, h, cfg.fov_deg, cfg.yaw_deg, cfg.pitch_deg)
     loop = camera.project(a.vertices[frame][scene.layout.mouth.loop].astype(np.float64))[:, :2]
     mask = Image.new("L", (w, h), 0)
     ImageDraw.Draw(mask).polygon([tuple(p) for p in loop], fill=1)

@@ -2,9 +2,13 @@
 the built-in rig with its 52 ARKit blendshapes; opened in headless Chromium (where the Debian
 package is installed) against a stream server on 127.0.0.1, it sends its speech in real time (a
 file, or a microphone: Chromium's fake capture device playing the sample voice), shows the frames
-as they arrive, opens the mouth and measures the latency."""
+as they arrive, opens the mouth and measures the latency. It draws the face the player and
+``facesynth render`` draw: eyes, mouth cavity, teeth and tongue, the same shading and camera."""
 
 import asyncio
+import dataclasses
+import importlib.resources
+import json
 import math
 import re
 import shutil
@@ -12,6 +16,7 @@ import threading
 import time
 import wave
 from pathlib import Path
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -20,10 +25,15 @@ from click.testing import CliRunner
 
 from facesynth.base.config import Config
 from facesynth.cli import main
+from facesynth.domain.capture.facegood import shipped
 from facesynth.domain.exports import player
 from facesynth.domain.live.core import LiveModel
 from facesynth.domain.live.server import StreamServer
-from facesynth.domain.rig.face import load_face_rig
+from facesynth.domain.rendering.parts import build_scene
+from facesynth.domain.rendering.raster import BACKGROUND
+from facesynth.domain.rendering.video import ShadedView
+from facesynth.domain.rig.face import gaze_from_rig_weights, load_face_rig
+from facesynth.formats.blendshape_curves import read_mapping
 from facesynth.model.motiondb import MotionDatabase
 
 CHROMIUM = shutil.which("chromium")
@@ -83,6 +93,29 @@ def test_live_targets_are_the_rig_shapes_each_arkit_name_drives(tiny_corpus, hel
     pcm = np.frombuffer(player.base64.b64decode(data["pcm"]), "<i2")
     with wave.open(str(tiny_corpus / "audio" / f"{held_out_take}.wav")) as w:  # a 16 kHz file: sent as it is
         assert w.getframerate() == 16000 and np.array_equal(pcm, np.frombuffer(w.readframes(w.getnframes()), "<i2"))
+
+
+def test_live_parts_follow_the_arkit_weights_within_half_a_millimetre():
+    """The eyeballs, cavity, teeth and tongue of the live page are morph targets of the 52 ARKit
+    weights (a linearisation of the renderer's rigid jaw and gaze): on a real performer's frames
+    (FACEGOOD's, every 300th, mapped to ARKit as ``ingest`` maps them) they stand where the
+    renderer places them, within half a millimetre."""
+    rig = load_face_rig()
+    scene = build_scene(rig.neutral, rig.faces)
+    parts_rest, targets = player.live_parts_targets(rig, scene)
+    assert targets.shape == (52, parts_rest.size) and np.abs(targets).max() > 1.0  # the jaw moves the teeth
+    arrays, _, _ = shipped()
+    table = importlib.resources.files("facesynth").joinpath("data/facegood_arkit.csv")
+    mapping = read_mapping(Path(str(table)), [str(n) for n in arrays["names"]], rig.arkit_names, "FACEGOOD")
+    arkit = np.clip(arrays["curves"].astype(np.float64) @ mapping, 0.0, 1.0)[::300]
+    assert arkit[:, rig.arkit_names.index("jawOpen")].max() > 0.3  # frames with the mouth well open among them
+    worst = 0.0
+    for a in arkit:
+        w = rig.from_arkit(a)
+        gaze = gaze_from_rig_weights(w[None], rig.shape_names)
+        exact = scene.positions(rig.evaluate(w), None if gaze is None else gaze[0])[scene.n_skin:]
+        worst = max(worst, float(np.linalg.norm(exact - parts_rest - (a @ targets).reshape(-1, 3), axis=1).max()))
+    assert worst < 0.5, worst
 
 
 def test_a_live_page_needs_a_websocket_url_and_no_artifact(tmp_path, tiny_corpus):
@@ -234,3 +267,67 @@ def test_a_refused_or_missing_microphone_says_so(stream_url, tmp_path):
         assert page.evaluate("document.getElementById('livemic').textContent") == "microphone"
     assert body["errors"] == "0" and body["error-text"] == "", body  # said in the state line, not thrown
     assert body["live-received"] == "0" and "latency-count" not in body
+
+
+LIVE_W, LIVE_H = 640, 700
+BG = np.round(np.asarray(BACKGROUND) * 255).astype(int)
+
+
+def _posed(page, named: dict) -> tuple[np.ndarray, dict]:
+    """The live page's view (H, W, 3) uint8 posed by ``named`` ARKit weights, and its state."""
+    page.evaluate(f"player.pose({json.dumps(named)})")
+    page.evaluate("new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done)))")  # drawn
+    state = _dashed(page.dataset())
+    assert state["errors"] == "0", state["error-text"]
+    h = page.evaluate("document.getElementById('view').clientHeight")
+    return page.screenshot()[:h], state
+
+
+def _rendered(named: dict, width: int, height: int) -> np.ndarray:
+    """``facesynth render``'s picture of the built-in rig posed by ``named`` ARKit weights."""
+    rig = load_face_rig()
+    arkit = np.zeros(len(rig.arkit_names))
+    for name, value in named.items():
+        arkit[rig.arkit_names.index(name)] = value
+    settings = dataclasses.replace(Config.load().settings("render"), width=width, height=height, use_opencl=False)
+    view = ShadedView(SimpleNamespace(rest=rig.neutral, faces=rig.faces, gaze=None), settings, width)
+    return view.frame(rig.evaluate(rig.from_arkit(arkit)), 0)
+
+
+def _near(img: np.ndarray, xy, r: int) -> np.ndarray:
+    """(n, 3) int pixels of the (2r + 1)-pixel square about ``xy`` (x, y)."""
+    x, y = (int(round(v)) for v in xy)
+    return img[y - r:y + r + 1, x - r:x + r + 1].reshape(-1, 3).astype(int)
+
+
+def _whitish(px: np.ndarray) -> np.ndarray:
+    """Sclera or teeth: bright and nearly grey (skin's green is about 0.8 of its red, theirs above 0.93)."""
+    return (px[:, 0] > 120) & (px[:, 1] > 0.93 * px[:, 0])
+
+
+@needs_chromium
+def test_the_live_page_draws_eyes_teeth_and_the_renderers_face(stream_url, tmp_path):
+    with ChromiumPage(_live_page(stream_url, tmp_path).as_uri(), tmp_path / "profile", LIVE_W, LIVE_H) as page:
+        rest, at_rest = _posed(page, {})
+        opened, at_open = _posed(page, {"jawOpen": 0.6})
+    h, w = rest.shape[:2]
+    # the eyes: at each eyeball's centre on screen, sclera (whitish) and a dark iris or pupil, not skin
+    eyes = np.array(at_rest["eyes"].split(), float).reshape(2, 2)
+    skin = _near(rest, (eyes[:, 0].mean(), eyes[:, 1].mean() - 0.6 * abs(eyes[0, 0] - eyes[1, 0])), 4)  # the brow's middle
+    assert not _whitish(skin).any() and (skin.min(axis=0) > 100).all()
+    for eye in eyes:
+        px = _near(rest, eye, 10)
+        assert _whitish(px).sum() >= 5, eye                                   # sclera
+        assert px.sum(axis=1).min() < 0.5 * skin.sum(axis=1).mean(), eye      # iris and pupil, darker than skin
+    # the open mouth: teeth (whitish) and the dark red cavity between the lips; none of either at rest
+    mouth = np.array(at_open["mouth"].split(), float)
+    inside, closed = _near(opened, mouth, 12), _near(rest, np.array(at_rest["mouth"].split(), float), 12)
+    assert _whitish(inside).sum() >= 5 and not _whitish(closed).any()
+    assert ((inside.max(axis=1) < 120) & (inside[:, 0] > 1.8 * inside[:, 1])).sum() >= 10
+    # the picture is render's (parts, shading, camera): at rest and with the jaw open, nearly every pixel
+    # of the face within a few levels (the rest: edges, where two rasterizers' anti-aliasing differ)
+    for img, named in ((rest, {}), (opened, {"jawOpen": 0.6})):
+        ref = _rendered(named, w, h)
+        face = np.abs(ref.astype(int) - BG).max(axis=2) > 3
+        diff = np.abs(img.astype(int) - ref.astype(int)).max(axis=2)[face]
+        assert face.mean() > 0.15 and np.mean(diff <= 3) > 0.85 and np.mean(diff > 40) < 0.03, named

@@ -48,6 +48,33 @@ def test_target_gap_follows_the_voice_and_closes_where_it_says(synth):
     np.testing.assert_allclose(quiet, opening)  # no confidence in the voice: the phones' opening
 
 
+def test_the_opening_by_rank_closes_the_mouth_as_often_as_the_method_does(synth):
+    """The voice's predicted opening varies less within speech than between speech and silence (as
+    the articulation model's does): mapped affinely by percentiles it holds the mouth half open
+    through speech (the frozen, lips-apart mouth); by rank the mouth closes between syllables as
+    often as the method's, in the voice's order."""
+    fps, n = 30.0, 300
+    t = np.arange(n) / fps
+    speech = (t > 1.0) & (t < 9.0)
+    syllable = 0.5 - 0.5 * np.cos(2 * np.pi * 4.0 * t)  # 4 syllables a second, 0 between them
+    opening = np.where(speech, 0.5 + 9.5 * syllable, 0.5)  # the method's gaps, mm: closed between syllables
+    predicted = np.where(speech, 0.7 + 0.3 * np.roll(syllable, 2), 0.0)  # the voice, a little late
+    assert synth.voice_opening_map == "percentiles"  # the default
+    by_rank, _ = voice.target_gap(opening, predicted, None, None, np.ones(n), [], fps,
+                                  replace(synth, voice_opening_map="rank"))
+    affine, _ = voice.target_gap(opening, predicted, None, None, np.ones(n), [], fps, synth)
+    def closed(gap):
+        return float(np.mean(gap[speech] < 2.0))  # nearly closed, within speech
+    assert closed(opening) > 0.15
+    assert closed(by_rank) == pytest.approx(closed(opening), abs=0.03)
+    assert closed(affine) < 0.1  # half open throughout
+    quartiles = [10, 25, 50, 75, 90]  # the method's gaps, rearranged (ties of the voice share a rank)
+    np.testing.assert_allclose(np.percentile(by_rank, quartiles), np.percentile(opening, quartiles), atol=0.5)
+    rank = lambda x: np.argsort(np.argsort(x, kind="stable"), kind="stable")  # noqa: E731
+    assert np.corrcoef(rank(by_rank[speech]), rank(predicted[speech]))[0, 1] > 0.99  # in the voice's order
+    np.testing.assert_allclose(voice.rank_map(np.ones(10), np.arange(10.0)), np.arange(10.0))  # a flat voice says nothing
+
+
 def test_a_pinned_phone_keeps_its_closure_unless_the_voice_says_open(synth):
     fps, n = 30.0, 120
     opening = np.full(n, 6.0)

@@ -27,7 +27,7 @@ def anim(held_out_synthesized):
 def _scene_frame(clip_rest, faces, vertices, width, height, samples=2, yaw=25.0, pitch=6.0, gaze=None):
     """Projected points, camera normals and the scene for one frame, as ShadedView does it."""
     scene = parts.build_scene(clip_rest, faces)
-    cam = Camera.fit(clip_rest, width, height, 30.0, yaw, pitch, video.face_focus(scene)).scaled(samples)
+    cam = Camera.fit(parts.frame_points(scene), width, height, 30.0, yaw, pitch).scaled(samples)
     points = scene.positions(vertices, gaze)
     normals = parts.vertex_normals(points, scene.faces, scene.incidence)
     return scene, cam, cam.project(points), cam.directions(normals)
@@ -154,7 +154,7 @@ def test_supersampled_edges_have_intermediate_values():
     assert (covered == 2).sum() > 20                                        # silhouette pixels half covered
     assert means[0] < 2 and means[1] < means[2] < means[3] < means[4]       # the more covered, the farther from the background
     one = NumpyRasterizer(scene.faces, scene.albedo, scene.eye, 160, 120, 1)
-    cam1 = Camera.fit(rig.neutral, 160, 120, 30.0, 25.0, 6.0, video.face_focus(scene))
+    cam1 = Camera.fit(parts.frame_points(scene), 160, 120, 30.0, 25.0, 6.0)
     points = scene.positions(rig.neutral)
     plain = one.render(cam1.project(points), cam1.directions(parts.vertex_normals(points, scene.faces, scene.incidence)))
     assert plain.shape == (120, 160, 3)

@@ -60,7 +60,8 @@ log = logging.getLogger(__name__)
 #: The ``[synthesize]`` settings of the voice step (:mod:`.voice`), recorded by a motion made with
 #: the audio by a method whose own section is another.
 VOICE_SETTINGS = ("loudness_weight", "loudness_smoothing_s", "loudness_lip_markers", "pinned_phones",
-                  "voice_recognized", "voice_given", "articulation_model", "voice_weight", "voice_rounding_weight",
+                  "voice_recognized", "voice_given", "articulation_model", "voice_weight", "voice_opening_map",
+                  "voice_rounding_weight",
                   "voice_closure_threshold", "voice_closing_threshold", "voice_pin_recognized")
 
 

@@ -1,5 +1,7 @@
-"""A perspective camera that orbits a target point: yaw about the world's up axis (+y),
-pitch above the horizon, vertical field of view, fitted once per clip so the view is steady.
+"""A perspective camera looking from a direction (yaw about the world's up axis (+y), pitch
+above the horizon) with a vertical field of view, fitted once per clip to the points it frames
+(the whole head, :func:`~facesynth.domain.rendering.parts.frame_points`) so the view is steady:
+the nearest place from which they fit with a margin, centred (:func:`fit_eye`).
 
 World frame of the meshes facesynth draws: +y up, the face looks toward +z, +x is the
 subject's left. Camera frame: the camera looks along its -z axis, +y up on the screen.
@@ -10,6 +12,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+
+#: Fraction of the picture's half-width (or half-height) left free beyond the framed points on
+#: the side where they bind (:meth:`Camera.fit`).
+FRAME_MARGIN = 0.08
 
 
 @dataclass(frozen=True)
@@ -30,25 +36,25 @@ class Camera:
         from the subject's left, +x) and ``pitch_deg`` (positive: from above), far enough that a
         sphere of radius ``half_extent`` (mesh units) about the target fills the frame's
         shorter side."""
-        yaw, pitch = np.deg2rad(yaw_deg), np.deg2rad(pitch_deg)
-        back = np.array([np.sin(yaw) * np.cos(pitch), np.sin(pitch), np.cos(yaw) * np.cos(pitch)])
-        right = np.cross([0.0, 1.0, 0.0], back)
-        right /= np.linalg.norm(right)
-        up = np.cross(back, right)
+        rotation = view_rotation(yaw_deg, pitch_deg)
         tan_half = np.tan(np.deg2rad(fov_deg) / 2)
         focal = 0.5 * height / tan_half
         half_fov = min(tan_half, tan_half * width / height)
         distance = half_extent / np.sin(np.arctan(half_fov))
-        rotation = np.stack([right, up, back])
-        return cls(rotation, np.asarray(target, np.float64) + distance * back, float(focal), width, height)
+        return cls(rotation, np.asarray(target, np.float64) + distance * rotation[2], float(focal), width, height)
 
     @classmethod
-    def fit(cls, vertices: np.ndarray, width: int, height: int, fov_deg: float, yaw_deg: float = 0.0,
-            pitch_deg: float = 0.0, focus: tuple[np.ndarray, float] | None = None) -> "Camera":
-        """A camera whose view holds ``vertices`` (V, 3), or the sphere ``focus`` = (centre (3,),
-        radius) when given (the face region, so a long neck does not shrink the face)."""
-        centre, radius = framing(vertices, focus)
-        return cls.orbit(centre, radius, width, height, fov_deg, yaw_deg, pitch_deg)
+    def fit(cls, points: np.ndarray, width: int, height: int, fov_deg: float, yaw_deg: float = 0.0,
+            pitch_deg: float = 0.0, margin: float = FRAME_MARGIN) -> "Camera":
+        """The nearest camera looking from the direction of ``yaw_deg`` and ``pitch_deg`` (as
+        :meth:`orbit`) whose picture holds every one of ``points`` (n, 3) (the head's, from
+        :func:`~facesynth.domain.rendering.parts.frame_points`; NaN rows ignored) with ``margin``
+        of the half-size free on each side where the points bind, and their extremes centred:
+        as far left of the middle as right, as far above as below (:func:`fit_eye`)."""
+        rotation = view_rotation(yaw_deg, pitch_deg)
+        tan_half = np.tan(np.deg2rad(fov_deg) / 2)
+        eye = fit_eye(points, rotation, tan_half * width / height, tan_half, margin)
+        return cls(rotation, eye, float(0.5 * height / tan_half), width, height)
 
     def scaled(self, factor: int) -> "Camera":
         """The same view at ``factor`` times the resolution (for supersampling)."""
@@ -73,10 +79,49 @@ class Camera:
         return np.concatenate([d, np.zeros((len(d), 1))], 1).astype(np.float32)
 
 
-def framing(vertices: np.ndarray, focus: tuple[np.ndarray, float] | None = None) -> tuple[np.ndarray, float]:
-    """The sphere (centre (3,), radius, mesh units) :meth:`Camera.fit` frames: ``focus`` when
-    given, else one about the bounding box of ``vertices`` (V, 3) (0.8 of its half diagonal)."""
-    if focus is not None:
-        return np.asarray(focus[0], np.float64), float(focus[1])
-    lo, hi = np.nanmin(vertices, 0), np.nanmax(vertices, 0)
-    return (lo + hi) / 2, 0.5 * float(np.linalg.norm(hi - lo)) * 0.8
+def view_rotation(yaw_deg: float, pitch_deg: float) -> np.ndarray:
+    """(3, 3) world -> camera rotation (rows: right, up, back) of a camera looking from the
+    direction ``yaw_deg`` (positive: from the subject's left, +x), ``pitch_deg`` (from above)."""
+    yaw, pitch = np.deg2rad(yaw_deg), np.deg2rad(pitch_deg)
+    back = np.array([np.sin(yaw) * np.cos(pitch), np.sin(pitch), np.cos(yaw) * np.cos(pitch)])
+    right = np.cross([0.0, 1.0, 0.0], back)
+    right /= np.linalg.norm(right)
+    return np.stack([right, np.cross(back, right), back])
+
+
+def _centre(coord: np.ndarray, depth_to: np.ndarray, iterations: int = 60) -> float:
+    """The camera coordinate e (along one image axis) that centres points at ``coord`` (n,) with
+    depths ``depth_to`` (n,) > 0 from the camera: max((coord - e) / depth) = -min(...), by
+    bisection (the balance falls as e grows)."""
+    lo, hi = float(coord.min()), float(coord.max())
+    for _ in range(iterations):
+        mid = 0.5 * (lo + hi)
+        u = (coord - mid) / depth_to
+        lo, hi = (mid, hi) if u.max() + u.min() > 0 else (lo, mid)
+    return 0.5 * (lo + hi)
+
+
+def fit_eye(points: np.ndarray, rotation: np.ndarray, tan_x: float, tan_y: float, margin: float) -> np.ndarray:
+    """The camera position (3,) world units, for a camera of ``rotation`` (3, 3) world -> camera
+    whose picture spans tan_x and tan_y (the tangents of its horizontal and vertical half-angles),
+    that holds ``points`` (n, 3) with ``margin`` (a fraction of the half-size) free on the side
+    where they bind, their extremes centred in both directions.
+
+    In camera coordinates (c, the camera looking along -z) a point projects to
+    (c_x - e_x) / (e_z - c_z) in units of the picture's half-tangent, which must lie within
+    +-a = +-(1 - margin) tan_x: e_x + a e_z >= max(c_x + a c_z) =: P and -e_x + a e_z >=
+    max(-c_x + a c_z) =: Q, so the nearest e_z is (P + Q) / 2a (and likewise (R + S) / 2b for
+    y); at the larger of the two, e_x and e_y are placed so the extremes are equally far from
+    the middle (:func:`_centre`). The page (facesynth/data/player.html, ``fitEye``) does the same."""
+    p = np.asarray(points, np.float64)
+    p = p[np.isfinite(p).all(1)]
+    if not len(p):
+        raise ValueError("fit_eye needs at least one finite point")
+    c = p @ np.asarray(rotation, np.float64).T
+    a, b = (1.0 - margin) * tan_x, (1.0 - margin) * tan_y
+    ez = max((np.max(c[:, 0] + a * c[:, 2]) + np.max(-c[:, 0] + a * c[:, 2])) / (2 * a),
+             (np.max(c[:, 1] + b * c[:, 2]) + np.max(-c[:, 1] + b * c[:, 2])) / (2 * b))
+    ez = max(ez, float(c[:, 2].max()) + 1e-6 * (1.0 + float(np.ptp(c))))  # every point in front
+    depth = ez - c[:, 2]
+    e = np.array([_centre(c[:, 0], depth), _centre(c[:, 1], depth), ez])
+    return e @ np.asarray(rotation, np.float64)

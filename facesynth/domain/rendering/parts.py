@@ -38,7 +38,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 from scipy import sparse
-from scipy.spatial import cKDTree
+from scipy.spatial import ConvexHull, QhullError, cKDTree
 
 #: ``eye`` attribute of every vertex that is not on an eyeball.
 NO_EYE = -2.0
@@ -405,18 +405,32 @@ class FaceScene:
         return out
 
 
-def face_focus(scene: FaceScene) -> tuple[np.ndarray, float] | None:
-    """The sphere (centre (3,), radius, mesh units) the camera frames when the mesh has eyes
-    and a mouth: from above the brows to below the chin, so the face fills the frame whatever
-    else (neck, shoulders) the mesh holds. None for other meshes (the whole mesh is framed)."""
+#: Where the framed head ends below the mouth, in eye-to-mouth heights: the chin is about 0.75
+#: below the mouth's centre on a human face, so the frame holds the chin and a little neck.
+CHIN_BELOW_MOUTH = 0.9
+
+
+def frame_points(scene: FaceScene) -> np.ndarray:
+    """The rest-pose points (n, 3) mesh units the camera frames (:meth:`Camera.fit`): on a face
+    (eyes and mouth found) the whole head, every skin vertex above
+    :data:`CHIN_BELOW_MOUTH` eye-to-mouth heights below the mouth (so a neck or shoulders the
+    mesh holds do not shrink the face, and the top of the head is never cut); on other meshes
+    every vertex. Only the corners of their convex hull are returned (the camera's fit depends
+    on the extreme points only), a few hundred for a head."""
+    skin = np.asarray(scene._rest, np.float64)
     layout = scene.layout
-    if layout.eyes is None or layout.mouth is None:
-        return None
-    eyes = (layout.eyes[0].centre + layout.eyes[1].centre) / 2
-    mouth = layout.mouth.centre
-    span = float(eyes[1] - mouth[1])
-    centre = (eyes + mouth) / 2 + np.array([0.0, 0.05 * span, -0.5 * span])
-    return centre, 1.75 * span
+    if layout.eyes is not None and layout.mouth is not None:
+        eye_y = (layout.eyes[0].centre[1] + layout.eyes[1].centre[1]) / 2
+        mouth_y = layout.mouth.centre[1]
+        head = skin[skin[:, 1] >= mouth_y - CHIN_BELOW_MOUTH * (eye_y - mouth_y)]
+        skin = head if len(head) >= 4 else skin
+    skin = skin[np.isfinite(skin).all(1)]
+    if len(skin) < 5:
+        return skin
+    try:
+        return skin[ConvexHull(skin).vertices]
+    except QhullError:  # a flat mesh (a plane has no 3-D hull): every point
+        return skin
 
 
 def eyeball_centre(rim: np.ndarray, hole: Hole, radius: float, iterations: int = 30) -> np.ndarray:

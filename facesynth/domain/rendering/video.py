@@ -6,8 +6,10 @@ teeth and tongue where the mesh has eye and mouth holes, on OpenCL with a NumPy 
 ``markers`` (the paper's marker mode: the markers as dots) and ``side-by-side`` (the animation
 beside a second one, e.g. ground truth, each half labelled as ``render.labels`` says).
 The camera orbits the rest mesh (+y up, looking toward +z) by ``render.yaw_deg`` and
-``render.pitch_deg``, fitted once so the view is steady: on a face (eyes and mouth found) it
-frames brow to chin, otherwise the whole mesh. The eyes follow the animation's gaze track where
+``render.pitch_deg``, fitted once to the rest mesh so the view is steady: on a face (eyes and
+mouth found) it frames the whole head down to just below the chin, otherwise the whole mesh,
+centred, with a margin (:func:`~facesynth.domain.rendering.parts.frame_points`,
+:meth:`~facesynth.domain.rendering.camera.Camera.fit`). The eyes follow the animation's gaze track where
 it is known and look ahead elsewhere. Several animations render one after another into one
 video, each with its own audio, cut or padded to its frame count, so the first frame is at
 audio time 0 and picture and sound end together.
@@ -38,7 +40,7 @@ from facesynth.model.curves import RigCurves
 from facesynth.model.meshanim import MeshAnimation
 
 from .camera import Camera
-from .parts import build_scene, face_focus, vertex_normals
+from .parts import build_scene, frame_points, vertex_normals
 from .raster import BACKGROUND as BACKGROUND_RGB
 from .raster import rasterizer
 
@@ -118,8 +120,8 @@ class ShadedView:
         self.scene = build_scene(clip.rest, clip.faces)
         self.gaze = clip.gaze
         s = settings.supersample
-        self.camera = Camera.fit(clip.rest, width, settings.height, settings.fov_deg, settings.yaw_deg,
-                                 settings.pitch_deg, face_focus(self.scene)).scaled(s)
+        self.camera = Camera.fit(frame_points(self.scene), width, settings.height, settings.fov_deg, settings.yaw_deg,
+                                 settings.pitch_deg).scaled(s)
         self.raster = rasterizer(self.scene.faces, self.scene.albedo, self.scene.eye, width, settings.height, s,
                                  settings.use_opencl)
 
