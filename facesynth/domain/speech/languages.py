@@ -27,7 +27,6 @@ import importlib.util
 import re
 import unicodedata
 from dataclasses import dataclass
-from functools import lru_cache
 from pathlib import Path
 
 from facesynth.base.errors import InputError
@@ -103,11 +102,6 @@ def words_of(text: str, language: str, dictionary: str = "", where: str = "the t
 def read_dictionary(path: Path) -> dict[str, tuple[str, ...]]:
     """A user pronunciation file: ``word  IPA phones`` per line (phones separated by spaces, ``#``
     starts a comment), word -> phones; the word is matched case-insensitively."""
-    return dict(_read_dictionary(str(path)))
-
-
-@lru_cache(maxsize=8)
-def _read_dictionary(path: str) -> tuple[tuple[str, tuple[str, ...]], ...]:
     try:
         lines = Path(path).read_text("utf-8").splitlines()
     except FileNotFoundError:
@@ -125,7 +119,7 @@ def _read_dictionary(path: str) -> tuple[tuple[str, tuple[str, ...]], ...]:
             what = f"unknown IPA phone {bad[0]!r}" if bad else "no phones"
             raise InputError(f"{path}, line {n}: {what}; write 'word  IPA phones' with the phones separated by spaces.")
         out.setdefault(word.lower(), tuple(phones))
-    return tuple(out.items())
+    return out
 
 
 # --- gruut ---------------------------------------------------------------------------------------

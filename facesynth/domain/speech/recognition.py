@@ -33,8 +33,8 @@ from facesynth.base.phonemes import PAU, to_festival
 from facesynth.formats.audio import resample
 from facesynth.formats.labels import Segment
 
-from .languages import is_english
 from .alignment import Alignment, AlignmentFailed, align_robust, pcm16, tile, voice_activity
+from .languages import is_english
 
 #: The recognition modes of ``align.recognition``.
 MODES = ("words", "phones")

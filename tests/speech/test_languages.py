@@ -1,0 +1,198 @@
+"""Text in languages other than English: each language's known words carry the expected
+articulatory features, each phone resolves to the English phone nearest in those features
+(English phones to themselves), and a synthesized line closes the mouth at its bilabials and
+rounds it at its rounded vowels. The G2P backends are an optional extra (``languages``); the
+tests that read a language skip without it."""
+
+import importlib.util
+
+import numpy as np
+import pytest
+from click.testing import CliRunner
+
+from facesynth.base.errors import InputError
+from facesynth.base.ipa import FESTIVAL_IPA, IPA, PLACES, TARGETS, distance, features, nearest_festival, visemes
+from facesynth.base.phonemes import PHONES
+from facesynth.cli import main
+from facesynth.domain.speech.languages import PINYIN_FINALS, PINYIN_INITIALS, is_english, pinyin_ipa, primary, words_of
+from facesynth.formats.labels import read_textgrid
+from facesynth.model.motion import Motion
+
+GRUUT = pytest.mark.skipif(importlib.util.find_spec("gruut") is None, reason="gruut is not installed (pip install 'facesynth[languages]')")
+PINYIN = pytest.mark.skipif(importlib.util.find_spec("pypinyin") is None,
+                            reason="pypinyin is not installed (pip install 'facesynth[languages]')")
+
+
+def _pack(tag: str):
+    return pytest.mark.skipif(importlib.util.find_spec(f"gruut_lang_{tag}") is None,
+                              reason=f"gruut's {tag} pack is not installed (pip install 'facesynth[languages]')")
+
+
+def _word(text: str, language: str, which: str):
+    return next(w for w in words_of(text, language) if w.text.lower() == which)
+
+
+# --- the feature table ---------------------------------------------------------------------------
+
+
+def test_every_english_phone_is_described_and_resolves_to_itself():
+    assert set(FESTIVAL_IPA) == set(PHONES) - {"pau"}
+    for phone in TARGETS:
+        assert nearest_festival(FESTIVAL_IPA[phone]) == phone
+        assert distance(features(FESTIVAL_IPA[phone]), features(FESTIVAL_IPA[phone])) == 0
+
+
+@pytest.mark.parametrize("ipa, english", [
+    ("y", "uw"), ("yː", "uw"), ("ʏ", "uh"),  # rounded front vowels: the rounding, not the tongue
+    ("ʂ", "sh"), ("ʐ", "zh"), ("ʈʂ", "ch"), ("tɕ", "ch"), ("ɕ", "sh"),  # retroflexes and palatals -> postalveolar
+    ("β", "b"), ("ɸ", "p"),  # bilabial fricatives close the lips
+    ("ɾ", "r"), ("r", "r"), ("pf", "f"), ("ɔ̃", "ao"), ("ɛ̃", "eh"),
+])
+def test_a_foreign_phone_resolves_to_the_english_phone_nearest_in_features(ipa, english):
+    assert nearest_festival(ipa) == english
+
+
+def test_german_ich_laut_resolves_in_the_palatal_region():
+    assert nearest_festival("ç") in ("sh", "hh", "y")
+    assert nearest_festival("x") in ("hh", "k")
+
+
+def test_the_visemes_follow_from_the_features():
+    assert visemes("m")["lips closed"] and visemes("b")["jaw"] == "closed"
+    assert visemes("f")["lower lip to teeth"] and not visemes("f")["lips closed"]
+    assert visemes("y")["rounded"] and not visemes("y")["spread"]
+    assert visemes("i")["spread"] and visemes("a")["jaw"] == "open"
+    assert not any(visemes(p)["lips closed"] for p in ("t", "s", "k", "i", "u"))
+
+
+def test_unknown_symbols_are_refused_and_every_table_phone_is_described():
+    with pytest.raises(KeyError):
+        features("☃")
+    for table in (PINYIN_INITIALS, PINYIN_FINALS):
+        for phones in table.values():
+            assert all(features(p) for p in phones)
+    assert all(f.place in PLACES for f in IPA.values())
+
+
+def test_language_tags():
+    assert is_english("en") and is_english("en-GB") and is_english("") and not is_english("de")
+    assert primary("zh-Hans") == "cmn" and primary("fr_CA") == "fr" and primary("CMN") == "cmn"
+
+
+# --- each language's known words ----------------------------------------------------------------
+
+
+@GRUUT
+@_pack("fr")
+def test_french_tu_has_a_rounded_close_front_vowel():
+    tu = _word("Tu vas bien?", "fr", "tu")
+    y = features(tu.ipa[-1])
+    assert y.vowel and y.rounded and y.backness == 0 and y.height == 0
+    assert tu.phones == ("t", "uw")  # rounding wins over the tongue's place
+    pomme = _word("Je voudrais une pomme.", "fr", "pomme")
+    assert pomme.phones[0] == "p" and pomme.phones[-1] == "m"
+
+
+@GRUUT
+@_pack("de")
+def test_german_ich_has_a_palatal_fricative():
+    ich = _word("Ich bin müde.", "de", "ich")
+    c = features(ich.ipa[-1])
+    assert c.place == "palatal" and c.manner == "fricative" and not c.voiced
+    mude = _word("Ich bin müde.", "de", "müde")
+    assert any(features(p).rounded and features(p).vowel and features(p).backness == 0 for p in mude.ipa)
+
+
+@GRUUT
+@_pack("es")
+def test_spanish_trill_and_tap_and_bilabials():
+    perro, pero = _word("perro pero", "es", "perro"), _word("perro pero", "es", "pero")
+    assert features("r").manner == "trill" and "r" in perro.ipa
+    assert "ɾ" in pero.ipa and "r" in pero.phones
+    mama = _word("Mi mamá come.", "es", "mamá")
+    assert [visemes(p)["lips closed"] for p in mama.ipa] == [True, False, True, False]
+
+
+@PINYIN
+def test_mandarin_zhe_is_retroflex_and_lu_rounded_front():
+    zhe = _word("这是绿的", "cmn", "这")
+    assert features(zhe.ipa[0]).place == "retroflex" and zhe.phones[0] == "ch"
+    shi = _word("这是绿的", "cmn", "是")
+    assert features(shi.ipa[0]).place == "retroflex"
+    lv = _word("这是绿的", "cmn", "绿")
+    assert features(lv.ipa[-1]).rounded and features(lv.ipa[-1]).backness == 0
+    assert pinyin_ipa("zh", "e4") == ("ʈʂ", "ɤ") and pinyin_ipa("s", "i4") == ("s", "ɨ")
+
+
+@GRUUT
+@_pack("fr")
+def test_the_users_dictionary_comes_first(tmp_path):
+    own = tmp_path / "lexicon-fr.txt"
+    own.write_text("# my words\npomme  p o m\n", "utf-8")
+    pomme = next(w for w in words_of("une pomme", "fr", str(tmp_path / "lexicon-{language}.txt")) if w.text == "pomme")
+    assert pomme.ipa == ("p", "o", "m")
+    own.write_text("pomme  p ☃ m\n", "utf-8")
+    with pytest.raises(InputError, match=r"lexicon-fr.txt, line 1: unknown IPA phone '☃'"):
+        words_of("une pomme", "fr", str(own))
+
+
+def test_a_language_no_backend_reads_is_one_sentence_and_exit_1(tmp_path):
+    wav = tmp_path / "a.wav"
+    import soundfile
+
+    soundfile.write(wav, np.zeros(16000, np.float32), 16000)
+    out = tmp_path / "a.TextGrid"
+    result = CliRunner().invoke(main, ["align", str(wav), "--text", "hallo", "--language", "tlh", "-o", str(out)])
+    assert result.exit_code == 1
+    assert "language 'tlh': no G2P backend reads it" in result.output and "Traceback" not in result.output
+    assert not out.exists()
+
+
+# --- a synthesized line: the mouth closes at bilabials and rounds at rounded vowels --------------
+
+
+def _mouth(motion: Motion, phones, wanted) -> tuple[np.ndarray, np.ndarray]:
+    """The lip gap and mouth width (mm) at the middle of each phone of ``wanted``."""
+    names = list(motion.marker_names)
+    up, lo, r, left = (names.index(n) for n in ("ULI_C", "LLI_C", "MC_R", "MC_L"))
+    gap, width = [], []
+    for s in phones:
+        if s.label in wanted:
+            t = min(int(round((s.start + s.end) / 2 * motion.fps)), len(motion.markers) - 1)
+            gap.append(np.linalg.norm(motion.markers[t, up] - motion.markers[t, lo]))
+            width.append(np.linalg.norm(motion.markers[t, r] - motion.markers[t, left]))
+    return np.array(gap), np.array(width)
+
+
+LINES = {
+    "fr": "Papa boit une pomme, tu vas à Paris.",
+    "de": "Mama isst Brot und Butter, bitte.",
+    "es": "Papá compra pan y uvas, mamá bebe.",
+    "cmn": "爸爸买苹果，妈妈不怕。",
+}
+
+
+@pytest.mark.parametrize("language", ["fr", "de", "es", "cmn"])
+def test_a_synthesized_line_closes_at_bilabials_and_rounds_at_rounded_vowels(language, tiny_db, tiny_corpus, tmp_path):
+    if language == "cmn":
+        if importlib.util.find_spec("pypinyin") is None:
+            pytest.skip("pypinyin is not installed (pip install 'facesynth[languages]')")
+    elif importlib.util.find_spec(f"gruut_lang_{language}") is None:
+        pytest.skip(f"gruut's {language} pack is not installed (pip install 'facesynth[languages]')")
+    audio = tiny_corpus / "audio" / "neutral_s000.wav"
+    line = LINES[language]
+    runner = CliRunner()
+    made = runner.invoke(main, ["synthesize", str(tiny_db), "--audio", str(audio), "--text", line, "--language", language,
+                                "--set", "synthesize.voice_given=off", "-o", str(tmp_path / "m.h5")])
+    assert made.exit_code == 0, made.output
+    aligned = runner.invoke(main, ["align", str(audio), "--text", line, "--language", language,
+                                   "-o", str(tmp_path / "a.TextGrid")])
+    assert aligned.exit_code == 0, aligned.output
+    phones = read_textgrid(tmp_path / "a.TextGrid")["phones"]
+    motion = Motion.read(tmp_path / "m.h5")
+    closed, _ = _mouth(motion, phones, {"p", "b", "m"})
+    open_, spread = _mouth(motion, phones, {"aa", "ae", "ah"})
+    _, rounded = _mouth(motion, phones, {"uw", "uh", "ow", "ao", "w"})
+    assert len(closed) >= 3 and len(open_) >= 2 and len(rounded) >= 1
+    assert closed.mean() < open_.mean()
+    assert rounded.mean() < spread.mean()
