@@ -158,7 +158,8 @@ TARGETS: tuple[str, ...] = (
 #: closure (a bilabial stop, nasal or fricative) and the lower lip to the teeth (labiodental) 4 each;
 #: rounding 3 (at the start and at the end of a vowel); a vowel against a consonant 3; the jaw
 #: (vowel height) 2; the tongue's place 1.5 (on the front-to-back scale of :data:`PLACES`); the
-#: manner (stop, nasal, fricative, affricate, approximant, lateral, rhotic) 1 each; backness 1;
+#: manner (stop, nasal, fricative, affricate, approximant, lateral, rhotic) 1 each, 0.5 between
+#: obstruents (stop, fricative, affricate) and between glides (approximant, tap, trill); backness 1;
 #: nasality and voicing 0.5 (barely visible); length 0.25.
 WEIGHTS: dict[str, float] = {
     "closure": 4.0, "labiodental": 4.0, "rounded": 3.0, "vowel": 3.0, "height": 2.0, "place": 1.5,
@@ -205,8 +206,9 @@ def _manner_distance(a: Features, b: Features) -> float:
     if a.manner == b.manner:
         return 0.0
     pair = {a.manner, b.manner}
-    # an affricate is a stop and a fricative; trills, taps and approximants are all sonorant glides
-    if "affricate" in pair and pair & {"stop", "fricative"}:
+    # an affricate is a stop and a fricative, and stops and fricatives of one place are each
+    # other's allophones (Spanish b/β, g/ɣ); trills, taps and approximants are all sonorant glides
+    if pair <= {"stop", "fricative", "affricate"}:
         return 0.5
     if pair <= {"trill", "tap", "approximant"}:
         return 0.5
@@ -282,3 +284,44 @@ def visemes(phone: str) -> dict[str, object]:
         jaw = "open"
     return {"lips closed": closed, "lower lip to teeth": labiodental(f), "rounded": f.rounded, "spread": spread,
             "jaw": jaw}
+
+
+def describe(phone: str) -> str:
+    """``phone``'s features in words: "voiceless palatal fricative", "close front rounded vowel"."""
+    f = features(phone)
+    if not f.vowel:
+        words = ["voiced" if f.voiced else "voiceless", f.place, f.manner]
+        if f.rounded:
+            words.insert(1, "rounded")
+        return " ".join(words)
+
+    def quality(g: Features) -> str:
+        height = ("close" if g.height < 0.1 else "near-close" if g.height < 0.25 else "close-mid" if g.height < 0.45
+                  else "mid" if g.height < 0.55 else "open-mid" if g.height < 0.7 else "near-open" if g.height < 0.9
+                  else "open")
+        back = "front" if g.backness < 0.25 else "central" if g.backness < 0.75 else "back"
+        return f"{height} {back} {'rounded' if g.rounded else 'unrounded'}"
+
+    words = [quality(f)]
+    if f.end_height is not None:
+        words = [f"{quality(f)} to {quality(f.end())}"]
+    words += ["nasal"] * f.nasal + ["long"] * f.long + ["r-coloured"] * f.rhotic
+    return " ".join(words) + (" diphthong" if f.end_height is not None else " vowel")
+
+
+#: The phones of docs/methods.md's table besides English's: those of the languages the G2P
+#: backends read that English lacks.
+FOREIGN_EXAMPLES = tuple("y ø œ ʏ ɤ ɨ a e o ɛ̃ ɔ̃ ɑ̃ ɸ β ç ʝ x ɣ χ ʁ ʂ ʐ ʈʂ ɕ tɕ ts pf ɲ ʎ ɾ r ɥ ɻ̩".split())
+
+
+def viseme_table() -> str:
+    """The Markdown table of docs/methods.md: each English phone and each of
+    :data:`FOREIGN_EXAMPLES`, its features in words, its nearest English phone and its visemes."""
+    head = ("IPA", "features", "English phone") + VISEME_COLUMNS
+    rows = [f"| {' | '.join(head)} |", "|" + "---|" * len(head)]
+    for phone in [FESTIVAL_IPA[t] for t in TARGETS] + list(FOREIGN_EXAMPLES):
+        v = visemes(phone)
+        cells = [phone, describe(phone), f"`{nearest_festival(phone)}`"]
+        cells += ["yes" if v[c] is True else "" if v[c] is False else str(v[c]) for c in VISEME_COLUMNS]
+        rows.append(f"| {' | '.join(cells)} |")
+    return "\n".join(rows)

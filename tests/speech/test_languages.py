@@ -196,3 +196,12 @@ def test_a_synthesized_line_closes_at_bilabials_and_rounds_at_rounded_vowels(lan
     assert len(closed) >= 3 and len(open_) >= 2 and len(rounded) >= 1
     assert closed.mean() < open_.mean()
     assert rounded.mean() < spread.mean()
+
+
+def test_the_docs_viseme_table_is_the_code():
+    from pathlib import Path
+
+    from facesynth.base.ipa import viseme_table
+
+    page = (Path(__file__).resolve().parents[2] / "docs" / "methods.md").read_text("utf-8")
+    assert viseme_table() in page
