@@ -381,3 +381,27 @@ def test_the_old_name_of_an_output_still_works_with_a_warning():
     assert names == ("motion", "arkit-csv")
     assert len(warnings) == 1 and "'arkit' is now called 'arkit-csv'" in warnings[0]
     assert output_names(("curves", "gltf")) == (("curves", "gltf"), [])
+
+
+@pytest.mark.skipif(importlib.util.find_spec("gruut_lang_fr") is None,
+                    reason="gruut's French pack is not installed (pip install 'facesynth[languages]')")
+def test_a_language_column_reads_each_line_in_its_language(tiny_corpus, tiny_db, takes, config, client, tmp_path):
+    from facesynth.formats.labels import read_textgrid
+
+    a = takes["neutral_s001"]
+    audio = str(tiny_corpus / a["audio"])
+    script = _write(tmp_path / "script.csv", [
+        ("id", "audio", "text", "language"),
+        ("french", audio, "Papa boit une pomme.", "fr"),
+        ("english", audio, a["transcript"], ""),
+        ("klingon", audio, "Qapla'", "tlh"),
+    ])
+    out = tmp_path / "out"
+    s = batch.run(script, tiny_db, out, *_settings(config), client=client)
+    status = {r.id: (r.status, r.reason) for r in s.results}
+    assert status["french"][0] == status["english"][0] == "ok"
+    assert status["klingon"][0] == "failed" and "language 'tlh': no G2P backend reads it" in status["klingon"][1]
+    words = [w.label for w in read_textgrid(out / "french.TextGrid")["words"]]
+    assert words == ["Papa", "boit", "une", "pomme"]
+    english = [w.label for w in read_textgrid(out / "english.TextGrid")["words"]]
+    assert english == a["transcript"].lower().split()
