@@ -205,3 +205,38 @@ def test_the_docs_viseme_table_is_the_code():
 
     page = (Path(__file__).resolve().parents[2] / "docs" / "methods.md").read_text("utf-8")
     assert viseme_table() in page
+
+
+@GRUUT
+@_pack("fr")
+def test_the_api_reads_a_line_in_its_language(tiny_corpus):
+    import facesynth
+
+    heard = facesynth.utterance_from_audio(tiny_corpus / "audio" / "neutral_s000.wav", "Papa boit une pomme.",
+                                           language="fr")
+    assert [w.label for w in heard.alignment.words] == ["Papa", "boit", "une", "pomme"]
+    spoken = [p for p in heard.phones if p != "pau"]
+    assert spoken == [p for w in words_of("Papa boit une pomme.", "fr") for p in w.phones]
+    assert "uw" in spoken  # une: the rounded front /y/
+
+
+@GRUUT
+@_pack("de")
+def test_a_capture_manifests_language_column_aligns_each_take_in_its_language(tiny_corpus, config, tmp_path):
+    from facesynth.model.corpus import Corpus
+    from facesynth.stages import ingest
+
+    manifest = tmp_path / "manifest.csv"
+    corpus = tiny_corpus.resolve()
+    manifest.write_text(
+        "take,mocap,audio,transcript,language\n"
+        f"de_take,{corpus / 'mocap/neutral_s000.c3d'},{corpus / 'audio/neutral_s000.wav'},Mama isst Brot,de\n"
+        f"en_take,{corpus / 'mocap/neutral_s001.c3d'},{corpus / 'audio/neutral_s001.wav'},laugh tail with west roll,\n",
+        "utf-8")
+    ingest.run(manifest, tmp_path / "corpus.h5", config.settings("ingest"), config.settings("align"))
+    read = Corpus.read(tmp_path / "corpus.h5")
+    table = read.phones
+    phones = {take: [p for p, k in zip(table.phone, table.take) if k == t and p != "pau"]
+              for t, take in enumerate(read.takes.name)}
+    assert phones["de_take"] == [p for w in words_of("Mama isst Brot", "de") for p in w.phones]
+    assert phones["en_take"][:3] == ["l", "ae", "f"]  # English: the CMU dictionary's "laugh"
