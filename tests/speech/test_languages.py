@@ -240,3 +240,50 @@ def test_a_capture_manifests_language_column_aligns_each_take_in_its_language(ti
               for t, take in enumerate(read.takes.name)}
     assert phones["de_take"] == [p for w in words_of("Mama isst Brot", "de") for p in w.phones]
     assert phones["en_take"][:3] == ["l", "ae", "f"]  # English: the CMU dictionary's "laugh"
+
+
+# --- audio alone in another language: phones, not English words --------------------------------
+
+
+@pytest.fixture(scope="module")
+def mandarin_clip(tmp_path_factory):
+    """Four seconds of FACEGOOD's Mandarin take (shipped with the package), as a WAV."""
+    from importlib import resources
+
+    import soundfile
+
+    data, rate = soundfile.read(str(resources.files("facesynth").joinpath("data/facegood_audio.ogg")), dtype="float32")
+    path = tmp_path_factory.mktemp("mandarin") / "cmn.wav"
+    soundfile.write(path, (data if data.ndim == 1 else data.mean(axis=1))[: 4 * rate], rate)
+    return path
+
+
+def test_audio_alone_in_another_language_is_decoded_as_phones_not_english_words(mandarin_clip, tmp_path):
+    runner = CliRunner()
+    english = runner.invoke(main, ["align", str(mandarin_clip), "-o", str(tmp_path / "en.TextGrid")])
+    mandarin = runner.invoke(main, ["align", str(mandarin_clip), "--language", "cmn", "-o", str(tmp_path / "cmn.TextGrid")])
+    assert english.exit_code == 0 and mandarin.exit_code == 0, english.output + mandarin.output
+    assert "(words/" in english.output and "words" in read_textgrid(tmp_path / "en.TextGrid")
+    assert "(phones)" in mandarin.output and set(read_textgrid(tmp_path / "cmn.TextGrid")) == {"phones"}
+
+
+@GRUUT
+@_pack("fr")
+def test_an_english_dict_with_another_language_is_refused_in_one_sentence(mandarin_clip, tmp_path):
+    own = tmp_path / "own.dict"
+    own.write_text("pomme  P AA M\n")
+    out = tmp_path / "a.TextGrid"
+    result = CliRunner().invoke(main, ["align", str(mandarin_clip), "--text", "une pomme", "--language", "fr",
+                                       "--dict", str(own), "-o", str(out)])
+    assert result.exit_code == 1 and "align.dictionary" in result.output and not out.exists()
+
+
+def test_audio_alone_in_another_language_takes_the_voices_path(mandarin_clip, config):
+    """Recognised phones are what sends synthesize's mouth to the voice's articulation model."""
+    import dataclasses
+
+    from facesynth.domain.methods import core
+
+    align = dataclasses.replace(config.settings("align"), language="cmn")
+    read = core.read_utterance(config.settings("ingest"), audio=mandarin_clip, align=align)
+    assert read.recognized and read.alignment.method == "phones" and not read.alignment.words
