@@ -191,11 +191,14 @@ def test_a_synthesized_line_closes_at_bilabials_and_rounds_at_rounded_vowels(lan
     phones = read_textgrid(tmp_path / "a.TextGrid")["phones"]
     motion = Motion.read(tmp_path / "m.h5")
     closed, _ = _mouth(motion, phones, {"p", "b", "m"})
-    open_, spread = _mouth(motion, phones, {"aa", "ae", "ah"})
+    open_, _ = _mouth(motion, phones, {"aa", "ae", "ah"})
     _, rounded = _mouth(motion, phones, {"uw", "uh", "ow", "ao", "w"})
+    _, unrounded = _mouth(motion, phones, {"iy", "ih", "ey", "eh", "ae", "aa", "ah", "ay"})
     assert len(closed) >= 3 and len(open_) >= 2 and len(rounded) >= 1
-    assert closed.mean() < open_.mean()
-    assert rounded.mean() < spread.mean()
+    # measured on the tiny database: lips 0.5-1.0 mm apart at bilabials against 7.5-8.6 mm at open
+    # vowels; the mouth 2.4-5.4 mm narrower at rounded vowels than at unrounded ones
+    assert closed.mean() < 0.3 * open_.mean()
+    assert rounded.mean() < unrounded.mean() - 1.0
 
 
 def test_the_docs_viseme_table_is_the_code():
