@@ -145,8 +145,8 @@ class AlignSettings:
     language: str = setting("not in the paper: the language of the text (a BCP-47 tag: en, de, fr, es, cmn, ...); "
                             "another than English is read by a G2P backend and its phones mapped to the nearest "
                             "English phones by articulation")
-    dictionary: str = setting("not in the paper: the user's pronunciations of a language other than English, lines "
-                              "'word  IPA phones'; {language} in the path is the language's tag; empty: none")
+    dictionary: str = setting("not in the paper: the user's pronunciations, lines 'word  IPA phones', read before the "
+                              "dictionary or G2P backend; {language} in the path is the language's tag; empty: none")
 
 
 @dataclass(frozen=True)

@@ -290,3 +290,14 @@ def test_audio_alone_in_another_language_takes_the_voices_path(mandarin_clip, co
     align = dataclasses.replace(config.settings("align"), language="cmn")
     read = core.read_utterance(config.settings("ingest"), audio=mandarin_clip, align=align)
     assert read.recognized and read.alignment.method == "phones" and not read.alignment.words
+
+
+def test_an_english_line_reads_the_users_ipa_dictionary_first(mandarin_clip, tmp_path):
+    (tmp_path / "lexicon-en.txt").write_text("zorblax  z ɔ ɹ b l æ k s\n", "utf-8")
+    out = tmp_path / "a.TextGrid"
+    result = CliRunner().invoke(main, ["align", str(mandarin_clip), "--text", "the zorblax", "--set",
+                                       f"align.dictionary={tmp_path / 'lexicon-{language}.txt'}", "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    phones = [s.label for s in read_textgrid(out)["phones"] if s.label != "pau"]
+    assert phones[-8:] == ["z", "ao", "r", "b", "l", "ae", "k", "s"]
+    assert [w.label for w in read_textgrid(out)["words"]] == ["the", "zorblax"]

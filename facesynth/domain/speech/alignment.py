@@ -48,8 +48,9 @@ import numpy as np
 
 from facesynth.base.config import AlignSettings
 from facesynth.base.errors import InputError
+from facesynth.base.ipa import nearest_festival
 from facesynth.base.phonemes import PAU, pronunciations, to_festival, typical_duration
-from facesynth.domain.speech.languages import is_english, words_of
+from facesynth.domain.speech.languages import is_english, primary, read_dictionary, words_of
 from facesynth.formats.audio import resample
 from facesynth.formats.labels import Segment
 
@@ -174,6 +175,9 @@ def align_robust(samples: np.ndarray, rate: int, text: str, *, settings: AlignSe
     if not is_english(settings.language):
         return _align_language(samples, rate, text, settings=settings, extra=extra, where=where)
     extra = extra or {}
+    if settings.dictionary:  # the user's IPA pronunciations, as the nearest English phones (--dict's first)
+        own = read_dictionary(Path(settings.dictionary.replace("{language}", primary(settings.language) or "en")))
+        extra = {**{w: [_arpabet(tuple(nearest_festival(p) for p in ipa))] for w, ipa in own.items()}, **extra}
     words = normalize_text(text)
     marks = non_speech_marks(text)
     if not words and marks:  # only non-speech ("[laugh]"): all of it is pause
@@ -250,6 +254,11 @@ def align_robust(samples: np.ndarray, rate: int, text: str, *, settings: AlignSe
                           "check that the text matches the speech.")
 
 
+def _arpabet(phones) -> tuple[str, ...]:
+    """Festival phones as the CMU dictionary's ARPAbet (the schwa as unstressed ``AH0``)."""
+    return tuple("AH0" if p == "ax" else p.upper() for p in phones)
+
+
 def _align_language(samples: np.ndarray, rate: int, text: str, *, settings: AlignSettings, extra: dict | None,
                     where: str) -> Alignment:
     """:func:`align_robust` of a text in ``settings.language`` (not English): each word as a
@@ -265,12 +274,12 @@ def _align_language(samples: np.ndarray, rate: int, text: str, *, settings: Alig
     written: dict[str, str] = {}
     keys = []
     for word in words:
-        arpabet = tuple("AH0" if p == "ax" else p.upper() for p in word.phones)
+        arpabet = _arpabet(word.phones)
         key = names.setdefault((word.text.lower(),) + arpabet, f"w{len(names)}x")
         own[key] = [arpabet]
         written.setdefault(key, word.text)
         keys.append(key)
-    english = replace(settings, language="en")
+    english = replace(settings, language="en", dictionary="")  # the words are already pronounced
     result = align_robust(samples, rate, " ".join(keys + marks), settings=english, extra=own, where=where)
     result.words = [Segment(w.start, w.end, written.get(w.label, w.label)) for w in result.words]
     return result
