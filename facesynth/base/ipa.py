@@ -217,8 +217,9 @@ def _manner_distance(a: Features, b: Features) -> float:
 
 def features(phone: str) -> Features:
     """The features of an IPA phone (length and nasality marks and the marks of ``_IGNORED``
-    read; a sequence of vowel symbols not in :data:`IPA` read as a diphthong of its first and
-    last). Raises KeyError for a symbol the table lacks."""
+    read, so an affricate's tie bar too; a sequence of vowel symbols not in :data:`IPA` read as a
+    diphthong of its first and last). Raises KeyError for a symbol the table lacks (:func:`split`
+    reads a sequence of phones)."""
     return _features(unicodedata.normalize("NFD", phone))
 
 
@@ -234,11 +235,33 @@ def _features(phone: str) -> Features:
         base = IPA[core]
     elif core and all(ch in IPA and IPA[ch].vowel for ch in core):
         base = _d(IPA[core[0]], IPA[core[-1]]) if len(core) > 1 else IPA[core]
-    elif len(core) > 1 and core[:2] in IPA:  # an affricate written with its tie
-        base = IPA[core[:2]]
     else:
         raise KeyError(phone)
     return replace(base, nasal=base.nasal or nasal, long=base.long or long)
+
+
+def split(phone: str) -> tuple[str, ...]:
+    """``phone`` as phones :func:`features` describes: itself when it does, else its symbols
+    split into the longest described pieces, each with the marks that follow it (gruut writes
+    Spanish /we/ as one ``we``); KeyError when no split describes every piece."""
+    if known(phone):
+        return (phone,)
+    text = unicodedata.normalize("NFD", phone)
+    pieces: list[str] = []
+    i = 0
+    while i < len(text):
+        for j in range(len(text), i, -1):
+            end = j
+            while end < len(text) and (unicodedata.combining(text[end]) or text[end] in _IGNORED or text[end] in _LENGTH):
+                end += 1
+            piece = unicodedata.normalize("NFC", text[i:end])
+            if known(piece) and (j - i > 1 or text[i] not in _IGNORED):
+                pieces.append(piece)
+                i = end
+                break
+        else:
+            raise KeyError(phone)
+    return tuple(pieces)
 
 
 def known(phone: str) -> bool:

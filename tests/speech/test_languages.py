@@ -301,3 +301,33 @@ def test_an_english_line_reads_the_users_ipa_dictionary_first(mandarin_clip, tmp
     phones = [s.label for s in read_textgrid(out)["phones"] if s.label != "pau"]
     assert phones[-8:] == ["z", "ao", "r", "b", "l", "ae", "k", "s"]
     assert [w.label for w in read_textgrid(out)["words"]] == ["the", "zorblax"]
+
+
+@pytest.mark.parametrize("tag", ["de", "fr", "es"])
+def test_every_phone_of_a_gruut_lexicon_has_its_articulation(tag):
+    """The feature table covers the phone inventory of each installed pack's lexicon (its
+    word_phonemes table), a phone written as several (Spanish ``we``) split into its parts."""
+    import sqlite3
+    from importlib import resources
+
+    from facesynth.base.ipa import split
+    from facesynth.domain.speech.languages import _PAUSES
+
+    if importlib.util.find_spec(f"gruut_lang_{tag}") is None:
+        pytest.skip(f"gruut's {tag} pack is not installed (pip install 'facesynth[languages]')")
+    lexicon = resources.files(f"gruut_lang_{tag}").joinpath("lexicon.db")
+    if not lexicon.is_file():
+        pytest.skip(f"gruut's {tag} pack has no lexicon.db here")
+    with resources.as_file(lexicon) as path:
+        con = sqlite3.connect(f"file:{path}?mode=ro", uri=True)
+        inventory = {p for (row,) in con.execute("SELECT phonemes FROM word_phonemes") for p in row.split()}
+        con.close()
+    assert len(inventory) > 30
+    for phone in inventory - _PAUSES:
+        assert all(features(p) for p in split(phone)), phone
+
+
+@GRUUT
+@_pack("es")
+def test_a_phone_written_as_two_is_read_as_two():
+    assert _word("Es bueno.", "es", "bueno").ipa == ("b", "w", "e", "n", "o")

@@ -30,7 +30,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from facesynth.base.errors import InputError
-from facesynth.base.ipa import features, known, nearest_festival
+from facesynth.base.ipa import features, nearest_festival, split
 from facesynth.base.registry import G2P_BACKENDS
 
 #: Non-speech in a transcript ([breath], <noise>, {cough}): not words (as in the English aligner).
@@ -86,17 +86,26 @@ def words_of(text: str, language: str, dictionary: str = "", where: str = "the t
     backend = G2P_BACKENDS.get(backend_for(language))
     text = _NON_SPEECH.sub(" ", unicodedata.normalize("NFC", text))
     out = []
-    for written, ipa in backend(text, tag):
-        ipa = own.get(written.lower(), ipa)
+    for written, given in backend(text, tag):
+        given = own.get(written.lower(), given)
+        ipa: list[str] = []
+        for phone in given:
+            if phone in _PAUSES:  # a lexicon's silence inside a word
+                continue
+            try:
+                ipa += split(phone)
+            except KeyError:
+                raise InputError(f"{where}: the phone {phone!r} of {written!r} has no known articulation; give the "
+                                 "word's pronunciation in align.dictionary with the phones of facesynth.base.ipa.") from None
         if not ipa:
             raise InputError(f"{where}: no pronunciation for {written!r} in language {language!r}; give one in "
                              "align.dictionary (lines 'word  IPA phones').")
-        for phone in ipa:
-            if not known(phone):
-                raise InputError(f"{where}: the phone {phone!r} of {written!r} has no known articulation; give the "
-                                 "word's pronunciation in align.dictionary with the phones of facesynth.base.ipa.")
         out.append(Word(written, tuple(ipa), tuple(nearest_festival(p) for p in ipa)))
     return out
+
+
+#: Labels of silence some lexicons write among a word's phones (gruut's French ``SIL``).
+_PAUSES = frozenset({"SIL", "sil", "_", "|", "‖", "#"})
 
 
 def read_dictionary(path: Path) -> dict[str, tuple[str, ...]]:
@@ -114,12 +123,20 @@ def read_dictionary(path: Path) -> dict[str, tuple[str, ...]]:
         if not line:
             continue
         word, *phones = line.split()
-        bad = [p for p in phones if not known(p)]
+        bad = [p for p in phones if not _splits(p)]
         if not phones or bad:
             what = f"unknown IPA phone {bad[0]!r}" if bad else "no phones"
             raise InputError(f"{path}, line {n}: {what}; write 'word  IPA phones' with the phones separated by spaces.")
         out.setdefault(word.lower(), tuple(phones))
     return out
+
+
+def _splits(phone: str) -> bool:
+    try:
+        split(phone)
+    except KeyError:
+        return False
+    return True
 
 
 # --- gruut ---------------------------------------------------------------------------------------
