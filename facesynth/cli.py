@@ -45,6 +45,18 @@ class RegistryChoice(click.Choice):
         pass
 
 
+#: ``--language``'s help (align, synthesize).
+LANGUAGE_HELP = ("The text's language, a BCP-47 tag (en, de, fr, es, it, pt, nl, ru, cmn, ...; default "
+                 "align.language, English); without a text, audio in another language is decoded as phones.")
+
+
+def _with_language(settings, language: str | None):
+    """The ``[align]`` settings with ``--language`` in force (None: as configured)."""
+    import dataclasses
+
+    return settings if language is None else dataclasses.replace(settings, language=language)
+
+
 def _fitted(entry: Entry) -> bool:
     return bool(entry.facts.get("fitted"))
 
@@ -336,9 +348,11 @@ def sample_corpus_cmd(ctx: Context, out_dir: Path, preset: str, seed: int):
 @click.option("--text", default=None, help="What is said (without it or --transcript: recognised from the audio).")
 @click.option("--transcript", type=EXISTING, default=None, help="A file holding what is said.")
 @click.option("--dict", "dict_path", type=EXISTING, default=None, help="Extra pronunciations: lines 'word  W ER D'.")
+@click.option("--language", default=None, help=LANGUAGE_HELP)
 @click.option("-o", "--output", type=PATH, required=True, help="Output TextGrid.")
 @stage
-def align(ctx: Context, audio: Path, text: str | None, transcript: Path | None, dict_path: Path | None, output: Path):
+def align(ctx: Context, audio: Path, text: str | None, transcript: Path | None, dict_path: Path | None,
+          language: str | None, output: Path):
     """Forced-align speech to its text; writes a phone TextGrid in the Festival phone set.
 
     AUDIO is any sound file or video with sound that ffmpeg reads (WAV, FLAC, M4A, MP3, Opus,
@@ -359,7 +373,7 @@ def align(ctx: Context, audio: Path, text: str | None, transcript: Path | None, 
     if text is not None and transcript is not None:
         raise UsageError("give one of --text or --transcript, not both.")
     summary = stage_align.run(audio, text if transcript is None else stage_align.read_transcript(transcript), output,
-                              ctx.config.settings("align"), dict_path, ctx.overwrite)
+                              _with_language(ctx.config.settings("align"), language), dict_path, ctx.overwrite)
     if summary.recognized:
         ctx.say(f"recognised: {summary.recognized}")
     for reason in summary.attempts:
@@ -489,6 +503,7 @@ def build_db(ctx: Context, pca_path: Path, output: Path):
                    "with --phonemes its timing; the voice shapes the mouth too (synthesize.voice_recognized, "
                    "synthesize.voice_given).")
 @click.option("--text", default=None, help="What --audio says.")
+@click.option("--language", default=None, help=LANGUAGE_HELP)
 @click.option("--emotions", type=EXISTING, default=None, help="Emotion spans: 'start_s end_s emotion' lines, or a TextGrid tier 'emotions'.")
 @click.option("--constraints", type=EXISTING, default=None, help="Motion-node constraints: 'INDEX NODE' or 'TIMEs NODE' lines (dp only).")
 @click.option("--search", type=click.Choice(choices("synthesize", "search")), default=None, help="Search (default: synthesize.search).")
@@ -496,8 +511,8 @@ def build_db(ctx: Context, pca_path: Path, output: Path):
               help="Head motion from `facesynth head-motion` to put on the output instead of the source takes'.")
 @click.option("-o", "--output", type=PATH, required=True, help="Output motion.h5.")
 @stage
-def synthesize(ctx: Context, db: Path, method, phonemes, audio, text, emotions, constraints, search, head_motion_path,
-               output: Path):
+def synthesize(ctx: Context, db: Path, method, phonemes, audio, text, language, emotions, constraints, search,
+               head_motion_path, output: Path):
     """Synthesize expressive marker motion for a new utterance (paper VI, Algorithm 1).
 
     --method picks the member of the method family: dp (the default; --search greedy or
@@ -523,7 +538,8 @@ def synthesize(ctx: Context, db: Path, method, phonemes, audio, text, emotions, 
     name = core.chosen_method(method, search, settings.synthesize.search)
     if search:
         settings = dataclasses.replace(settings, synthesize=dataclasses.replace(settings.synthesize, search=search))
-    s = stage.run(db, output, settings, ctx.config.settings("ingest"), ctx.config.settings("align"), method=name,
+    s = stage.run(db, output, settings, ctx.config.settings("ingest"),
+                  _with_language(ctx.config.settings("align"), language), method=name,
                   phones_path=phonemes, emotions_path=emotions, constraints_path=constraints, audio=audio, text=text,
                   head_motion_path=head_motion_path, overwrite=ctx.overwrite)
     on_database = not _fitted(METHODS.entry(s.method))

@@ -26,7 +26,7 @@ from __future__ import annotations
 import contextlib
 import os
 from collections.abc import Iterator, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
@@ -212,15 +212,20 @@ def utterance_from_phones(phones: StrPath | Sequence[tuple[str, float, float]], 
 
 def utterance_from_audio(audio: StrPath, text: str | None = None, *,
                          emotions: StrPath | Sequence[tuple[float, float, str]] | None = None,
-                         config: Config | None = None) -> Utterance:
+                         language: str | None = None, config: Config | None = None) -> Utterance:
     """An utterance from speech (any sound file or video with sound ffmpeg reads: WAV, M4A, MP3,
-    Opus, MP4, ...): aligned to ``text``, what it says, or without text
-    recognised from the audio (English), as ``synthesize --audio [--text]``. A transcript that
+    Opus, MP4, ...): aligned to ``text``, what it says, or without text recognised from the audio,
+    as ``synthesize --audio [--text] [--language]``. ``language``: a BCP-47 tag (``de``, ``fr``,
+    ``cmn``...; None: ``align.language``, English by default); without a text, audio in another
+    language is decoded as phones, not English words. A transcript that
     does not match the speech is a warning (:attr:`Utterance.warnings`), not an error.
     ``emotions`` as for :func:`utterance_from_phones`."""
     cfg = _config(config)
+    align = cfg.settings("align")
+    if language is not None:
+        align = replace(align, language=language)
     with _limits(cfg):
-        data = core.read_utterance(cfg.settings("ingest"), audio=Path(audio), text=text, align=cfg.settings("align"),
+        data = core.read_utterance(cfg.settings("ingest"), audio=Path(audio), text=text, align=align,
                                    **_emotions(emotions))
     return Utterance(data, None, _file(emotions), Path(audio))
 

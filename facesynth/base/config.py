@@ -142,6 +142,11 @@ class AlignSettings:
     activity_floor_db: float = setting("not in the paper: voice activity, above the noise floor", unit="dB", ge=0)
     recognition: str = setting("not in the paper: how audio without a text is turned into phones (recognised words "
                                "then aligned, or a phone loop)", choices=("words", "phones"))
+    language: str = setting("not in the paper: the language of the text (a BCP-47 tag: en, de, fr, es, cmn, ...); "
+                            "another than English is read by a G2P backend and its phones mapped to the nearest "
+                            "English phones by articulation")
+    dictionary: str = setting("not in the paper: the user's pronunciations, lines 'word  IPA phones', read before the "
+                              "dictionary or G2P backend; {language} in the path is the language's tag; empty: none")
 
 
 @dataclass(frozen=True)

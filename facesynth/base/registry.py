@@ -1,8 +1,9 @@
 """Registries: the extension points of facesynth as tables of named members.
 
-Four families can grow without touching the code that uses them: synthesis methods
+Five families can grow without touching the code that uses them: synthesis methods
 (:data:`METHODS`), export formats (:data:`EXPORT_FORMATS`, also the outputs of ``batch``),
-capture readers (:data:`CAPTURE_READERS`) and artifact kinds (:data:`ARTIFACT_KINDS`). A member
+capture readers (:data:`CAPTURE_READERS`), artifact kinds (:data:`ARTIFACT_KINDS`) and the
+grapheme-to-phoneme backends of languages other than English (:data:`G2P_BACKENDS`). A member
 is registered by one line where its family is defined (the family's package ``__init__``), naming
 the module and attribute that implement it (``"module:attribute"``), a one-line summary and the
 facts the command line needs about it. The member's module is imported only when the member is
@@ -144,6 +145,11 @@ EXPORT_FORMATS = Registry("export format", "facesynth.domain.exports")
 CAPTURE_READERS = Registry("capture format", "facesynth.domain.capture")
 #: Artifact kinds: ``target`` its :class:`facesynth.model.spec.Kind` (which holds its schema).
 ARTIFACT_KINDS = Registry("artifact kind", "facesynth.model")
+#: Grapheme-to-phoneme backends (text in a language other than English, ``align.language``):
+#: ``target`` a function ``(text, language) -> [(word, IPA phones), ...]``; facts: ``languages``
+#: (the primary language subtags it may read), ``installed`` (a function ``language -> bool``:
+#: whether the packages it needs for that language are installed), ``needs`` (the optional extra).
+G2P_BACKENDS = Registry("G2P backend", "facesynth.domain.speech.languages")
 
 
 #: The registries by the name their docs tables use, with the facts each table shows (column

@@ -1,7 +1,7 @@
 """``facesynth ingest``: a manifest of takes -> the ``corpus`` artifact (paper III).
 
 The manifest is a CSV with the columns ``take, mocap, audio, alignment, transcript,
-emotion, sentence, split`` and, for takes that need them, ``mapping, names, fps`` (paths
+emotion, sentence, split, language`` and, for takes that need them, ``mapping, names, fps`` (paths
 relative to the manifest); only ``take`` and ``mocap`` are required. ``mocap`` names a take of
 any registered capture format (:func:`facesynth.domain.capture.readers.read_capture`): markers,
 a Live Link Face CSV, another rig's curves (with ``mapping``, and ``names`` and ``fps`` for a
@@ -10,7 +10,8 @@ pose ``--rig`` (the built-in rig by default); when every take was posed, their r
 head pose are recorded with the markers.
 
 A take with an empty ``alignment`` and a ``transcript`` is aligned with
-:mod:`facesynth.domain.speech.alignment`; one with audio and neither gets its phones recognised
+:mod:`facesynth.domain.speech.alignment` (in its ``language``, a BCP-47 tag; empty:
+``align.language``); one with audio and neither gets its phones recognised
 from the audio (:func:`facesynth.domain.speech.recognition.recognize`, ``ingest.recognize_phones``),
 as ``synthesize --audio`` does (audio in which no speech is found leaves the take without
 phones, with a warning). A take without audio and alignment has no phones, and one without
@@ -81,6 +82,7 @@ class ManifestRow:
     mapping: Path | None = None
     names: Path | None = None
     fps: float | None = None
+    language: str = ""
 
 
 def read_manifest(path: Path, settings: IngestSettings) -> list[ManifestRow]:
@@ -135,6 +137,7 @@ def read_manifest(path: Path, settings: IngestSettings) -> list[ManifestRow]:
                 base / alignment if alignment else None, transcript, emotion,
                 (raw.get("sentence") or take).strip(), split,
                 base / mapping if mapping else None, base / names if names else None, fps,
+                (raw.get("language") or "").strip(),
             ))
     if not rows:
         raise InputError(f"{path}: the manifest lists no takes.")
@@ -281,11 +284,13 @@ def ingest(rows: list[ManifestRow], settings: IngestSettings, align_settings: Al
                                  f"{settings.max_audio_mismatch_s:g} s).")
         segs: list[Segment] = []
         source = str(row.alignment or row.audio or row.mocap)
+        # the take's language column, else align.language
+        take_align = replace(align_settings, language=row.language) if row.language else align_settings
         if row.alignment is not None or row.transcript:
-            segs = _segments_for(row, settings, align_settings, samples, rate, where)
+            segs = _segments_for(row, settings, take_align, samples, rate, where)
             check_segments(segs, source)
         elif rate is not None and settings.recognize_phones:  # audio alone: the phones recognised from it
-            segs = _recognized(samples, rate, align_settings, source)
+            segs = _recognized(samples, rate, take_align, source)
             if segs:
                 recognized.append(row.take)
                 check_segments(segs, source)

@@ -418,3 +418,27 @@ def test_lines_of_coded_speech_give_the_wavs_motion(tiny_corpus, tiny_db, takes,
         sound, rate = sf.read(tmp_path / "gl" / "g.wav")
         assert sf.info(tmp_path / "gl" / "g.wav").format == "WAV" and rate == 16000
         assert abs(len(sound) - sf.info(coded_speech["wav"]).frames) <= 16
+
+
+@pytest.mark.skipif(importlib.util.find_spec("gruut_lang_fr") is None,
+                    reason="gruut's French pack is not installed (pip install 'facesynth[languages]')")
+def test_a_language_column_reads_each_line_in_its_language(tiny_corpus, tiny_db, takes, config, client, tmp_path):
+    from facesynth.formats.labels import read_textgrid
+
+    a = takes["neutral_s001"]
+    audio = str(tiny_corpus / a["audio"])
+    script = _write(tmp_path / "script.csv", [
+        ("id", "audio", "text", "language"),
+        ("french", audio, "Papa boit une pomme.", "fr"),
+        ("english", audio, a["transcript"], ""),
+        ("klingon", audio, "Qapla'", "tlh"),
+    ])
+    out = tmp_path / "out"
+    s = batch.run(script, tiny_db, out, *_settings(config), client=client)
+    status = {r.id: (r.status, r.reason) for r in s.results}
+    assert status["french"][0] == status["english"][0] == "ok"
+    assert status["klingon"][0] == "failed" and "language 'tlh': no G2P backend reads it" in status["klingon"][1]
+    words = [w.label for w in read_textgrid(out / "french.TextGrid")["words"]]
+    assert words == ["Papa", "boit", "une", "pomme"]
+    english = [w.label for w in read_textgrid(out / "english.TextGrid")["words"]]
+    assert english == a["transcript"].lower().split()

@@ -30,7 +30,7 @@ import hashlib
 import json
 import os
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 from facesynth import __version__
@@ -71,6 +71,11 @@ from .script import Line
 OWN_SUFFIXES = {"motion": ".motion.h5", "curves": ".curves.h5", "avi": ".avi", "anim": ".anim.h5"}
 #: Earlier names of outputs, kept for a while with a warning.
 DEPRECATED_OUTPUTS = {"arkit": "arkit-csv"}
+
+
+def line_align(align: AlignSettings, line: Line) -> AlignSettings:
+    """The ``[align]`` settings of ``line``: its ``language`` cell in force when it has one."""
+    return replace(align, language=line.language) if line.language else align
 
 
 def suffix(output: str) -> str:
@@ -232,7 +237,7 @@ def input_key(line: Line, job: Job) -> dict:
                outputs=sorted(job.outputs), version=__version__, method=job.method,
                settings={"synthesize": settings_json(job.settings.synthesize), "ingest": settings_json(job.ingest),
                          "method": settings_json(methods.get(job.method).recorded_settings(job.settings)),
-                         "align": settings_json(job.align) if line.alignment is None else "",
+                         "align": settings_json(line_align(job.align, line)) if line.alignment is None else "",
                          "deform": settings_json(job.deform) if "anim" in job.outputs else "",
                          "render": settings_json(job.render) if "avi" in job.outputs else "",
                          "solve": settings_json(job.solve) if rig_outputs and job.solve is not None else "",
@@ -368,7 +373,7 @@ def _do_line(line: Line, job: Job, emotion: str, audio: Path, key: dict, outputs
                                    emotions_path=line.emotions, emotion=one_emotion, samples=(samples, rate))
         result.method = "given"
     else:  # a line without text is recognised (the script reader makes an empty cell None)
-        read = core.read_utterance(job.ingest, audio=audio, text=line.text, align=job.align,
+        read = core.read_utterance(job.ingest, audio=audio, text=line.text, align=line_align(job.align, line),
                                    emotions_path=line.emotions, emotion=one_emotion, samples=(samples, rate))
         assert read.alignment is not None  # audio is aligned or recognised
         result.method, result.recognized = read.alignment.method, read.alignment.recognized

@@ -11,7 +11,10 @@ Columns (header names are case-insensitive; others are ignored):
   given (before any text);
 - ``emotion`` (optional): one emotion for the whole line (default ``neutral``), or
   ``emotions``: a per-phone emotion file (``start_s end_s emotion`` lines or a TextGrid tier);
-- ``constraints`` (optional): a motion-node constraint file, as for ``synthesize``.
+- ``constraints`` (optional): a motion-node constraint file, as for ``synthesize``;
+- ``language`` (optional): the line's language, a BCP-47 tag (``de``, ``fr``, ``cmn``...; an empty
+  cell: ``align.language``), for its text (:mod:`facesynth.domain.speech.languages`) or, without a
+  text, its audio (decoded as phones, not English words).
 
 File paths are relative to the script's folder. A file that lacks the required columns is
 refused before any work; a bad row (a missing file, an unknown emotion, a
@@ -28,7 +31,7 @@ from pathlib import Path
 from facesynth.base.errors import InputError
 
 REQUIRED = ("id", "audio")
-OPTIONAL = ("text", "alignment", "emotion", "emotions", "constraints")
+OPTIONAL = ("text", "alignment", "emotion", "emotions", "constraints", "language")
 _ID = re.compile(r"[A-Za-z0-9][A-Za-z0-9._-]{0,127}")
 
 
@@ -49,6 +52,7 @@ class Line:
     emotions: Path | None
     constraints: Path | None
     problem: str | None = None
+    language: str | None = None
 
     @property
     def where(self) -> str:
@@ -103,7 +107,8 @@ def read_script(path: Path) -> list[Line]:
         else:
             seen[line_id] = number
         lines.append(Line(line_id, number, file("audio"), cell("text") or None, file("alignment"),
-                          cell("emotion") or None, file("emotions"), file("constraints"), problem))
+                          cell("emotion") or None, file("emotions"), file("constraints"), problem,
+                          cell("language") or None))
     if not lines:
         raise InputError(f"{path}: the script has a header but no lines.")
     return lines

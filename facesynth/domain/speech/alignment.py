@@ -29,20 +29,28 @@ not match the speech shows as long stretches of voice activity labelled ``pau``;
 longest is measured and reported as a warning above ``align.max_voiced_pause_s``.
 Non-speech marked in the transcript (``[breath]``, ``[laugh]``, ``<noise>``, ``{cough}``)
 is not a word: the aligner places it as pause.
+
+A text in another language (``align.language``) is read by its G2P backend
+(:mod:`facesynth.domain.speech.languages`), each phone mapped to the nearest English phone by its
+articulation; its words enter the English acoustic model's dictionary under names of their own
+with those phones, and are aligned by the same methods (cross-language forced alignment). The
+word tier names the words as written.
 """
 
 from __future__ import annotations
 
 import logging
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import numpy as np
 
 from facesynth.base.config import AlignSettings
 from facesynth.base.errors import InputError
+from facesynth.base.ipa import nearest_festival
 from facesynth.base.phonemes import PAU, pronunciations, to_festival, typical_duration
+from facesynth.domain.speech.languages import is_english, primary, read_dictionary, words_of
 from facesynth.formats.audio import resample
 from facesynth.formats.labels import Segment
 
@@ -164,7 +172,12 @@ def align_robust(samples: np.ndarray, rate: int, text: str, *, settings: AlignSe
     have no pronunciation (a ``--dict`` fixes it), and :class:`AlignmentFailed` when the audio
     is too short for the text or no method places every word.
     """
+    if not is_english(settings.language):
+        return _align_language(samples, rate, text, settings=settings, extra=extra, where=where)
     extra = extra or {}
+    if settings.dictionary:  # the user's IPA pronunciations, as the nearest English phones (--dict's first)
+        own = read_dictionary(Path(settings.dictionary.replace("{language}", primary(settings.language) or "en")))
+        extra = {**{w: [_arpabet(tuple(nearest_festival(p) for p in ipa))] for w, ipa in own.items()}, **extra}
     words = normalize_text(text)
     marks = non_speech_marks(text)
     if not words and marks:  # only non-speech ("[laugh]"): all of it is pause
@@ -239,6 +252,37 @@ def align_robust(samples: np.ndarray, rate: int, text: str, *, settings: AlignSe
         return result
     raise AlignmentFailed(f"{where}: no alignment method placed every word ({'; '.join(attempts)}); "
                           "check that the text matches the speech.")
+
+
+def _arpabet(phones) -> tuple[str, ...]:
+    """Festival phones as the CMU dictionary's ARPAbet (the schwa as unstressed ``AH0``)."""
+    return tuple("AH0" if p == "ax" else p.upper() for p in phones)
+
+
+def _align_language(samples: np.ndarray, rate: int, text: str, *, settings: AlignSettings, extra: dict | None,
+                    where: str) -> Alignment:
+    """:func:`align_robust` of a text in ``settings.language`` (not English): each word as a
+    decoder word of its own (``w0x``, ``w1x``, ...: names no English word has) pronounced by the
+    nearest English phones of its IPA phones, aligned as English, the word tier relabelled."""
+    if extra:
+        raise InputError(f"{where}: --dict gives English (ARPAbet) pronunciations; for language "
+                         f"{settings.language!r} give 'word  IPA phones' lines in align.dictionary.")
+    words = words_of(text, settings.language, settings.dictionary, where)
+    marks = non_speech_marks(text)
+    names: dict[tuple[str, ...], str] = {}
+    own: dict[str, list[tuple[str, ...]]] = {}
+    written: dict[str, str] = {}
+    keys = []
+    for word in words:
+        arpabet = _arpabet(word.phones)
+        key = names.setdefault((word.text.lower(),) + arpabet, f"w{len(names)}x")
+        own[key] = [arpabet]
+        written.setdefault(key, word.text)
+        keys.append(key)
+    english = replace(settings, language="en", dictionary="")  # the words are already pronounced
+    result = align_robust(samples, rate, " ".join(keys + marks), settings=english, extra=own, where=where)
+    result.words = [Segment(w.start, w.end, written.get(w.label, w.label)) for w in result.words]
+    return result
 
 
 def voice_activity(audio: np.ndarray, settings: AlignSettings) -> np.ndarray:

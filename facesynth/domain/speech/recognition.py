@@ -34,6 +34,7 @@ from facesynth.formats.audio import resample
 from facesynth.formats.labels import Segment
 
 from .alignment import Alignment, AlignmentFailed, align_robust, pcm16, tile, voice_activity
+from .languages import is_english
 
 #: The recognition modes of ``align.recognition``.
 MODES = ("words", "phones")
@@ -61,7 +62,8 @@ def recognize(samples: np.ndarray, rate: int, *, settings: AlignSettings, extra:
     duration = len(audio) / settings.sample_rate
     if not voice_activity(audio, settings).any():
         raise AlignmentFailed(_no_speech(where, "it has no voice activity"))
-    if settings.recognition == "phones":
+    # in another language than English the word recogniser would invent English words: phones only
+    if settings.recognition == "phones" or not is_english(settings.language):
         phones, attempts = _recognize_phones(audio, settings)
         if not phones:
             raise AlignmentFailed(_no_speech(where, "the phone recogniser found no phone"))
