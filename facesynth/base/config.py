@@ -117,10 +117,12 @@ class IngestSettings:
                                 "gives none; 0: none", unit="frames/s", ge=0, le=2000)
     live_link_max_gap_s: float = setting("not in the paper: Live Link Face rows further apart leave a gap instead of "
                                          "being interpolated", unit="s", gt=0, le=10)
-    neutral: str = setting("not in the paper: the performer's neutral face in a take posed from curves, taken off "
-                           "its weights: auto, off, frame:N or time:SECONDSs")
     video_eye_corners_mm: float = setting("not in the paper: a video take's scale, the distance between the outer eye "
                                           "corners (adult biocular width 87-91 mm)", unit="mm", gt=0, le=1000)
+    neutral: str = setting("not in the paper: the performer's neutral face in another rig's curves, taken off "
+                           "their weights: auto, off, frame:N or time:SECONDSs")
+    live_link_neutral: str = setting("not in the paper: the same for a Live Link Face take (ARKit measures from the "
+                                     "performer's face already): auto, off, frame:N or time:SECONDSs")
 
 
 @dataclass(frozen=True)

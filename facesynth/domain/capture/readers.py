@@ -41,8 +41,9 @@ class CaptureOptions:
     rate (None: from the file). face_width_mm : a video's scale (outer eye corners).
     max_interpolated_s : a Live Link Face take's longest stretch between rows that is
     interpolated. need_audio : a video must carry sound (False when the manifest gives the
-    take's audio). neutral : a take posed from curves has the performer's neutral weights taken
-    off (:mod:`facesynth.domain.rig.neutral`; None: not)."""
+    take's audio). neutral : another rig's curves have the performer's neutral weights taken
+    off (:mod:`facesynth.domain.rig.neutral`; None: not); live_link_neutral : a Live Link Face
+    take likewise."""
 
     rig: Rig | None = None
     mapping: Path | None = None
@@ -52,6 +53,7 @@ class CaptureOptions:
     max_interpolated_s: float = MAX_INTERPOLATED_S
     need_audio: bool = True
     neutral: NeutralChoice | None = None
+    live_link_neutral: NeutralChoice | None = None
 
 
 @dataclass(frozen=True)

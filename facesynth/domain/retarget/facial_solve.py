@@ -92,10 +92,15 @@ def settings_for(motion_path: Path, settings: SolveSettings) -> tuple[SolveSetti
 def read_motion(motion_path: Path, settings: SolveSettings, take: str | None = None) -> Motion:
     """What ``solve`` solves from ``motion_path``: a ``motion`` artifact (with its search path and
     provenance), or the take ``take`` of a ``normalized`` one (:func:`take_motion`, at
-    ``settings.output_fps``)."""
+    ``settings.output_fps``, measured from the performer's neutral face ``settings.neutral``
+    unless it was posed from curves, whose neutral ``ingest`` took off)."""
     if artifact_kind(motion_path) == NormalizedFrames.KIND:
+        neutral = NeutralChoice.parse(settings.neutral, "solve.neutral")
+        # a capture posed from curves rests at the rig's neutral by construction; its performer's
+        # neutral was taken off its weights at ingest (ingest.neutral)
+        posed = NormalizedFrames.read_posed(motion_path)
         return take_motion(NormalizedFrames.read(motion_path), take, settings.output_fps, str(motion_path),
-                           NeutralChoice.parse(settings.neutral, "solve.neutral"))
+                           None if posed else neutral)
     if take is not None:
         raise InputError(f"{motion_path}: --take picks a take of a normalized capture; a motion artifact has one.")
     return Motion.read(motion_path, search=True)

@@ -217,11 +217,11 @@ def _solve_curves(frames: np.ndarray, basis: np.ndarray, *, smooth: float, ridge
     weight moved by more than ``tolerance`` in an iteration, or after ``iterations``. ``initial``
     ((E,) or (T, E)) starts the iterations there instead of at 0 (a live stream starts each batch
     of frames at the weights of the frame before: the same minimum, fewer iterations).
-    ``priors`` (:class:`FacePriors`) adds what a face does: ``sparsity`` times ``sum |w|`` (an
-    L1 term: a channel stays at 0 unless it explains more than that share of its own full
-    displacement), ``antagonist`` times ``sum w_i w_j`` over opposing pairs (not both on), and
-    ``symmetry`` times ``sum (w_l - w_r)^2`` over mirrored pairs, all relative to the mean squared
-    norm of a basis row. The temporal term is part of the one solve over all frames, so it
+    ``priors`` (:class:`FacePriors`) adds what a face does: ``sparsity`` times ``sum |w_e|`` (an
+    L1 term: a channel stays at 0 unless it explains more than about that share of its own full
+    displacement, or of the mean shape's for a shape smaller than the mean), ``antagonist`` times ``sum w_i w_j`` over opposing pairs (not both on), and
+    ``symmetry`` times ``sum (w_l - w_r)^2`` over mirrored pairs, each relative to the squared
+    norm of its channel's basis row (a pair's: the geometric mean of the two). The temporal term is part of the one solve over all frames, so it
     smooths without lag (zero phase), unlike a causal filter.
     Returns weights (T, E) float64 in [0, 1], the per-frame RMS marker residual (T,) (NaN where no
     marker was seen) and the iterations run.
@@ -235,13 +235,23 @@ def _solve_curves(frames: np.ndarray, basis: np.ndarray, *, smooth: float, ridge
     lam_s, lam_r = smooth * scale, ridge * scale
     t_count = len(d)
     pr = priors or FacePriors()
-    l1 = pr.sparsity * scale
+    # The face's priors are per channel: relative to each channel's own squared norm (a pair's:
+    # the geometric mean of its two), so a large shape (the jaw) is judged by its own size. The
+    # L1 term takes at least the mean norm: a small shape (a blink or gaze, 2-3 mm at the
+    # markers) would otherwise turn a tracker's millimetre of noise into half a weight.
+    own = (a**2).sum(1)  # (E,)
+    l1 = pr.sparsity * np.maximum(own, scale)
     ant_i, ant_j = (np.array(x, np.int64) for x in (zip(*pr.antagonists) if pr.antagonists else ((), ())))
     sym_i, sym_j = (np.array(x, np.int64) for x in (zip(*pr.symmetric) if pr.symmetric else ((), ())))
-    lam_a, lam_y = pr.antagonist * scale * bool(len(ant_i)), pr.symmetry * scale * bool(len(sym_i))
+    lam_a = pr.antagonist * np.sqrt(own[ant_i] * own[ant_j])
+    lam_y = pr.symmetry * np.sqrt(own[sym_i] * own[sym_j])
     # Lipschitz constant of the gradient: |A|^2 (masks only shrink it) + 4 smooth (path Laplacian) + ridge,
-    # + the antagonist coupling (each channel in at most a few pairs) + 4 symmetry.
-    lip = np.linalg.norm(a, 2) ** 2 + 4 * lam_s + lam_r + 4 * lam_a + 4 * lam_y
+    # + the antagonist coupling and the symmetry (each channel in at most a few pairs).
+    coupling = np.zeros(len(a))  # the antagonist Hessian's largest row sum bounds its norm (Gershgorin)
+    np.add.at(coupling, ant_i, lam_a)
+    np.add.at(coupling, ant_j, lam_a)
+    lip = np.linalg.norm(a, 2) ** 2 + 4 * lam_s + lam_r + float(coupling.max(initial=0.0)) \
+        + 4 * float(lam_y.max(initial=0.0))
     step = 1.0 / lip
     w = np.zeros((t_count, len(a))) if initial is None else np.clip(np.broadcast_to(initial, (t_count, len(a))), 0.0, 1.0)
     y, theta = w.copy(), 1.0
@@ -261,10 +271,10 @@ def _solve_curves(frames: np.ndarray, basis: np.ndarray, *, smooth: float, ridge
             diff = np.diff(y, axis=0)
             grad[1:] += lam_s * diff
             grad[:-1] -= lam_s * diff
-        if lam_a > 0:
+        if len(ant_i) and pr.antagonist > 0:
             np.add.at(grad, (slice(None), ant_i), lam_a * y[:, ant_j])
             np.add.at(grad, (slice(None), ant_j), lam_a * y[:, ant_i])
-        if lam_y > 0:
+        if len(sym_i) and pr.symmetry > 0:  # mirrored pairs are disjoint: plain indexing adds once
             gap = 2 * lam_y * (y[:, sym_i] - y[:, sym_j])
             grad[:, sym_i] += gap
             grad[:, sym_j] -= gap
@@ -291,7 +301,7 @@ def _solve_curves(frames: np.ndarray, basis: np.ndarray, *, smooth: float, ridge
 class FacePriors:
     """What :func:`solve_curves` knows of a face (see it): ``sparsity`` (L1), ``antagonist``
     (opposing pairs ``antagonists`` not both on), ``symmetry`` (mirrored pairs ``symmetric``
-    alike), weights relative to the mean squared norm of a basis row; pairs index the basis's
+    alike), weights relative to each channel's squared norm (see :func:`_solve_curves`); pairs index the basis's
     rows (:mod:`facesynth.domain.retarget.face_priors` finds them from a rig's shape names)."""
 
     sparsity: float = 0.0
