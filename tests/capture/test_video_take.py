@@ -139,7 +139,7 @@ def rest_and_coactivation(weights: np.ndarray, names: list[str]) -> tuple[float,
 
 
 def test_a_filmed_take_is_solved_without_bind_at_rest_and_following_the_mouth(mediapipe, tiny_corpus, held_out_take,
-                                                                              tmp_path):
+                                                                              tmp_path, capfd):
     """The actress rendered, ingested and solved on the built-in rig with no ``bind`` (the shipped
     Face Mesh binding and the take's own neutral face): at rest the rig rests (largest median
     weight of the quietest 10% <= 0.10), antagonists are not both on (<= 0.02), and the solved
@@ -153,7 +153,10 @@ def test_a_filmed_take_is_solved_without_bind_at_rest_and_following_the_mouth(me
     _run("render", tmp_path / "truth.h5", "--audio", tiny_corpus / "audio" / f"{held_out_take}.wav",
          "-o", tmp_path / "take.avi", "--set", "render.fps=25", "--set", "render.yaw_deg=0", "--set", "render.pitch_deg=0")
     (tmp_path / "manifest.csv").write_text("take,mocap\nfilmed,take.avi\n")
+    capfd.readouterr()
     _run("ingest", tmp_path / "manifest.csv", "-o", tmp_path / "corpus.h5", "--set", "ingest.recognize_phones=false")
+    quiet = capfd.readouterr()
+    assert "TensorFlow Lite" not in quiet.err + quiet.out and "W0000" not in quiet.err  # MediaPipe's own logging: -v
     _run("normalize", tmp_path / "corpus.h5", "-o", tmp_path / "normalized.h5")
     _run("solve", tmp_path / "normalized.h5", "-o", tmp_path / "curves.h5", "--set", "solve.output_fps=25")
     solved = RigCurves.read(tmp_path / "curves.h5").weights.astype(np.float64)
