@@ -812,22 +812,33 @@ def fit_articulation(ctx: Context, normalized: Path, corpus_path: Path, binding,
 @click.option("--rig", type=PATH, default=None, help=_RIG_HELP)
 @click.option("--binding", type=EXISTING, default=None, help=_BINDING_HELP)
 @click.option("--take", default=None, help="With a normalized capture: the take to solve (default: its only take).")
+@click.option("--neutral", default=None,
+              help="With a normalized capture: the performer's neutral face, which the weights are measured from: "
+                   "auto (the take's quietest half second), frame:N, time:SECONDSs, take:NAME (a neutral take) or off. "
+                   "Default: solve.neutral.")
 @click.option("-o", "--output", type=PATH, required=True, help="Output curves.h5.")
 @stage
-def solve(ctx: Context, motion: Path, rig, binding, take, output: Path):
+def solve(ctx: Context, motion: Path, rig, binding, take, neutral, output: Path):
     """Solve the rig's blendshape weights, between 0 and 1, that best explain the markers, frame by frame.
 
-    A direct facial solve with a small temporal smoothness term; the reference for retarget.
-    MOTION is a motion artifact, or a normalized capture (one take of it, at solve.output_fps).
+    A direct facial solve with a temporal smoothness term and a face's priors (sparse weights,
+    antagonists not both on, mirrored channels alike); the reference for retarget. MOTION is a
+    motion artifact, or a normalized capture (one take of it, at solve.output_fps, measured from
+    the performer's neutral face). A filmed take needs no binding on the built-in rig.
 
     \b
     Example:
       facesynth solve motion.h5 -o solved.h5
       facesynth rig-mesh solved.h5 -o solved_anim.h5
     """
+    import dataclasses
+
     from facesynth.stages import solve as stage
 
-    s = stage.run(motion, output, ctx.config.settings("solve"), rig, binding, ctx.overwrite, take)
+    settings = ctx.config.settings("solve")
+    if neutral is not None:
+        settings = dataclasses.replace(settings, neutral=neutral)
+    s = stage.run(motion, output, settings, rig, binding, ctx.overwrite, take)
     if s.exact:
         ctx.say("note: a capture posed from curves (noise-free markers) is solved without smoothing or ridge "
                 "(solve.posed_captures).")

@@ -96,15 +96,15 @@ def lip_gap(markers: np.ndarray, names: list[str]) -> np.ndarray | None:
 
 
 def _ranks(x: np.ndarray) -> np.ndarray:
-    """Each finite value's rank in [0, 1] (ties by order); NaN stays NaN."""
+    """Each finite value's rank in [0, 1] (tied values share their mean rank); NaN stays NaN."""
     out = np.full(len(x), np.nan)
     ok = np.isfinite(x)
-    if ok.sum() > 1:
-        order = np.argsort(x[ok], kind="stable")
-        r = np.empty(ok.sum())
-        r[order] = np.arange(ok.sum()) / (ok.sum() - 1)
-        out[ok] = r
-    elif ok.any():
+    n = int(ok.sum())
+    if n > 1:
+        values, inverse, counts = np.unique(x[ok], return_inverse=True, return_counts=True)
+        first = np.cumsum(counts) - counts  # the lowest rank of each distinct value
+        out[ok] = (first + (counts - 1) / 2)[inverse] / (n - 1)
+    elif n:
         out[ok] = 0.0
     return out
 
@@ -135,15 +135,15 @@ def quietness(markers: np.ndarray, fps: float, opening: np.ndarray | None) -> np
 
 def quiet_window(score: np.ndarray, fps: float, window_s: float = WINDOW_S) -> slice:
     """The frames (a slice) of the window of ``window_s`` seconds (at least one frame, at most the
-    take) whose median score is lowest; the earliest such window on a tie."""
+    take) whose median score is lowest; among equal medians the lowest mean, then the earliest."""
     t = len(score)
     w = int(np.clip(round(window_s * fps), 1, max(t, 1)))
     if t == 0:
         return slice(0, 0)
     s = np.where(np.isfinite(score), score, np.inf)
     windows = np.lib.stride_tricks.sliding_window_view(s, w)
-    medians = np.median(windows, axis=1)
-    start = int(np.argmin(medians))
+    medians, means = np.median(windows, axis=1), windows.mean(axis=1)
+    start = int(np.lexsort((np.arange(len(medians)), means, medians))[0])
     return slice(start, start + w)
 
 
