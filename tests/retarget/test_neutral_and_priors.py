@@ -25,6 +25,7 @@ from facesynth.domain.rig.neutral import (
     neutral_pose,
     neutral_weights,
     quiet_window,
+    quietest_of,
     quietness,
 )
 from facesynth.formats.blendshape_curves import write_mapping
@@ -71,6 +72,22 @@ def test_auto_finds_the_still_closed_stretch():
     pose = neutral_pose(markers, window)
     np.testing.assert_allclose(pose, [[0, 1, 0], [0, 0, 0], [0, -20, 0]], atol=1e-9)
     assert lip_gap(markers, ["a", "b", "c"]) is None
+
+
+def test_auto_over_several_takes_finds_the_neutral_take_and_no_window_crosses_takes():
+    """Take 1 talks throughout; take 2 is still and closed from its 1.0 s: the quietest window of
+    the capture is in take 2, and a window is never split between the takes."""
+    talking, names = _talking_take()
+    talking[50:70] = talking[49]  # no still stretch in the first take: held open
+    calm = np.repeat(talking[:1] * 0, 50, axis=0)
+    calm[:, 0, 1], calm[:, 2, 1] = 1.0, -20.0
+    calm[:25] += np.sin(np.arange(25))[:, None, None]  # moving until 1.0 s
+    markers = np.concatenate([talking, calm])
+    score = quietness(markers, 25.0, lip_gap(markers, names))
+    window = quietest_of(score, [slice(0, 100), slice(100, 150)], 25.0)
+    assert 125 <= window.start and window.stop <= 150 and window.stop - window.start == 12
+    only_first = quietest_of(score, [slice(0, 100)], 25.0)
+    assert only_first.stop <= 100
 
 
 def test_a_named_frame_or_time_is_the_neutral_and_one_past_the_take_is_refused():

@@ -23,7 +23,7 @@ from facesynth.domain.retarget.solve import solve_motion, solved_curves
 from facesynth.domain.rig.face import Rig
 from facesynth.domain.rig.face_mesh import bound_for
 from facesynth.domain.rig.loading import marker_map
-from facesynth.domain.rig.neutral import NeutralChoice, chosen_frames, lip_gap, neutral_pose, quietness
+from facesynth.domain.rig.neutral import NeutralChoice, chosen_frames, lip_gap, neutral_pose, quietest_of, quietness
 from facesynth.model.artifacts import artifact_kind
 from facesynth.model.curves import RigCurves
 from facesynth.model.frames import NormalizedFrames, relative_to_take
@@ -49,28 +49,36 @@ def take_motion(normalized: NormalizedFrames, take: str | None, output_fps: floa
     markers = all_markers[sl].astype(np.float32)
     reference = frames.reference
     if neutral is not None and neutral.kind != "off":
+        takes = normalized.takes
         if neutral.kind == "take":
             if neutral.take not in names:
                 raise InputError(f"{where}: no take {neutral.take!r} for the neutral face; it has {', '.join(names[:5])}.")
-            source = all_markers[normalized.takes.frames(names.index(neutral.take))]
-            choice = NeutralChoice("auto")
+            spans, choice = [takes.frames(names.index(neutral.take))], NeutralChoice("auto")
+        elif neutral.kind == "auto":  # one performer, one neutral face: the quietest of every take
+            spans, choice = [takes.frames(i) for i in range(len(names))], neutral
         else:
-            source, choice = markers, neutral
-        reference = neutral_reference(source, normalized.marker_names, frames.fps, choice, frames.reference,
-                                      f"{where}, take {take!r}")
+            spans, choice = [sl], neutral
+        reference = neutral_reference(all_markers, normalized.marker_names, frames.fps, choice, spans,
+                                      frames.reference, f"{where}, take {take!r}")
     rel_r, rel_t = relative_to_take(frames.head_rotation[sl], frames.head_translation[sl], [slice(0, len(markers))])
     return Motion(downsample(markers, frames.fps, output_fps), output_fps, markers, frames.fps, normalized.marker_names,
                   reference, downsample(rel_r, frames.fps, output_fps).astype(np.float32),
                   downsample(rel_t, frames.fps, output_fps).astype(np.float32), source="capture", take=take)
 
 
-def neutral_reference(markers: np.ndarray, names: list[str], fps: float, choice: NeutralChoice,
+def neutral_reference(markers: np.ndarray, names: list[str], fps: float, choice: NeutralChoice, spans: list[slice],
                       fallback: np.ndarray, where: str) -> np.ndarray:
-    """(M, 3) float32 the performer's neutral face in a take's markers (T, M, 3) mm at ``fps``:
-    their median over the frames ``choice`` names (:mod:`facesynth.domain.rig.neutral`; the
-    quietest half second for ``auto``); a marker unseen there keeps its place in ``fallback``
-    (the normalize reference)."""
-    frames = chosen_frames(choice, quietness(markers, fps, lip_gap(markers, names)), fps, where)
+    """(M, 3) float32 the performer's neutral face in a capture's markers (T, M, 3) mm at ``fps``:
+    their median over the frames ``choice`` names (:mod:`facesynth.domain.rig.neutral`) in the
+    takes ``spans``: for ``auto`` the quietest half second of any of them (scored over the whole
+    capture), else the frame named in the first (the solved take); a marker unseen there keeps
+    its place in ``fallback`` (the normalize reference)."""
+    score = quietness(markers, fps, lip_gap(markers, names))
+    if choice.kind == "auto":
+        frames: slice | None = quietest_of(score, spans, fps)
+    else:
+        own = chosen_frames(choice, score[spans[0]], fps, where)
+        frames = None if own is None else slice(spans[0].start + own.start, spans[0].start + own.stop)
     if frames is None:
         return np.asarray(fallback, np.float32)
     pose = neutral_pose(markers, frames)

@@ -247,10 +247,10 @@ def _solve_curves(frames: np.ndarray, basis: np.ndarray, *, smooth: float, ridge
     lam_y = pr.symmetry * np.sqrt(own[sym_i] * own[sym_j])
     # Lipschitz constant of the gradient: |A|^2 (masks only shrink it) + 4 smooth (path Laplacian) + ridge,
     # + the antagonist coupling and the symmetry (each channel in at most a few pairs).
-    coupling = np.zeros(len(a))  # the antagonist Hessian's largest row sum bounds its norm (Gershgorin)
-    np.add.at(coupling, ant_i, lam_a)
-    np.add.at(coupling, ant_j, lam_a)
-    lip = np.linalg.norm(a, 2) ** 2 + 4 * lam_s + lam_r + float(coupling.max(initial=0.0)) \
+    coupling = np.zeros((len(a), len(a)))  # the antagonist term's Hessian: sum lam w_i w_j = w C w^T / 2
+    coupling[ant_i, ant_j] = coupling[ant_j, ant_i] = lam_a
+    # its largest row sum bounds its norm (Gershgorin)
+    lip = np.linalg.norm(a, 2) ** 2 + 4 * lam_s + lam_r + float(coupling.sum(1).max(initial=0.0)) \
         + 4 * float(lam_y.max(initial=0.0))
     step = 1.0 / lip
     w = np.zeros((t_count, len(a))) if initial is None else np.clip(np.broadcast_to(initial, (t_count, len(a))), 0.0, 1.0)
@@ -272,8 +272,7 @@ def _solve_curves(frames: np.ndarray, basis: np.ndarray, *, smooth: float, ridge
             grad[1:] += lam_s * diff
             grad[:-1] -= lam_s * diff
         if len(ant_i) and pr.antagonist > 0:
-            np.add.at(grad, (slice(None), ant_i), lam_a * y[:, ant_j])
-            np.add.at(grad, (slice(None), ant_j), lam_a * y[:, ant_i])
+            grad += y @ coupling
         if len(sym_i) and pr.symmetry > 0:  # mirrored pairs are disjoint: plain indexing adds once
             gap = 2 * lam_y * (y[:, sym_i] - y[:, sym_j])
             grad[:, sym_i] += gap

@@ -10,7 +10,8 @@ through the whole take). Measured from the performer's neutral, it does not.
 The neutral is given by a :class:`NeutralChoice` (``--neutral`` on ``solve``, ``solve.neutral``
 and ``ingest.neutral``):
 
-* ``auto``: the take's quietest stretch (:func:`quiet_window`): the window of
+* ``auto``: the quietest stretch (:func:`quiet_window`; over every take of a capture of
+  several, :func:`quietest_of`: one performer, one neutral face): the window of
   :data:`WINDOW_S` seconds whose frames have the lowest median *quietness score*, the sum of two
   ranks over the take (each in [0, 1]): the frame's motion energy (the RMS speed of its markers,
   mm/s) and its mouth opening (the gap between the inner lips' centres when the markers include
@@ -145,6 +146,25 @@ def quiet_window(score: np.ndarray, fps: float, window_s: float = WINDOW_S) -> s
     medians, means = np.median(windows, axis=1), windows.mean(axis=1)
     start = int(np.lexsort((np.arange(len(medians)), means, medians))[0])
     return slice(start, start + w)
+
+
+def quietest_of(score: np.ndarray, spans: list[slice], fps: float, window_s: float = WINDOW_S) -> slice:
+    """The quietest window (:func:`quiet_window`) over several takes, ``score`` (T,) being the
+    scores of all of them one after another (ranked together, so comparable) and ``spans`` each
+    take's frames: the window, in ``score``'s frames, with the lowest median, then mean, then the
+    earliest; no window crosses from one take into the next."""
+    best: tuple[float, float, int] | None = None
+    chosen = slice(0, 0)
+    for span in spans:
+        part = score[span]
+        if not len(part):
+            continue
+        window = quiet_window(part, fps, window_s)
+        values = np.where(np.isfinite(part[window]), part[window], np.inf)
+        key = (float(np.median(values)), float(values.mean()), span.start + window.start)
+        if best is None or key < best:
+            best, chosen = key, slice(span.start + window.start, span.start + window.stop)
+    return chosen
 
 
 def chosen_frames(choice: NeutralChoice, score: np.ndarray, fps: float, where: str) -> slice | None:
