@@ -339,4 +339,5 @@ def solved_curves(motion: "Motion", rig: "Rig", weights: np.ndarray, residual: n
     the regularized solve)."""
     return RigCurves(weights, motion.fps, list(rig.shape_names), rig.name, rig.sha256, "solve", motion.head_rotation,
                      motion.head_translation, residual=residual,
-                     method=method or "bounded least squares with temporal smoothness", provenance=provenance)
+                     method=method or "bounded least squares with temporal smoothness and a face's priors "
+                     "(sparsity, antagonists, symmetry)", provenance=provenance)
