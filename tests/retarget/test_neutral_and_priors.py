@@ -195,3 +195,11 @@ def test_solving_unbound_markers_names_the_bind_command(tiny_artifacts, tmp_path
                                     "--neutral", "frame:99999", "-o", str(tmp_path / "c.h5")])
     assert bad.exit_code == 1 and "neutral frame:99999 is beyond the take" in bad.output
     assert not (tmp_path / "c.h5").exists()
+
+
+def test_ingest_names_a_neutral_take_only_through_solve(tmp_path):
+    (tmp_path / "m.csv").write_text("take,mocap\nt,t.c3d\n")
+    out = CliRunner().invoke(main, ["ingest", str(tmp_path / "m.csv"), "-o", str(tmp_path / "c.h5"),
+                                    "--set", "ingest.neutral=take:calm"])
+    assert out.exit_code == 1 and "a neutral take is named when solving (facesynth solve --neutral take:NAME)" in out.output
+    assert not (tmp_path / "c.h5").exists()
