@@ -9,6 +9,7 @@ import contextlib
 import functools
 import logging
 import signal
+import statistics
 import sys
 import threading
 import time
@@ -118,6 +119,17 @@ class _MessageFormatter(logging.Formatter):
     def format(self, record: logging.LogRecord) -> str:
         message = record.getMessage()
         return f"warning: {message}" if record.levelno >= logging.WARNING else message
+
+
+#: How many items of a list a line names before it says how many more there are (``-v``: all).
+LISTED_ITEMS = 8
+
+
+def _summarised(items: list[str], verbose: int) -> str:
+    """``items`` joined by commas; without ``verbose``, the first :data:`LISTED_ITEMS` and how many more."""
+    if verbose or len(items) <= LISTED_ITEMS:
+        return ", ".join(items)
+    return ", ".join(items[:LISTED_ITEMS]) + f" and {len(items) - LISTED_ITEMS} more (-v lists them)"
 
 
 def _configure_logging(verbose: int, quiet: bool) -> None:
@@ -762,15 +774,18 @@ def bind(ctx: Context, capture: Path, rig, frame, up, forward, output: Path):
         ctx.say(f"warning: not seen in frame {s.frame}, left out: {', '.join(s.unbound)}; choose another --frame to bind them.")
     if s.flagged:
         ctx.say(f"warning: {len(s.flagged)} markers lie more than {s.max_residual_mm:g} mm from the rig's surface: "
-                + ", ".join(f"{n} {s.residual_mm[n]:.1f} mm" for n in s.flagged)
+                + _summarised([f"{n} {s.residual_mm[n]:.1f} mm" for n in s.flagged], ctx.verbose)
                 + "; check them in the CSV (flagged = 1), or delete their rows.")
     for note in s.notes:
         ctx.say(f"note: {note}.")
     if s.shared_vertices:
         ctx.say(f"note: {s.shared_vertices} markers share their vertex with another; check the CSV.")
     if s.rigid:
-        ctx.say("rigid markers (found from the data; spread in mm): "
-                + ", ".join(f"{n} {x:.2f}" for n, x in zip(s.rigid, s.rigid_spreads_mm)))
+        spreads = sorted(s.rigid_spreads_mm)
+        ctx.say(f"{len(s.rigid)} rigid markers found from the data (spread {spreads[0]:.2f} to {spreads[-1]:.2f} mm, "
+                f"median {statistics.median(spreads):.2f}; flagged in the CSV's rigid column)"
+                + ("" if ctx.verbose else "; -v lists them"))
+        ctx.detail("rigid markers (spread in mm): " + ", ".join(f"{n} {x:.2f}" for n, x in zip(s.rigid, s.rigid_spreads_mm)))
     ctx.say(f"bound {s.markers} markers of frame {s.frame} to rig {s.rig} (scale {s.scale:.3g}; residual "
             f"median {s.residual_median_mm:.2f} mm, 95th percentile {s.residual_p95_mm:.2f} mm) -> {output}")
 
@@ -815,22 +830,33 @@ def fit_articulation(ctx: Context, normalized: Path, corpus_path: Path, binding,
 @click.option("--rig", type=PATH, default=None, help=_RIG_HELP)
 @click.option("--binding", type=EXISTING, default=None, help=_BINDING_HELP)
 @click.option("--take", default=None, help="With a normalized capture: the take to solve (default: its only take).")
+@click.option("--neutral", default=None,
+              help="With a normalized capture: the performer's neutral face, which the weights are measured from: "
+                   "auto (the take's quietest half second), frame:N, time:SECONDSs, take:NAME (a neutral take) or off. "
+                   "Default: solve.neutral.")
 @click.option("-o", "--output", type=PATH, required=True, help="Output curves.h5.")
 @stage
-def solve(ctx: Context, motion: Path, rig, binding, take, output: Path):
+def solve(ctx: Context, motion: Path, rig, binding, take, neutral, output: Path):
     """Solve the rig's blendshape weights, between 0 and 1, that best explain the markers, frame by frame.
 
-    A direct facial solve with a small temporal smoothness term; the reference for retarget.
-    MOTION is a motion artifact, or a normalized capture (one take of it, at solve.output_fps).
+    A direct facial solve with a temporal smoothness term and a face's priors (sparse weights,
+    antagonists not both on, mirrored channels alike); the reference for retarget. MOTION is a
+    motion artifact, or a normalized capture (one take of it, at solve.output_fps, measured from
+    the performer's neutral face). A filmed take needs no binding on the built-in rig.
 
     \b
     Example:
       facesynth solve motion.h5 -o solved.h5
       facesynth rig-mesh solved.h5 -o solved_anim.h5
     """
+    import dataclasses
+
     from facesynth.stages import solve as stage
 
-    s = stage.run(motion, output, ctx.config.settings("solve"), rig, binding, ctx.overwrite, take)
+    settings = ctx.config.settings("solve")
+    if neutral is not None:
+        settings = dataclasses.replace(settings, neutral=neutral)
+    s = stage.run(motion, output, settings, rig, binding, ctx.overwrite, take)
     if s.exact:
         ctx.say("note: a capture posed from curves (noise-free markers) is solved without smoothing or ridge "
                 "(solve.posed_captures).")

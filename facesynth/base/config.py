@@ -119,6 +119,10 @@ class IngestSettings:
                                          "being interpolated", unit="s", gt=0, le=10)
     video_eye_corners_mm: float = setting("not in the paper: a video take's scale, the distance between the outer eye "
                                           "corners (adult biocular width 87-91 mm)", unit="mm", gt=0, le=1000)
+    neutral: str = setting("not in the paper: the performer's neutral face in another rig's curves, taken off "
+                           "their weights: auto, off, frame:N or time:SECONDSs")
+    live_link_neutral: str = setting("not in the paper: the same for a Live Link Face take (ARKit measures from the "
+                                     "performer's face already): auto, off, frame:N or time:SECONDSs")
 
 
 @dataclass(frozen=True)
@@ -473,6 +477,14 @@ class SolveSettings:
                                   choices=("exact", "regularized"))
     exact_iterations: int = setting("not in the papers: most iterations of the exact solve", ge=1, le=1000000)
     exact_tolerance: float = setting("not in the papers: the exact solve's stopping step", unit="weight", gt=0)
+    neutral: str = setting("not in the papers: the performer's neutral face the weights of a normalized capture's "
+                           "take are measured from: auto, off, frame:N, time:SECONDSs or take:NAME")
+    sparsity: float = setting("not in the papers: weight of the sum of the weights (L1), relative to a shape's "
+                              "squared norm", ge=0)
+    antagonist: float = setting("not in the papers: weight of the product of opposing channels (jawLeft and "
+                                "jawRight...), relative to a shape's squared norm", ge=0)
+    symmetry: float = setting("not in the papers: weight of the squared difference of mirrored channels, relative "
+                              "to a shape's squared norm", ge=0)
 
 
 @dataclass(frozen=True)

@@ -48,6 +48,7 @@ from facesynth.domain.capture.posing import CaptureTake
 from facesynth.domain.capture.readers import CaptureOptions, read_capture
 from facesynth.domain.rig.face import Rig
 from facesynth.domain.rig.loading import load_rig
+from facesynth.domain.rig.neutral import NeutralChoice
 from facesynth.domain.speech.alignment import AlignmentFailed, align_samples
 from facesynth.domain.speech.recognition import recognize
 from facesynth.formats.audio import read_audio, resample
@@ -211,9 +212,16 @@ class Ingested:
 
 def capture_options(settings: IngestSettings, rig: Rig | None = None) -> CaptureOptions:
     """The takes' capture options from ``[ingest]`` (a manifest row's columns override them)."""
+    neutral, live_link = (NeutralChoice.parse(value, f"ingest.{key}") for key, value in
+                          (("neutral", settings.neutral), ("live_link_neutral", settings.live_link_neutral)))
+    for key, choice in (("neutral", neutral), ("live_link_neutral", live_link)):
+        if choice.kind == "take":
+            raise InputError(f"ingest.{key} {str(choice)!r}: a neutral take is named when solving "
+                             "(facesynth solve --neutral take:NAME); at ingest use auto, off, frame:N or time:SECONDSs.")
     return CaptureOptions(rig=rig, mapping=Path(settings.curves_mapping) if settings.curves_mapping else None,
                           fps=settings.curves_fps or None, face_width_mm=settings.video_eye_corners_mm,
-                          max_interpolated_s=settings.live_link_max_gap_s)
+                          max_interpolated_s=settings.live_link_max_gap_s,
+                          neutral=neutral, live_link_neutral=live_link)
 
 
 def take_options(row: ManifestRow, defaults: CaptureOptions) -> CaptureOptions:

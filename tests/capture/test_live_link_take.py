@@ -42,7 +42,8 @@ def _llf(path: Path, frames: int = 120, fps: float = 60.0, head: bool = False) -
 
 
 def _moving_r(curves_path: Path, truth: np.ndarray, truth_fps: float) -> dict[str, float]:
-    """r of each ARKit channel that moves (range > 0.02) between the solved curves and the truth."""
+    """r of each ARKit channel that moves (range > 0.02) between the solved curves and the truth (0
+    where the solved channel never moves: the solve's sparsity can hold a small shape at 0)."""
     curves = RigCurves.read(curves_path)
     solved = RIG.to_arkit(curves.weights)
     t = np.arange(len(solved)) / curves.fps
@@ -50,7 +51,7 @@ def _moving_r(curves_path: Path, truth: np.ndarray, truth_fps: float) -> dict[st
     for k, name in enumerate(RIG.arkit_names):
         real = np.interp(t, np.arange(len(truth)) / truth_fps, truth[:, k])
         if np.ptp(real) > 0.02:
-            out[name] = float(np.corrcoef(real, solved[:, k])[0, 1])
+            out[name] = float(np.corrcoef(real, solved[:, k])[0, 1]) if np.ptp(solved[:, k]) > 0 else 0.0
     return out
 
 

@@ -146,3 +146,58 @@ def test_a_videos_sound_is_read_by_the_one_audio_reader(coded_speech, monkeypatc
     assert abs(len(samples) / rate - len(take.positions) / take.fps) < 0.1
     with pytest.raises(InputError, match="the video has no sound; give the take's audio in the manifest's audio column"):
         video_take.read_video_take(coded_speech["silent"], CaptureOptions())
+
+
+ANTAGONISTS = (("jawLeft", "jawRight"), ("mouthLeft", "mouthRight"), ("mouthSmile_L", "mouthFrown_L"),
+               ("mouthSmile_R", "mouthFrown_R"))
+
+
+def rest_and_coactivation(weights: np.ndarray, names: list[str]) -> tuple[float, float]:
+    """(the largest median weight over the 10% of frames with the smallest jawOpen, the mean over
+    antagonist pairs and frames of min(left, right))."""
+    jaw = weights[:, names.index("jawOpen")]
+    rest = weights[jaw <= np.quantile(jaw, 0.1)]
+    both = [np.minimum(weights[:, names.index(a)], weights[:, names.index(b)]).mean() for a, b in ANTAGONISTS]
+    return float(np.median(rest, axis=0).max()), float(np.mean(both))
+
+
+def test_a_filmed_take_is_solved_without_bind_at_rest_and_following_the_mouth(mediapipe, tiny_corpus, held_out_take,
+                                                                              tmp_path, capfd):
+    """The actress rendered, ingested and solved on the built-in rig with no ``bind`` (the shipped
+    Face Mesh binding and the take's own neutral face): at rest the rig rests (largest median
+    weight of the quietest 10% <= 0.10), antagonists are not both on (<= 0.02), and the solved
+    rig's lip gap follows hers (r >= 0.90)."""
+    rig = load_face_rig()
+    truth = read_truth(tiny_corpus / "groundtruth" / f"{held_out_take}_truth.csv")
+    capture_fps = 1.0 / float(np.median(np.diff(truth.time_s)))
+    weights = downsample(truth.rig_weights.astype(np.float32), capture_fps, FPS)
+    RigCurves(weights, FPS, list(rig.shape_names), BUILTIN_RIG_NAME, builtin_rig_sha256(), "truth").write(
+        tmp_path / "truth.h5", config="{}", inputs=[])
+    _run("render", tmp_path / "truth.h5", "--audio", tiny_corpus / "audio" / f"{held_out_take}.wav",
+         "-o", tmp_path / "take.avi", "--set", "render.fps=25", "--set", "render.yaw_deg=0", "--set", "render.pitch_deg=0")
+    (tmp_path / "manifest.csv").write_text("take,mocap\nfilmed,take.avi\n")
+    capfd.readouterr()
+    _run("ingest", tmp_path / "manifest.csv", "-o", tmp_path / "corpus.h5", "--set", "ingest.recognize_phones=false")
+    quiet = capfd.readouterr()
+    assert "TensorFlow Lite" not in quiet.err + quiet.out and "W0000" not in quiet.err  # MediaPipe's own logging: -v
+    _run("normalize", tmp_path / "corpus.h5", "-o", tmp_path / "normalized.h5")
+    _run("solve", tmp_path / "normalized.h5", "-o", tmp_path / "curves.h5", "--set", "solve.output_fps=25")
+    solved = RigCurves.read(tmp_path / "curves.h5").weights.astype(np.float64)
+    n = min(len(solved), len(weights))
+    names = list(rig.shape_names)
+    rest, both = rest_and_coactivation(solved[:n], names)
+    markers = build_marker_set(rig)
+    lips = [markers.vertices[markers.names.index(m)] for m in ("ULI_C", "LLI_C")]
+    gap = [np.linalg.norm(np.diff(rig.evaluate(w[:n].astype(np.float64), vertices=lips), axis=1)[:, 0], axis=1)
+           for w in (solved, weights)]
+    r = float(np.corrcoef(gap[0], gap[1])[0, 1])
+    print(f"video solved without bind: rest {rest:.3f}, antagonists {both:.4f}, lip gap r {r:.3f}")
+    assert rest <= 0.10 and both <= 0.02 and r >= 0.90, (rest, both, r)
+    # off: the rig's neutral is the normalize reference, as before the neutral face was found
+    _run("solve", tmp_path / "normalized.h5", "-o", tmp_path / "off.h5", "--set", "solve.output_fps=25",
+         "--set", "solve.neutral=off", "--set", "solve.sparsity=0", "--set", "solve.antagonist=0",
+         "--set", "solve.symmetry=0")
+    off = RigCurves.read(tmp_path / "off.h5").weights.astype(np.float64)
+    off_rest, off_both = rest_and_coactivation(off[:n], names)
+    print(f"without neutral or priors: rest {off_rest:.3f}, antagonists {off_both:.4f}")
+    assert off_rest > 0.10  # the check above can fail: without the neutral the rig does not rest

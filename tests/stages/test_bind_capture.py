@@ -89,8 +89,12 @@ def test_bind_cli_reports_residuals_and_rigid_markers(user_capture, tmp_path):
     out = tmp_path / "b.csv"
     r = CliRunner().invoke(main, ["bind", str(user_capture / "take.c3d"), "--rig", "builtin", "-o", str(out)])
     assert r.exit_code == 0, r.output
-    assert "rigid markers (found from the data; spread in mm): " in r.output
+    summary = [line for line in r.output.splitlines() if "rigid markers found from the data (spread" in line]
+    assert len(summary) == 1 and len(summary[0]) < 160 and "-v lists them" in summary[0], r.output
     assert "residual median" in r.output and out.exists()
+    verbose = CliRunner().invoke(main, ["bind", str(user_capture / "take.c3d"), "--rig", "builtin", "-o",
+                                        str(tmp_path / "v.csv"), "-v"])
+    assert verbose.exit_code == 0 and "rigid markers (spread in mm): " in verbose.output
     again = CliRunner().invoke(main, ["bind", str(user_capture / "take.c3d"), "-o", str(out)])
     assert again.exit_code == 1 and "exists" in again.output
 

@@ -65,7 +65,7 @@ def read_curve_take(path: Path, options: CaptureOptions) -> CaptureTake:
         notes.append(f"{gaps} of {len(arkit)} frames are gaps (an empty or NaN cell)")
     for note in notes:
         log.warning("%s: %s.", path, note)
-    return posed_take(arkit, rate, options.rig, None, "curves", notes)
+    return posed_take(arkit, rate, options.rig, None, "curves", notes, options.neutral, str(path))
 
 
 def _recognizes(path: Path, options: CaptureOptions) -> bool:

@@ -29,7 +29,8 @@ def read_live_link_take(path: Path, options: CaptureOptions) -> CaptureTake:
     head = None if take.head is None else livelink_face.head_rotations(take.head)
     for note in take.notes:
         log.warning("%s: %s.", path, note)
-    return posed_take(take.arkit, take.fps, options.rig, head, "live-link-face", take.notes)
+    return posed_take(take.arkit, take.fps, options.rig, head, "live-link-face", take.notes, options.live_link_neutral,
+                      str(path))
 
 
 def _recognizes(path: Path, options: CaptureOptions) -> bool:

@@ -33,6 +33,7 @@ from facesynth.base.errors import InputError
 from facesynth.domain.rig.face import Rig, load_face_rig
 from facesynth.domain.rig.loading import arkit_to_rig, builtin_rig
 from facesynth.domain.rig.markers import build_marker_set
+from facesynth.domain.rig.neutral import NeutralChoice, calibrated_weights, chosen_frames, neutral_weights, quietness
 from facesynth.formats.mocap import MarkerTake
 
 #: The point (mm, the rig's head frame: +y up, +z out of the face) a head rotation turns the
@@ -118,10 +119,27 @@ def pose_markers(arkit: np.ndarray, rig: Rig | None = None, head: np.ndarray | N
     return positions.astype(np.float32), names, rigid, rig.neutral[vertices].astype(np.float32)
 
 
+def calibrated_arkit(arkit: np.ndarray, fps: float, neutral: NeutralChoice | None, where: str) -> np.ndarray:
+    """ARKit weights (T, 52) with the performer's neutral taken off (:mod:`.neutral`): the
+    neutral frames are found from the weights themselves (their speed and ``jawOpen`` for
+    ``auto``); ``None`` or ``off`` (and ``take``, which only ``solve`` offers) leave them as they
+    are."""
+    if neutral is None or neutral.kind in ("off", "take") or not len(arkit):
+        return arkit
+    jaw = list(load_face_rig().arkit_names).index("jawOpen")
+    score = quietness(arkit[:, :, None], fps, arkit[:, jaw])
+    frames = chosen_frames(neutral, score, fps, where)
+    if frames is None:
+        return arkit
+    return calibrated_weights(arkit, neutral_weights(arkit, frames))
+
+
 def posed_take(arkit: np.ndarray, fps: float, rig: Rig | None, head: np.ndarray | None, source: str,
-               notes: list[str]) -> CaptureTake:
+               notes: list[str], neutral: NeutralChoice | None = None, where: str = "the take") -> CaptureTake:
     """The :class:`CaptureTake` of a rig posed by ARKit weights (T, 52) at ``fps`` with optional
-    head rotations (T, 3, 3) (see :func:`pose_markers`)."""
+    head rotations (T, 3, 3) (see :func:`pose_markers`), the performer's ``neutral`` taken off
+    first (:func:`calibrated_arkit`; ``where`` names the take in errors)."""
+    arkit = calibrated_arkit(np.asarray(arkit, np.float64), fps, neutral, where)
     positions, names, rigid, rest = pose_markers(arkit, rig, head)
     return CaptureTake(positions, names, float(fps), rigid=rigid, arkit=np.asarray(arkit, np.float64), rest=rest,
                        head_pose=known_pose(head, len(arkit)), source=source, notes=list(notes))

@@ -21,6 +21,7 @@ from typing import Any
 from facesynth.base.errors import InputError
 from facesynth.base.registry import CAPTURE_READERS
 from facesynth.domain.rig.face import Rig
+from facesynth.domain.rig.neutral import NeutralChoice
 from facesynth.formats.mocap import MarkerTake, checked
 
 #: The scale of a video take when nothing else is said (mm between the outer eye corners).
@@ -40,7 +41,9 @@ class CaptureOptions:
     rate (None: from the file). face_width_mm : a video's scale (outer eye corners).
     max_interpolated_s : a Live Link Face take's longest stretch between rows that is
     interpolated. need_audio : a video must carry sound (False when the manifest gives the
-    take's audio)."""
+    take's audio). neutral : another rig's curves have the performer's neutral weights taken
+    off (:mod:`facesynth.domain.rig.neutral`; None: not); live_link_neutral : a Live Link Face
+    take likewise."""
 
     rig: Rig | None = None
     mapping: Path | None = None
@@ -49,6 +52,8 @@ class CaptureOptions:
     face_width_mm: float = EYE_CORNERS_MM
     max_interpolated_s: float = MAX_INTERPOLATED_S
     need_audio: bool = True
+    neutral: NeutralChoice | None = None
+    live_link_neutral: NeutralChoice | None = None
 
 
 @dataclass(frozen=True)

@@ -31,16 +31,21 @@ what to install.
   capture; ``MP013`` and ``MP014`` are the centres of the upper and lower inner lip.
 * A video without sound is refused unless the take's audio is given in the manifest.
 
-Bind the markers to a rig with ``facesynth bind`` (which reads a video too) before ``solve``,
-as for any capture of your own.
+``solve`` places the markers on the built-in rig by the binding shipped with facesynth
+(:mod:`facesynth.domain.rig.face_mesh`); for a rig of your own, bind them with ``facesynth bind``
+(which reads a video too), as for any capture. MediaPipe's own log lines are shown only with
+``-v``.
 """
 
 from __future__ import annotations
 
+import contextlib
 import logging
+import os
 import sys
+import tempfile
 import time
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
 from pathlib import Path
 from typing import Any
 
@@ -93,10 +98,39 @@ def face_mesh_module(where: str) -> Any:
                          f"it and ship no models); install {REQUIREMENT} with pip install 'facesynth[video]'.") from None
 
 
+@contextlib.contextmanager
+def native_log_quieted() -> Iterator[None]:
+    """MediaPipe's and TensorFlow Lite's own log lines (written by their C++ code straight to the
+    process's standard error: "Created TensorFlow Lite XNNPACK delegate", absl's warnings) kept
+    off the terminal: standard error goes to a temporary file while the tracker runs, and what it
+    caught is logged as detail (shown with ``-v``). Python's own ``sys.stderr`` writes inside
+    (none are made there) would be caught alike."""
+    sys.stderr.flush()
+    saved = os.dup(2)
+    with tempfile.TemporaryFile() as caught:
+        os.dup2(caught.fileno(), 2)
+        try:
+            yield
+        finally:
+            sys.stderr.flush()
+            os.dup2(saved, 2)
+            os.close(saved)
+            caught.seek(0)
+            text = caught.read().decode("utf-8", "replace").strip()
+            if text:
+                log.info("MediaPipe said:\n%s", text)
+
+
 def track(pictures: Iterable[np.ndarray], where: str, confidence: float = 0.5) -> np.ndarray:
     """Face Mesh landmarks of (H, W, 3) uint8 RGB pictures: (T, 478, 3) float64 pixels in
-    facesynth's frame (see the module docstring), NaN for pictures without a face."""
+    facesynth's frame (see the module docstring), NaN for pictures without a face. MediaPipe's
+    own log lines are shown only with ``-v`` (:func:`native_log_quieted`)."""
     face_mesh = face_mesh_module(where)
+    with native_log_quieted():
+        return _track(face_mesh, pictures, confidence)
+
+
+def _track(face_mesh: Any, pictures: Iterable[np.ndarray], confidence: float) -> np.ndarray:
     out = []
     with face_mesh.FaceMesh(static_image_mode=False, max_num_faces=1, refine_landmarks=True,
                             min_detection_confidence=confidence, min_tracking_confidence=confidence) as mesh:

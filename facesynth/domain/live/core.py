@@ -60,7 +60,7 @@ from facesynth.base.phonemes import PAU
 from facesynth.domain.methods import trajectory as trajectory_method
 from facesynth.domain.methods.voice import articulation_model
 from facesynth.domain.postprocess.concatenation import downsample_sources
-from facesynth.domain.retarget.solve import solve_curves
+from facesynth.domain.retarget.solve import FacePriors, solve_curves
 from facesynth.domain.rig.face import load_face_rig
 from facesynth.domain.rig.loading import builtin_rig, marker_map
 from facesynth.domain.search.costs import step_costs
@@ -178,7 +178,8 @@ class LiveModel:
         disp = self.marker_map.displacements(frames, self.reference)
         w, _, _ = solve_curves(disp, self.basis, smooth=self.solve_settings.smooth, ridge=self.solve_settings.ridge,
                                iterations=self.solve_settings.iterations, tolerance=self.solve_settings.tolerance,
-                               initial=None if previous is None else previous[1])
+                               initial=None if previous is None else previous[1],
+                               priors=FacePriors.of_rig(self.face.shape_names, self.solve_settings))
         return w if previous is None else w[1:]
 
     def markers_of(self, weights: np.ndarray) -> np.ndarray:

@@ -21,16 +21,20 @@ from facesynth.base.errors import InputError
 from facesynth.domain.postprocess.concatenation import downsample
 from facesynth.domain.retarget.solve import solve_motion, solved_curves
 from facesynth.domain.rig.face import Rig
+from facesynth.domain.rig.face_mesh import bound_for
 from facesynth.domain.rig.loading import marker_map
+from facesynth.domain.rig.neutral import NeutralChoice, chosen_frames, lip_gap, neutral_pose, quietest_of, quietness
 from facesynth.model.artifacts import artifact_kind
 from facesynth.model.curves import RigCurves
 from facesynth.model.frames import NormalizedFrames, relative_to_take
 from facesynth.model.motion import Motion
 
 
-def take_motion(normalized: NormalizedFrames, take: str | None, output_fps: float, where: str) -> Motion:
+def take_motion(normalized: NormalizedFrames, take: str | None, output_fps: float, where: str,
+                neutral: NeutralChoice | None = None) -> Motion:
     """One take of a ``normalized`` artifact as captured motion (``source = "capture"``) at
-    ``output_fps``: markers (T, M, 3) mm in the head frame, the reference as rest pose, the head
+    ``output_fps``: markers (T, M, 3) mm in the head frame, the performer's ``neutral`` face as
+    rest pose (:func:`neutral_reference`; None or ``off``: the normalize reference), the head
     motion relative to the take's mean. ``take`` None: the only take."""
     names = normalized.takes.name
     if take is None:
@@ -41,11 +45,44 @@ def take_motion(normalized: NormalizedFrames, take: str | None, output_fps: floa
         raise InputError(f"{where}: no take {take!r}; it has {', '.join(names[:5])}.")
     frames = normalized.frames
     sl = normalized.takes.frames(names.index(take))
-    markers = frames.loaded_markers()[sl].astype(np.float32)
+    all_markers = frames.loaded_markers()
+    markers = all_markers[sl].astype(np.float32)
+    reference = frames.reference
+    if neutral is not None and neutral.kind != "off":
+        takes = normalized.takes
+        if neutral.kind == "take":
+            if neutral.take not in names:
+                raise InputError(f"{where}: no take {neutral.take!r} for the neutral face; it has {', '.join(names[:5])}.")
+            spans, choice = [takes.frames(names.index(neutral.take))], NeutralChoice("auto")
+        elif neutral.kind == "auto":  # one performer, one neutral face: the quietest of every take
+            spans, choice = [takes.frames(i) for i in range(len(names))], neutral
+        else:
+            spans, choice = [sl], neutral
+        reference = neutral_reference(all_markers, normalized.marker_names, frames.fps, choice, spans,
+                                      frames.reference, f"{where}, take {take!r}")
     rel_r, rel_t = relative_to_take(frames.head_rotation[sl], frames.head_translation[sl], [slice(0, len(markers))])
     return Motion(downsample(markers, frames.fps, output_fps), output_fps, markers, frames.fps, normalized.marker_names,
-                  frames.reference, downsample(rel_r, frames.fps, output_fps).astype(np.float32),
+                  reference, downsample(rel_r, frames.fps, output_fps).astype(np.float32),
                   downsample(rel_t, frames.fps, output_fps).astype(np.float32), source="capture", take=take)
+
+
+def neutral_reference(markers: np.ndarray, names: list[str], fps: float, choice: NeutralChoice, spans: list[slice],
+                      fallback: np.ndarray, where: str) -> np.ndarray:
+    """(M, 3) float32 the performer's neutral face in a capture's markers (T, M, 3) mm at ``fps``:
+    their median over the frames ``choice`` names (:mod:`facesynth.domain.rig.neutral`) in the
+    takes ``spans``: for ``auto`` the quietest half second of any of them (scored over the whole
+    capture), else the frame named in the first (the solved take); a marker unseen there keeps
+    its place in ``fallback`` (the normalize reference)."""
+    score = quietness(markers, fps, lip_gap(markers, names))
+    if choice.kind == "auto":
+        frames: slice | None = quietest_of(score, spans, fps)
+    else:
+        own = chosen_frames(choice, score[spans[0]], fps, where)
+        frames = None if own is None else slice(spans[0].start + own.start, spans[0].start + own.stop)
+    if frames is None:
+        return np.asarray(fallback, np.float32)
+    pose = neutral_pose(markers, frames)
+    return np.where(np.isnan(pose), fallback, pose).astype(np.float32)
 
 
 def settings_for(motion_path: Path, settings: SolveSettings) -> tuple[SolveSettings, bool]:
@@ -55,17 +92,23 @@ def settings_for(motion_path: Path, settings: SolveSettings) -> tuple[SolveSetti
     docstring); else ``settings``."""
     if settings.posed_captures == "exact" and artifact_kind(motion_path) == NormalizedFrames.KIND \
             and NormalizedFrames.read_posed(motion_path):
-        return replace(settings, smooth=0.0, ridge=0.0, iterations=settings.exact_iterations,
-                       tolerance=settings.exact_tolerance), True
+        return replace(settings, smooth=0.0, ridge=0.0, sparsity=0.0, antagonist=0.0, symmetry=0.0,
+                       iterations=settings.exact_iterations, tolerance=settings.exact_tolerance), True
     return settings, False
 
 
 def read_motion(motion_path: Path, settings: SolveSettings, take: str | None = None) -> Motion:
     """What ``solve`` solves from ``motion_path``: a ``motion`` artifact (with its search path and
     provenance), or the take ``take`` of a ``normalized`` one (:func:`take_motion`, at
-    ``settings.output_fps``)."""
+    ``settings.output_fps``, measured from the performer's neutral face ``settings.neutral``
+    unless it was posed from curves, whose neutral ``ingest`` took off)."""
     if artifact_kind(motion_path) == NormalizedFrames.KIND:
-        return take_motion(NormalizedFrames.read(motion_path), take, settings.output_fps, str(motion_path))
+        neutral = NeutralChoice.parse(settings.neutral, "solve.neutral")
+        # a capture posed from curves rests at the rig's neutral by construction; its performer's
+        # neutral was taken off its weights at ingest (ingest.neutral)
+        posed = NormalizedFrames.read_posed(motion_path)
+        return take_motion(NormalizedFrames.read(motion_path), take, settings.output_fps, str(motion_path),
+                           None if posed else neutral)
     if take is not None:
         raise InputError(f"{motion_path}: --take picks a take of a normalized capture; a motion artifact has one.")
     return Motion.read(motion_path, search=True)
@@ -94,7 +137,10 @@ class Solved:
 def solve(motion: Motion, rig: Rig, settings: SolveSettings, where: str = "the motion", exact: bool = False) -> Solved:
     """The core of ``solve``: ``motion`` solved on ``rig`` (:func:`solve_motion`), as ``curves``
     (``source = "solve"``) carrying where each frame came from (the motion's own provenance).
-    Messages name ``where``; ``exact``: ``settings`` are the exact ones (:func:`settings_for`)."""
+    Messages name ``where``; ``exact``: ``settings`` are the exact ones (:func:`settings_for`).
+    A filmed take (Face Mesh's markers) on the built-in rig without a binding of its own is bound
+    by the shipped one (:func:`facesynth.domain.rig.face_mesh.bound_for`)."""
+    rig = bound_for(rig, motion.marker_names)
     weights, residual, iterations = solve_motion(motion, rig, settings, where)
     method = "bounded least squares, no smoothing or ridge (a capture posed from curves)" if exact else None
     curves = solved_curves(motion, rig, weights, residual, motion.frame_provenance(), method)

@@ -11,7 +11,8 @@
   the marker misfit plus ``smooth`` times the squared frame-to-frame change plus ``ridge`` times
   the squared weights, by accelerated projected gradient (FISTA with restart) on the whole (T, E)
   array, the misfit's gradient through the E x E Gram matrix of the rig's shapes; missing markers
-  (NaN) drop out of their frame's misfit.
+  (NaN) drop out of their frame's misfit; optionally a face's priors (:class:`FacePriors`:
+  sparse weights, antagonists not both on, mirrored channels alike).
 * :func:`solve_motion`: that solve for a marker motion on a rig (the markers carried into the
   rig's frame and units), the one path from motion to the rig that ``facesynth solve`` and
   ``facesynth batch`` share; :func:`solved_curves` makes the ``curves`` artifact of it.
@@ -19,11 +20,13 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import numpy as np
 
 from facesynth.base.blas import one_blas_thread
+from facesynth.domain.retarget.face_priors import antagonist_pairs, symmetric_pairs
 from facesynth.domain.rig.loading import marker_map
 from facesynth.model.curves import RigCurves
 
@@ -193,17 +196,19 @@ def fit_rig_weights(targets: np.ndarray, basis: np.ndarray, ridge: float = 0.0) 
 
 
 def solve_curves(frames: np.ndarray, basis: np.ndarray, *, smooth: float, ridge: float, iterations: int,
-                 tolerance: float, initial: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray, int]:
+                 tolerance: float, initial: np.ndarray | None = None, priors: "FacePriors | None" = None
+                 ) -> tuple[np.ndarray, np.ndarray, int]:
     """The direct facial solve; see :func:`_solve_curves`. Runs with one BLAS thread: its products
     are small (T x E by E x 3M), and a threaded BLAS spends more on waking threads than on them
     (25 times slower on a busy two-core machine)."""
     with one_blas_thread():
         return _solve_curves(frames, basis, smooth=smooth, ridge=ridge, iterations=iterations, tolerance=tolerance,
-                             initial=initial)
+                             initial=initial, priors=priors)
 
 
 def _solve_curves(frames: np.ndarray, basis: np.ndarray, *, smooth: float, ridge: float, iterations: int,
-                  tolerance: float, initial: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray, int]:
+                  tolerance: float, initial: np.ndarray | None = None, priors: "FacePriors | None" = None
+                  ) -> tuple[np.ndarray, np.ndarray, int]:
     """The direct facial solve.
 
     frames : (T, M, 3) marker displacements in rig units (NaN: missing); basis : (E, M, 3) the rig's
@@ -212,6 +217,12 @@ def _solve_curves(frames: np.ndarray, basis: np.ndarray, *, smooth: float, ridge
     weight moved by more than ``tolerance`` in an iteration, or after ``iterations``. ``initial``
     ((E,) or (T, E)) starts the iterations there instead of at 0 (a live stream starts each batch
     of frames at the weights of the frame before: the same minimum, fewer iterations).
+    ``priors`` (:class:`FacePriors`) adds what a face does: ``sparsity`` times ``sum |w_e|`` (an
+    L1 term: a channel stays at 0 unless it explains more than about that share of its own full
+    displacement, or of the mean shape's for a shape smaller than the mean), ``antagonist`` times ``sum w_i w_j`` over opposing pairs (not both on), and
+    ``symmetry`` times ``sum (w_l - w_r)^2`` over mirrored pairs, each relative to the squared
+    norm of its channel's basis row (a pair's: the geometric mean of the two). The temporal term is part of the one solve over all frames, so it
+    smooths without lag (zero phase), unlike a causal filter.
     Returns weights (T, E) float64 in [0, 1], the per-frame RMS marker residual (T,) (NaN where no
     marker was seen) and the iterations run.
     """
@@ -223,8 +234,24 @@ def _solve_curves(frames: np.ndarray, basis: np.ndarray, *, smooth: float, ridge
     scale = float((a**2).sum(1).mean())
     lam_s, lam_r = smooth * scale, ridge * scale
     t_count = len(d)
-    # Lipschitz constant of the gradient: |A|^2 (masks only shrink it) + 4 smooth (path Laplacian) + ridge.
-    lip = np.linalg.norm(a, 2) ** 2 + 4 * lam_s + lam_r
+    pr = priors or FacePriors()
+    # The face's priors are per channel: relative to each channel's own squared norm (a pair's:
+    # the geometric mean of its two), so a large shape (the jaw) is judged by its own size. The
+    # L1 term takes at least the mean norm: a small shape (a blink or gaze, 2-3 mm at the
+    # markers) would otherwise turn a tracker's millimetre of noise into half a weight.
+    own = (a**2).sum(1)  # (E,)
+    l1 = pr.sparsity * np.maximum(own, scale)
+    ant_i, ant_j = (np.array(x, np.int64) for x in (zip(*pr.antagonists) if pr.antagonists else ((), ())))
+    sym_i, sym_j = (np.array(x, np.int64) for x in (zip(*pr.symmetric) if pr.symmetric else ((), ())))
+    lam_a = pr.antagonist * np.sqrt(own[ant_i] * own[ant_j])
+    lam_y = pr.symmetry * np.sqrt(own[sym_i] * own[sym_j])
+    # Lipschitz constant of the gradient: |A|^2 (masks only shrink it) + 4 smooth (path Laplacian) + ridge,
+    # + the antagonist coupling and the symmetry (each channel in at most a few pairs).
+    coupling = np.zeros((len(a), len(a)))  # the antagonist term's Hessian: sum lam w_i w_j = w C w^T / 2
+    coupling[ant_i, ant_j] = coupling[ant_j, ant_i] = lam_a
+    # its largest row sum bounds its norm (Gershgorin)
+    lip = np.linalg.norm(a, 2) ** 2 + 4 * lam_s + lam_r + float(coupling.sum(1).max(initial=0.0)) \
+        + 4 * float(lam_y.max(initial=0.0))
     step = 1.0 / lip
     w = np.zeros((t_count, len(a))) if initial is None else np.clip(np.broadcast_to(initial, (t_count, len(a))), 0.0, 1.0)
     y, theta = w.copy(), 1.0
@@ -244,7 +271,14 @@ def _solve_curves(frames: np.ndarray, basis: np.ndarray, *, smooth: float, ridge
             diff = np.diff(y, axis=0)
             grad[1:] += lam_s * diff
             grad[:-1] -= lam_s * diff
-        w_new = np.clip(y - step * grad, 0.0, 1.0)
+        if len(ant_i) and pr.antagonist > 0:
+            grad += y @ coupling
+        if len(sym_i) and pr.symmetry > 0:  # mirrored pairs are disjoint: plain indexing adds once
+            gap = 2 * lam_y * (y[:, sym_i] - y[:, sym_j])
+            grad[:, sym_i] += gap
+            grad[:, sym_j] -= gap
+        # the L1 term's proximal step on w >= 0 is a shift before the clip
+        w_new = np.clip(y - step * (grad + l1), 0.0, 1.0)
         moved = float(np.abs(w_new - w).max()) if t_count else 0.0
         # Restart the momentum when the step went uphill (O'Donoghue & Candes's gradient restart).
         if np.sum(grad * (w_new - w)) > 0:
@@ -262,6 +296,26 @@ def _solve_curves(frames: np.ndarray, basis: np.ndarray, *, smooth: float, ridge
     return w, rms, it
 
 
+@dataclass(frozen=True)
+class FacePriors:
+    """What :func:`solve_curves` knows of a face (see it): ``sparsity`` (L1), ``antagonist``
+    (opposing pairs ``antagonists`` not both on), ``symmetry`` (mirrored pairs ``symmetric``
+    alike), weights relative to each channel's squared norm (see :func:`_solve_curves`); pairs index the basis's
+    rows (:mod:`facesynth.domain.retarget.face_priors` finds them from a rig's shape names)."""
+
+    sparsity: float = 0.0
+    antagonist: float = 0.0
+    symmetry: float = 0.0
+    antagonists: tuple[tuple[int, int], ...] = ()
+    symmetric: tuple[tuple[int, int], ...] = ()
+
+    @classmethod
+    def of_rig(cls, shape_names: "list[str] | tuple[str, ...]", settings: "SolveSettings") -> "FacePriors":
+        """The priors of a rig with ``shape_names`` at ``settings``' weights."""
+        return cls(settings.sparsity, settings.antagonist, settings.symmetry,
+                   tuple(antagonist_pairs(shape_names)), tuple(symmetric_pairs(shape_names)))
+
+
 def solve_motion(motion: "Motion", rig: "Rig", settings: "SolveSettings", where: str) -> tuple[np.ndarray, np.ndarray, int]:
     """The direct facial solve of ``motion`` on ``rig``: (T, E) rig weights in [0, 1], (T,) RMS
     marker residual in rig units and the iterations used. The motion's markers (T, M, 3) mm are
@@ -274,7 +328,7 @@ def solve_motion(motion: "Motion", rig: "Rig", settings: "SolveSettings", where:
     disp = mmap.displacements(motion.markers, motion.reference)
     basis = rig.deltas[:, mmap.vertices]
     return solve_curves(disp, basis, smooth=settings.smooth, ridge=settings.ridge, iterations=settings.iterations,
-                        tolerance=settings.tolerance)
+                        tolerance=settings.tolerance, priors=FacePriors.of_rig(rig.shape_names, settings))
 
 
 def solved_curves(motion: "Motion", rig: "Rig", weights: np.ndarray, residual: np.ndarray,
@@ -285,4 +339,5 @@ def solved_curves(motion: "Motion", rig: "Rig", weights: np.ndarray, residual: n
     the regularized solve)."""
     return RigCurves(weights, motion.fps, list(rig.shape_names), rig.name, rig.sha256, "solve", motion.head_rotation,
                      motion.head_translation, residual=residual,
-                     method=method or "bounded least squares with temporal smoothness", provenance=provenance)
+                     method=method or "bounded least squares with temporal smoothness and a face's priors "
+                     "(sparsity, antagonists, symmetry)", provenance=provenance)

@@ -85,7 +85,8 @@ class Rig:
         cols = [i for i, m in enumerate(marker_names) if m in self.binding]
         if len(cols) < 3:
             raise InputError(f"{where}: fewer than three of the motion's markers are bound on rig {self.name!r}; "
-                             f"give a binding CSV that names the motion's markers.")
+                             "place them on it with `facesynth bind CAPTURE --rig RIG -o binding.csv` (CAPTURE: one of "
+                             "the takes) and give that CSV with --binding.")
         bad = [m for m in self.binding if not 0 <= self.binding[m] < len(self.neutral)]
         if bad:
             raise InputError(f"{where}: marker {bad[0]!r} is bound to vertex {self.binding[bad[0]]}, but rig "
