@@ -1,7 +1,7 @@
 """The figures of docs/inputs.md's video route: the virtual actress filmed (her captured take
 solved onto the built-in rig and rendered frontally with its sound, standing in for a filmed
 face), taken back through the video route as docs/inputs.md runs it (``ingest`` with MediaPipe
-Face Mesh, ``bind``, ``normalize``, ``solve --binding``), and the rig those curves pose drawn
+Face Mesh, ``normalize``, ``solve`` with the Face Mesh binding that ships), and the rig those curves pose drawn
 beside the film at rest and mid-sentence.
 
     .venv/bin/python benchmarks/video_route_figures.py --work out/figures --out docs/images
@@ -69,11 +69,8 @@ def _chain(work: Path) -> tuple[Path, Path, Path, str]:
     manifest = work / "filmed.csv"
     manifest.write_text(f"take,mocap\nfilmed,{film.name}\n", encoding="utf-8")
     filmed = _made(work / "filmed.h5", "ingest", str(manifest))
-    binding = work / "filmed_markers.csv"
-    if not binding.exists():
-        _facesynth("bind", str(film), "--rig", "builtin", "--up", "+y", "--forward", "+z", "-o", str(binding))
     filmed_normalized = _made(work / "filmed_normalized.h5", "normalize", str(filmed))
-    curves = _made(work / "filmed_curves.h5", "solve", str(filmed_normalized), "--binding", str(binding))
+    curves = _made(work / "filmed_curves.h5", "solve", str(filmed_normalized))  # the shipped Face Mesh binding
     return film, truth_curves, curves, take
 
 
