@@ -541,13 +541,19 @@ def fit(takes: list[Take], target_names: tuple[str, ...] | list[str], *, offsets
         RATE, HOP, WIN)
     x = np.concatenate([design(model, t.raw, t.times_s) for t in takes])
     y = np.concatenate([t.targets for t in takes]).astype(np.float64)
-    known = np.isfinite(y).all(1) & np.isfinite(x).all(1)  # frames of a capture's gaps (NaN) are left out
-    if known.sum() < 2 * len(target_names):
-        raise InputError(f"only {int(known.sum())} frames have every target known; fit the articulation model on "
-                         "takes whose lip markers are seen.")
-    x, y = x[known], y[known]
-    model.coef, model.intercept = ridge(x, y, alpha)
-    model.target_mean, model.target_std = y.mean(0), y.std(0)
+    # frames of a capture's gaps (NaN) are left out; a target some takes lack (a source without a jaw
+    # channel) is fitted on the frames that have it, each set of targets with the same frames at once
+    known = np.isfinite(y) & np.isfinite(x).all(1)[:, None]
+    patterns: dict[bytes, list[int]] = {}
+    for j in range(len(target_names)):
+        patterns.setdefault(known[:, j].tobytes(), []).append(j)
+    for cols in patterns.values():
+        rows = known[:, cols[0]]
+        if rows.sum() < 2 * len(target_names):
+            raise InputError(f"only {int(rows.sum())} frames have the target {target_names[cols[0]]!r} known; fit "
+                             "the articulation model on takes whose lip markers are seen.")
+        model.coef[:, cols], model.intercept[cols] = ridge(x[rows], y[rows][:, cols], alpha)
+        model.target_mean[cols], model.target_std[cols] = y[rows][:, cols].mean(0), y[rows][:, cols].std(0)
     return model
 
 
