@@ -23,7 +23,7 @@ real speaker (plus the synthetic speakers made of *their* voices), with the sett
 of each training speaker are its curves mapped so that its 5th..95th percentiles fall on FACEGOOD's
 (the units live frames use); a curve a source lacks is left out of that target's fit.
 
-Modes scored on the held-out speaker's utterances, all from the same phones recognised from the
+Modes scored on the held-out speaker's utterances (its first ``--score-seconds``), all from the same phones recognised from the
 audio (facesynth's own, as ``synthesize --audio`` recognises them) and the same motion the DP made
 from them on the built-in actress's database (``small`` preset, seed 0), at 30 frames/s:
 
@@ -35,7 +35,8 @@ from them on the built-in actress's database (``small`` preset, seed 0), at 30 f
 - ``given_articulation``, ``given_loudness``, ``given_phones``: where the utterance comes with its
   spoken phones (a TextGrid), the same modes of ``synthesize.voice_given`` on those phones.
 - ``openfacefx``: openfacefx on the recognised phones (its inner-lip gap on the built-in rig).
-- ``energy``: the loudness alone (log RMS, 0.1 s); ``voice``: the fold model's predicted opening.
+- ``energy``: the loudness alone (log RMS, 0.1 s); ``voice``: the fold model's predicted opening;
+  ``voice_jaw``: its predicted jawOpen.
 - ``live``: the mouth ``stream`` sends with ``stream.voice = "articulation"``
   (:class:`facesynth.domain.live.voice.VoiceFrames`, 20 ms chunks, the fold's model), as its
   inner-lip gap; ``live_jaw``: its jawOpen weight.
@@ -55,6 +56,7 @@ scored speakers there is no interval (``null``).
 from __future__ import annotations
 
 import argparse
+import functools
 import hashlib
 import json
 import sys
@@ -80,9 +82,15 @@ FPS = bench.FPS
 #: closing, mouthFunnel, mouthPucker; live frames jawOpen, mouthFunnel, mouthPucker).
 TARGETS = ("opening", "closure", "closing", "jawOpen", "mouthFunnel", "mouthPucker")
 #: Every mode, in table order (module docstring).
-MODES = ("default", "articulation", "loudness", "phones", "openfacefx", "energy", "voice", "live", "live_jaw",
+MODES = ("default", "articulation", "loudness", "phones", "openfacefx", "energy", "voice", "voice_jaw", "live",
+         "live_jaw",
          "packaged", "given_default", "given_articulation", "given_loudness", "given_phones")
 FACEGOOD_SPEAKER = "facegood/shirley"
+#: Settings of the voice step only (not of the phones' motion the cache holds).
+VOICE_STEP_SETTINGS = ("loudness_weight", "loudness_smoothing_s", "voice_recognized", "voice_given",
+                       "articulation_model", "voice_weight", "voice_rounding_weight", "voice_closure_threshold",
+                       "voice_closing_threshold", "voice_trust_window_s", "voice_trust_low", "voice_trust_high",
+                       "voice_pin_recognized")
 
 
 @dataclass
@@ -124,12 +132,13 @@ def facegood_utterances(data: Path) -> list[Utt]:
     return out
 
 
-def speech_data_utterances(root: Path, skip: tuple[str, ...] = ()) -> list[Utt]:
-    """The utterances of every source of ``root`` whose READY-<source> marker exists (but ``skip``)."""
+def speech_data_utterances(root: Path, skip: tuple[str, ...] = (), only: list[str] | None = None) -> list[Utt]:
+    """The utterances of every source of ``root`` whose READY-<source> marker exists (those of ``only``
+    where given; never those of ``skip``)."""
     out = []
     for ready in sorted(root.glob("READY-*")):
         source = ready.name[len("READY-"):]
-        if source in skip:
+        if source in skip or (only is not None and source not in only):
             continue
         for npz in sorted((root / source).glob("*/*.npz")):
             wav = npz.with_suffix(".wav")
@@ -225,6 +234,12 @@ def _digest(*parts: bytes) -> str:
     return hashlib.sha256(b"\0".join(parts)).hexdigest()[:16]
 
 
+@functools.lru_cache(maxsize=1)
+def _phones_config() -> Config:
+    """The settings the phones' motion is made with: the voice step off (read once per run)."""
+    return Config.load(overrides=["synthesize.voice_recognized=off", "synthesize.voice_given=off"])
+
+
 def phones_motion(db_path: Path, u: Utt, work: Path, given: bool = False):
     """(Motion of the DP on the phones, (starts, ends, phones)) of ``u``: its phones recognised from the
     audio as ``synthesize --audio`` does (or its given phones), the motion without the voice step;
@@ -234,10 +249,13 @@ def phones_motion(db_path: Path, u: Utt, work: Path, given: bool = False):
 
     folder = work / "utts" / u.key
     folder.mkdir(parents=True, exist_ok=True)
-    config = Config.load(overrides=["synthesize.voice_recognized=off", "synthesize.voice_given=off"])
+    config = _phones_config()
     tag = "given" if given else "recognized"
+    # the voice step's settings do not change the phones' motion (the voice is off here)
+    synth = {k: v for k, v in json.loads(settings_json(config.settings("synthesize"))).items()
+             if k not in VOICE_STEP_SETTINGS}
     digest = _digest(u.wav.read_bytes(), (u.given_phones.read_bytes() if given else b""), tag.encode(),
-                     settings_json(config.settings("synthesize")).encode(),
+                     json.dumps(synth, sort_keys=True).encode(),
                      settings_json(config.settings("align")).encode(), sha256_of(db_path).encode())
     motion_file, phones_file = folder / f"motion.{tag}.{digest}.h5", folder / f"phones.{tag}.{digest}.json"
     if not motion_file.exists() or not phones_file.exists():
@@ -250,13 +268,14 @@ def phones_motion(db_path: Path, u: Utt, work: Path, given: bool = False):
     return Motion.read(motion_file), (np.array(p["starts"]), np.array(p["ends"]), list(p["phones"]))
 
 
-def voice_step(motion, u: Utt, phones, settings, model_path: Path, recognized: bool, path: str):
-    """The mouth opening (n,) of ``motion`` after the voice step ``path`` with the model at ``model_path``."""
+def voice_step(motion, u: Utt, phones, settings, model_path: Path, recognized: bool, path: str, **changes):
+    """The mouth opening (n,) of ``motion`` after the voice step ``path`` with the model at ``model_path``
+    (and the synthesize settings ``changes``)."""
     from dataclasses import replace
 
     from facesynth.domain.methods import voice
 
-    s = replace(settings, articulation_model=str(model_path), voice_recognized=path, voice_given=path)
+    s = replace(settings, articulation_model=str(model_path), voice_recognized=path, voice_given=path, **changes)
     moved, _, _ = voice.apply(motion, u.samples, u.rate, phones[0], phones[1], phones[2], s, recognized=recognized)
     return opening_of(moved, settings, u.n)
 
@@ -307,7 +326,8 @@ def summarize(per_speaker: dict[str, dict[str, list[float]]], resample_count: in
     """Per speaker the mean window r of every mode; pooled, the mean over speakers with a 95%
     interval over resampled speakers, and the paired differences of ``default`` against every mode."""
     speakers = sorted(per_speaker)
-    modes = [m for m in MODES if all(m in per_speaker[s] for s in speakers)]
+    extra = sorted({m for s in speakers for m in per_speaker[s] if m not in MODES})  # the sweep's points
+    modes = [m for m in (*MODES, *extra) if all(m in per_speaker[s] for s in speakers)]
     table = {m: np.array([np.nanmean(per_speaker[s][m]) if np.isfinite(per_speaker[s][m]).any() else np.nan
                           for s in speakers]) for m in modes}
     k = len(speakers)
@@ -390,13 +410,20 @@ def main(argv=None) -> dict:
     ap.add_argument("--synthetic", type=int, default=0, help="synthetic speakers per fold (training only)")
     ap.add_argument("--speakers", default=None, help="comma-separated speakers to score (default: all)")
     ap.add_argument("--no-chain", action="store_true", help="score the voice model alone (no synthesis)")
+    ap.add_argument("--sweep", default="",
+                    help="semicolon-separated LOW:HIGH:WEIGHT points of synthesize.voice_trust_low, voice_trust_high "
+                         "and voice_weight: the articulation mode with each, as mode 'trust LOW:HIGH:WEIGHT'")
+    ap.add_argument("--score-seconds", type=float, default=240.0,
+                    help="score each held-out speaker on its first utterances up to this many seconds (all are fitted on)")
+    ap.add_argument("--sources", default=None, help="comma-separated sources of --speech-data to read (default: all READY)")
     ap.add_argument("--window-s", type=float, default=10.0)
     ap.add_argument("--resamples", type=int, default=2000)
     ap.add_argument("--seed", type=int, default=0)
     args = ap.parse_args(argv)
     started = time.perf_counter()
     utts = (facegood_utterances(args.facegood) if args.facegood else []) + \
-        (speech_data_utterances(args.speech_data, ("facegood",) if args.facegood else ()) if args.speech_data else [])
+        (speech_data_utterances(args.speech_data, ("facegood",) if args.facegood else (),
+                                args.sources.split(",") if args.sources else None) if args.speech_data else [])
     if not utts:
         raise SystemExit("no utterances: give --facegood and/or --speech-data (with READY-<source> markers)")
     config = Config.load()
@@ -447,14 +474,26 @@ def main(argv=None) -> dict:
         model.write(model_path, config=json.dumps({"held_out": speaker, "variant": args.variant}), inputs=[],
                     overwrite=True)
         scores: dict[str, list[float]] = {}
+        chosen, total = [], 0.0
         for u in by_speaker[speaker]:
-            curves = {"voice": A.predict_raw(model, u.raw, np.arange(u.n) / FPS)[:, model.column("opening")],
+            if total >= args.score_seconds:
+                break
+            chosen.append(u)
+            total += u.n / FPS
+        for u in chosen:
+            predicted = A.predict_raw(model, u.raw, np.arange(u.n) / FPS)
+            curves = {"voice": predicted[:, model.column("opening")], "voice_jaw": predicted[:, model.column("jawOpen")],
                       "energy": envelope(u.samples, u.rate, u.n, FPS, 0.1)}
             if not args.no_chain:
                 motion, phones = phones_motion(db, u, args.work)
                 curves["phones"] = opening_of(motion, settings, u.n)
                 for mode in ("articulation", "loudness"):
                     curves[mode] = voice_step(motion, u, phones, settings, model_path, True, mode)
+                for point in filter(None, args.sweep.split(";")):
+                    low, high, weight = (float(x) for x in point.split(":"))
+                    curves[f"trust {point}"] = voice_step(motion, u, phones, settings, model_path, True, "articulation",
+                                                          voice_trust_low=low, voice_trust_high=high,
+                                                          voice_weight=weight)
                 curves["default"] = curves[settings.voice_recognized] if settings.voice_recognized != "off" \
                     else curves["phones"]
                 curves["packaged"] = voice_step(motion, u, phones, settings, packaged, True, settings.voice_recognized)

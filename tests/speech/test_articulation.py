@@ -170,3 +170,26 @@ def test_fit_refuses_mismatched_targets():
     raw = A.frame_features(speechlike(1.0), RATE)
     with pytest.raises(InputError, match="expected"):
         A.fit([A.Take(raw, np.zeros((30, 3)), FPS)], ("opening",))
+
+
+def test_a_target_some_takes_lack_is_fitted_on_the_takes_that_have_it():
+    """A source without a jaw channel (NaN) still teaches the opening; the jaw is fitted on the
+    takes that have it, exactly as a fit on those takes alone fits it."""
+    a, b = speechlike(6.0, seed=0), speechlike(6.0, seed=1)
+    takes = []
+    for k, x in enumerate((a, b)):
+        raw = A.frame_features(x, RATE)
+        n = int(6.0 * FPS)
+        env = np.interp(np.arange(n) / FPS, np.arange(len(raw)) * A.FRAME_S, raw[:, A.I_LOG_RMS])
+        jaw = 0.5 * env if k == 0 else np.full(n, np.nan)  # the second take has no jaw
+        takes.append(A.Take(raw, np.stack([np.exp(env), jaw], 1), FPS))
+    both = A.fit(takes, ("opening", "jawOpen"))
+    x = [A.design(both, t.raw, t.times_s).astype(np.float64) for t in takes]  # the fit's own context
+    jaw, jaw0 = A.ridge(x[0], takes[0].targets[:, 1:], both.alpha)  # the jaw: from the first take alone
+    np.testing.assert_allclose(both.coef[:, 1:], jaw, rtol=1e-6, atol=1e-9)
+    np.testing.assert_allclose(both.intercept[1:], jaw0, rtol=1e-6, atol=1e-9)
+    opening, _ = A.ridge(np.concatenate(x), np.concatenate([t.targets[:, :1] for t in takes]), both.alpha)
+    np.testing.assert_allclose(both.coef[:, :1], opening, rtol=1e-6, atol=1e-9)  # the opening: from both
+    assert np.isfinite(both.coef).all() and np.isfinite(both.target_std).all()
+    with pytest.raises(InputError, match="jawOpen"):
+        A.fit(takes[1:], ("opening", "jawOpen"))  # no take has a jaw: refused, naming it

@@ -8,7 +8,7 @@ A :class:`Voice` changes, in this order:
   (formants and harmonics move together, as between a longer and a shorter tract and its larynx:
   0.85 a larger speaker, 1.2 a smaller one), on 32 ms frames with the original phases;
 * the **microphone and channel**: a first-order high-pass at ``low_hz``, a low-pass at
-  ``high_hz`` (a telephone band at 3.4 kHz), a spectral tilt of ``tilt_db`` per octave around
+  ``high_hz`` (8th order; a telephone band at 3.4 kHz), a spectral tilt of ``tilt_db`` per octave around
   1 kHz and a gain of ``gain_db``;
 * **noise**: white noise ``snr_db`` below the voice's RMS over its loud frames.
 
@@ -83,7 +83,7 @@ def channel(samples: np.ndarray, rate: int, voice: Voice) -> np.ndarray:
     spec = np.fft.rfft(x)
     f = np.fft.rfftfreq(n, 1.0 / rate)
     high_pass = 1.0 / np.sqrt(1.0 + (voice.low_hz / np.maximum(f, 1e-3)) ** 2)
-    low_pass = 1.0 / np.sqrt(1.0 + (f / min(voice.high_hz, rate / 2)) ** 8)
+    low_pass = 1.0 / np.sqrt(1.0 + (f / min(voice.high_hz, rate / 2)) ** 16)  # 8th order
     tilt = 10.0 ** (voice.tilt_db * np.log2(np.maximum(f, 20.0) / 1000.0) / 20.0)
     gain = 10.0 ** (voice.gain_db / 20.0)
     return np.fft.irfft(spec * high_pass * low_pass * tilt * gain, n)
