@@ -67,6 +67,7 @@ from pathlib import Path
 import numpy as np
 
 from facesynth.base.config import Config, settings_json
+from facesynth.base.errors import FacesynthError
 from facesynth.base.hashing import sha256_of
 from facesynth.domain.evaluation.bootstrap import interval, paired_difference, resamples
 from facesynth.domain.speech import articulation as A
@@ -90,7 +91,7 @@ FACEGOOD_SPEAKER = "facegood/shirley"
 VOICE_STEP_SETTINGS = ("loudness_weight", "loudness_smoothing_s", "voice_recognized", "voice_given",
                        "articulation_model", "voice_weight", "voice_rounding_weight", "voice_closure_threshold",
                        "voice_closing_threshold", "voice_trust_window_s", "voice_trust_low", "voice_trust_high",
-                       "voice_pin_recognized")
+                       "voice_pin_recognized", "articulation_prior")
 
 
 @dataclass
@@ -390,6 +391,39 @@ def fit_fold(train: dict[str, list[Utt]], ref, variant: str, synthetic: int, see
     return A.fit(takes, names, **VARIANTS[variant])
 
 
+def curve_files(u: Utt) -> list[Path]:
+    """The files of ``u``'s curves (FACEGOOD's .npy, a source's .npz), beside its audio."""
+    if u.source == "facegood":
+        return [u.wav.parent.parent / "bs_value_npy" / f"bs_value_{u.name}.npy"]
+    return [u.wav.with_suffix(".npz")]
+
+
+def write_packaged(by_speaker: dict[str, list[Utt]], sources: list[str], ref, variant: str, synthetic: int, seed: int,
+                   out: Path) -> dict:
+    """Fit the model on every utterance of ``sources`` (those that may ship) and write it to ``out``,
+    recording each file it learned from by name and sha256; returns what it was fitted on."""
+    train = {s: v for s, v in by_speaker.items() if v[0].source in sources and v[0].real_voice}
+    if not train:
+        raise SystemExit(f"--ship-sources {','.join(sources)}: no speaker of those sources was read")
+    model = fit_fold(train, ref, variant, synthetic, seed)
+    records = []
+    for speaker in sorted(train):
+        for u in train[speaker]:
+            prefix = "FACEGOOD" if u.source == "facegood" else speaker
+            for path in [u.wav, *curve_files(u)]:
+                name = f"{prefix}/{path.parent.name}/{path.name}" if u.source == "facegood" else f"{prefix}/{path.name}"
+                records.append({"name": name, "sha256": sha256_of(path),
+                                "seconds": round(u.n / FPS, 2) if path == u.wav else None})
+    model.fitted_on = records
+    settings = {"variant": variant, **VARIANTS[variant], "synthetic_speakers": synthetic, "seed": seed,
+                "speakers": sorted(train), "targets_in_units_of": FACEGOOD_SPEAKER,
+                "offsets_s": [float(x) for x in model.offsets_s], "pool": model.pool, "alpha": model.alpha,
+                "normalization": model.normalization, "tau_s": model.tau_s, "expand": model.expand}
+    model.write(out, config=json.dumps(settings, sort_keys=True), inputs=[], overwrite=True)
+    return {"speakers": sorted(train), "files": len(records),
+            "seconds": round(sum(u.n for v in train.values() for u in v) / FPS, 1), "targets": list(model.target_names)}
+
+
 #: Fit settings tried (item: features that do not carry the speaker); "default" is what ships.
 VARIANTS: dict[str, dict] = {
     "default": {},
@@ -416,6 +450,10 @@ def main(argv=None) -> dict:
     ap.add_argument("--score-seconds", type=float, default=240.0,
                     help="score each held-out speaker on its first utterances up to this many seconds (all are fitted on)")
     ap.add_argument("--sources", default=None, help="comma-separated sources of --speech-data to read (default: all READY)")
+    ap.add_argument("--model-out", type=Path, default=None,
+                    help="also write the model fitted on every speaker of --ship-sources here (the packaged model)")
+    ap.add_argument("--ship-sources", default="facegood,grid",
+                    help="the sources whose licences let a model fitted on them ship (for --model-out)")
     ap.add_argument("--window-s", type=float, default=10.0)
     ap.add_argument("--resamples", type=int, default=2000)
     ap.add_argument("--seed", type=int, default=0)
@@ -462,6 +500,7 @@ def main(argv=None) -> dict:
         live_model = LiveModel(MotionDatabase.read(db), settings, config.settings("stream"), config.settings("solve"))
     packaged = bench.ARTICULATION_MODEL
     per_speaker: dict[str, dict[str, list[float]]] = {}
+    skipped: list[dict] = []
     timing = {}
     for speaker in scored:
         t0 = time.perf_counter()
@@ -485,7 +524,11 @@ def main(argv=None) -> dict:
             curves = {"voice": predicted[:, model.column("opening")], "voice_jaw": predicted[:, model.column("jawOpen")],
                       "energy": envelope(u.samples, u.rate, u.n, FPS, 0.1)}
             if not args.no_chain:
-                motion, phones = phones_motion(db, u, args.work)
+                try:
+                    motion, phones = phones_motion(db, u, args.work)
+                except FacesynthError as exc:  # synthesize --audio refuses it too (no speech found): not scored
+                    skipped.append({"utterance": u.key, "why": str(exc).split(";")[0][-200:]})
+                    continue
                 curves["phones"] = opening_of(motion, settings, u.n)
                 for mode in ("articulation", "loudness"):
                     curves[mode] = voice_step(motion, u, phones, settings, model_path, True, mode)
@@ -512,8 +555,11 @@ def main(argv=None) -> dict:
                         if settings.voice_given != "off" else curves["given_phones"]
             for mode, curve in curves.items():
                 scores.setdefault(mode, []).extend(window_scores(curve, u.real["opening"], u.n, args.window_s))
-        per_speaker[speaker] = scores
+        if scores.get("voice"):
+            per_speaker[speaker] = scores
         timing[speaker] = round(time.perf_counter() - t0, 1)
+    packaged_fit = write_packaged(by_speaker, args.ship_sources.split(","), ref, args.variant, args.synthetic,
+                                  args.seed, args.model_out) if args.model_out else None
     summary = summarize(per_speaker, args.resamples, args.seed)
     return {"benchmark": "voice_speakers", "variant": args.variant, "fit": VARIANTS[args.variant],
             "synthetic_speakers": args.synthetic,
@@ -521,7 +567,7 @@ def main(argv=None) -> dict:
                          "window_s": args.window_s, "resamples": args.resamples, "seed": args.seed, "fps": FPS},
             "data": {s: {"utterances": len(v), "seconds": round(sum(u.n for u in v) / FPS, 1),
                          **labels.get(s, {})} for s, v in sorted(by_speaker.items())},
-            **summary, "seconds": {"per_speaker": timing, "total": round(time.perf_counter() - started, 1)}}
+            "skipped": skipped, "packaged_model_fitted_on": packaged_fit, **summary, "seconds": {"per_speaker": timing, "total": round(time.perf_counter() - started, 1)}}
 
 
 if __name__ == "__main__":

@@ -255,6 +255,10 @@ class SynthesizeSettings:
                                choices=("articulation", "loudness", "off"))
     articulation_model: str = setting("not in the paper: the articulation artifact the voice's articulation comes "
                                       "from; empty: the packaged model (fitted on FACEGOOD's calibration takes)")
+    articulation_prior: float = setting("not in the paper: fit-articulation adapts the articulation_model (the "
+                                        "general one) to a performer: how strongly each coefficient is pulled "
+                                        "toward it (a ridge penalty per frame, as the fit's own); 0: the "
+                                        "performer's capture alone", ge=0)
     voice_weight: float = setting("not in the paper: the share of the mouth opening the voice's articulation takes "
                                   "where the voice is clear; 0: the phones' opening", ge=0, le=1)
     voice_rounding_weight: float = setting("not in the paper: the share of the lips' rounding (mouthFunnel, "
