@@ -67,7 +67,7 @@ from pathlib import Path
 import numpy as np
 
 from facesynth.base.config import Config, settings_json
-from facesynth.base.errors import FacesynthError
+from facesynth.base.errors import InputError
 from facesynth.base.hashing import sha256_of
 from facesynth.domain.evaluation.bootstrap import interval, paired_difference, resamples
 from facesynth.domain.speech import articulation as A
@@ -87,6 +87,8 @@ MODES = ("default", "articulation", "loudness", "phones", "openfacefx", "energy"
          "live_jaw",
          "packaged", "given_default", "given_articulation", "given_loudness", "given_phones")
 FACEGOOD_SPEAKER = "facegood/shirley"
+#: FACEGOOD's takes used for no choice (docs/real-speech.md).
+FACEGOOD_FAIR = ("1114_2_04", "1114_2_05", "1114_3_15")
 #: Settings of the voice step only (not of the phones' motion the cache holds).
 VOICE_STEP_SETTINGS = ("loudness_weight", "loudness_smoothing_s", "voice_recognized", "voice_given",
                        "articulation_model", "voice_weight", "voice_rounding_weight", "voice_closure_threshold",
@@ -110,6 +112,8 @@ class Utt:
     #: a real voice (scored) or the virtual actress's synthetic one (training only)
     real_voice: bool = True
     raw: np.ndarray = field(default_factory=lambda: np.zeros((0, A.N_FEATURES), np.float32))
+    #: raw features of synthetic speakers saying it (:func:`synthetic_features`)
+    synthetic: list[np.ndarray] = field(default_factory=list)
 
     @property
     def key(self) -> str:
@@ -119,10 +123,11 @@ class Utt:
 # ---------------------------------------------------------------- data
 
 def facegood_utterances(data: Path) -> list[Utt]:
-    """FACEGOOD's takes as utterances of one speaker."""
+    """FACEGOOD's takes as utterances of one speaker, the takes used for no choice first (the
+    actress and the loudness step were calibrated on 1114_2_01..03; a capped score reads the others)."""
     names, table = bench.channel_names(data), bench.read_table()
     out = []
-    for wav in sorted((data / "wav").glob("*.wav")):
+    for wav in sorted((data / "wav").glob("*.wav"), key=lambda p: (p.stem not in FACEGOOD_FAIR, p.stem)):
         take = wav.stem
         values = np.asarray(bench.load_npy(data / "bs_value_npy" / f"bs_value_{take}.npy"), np.float64)
         samples, rate = read_audio(wav)
@@ -369,8 +374,6 @@ def summarize(per_speaker: dict[str, dict[str, list[float]]], resample_count: in
 def fit_fold(train: dict[str, list[Utt]], ref, variant: str, synthetic: int, seed: int) -> A.ArticulationModel:
     """The model fitted on the speakers ``train`` ({speaker: utterances}) with ``variant``'s settings
     (and ``synthetic`` synthetic speakers made from their voices)."""
-    from facesynth.domain.speech import voices
-
     pairs = [(u, y) for speaker in sorted(train) for u, y in zip(train[speaker], speaker_targets(train[speaker], ref))]
     known = np.array([np.isfinite(np.concatenate([y[:, j] for _, y in pairs])).any() for j in range(len(TARGETS))])
     jaw, opening = TARGETS.index("jawOpen"), TARGETS.index("opening")
@@ -382,13 +385,23 @@ def fit_fold(train: dict[str, list[Utt]], ref, variant: str, synthetic: int, see
         known[jaw] = True
     names = tuple(t for t, k in zip(TARGETS, known) if k)  # a target no training speaker has is not predicted
     takes = [A.Take(u.raw, y[:, known], FPS) for u, y in pairs]
-    if synthetic:
-        rng = np.random.default_rng(seed)
-        for _ in range(synthetic):
-            voice = voices.random_voice(rng)
-            takes += [A.Take(A.frame_features(voices.transform(u.samples, u.rate, voice), u.rate), y[:, known], FPS)
-                      for u, y in pairs]
+    for u, y in pairs:
+        takes += [A.Take(raw, y[:, known], FPS) for raw in synthetic_features(u, synthetic, seed)]
     return A.fit(takes, names, **VARIANTS[variant])
+
+
+def synthetic_features(u: Utt, count: int, seed: int) -> list[np.ndarray]:
+    """The raw features (K, D) of ``count`` synthetic speakers saying ``u`` (each voice drawn by
+    :func:`facesynth.domain.speech.voices.random_voice` from a generator seeded by ``seed``, the
+    utterance's name and the speaker's number), made once per run."""
+    from facesynth.domain.speech import voices
+
+    while len(u.synthetic) < count:
+        i = len(u.synthetic)
+        key = int.from_bytes(hashlib.sha256(f"{seed}/{u.key}/{i}".encode()).digest()[:8], "little")
+        voice = voices.random_voice(np.random.default_rng(key))
+        u.synthetic.append(A.frame_features(voices.transform(u.samples, u.rate, voice), u.rate))
+    return u.synthetic[:count]
 
 
 def curve_files(u: Utt) -> list[Path]:
@@ -428,8 +441,11 @@ def write_packaged(by_speaker: dict[str, list[Utt]], sources: list[str], ref, va
 VARIANTS: dict[str, dict] = {
     "default": {},
     "utterance": {"normalization": "utterance"},
+    "alpha0.3": {"alpha": 0.3},
+    "alpha3": {"alpha": 3.0},
     "alpha10": {"alpha": 10.0},
-    "alpha100": {"alpha": 100.0},
+    "tau1": {"tau_s": 1.0},
+    "tau10": {"tau_s": 10.0},
 }
 
 
@@ -444,10 +460,12 @@ def main(argv=None) -> dict:
     ap.add_argument("--synthetic", type=int, default=0, help="synthetic speakers per fold (training only)")
     ap.add_argument("--speakers", default=None, help="comma-separated speakers to score (default: all)")
     ap.add_argument("--no-chain", action="store_true", help="score the voice model alone (no synthesis)")
+    ap.add_argument("--folds", default="speaker", choices=("speaker", "source"),
+                    help="leave out one speaker at a time, or one whole source (its microphone, language, setting)")
     ap.add_argument("--sweep", default="",
                     help="semicolon-separated LOW:HIGH:WEIGHT points of synthesize.voice_trust_low, voice_trust_high "
                          "and voice_weight: the articulation mode with each, as mode 'trust LOW:HIGH:WEIGHT'")
-    ap.add_argument("--score-seconds", type=float, default=240.0,
+    ap.add_argument("--score-seconds", type=float, default=60.0,
                     help="score each held-out speaker on its first utterances up to this many seconds (all are fitted on)")
     ap.add_argument("--sources", default=None, help="comma-separated sources of --speech-data to read (default: all READY)")
     ap.add_argument("--model-out", type=Path, default=None,
@@ -465,6 +483,7 @@ def main(argv=None) -> dict:
     if not utts:
         raise SystemExit("no utterances: give --facegood and/or --speech-data (with READY-<source> markers)")
     config = Config.load()
+    _phones_config()  # read now: the settings of the whole run
     settings = config.settings("synthesize")
     lip_markers = config.settings("evaluate").lip_markers
     args.work.mkdir(parents=True, exist_ok=True)
@@ -502,16 +521,23 @@ def main(argv=None) -> dict:
     per_speaker: dict[str, dict[str, list[float]]] = {}
     skipped: list[dict] = []
     timing = {}
+    fold_models: dict[str, tuple[A.ArticulationModel, Path]] = {}
     for speaker in scored:
         t0 = time.perf_counter()
-        train = {s: v for s, v in by_speaker.items() if s != speaker}
-        if not train:
-            raise SystemExit(f"{speaker} is the only speaker: leave-one-speaker-out needs two or more")
-        model = fit_fold(train, ref, args.variant, args.synthetic, args.seed)
-        model_path = args.work / "folds" / f"{args.variant}.s{args.synthetic}.{speaker.replace('/', '+')}.h5"
-        model_path.parent.mkdir(parents=True, exist_ok=True)
-        model.write(model_path, config=json.dumps({"held_out": speaker, "variant": args.variant}), inputs=[],
-                    overwrite=True)
+        # the speakers left out with this one: itself, or its whole source (--folds source)
+        fold = speaker if args.folds == "speaker" else by_speaker[speaker][0].source
+        if fold not in fold_models:
+            train = {s: v for s, v in by_speaker.items()
+                     if (s if args.folds == "speaker" else v[0].source) != fold}
+            if not train:
+                raise SystemExit(f"{fold} holds every speaker: leaving it out leaves nothing to fit on")
+            model = fit_fold(train, ref, args.variant, args.synthetic, args.seed)
+            model_path = args.work / "folds" / f"{args.variant}.s{args.synthetic}.{fold.replace('/', '+')}.h5"
+            model_path.parent.mkdir(parents=True, exist_ok=True)
+            model.write(model_path, config=json.dumps({"held_out": fold, "variant": args.variant}), inputs=[],
+                        overwrite=True)
+            fold_models[fold] = (model, model_path)
+        model, model_path = fold_models[fold]
         scores: dict[str, list[float]] = {}
         chosen, total = [], 0.0
         for u in by_speaker[speaker]:
@@ -526,7 +552,7 @@ def main(argv=None) -> dict:
             if not args.no_chain:
                 try:
                     motion, phones = phones_motion(db, u, args.work)
-                except FacesynthError as exc:  # synthesize --audio refuses it too (no speech found): not scored
+                except InputError as exc:  # synthesize --audio refuses it too (no speech found): not scored
                     skipped.append({"utterance": u.key, "why": str(exc).split(";")[0][-200:]})
                     continue
                 curves["phones"] = opening_of(motion, settings, u.n)
@@ -561,7 +587,7 @@ def main(argv=None) -> dict:
     packaged_fit = write_packaged(by_speaker, args.ship_sources.split(","), ref, args.variant, args.synthetic,
                                   args.seed, args.model_out) if args.model_out else None
     summary = summarize(per_speaker, args.resamples, args.seed)
-    return {"benchmark": "voice_speakers", "variant": args.variant, "fit": VARIANTS[args.variant],
+    return {"benchmark": "voice_speakers", "folds": args.folds, "variant": args.variant, "fit": VARIANTS[args.variant],
             "synthetic_speakers": args.synthetic,
             "settings": {"voice_recognized": settings.voice_recognized, "voice_given": settings.voice_given,
                          "window_s": args.window_s, "resamples": args.resamples, "seed": args.seed, "fps": FPS},
