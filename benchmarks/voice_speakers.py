@@ -371,10 +371,12 @@ def summarize(per_speaker: dict[str, dict[str, list[float]]], resample_count: in
 
 # ---------------------------------------------------------------- folds
 
-def fit_fold(train: dict[str, list[Utt]], ref, variant: str, synthetic: int, seed: int) -> A.ArticulationModel:
+def fit_fold(train: dict[str, list[Utt]], ref, variant: str, synthetic: int | dict[str, int],
+             seed: int) -> A.ArticulationModel:
     """The model fitted on the speakers ``train`` ({speaker: utterances}) with ``variant``'s settings
-    (and ``synthetic`` synthetic speakers made from their voices)."""
+    (and ``synthetic`` synthetic speakers made from each one's voice: a count, or one per speaker)."""
     pairs = [(u, y) for speaker in sorted(train) for u, y in zip(train[speaker], speaker_targets(train[speaker], ref))]
+    counts = synthetic if isinstance(synthetic, dict) else {s: synthetic for s in train}
     known = np.array([np.isfinite(np.concatenate([y[:, j] for _, y in pairs])).any() for j in range(len(TARGETS))])
     jaw, opening = TARGETS.index("jawOpen"), TARGETS.index("opening")
     if not known[jaw]:  # no training speaker has a jaw channel: the jaw from the opening, in the jaw's units
@@ -386,7 +388,7 @@ def fit_fold(train: dict[str, list[Utt]], ref, variant: str, synthetic: int, see
     names = tuple(t for t, k in zip(TARGETS, known) if k)  # a target no training speaker has is not predicted
     takes = [A.Take(u.raw, y[:, known], FPS) for u, y in pairs]
     for u, y in pairs:
-        takes += [A.Take(raw, y[:, known], FPS) for raw in synthetic_features(u, synthetic, seed)]
+        takes += [A.Take(raw, y[:, known], FPS) for raw in synthetic_features(u, counts.get(u.speaker, 0), seed)]
     return A.fit(takes, names, **VARIANTS[variant])
 
 
@@ -412,13 +414,19 @@ def curve_files(u: Utt) -> list[Path]:
 
 
 def write_packaged(by_speaker: dict[str, list[Utt]], sources: list[str], ref, variant: str, synthetic: int, seed: int,
-                   out: Path) -> dict:
+                   out: Path, balance: bool = True) -> dict:
     """Fit the model on every utterance of ``sources`` (those that may ship) and write it to ``out``,
     recording each file it learned from by name and sha256; returns what it was fitted on."""
     train = {s: v for s, v in by_speaker.items() if v[0].source in sources and v[0].real_voice}
     if not train:
         raise SystemExit(f"--ship-sources {','.join(sources)}: no speaker of those sources was read")
-    model = fit_fold(train, ref, variant, synthetic, seed)
+    seconds = {sp: sum(u.n for u in v) / FPS for sp, v in train.items()}
+    # each speaker heard for about as long as the longest-heard one (at most 20 voices of each):
+    # its own voice and synthetic voices made of it, so that one long-recorded speaker does not
+    # make the model hers
+    counts = {sp: synthetic + min(20, max(0, int(np.ceil(max(seconds.values()) / sec)) - 1 - synthetic))
+              for sp, sec in seconds.items()} if balance else {sp: synthetic for sp in train}
+    model = fit_fold(train, ref, variant, counts, seed)
     records = []
     for speaker in sorted(train):
         for u in train[speaker]:
@@ -428,13 +436,14 @@ def write_packaged(by_speaker: dict[str, list[Utt]], sources: list[str], ref, va
                 records.append({"name": name, "sha256": sha256_of(path),
                                 "seconds": round(u.n / FPS, 2) if path == u.wav else None})
     model.fitted_on = records
-    settings = {"variant": variant, **VARIANTS[variant], "synthetic_speakers": synthetic, "seed": seed,
+    settings = {"variant": variant, **VARIANTS[variant], "synthetic_voices_per_speaker": counts, "seed": seed,
                 "speakers": sorted(train), "targets_in_units_of": FACEGOOD_SPEAKER,
                 "offsets_s": [float(x) for x in model.offsets_s], "pool": model.pool, "alpha": model.alpha,
                 "normalization": model.normalization, "tau_s": model.tau_s, "expand": model.expand}
     model.write(out, config=json.dumps(settings, sort_keys=True), inputs=[], overwrite=True)
     return {"speakers": sorted(train), "files": len(records),
-            "seconds": round(sum(u.n for v in train.values() for u in v) / FPS, 1), "targets": list(model.target_names)}
+            "seconds": round(sum(u.n for v in train.values() for u in v) / FPS, 1), "targets": list(model.target_names),
+            "synthetic_voices_per_speaker": counts}
 
 
 #: Fit settings tried (item: features that do not carry the speaker); "default" is what ships.
@@ -462,6 +471,9 @@ def main(argv=None) -> dict:
     ap.add_argument("--no-chain", action="store_true", help="score the voice model alone (no synthesis)")
     ap.add_argument("--folds", default="speaker", choices=("speaker", "source"),
                     help="leave out one speaker at a time, or one whole source (its microphone, language, setting)")
+    ap.add_argument("--reuse-folds", action="store_true",
+                    help="read each fold's model from --work where an earlier run with the same data wrote it")
+    ap.add_argument("--no-live", action="store_true", help="leave out the live modes (the slowest)")
     ap.add_argument("--sweep", default="",
                     help="semicolon-separated LOW:HIGH:WEIGHT points of synthesize.voice_trust_low, voice_trust_high "
                          "and voice_weight: the articulation mode with each, as mode 'trust LOW:HIGH:WEIGHT'")
@@ -472,6 +484,10 @@ def main(argv=None) -> dict:
                     help="also write the model fitted on every speaker of --ship-sources here (the packaged model)")
     ap.add_argument("--ship-sources", default="facegood,grid",
                     help="the sources whose licences let a model fitted on them ship (for --model-out)")
+    ap.add_argument("--no-balance", action="store_true",
+                    help="--model-out: no synthetic voices to give each speaker as long as the longest-heard one")
+    ap.add_argument("--sweep-packaged", action="store_true",
+                    help="the --sweep points with the packaged model too (modes 'packaged trust ...')")
     ap.add_argument("--window-s", type=float, default=10.0)
     ap.add_argument("--resamples", type=int, default=2000)
     ap.add_argument("--seed", type=int, default=0)
@@ -526,6 +542,9 @@ def main(argv=None) -> dict:
         t0 = time.perf_counter()
         # the speakers left out with this one: itself, or its whole source (--folds source)
         fold = speaker if args.folds == "speaker" else by_speaker[speaker][0].source
+        cached = args.work / "folds" / f"{args.variant}.s{args.synthetic}.{fold.replace('/', '+')}.h5"
+        if fold not in fold_models and args.reuse_folds and cached.exists():
+            fold_models[fold] = (A.ArticulationModel.read(cached), cached)
         if fold not in fold_models:
             train = {s: v for s, v in by_speaker.items()
                      if (s if args.folds == "speaker" else v[0].source) != fold}
@@ -560,9 +579,10 @@ def main(argv=None) -> dict:
                     curves[mode] = voice_step(motion, u, phones, settings, model_path, True, mode)
                 for point in filter(None, args.sweep.split(";")):
                     low, high, weight = (float(x) for x in point.split(":"))
-                    curves[f"trust {point}"] = voice_step(motion, u, phones, settings, model_path, True, "articulation",
-                                                          voice_trust_low=low, voice_trust_high=high,
-                                                          voice_weight=weight)
+                    for tag, path in (("", model_path), ("packaged ", packaged)) if args.sweep_packaged else (("", model_path),):
+                        curves[f"{tag}trust {point}"] = voice_step(motion, u, phones, settings, path, True,
+                                                                   "articulation", voice_trust_low=low,
+                                                                   voice_trust_high=high, voice_weight=weight)
                 curves["default"] = curves[settings.voice_recognized] if settings.voice_recognized != "off" \
                     else curves["phones"]
                 curves["packaged"] = voice_step(motion, u, phones, settings, packaged, True, settings.voice_recognized)
@@ -571,7 +591,8 @@ def main(argv=None) -> dict:
 
                 segs = [Segment(float(a), float(b), p) for a, b, p in zip(*phones)]
                 curves["openfacefx"] = bench.openfacefx_method(segs, u.n, rig, lip_vertices)["opening"]
-                curves.update(live_curves(live_model, model, u, settings, settings.loudness_lip_markers))
+                if not args.no_live:
+                    curves.update(live_curves(live_model, model, u, settings, settings.loudness_lip_markers))
                 if u.given_phones is not None:
                     gm, gp = phones_motion(db, u, args.work, given=True)
                     curves["given_phones"] = opening_of(gm, settings, u.n)
@@ -585,7 +606,7 @@ def main(argv=None) -> dict:
             per_speaker[speaker] = scores
         timing[speaker] = round(time.perf_counter() - t0, 1)
     packaged_fit = write_packaged(by_speaker, args.ship_sources.split(","), ref, args.variant, args.synthetic,
-                                  args.seed, args.model_out) if args.model_out else None
+                                  args.seed, args.model_out, not args.no_balance) if args.model_out else None
     summary = summarize(per_speaker, args.resamples, args.seed)
     return {"benchmark": "voice_speakers", "folds": args.folds, "variant": args.variant, "fit": VARIANTS[args.variant],
             "synthetic_speakers": args.synthetic,
