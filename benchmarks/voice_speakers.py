@@ -39,7 +39,7 @@ from them on the built-in actress's database (``small`` preset, seed 0), at 30 f
   ``voice_jaw``: its predicted jawOpen.
 - ``live``: the mouth ``stream`` sends with ``stream.voice = "articulation"``
   (:class:`facesynth.domain.live.voice.VoiceFrames`, 20 ms chunks, the fold's model), as its
-  inner-lip gap; ``live_jaw``: its jawOpen weight.
+  inner-lip gap; ``live_jaw``: its jawOpen weight; ``live_packaged``: the same with the packaged model.
 - ``packaged``: ``default`` with the packaged model (fitted on FACEGOOD: within-speaker there).
 
 Scores: Pearson r of each mode's mouth opening against the real one in windows of about
@@ -84,7 +84,7 @@ FPS = bench.FPS
 TARGETS = ("opening", "closure", "closing", "jawOpen", "mouthFunnel", "mouthPucker")
 #: Every mode, in table order (module docstring).
 MODES = ("default", "articulation", "loudness", "phones", "openfacefx", "energy", "voice", "voice_jaw", "live",
-         "live_jaw",
+         "live_jaw", "live_packaged",
          "packaged", "given_default", "given_articulation", "given_loudness", "given_phones")
 FACEGOOD_SPEAKER = "facegood/shirley"
 #: FACEGOOD's takes used for no choice (docs/real-speech.md).
@@ -534,6 +534,7 @@ def main(argv=None) -> dict:
         lip_vertices = np.array([binding[m] for m in lip_markers])
         live_model = LiveModel(MotionDatabase.read(db), settings, config.settings("stream"), config.settings("solve"))
     packaged = bench.ARTICULATION_MODEL
+    packaged_model = A.ArticulationModel.read(packaged)
     per_speaker: dict[str, dict[str, list[float]]] = {}
     skipped: list[dict] = []
     timing = {}
@@ -572,7 +573,8 @@ def main(argv=None) -> dict:
                 try:
                     motion, phones = phones_motion(db, u, args.work)
                 except InputError as exc:  # synthesize --audio refuses it too (no speech found): not scored
-                    skipped.append({"utterance": u.key, "why": str(exc).split(";")[0][-200:]})
+                    why = str(exc).replace(str(u.wav), u.key).split(";")[0]  # no folder of this machine
+                    skipped.append({"utterance": u.key, "why": why})
                     continue
                 curves["phones"] = opening_of(motion, settings, u.n)
                 for mode in ("articulation", "loudness"):
@@ -593,6 +595,8 @@ def main(argv=None) -> dict:
                 curves["openfacefx"] = bench.openfacefx_method(segs, u.n, rig, lip_vertices)["opening"]
                 if not args.no_live:
                     curves.update(live_curves(live_model, model, u, settings, settings.loudness_lip_markers))
+                    shipped = live_curves(live_model, packaged_model, u, settings, settings.loudness_lip_markers)
+                    curves["live_packaged"] = shipped["live"]
                 if u.given_phones is not None:
                     gm, gp = phones_motion(db, u, args.work, given=True)
                     curves["given_phones"] = opening_of(gm, settings, u.n)

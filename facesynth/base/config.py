@@ -254,7 +254,7 @@ class SynthesizeSettings:
     voice_given: str = setting("not in the paper: the same with the phones given or aligned to a transcript",
                                choices=("articulation", "loudness", "off"))
     articulation_model: str = setting("not in the paper: the articulation artifact the voice's articulation comes "
-                                      "from; empty: the packaged model (fitted on FACEGOOD's calibration takes)")
+                                      "from; empty: the packaged model (fitted on FACEGOOD and GRID's speakers)")
     articulation_prior: float = setting("not in the paper: fit-articulation adapts the articulation_model (the "
                                         "general one) to a performer: how strongly each coefficient is pulled "
                                         "toward it (a ridge penalty per frame, as the fit's own); 0: the "

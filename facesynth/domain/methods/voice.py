@@ -8,7 +8,7 @@ or aligned to a transcript):
 
 * ``"articulation"``: the acoustic articulation model (:mod:`facesynth.domain.speech.articulation`,
   the ``articulation`` artifact ``synthesize.articulation_model``; the packaged one, fitted on
-  FACEGOOD's calibration takes, by default) predicts the mouth's curves from the voice, and
+  FACEGOOD's and GRID's speakers, by default) predicts the mouth's curves from the voice, and
   :func:`fuse` takes them in (below);
 * ``"loudness"``: the voice's loudness alone (:func:`facesynth.domain.speech.loudness.follow`), the
   special case of a "model" whose one prediction is the loudness envelope, mapped by rank, with
@@ -37,6 +37,13 @@ or aligned to a transcript):
 4. *Motion.* As the loudness step moves it: every marker along its direction by the step that
    brings the lip gap to its target (:func:`facesynth.domain.speech.loudness.move_to_gaps`).
 
+**Trust** (:func:`trust`): the voice's weight in 1-3 (and its closures) is also scaled by how well
+its predicted opening agrees with the method's over ``voice_trust_window_s`` (their local
+Pearson r, from ``voice_trust_low`` to ``voice_trust_high``): the loudness says that someone
+speaks, the agreement that the model reads this voice. On speakers the packaged model never heard
+(``benchmarks/voice_speakers.py``) it kept the mouth level with the phones alone, where the
+untrusted voice took it 0.09 below them.
+
 Why the two paths differ (``docs/real-speech.md``): with the phones recognised from the audio
 (the only case FACEGOOD's Mandarin speech allows, and audio alone in general), the voice's
 articulation beats the loudness alone and the phones' own closures; with the phones given (text
@@ -64,8 +71,8 @@ from facesynth.domain.speech.loudness import lip_gaps, move_to_gaps, moving_aver
 from facesynth.model.articulation import ArticulationModel
 from facesynth.model.motion import Motion
 
-#: The packaged articulation model (fitted on FACEGOOD's calibration takes 1114_2_01..03 by
-#: ``benchmarks/voice_articulation.py --model-out``).
+#: The packaged articulation model (fitted on the speakers whose recordings may ship, FACEGOOD's and
+#: GRID's, by ``benchmarks/voice_speakers.py --model-out``; its ``fitted_on`` names every file).
 PACKAGED_MODEL = Path(__file__).resolve().parents[2] / "data" / "articulation.h5"
 #: The voice's paths (``synthesize.voice_recognized``, ``synthesize.voice_given``).
 VOICE_PATHS = ("articulation", "loudness", "off")
