@@ -36,9 +36,9 @@ Methods, all at 30 frames/s on the take's whole length, no lag (none is searched
 - ``facesynth_phones``: the same from the phones alone (no ``--audio``).
 - ``voice``: the packaged articulation model's own curves from the audio: the voice alone, no
   phones, no motion. The packaged model is now fitted on all seven takes (and GRID's speakers),
-  so on FACEGOOD this and ``facesynth`` are in-sample; give ``synthesize.articulation_model`` a
-  model fitted on 1114_2_01..03 (``benchmarks/voice_articulation.py --model-out``) to score them
-  fairly, as docs/real-speech.md's within-speaker figures were.
+  so on FACEGOOD this and ``facesynth`` are in-sample; docs/real-speech.md's within-speaker
+  figures came from the release before's model, fitted on 1114_2_01..03
+  (``benchmarks/voice_articulation.py --model-out`` writes it).
 - ``facesynth_before`` (with ``--before-work``): the same from the database of an earlier run
   (e.g. the actress before calibration), so that the two are paired on the same phones.
 - ``coarticulation``: the same chain with ``synthesize --method coarticulation`` (the
