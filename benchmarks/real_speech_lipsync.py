@@ -34,8 +34,11 @@ Methods, all at 30 frames/s on the take's whole length, no lag (none is searched
   given as a file: the voice's loudness alone moves the mouth (``synthesize.voice_given``), as
   audio alone did before the articulation model.
 - ``facesynth_phones``: the same from the phones alone (no ``--audio``).
-- ``voice``: the packaged articulation model's own curves from the audio (fitted on
-  1114_2_01..03, so fair on the other takes only): the voice alone, no phones, no motion.
+- ``voice``: the packaged articulation model's own curves from the audio: the voice alone, no
+  phones, no motion. The packaged model is now fitted on all seven takes (and GRID's speakers),
+  so on FACEGOOD this and ``facesynth`` are in-sample; docs/real-speech.md's within-speaker
+  figures came from the release before's model, fitted on 1114_2_01..03
+  (``benchmarks/voice_articulation.py --model-out`` writes it).
 - ``facesynth_before`` (with ``--before-work``): the same from the database of an earlier run
   (e.g. the actress before calibration), so that the two are paired on the same phones.
 - ``coarticulation``: the same chain with ``synthesize --method coarticulation`` (the
@@ -362,8 +365,8 @@ def facesynth_method(db: Path, phones: Path | None, folder: Path, n: int, lip_ma
 
 def voice_method(samples: np.ndarray, rate: int, n: int) -> dict[str, np.ndarray]:
     """The packaged articulation model's own curves (n,) for a take's audio (opening, jawOpen,
-    mouthFunnel, mouthPucker): what the voice alone says, before any motion takes it in. Fitted on
-    1114_2_01..03: fair only on the other takes."""
+    mouthFunnel, mouthPucker): what the voice alone says, before any motion takes it in (in-sample
+    on FACEGOOD: the packaged model is fitted on all its takes)."""
     from facesynth.domain.speech import articulation
     from facesynth.model.articulation import ArticulationModel
 

@@ -263,7 +263,11 @@ class SynthesizeSettings:
     voice_given: str = setting("not in the paper: the same with the phones given or aligned to a transcript",
                                choices=("articulation", "loudness", "off"))
     articulation_model: str = setting("not in the paper: the articulation artifact the voice's articulation comes "
-                                      "from; empty: the packaged model (fitted on FACEGOOD's calibration takes)")
+                                      "from; empty: the packaged model (fitted on FACEGOOD and GRID's speakers)")
+    articulation_prior: float = setting("not in the paper: fit-articulation adapts the articulation_model (the "
+                                        "general one) to a performer: how strongly each coefficient is pulled "
+                                        "toward it (a ridge penalty per frame, as the fit's own); 0: the "
+                                        "performer's capture alone", ge=0)
     voice_weight: float = setting("not in the paper: the share of the mouth opening the voice's articulation takes "
                                   "where the voice is clear; 0: the phones' opening", ge=0, le=1)
     voice_opening_map: str = setting("not in the paper: how the articulation's predicted opening becomes lip gaps: "
@@ -278,6 +282,14 @@ class SynthesizeSettings:
     voice_closing_threshold: float = setting("not in the paper: a closing of the method's own motion is kept where "
                                              "the model's closing score reaches this near it; above 1: none kept",
                                              ge=0)
+    voice_trust_window_s: float = setting("not in the paper: the window over which the voice's predicted opening "
+                                          "and the phones' opening are compared (their local agreement, how far "
+                                          "the voice is trusted)", unit="s", gt=0, le=60)
+    voice_trust_low: float = setting("not in the paper: at or below this local Pearson r between the voice's and the "
+                                     "phones' opening the voice is not trusted (the phones keep their opening and "
+                                     "closures); -1 with voice_trust_high -1: always trusted", ge=-1, le=1)
+    voice_trust_high: float = setting("not in the paper: at or above this local Pearson r the voice is fully "
+                                      "trusted (linear between)", ge=-1, le=1)
     voice_pin_recognized: bool = setting("not in the paper: with the phones recognised, whether pinned_phones keep "
                                          "their closure against the voice's articulation (recognised /p b m/ are "
                                          "often wrong)")
@@ -556,6 +568,9 @@ class StreamSettings:
                          "articulation as soon as its audio (and the model's look-ahead) arrives (articulation), "
                          "or from the phones once the recogniser settles them (off: the DP's captured motion, "
                          "about a second later)", choices=("articulation", "off"))
+    voice_jaw: str = setting("not in the papers: with stream.voice = articulation, the jaw from the model's "
+                             "predicted mouth opening in the jaw's units (opening) or from its predicted jawOpen "
+                             "(jawOpen)", choices=("opening", "jawOpen"))
 
 
 @dataclass(frozen=True)

@@ -10,6 +10,7 @@ Written by ``facesynth fit-articulation`` (a performer's capture) and by
 
 from __future__ import annotations
 
+import json
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -40,6 +41,10 @@ class ArticulationModel:
     expand : whether the loudness hinges at ``knots`` (Kn,) float64 (standardized log RMS) are
     columns of the context. analysis_rate : Hz, hop and window : samples, of the analysis frames.
     inputs : the file's provenance records ({path, kind, sha256}), as read (empty for a new model).
+    fitted_on : what the model was fitted on, by name: one record per file of speech or curves
+    ({"name": "<source>/<speaker>/<file>", "sha256": ..., "seconds": audio s or null}), so that a
+    packaged model says which recordings it learned from without naming any folder; [] when unknown
+    (a model of an earlier release, or a performer's model, whose ``inputs`` say it).
     """
 
     target_names: list[str]
@@ -63,6 +68,7 @@ class ArticulationModel:
     hop: int
     window: int
     inputs: list[dict] = field(default_factory=list)
+    fitted_on: list[dict] = field(default_factory=list)
 
     KIND = "articulation"
 
@@ -79,7 +85,8 @@ class ArticulationModel:
                        float(attr(f, "peak_decay")), read_strings(f, "feature_names"), read(f, "feature_mean"),
                        read(f, "feature_std"), read(f, "coef"), read(f, "intercept"), float(attr(f, "alpha")),
                        read(f, "target_mean"), read(f, "target_std"), bool(int(attr(f, "expand"))), read(f, "knots"),
-                       int(attr(f, "analysis_rate")), int(attr(f, "hop")), int(attr(f, "window")), stored_records(f))
+                       int(attr(f, "analysis_rate")), int(attr(f, "hop")), int(attr(f, "window")), stored_records(f),
+                       _fitted_on(f))
 
     def write(self, out: Path, *, config: str, inputs, overwrite: bool = False) -> None:
         """Write an ``articulation`` artifact to ``out``."""
@@ -87,7 +94,7 @@ class ArticulationModel:
             g.attrs.update(pool=int(self.pool), normalization=str(self.normalization), tau_s=float(self.tau_s),
                            gate=float(self.gate), peak_decay=float(self.peak_decay), alpha=float(self.alpha),
                            expand=int(bool(self.expand)), analysis_rate=int(self.analysis_rate), hop=int(self.hop),
-                           window=int(self.window))
+                           window=int(self.window), fitted_on=json.dumps(self.fitted_on, sort_keys=True))
             write_strings(g, "target_names", self.target_names)
             g.create_dataset("offsets_s", data=np.asarray(self.offsets_s, np.float64)).attrs["units"] = "s"
             write_strings(g, "feature_names", self.feature_names)
@@ -98,3 +105,14 @@ class ArticulationModel:
             g.create_dataset("target_mean", data=np.asarray(self.target_mean, np.float64))
             g.create_dataset("target_std", data=np.asarray(self.target_std, np.float64))
             g.create_dataset("knots", data=np.asarray(self.knots, np.float64))
+
+
+def _fitted_on(f) -> list[dict]:
+    """The ``fitted_on`` records of an open artifact; [] when absent (an earlier release's) or unparsable."""
+    if "fitted_on" not in f.attrs:
+        return []
+    try:
+        records = json.loads(str(f.attrs["fitted_on"]))
+    except ValueError:
+        return []
+    return [r for r in records if isinstance(r, dict)] if isinstance(records, list) else []

@@ -638,7 +638,10 @@ ARTICULATION = Kind("articulation", 1, (
           Attr("expand", "int", "1: the loudness hinges are columns of the context", ge=0, le=1),
           Attr("analysis_rate", "int", "sample rate of the analysis frames, Hz", gt=0),
           Attr("hop", "int", "samples between analysis frames", ge=1),
-          Attr("window", "int", "samples of an analysis frame's window", ge=1)))
+          Attr("window", "int", "samples of an analysis frame's window", ge=1),
+          Attr("fitted_on", "str", "JSON list of what the model was fitted on, one record per file of speech or "
+               "curves (`name` as `<source>/<speaker>/<file>`, `sha256`, `seconds` of audio or null); absent in "
+               "files written before it existed", required=False)))
 
 #: Every kind's specification at its current schema.
 EXPRESSION = Kind("expression", 1, (

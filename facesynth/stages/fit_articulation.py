@@ -1,5 +1,7 @@
 """``facesynth fit-articulation``: the acoustic articulation model fitted on a performer's own
-capture with its audio (:mod:`facesynth.domain.methods.voice_fit`), written as an
+capture with its audio (:mod:`facesynth.domain.methods.voice_fit`), adapted from the general model
+(``synthesize.articulation_model``, the packaged one by default) by ``synthesize.articulation_prior``,
+written as an
 ``articulation`` artifact that ``synthesize.articulation_model`` names: the voice of this
 performer then shapes the mouth of ``synthesize --audio``, ``batch`` and ``stream``.
 """
@@ -11,6 +13,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from facesynth.base.config import SolveSettings, SynthesizeSettings
+from facesynth.domain.methods.voice import articulation_model
 from facesynth.domain.methods.voice_fit import fit_performer, performer_takes
 from facesynth.domain.rig.loading import load_rig
 from facesynth.domain.speech.articulation import model_look_ahead_s
@@ -53,11 +56,16 @@ def run(normalized_path: Path, corpus_path: Path, out: Path, synthesize: Synthes
     rig = load_rig(None, binding, need_binding=False)
     data = performer_takes(corpus, normalized, rig, solve, tuple(synthesize.loudness_lip_markers), takes=takes,
                            where=str(corpus_path), normalized_where=str(normalized_path))
-    model, fit_r = fit_performer(data)
+    prior = articulation_model(synthesize.articulation_model) if synthesize.articulation_prior > 0 else None
+    model, fit_r = fit_performer(data, prior, synthesize.articulation_prior)
     settings = {"offsets_s": [float(x) for x in model.offsets_s], "pool": model.pool, "alpha": model.alpha,
                 "normalization": model.normalization, "tau_s": model.tau_s, "expand": model.expand,
-                "lip_markers": list(synthesize.loudness_lip_markers), "takes": data.names_used}
-    inputs = [corpus_path, normalized_path] + ([binding] if binding is not None else [])
+                "lip_markers": list(synthesize.loudness_lip_markers), "takes": data.names_used,
+                "articulation_prior": synthesize.articulation_prior,
+                "prior_fitted_on": [r["name"] for r in prior.fitted_on] if prior is not None else []}
+    prior_file = ([Path(synthesize.articulation_model)] if prior is not None and synthesize.articulation_model
+                  else [])  # the packaged prior is named by what it was fitted on (settings), not a path
+    inputs = [corpus_path, normalized_path] + ([binding] if binding is not None else []) + prior_file
     model.write(out, config=json.dumps(settings, sort_keys=True), inputs=inputs, overwrite=overwrite)
     return FitArticulationResult(data.names_used, data.seconds, list(data.names), data.solved, fit_r,
                                  model_look_ahead_s(model), out.stat().st_size)

@@ -170,3 +170,50 @@ def test_fit_refuses_mismatched_targets():
     raw = A.frame_features(speechlike(1.0), RATE)
     with pytest.raises(InputError, match="expected"):
         A.fit([A.Take(raw, np.zeros((30, 3)), FPS)], ("opening",))
+
+
+def test_a_target_some_takes_lack_is_fitted_on_the_takes_that_have_it():
+    """A source without a jaw channel (NaN) still teaches the opening; the jaw is fitted on the
+    takes that have it, exactly as a fit on those takes alone fits it."""
+    a, b = speechlike(6.0, seed=0), speechlike(6.0, seed=1)
+    takes = []
+    for k, x in enumerate((a, b)):
+        raw = A.frame_features(x, RATE)
+        n = int(6.0 * FPS)
+        env = np.interp(np.arange(n) / FPS, np.arange(len(raw)) * A.FRAME_S, raw[:, A.I_LOG_RMS])
+        jaw = 0.5 * env if k == 0 else np.full(n, np.nan)  # the second take has no jaw
+        takes.append(A.Take(raw, np.stack([np.exp(env), jaw], 1), FPS))
+    both = A.fit(takes, ("opening", "jawOpen"))
+    x = [A.design(both, t.raw, t.times_s).astype(np.float64) for t in takes]  # the fit's own context
+    jaw, jaw0 = A.ridge(x[0], takes[0].targets[:, 1:], both.alpha)  # the jaw: from the first take alone
+    np.testing.assert_allclose(both.coef[:, 1:], jaw, rtol=1e-6, atol=1e-9)
+    np.testing.assert_allclose(both.intercept[1:], jaw0, rtol=1e-6, atol=1e-9)
+    opening, _ = A.ridge(np.concatenate(x), np.concatenate([t.targets[:, :1] for t in takes]), both.alpha)
+    np.testing.assert_allclose(both.coef[:, :1], opening, rtol=1e-6, atol=1e-9)  # the opening: from both
+    assert np.isfinite(both.coef).all() and np.isfinite(both.target_std).all()
+    with pytest.raises(InputError, match="jawOpen"):
+        A.fit(takes[1:], ("opening", "jawOpen"))  # no take has a jaw: refused, naming it
+
+
+def test_a_prior_pulls_the_fit_toward_the_general_model():
+    """fit-articulation's adaptation: strength 0 is the performer's fit alone, a strong prior keeps
+    the general model's predictions (in the performer's units), and between lies between."""
+    general, x = fitted()
+    y = speechlike(6.0, seed=5)
+    raw = A.frame_features(y, RATE)
+    n = int(6.0 * FPS)
+    env = np.interp(np.arange(n) / FPS, np.arange(len(raw)) * A.FRAME_S, raw[:, A.I_LOG_RMS])
+    own = np.stack([np.sin(np.arange(n) / 7.0) * 3.0, 10.0 * env], 1)  # another relation, other units
+    take = A.Take(raw, own, FPS)
+    alone = A.fit([take], ("opening", "mouthFunnel"))
+    zero = A.fit([take], ("opening", "mouthFunnel"), prior=general, prior_strength=0.0)
+    assert np.array_equal(alone.coef, zero.coef)
+    times = take.times_s
+    said = A.predict_raw(general, raw, times)
+    r = {}
+    for s in (0.1, 1e4):
+        adapted = A.fit([take], ("opening", "mouthFunnel"), prior=general, prior_strength=s)
+        assert np.array_equal(adapted.feature_mean, general.feature_mean)  # the prior's columns
+        r[s] = np.corrcoef(A.predict_raw(adapted, raw, times)[:, 0], said[:, 0])[0, 1]
+    r0 = np.corrcoef(A.predict_raw(alone, raw, times)[:, 0], said[:, 0])[0, 1]
+    assert r[1e4] > 0.99 and r0 < r[0.1] < r[1e4]  # the opening: as strong as the prior is

@@ -5,7 +5,10 @@ With ``stream.voice = "articulation"`` a stream whose phones would be recognised
 time plus the articulation model's look-ahead (:func:`facesynth.domain.speech.articulation.model_look_ahead_s`,
 46 ms for the packaged model) has arrived. The frame is decided then and never revised:
 
-* the mouth is the voice's: the model's jawOpen, mouthFunnel and mouthPucker predictions
+* the mouth is the voice's: the model's jawOpen (with ``stream.voice_jaw = "opening"``, the
+  default, its predicted mouth opening carried into the jaw's units by the two targets' training
+  means and standard deviations: on voices the model was not fitted on the opening is the better
+  read, ``benchmarks/voice_speakers.py``), mouthFunnel and mouthPucker predictions
   (:class:`facesynth.domain.speech.articulation.StreamingPredictor`, frame by frame from 20 ms
   chunks, equal to the batch predictions) set those rig shapes, the jaw closing where the model's
   closure score rises above ``synthesize.voice_closure_threshold``;
@@ -59,6 +62,14 @@ class VoiceFrames:
                         if name in voice_model.target_names}
         self.closure = voice_model.target_names.index("closure") if "closure" in voice_model.target_names else None
         self.threshold = synth.voice_closure_threshold
+        #: the jaw from the predicted opening (``stream.voice_jaw = "opening"``): (opening column, the
+        #: opening's training mean and std, the jaw's), or None (the predicted jawOpen itself)
+        self.jaw_from_opening = None
+        names_y = list(voice_model.target_names)
+        if getattr(model.stream, "voice_jaw", "jawOpen") == "opening" and "opening" in names_y and "jawOpen" in names_y:
+            o, j = names_y.index("opening"), names_y.index("jawOpen")
+            self.jaw_from_opening = (o, float(voice_model.target_mean[o]), max(float(voice_model.target_std[o]), 1e-9),
+                                     float(voice_model.target_mean[j]), float(voice_model.target_std[j]))
         names = list(model.rig.shape_names)
         self.slots = {name: names.index(name) for name in self.columns if name in names}
         self.emotion = emotion
@@ -87,7 +98,11 @@ class VoiceFrames:
         if self.closure is not None and self.threshold <= 1.0:
             open_share *= 1.0 - np.clip((predictions[:, self.closure] - self.threshold) / CLOSURE_RAMP, 0.0, 1.0)
         for name, slot in self.slots.items():
-            value = np.clip(predictions[:, self.columns[name]], 0.0, 1.0)
+            if name == "jawOpen" and self.jaw_from_opening is not None:
+                o, om, osd, jm, jsd = self.jaw_from_opening
+                value = np.clip(jm + (predictions[:, o] - om) * jsd / osd, 0.0, 1.0)
+            else:
+                value = np.clip(predictions[:, self.columns[name]], 0.0, 1.0)
             w[:, slot] = value * (open_share if name == "jawOpen" else share)
         return w
 

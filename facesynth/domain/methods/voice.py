@@ -8,7 +8,7 @@ or aligned to a transcript):
 
 * ``"articulation"``: the acoustic articulation model (:mod:`facesynth.domain.speech.articulation`,
   the ``articulation`` artifact ``synthesize.articulation_model``; the packaged one, fitted on
-  FACEGOOD's calibration takes, by default) predicts the mouth's curves from the voice, and
+  FACEGOOD's and GRID's speakers, by default) predicts the mouth's curves from the voice, and
   :func:`fuse` takes them in (below);
 * ``"loudness"``: the voice's loudness alone (:func:`facesynth.domain.speech.loudness.follow`), the
   special case of a "model" whose one prediction is the loudness envelope, mapped by rank, with
@@ -44,6 +44,13 @@ or aligned to a transcript):
 4. *Motion.* As the loudness step moves it: every marker along its direction by the step that
    brings the lip gap to its target (:func:`facesynth.domain.speech.loudness.move_to_gaps`).
 
+**Trust** (:func:`trust`): the voice's weight in 1-3 (and its closures) is also scaled by how well
+its predicted opening agrees with the method's over ``voice_trust_window_s`` (their local
+Pearson r, from ``voice_trust_low`` to ``voice_trust_high``): the loudness says that someone
+speaks, the agreement that the model reads this voice. On speakers the packaged model never heard
+(``benchmarks/voice_speakers.py``) it kept the mouth level with the phones alone, where the
+untrusted voice took it 0.09 below them.
+
 Why the two paths differ (``docs/real-speech.md``): with the phones recognised from the audio
 (the only case FACEGOOD's Mandarin speech allows, and audio alone in general), the voice's
 articulation beats the loudness alone and the phones' own closures; with the phones given (text
@@ -71,8 +78,8 @@ from facesynth.domain.speech.loudness import lip_gaps, move_to_gaps, moving_aver
 from facesynth.model.articulation import ArticulationModel
 from facesynth.model.motion import Motion
 
-#: The packaged articulation model (fitted on FACEGOOD's calibration takes 1114_2_01..03 by
-#: ``benchmarks/voice_articulation.py --model-out``).
+#: The packaged articulation model (fitted on the speakers whose recordings may ship, FACEGOOD's and
+#: GRID's, by ``benchmarks/voice_speakers.py --model-out``; its ``fitted_on`` names every file).
 PACKAGED_MODEL = Path(__file__).resolve().parents[2] / "data" / "articulation.h5"
 #: The voice's paths (``synthesize.voice_recognized``, ``synthesize.voice_given``).
 VOICE_PATHS = ("articulation", "loudness", "off")
@@ -112,6 +119,7 @@ class VoiceSummary:
     pinned_kept: int = 0
     pinned_vetoed: int = 0
     mean_confidence: float = 0.0
+    mean_trust: float = 0.0
 
 
 @functools.lru_cache(maxsize=4)
@@ -251,22 +259,63 @@ def method_closings(opening: np.ndarray, closing: np.ndarray | None, fps: float,
     return np.array([e for e in frames if c[max(0, e - reach):e + reach + 1].max() >= threshold], np.int64)
 
 
+def local_r(a: np.ndarray, b: np.ndarray, width: int) -> np.ndarray:
+    """(T,) Pearson r of two curves (T,) over a centred moving window of ``width`` frames (cut at
+    the ends); 0 where either is constant over the window."""
+    a, b = np.asarray(a, np.float64), np.asarray(b, np.float64)
+    n = len(a)
+    if n == 0:
+        return np.zeros(0)
+    half = max(1, width // 2)
+    lo, hi = np.clip(np.arange(n) - half, 0, n), np.clip(np.arange(n) + half + 1, 0, n)
+    a, b = a - a.mean(), b - b.mean()  # better conditioned sums
+
+    def window_sum(x):
+        c = np.concatenate([[0.0], np.cumsum(x)])
+        return c[hi] - c[lo]
+
+    k = (hi - lo).astype(np.float64)
+    sa, sb = window_sum(a), window_sum(b)
+    cov = window_sum(a * b) - sa * sb / k
+    va, vb = window_sum(a * a) - sa * sa / k, window_sum(b * b) - sb * sb / k
+    d = np.sqrt(np.maximum(va, 0.0) * np.maximum(vb, 0.0))
+    scale = max(float(np.abs(a).max(initial=0.0) * np.abs(b).max(initial=0.0)), 1e-30)
+    return np.where(d > 1e-9 * scale * k, cov / np.maximum(d, 1e-300), 0.0)
+
+
+def trust(predicted: np.ndarray, opening: np.ndarray, fps: float, settings: SynthesizeSettings) -> np.ndarray:
+    """(T,) 0..1 how far the voice's predicted opening (T,) is trusted against the method's gap
+    ``opening`` (T,) at ``fps``: their local Pearson r over ``voice_trust_window_s`` (:func:`local_r`)
+    from ``voice_trust_low`` (0) to ``voice_trust_high`` (1). A voice the model reads well moves
+    with the phones' syllables; a voice it was not fitted on, or a noisy one, drifts from them, and
+    the phones keep the mouth there. All ones when ``voice_trust_high`` is -1 (always trusted)."""
+    n = len(opening)
+    low, high = settings.voice_trust_low, settings.voice_trust_high
+    if high <= -1.0 or n == 0:
+        return np.ones(n)
+    r = local_r(predicted, opening, max(3, int(round(settings.voice_trust_window_s * fps))))
+    return np.clip((r - low) / max(high - low, 1e-6), 0.0, 1.0)
+
+
 def target_gap(opening: np.ndarray, predicted: np.ndarray, score: np.ndarray | None, closing: np.ndarray | None,
                conf: np.ndarray, pinned: list[tuple[int, int]], fps: float,
-               settings: SynthesizeSettings) -> tuple[np.ndarray, dict]:
+               settings: SynthesizeSettings, trusted: np.ndarray | None = None) -> tuple[np.ndarray, dict]:
     """(T,) target lip gap (mm) from the method's gap ``opening`` (T,) mm, the predicted opening
     ``predicted`` (T,) (any unit), the closure and closing scores (T,) or None, the confidence
-    ``conf`` (T,) and the pinned phones' frame ranges [a, b) at ``fps`` (module docstring, 2-3);
-    and what was done."""
+    ``conf`` (T,), the pinned phones' frame ranges [a, b) at ``fps`` and the voice's ``trusted``
+    share (T,) 0..1 (:func:`trust`; None: computed from the settings) (module docstring, 2-3); and
+    what was done. The voice's closures are made only where it is at least half trusted."""
     o = np.asarray(opening, np.float64)
     n = len(o)
     q = rank_map(predicted, o) if settings.voice_opening_map == "rank" else range_map(predicted, o)
-    w = settings.voice_weight * np.asarray(conf, np.float64)
+    tr = trust(predicted, o, fps, settings) if trusted is None else np.asarray(trusted, np.float64)
+    w = settings.voice_weight * np.asarray(conf, np.float64) * tr
     kept = kept_pinned(pinned, predicted)
     w = w * pinned_free(kept, n, fps, settings)
     target = (1.0 - w) * o + w * q
     from_voice = closure_frames(score, fps, settings.voice_closure_threshold) if score is not None \
         else np.zeros(0, np.int64)
+    from_voice = from_voice[tr[from_voice] >= 0.5] if len(from_voice) else from_voice
     kept_closings = method_closings(o, closing, fps, settings.voice_closing_threshold)
     events = np.union1d(from_voice, kept_closings).astype(np.int64)
     if len(events):
@@ -282,7 +331,8 @@ def target_gap(opening: np.ndarray, predicted: np.ndarray, score: np.ndarray | N
         target = closed + (target - closed) * (1.0 - dip)
     return target, {"closures_from_voice": int(len(from_voice)), "closings_kept": int(len(kept_closings)),
                     "pinned_kept": len(kept), "pinned_vetoed": len(pinned) - len(kept),
-                    "mean_confidence": float(np.mean(conf)) if n else 0.0}
+                    "mean_confidence": float(np.mean(conf)) if n else 0.0,
+                    "mean_trust": float(np.mean(tr)) if n else 0.0}
 
 
 class RigShapes:
@@ -355,6 +405,7 @@ def fuse(motion: Motion, samples: np.ndarray, rate: int, starts: np.ndarray, end
     ranges = frame_ranges(np.asarray(starts, float), np.asarray(ends, float), fps)
     pinned_ranges = [r for r, p in zip(ranges, phones) if p in settings.pinned_phones] if pinned else []
     moved = frames
+    trusted = trust(pred["opening"], lip_gaps(frames, names, lips), fps, settings)
     rounding = {c: pred[c] for c in ROUNDING_SHAPES if c in pred}
     if settings.voice_rounding_weight > 0 and rounding:
         rig = rig if rig is not None else _builtin_rig()
@@ -362,10 +413,10 @@ def fuse(motion: Motion, samples: np.ndarray, rate: int, starts: np.ndarray, end
             # a pinned phone keeps the method's lips whole, its closure and their shape
             free = pinned_free(kept_pinned(pinned_ranges, pred["opening"]), n, fps, settings)
             moved = rig_rounding(frames, RigShapes(rig, names, motion.reference), rounding,
-                                 settings.voice_rounding_weight * conf * free)
+                                 settings.voice_rounding_weight * conf * trusted * free)
     gap = lip_gaps(moved, names, lips)
     target, done = target_gap(gap, pred["opening"], pred.get("closure"), pred.get("closing"), conf, pinned_ranges,
-                              fps, settings)
+                              fps, settings, trusted)
     li, lj = names.index(lips[0]), names.index(lips[1])
     moved = move_to_gaps(moved, opening_direction(moved, gap), (li, lj), target).astype(motion.markers_capture.dtype)
     return (replace(motion, markers_capture=moved, markers=downsample(moved, fps, motion.fps)),

@@ -108,10 +108,13 @@ def performer_takes(corpus: Corpus, normalized: NormalizedFrames, rig: Rig, solv
     return PerformerTakes(out, target_names, used, seconds, bound)
 
 
-def fit_performer(data: PerformerTakes) -> tuple[ArticulationModel, dict[str, float]]:
-    """The model fitted on ``data``, and per target its Pearson r on the takes it was fitted on
-    (in-sample: how much of each target the voice explains at best)."""
-    model = articulation.fit(data.takes, data.names)
+def fit_performer(data: PerformerTakes, prior: ArticulationModel | None = None,
+                  prior_strength: float = 0.0) -> tuple[ArticulationModel, dict[str, float]]:
+    """The model fitted on ``data`` (adapted from the general model ``prior`` with
+    ``prior_strength``, :func:`facesynth.domain.speech.articulation.fit`), and per target its
+    Pearson r on the takes it was fitted on (in-sample: how much of each target the voice explains
+    at best)."""
+    model = articulation.fit(data.takes, data.names, prior=prior, prior_strength=prior_strength)
     predicted = np.concatenate([articulation.predict_raw(model, t.raw, t.times_s) for t in data.takes])
     real = np.concatenate([t.targets for t in data.takes])
     r = {}

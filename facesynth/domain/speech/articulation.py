@@ -500,29 +500,51 @@ class Take:
         return np.arange(len(self.targets)) / self.fps
 
 
-def ridge(x: np.ndarray, y: np.ndarray, alpha: float) -> tuple[np.ndarray, np.ndarray]:
+def ridge(x: np.ndarray, y: np.ndarray, alpha: float, prior: np.ndarray | None = None,
+          prior_std: np.ndarray | None = None, strength: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
     """(coef (P, Y), intercept (Y,)) float64 of ridge regression of ``y`` (N, Y) on ``x`` (N, P): the
     columns of x standardized, penalty ``alpha * N`` on the standardized coefficients (so alpha
-    does not depend on how many frames there are), the intercept unpenalized."""
+    does not depend on how many frames there are), the intercept unpenalized.
+
+    With a ``prior`` (P, Y) (another model's coefficients on the same columns, its targets' standard
+    deviations ``prior_std`` (Y,)), a second penalty ``strength * N`` pulls the coefficients toward
+    the prior's, both measured per standard deviation of their own targets (a prior fitted in other
+    units of the same curves still says which way each column moves them): with little data the
+    fit stays near the prior, with much it follows the data."""
     x = np.asarray(x, np.float64)
     y = np.asarray(y, np.float64)
     mx, my = x.mean(0), y.mean(0)
     sx = np.maximum(x.std(0), 1e-8)
     xs = (x - mx) / sx
     gram = xs.T @ xs
-    gram[np.diag_indices_from(gram)] += alpha * len(x)
-    w = np.linalg.solve(gram, xs.T @ (y - my))
+    gram[np.diag_indices_from(gram)] += (alpha + (strength if prior is not None else 0.0)) * len(x)
+    rhs = xs.T @ (y - my)
+    if prior is not None and strength > 0:
+        sy = np.maximum(y.std(0), 1e-12)
+        scale = sy / np.maximum(np.asarray(prior_std, np.float64), 1e-12)  # the prior in these targets' units
+        rhs = rhs + strength * len(x) * (np.asarray(prior, np.float64) * sx[:, None]) * scale[None]
+    w = np.linalg.solve(gram, rhs)
     coef = w / sx[:, None]
     return coef, my - mx @ coef
 
 
 def fit(takes: list[Take], target_names: tuple[str, ...] | list[str], *, offsets_s=DEFAULT_OFFSETS_S,
         pool: int = 3, alpha: float = 1.0, normalization: str = "running", tau_s: float = 3.0,
-        expand: bool = True) -> ArticulationModel:
+        expand: bool = True, prior: ArticulationModel | None = None, prior_strength: float = 0.0) -> ArticulationModel:
     """The model fitted on ``takes`` (their targets' columns named ``target_names``): the
     normalizer's training statistics from the takes' frames with speech, then :func:`ridge` on
     the context. The defaults are the settings chosen by leave-one-take-out within FACEGOOD's
-    calibration takes. Deterministic: the same takes give the same model, bit for bit."""
+    calibration takes. Deterministic: the same takes give the same model, bit for bit.
+
+    With a ``prior`` model (the packaged, general one) and ``prior_strength`` > 0 the fit adapts
+    it: the prior's context (offsets, pooling, loudness columns) and its normalization's training
+    statistics, and every target the prior predicts pulled toward the prior's coefficients by
+    ``prior_strength`` (:func:`ridge`); targets it lacks are fitted as without it."""
+    if prior is not None and prior_strength > 0:
+        check_model(prior, "the prior articulation model")
+        offsets_s, pool, expand = tuple(np.asarray(prior.offsets_s, np.float64)), int(prior.pool), bool(prior.expand)
+    else:
+        prior = None
     if not takes:
         raise InputError("fit the articulation model on at least one take.")
     for i, t in enumerate(takes):
@@ -532,6 +554,8 @@ def fit(takes: list[Take], target_names: tuple[str, ...] | list[str], *, offsets
         if np.ndim(t.raw) != 2 or np.shape(t.raw)[1] != N_FEATURES:
             raise InputError(f"take {i}: raw features have shape {np.shape(t.raw)}, expected (K, {N_FEATURES}).")
     norm = Normalizer(mode=normalization, tau_s=tau_s).fit([t.raw for t in takes])
+    if prior is not None:  # the prior's columns mean what they meant when it was fitted
+        norm.mean, norm.std = np.asarray(prior.feature_mean, np.float64), np.asarray(prior.feature_std, np.float64)
     width = len(offsets_s) * (N_FEATURES + (N_EXPANDED if expand else 0))
     model = ArticulationModel(
         list(target_names), np.asarray(offsets_s, np.float64), int(pool), norm.mode, float(norm.tau_s),
@@ -541,13 +565,28 @@ def fit(takes: list[Take], target_names: tuple[str, ...] | list[str], *, offsets
         RATE, HOP, WIN)
     x = np.concatenate([design(model, t.raw, t.times_s) for t in takes])
     y = np.concatenate([t.targets for t in takes]).astype(np.float64)
-    known = np.isfinite(y).all(1) & np.isfinite(x).all(1)  # frames of a capture's gaps (NaN) are left out
-    if known.sum() < 2 * len(target_names):
-        raise InputError(f"only {int(known.sum())} frames have every target known; fit the articulation model on "
-                         "takes whose lip markers are seen.")
-    x, y = x[known], y[known]
-    model.coef, model.intercept = ridge(x, y, alpha)
-    model.target_mean, model.target_std = y.mean(0), y.std(0)
+    # frames of a capture's gaps (NaN) are left out; a target some takes lack (a source without a jaw
+    # channel) is fitted on the frames that have it, each set of targets with the same frames at once
+    known = np.isfinite(y) & np.isfinite(x).all(1)[:, None]
+    patterns: dict[bytes, list[int]] = {}
+    for j in range(len(target_names)):
+        patterns.setdefault(known[:, j].tobytes(), []).append(j)
+    for cols in patterns.values():
+        rows = known[:, cols[0]]
+        if rows.sum() < 2 * len(target_names):
+            raise InputError(f"only {int(rows.sum())} frames have the target {target_names[cols[0]]!r} known; fit "
+                             "the articulation model on takes whose lip markers are seen.")
+        with_prior = [c for c in cols if prior is not None and target_names[c] in prior.target_names]
+        plain = [c for c in cols if c not in with_prior]
+        if plain:
+            model.coef[:, plain], model.intercept[plain] = ridge(x[rows], y[rows][:, plain], alpha)
+        if with_prior:
+            assert prior is not None
+            pc = [prior.target_names.index(target_names[c]) for c in with_prior]
+            model.coef[:, with_prior], model.intercept[with_prior] = ridge(
+                x[rows], y[rows][:, with_prior], alpha, np.asarray(prior.coef, np.float64)[:, pc],
+                np.asarray(prior.target_std, np.float64)[pc], prior_strength)
+        model.target_mean[cols], model.target_std[cols] = y[rows][:, cols].mean(0), y[rows][:, cols].std(0)
     return model
 
 

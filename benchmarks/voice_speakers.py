@@ -1,0 +1,625 @@
+"""The audio path on voices it was not fitted on: every articulation model is fitted on some
+speakers and scored on the others (leave one speaker out), with intervals that resample speakers.
+Prints JSON.
+
+Data (real voices only are scored; ``--work`` caches everything per utterance):
+
+- ``--facegood DIR``: FACEGOOD's seven takes of one performer (laid out as for
+  ``benchmarks/real_speech_lipsync.py``; speaker ``facegood/shirley``, Mandarin, ARKit-like
+  curves: the mouth opening, jawOpen, mouthFunnel, mouthPucker).
+- ``--speech-data DIR``: any number of sources laid out as ``<source>/<speaker>/<utt>.wav`` with
+  ``<utt>.npz`` (``times`` s, ``opening``, optional ``jaw`` and ``rounding``, any unit; an
+  optional ``<utt>.TextGrid`` with the spoken phones makes the given-phones modes scoreable),
+  a source read once its ``READY-<source>`` file exists in DIR. ``speakers.json`` (optional:
+  a list of ``{"source", "speaker", "sex", "language", ...}``) labels the speakers; a source
+  ``facegood`` there is skipped when ``--facegood`` is given (read with all its channels).
+- ``--synthetic N``: N synthetic speakers made from the training speakers' voices by
+  :mod:`facesynth.domain.speech.voices` (vocal-tract length, pitch, microphone): training only, never
+  scored (they teach invariance; they are no evidence).
+
+Per held-out speaker (every real speaker in turn), the articulation model is fitted on every other
+real speaker (plus the synthetic speakers made of *their* voices), with the settings of
+:func:`facesynth.domain.speech.articulation.fit` (``--variant`` changes them, below). The targets
+of each training speaker are its curves mapped so that its 5th..95th percentiles fall on FACEGOOD's
+(the units live frames use); a curve a source lacks is left out of that target's fit.
+
+Modes scored on the held-out speaker's utterances (its first ``--score-seconds``), all from the same phones recognised from the
+audio (facesynth's own, as ``synthesize --audio`` recognises them) and the same motion the DP made
+from them on the built-in actress's database (``small`` preset, seed 0), at 30 frames/s:
+
+- ``default``: ``synthesize --audio`` as configured (``synthesize.voice_recognized`` and its
+  settings), the fold's model as ``synthesize.articulation_model``; the voice step is
+  :func:`facesynth.domain.methods.voice.apply` run on the DP's motion, as ``synthesize`` runs it.
+- ``articulation``, ``loudness``, ``phones``: the same with ``voice_recognized`` =
+  articulation, loudness (the release before), off (the recognised phones alone).
+- ``given_articulation``, ``given_loudness``, ``given_phones``: where the utterance comes with its
+  spoken phones (a TextGrid), the same modes of ``synthesize.voice_given`` on those phones.
+- ``openfacefx``: openfacefx on the recognised phones (its inner-lip gap on the built-in rig).
+- ``energy``: the loudness alone (log RMS, 0.1 s); ``voice``: the fold model's predicted opening;
+  ``voice_jaw``: its predicted jawOpen.
+- ``live``: the mouth ``stream`` sends with ``stream.voice = "articulation"``
+  (:class:`facesynth.domain.live.voice.VoiceFrames`, 20 ms chunks, the fold's model), as its
+  inner-lip gap; ``live_jaw``: its jawOpen weight; ``live_packaged``: the same with the packaged model.
+- ``packaged``: ``default`` with the packaged model (fitted on FACEGOOD: within-speaker there).
+
+Scores: Pearson r of each mode's mouth opening against the real one in windows of about
+``--window-s`` (an utterance shorter than a window is one window; frames where the real curve is
+unknown are left out), averaged per speaker; pooled = the mean over speakers (each speaker
+counts once), with a 95% bootstrap interval that resamples speakers (2000 resamples, seed 0), and
+paired differences (default minus each mode) on the same resamples. With fewer than three
+scored speakers there is no interval (``null``).
+
+    python benchmarks/voice_speakers.py --facegood FACEGOOD_DIR [--speech-data DIR] --work WORK \\
+        [--synthetic 4] [--variant NAME] > benchmarks/voice_speakers.json
+"""
+
+from __future__ import annotations
+
+import argparse
+import functools
+import hashlib
+import json
+import sys
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from facesynth.base.config import Config, settings_json
+from facesynth.base.errors import InputError
+from facesynth.base.hashing import sha256_of
+from facesynth.domain.evaluation.bootstrap import interval, paired_difference, resamples
+from facesynth.domain.speech import articulation as A
+from facesynth.domain.speech.loudness import envelope, lip_gaps
+from facesynth.formats.audio import read_audio
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+import real_speech_lipsync as bench  # noqa: E402  (its loaders, database and openfacefx)
+
+FPS = bench.FPS
+#: The model's targets (as benchmarks/voice_articulation.py; the fusion reads opening, closure,
+#: closing, mouthFunnel, mouthPucker; live frames jawOpen, mouthFunnel, mouthPucker).
+TARGETS = ("opening", "closure", "closing", "jawOpen", "mouthFunnel", "mouthPucker")
+#: Every mode, in table order (module docstring).
+MODES = ("default", "articulation", "loudness", "phones", "openfacefx", "energy", "voice", "voice_jaw", "live",
+         "live_jaw", "live_packaged",
+         "packaged", "given_default", "given_articulation", "given_loudness", "given_phones")
+FACEGOOD_SPEAKER = "facegood/shirley"
+#: FACEGOOD's takes used for no choice (docs/real-speech.md).
+FACEGOOD_FAIR = ("1114_2_04", "1114_2_05", "1114_3_15")
+#: Settings of the voice step only (not of the phones' motion the cache holds).
+VOICE_STEP_SETTINGS = ("loudness_weight", "loudness_smoothing_s", "voice_recognized", "voice_given",
+                       "articulation_model", "voice_weight", "voice_rounding_weight", "voice_closure_threshold",
+                       "voice_closing_threshold", "voice_trust_window_s", "voice_trust_low", "voice_trust_high",
+                       "voice_pin_recognized", "articulation_prior")
+
+
+@dataclass
+class Utt:
+    """One utterance of a real speaker: audio, the real curves (n,) at FPS (NaN where unknown)."""
+
+    source: str
+    speaker: str
+    name: str
+    wav: Path
+    samples: np.ndarray
+    rate: int
+    n: int
+    real: dict[str, np.ndarray]
+    given_phones: Path | None = None
+    #: a real voice (scored) or the virtual actress's synthetic one (training only)
+    real_voice: bool = True
+    raw: np.ndarray = field(default_factory=lambda: np.zeros((0, A.N_FEATURES), np.float32))
+    #: raw features of synthetic speakers saying it (:func:`synthetic_features`)
+    synthetic: list[np.ndarray] = field(default_factory=list)
+
+    @property
+    def key(self) -> str:
+        return f"{self.speaker}/{self.name}"
+
+
+# ---------------------------------------------------------------- data
+
+def facegood_utterances(data: Path) -> list[Utt]:
+    """FACEGOOD's takes as utterances of one speaker, the takes used for no choice first (the
+    actress and the loudness step were calibrated on 1114_2_01..03; a capped score reads the others)."""
+    names, table = bench.channel_names(data), bench.read_table()
+    out = []
+    for wav in sorted((data / "wav").glob("*.wav"), key=lambda p: (p.stem not in FACEGOOD_FAIR, p.stem)):
+        take = wav.stem
+        values = np.asarray(bench.load_npy(data / "bs_value_npy" / f"bs_value_{take}.npy"), np.float64)
+        samples, rate = read_audio(wav)
+        n = min(len(values), int(np.floor(len(samples) / rate * FPS)))
+        curves = bench.real_curves(values, names, table)
+        real = {c: curves[c][:n] for c in ("opening", "jawOpen", "mouthFunnel", "mouthPucker")}
+        out.append(Utt("facegood", FACEGOOD_SPEAKER, take, wav, samples, rate, n, real))
+    return out
+
+
+def speech_data_utterances(root: Path, skip: tuple[str, ...] = (), only: list[str] | None = None) -> list[Utt]:
+    """The utterances of every source of ``root`` whose READY-<source> marker exists (those of ``only``
+    where given; never those of ``skip``)."""
+    out = []
+    for ready in sorted(root.glob("READY-*")):
+        source = ready.name[len("READY-"):]
+        if source in skip or (only is not None and source not in only):
+            continue
+        for npz in sorted((root / source).glob("*/*.npz")):
+            wav = npz.with_suffix(".wav")
+            if not wav.exists():
+                continue
+            with np.load(npz, allow_pickle=False) as z:
+                times = np.asarray(z["times"], np.float64)
+                curves = {"opening": z["opening"]}
+                if "jaw" in z.files:
+                    curves["jawOpen"] = z["jaw"]
+                if "rounding" in z.files:
+                    curves["mouthPucker"] = z["rounding"]
+            samples, rate = read_audio(wav)
+            if samples.ndim > 1:
+                samples = samples.mean(1)
+            n = int(np.floor(len(samples) / rate * FPS))
+            t = np.arange(n) / FPS
+            real = {}
+            for c, v in curves.items():
+                v = np.asarray(v, np.float64)
+                ok = np.isfinite(v)
+                if ok.sum() < 3:
+                    continue
+                x = np.interp(t, times[ok], v[ok])
+                x[(t < times[ok][0] - 0.5 / FPS) | (t > times[ok][-1] + 0.5 / FPS)] = np.nan
+                real[c] = x
+            if "opening" not in real or n < 10:
+                continue
+            given = npz.with_suffix(".TextGrid")
+            out.append(Utt(source, f"{source}/{npz.parent.name}", npz.stem, wav, samples, rate, n, real,
+                           given if given.exists() else None))
+    return out
+
+
+def actress_utterances(work: Path, lip_markers) -> list[Utt]:
+    """The built-in actress's takes (``small`` preset, seed 0: the benchmark's database corpus) as the
+    training-only speaker ``actress``: her synthetic voice, her inner-lip gap as the opening."""
+    from facesynth.domain.retarget import facial_solve
+    from facesynth.model.corpus import Corpus
+    from facesynth.model.frames import NormalizedFrames
+
+    corpus, normalized = Corpus.read(work / "corpus.h5"), NormalizedFrames.read(work / "normalized.h5")
+    out = []
+    for i, name in enumerate(corpus.takes.name):
+        a, count = int(corpus.audio_start[i]), int(corpus.audio_count[i])
+        if count == 0:
+            continue
+        motion = facial_solve.take_motion(normalized, name, FPS, "the actress's frames")
+        samples = np.asarray(corpus.audio[a:a + count], np.float64)
+        n = min(len(motion.markers), int(np.floor(count / corpus.sample_rate * FPS)))
+        gap = lip_gaps(motion.markers[:n], list(motion.marker_names), tuple(lip_markers)).astype(np.float64)
+        out.append(Utt("actress", "actress", name, work / "corpus.h5", samples, corpus.sample_rate, n,
+                       {"opening": gap}, real_voice=False))
+    return out
+
+
+def reference_ranges(utts: list[Utt]) -> dict[str, tuple[float, float]]:
+    """{target: (p5, p95)} of FACEGOOD's curves: the units every speaker's targets are mapped to."""
+    out = {}
+    for c in ("opening", "jawOpen", "mouthFunnel", "mouthPucker"):
+        v = np.concatenate([u.real[c] for u in utts if c in u.real])
+        out[c] = tuple(float(q) for q in np.nanpercentile(v, [5, 95]))
+    return out
+
+
+def speaker_targets(utts: list[Utt], ref: dict[str, tuple[float, float]]) -> list[np.ndarray]:
+    """Per utterance of one speaker, its (n, len(TARGETS)) targets: each curve mapped so that the
+    speaker's 5th..95th percentiles land on ``ref``'s; the closure scores made of the opening."""
+    scale = {}
+    for c, (lo, hi) in ref.items():
+        v = [u.real[c] for u in utts if c in u.real]
+        if v:
+            a, b = np.nanpercentile(np.concatenate(v), [5, 95])
+            scale[c] = (a, b, lo, hi)
+    out = []
+    for u in utts:
+        cols = []
+        for c in TARGETS:
+            if c in ("closure", "closing"):
+                cols.append(A.closure_target(u.real["opening"], FPS, kind=c))
+            elif c in u.real and c in scale and scale[c][1] > scale[c][0]:
+                a, b, lo, hi = scale[c]
+                cols.append(lo + (u.real[c] - a) * (hi - lo) / (b - a))
+            else:
+                cols.append(np.full(u.n, np.nan))
+        out.append(np.stack(cols, 1))
+    return out
+
+
+# ---------------------------------------------------------------- the chain, cached per utterance
+
+def _digest(*parts: bytes) -> str:
+    return hashlib.sha256(b"\0".join(parts)).hexdigest()[:16]
+
+
+@functools.lru_cache(maxsize=1)
+def _phones_config() -> Config:
+    """The settings the phones' motion is made with: the voice step off (read once per run)."""
+    return Config.load(overrides=["synthesize.voice_recognized=off", "synthesize.voice_given=off"])
+
+
+def phones_motion(db_path: Path, u: Utt, work: Path, given: bool = False):
+    """(Motion of the DP on the phones, (starts, ends, phones)) of ``u``: its phones recognised from the
+    audio as ``synthesize --audio`` does (or its given phones), the motion without the voice step;
+    cached in ``work`` by the audio, the settings and the database."""
+    import facesynth
+    from facesynth.model.motion import Motion
+
+    folder = work / "utts" / u.key
+    folder.mkdir(parents=True, exist_ok=True)
+    config = _phones_config()
+    tag = "given" if given else "recognized"
+    # the voice step's settings do not change the phones' motion (the voice is off here)
+    synth = {k: v for k, v in json.loads(settings_json(config.settings("synthesize"))).items()
+             if k not in VOICE_STEP_SETTINGS}
+    digest = _digest(u.wav.read_bytes(), (u.given_phones.read_bytes() if given else b""), tag.encode(),
+                     json.dumps(synth, sort_keys=True).encode(),
+                     settings_json(config.settings("align")).encode(), sha256_of(db_path).encode())
+    motion_file, phones_file = folder / f"motion.{tag}.{digest}.h5", folder / f"phones.{tag}.{digest}.json"
+    if not motion_file.exists() or not phones_file.exists():
+        utt = (facesynth.utterance_from_phones(u.given_phones, audio=u.wav, config=config) if given
+               else facesynth.utterance_from_audio(u.wav, config=config))
+        facesynth.synthesize(db_path, utt, config=config, output=motion_file, overwrite=True)
+        phones_file.write_text(json.dumps({"starts": [float(x) for x in utt.starts], "ends": [float(x) for x in utt.ends],
+                                           "phones": list(utt.phones)}))
+    p = json.loads(phones_file.read_text())
+    return Motion.read(motion_file), (np.array(p["starts"]), np.array(p["ends"]), list(p["phones"]))
+
+
+def voice_step(motion, u: Utt, phones, settings, model_path: Path, recognized: bool, path: str, **changes):
+    """The mouth opening (n,) of ``motion`` after the voice step ``path`` with the model at ``model_path``
+    (and the synthesize settings ``changes``)."""
+    from dataclasses import replace
+
+    from facesynth.domain.methods import voice
+
+    s = replace(settings, articulation_model=str(model_path), voice_recognized=path, voice_given=path, **changes)
+    moved, _, _ = voice.apply(motion, u.samples, u.rate, phones[0], phones[1], phones[2], s, recognized=recognized)
+    return opening_of(moved, settings, u.n)
+
+
+def opening_of(motion, settings, n: int) -> np.ndarray:
+    """The inner-lip gap (n,) mm of a motion at FPS."""
+    if motion.fps != FPS:
+        raise SystemExit(f"the motion is at {motion.fps} frames/s; the benchmark needs synthesize.output_fps = {FPS:g}")
+    gap = lip_gaps(motion.markers, list(motion.marker_names), tuple(settings.loudness_lip_markers))
+    return bench.fit_length(gap, n)
+
+
+def live_curves(live_model, model, u: Utt, settings, lip_markers) -> dict[str, np.ndarray]:
+    """The mouth ``stream`` sends from ``u``'s audio (20 ms chunks) with ``model``: {live: its inner-lip
+    gap, live_jaw: its jawOpen weight}, (n,) each at FPS."""
+    from facesynth.domain.live.voice import VoiceFrames
+    from facesynth.formats.audio import resample
+
+    x = np.asarray(u.samples, np.float64)
+    if u.rate != A.RATE:
+        x = resample(x, u.rate, A.RATE)
+    vf = VoiceFrames(live_model, model, settings, "neutral")
+    frames, step = [], A.RATE // 50
+    for a in range(0, len(x), step):
+        frames += vf.push(x[a:a + step].astype(np.float32), (a + step) / A.RATE)
+    frames += vf.finish(len(x) / A.RATE)
+    markers = np.stack([f.markers for f in frames])
+    names = list(live_model.marker_names)
+    gap = lip_gaps(markers, names, tuple(lip_markers))
+    jaw = np.array([f.arkit[list(live_model.arkit_names).index("jawOpen")] for f in frames])
+    return {"live": bench.fit_length(gap, u.n), "live_jaw": bench.fit_length(jaw, u.n)}
+
+
+# ---------------------------------------------------------------- scoring
+
+def window_scores(method: np.ndarray, real: np.ndarray, n: int, window_s: float) -> list[float]:
+    """Pearson r per window (about ``window_s``; one window for a shorter utterance) on the frames
+    where the real curve is known."""
+    out = []
+    for a, b in bench.windows(n, FPS, window_s):
+        m, r = method[a:b], real[a:b]
+        ok = np.isfinite(m) & np.isfinite(r)
+        out.append(bench.pearson(m[ok], r[ok]) if ok.sum() >= 10 else float("nan"))
+    return out
+
+
+def summarize(per_speaker: dict[str, dict[str, list[float]]], resample_count: int, seed: int) -> dict:
+    """Per speaker the mean window r of every mode; pooled, the mean over speakers with a 95%
+    interval over resampled speakers, and the paired differences of ``default`` against every mode."""
+    speakers = sorted(per_speaker)
+    extra = sorted({m for s in speakers for m in per_speaker[s] if m not in MODES})  # the sweep's points
+    modes = [m for m in (*MODES, *extra) if all(m in per_speaker[s] for s in speakers)]
+    table = {m: np.array([np.nanmean(per_speaker[s][m]) if np.isfinite(per_speaker[s][m]).any() else np.nan
+                          for s in speakers]) for m in modes}
+    k = len(speakers)
+    idx = resamples(k, resample_count, seed)
+
+    def stat(v):
+        return lambda i: float(np.nanmean(v[i])) if np.isfinite(v[i]).any() else float("nan")
+
+    def rounded(d):
+        return {a: (None if b is None or not np.isfinite(b) else round(float(b), 4)) for a, b in d.items()}
+
+    pooled, paired = {}, {}
+    for m, v in table.items():
+        cell = interval(stat(v), k, idx)
+        pooled[m] = rounded(cell if k >= 3 else {**cell, "low": None, "high": None})
+    lead = "default" if "default" in table else "voice"
+    for m, v in table.items():
+        if m == lead:
+            continue
+        cell = paired_difference(stat(table[lead]), stat(v), k, idx)
+        paired[f"{lead} - {m}"] = rounded(cell if k >= 3 else {**cell, "low": None, "high": None})
+    # modes only some speakers have (given phones): pooled over those speakers
+    partial = {}
+    for m in MODES:
+        if m in modes:
+            continue
+        have = [s for s in speakers if m in per_speaker[s]]
+        if have:
+            partial[m] = {"speakers": len(have),
+                          "mean": round(float(np.nanmean([np.nanmean(per_speaker[s][m]) for s in have])), 4)}
+    return {"speakers": k, "r": pooled, "paired": paired, "partial": partial,
+            "per_speaker": {s: {m: round(float(np.nanmean(per_speaker[s][m])), 4) for m in per_speaker[s]}
+                            for s in speakers}}
+
+
+# ---------------------------------------------------------------- folds
+
+def fit_fold(train: dict[str, list[Utt]], ref, variant: str, synthetic: int | dict[str, int],
+             seed: int) -> A.ArticulationModel:
+    """The model fitted on the speakers ``train`` ({speaker: utterances}) with ``variant``'s settings
+    (and ``synthetic`` synthetic speakers made from each one's voice: a count, or one per speaker)."""
+    pairs = [(u, y) for speaker in sorted(train) for u, y in zip(train[speaker], speaker_targets(train[speaker], ref))]
+    counts = synthetic if isinstance(synthetic, dict) else {s: synthetic for s in train}
+    known = np.array([np.isfinite(np.concatenate([y[:, j] for _, y in pairs])).any() for j in range(len(TARGETS))])
+    jaw, opening = TARGETS.index("jawOpen"), TARGETS.index("opening")
+    if not known[jaw]:  # no training speaker has a jaw channel: the jaw from the opening, in the jaw's units
+        lo, hi = ref["jawOpen"]
+        a, b = ref["opening"]
+        for _, y in pairs:
+            y[:, jaw] = lo + (y[:, opening] - a) * (hi - lo) / (b - a)
+        known[jaw] = True
+    names = tuple(t for t, k in zip(TARGETS, known) if k)  # a target no training speaker has is not predicted
+    takes = [A.Take(u.raw, y[:, known], FPS) for u, y in pairs]
+    for u, y in pairs:
+        takes += [A.Take(raw, y[:, known], FPS) for raw in synthetic_features(u, counts.get(u.speaker, 0), seed)]
+    return A.fit(takes, names, **VARIANTS[variant])
+
+
+def synthetic_features(u: Utt, count: int, seed: int) -> list[np.ndarray]:
+    """The raw features (K, D) of ``count`` synthetic speakers saying ``u`` (each voice drawn by
+    :func:`facesynth.domain.speech.voices.random_voice` from a generator seeded by ``seed``, the
+    utterance's name and the speaker's number), made once per run."""
+    from facesynth.domain.speech import voices
+
+    while len(u.synthetic) < count:
+        i = len(u.synthetic)
+        key = int.from_bytes(hashlib.sha256(f"{seed}/{u.key}/{i}".encode()).digest()[:8], "little")
+        voice = voices.random_voice(np.random.default_rng(key))
+        u.synthetic.append(A.frame_features(voices.transform(u.samples, u.rate, voice), u.rate))
+    return u.synthetic[:count]
+
+
+def curve_files(u: Utt) -> list[Path]:
+    """The files of ``u``'s curves (FACEGOOD's .npy, a source's .npz), beside its audio."""
+    if u.source == "facegood":
+        return [u.wav.parent.parent / "bs_value_npy" / f"bs_value_{u.name}.npy"]
+    return [u.wav.with_suffix(".npz")]
+
+
+def write_packaged(by_speaker: dict[str, list[Utt]], sources: list[str], ref, variant: str, synthetic: int, seed: int,
+                   out: Path, balance: bool = True) -> dict:
+    """Fit the model on every utterance of ``sources`` (those that may ship) and write it to ``out``,
+    recording each file it learned from by name and sha256; returns what it was fitted on."""
+    train = {s: v for s, v in by_speaker.items() if v[0].source in sources and v[0].real_voice}
+    if not train:
+        raise SystemExit(f"--ship-sources {','.join(sources)}: no speaker of those sources was read")
+    seconds = {sp: sum(u.n for u in v) / FPS for sp, v in train.items()}
+    # each speaker heard for about as long as the longest-heard one (at most 20 voices of each):
+    # its own voice and synthetic voices made of it, so that one long-recorded speaker does not
+    # make the model hers
+    counts = {sp: synthetic + min(20, max(0, int(np.ceil(max(seconds.values()) / sec)) - 1 - synthetic))
+              for sp, sec in seconds.items()} if balance else {sp: synthetic for sp in train}
+    model = fit_fold(train, ref, variant, counts, seed)
+    records = []
+    for speaker in sorted(train):
+        for u in train[speaker]:
+            prefix = "FACEGOOD" if u.source == "facegood" else speaker
+            for path in [u.wav, *curve_files(u)]:
+                name = f"{prefix}/{path.parent.name}/{path.name}" if u.source == "facegood" else f"{prefix}/{path.name}"
+                records.append({"name": name, "sha256": sha256_of(path),
+                                "seconds": round(u.n / FPS, 2) if path == u.wav else None})
+    model.fitted_on = records
+    settings = {"variant": variant, **VARIANTS[variant], "synthetic_voices_per_speaker": counts, "seed": seed,
+                "speakers": sorted(train), "targets_in_units_of": FACEGOOD_SPEAKER,
+                "offsets_s": [float(x) for x in model.offsets_s], "pool": model.pool, "alpha": model.alpha,
+                "normalization": model.normalization, "tau_s": model.tau_s, "expand": model.expand}
+    model.write(out, config=json.dumps(settings, sort_keys=True), inputs=[], overwrite=True)
+    return {"speakers": sorted(train), "files": len(records),
+            "seconds": round(sum(u.n for v in train.values() for u in v) / FPS, 1), "targets": list(model.target_names),
+            "synthetic_voices_per_speaker": counts}
+
+
+#: Fit settings tried (item: features that do not carry the speaker); "default" is what ships.
+VARIANTS: dict[str, dict] = {
+    "default": {},
+    "utterance": {"normalization": "utterance"},
+    "alpha0.3": {"alpha": 0.3},
+    "alpha3": {"alpha": 3.0},
+    "alpha10": {"alpha": 10.0},
+    "tau1": {"tau_s": 1.0},
+    "tau10": {"tau_s": 10.0},
+}
+
+
+def main(argv=None) -> dict:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--facegood", type=Path, default=None, help="FACEGOOD's folder (see real_speech_lipsync.py)")
+    ap.add_argument("--speech-data", type=Path, default=None, help="a folder of sources (module docstring)")
+    ap.add_argument("--work", type=Path, required=True, help="cache: database, phones, motions, fold models")
+    ap.add_argument("--variant", default="default", choices=sorted(VARIANTS))
+    ap.add_argument("--actress", action="store_true",
+                    help="train every fold on the built-in actress's takes too (her synthetic voice; never scored)")
+    ap.add_argument("--synthetic", type=int, default=0, help="synthetic speakers per fold (training only)")
+    ap.add_argument("--speakers", default=None, help="comma-separated speakers to score (default: all)")
+    ap.add_argument("--no-chain", action="store_true", help="score the voice model alone (no synthesis)")
+    ap.add_argument("--folds", default="speaker", choices=("speaker", "source"),
+                    help="leave out one speaker at a time, or one whole source (its microphone, language, setting)")
+    ap.add_argument("--reuse-folds", action="store_true",
+                    help="read each fold's model from --work where an earlier run with the same data wrote it")
+    ap.add_argument("--no-live", action="store_true", help="leave out the live modes (the slowest)")
+    ap.add_argument("--sweep", default="",
+                    help="semicolon-separated LOW:HIGH:WEIGHT points of synthesize.voice_trust_low, voice_trust_high "
+                         "and voice_weight: the articulation mode with each, as mode 'trust LOW:HIGH:WEIGHT'")
+    ap.add_argument("--score-seconds", type=float, default=60.0,
+                    help="score each held-out speaker on its first utterances up to this many seconds (all are fitted on)")
+    ap.add_argument("--sources", default=None, help="comma-separated sources of --speech-data to read (default: all READY)")
+    ap.add_argument("--model-out", type=Path, default=None,
+                    help="also write the model fitted on every speaker of --ship-sources here (the packaged model)")
+    ap.add_argument("--ship-sources", default="facegood,grid",
+                    help="the sources whose licences let a model fitted on them ship (for --model-out)")
+    ap.add_argument("--no-balance", action="store_true",
+                    help="--model-out: no synthetic voices to give each speaker as long as the longest-heard one")
+    ap.add_argument("--sweep-packaged", action="store_true",
+                    help="the --sweep points with the packaged model too (modes 'packaged trust ...')")
+    ap.add_argument("--window-s", type=float, default=10.0)
+    ap.add_argument("--resamples", type=int, default=2000)
+    ap.add_argument("--seed", type=int, default=0)
+    args = ap.parse_args(argv)
+    started = time.perf_counter()
+    utts = (facegood_utterances(args.facegood) if args.facegood else []) + \
+        (speech_data_utterances(args.speech_data, ("facegood",) if args.facegood else (),
+                                args.sources.split(",") if args.sources else None) if args.speech_data else [])
+    if not utts:
+        raise SystemExit("no utterances: give --facegood and/or --speech-data (with READY-<source> markers)")
+    config = Config.load()
+    _phones_config()  # read now: the settings of the whole run
+    settings = config.settings("synthesize")
+    lip_markers = config.settings("evaluate").lip_markers
+    args.work.mkdir(parents=True, exist_ok=True)
+    if args.actress or not args.no_chain:
+        bench.build_database(args.work)
+    if args.actress:
+        utts += actress_utterances(args.work, settings.loudness_lip_markers)
+    for u in utts:
+        u.raw = A.frame_features(u.samples, u.rate)
+    by_speaker: dict[str, list[Utt]] = {}
+    for u in utts:
+        by_speaker.setdefault(u.speaker, []).append(u)
+    labels = {}
+    if args.speech_data and (args.speech_data / "speakers.json").exists():
+        listed = json.loads((args.speech_data / "speakers.json").read_text())
+        if isinstance(listed, list):  # [{source, speaker, sex, language, ...}]
+            listed = {f"{x['source']}/{x['speaker']}": x for x in listed}
+        labels = {k: {f: v[f] for f in ("sex", "language", "may_ship") if f in v} for k, v in listed.items()}
+    ref = reference_ranges([u for u in utts if u.speaker == FACEGOOD_SPEAKER] or utts)
+    real = sorted({u.speaker for u in utts if u.real_voice})
+    scored = args.speakers.split(",") if args.speakers else real
+    db = rig = lip_vertices = live_model = None
+    if not args.no_chain:
+        from facesynth.domain.live.core import LiveModel
+        from facesynth.domain.rig.face import load_face_rig
+        from facesynth.formats.mesh import read_binding
+        from facesynth.model.motiondb import MotionDatabase
+
+        db = bench.build_database(args.work)
+        rig = load_face_rig()
+        binding = read_binding(args.work / "corpus" / "markers.csv")
+        lip_vertices = np.array([binding[m] for m in lip_markers])
+        live_model = LiveModel(MotionDatabase.read(db), settings, config.settings("stream"), config.settings("solve"))
+    packaged = bench.ARTICULATION_MODEL
+    packaged_model = A.ArticulationModel.read(packaged)
+    per_speaker: dict[str, dict[str, list[float]]] = {}
+    skipped: list[dict] = []
+    timing = {}
+    fold_models: dict[str, tuple[A.ArticulationModel, Path]] = {}
+    for speaker in scored:
+        t0 = time.perf_counter()
+        # the speakers left out with this one: itself, or its whole source (--folds source)
+        fold = speaker if args.folds == "speaker" else by_speaker[speaker][0].source
+        cached = args.work / "folds" / f"{args.variant}.s{args.synthetic}.{fold.replace('/', '+')}.h5"
+        if fold not in fold_models and args.reuse_folds and cached.exists():
+            fold_models[fold] = (A.ArticulationModel.read(cached), cached)
+        if fold not in fold_models:
+            train = {s: v for s, v in by_speaker.items()
+                     if (s if args.folds == "speaker" else v[0].source) != fold}
+            if not train:
+                raise SystemExit(f"{fold} holds every speaker: leaving it out leaves nothing to fit on")
+            model = fit_fold(train, ref, args.variant, args.synthetic, args.seed)
+            model_path = args.work / "folds" / f"{args.variant}.s{args.synthetic}.{fold.replace('/', '+')}.h5"
+            model_path.parent.mkdir(parents=True, exist_ok=True)
+            model.write(model_path, config=json.dumps({"held_out": fold, "variant": args.variant}), inputs=[],
+                        overwrite=True)
+            fold_models[fold] = (model, model_path)
+        model, model_path = fold_models[fold]
+        scores: dict[str, list[float]] = {}
+        chosen, total = [], 0.0
+        for u in by_speaker[speaker]:
+            if total >= args.score_seconds:
+                break
+            chosen.append(u)
+            total += u.n / FPS
+        for u in chosen:
+            predicted = A.predict_raw(model, u.raw, np.arange(u.n) / FPS)
+            curves = {"voice": predicted[:, model.column("opening")], "voice_jaw": predicted[:, model.column("jawOpen")],
+                      "energy": envelope(u.samples, u.rate, u.n, FPS, 0.1)}
+            if not args.no_chain:
+                try:
+                    motion, phones = phones_motion(db, u, args.work)
+                except InputError as exc:  # synthesize --audio refuses it too (no speech found): not scored
+                    why = str(exc).replace(str(u.wav), u.key).split(";")[0]  # no folder of this machine
+                    skipped.append({"utterance": u.key, "why": why})
+                    continue
+                curves["phones"] = opening_of(motion, settings, u.n)
+                for mode in ("articulation", "loudness"):
+                    curves[mode] = voice_step(motion, u, phones, settings, model_path, True, mode)
+                for point in filter(None, args.sweep.split(";")):
+                    low, high, weight = (float(x) for x in point.split(":"))
+                    for tag, path in (("", model_path), ("packaged ", packaged)) if args.sweep_packaged else (("", model_path),):
+                        curves[f"{tag}trust {point}"] = voice_step(motion, u, phones, settings, path, True,
+                                                                   "articulation", voice_trust_low=low,
+                                                                   voice_trust_high=high, voice_weight=weight)
+                curves["default"] = curves[settings.voice_recognized] if settings.voice_recognized != "off" \
+                    else curves["phones"]
+                curves["packaged"] = voice_step(motion, u, phones, settings, packaged, True, settings.voice_recognized)
+                from facesynth.base.phonemes import PAU  # noqa: F401  (segments as openfacefx reads them)
+                from facesynth.formats.labels import Segment
+
+                segs = [Segment(float(a), float(b), p) for a, b, p in zip(*phones)]
+                curves["openfacefx"] = bench.openfacefx_method(segs, u.n, rig, lip_vertices)["opening"]
+                if not args.no_live:
+                    curves.update(live_curves(live_model, model, u, settings, settings.loudness_lip_markers))
+                    shipped = live_curves(live_model, packaged_model, u, settings, settings.loudness_lip_markers)
+                    curves["live_packaged"] = shipped["live"]
+                if u.given_phones is not None:
+                    gm, gp = phones_motion(db, u, args.work, given=True)
+                    curves["given_phones"] = opening_of(gm, settings, u.n)
+                    for mode in ("articulation", "loudness"):
+                        curves[f"given_{mode}"] = voice_step(gm, u, gp, settings, model_path, False, mode)
+                    curves["given_default"] = curves[f"given_{settings.voice_given}"] \
+                        if settings.voice_given != "off" else curves["given_phones"]
+            for mode, curve in curves.items():
+                scores.setdefault(mode, []).extend(window_scores(curve, u.real["opening"], u.n, args.window_s))
+        if scores.get("voice"):
+            per_speaker[speaker] = scores
+        timing[speaker] = round(time.perf_counter() - t0, 1)
+    packaged_fit = write_packaged(by_speaker, args.ship_sources.split(","), ref, args.variant, args.synthetic,
+                                  args.seed, args.model_out, not args.no_balance) if args.model_out else None
+    summary = summarize(per_speaker, args.resamples, args.seed)
+    return {"benchmark": "voice_speakers", "folds": args.folds, "variant": args.variant, "fit": VARIANTS[args.variant],
+            "synthetic_speakers": args.synthetic,
+            "settings": {"voice_recognized": settings.voice_recognized, "voice_given": settings.voice_given,
+                         "window_s": args.window_s, "resamples": args.resamples, "seed": args.seed, "fps": FPS},
+            "data": {s: {"utterances": len(v), "seconds": round(sum(u.n for u in v) / FPS, 1),
+                         **labels.get(s, {})} for s, v in sorted(by_speaker.items())},
+            "skipped": skipped, "packaged_model_fitted_on": packaged_fit, **summary, "seconds": {"per_speaker": timing, "total": round(time.perf_counter() - started, 1)}}
+
+
+if __name__ == "__main__":
+    print(json.dumps(main(), indent=2))
