@@ -174,7 +174,8 @@ class Request:
     """One animation asked of facesynth (paths absolute).
 
     audio : the speech (any sound file, or video with sound, that ffmpeg reads: WAV, FLAC, M4A,
-    MP3, Opus, Ogg, MP4, ...); text : what it says ('' to recognise it); database : the
+    MP3, Opus, Ogg, MP4, ...); text : what it says ('' to recognise it); language : its BCP-47
+    tag ('' for English: ``synthesize --language``); database : the
     database (db.h5) or fitted model; method : one of :data:`METHODS`; emotions : a spans file
     ('' for none); rig, binding : a user's rig and its marker binding ('' for the built-in rig);
     fps : the scene's frame rate; head : whether to export the head's rotation."""
@@ -183,6 +184,7 @@ class Request:
     database: str
     method: str = "dp"
     text: str = ""
+    language: str = ""
     emotions: str = ""
     rig: str = ""
     binding: str = ""
@@ -209,6 +211,8 @@ def check_request(r: Request) -> None:
     for what, path in (("emotion spans file", r.emotions), ("rig", r.rig), ("binding", r.binding)):
         if path and not os.path.exists(path):
             raise AddonError(f"the {what} {path} does not exist.")
+    if r.language.strip() and not re.fullmatch(r"[A-Za-z]{2,3}(?:[-_][A-Za-z0-9]{1,8})*", r.language.strip()):
+        raise AddonError(f"the language '{r.language}' is not a BCP-47 tag; give one like en, de, fr or cmn.")
     if not (r.fps > 0):
         raise AddonError(f"the scene's frame rate {r.fps:g} is not positive.")
 
@@ -240,6 +244,8 @@ def commands(exe: str, r: Request) -> list[tuple[str, list[str]]]:
     synth = [exe, "synthesize", r.database, "--audio", r.audio, "--method", r.method]
     if r.text.strip():
         synth += ["--text", r.text.strip()]
+    if r.language.strip():
+        synth += ["--language", r.language.strip()]
     if r.emotions:
         synth += ["--emotions", r.emotions]
     solve = [exe, "solve", r.files["motion"]]

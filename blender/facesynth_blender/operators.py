@@ -25,7 +25,7 @@ _METHOD_ITEMS = [
 ]
 
 #: The operator's properties a script may leave out; they are then taken from the panel's settings.
-_FROM_PANEL = ("audio", "sound_strip", "text", "database", "method", "emotions", "rig", "binding", "armature",
+_FROM_PANEL = ("audio", "sound_strip", "text", "language", "database", "method", "emotions", "rig", "binding", "armature",
                "bone", "mapping")
 
 
@@ -69,6 +69,8 @@ class FACESYNTH_OT_animate(bpy.types.Operator):
                                 description="Or, with no sound file, a sound strip of the sequencer: its sound, "
                                             "from the strip's start")
     text: StringProperty(options={"SKIP_SAVE"}, name="Text", description="What the sound says (empty: recognised from the speech)")
+    language: StringProperty(options={"SKIP_SAVE"}, name="Language",
+                             description="What language is spoken, a BCP-47 tag: en, de, fr, es, cmn... (empty: English)")
     database: StringProperty(options={"SKIP_SAVE"}, name="Database", subtype="FILE_PATH",
                              description="facesynth's motion database (db.h5) or a model fitted on it")
     method: EnumProperty(options={"SKIP_SAVE"}, name="Method", items=_METHOD_ITEMS, default="dp")
@@ -142,7 +144,7 @@ class FACESYNTH_OT_animate(bpy.types.Operator):
         else:
             emotions = abspath(emotions)
         plan.request = core.Request(audio=audio, database=abspath(self.database), method=self.method,
-                                    text=self.text, emotions=emotions, rig=abspath(self.rig),
+                                    text=self.text, language=self.language, emotions=emotions, rig=abspath(self.rig),
                                     binding=abspath(self.binding), fps=fps, head=bool(plan.bone))
         core.check_request(plan.request)
         setting = getattr(preferences(context), "facesynth_executable", "")

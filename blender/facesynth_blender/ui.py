@@ -39,6 +39,8 @@ class FacesynthSettings(bpy.types.PropertyGroup):
     audio: StringProperty(name="Sound file", subtype="FILE_PATH")
     sound_strip: StringProperty(name="Sound strip")
     text: StringProperty(name="Text", description="What is said (empty: recognised from the speech)")
+    language: StringProperty(name="Language",
+                             description="What language is spoken, a BCP-47 tag: en, de, fr, es, cmn... (empty: English)")
     emotion_source: EnumProperty(name="Emotions", items=[
         ("NONE", "Neutral", "No emotion spans: neutral speech"),
         ("MARKERS", "Timeline markers", "Markers named happy, angry, sad or neutral start a span each"),
@@ -59,7 +61,7 @@ class FacesynthSettings(bpy.types.PropertyGroup):
 
     def operator_values(self) -> dict:
         """The operator's properties as this panel sets them."""
-        values = {"text": self.text, "database": self.database, "method": self.method, "rig": self.rig,
+        values = {"text": self.text, "language": self.language, "database": self.database, "method": self.method, "rig": self.rig,
                   "binding": self.binding, "armature": self.armature.name if self.armature else "",
                   "bone": self.bone if self.armature else "",
                   "mapping": ", ".join(f"{m.arkit}={m.shape_keys}" for m in self.mapping if m.arkit.strip())}
@@ -134,6 +136,7 @@ class FACESYNTH_PT_panel(bpy.types.Panel):
         else:
             col.prop(settings, "audio", text="Sound")
         col.prop(settings, "text")
+        col.prop(settings, "language")
 
         col = layout.column()
         col.prop(settings, "emotion_source")

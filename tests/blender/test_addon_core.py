@@ -138,6 +138,17 @@ def test_commands_for_a_request(tmp_path):
                                "--head-motion", "-o", r.files["csv"], "--overwrite"]
 
 
+def test_a_request_in_another_language_passes_it_on(tmp_path):
+    c = core()
+    r = c.Request(audio="a.wav", database="db.h5", text="Bonjour", language="fr", work_dir=str(tmp_path))
+    assert c.commands("fs", r)[0][1][-7:-3] == ["--text", "Bonjour", "--language", "fr"]
+    audio, db = tmp_path / "a.wav", tmp_path / "db.h5"
+    audio.write_bytes(b"")
+    db.write_bytes(b"")
+    with pytest.raises(c.AddonError, match="the language 'French!' is not a BCP-47 tag"):
+        c.check_request(c.Request(audio=str(audio), database=str(db), language="French!"))
+
+
 @pytest.mark.parametrize("fps", [24.0, 30000 / 1001])
 def test_the_csv_route_keeps_the_solved_curves(held_out_synthesized, tmp_path, fps):
     """What the add-on keys is what ``facesynth export --format arkit-csv --fps <scene>`` writes:

@@ -171,6 +171,18 @@ def test_given_phone_timings_are_checked():
         given_phones("hh", "m")
 
 
+def test_given_ipa_phones_of_another_language_take_their_nearest_english_phones():
+    items = [{"phone": "t", "start": 0, "end": 0.1}, {"phone": "y", "start": 0.1, "end": 0.2},
+             {"phone": "sil", "start": 0.2, "end": 0.3}, {"phone": "ʁ", "start": 0.3, "end": 0.4},
+             {"phone": "ɸ", "start": 0.4, "end": 0.5}]
+    # French /y/ is the rounded vowel, /ʁ/ the velar stop, /ɸ/ closes the lips (facesynth.base.ipa)
+    assert given_phones(items, "m", ipa=True) == [("t", 0.0, 0.1), ("uw", 0.1, 0.2), ("pau", 0.2, 0.3),
+                                                  ("g", 0.3, 0.4), ("p", 0.4, 0.5)]
+    assert given_phones(items[:2], "m") == [("t", 0.0, 0.1), ("y", 0.1, 0.2)]  # English: /y/ is the glide
+    with pytest.raises(InputError, match="m, 0.100 s: 'ǂ' is not an IPA phone facesynth knows"):
+        given_phones([items[0], {"phone": "ǂ", "start": 0.1, "end": 0.2}], "m", ipa=True)
+
+
 def test_a_gap_between_phones_becomes_a_pause(db, config):
     live = LiveSynthesizer(_model(db, config))
     live.add_phone("hh", 0.1, 0.2)

@@ -297,6 +297,24 @@ def test_start_after_audio_is_refused(model):
         session.audio(b"\0\0")
 
 
+def test_a_start_message_in_another_language_takes_ipa_phones(model):
+    from facesynth.base.errors import InputError
+    from facesynth.domain.live.session import Session
+
+    french = Session(model, _align(), "client 1")
+    french.control(json.dumps({"type": "start", "phones": "given", "language": "fr-CA"}))
+    french.control(json.dumps({"type": "phones", "phones": [{"phone": "b", "start": 0.1, "end": 0.2},
+                                                             {"phone": "y", "start": 0.2, "end": 0.3}]}))
+    assert french.synth.phones[-2:] == ["b", "uw"]  # French /y/: the rounded vowel, not the glide
+    english = Session(model, _align(), "client 2")
+    english.control(json.dumps({"type": "start", "phones": "given", "language": "en"}))
+    english.control(json.dumps({"type": "phones", "phones": [{"phone": "y", "start": 0.1, "end": 0.2}]}))
+    assert english.synth.phones[-1] == "y"
+    with pytest.raises(InputError, match="client 3: 'language' of 'start' must be a BCP-47 tag like en, de, fr or "
+                                         "cmn, not 'French!'."):
+        Session(model, _align(), "client 3").control(json.dumps({"type": "start", "language": "French!"}))
+
+
 @pytest.mark.parametrize("pause_wait_s", [0.1, 0.25])
 def test_given_phones_at_their_start_leave_no_frame_waiting_past_the_pause_wait(tiny_db, config, pcm, tiny_corpus,
                                                                                 held_out_take, pause_wait_s):

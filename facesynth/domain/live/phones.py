@@ -9,7 +9,8 @@
   ``stream.recognition_restart_s`` long, so a stream of hours costs no more per chunk than a
   sentence (each step reads the utterance's segments, and the decoder's tables grow with it).
 - :func:`given_phones`: the phone timings a TTS engine gives as it speaks (a JSON control
-  message), checked and mapped to the Festival set.
+  message), checked and mapped to the Festival set (IPA phones of another language to their
+  articulatory nearest English phones, :func:`facesynth.base.ipa.nearest_festival`).
 """
 
 from __future__ import annotations
@@ -20,6 +21,7 @@ import numpy as np
 
 from facesynth.base.config import AlignSettings
 from facesynth.base.errors import InputError
+from facesynth.base.ipa import nearest_festival
 from facesynth.base.phonemes import PAU, map_phones, to_festival
 from facesynth.domain.speech.recognition import phone_loop_model
 
@@ -110,9 +112,11 @@ class PhoneRecognizer:
         return out
 
 
-def given_phones(items, where: str) -> list[tuple[str, float, float]]:
+def given_phones(items, where: str, ipa: bool = False) -> list[tuple[str, float, float]]:
     """Phone timings of a control message: a list of ``{"phone": name, "start": s, "end": s}``
-    (CMU/ARPAbet with or without stress digits, or Festival names), in time order."""
+    (CMU/ARPAbet with or without stress digits, or Festival names; with ``ipa``, a stream in
+    another language, IPA symbols, each played by its articulatory nearest English phone), in
+    time order: ``(festival_phone, start_s, end_s)`` tuples."""
     if not isinstance(items, list):
         raise InputError(f"{where}: 'phones' must be a list of {{\"phone\", \"start\", \"end\"}} objects.")
     names: list[str] = []
@@ -130,8 +134,27 @@ def given_phones(items, where: str) -> list[tuple[str, float, float]]:
         names.append(item["phone"])
         starts.append(a)
         ends.append(b)
-    labels = map_phones(names, where, starts)
+    labels = _ipa_phones(names, where, starts) if ipa else map_phones(names, where, starts)
     return list(zip(labels, starts, ends))
+
+
+#: Names a stream in another language may give a pause (IPA has no symbol for silence).
+_IPA_PAUSES = frozenset({"", "_", "sil", "sp", "pau"})
+
+
+def _ipa_phones(names: list[str], where: str, starts: list[float]) -> list[str]:
+    """IPA phones as their nearest English (Festival) phones; a name of :data:`_IPA_PAUSES` is a pause."""
+    out = []
+    for name, start in zip(names, starts):
+        if name.strip() in _IPA_PAUSES:
+            out.append(PAU)
+            continue
+        try:
+            out.append(nearest_festival(name.strip()))
+        except KeyError:
+            raise InputError(f"{where}, {start:.3f} s: {name!r} is not an IPA phone facesynth knows; "
+                             "send IPA symbols (docs/methods.md), or 'sil' for a pause.") from None
+    return out
 
 
 def _seconds(value) -> float | None:

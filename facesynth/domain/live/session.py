@@ -3,10 +3,13 @@ messages (JSON-ready dicts) out.
 
 Control messages (JSON objects, docs/live.md):
 
-- ``{"type": "start", "phones": "recognize" | "given", "emotion": name, "markers": bool}``:
-  optional, before any audio; ``given`` means the client sends the phone timings (a TTS engine)
-  and the audio is not recognised: each phone must arrive within ``stream.pause_wait_s`` of its
-  start, or the audio before it is taken as a pause (the phone then starts where the pause ends).
+- ``{"type": "start", "phones": "recognize" | "given", "emotion": name, "markers": bool,
+  "language": "en"}``: optional, before any audio; ``given`` means the client sends the phone
+  timings (a TTS engine) and the audio is not recognised: each phone must arrive within
+  ``stream.pause_wait_s`` of its start, or the audio before it is taken as a pause (the phone
+  then starts where the pause ends). A ``language`` (a BCP-47 tag) other than English says the
+  given phones are IPA symbols (``"y"``, ``"ʁ"``, ``"ɔ̃"``; ``"sil"`` a pause), each played by its
+  articulatory nearest English phone; recognised audio is a phone loop in every language.
 - ``{"type": "phones", "phones": [{"phone": "HH", "start": 0.10, "end": 0.16}, ...], "final": false}``:
   phone timings in stream seconds, in order (``given`` mode); ``"final": true`` says they are
   the utterance's last, so nothing waits for a look-ahead past them.
@@ -19,6 +22,7 @@ Audio: 16-bit little-endian mono PCM at 16 kHz, in chunks of any size.
 from __future__ import annotations
 
 import json
+import re
 
 import numpy as np
 
@@ -26,10 +30,14 @@ from facesynth.base.config import AlignSettings
 from facesynth.base.errors import InputError
 from facesynth.base.phonemes import PAU
 from facesynth.domain.speech.articulation import model_look_ahead_s
+from facesynth.domain.speech.languages import is_english
 
 from .core import Frame, LiveModel, LiveSynthesizer
 from .phones import SAMPLE_RATE, PhoneRecognizer, given_phones
 from .voice import VoiceFrames
+
+#: A BCP-47 tag as a start message's ``language`` may give it (``en``, ``fr-CA``, ``cmn``, ``zh_Hans``).
+_LANGUAGE_TAG = re.compile(r"[A-Za-z]{2,3}(?:[-_][A-Za-z0-9]{1,8})*")
 
 #: Decimals of the weights and markers in a frame message.
 DECIMALS = 4
@@ -43,6 +51,7 @@ class Session:
         self.synth = LiveSynthesizer(model)
         self.mode = "recognize"
         self.markers = False
+        self.language = "en"  # the start message's: given phones in another language are IPA
         self.recognizer: PhoneRecognizer | None = None
         self.voice: VoiceFrames | None = None  # frames from the voice (recognize mode, stream.voice)
         self.samples = 0
@@ -113,6 +122,12 @@ class Session:
                 raise InputError(f"{self.where}: 'phones' of 'start' is 'recognize' or 'given', not {mode!r}.")
             self.mode = mode
             self.markers = bool(message.get("markers", False))
+            if "language" in message:  # given phones are then IPA (audio is recognised as phones anyway)
+                language = message["language"]
+                if not isinstance(language, str) or not _LANGUAGE_TAG.fullmatch(language.strip()):
+                    raise InputError(f"{self.where}: 'language' of 'start' must be a BCP-47 tag like en, de, fr or "
+                                     f"cmn, not {language!r}.")
+                self.language = language.strip()
             if "emotion" in message:
                 self.synth.set_emotion(str(message["emotion"]))
             return []
@@ -125,7 +140,8 @@ class Session:
             if self.mode != "given":
                 raise InputError(f"{self.where}: phone timings need {{\"type\": \"start\", \"phones\": \"given\"}} first.")
             self.started = True
-            for phone in given_phones(message.get("phones"), f"{self.where}, phones message"):
+            for phone in given_phones(message.get("phones"), f"{self.where}, phones message",
+                                      ipa=not is_english(self.language)):
                 self.synth.add_phone(*phone)
             if message.get("final") is True:
                 self.synth.phones_complete = True

@@ -50,7 +50,7 @@ from facesynth.base.config import AlignSettings
 from facesynth.base.errors import InputError
 from facesynth.base.ipa import nearest_festival
 from facesynth.base.phonemes import PAU, pronunciations, to_festival, typical_duration
-from facesynth.domain.speech.languages import is_english, primary, read_dictionary, words_of
+from facesynth.domain.speech.languages import Word, is_english, primary, read_dictionary, words_of
 from facesynth.formats.audio import resample
 from facesynth.formats.labels import Segment
 
@@ -268,7 +268,17 @@ def _align_language(samples: np.ndarray, rate: int, text: str, *, settings: Alig
         raise InputError(f"{where}: --dict gives English (ARPAbet) pronunciations; for language "
                          f"{settings.language!r} give 'word  IPA phones' lines in align.dictionary.")
     words = words_of(text, settings.language, settings.dictionary, where)
-    marks = non_speech_marks(text)
+    return align_pronounced(samples, rate, words, settings=settings, marks=non_speech_marks(text), where=where)
+
+
+def align_pronounced(samples: np.ndarray, rate: int, words: list[Word], *, settings: AlignSettings,
+                     marks: list[str] | None = None, where: str = "audio") -> Alignment:
+    """:func:`align_robust` of words whose pronunciations are given (``words``: each with its IPA
+    phones and their nearest English phones, as :func:`~facesynth.domain.speech.languages.words_of`
+    gives them), in ``samples`` ((n,) float32 in [-1, 1], mono, ``rate`` Hz): each word a decoder
+    word of its own (``w0x``, ``w1x``, ...: names no English word has) pronounced by its English
+    phones, aligned as English by ``settings.methods``, the word tier relabelled with the words'
+    text. ``marks``: the text's non-speech marks (``[laugh]``), each explaining one voiced pause."""
     names: dict[tuple[str, ...], str] = {}
     own: dict[str, list[tuple[str, ...]]] = {}
     written: dict[str, str] = {}
@@ -280,7 +290,7 @@ def _align_language(samples: np.ndarray, rate: int, text: str, *, settings: Alig
         written.setdefault(key, word.text)
         keys.append(key)
     english = replace(settings, language="en", dictionary="")  # the words are already pronounced
-    result = align_robust(samples, rate, " ".join(keys + marks), settings=english, extra=own, where=where)
+    result = align_robust(samples, rate, " ".join(keys + list(marks or [])), settings=english, extra=own, where=where)
     result.words = [Segment(w.start, w.end, written.get(w.label, w.label)) for w in result.words]
     return result
 
