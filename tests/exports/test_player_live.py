@@ -46,8 +46,11 @@ def stream_url(tiny_db):
     """A ``facesynth stream --serve 127.0.0.1:0`` server on the tiny database, in a thread of
     this process (each page that connects is its own session); its WebSocket URL."""
     config = Config.load()
-    model = LiveModel(MotionDatabase.read(tiny_db), config.settings("synthesize"), config.settings("stream"),
-                      config.settings("solve"))
+    # the voice's frames, which arrive at the speech's own pace: with the default (stream.voice
+    # "off") the recognised phones' frames come a second late in bursts, and a headless Chromium
+    # on a loaded machine shows too few of them for the mouth checks below
+    stream = dataclasses.replace(config.settings("stream"), voice="articulation")
+    model = LiveModel(MotionDatabase.read(tiny_db), config.settings("synthesize"), stream, config.settings("solve"))
     loop = asyncio.new_event_loop()
     server = StreamServer(model, config.settings("align"), "127.0.0.1", 0)
     loop.run_until_complete(server.start())
