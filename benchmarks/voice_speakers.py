@@ -14,12 +14,12 @@ Data (real voices only are scored; ``--work`` caches everything per utterance):
   a list of ``{"source", "speaker", "sex", "language", ...}``) labels the speakers; a source
   ``facegood`` there is skipped when ``--facegood`` is given (read with all its channels).
 - ``--synthetic N``: N synthetic speakers made from the training speakers' voices by
-  :mod:`facesynth.domain.speech.voices` (vocal-tract length, pitch, microphone): training only, never
+  :mod:`facesynth.domain.voice.synthetic` (vocal-tract length, pitch, microphone): training only, never
   scored (they teach invariance; they are no evidence).
 
 Per held-out speaker (every real speaker in turn), the articulation model is fitted on every other
 real speaker (plus the synthetic speakers made of *their* voices), with the settings of
-:func:`facesynth.domain.speech.articulation.fit` (``--variant`` changes them, below). The targets
+:func:`facesynth.domain.voice.articulation.fit` (``--variant`` changes them, below). The targets
 of each training speaker are its curves mapped so that its 5th..95th percentiles fall on FACEGOOD's
 (the units live frames use); a curve a source lacks is left out of that target's fit.
 
@@ -29,7 +29,7 @@ from them on the built-in actress's database (``small`` preset, seed 0), at 30 f
 
 - ``default``: ``synthesize --audio`` as configured (``synthesize.voice_recognized`` and its
   settings), the fold's model as ``synthesize.articulation_model``; the voice step is
-  :func:`facesynth.domain.methods.voice.apply` run on the DP's motion, as ``synthesize`` runs it.
+  :func:`facesynth.domain.voice.fusion.apply` run on the DP's motion, as ``synthesize`` runs it.
 - ``articulation``, ``loudness``, ``phones``: the same with ``voice_recognized`` =
   articulation, loudness (the release before), off (the recognised phones alone).
 - ``given_articulation``, ``given_loudness``, ``given_phones``: where the utterance comes with its
@@ -38,7 +38,7 @@ from them on the built-in actress's database (``small`` preset, seed 0), at 30 f
 - ``energy``: the loudness alone (log RMS, 0.1 s); ``voice``: the fold model's predicted opening;
   ``voice_jaw``: its predicted jawOpen.
 - ``live``: the mouth ``stream`` sends with ``stream.voice = "articulation"``
-  (:class:`facesynth.domain.live.voice.VoiceFrames`, 20 ms chunks, the fold's model), as its
+  (:class:`facesynth.domain.live.voice_frames.VoiceFrames`, 20 ms chunks, the fold's model), as its
   inner-lip gap; ``live_jaw``: its jawOpen weight; ``live_packaged``: the same with the packaged model.
 - ``packaged``: ``default`` with the packaged model (fitted on FACEGOOD: within-speaker there).
 
@@ -70,8 +70,8 @@ from facesynth.base.config import Config, settings_json
 from facesynth.base.errors import InputError
 from facesynth.base.hashing import sha256_of
 from facesynth.domain.evaluation.bootstrap import interval, paired_difference, resamples
-from facesynth.domain.speech import articulation as A
 from facesynth.domain.speech.loudness import envelope, lip_gaps
+from facesynth.domain.voice import articulation as A
 from facesynth.formats.audio import read_audio
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
@@ -279,10 +279,10 @@ def voice_step(motion, u: Utt, phones, settings, model_path: Path, recognized: b
     (and the synthesize settings ``changes``)."""
     from dataclasses import replace
 
-    from facesynth.domain.methods import voice
+    from facesynth.domain.voice import fusion
 
     s = replace(settings, articulation_model=str(model_path), voice_recognized=path, voice_given=path, **changes)
-    moved, _, _ = voice.apply(motion, u.samples, u.rate, phones[0], phones[1], phones[2], s, recognized=recognized)
+    moved, _, _ = fusion.apply(motion, u.samples, u.rate, phones[0], phones[1], phones[2], s, recognized=recognized)
     return opening_of(moved, settings, u.n)
 
 
@@ -297,7 +297,7 @@ def opening_of(motion, settings, n: int) -> np.ndarray:
 def live_curves(live_model, model, u: Utt, settings, lip_markers) -> dict[str, np.ndarray]:
     """The mouth ``stream`` sends from ``u``'s audio (20 ms chunks) with ``model``: {live: its inner-lip
     gap, live_jaw: its jawOpen weight}, (n,) each at FPS."""
-    from facesynth.domain.live.voice import VoiceFrames
+    from facesynth.domain.live.voice_frames import VoiceFrames
     from facesynth.formats.audio import resample
 
     x = np.asarray(u.samples, np.float64)
@@ -394,15 +394,15 @@ def fit_fold(train: dict[str, list[Utt]], ref, variant: str, synthetic: int | di
 
 def synthetic_features(u: Utt, count: int, seed: int) -> list[np.ndarray]:
     """The raw features (K, D) of ``count`` synthetic speakers saying ``u`` (each voice drawn by
-    :func:`facesynth.domain.speech.voices.random_voice` from a generator seeded by ``seed``, the
+    :func:`facesynth.domain.voice.synthetic.random_voice` from a generator seeded by ``seed``, the
     utterance's name and the speaker's number), made once per run."""
-    from facesynth.domain.speech import voices
+    from facesynth.domain.voice import synthetic
 
     while len(u.synthetic) < count:
         i = len(u.synthetic)
         key = int.from_bytes(hashlib.sha256(f"{seed}/{u.key}/{i}".encode()).digest()[:8], "little")
-        voice = voices.random_voice(np.random.default_rng(key))
-        u.synthetic.append(A.frame_features(voices.transform(u.samples, u.rate, voice), u.rate))
+        voice = synthetic.random_voice(np.random.default_rng(key))
+        u.synthetic.append(A.frame_features(synthetic.transform(u.samples, u.rate, voice), u.rate))
     return u.synthetic[:count]
 
 
@@ -523,7 +523,7 @@ def main(argv=None) -> dict:
     scored = args.speakers.split(",") if args.speakers else real
     db = rig = lip_vertices = live_model = None
     if not args.no_chain:
-        from facesynth.domain.live.core import LiveModel
+        from facesynth.domain.live.synthesizer import LiveModel
         from facesynth.domain.rig.face import load_face_rig
         from facesynth.formats.mesh import read_binding
         from facesynth.model.motiondb import MotionDatabase

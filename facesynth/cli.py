@@ -543,11 +543,11 @@ def synthesize(ctx: Context, db: Path, method, phonemes, audio, text, language, 
     """
     import dataclasses
 
-    from facesynth.domain.methods import MethodSettings, core
+    from facesynth.domain.methods import MethodSettings, steps
     from facesynth.stages import synthesize as stage
 
     settings = MethodSettings.of(ctx.config)
-    name = core.chosen_method(method, search, settings.synthesize.search)
+    name = steps.chosen_method(method, search, settings.synthesize.search)
     if search:
         settings = dataclasses.replace(settings, synthesize=dataclasses.replace(settings.synthesize, search=search))
     s = stage.run(db, output, settings, ctx.config.settings("ingest"),
@@ -1133,12 +1133,12 @@ def batch(ctx: Context, script: Path, db_path: Path, method: str | None, output:
         else:
             ctx.detail(f"{r.id}: {r.status} ({r.method}, {r.phones} phones, {r.total_s:.2f} s)")
 
-    from facesynth.domain.methods import MethodSettings, core
+    from facesynth.domain.methods import MethodSettings, steps
 
     method_settings = MethodSettings.of(ctx.config)
     s = stage.run(script, db_path, output, settings, method_settings, ctx.config.settings("ingest"),
                   ctx.config.settings("align"), ctx.config.settings("deform"), ctx.config.settings("render"),
-                  method=core.chosen_method(method, None, method_settings.synthesize.search), mesh=mesh, binding=binding,
+                  method=steps.chosen_method(method, None, method_settings.synthesize.search), mesh=mesh, binding=binding,
                   scheduler=scheduler, overwrite=ctx.overwrite, on_result=on_result, solve=ctx.config.settings("solve"),
                   export=ctx.config.settings("export"), rig=rig, rig_binding=rig_binding)
     skipped = f", {s.skipped} up to date" if s.skipped else ""

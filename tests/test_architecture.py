@@ -25,8 +25,8 @@ DEFERRED = {
 
 #: The domain's subject packages in the order they may import one another: each imports only
 #: those before it (and base, formats, model). docs/architecture.md's table says what each holds.
-DOMAIN_ORDER = ("postprocess", "speech", "head_motion", "rig", "search", "retarget", "rendering", "expression",
-                "database", "corpus", "capture", "methods", "live", "exports", "evaluation", "batch")
+DOMAIN_ORDER = ("postprocess", "geometry", "speech", "head_motion", "rig", "search", "retarget", "voice", "rendering",
+                "expression", "database", "corpus", "capture", "methods", "live", "exports", "evaluation", "batch")
 
 #: Modules that import only the standard library (they are read before anything is installed
 #: or configured: the stage declarations, the registries).

@@ -93,7 +93,7 @@ def written(tiny_corpus, tiny_artifacts, tiny_db, held_out_take, config, tmp_pat
     ingest.run(d / "live_link" / "manifest.csv", out["posed_corpus"], config.settings("ingest"), config.settings("align"))
     normalize.run(out["posed_corpus"], out["posed_normalized"], config.settings("normalize"))
     # no stage fits the articulation model yet: one fitted on a take's audio, its loudness the target
-    from facesynth.domain.speech import articulation
+    from facesynth.domain.voice import articulation
     from facesynth.formats.audio import read_audio
 
     samples, rate = read_audio(tiny_corpus / "audio" / f"{held_out_take}.wav")

@@ -21,7 +21,7 @@ from facesynth.domain.capture.readers import read_capture
 from facesynth.domain.exports.animation import Exportable
 from facesynth.domain.exports.format import ExportFormat, ExportOptions
 from facesynth.domain.methods import FitSummary, Method, MethodSettings, Synthesis, SynthesisSummary
-from facesynth.domain.methods.core import frame_motion
+from facesynth.domain.methods.steps import frame_motion
 from facesynth.formats.mocap import MarkerTake
 from facesynth.model.artifacts import attr, open_artifact, read, read_strings, write_artifact, write_strings
 from facesynth.model.spec import Attr, Dataset, Kind

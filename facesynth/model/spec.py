@@ -618,7 +618,7 @@ ARTICULATION = Kind("articulation", 1, (
     "(`feature_names`, 10 ms analysis frames, normalized as `normalization` says), each averaged over `pool` "
     "frames around every offset of `offsets_s` from an output frame's time (with the loudness hinges at `knots` "
     "where `expand` is 1), to the mouth's curves `target_names`: `curves = context @ coef + intercept`, the "
-    "context offset-major. `facesynth.domain.speech.articulation.predict` needs this file alone."), (
+    "context offset-major. `facesynth.domain.voice.articulation.predict` needs this file alone."), (
     Dataset("target_names", "str", ("Ya",), "the predicted curves (ARKit names, or `opening`)"),
     Dataset("offsets_s", "float64", ("Ca",), "offsets of the context from the frame time", "s", (SECONDS,)),
     Dataset("feature_names", "str", ("Da",), "the voice features, in column order"),

@@ -4,7 +4,7 @@ with a summary of every line (see :mod:`facesynth.domain.batch`).
 
 Every line is synthesized by one member of the method family (``method``: default
 ``synthesize.search``, i.e. the DP) through the same shared core as ``facesynth synthesize``
-(:mod:`facesynth.domain.methods.core`), under the command's ``[limits]``, which the job carries to the
+(:mod:`facesynth.domain.methods.steps`), under the command's ``[limits]``, which the job carries to the
 workers. The script is checked first: a file without the required columns is refused before any work
 (and before a cluster is started). Each line then runs as one task; the summary
 (``summary.csv``, ``summary.html``) lists status, the alignment method, phone count, timings

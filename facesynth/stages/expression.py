@@ -18,7 +18,7 @@ from facesynth.base.config import ExpressionSettings, IngestSettings, settings_j
 from facesynth.base.errors import InputError
 from facesynth.base.phonemes import PAU
 from facesynth.domain.expression import bilinear
-from facesynth.domain.search.inputs import Utterance, apply_emotions
+from facesynth.domain.speech.utterance import Utterance, apply_emotions
 from facesynth.model.artifacts import check_output
 from facesynth.model.expression import ExpressionModel
 from facesynth.model.frames import NormalizedFrames

@@ -34,7 +34,7 @@ from facesynth.base.progress import progress
 from facesynth.domain import methods
 from facesynth.domain.database.embedding import barycentric_pick, build_clusters, memory_estimate
 from facesynth.domain.exports import isomap_page as export
-from facesynth.domain.methods import core
+from facesynth.domain.methods import steps
 from facesynth.model.artifacts import atomic_folder, atomic_path, check_output, check_output_folder, published_together
 from facesynth.model.isomap import Cluster, PhonemeMaps
 from facesynth.model.motion import Motion
@@ -432,8 +432,8 @@ def page(isomap_path: Path, db_path: Path, phones_path: Path, out: Path, setting
     export.require_same_database(isomap_path, PhonemeMaps.KIND, "was built", db_path,
                                  f"run facesynth isomap build {db_path} -o ISOMAP.h5 and use that")
     export.check_maps(maps, db, isomap_path, db_path)
-    utt = core.read_utterance(ingest_settings, phones_path=phones_path, emotions_path=emotions_path).utterance
-    constraints = core.constraints_for(methods.get("dp"), db, constraints_path, utt)
+    utt = steps.read_utterance(ingest_settings, phones_path=phones_path, emotions_path=emotions_path).utterance
+    constraints = steps.constraints_for(methods.get("dp"), db, constraints_path, utt)
     missing = export.require_some_map(utt, maps, phones_path, db_path)
     path, notes = None, []
     if motion_path is not None:

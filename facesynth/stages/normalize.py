@@ -1,7 +1,7 @@
 """``facesynth normalize``: remove head motion from the markers (paper III, Eq. 1-2).
 
 Short gaps are filled; every frame is rigidly aligned onto a neutral closed-mouth reference
-frame (:mod:`facesynth.domain.head_motion.rigid`); the per-frame rigid transform is kept, so
+frame (:mod:`facesynth.domain.geometry.rigid`); the per-frame rigid transform is kept, so
 ``captured = R_i @ normalized + t_i`` for every marker.
 
 Where the paper translates by one marker and rotates on all of them, translation and rotation
@@ -30,7 +30,7 @@ import numpy as np
 
 from facesynth.base.config import NormalizeSettings, settings_json
 from facesynth.base.errors import InputError
-from facesynth.domain.head_motion.rigid import RigidChoice, choose_rigid, fill_gaps, head_pose, typical_frame
+from facesynth.domain.geometry.rigid import RigidChoice, choose_rigid, fill_gaps, head_pose, typical_frame
 from facesynth.model.corpus import Corpus
 from facesynth.model.frames import HeadFrames, NormalizedFrames
 from facesynth.model.tables import Phones, Takes
@@ -54,7 +54,7 @@ def reference_frame(markers: np.ndarray, takes: Takes, phones: Phones, fps: floa
                     settings: NormalizeSettings) -> np.ndarray:
     """Candidate frames (C, M, 3) mm for the neutral closed-mouth reference, raw capture: the named
     take's frame (a frame without a take: of the first take), else the leading silences of the neutral training takes, else (no silence is
-    marked) the first take's most typical frame (:func:`~facesynth.domain.head_motion.rigid.typical_frame`)."""
+    marked) the first take's most typical frame (:func:`~facesynth.domain.geometry.rigid.typical_frame`)."""
     if settings.reference_take or settings.reference_frame >= 0:  # a frame alone is of the first take
         if settings.reference_take and settings.reference_take not in takes.name:
             raise InputError(f"normalize.reference_take {settings.reference_take!r} is not a take of this corpus.")
@@ -115,7 +115,7 @@ def normalize(markers: np.ndarray, names: list[str], takes: Takes, phones: Phone
     rotations (F, 3, 3), translations (F, 3) mm of a posed corpus; see :func:`uses_known_pose`)
     removed as it is. Returns (normalized, rotations, translations, reference, origin index, list
     of unfilled gaps (take, marker, start_s, length_s), the
-    :class:`~facesynth.domain.head_motion.rigid.RigidChoice` (source ``known`` with no markers
+    :class:`~facesynth.domain.geometry.rigid.RigidChoice` (source ``known`` with no markers
     for a known pose), the rigid markers' weights)."""
     filled = markers.astype(np.float64).copy()
     long_gaps = []

@@ -19,10 +19,10 @@ from typing import BinaryIO, cast
 from facesynth.base.config import AlignSettings, SolveSettings, StreamSettings, SynthesizeSettings, TrajectorySettings
 from facesynth.base.errors import InputError
 from facesynth.domain import methods
-from facesynth.domain.live.core import LiveModel
 from facesynth.domain.live.livelink import LiveLinkSender
 from facesynth.domain.live.phones import SAMPLE_RATE
 from facesynth.domain.live.server import StreamServer, run_pipe
+from facesynth.domain.live.synthesizer import LiveModel
 from facesynth.formats.audio import pcm16, read_audio, resample
 from facesynth.model.artifacts import artifact_kind
 

@@ -29,7 +29,7 @@ from facesynth.base.config import IngestSettings, SynthesizeSettings
 from facesynth.base.errors import InputError
 from facesynth.base.opencl import use_opencl
 from facesynth.domain import methods
-from facesynth.domain.methods import core
+from facesynth.domain.methods import steps
 from facesynth.domain.search.constraint_choice import (
     ContextStep,
     context_correct,
@@ -94,8 +94,8 @@ def suggest(db_path: Path, phones_path: Path, at_s: float, settings: SynthesizeS
     """Nodes of the phone at ``at_s`` (s) ranked by the best total cost through them (forward and
     backward DP, paper VI-A), with the phone's description."""
     db = MotionDatabase.read(db_path)
-    utt = core.read_utterance(ingest_settings, phones_path=phones_path, emotions_path=emotions_path).utterance
-    constraints = core.constraints_for(methods.get("dp"), db, constraints_path, utt)
+    utt = steps.read_utterance(ingest_settings, phones_path=phones_path, emotions_path=emotions_path).utterance
+    constraints = steps.constraints_for(methods.get("dp"), db, constraints_path, utt)
     c = spoken_step_at(utt, at_s, str(phones_path))
     phone = utt.phones[c]
     candidates = np.nonzero(np.array(db.nodes.phone) == phone)[0]

@@ -3,7 +3,7 @@ family (:mod:`facesynth.domain.methods`): by default the paper's DP search of th
 (paper VI and VII-B; the search and post-processing are :mod:`facesynth.domain.search.synthesis`), or
 greedy, the mean pose, or a fitted model (``trajectory``: Huang et al. §5.4; ``coarticulation``:
 Cohen-Massaro) read from its own artifact. The utterance, its emotions, the memory check and the
-transcript-mismatch policy are the shared core's (:mod:`facesynth.domain.methods.core`).
+transcript-mismatch policy are the shared core's (:mod:`facesynth.domain.methods.steps`).
 """
 
 from __future__ import annotations
@@ -14,7 +14,7 @@ from pathlib import Path
 
 from facesynth.base.config import AlignSettings, IngestSettings, SynthesizeSettings
 from facesynth.domain import methods
-from facesynth.domain.methods import MethodSettings, core
+from facesynth.domain.methods import MethodSettings, steps
 from facesynth.domain.methods.search import memory_estimate as memory_estimate  # the DP's estimate, where it always was
 from facesynth.model.artifacts import check_output, input_records_in_background
 from facesynth.model.head_motion import HeadMotion
@@ -70,8 +70,8 @@ def run(source_path: Path, out: Path, settings: SynthesizeSettings | MethodSetti
     ``headmotion`` artifact, see ``facesynth head-motion``) replaces the head motion of the output
     (the source takes' for the searches, none for the others).
 
-    The steps are the ones :mod:`facesynth.api` calls (:func:`core.synthesize_utterance`,
-    :func:`core.write_motion`, :func:`core.motion_inputs`), so the command and the API write the
+    The steps are the ones :mod:`facesynth.api` calls (:func:`steps.synthesize_utterance`,
+    :func:`steps.write_motion`, :func:`steps.motion_inputs`), so the command and the API write the
     same artifact."""
     settings = method_settings(settings)
     member = methods.get(method or settings.synthesize.search)
@@ -84,19 +84,19 @@ def run(source_path: Path, out: Path, settings: SynthesizeSettings | MethodSetti
     load_s = time.perf_counter() - t0
     # hashed from here, while the method runs: the source's record comes from the file just
     # validated (not opened again), and a source replaced meanwhile is refused
-    records = input_records_in_background(core.motion_inputs(source_path, phones_path, emotions_path, constraints_path,
+    records = input_records_in_background(steps.motion_inputs(source_path, phones_path, emotions_path, constraints_path,
                                                              audio, head_motion_path,
                                                              settings.synthesize.articulation_model))
-    read = core.read_utterance(ingest_settings, phones_path=phones_path, audio=audio, text=text, align=align_settings,
+    read = steps.read_utterance(ingest_settings, phones_path=phones_path, audio=audio, text=text, align=align_settings,
                                emotions_path=emotions_path)
-    constraints = core.constraints_for(member, source, constraints_path, read.utterance)
-    made = core.synthesize_utterance(member, source, read, settings, constraints, head=head,
+    constraints = steps.constraints_for(member, source, constraints_path, read.utterance)
+    made = steps.synthesize_utterance(member, source, read, settings, constraints, head=head,
                                      source_where=str(source_path), where=str(phones_path or audio))
     t0 = time.perf_counter()
     input_records = records()
     hash_wait_s = time.perf_counter() - t0
     t0 = time.perf_counter()
-    core.write_motion(made, out, input_records, overwrite=overwrite)
+    steps.write_motion(made, out, input_records, overwrite=overwrite)
     write_s = time.perf_counter() - t0
     summary = made.summary
     return SynthesizeResult(member.name, summary.phones, summary.frames, dict(summary.unseen),

@@ -46,7 +46,7 @@ from facesynth.base.limits import mem_available
 from facesynth.base.opencl import use_opencl
 from facesynth.domain import methods
 from facesynth.domain.evaluation.held_out import heldout
-from facesynth.domain.methods import MethodSettings, core
+from facesynth.domain.methods import MethodSettings, steps
 from facesynth.domain.search.pairs import PairTerms, TransitionCosts, boundary_states, node_features, pivot_distances
 from facesynth.domain.search.synthesis import render_path, synthesize
 from facesynth.model.artifacts import atomic_path, check_output
@@ -175,7 +175,7 @@ def tune(db_path: Path, corpus: Path, settings: TuneSettings, synth: SynthesizeS
     validation = heldout(corpus, db, "val", normalize_settings)
     test = heldout(corpus, db, "test", normalize_settings)
     longest = max(validation + test, key=lambda sentence: len(sentence.utterance)).utterance
-    core.check_memory(member, db, longest, MethodSettings.packaged(synthesize=synth), str(db_path))
+    steps.check_memory(member, db, longest, MethodSettings.packaged(synthesize=synth), str(db_path))
     objective = Objective(db, synth, use_opencl(synth.use_opencl))
     fits = [f for f in FIT_LENGTHS if f != build.boundary_fit_frames]
     windows = [w for w in WINDOWS if w != synth.smoothing_half_window]

@@ -14,9 +14,9 @@ from facesynth.base.phonemes import PAU
 from facesynth.cli import main
 from facesynth.domain import methods
 from facesynth.domain.evaluation.held_out import recommend
-from facesynth.domain.methods import MethodSettings, core
-from facesynth.domain.search.inputs import read_utterance
+from facesynth.domain.methods import MethodSettings, steps
 from facesynth.domain.search.synthesis import as_motion, synthesize
+from facesynth.domain.speech.utterance import read_utterance
 from facesynth.model import check
 from facesynth.model.coarticulation import CoarticulationModel
 from facesynth.model.motion import Motion
@@ -67,7 +67,7 @@ def test_the_registry_names_every_member_and_refuses_another_name():
 @pytest.mark.parametrize("name", ["dp", "greedy", "trajectory", "coarticulation", "mean"])
 def test_every_member_makes_a_motion_with_the_same_fields_and_provenance(name, sources, utt, settings, db):
     _, source = sources[name]
-    result = core.synthesize(methods.get(name), source, utt, settings)
+    result = steps.synthesize(methods.get(name), source, utt, settings)
     m = result.motion
     n_capture = round(float(utt.ends[-1]) * db.fps)
     assert abs(len(m.markers_capture) - n_capture) <= 1 and m.capture_fps == db.fps
@@ -90,7 +90,7 @@ def test_every_member_makes_a_motion_with_the_same_fields_and_provenance(name, s
 def test_a_motion_of_every_member_is_written_and_read_back(sources, utt, settings, tmp_path):
     for name, (_, source) in sources.items():
         out = tmp_path / f"{name}.h5"
-        core.synthesize(methods.get(name), source, utt, settings).motion.write(out, config="{}")
+        steps.synthesize(methods.get(name), source, utt, settings).motion.write(out, config="{}")
         search, provenance = Motion.read_search(out)
         assert search.search == name and provenance.step.max() == len(utt) - 1
         assert check.check_file(out).problems == [], name
@@ -99,7 +99,7 @@ def test_a_motion_of_every_member_is_written_and_read_back(sources, utt, setting
 def test_dp_through_the_family_is_bit_identical_to_the_search(sources, utt, settings, db):
     res = synthesize(db, utt, {}, settings.synthesize)
     old = as_motion(db, utt, res, settings.synthesize)
-    new = core.synthesize(methods.get("dp"), sources["dp"][1], utt, settings).motion
+    new = steps.synthesize(methods.get("dp"), sources["dp"][1], utt, settings).motion
     for field in ("markers", "markers_capture", "coefficients", "head_rotation", "head_translation"):
         assert np.array_equal(getattr(old, field), getattr(new, field)), field
     assert np.array_equal(old.path.node, new.path.node) and old.path.total_cost == new.path.total_cost
@@ -125,7 +125,7 @@ def test_the_coarticulation_model_is_fitted_written_read_back_and_checked(source
     with h5py.File(path) as f:
         assert f.attrs["facesynth_kind"] == "coarticulation" and "pca/basis" in f
     # synthesis from the file alone equals the database's PCA reconstruction of the fitted model's poses
-    motion = core.synthesize(methods.get("coarticulation"), CoarticulationModel.read(path), utt, settings).motion
+    motion = steps.synthesize(methods.get("coarticulation"), CoarticulationModel.read(path), utt, settings).motion
     n = len(motion.markers_capture)
     poses = DominanceModel(tuple(direct.phones), direct.targets, direct.magnitude, direct.rate).predict(
         emotion_labels(utt.phones, utt.emotions), utt.starts, utt.ends, n, db.fps)
@@ -145,7 +145,7 @@ def test_the_coarticulation_model_is_fitted_written_read_back_and_checked(source
 @pytest.mark.parametrize("name", ["greedy", "trajectory", "coarticulation", "mean"])
 def test_constraints_are_refused_off_the_dp_in_one_sentence(name, sources, utt, settings):
     with pytest.raises(UsageError) as err:
-        core.synthesize(methods.get(name), sources[name][1], utt, settings, {1: 0})
+        steps.synthesize(methods.get(name), sources[name][1], utt, settings, {1: 0})
     assert str(err.value) == (f"motion-node constraints need the DP search (Eq. 10); the {name} method takes none: "
                               "drop --constraints or use --method dp.")
 

@@ -36,7 +36,7 @@ def tiny_utterance_steps(db, s, textgrid, with_emotions: bool, with_constraints:
     ``with_emotions``, and with ``with_constraints`` up to three phones constrained to a node
     of their own phone. Returns (StepCosts, constraints {step: node})."""
     from facesynth.domain.search.costs import step_costs
-    from facesynth.domain.search.inputs import read_utterance
+    from facesynth.domain.speech.utterance import read_utterance
 
     utt = read_utterance(textgrid)
     if with_emotions:

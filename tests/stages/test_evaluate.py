@@ -9,7 +9,7 @@ from facesynth.base.errors import InputError
 from facesynth.cli import main
 from facesynth.domain.evaluation import held_out as evaluation
 from facesynth.domain.evaluation.bootstrap import paired_difference, resamples
-from facesynth.domain.search.inputs import Utterance
+from facesynth.domain.speech.utterance import Utterance
 from facesynth.stages import tune
 
 

@@ -13,7 +13,7 @@ from facesynth.domain.corpus.truth import read_truth
 from facesynth.domain.evaluation import baselines, bootstrap
 from facesynth.domain.evaluation import held_out as evaluation
 from facesynth.domain.rig.face import load_face_rig
-from facesynth.domain.search.inputs import Utterance
+from facesynth.domain.speech.utterance import Utterance
 from facesynth.model.motiondb import MotionDatabase
 
 

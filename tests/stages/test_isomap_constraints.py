@@ -15,7 +15,8 @@ from click.testing import CliRunner
 from facesynth.cli import main
 from facesynth.domain.exports.isomap_page import mid_time
 from facesynth.domain.search.constraint_choice import time_correct_offset
-from facesynth.domain.search.inputs import read_constraints, read_utterance
+from facesynth.domain.search.constraints import read_constraints
+from facesynth.domain.speech.utterance import read_utterance
 from facesynth.formats.labels import Segment, read_phone_segments, write_textgrid
 from facesynth.model.motion import Motion
 from facesynth.model.motiondb import MotionDatabase

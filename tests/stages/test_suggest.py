@@ -4,7 +4,7 @@ from click.testing import CliRunner
 
 from facesynth.base.errors import InputError
 from facesynth.cli import main
-from facesynth.domain.search.inputs import read_utterance
+from facesynth.domain.speech.utterance import read_utterance
 from facesynth.model.motiondb import MotionDatabase
 from facesynth.stages import suggest, synthesize
 

@@ -38,7 +38,7 @@ def test_motion_artifact_holds_both_rates_path_costs_and_provenance(tiny_db, tin
 def test_constraints_are_met_and_emotions_steer_the_search(tiny_db, tiny_corpus, held_out_take, config, tmp_path):
     tg = tiny_corpus / "labels" / f"{held_out_take}.TextGrid"
     db = MotionDatabase.read(tiny_db)
-    from facesynth.domain.search.inputs import read_utterance
+    from facesynth.domain.speech.utterance import read_utterance
 
     utt = read_utterance(tg)
     t = next(k for k, p in enumerate(utt.phones) if p != "pau" and p in db.nodes.phone)
@@ -69,7 +69,7 @@ def test_bad_constraints_are_named(tiny_db, tiny_corpus, held_out_take, config, 
 
 
 def test_constraint_with_a_node_of_another_phone(tiny_db, tiny_corpus, held_out_take, config, tmp_path):
-    from facesynth.domain.search.inputs import read_utterance
+    from facesynth.domain.speech.utterance import read_utterance
 
     db = MotionDatabase.read(tiny_db)
     utt = read_utterance(tiny_corpus / "labels" / f"{held_out_take}.TextGrid")

@@ -22,7 +22,7 @@ from facesynth.domain.methods.trajectory import (
     solve,
     synthesize_path,
 )
-from facesynth.domain.search.inputs import read_utterance
+from facesynth.domain.speech.utterance import read_utterance
 from facesynth.model.motion import Motion
 from facesynth.model.trajectory import TrajectoryModel
 from facesynth.stages import synthesize

@@ -17,7 +17,7 @@ timing and emotion, with no constraints, and compared at the capture rate with
 
 Methods, each given the same phone timing (and emotions): the members of the method family
 named by ``evaluate.methods`` (:mod:`facesynth.domain.methods`; ``dp`` always), each synthesized through
-the shared core (:func:`facesynth.domain.methods.core.synthesize`), scored under the row names of
+the shared core (:func:`facesynth.domain.methods.steps.synthesize`), scored under the row names of
 earlier reports (:func:`member_rows`), and two per-phone variants as ablations:
 
 * ``dp``: the paper's search; ``greedy``: Cao et al.'s greedy search on the same database and
@@ -88,15 +88,15 @@ from facesynth.base.errors import InputError
 from facesynth.base.phonemes import PAU
 from facesynth.base.progress import progress
 from facesynth.base.registry import METHODS
-from facesynth.domain.head_motion.rigid import choose_rigid, fill_gaps, head_pose
-from facesynth.domain.methods import Method, MethodSettings, NotEvaluable, core, names
+from facesynth.domain.geometry.rigid import choose_rigid, fill_gaps, head_pose
+from facesynth.domain.methods import Method, MethodSettings, NotEvaluable, names, steps
 from facesynth.domain.methods import get as get_method
 from facesynth.domain.methods.coarticulation import DominanceModel, fit_dominance, training_sentences
 from facesynth.domain.methods.mean import mean_pose_markers
 from facesynth.domain.postprocess.concatenation import frame_ranges
 from facesynth.domain.rig.face import load_face_rig
-from facesynth.domain.search.inputs import Utterance, utterance
 from facesynth.domain.speech.loudness import lip_gaps
+from facesynth.domain.speech.utterance import Utterance, utterance
 from facesynth.formats.mesh import read_binding, read_rigid_markers
 from facesynth.formats.mocap import read_c3d
 from facesynth.model.corpus import Corpus
@@ -619,7 +619,7 @@ def method_outputs(db: MotionDatabase, s: Sentence, members: dict[str, Member], 
     core; ``ablations``: the per-phone rows to add (``baseline``; ``dominance`` with its model)."""
     outputs, extra = {}, {}
     for name, m in members.items():
-        result = core.synthesize(m.method, m.source, s.utterance, method_settings, prepared=m.prepared,
+        result = steps.synthesize(m.method, m.source, s.utterance, method_settings, prepared=m.prepared,
                                  source_where=source_where, where=s.take)
         motion, row = result.motion, member_rows()[name]
         outputs[row] = motion.markers_capture

@@ -25,7 +25,7 @@ import numpy as np
 from facesynth.base.errors import InputError
 from facesynth.base.phonemes import PAU
 from facesynth.domain.search.constraint_choice import context_correct, context_name
-from facesynth.domain.search.inputs import Utterance
+from facesynth.domain.speech.utterance import Utterance
 from facesynth.model.artifacts import recorded_inputs, sha256_of
 from facesynth.model.isomap import Cluster, PhonemeMaps
 from facesynth.model.motion import SearchPath

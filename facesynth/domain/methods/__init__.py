@@ -1,6 +1,6 @@
 """Synthesis methods as one family: every way facesynth makes motion from an utterance.
 
-A method turns an utterance (:class:`~facesynth.domain.search.inputs.Utterance`: phones with times in
+A method turns an utterance (:class:`~facesynth.domain.speech.utterance.Utterance`: phones with times in
 seconds and an emotion per phone, and, for the DP alone, motion-node constraints) into a
 :class:`~facesynth.model.motion.Motion` with the same fields and provenance whatever the method:
 markers at the output rate and at the capture rate, the per-phone path (``path.search`` names the
@@ -27,7 +27,7 @@ Adding a member: a subclass of :class:`Method` in its own module, and one regist
 below (:data:`facesynth.base.registry.METHODS`); ``synthesize --method``, ``evaluate``, ``batch``,
 ``tune``, ``fit-method`` (a fitted member), ``--set`` and the docs' table then offer it. The
 shared steps around a method (reading the utterance, emotion names, the memory check) are
-:mod:`facesynth.domain.methods.core`.
+:mod:`facesynth.domain.methods.steps`.
 """
 
 from __future__ import annotations
@@ -81,7 +81,7 @@ class SynthesisSummary:
     unseen: what the source has nothing of (a phone, or '/aa/ in sad' for a (phone, emotion)
         pair) -> what covered it.
     warnings: sentences for the user (e.g. the voice could not move the mouth).
-    voice: what the utterance's voice did to the mouth (:mod:`.voice`): ``articulation``,
+    voice: what the utterance's voice did to the mouth (:mod:`facesynth.domain.voice.fusion`): ``articulation``,
         ``loudness``, or ``off`` (no audio, or the step was off or could not run).
     cost, joins, device: the searches' path cost (Eq. 4), joins between nodes not captured one
         after the other, and where the search ran; None for the other methods.

@@ -37,7 +37,7 @@ from facesynth.domain.postprocess.concatenation import frame_ranges
 from facesynth.model.coarticulation import CoarticulationModel
 
 from . import FitSummary, Method, MethodSettings, Synthesis, SynthesisSummary
-from .core import frame_motion
+from .steps import frame_motion
 
 #: Ridge on the targets, relative to the mean diagonal of the design's Gram matrix at the
 #: start: without it a type with a tiny magnitude gets a huge target that only fits the

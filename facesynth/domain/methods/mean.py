@@ -15,7 +15,7 @@ from facesynth.domain.postprocess.concatenation import frame_ranges
 from facesynth.domain.search.synthesis import unseen_phones
 
 from . import MethodSettings, Synthesis, SynthesisSummary
-from .core import DatabaseMethod, frame_motion
+from .steps import DatabaseMethod, frame_motion
 
 
 def mean_pose_coefficients(db, utt, by_emotion: bool = True) -> np.ndarray:

@@ -14,7 +14,7 @@ from facesynth.domain.search.pairs import transition_costs
 from facesynth.domain.search.synthesis import as_motion, synthesize, unseen_phones
 
 from . import MethodSettings, Synthesis, SynthesisSummary
-from .core import DatabaseMethod
+from .steps import DatabaseMethod
 
 
 def memory_estimate(nodes: int, phones: int, dp: str = "dense", feature_bytes: int = 0) -> float:

@@ -380,7 +380,7 @@ def train_model(db, keyshapes, settings, where: str = "the database"):
 def synthesize_motion(model, utt, settings, output_fps: float, where: str = "the utterance"):
     """The ``motion`` artifact's contents (source ``trajectory``) for an utterance.
 
-    model : a TrajectoryModel; utt : a :class:`~facesynth.domain.search.inputs.Utterance`; settings :
+    model : a TrajectoryModel; utt : a :class:`~facesynth.domain.speech.utterance.Utterance`; settings :
     TrajectorySettings. The path is solved on its grid, interpolated to the model's capture rate
     (``markers_capture``), back-projected and down-sampled to ``output_fps`` as the DP's output is.
     Fields of the search that do not apply are filled so that every reader of a synthesized motion

@@ -17,9 +17,8 @@ import numpy as np
 
 from facesynth.base.errors import InputError
 from facesynth.base.phonemes import PAU
+from facesynth.domain.speech.utterance import Utterance
 from facesynth.model.motiondb import Nodes
-
-from .inputs import Utterance
 
 
 def triphone(phones: list[str], c: int) -> tuple[str, str]:

@@ -21,9 +21,10 @@ from facesynth.base.errors import UsageError
 from facesynth.base.jit import worth
 from facesynth.base.opencl import device_record, use_opencl
 from facesynth.base.phonemes import PAU, viseme
-from facesynth.domain.head_motion.rotations import follow_sources
+from facesynth.domain.geometry.rotations import follow_sources
 from facesynth.domain.postprocess.cao import blend_jumps, learned_cutoffs, lowpass
 from facesynth.domain.postprocess.concatenation import Concatenated, concatenate, downsample
+from facesynth.domain.speech.utterance import Utterance
 from facesynth.model.motion import Motion, Provenance, SearchPath
 from facesynth.model.motiondb import MotionDatabase, Nodes
 
@@ -31,7 +32,6 @@ from .costs import StepCosts, path_terms, step_costs
 from .dp import DpResult, OpenCLDp, dp_numpy
 from .dp_numba import dp_numba
 from .greedy import Greedy, anime_graph, cluster_graph, motion_features
-from .inputs import Utterance
 from .pairs import transition_costs
 from .pruned import dp_pruned
 

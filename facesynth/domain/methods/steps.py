@@ -36,28 +36,29 @@ from facesynth.base.config import AlignSettings, IngestSettings, settings_json
 from facesynth.base.errors import InputError, UsageError
 from facesynth.base.limits import require_memory
 from facesynth.domain.postprocess.concatenation import downsample, frame_ranges
-from facesynth.domain.search.inputs import (
+from facesynth.domain.search.constraints import read_constraints
+from facesynth.domain.speech.alignment import Alignment
+from facesynth.domain.speech.recognition import align_or_recognize
+from facesynth.domain.speech.utterance import (
     Utterance,
     apply_emotions,
     emotion_name,
     given_spans,
-    read_constraints,
     set_emotions,
     utterance,
 )
-from facesynth.domain.search.inputs import read_utterance as read_phone_file
-from facesynth.domain.speech.alignment import Alignment
-from facesynth.domain.speech.recognition import align_or_recognize
+from facesynth.domain.speech.utterance import read_utterance as read_phone_file
+from facesynth.domain.voice import fusion
 from facesynth.formats.audio import read_audio
 from facesynth.model.head_motion import HeadMotion
 from facesynth.model.motion import Motion, Provenance, SearchPath
 from facesynth.model.motiondb import MotionDatabase
 
-from . import Method, MethodSettings, Synthesis, SynthesisSummary, voice
+from . import Method, MethodSettings, Synthesis, SynthesisSummary
 
 log = logging.getLogger(__name__)
 
-#: The ``[synthesize]`` settings of the voice step (:mod:`.voice`), recorded by a motion made with
+#: The ``[synthesize]`` settings of the voice step (:mod:`facesynth.domain.voice.fusion`), recorded by a motion made with
 #: the audio by a method whose own section is another.
 VOICE_SETTINGS = ("loudness_weight", "loudness_smoothing_s", "loudness_lip_markers", "pinned_phones",
                   "voice_recognized", "voice_given", "articulation_model", "voice_weight", "voice_opening_map",
@@ -174,7 +175,7 @@ def synthesize(method: Method, source, utt: Utterance, settings: MethodSettings,
     """``method``'s motion of ``utt`` from ``source``, after the memory check (its message names
     ``source_where``; the method's own messages name the utterance, ``where``). With the
     utterance's ``audio`` ((n,) mono samples, rate Hz), the mouth then takes what the voice says
-    (:mod:`facesynth.domain.methods.voice`: its articulation or its loudness, by whether the
+    (:mod:`facesynth.domain.voice.fusion`: its articulation or its loudness, by whether the
     phones were ``recognized`` from that audio); a motion without the lip markers is left as it
     is, and the summary's ``warnings`` say so."""
     method.refuse_constraints(constraints)
@@ -182,7 +183,7 @@ def synthesize(method: Method, source, utt: Utterance, settings: MethodSettings,
     result = method.synthesize(source, utt, settings, constraints, prepared=prepared, where=where)
     if audio is not None:
         t0 = time.perf_counter()
-        result.motion, done, warning = voice.apply(result.motion, *audio, utt.starts, utt.ends, list(utt.phones),
+        result.motion, done, warning = fusion.apply(result.motion, *audio, utt.starts, utt.ends, list(utt.phones),
                                                    settings.synthesize, recognized=recognized)
         phases = {**result.summary.phases, "voice_s": time.perf_counter() - t0}
         result.summary = dataclasses.replace(result.summary, voice=done.path, phases=phases)

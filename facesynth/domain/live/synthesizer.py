@@ -58,7 +58,6 @@ from facesynth.base.config import SolveSettings, StreamSettings, SynthesizeSetti
 from facesynth.base.errors import InputError
 from facesynth.base.phonemes import PAU
 from facesynth.domain.methods import trajectory as trajectory_method
-from facesynth.domain.methods.voice import articulation_model
 from facesynth.domain.postprocess.concatenation import downsample_sources
 from facesynth.domain.retarget.solve import FacePriors, solve_curves
 from facesynth.domain.rig.face import load_face_rig
@@ -66,9 +65,10 @@ from facesynth.domain.rig.loading import builtin_rig, marker_map
 from facesynth.domain.search.costs import step_costs
 from facesynth.domain.search.dp import dp_numpy
 from facesynth.domain.search.greedy import Greedy, anime_graph, cluster_graph, motion_features
-from facesynth.domain.search.inputs import Utterance
 from facesynth.domain.search.pairs import transition_costs
 from facesynth.domain.search.synthesis import render_path
+from facesynth.domain.speech.utterance import Utterance
+from facesynth.domain.voice.fusion import articulation_model
 from facesynth.model.motiondb import MotionDatabase
 from facesynth.model.trajectory import TrajectoryModel
 
@@ -157,7 +157,7 @@ class LiveModel:
                                      "the trajectory model" if self.db is None else "the motion database")
         self.basis = rig.deltas[:, self.marker_map.vertices]
         #: the articulation model frames come from when the phones would be recognised
-        #: (``stream.voice = "articulation"``, :mod:`facesynth.domain.live.voice`), else None
+        #: (``stream.voice = "articulation"``, :mod:`facesynth.domain.live.voice_frames`), else None
         self.voice_model = articulation_model(synth.articulation_model) if stream.voice == "articulation" else None
         if self.voice_model is not None and "jawOpen" not in self.voice_model.target_names:
             raise InputError(f"synthesize.articulation_model {synth.articulation_model or '(packaged)'} predicts no "
