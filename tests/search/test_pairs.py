@@ -6,7 +6,8 @@ import pytest
 from features import random_features
 
 from facesynth.base.config import Config
-from facesynth.domain.search.pairs import PairFeatures, TransitionCosts
+from facesynth.domain.search.pairs import TransitionCosts
+from facesynth.model.motiondb import TransitionFeatures
 
 
 @pytest.fixture(scope="module")
@@ -21,8 +22,8 @@ def test_table_i_by_hand(s):
     last_pos[2] = [3, 4, 0, 0, 0, 1]      # |(0,0,0)-(3,4,0)| + |(0,0,0)-(0,0,1)| = 5 + 1
     x = np.array([[1.0], [0.0], [2.0]], np.float32)
     y = np.array([[0.0], [0.0], [1.0]], np.float32)
-    f = PairFeatures(first_pos, last_pos, z.copy(), z.copy(), x, y, np.array([0, 0, 2], np.float32),
-                     np.array([1, 1, 2]), np.array([-1, 0, 1]))
+    f = TransitionFeatures(first_pos, last_pos, z.copy(), z.copy(), x, y, np.array([0, 0, 2], np.float32),
+                           np.array([1, 1, 2]), np.array([-1, 0, 1]))
     tc = TransitionCosts(f, s).dense()
     assert tc[0, 1] == 0.0 and tc[1, 2] == 0.0                       # rule 1
     assert tc[:, 0].tolist() == [20.0, 20.0, 20.0 + 3 * 6]           # rule 4: alpha1 PNT + alpha3 PGap + VGap
@@ -69,8 +70,8 @@ def test_pair_tables_give_the_on_demand_costs_bit_for_bit(s):
     reference = TransitionCosts(f, s).dense()
     assert np.array_equal(dense.dense().view(np.uint32), reference.view(np.uint32))
     # other velocities: DSC and PGap shared, VGap recomputed, still bit-identical
-    g = PairFeatures(f.first_pos, f.last_pos, f.first_vel * 2, f.last_vel[::-1].copy(), f.dsc_out, f.dsc_in, f.dsc_scale,
-                     f.viseme, f.pre)
+    g = TransitionFeatures(f.first_pos, f.last_pos, f.first_vel * 2, f.last_vel[::-1].copy(), f.dsc_out, f.dsc_in, f.dsc_scale,
+                           f.viseme, f.pre)
     again = PairTerms(g, like=terms)
     assert again.dsc is terms.dsc and again.pgap is terms.pgap
     assert np.array_equal(again.costs(s).dense().view(np.uint32), TransitionCosts(g, s).dense().view(np.uint32))
