@@ -34,7 +34,7 @@ OUTPUTS = ("motion", "curves", "arkit-csv", "gltf", "usd", "avi", "anim")
 def measure(corpus: Path, db: Path, take: str, work: Path, repeats: int) -> dict:
     from facesynth.domain.batch.line import run_line
     from facesynth.domain.batch.script import read_script
-    from facesynth.domain.exports import usd
+    from facesynth.formats import usd
     from facesynth.stages import batch
 
     row = next(r for r in csv.DictReader(open(corpus / "manifest.csv", encoding="utf-8")) if r["take"] == take)

@@ -292,7 +292,7 @@ def test_a_line_without_usd_core_fails_alone_in_one_sentence(tiny_corpus, tiny_d
                                                               monkeypatch):
     from facesynth.domain.batch.line import run_line
     from facesynth.domain.batch.script import read_script
-    from facesynth.domain.exports import usd
+    from facesynth.formats import usd
 
     row = takes["neutral_s001"]
     script = _write(tmp_path / "s.csv", [("id", "audio", "alignment"),

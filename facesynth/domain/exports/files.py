@@ -13,11 +13,10 @@ import numpy as np
 
 from facesynth.base.config import ExportSettings
 from facesynth.base.errors import InputError
-from facesynth.formats import gltf
+from facesynth.formats import gltf, usd
 from facesynth.formats import livelink_face as livelink
 from facesynth.formats.mocap import MarkerTake, write_c3d
 
-from . import usd
 from .animation import Exportable
 from .format import ExportFormat, ExportOptions
 

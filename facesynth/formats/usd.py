@@ -1,5 +1,6 @@
 """USD (``.usda`` text, ``.usd`` binary crate) through Pixar's usd-core: for film pipelines
-(Houdini, Maya, Omniverse, Blender's USD import).
+(Houdini, Maya, Omniverse, Blender's USD import); the stage writing of the export format
+:mod:`facesynth.domain.exports.usd`.
 
 Layout: ``/Face`` (an Xform; with ``--head-motion`` its ``xformOp:transform`` is time-sampled
 with the head pose) holding ``/Face/Mesh``, a UsdGeom mesh. A mesh animation becomes
