@@ -32,11 +32,10 @@ from pathlib import Path
 import numpy as np
 
 from facesynth.base.config import Config
-from facesynth.domain.expression import bilinear
+from facesynth.domain.expression import bilinear, training
 from facesynth.model.corpus import Corpus
 from facesynth.model.frames import NormalizedFrames, relative_to_take
 from facesynth.model.motiondb import MotionDatabase
-from facesynth.stages import expression as expr_stage
 from facesynth.stages import head_motion as head_stage
 
 HELD_OUT = ("val", "test")
@@ -73,8 +72,8 @@ def restyle_eval(norm: NormalizedFrames, config: Config, rng: np.random.Generato
     from sklearn.linear_model import LogisticRegression
 
     settings = config.settings("expression")
-    X, emotions, _, _ = expr_stage.aligned_data(norm, settings.splits, settings.frame_step)
-    model = expr_stage.fit_model(X, emotions, settings)
+    X, emotions, _, _ = training.aligned_data(norm, settings.splits, settings.frame_step)
+    model = training.fit_model(X, emotions, settings)
     # the classifier: captured training frames (every 4th, 30 Hz), in the model's PCA coefficients
     takes, fr = norm.takes, norm.frames
     feats, labels = [], []
@@ -86,7 +85,7 @@ def restyle_eval(norm: NormalizedFrames, config: Config, rng: np.random.Generato
             labels += [takes.emotion[i]] * len(m)
     clf = LogisticRegression(max_iter=2000).fit(np.concatenate(feats), labels)
     step = max(1, int(round(fr.fps / 30)))
-    blocks, emos, used, _ = expr_stage.aligned_blocks(norm, HELD_OUT, step)
+    blocks, emos, used, _ = training.aligned_blocks(norm, HELD_OUT, step)
     assert emos == emotions, (emos, emotions)
     neutral = emotions.index("neutral")
     rows = {"baseline_neutral": []} | {f"restyled_{a:g}": [] for a in INTENSITIES}
