@@ -9,12 +9,14 @@ import numpy as np
 import pytest
 from click.testing import CliRunner
 
+from facesynth.base.config import choices
 from facesynth.base.errors import ArtifactError, UsageError
 from facesynth.base.phonemes import PAU
+from facesynth.base.registry import METHODS
 from facesynth.cli import main
 from facesynth.domain import methods
 from facesynth.domain.evaluation.held_out import recommend
-from facesynth.domain.methods import MethodSettings, steps
+from facesynth.domain.methods import Method, MethodSettings, steps
 from facesynth.domain.search.synthesis import as_motion, synthesize
 from facesynth.domain.speech.utterance import read_utterance
 from facesynth.model import check
@@ -241,3 +243,49 @@ def test_paired_intervals_decide_where_the_sentences_share_their_difficulty():
     paired["trajectory"] = _f(0.24, -0.02, 0.35)  # one paired interval holds 0: tied with it, and it is simpler
     tied = recommend(figures, difference=difference)
     assert tied.method == "coarticulation" and "does not tell it from trajectory +0.240 mm [-0.020, +0.350]" in tied.sentence
+
+
+def test_every_member_declares_its_live_form_or_why_not(settings):
+    """A member streams exactly when it has a live form (Method.live) and is registered with
+    streams=True; the others say why not; stream.method offers the first."""
+    for entry in METHODS.entries():
+        member = methods.get(entry.name)
+        live = type(member).live is not Method.live
+        assert live == bool(entry.facts.get("streams")), entry.name
+        if not live:
+            assert member.not_live != Method.not_live, f"{entry.name} gives no reason it does not stream"
+            with pytest.raises(UsageError, match=f"the {entry.name} method does not stream: .*; use one of dp"):
+                member.live(None, settings)
+    assert choices("stream", "method") == methods.live_names() == ("dp", "greedy", "trajectory")
+
+
+def test_every_member_declares_its_settings_section(config):
+    sections = {e.name: e.facts.get("settings") for e in METHODS.entries()}
+    assert sections == {"dp": "synthesize", "greedy": "synthesize", "trajectory": "trajectory",
+                        "coarticulation": "coarticulation", "mean": "synthesize"}
+    every = MethodSettings.of(config)
+    assert set(every.sections()) == {"synthesize", "trajectory", "coarticulation"}
+    assert every.trajectory == config.settings("trajectory") and every.section("coarticulation").iterations > 0
+    assert methods.get("coarticulation").fit_settings(every) == every.coarticulation
+    with pytest.raises(AttributeError, match=r"no \[nope\] section"):
+        every.nope  # noqa: B018
+
+
+def test_the_deprecated_search_names_warn_and_still_choose(tiny_db, tiny_corpus, held_out_take, tmp_path):
+    tg = str(tiny_corpus / "labels" / f"{held_out_take}.TextGrid")
+
+    def run(*extra):
+        out = tmp_path / f"m{len(list(tmp_path.iterdir()))}.h5"
+        r = CliRunner().invoke(main, ["synthesize", str(tiny_db), "--phonemes", tg, "-o", str(out), *extra])
+        assert r.exit_code == 0, r.output
+        return r.output, Motion.read_search(out)[0].search
+
+    output, search = run("--search", "greedy")
+    assert search == "greedy" and "warning: `--search` is deprecated" in output and "`--method greedy`" in output
+    output, search = run("--set", "synthesize.search=greedy")
+    assert search == "greedy" and "warning: synthesize.search is deprecated" in output
+    assert 'synthesize.method = "greedy"' in output
+    output, search = run("--set", "synthesize.method=greedy")
+    assert search == "greedy" and "is deprecated" not in output
+    output, search = run()
+    assert search == "dp" and "is deprecated" not in output
