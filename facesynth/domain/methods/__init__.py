@@ -24,10 +24,15 @@ name                      source        what it does
 ========================  ============  ============================================================
 
 Adding a member: a subclass of :class:`Method` in its own module, and one registration line
-below (:data:`facesynth.base.registry.METHODS`); ``synthesize --method``, ``evaluate``, ``batch``,
-``tune``, ``fit-method`` (a fitted member), ``--set`` and the docs' table then offer it. The
-shared steps around a method (reading the utterance, emotion names, the memory check) are
-:mod:`facesynth.domain.methods.steps`.
+below (:data:`facesynth.base.registry.METHODS`), which with the class declares everything the
+commands need of it: its settings section (fact ``settings``), its source or fitted artifact
+(``fitted``, ``source_kind``), its evaluation (:meth:`Method.evaluation_source`,
+:meth:`Method.ablations`; its report row is its name) and its live behaviour (:meth:`Method.live`
+with ``streams=True``, or :attr:`Method.not_live`). ``synthesize --method``, ``evaluate``,
+``batch``, ``tune``, ``stream``, ``fit-method`` (a fitted member), ``--set`` and the docs' tables
+then offer it. The shared steps around a method (reading the utterance, emotion names, the
+memory check) are :mod:`facesynth.domain.methods.steps`; the live forms' interface is
+:mod:`facesynth.domain.methods.live`.
 """
 
 from __future__ import annotations
