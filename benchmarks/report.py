@@ -206,7 +206,7 @@ def method_figures(raws: list[dict]) -> list[dict]:
 
 def method_tables(methods: list[dict]) -> list[str]:
     """Markdown lines: for each seed, methods x figures with intervals and the paired differences."""
-    from facesynth.stages.evaluate import figure_rows
+    from facesynth.domain.evaluation.report import figure_rows
 
     lines = []
     for entry in methods:
