@@ -28,7 +28,7 @@ import os
 from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, replace
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeAlias
 
 import numpy as np
 
@@ -85,7 +85,7 @@ __all__ = [
 #: A file name: a string or a path.
 StrPath = str | os.PathLike
 #: A fitted model of a member of the method family (``facesynth fit-method``).
-FittedModel = TrajectoryModel | CoarticulationModel
+FittedModel: TypeAlias = TrajectoryModel | CoarticulationModel
 
 
 def load_config(path: StrPath | None = None, overrides: Sequence[str] = ()) -> Config:
