@@ -505,7 +505,7 @@ def build_db(ctx: Context, pca_path: Path, output: Path):
 @main.command()
 @click.argument("db", metavar="DB|MODEL", type=EXISTING)
 @click.option("--method", type=RegistryChoice(METHODS), default=None,
-              help="The synthesis method (default: dp, or --search): dp and greedy search the motion database (DB), "
+              help="The synthesis method (default: synthesize.method, dp): dp and greedy search the motion database (DB), "
                    "mean takes its per-(phone, emotion) mean poses; trajectory and coarticulation read a MODEL "
                    "fitted on it (facesynth fit-method).")
 @click.option("--phonemes", type=EXISTING, default=None, help="The utterance's phone timing (TextGrid or .lab).")
@@ -518,7 +518,8 @@ def build_db(ctx: Context, pca_path: Path, output: Path):
 @click.option("--language", default=None, help=LANGUAGE_HELP)
 @click.option("--emotions", type=EXISTING, default=None, help="Emotion spans: 'start_s end_s emotion' lines, or a TextGrid tier 'emotions'.")
 @click.option("--constraints", type=EXISTING, default=None, help="Motion-node constraints: 'INDEX NODE' or 'TIMEs NODE' lines (dp only).")
-@click.option("--search", type=click.Choice(choices("synthesize", "search")), default=None, help="Search (default: synthesize.search).")
+@click.option("--search", type=click.Choice(choices("synthesize", "search")), default=None, hidden=True,
+              help="Deprecated: --method.")
 @click.option("--head-motion", "head_motion_path", type=EXISTING, default=None,
               help="Head motion from `facesynth head-motion` to put on the output instead of the source takes'.")
 @click.option("-o", "--output", type=PATH, required=True, help="Output motion.h5.")
@@ -527,8 +528,8 @@ def synthesize(ctx: Context, db: Path, method, phonemes, audio, text, language, 
                head_motion_path, output: Path):
     """Synthesize expressive marker motion for a new utterance (paper VI, Algorithm 1).
 
-    --method picks the member of the method family: dp (the default; --search greedy or
-    synthesize.search = greedy runs the greedy search instead), greedy, mean, and the fitted
+    --method (or synthesize.method) picks the member of the method family: dp (the default),
+    greedy, mean, and the fitted
     trajectory (Huang et al. Eq. 6-7) and coarticulation (Cohen-Massaro) models, whose model file
     (facesynth fit-method) is then the first argument. With --audio the voice shapes the mouth
     too: recognised without --text or --phonemes, its articulation (the acoustic articulation
@@ -541,15 +542,13 @@ def synthesize(ctx: Context, db: Path, method, phonemes, audio, text, language, 
       facesynth synthesize db.h5 --phonemes corpus/labels/neutral_s016.TextGrid \\
           --emotions spans.txt -o motion.h5
     """
-    import dataclasses
-
     from facesynth.domain.methods import MethodSettings, steps
     from facesynth.stages import synthesize as stage
 
     settings = MethodSettings.of(ctx.config)
-    name = steps.chosen_method(method, search, settings.synthesize.search)
-    if search:
-        settings = dataclasses.replace(settings, synthesize=dataclasses.replace(settings.synthesize, search=search))
+    name, warnings = steps.deprecated_search(method, search, settings.synthesize, ctx.config.given("synthesize.search"))
+    for warning in warnings:
+        ctx.say(f"warning: {warning}")
     s = stage.run(db, output, settings, ctx.config.settings("ingest"),
                   _with_language(ctx.config.settings("align"), language), method=name,
                   phones_path=phonemes, emotions_path=emotions, constraints_path=constraints, audio=audio, text=text,
@@ -1076,7 +1075,7 @@ def player(ctx: Context, artifact: Path | None, audio: Path | None, motion: Path
 @click.option("--db", "db_path", type=EXISTING, required=True,
               help="The motion database (db.h5), or for --method trajectory / coarticulation its fitted model.")
 @click.option("--method", type=RegistryChoice(METHODS), default=None,
-              help="The synthesis method of every line (default: dp, following synthesize.search), as for synthesize.")
+              help="The synthesis method of every line (default: synthesize.method, dp), as for synthesize.")
 @click.option("-o", "--output", type=PATH, required=True, help="Output folder (per-line files and the summary).")
 @click.option("--outputs", default=None, metavar="KINDS",
               help="Comma-separated: motion, curves, avi, anim and the export formats (arkit-csv, gltf, usd, ...; default: batch.outputs).")
@@ -1136,9 +1135,13 @@ def batch(ctx: Context, script: Path, db_path: Path, method: str | None, output:
     from facesynth.domain.methods import MethodSettings, steps
 
     method_settings = MethodSettings.of(ctx.config)
+    chosen, warnings = steps.deprecated_search(method, None, method_settings.synthesize,
+                                               ctx.config.given("synthesize.search"))
+    for warning in warnings:
+        ctx.say(f"warning: {warning}")
     s = stage.run(script, db_path, output, settings, method_settings, ctx.config.settings("ingest"),
                   ctx.config.settings("align"), ctx.config.settings("deform"), ctx.config.settings("render"),
-                  method=steps.chosen_method(method, None, method_settings.synthesize.search), mesh=mesh, binding=binding,
+                  method=chosen, mesh=mesh, binding=binding,
                   scheduler=scheduler, overwrite=ctx.overwrite, on_result=on_result, solve=ctx.config.settings("solve"),
                   export=ctx.config.settings("export"), rig=rig, rig_binding=rig_binding)
     skipped = f", {s.skipped} up to date" if s.skipped else ""
@@ -1155,11 +1158,14 @@ def batch(ctx: Context, script: Path, db_path: Path, method: str | None, output:
 @click.option("--heldout", type=EXISTING, required=True, help="The corpus.h5 holding the held-out takes.")
 @click.option("--truth", type=PATH, default=None,
               help="The corpus folder with clean ground truth (groundtruth/, markers.csv): adds errors against it and openfacefx.")
-@click.option("--trajectory", type=EXISTING, default=None,
-              help="A trajectory model trained on DB (facesynth fit-method trajectory): adds the trajectory method.")
+@click.option("--model", "models", type=EXISTING, multiple=True,
+              help="A model fitted on DB (facesynth fit-method), scored by its method (trajectory needs one; "
+                   "coarticulation is fitted here without); repeat for several.")
+@click.option("--trajectory", type=EXISTING, default=None, hidden=True, help="Deprecated: --model.")
 @click.option("-o", "--output", type=PATH, required=True, help="Report folder (metrics.json, table.md, index.html, plots).")
 @stage
-def evaluate(ctx: Context, db: Path, heldout: Path, truth: Path | None, trajectory: Path | None, output: Path):
+def evaluate(ctx: Context, db: Path, heldout: Path, truth: Path | None, models: tuple[Path, ...],
+             trajectory: Path | None, output: Path):
     """Synthesize every held-out sentence and compare it with its capture and baselines.
 
     The measures: Eq. 12-13 of the paper against the capture and (with --truth) the clean
@@ -1170,15 +1176,19 @@ def evaluate(ctx: Context, db: Path, heldout: Path, truth: Path | None, trajecto
     Example:
       facesynth evaluate db.h5 --heldout corpus.h5 --truth corpus/ -o report/
     """
+    from facesynth.domain.methods import MethodSettings
     from facesynth.stages import evaluate as stage
 
-    s = stage.run(db, heldout, output, ctx.config.settings("evaluate"), ctx.config.settings("synthesize"),
-                  ctx.config.settings("normalize"), ctx.overwrite, truth=truth, trajectory=trajectory,
-                  trajectory_settings=ctx.config.settings("trajectory"))
+    if trajectory is not None:
+        ctx.say("warning: `--trajectory` is deprecated and will go in a later release; give the model with "
+                "`--model` (it is scored by the method whose model it is).")
+        models = models + (trajectory,)
+    s = stage.run(db, heldout, output, ctx.config.settings("evaluate"), MethodSettings.of(ctx.config),
+                  ctx.config.settings("normalize"), ctx.overwrite, truth=truth, models=models)
     for method, m in s.methods.items():
         f = m.get("figures", {})
         clean = f" (clean truth {f['rms_clean_mm']['value']:.3f} mm)" if f.get("rms_clean_mm", {}).get("value") is not None else ""
-        ctx.say(f"{stage.row_label(method)}: RMS {m['rms_mm']:.3f} mm{clean}, velocity RMS {m['velocity_rms_mm_s']:.1f} mm/s")
+        ctx.say(f"{method}: RMS {m['rms_mm']:.3f} mm{clean}, velocity RMS {m['velocity_rms_mm_s']:.1f} mm/s")
     ctx.say(f"report -> {output}/index.html, table -> {output}/table.md")
     if s.recommendation:
         ctx.say(s.recommendation)
@@ -1211,7 +1221,7 @@ def capture(ctx: Context, corpus: Path, db_path: Path, take: str, output: Path):
 @click.argument("db", type=EXISTING)
 @click.option("--validation", type=EXISTING, required=True, help="The corpus.h5 with val (tuning) and test (report) takes.")
 @click.option("--method", type=RegistryChoice(METHODS), default=None,
-              help="The method whose weights to tune (default: synthesize.search); only dp and greedy have any.")
+              help="The method whose weights to tune (default: synthesize.method); only dp and greedy have any.")
 @click.option("-o", "--output", type=PATH, required=True, help="Output TOML with the tuned [synthesize] weights.")
 @stage
 def tune(ctx: Context, db: Path, validation: Path, method: str | None, output: Path):
@@ -1510,7 +1520,8 @@ def head_motion(ctx: Context, db: Path, audio: Path, corpus_path: Path, output: 
                    "PCM.")
 @click.option("--serve", default=None, metavar="HOST:PORT", help="Serve WebSocket clients instead (e.g. 127.0.0.1:8765).")
 @click.option("--livelink", default=None, metavar="HOST:PORT", help="Also send Live Link Face UDP packets (port 11111).")
-@click.option("--method", type=click.Choice(choices("stream", "method")), default=None, help="Decisions (default: stream.method).")
+@click.option("--method", type=RegistryChoice(METHODS, lambda e: bool(e.facts.get("streams"))), default=None,
+              help="The member streamed, one with a live form (default: stream.method).")
 @click.option("--lookahead", type=int, default=None, help="Phones of look-ahead (default: stream.lookahead_phones).")
 @click.option("--markers", is_flag=True, help="Add the markers (mm) to every frame.")
 @click.option("--realtime", is_flag=True, help="Read --audio at its own speed, as if it arrived live.")
@@ -1531,11 +1542,11 @@ def stream(ctx: Context, db_path: Path, audio: str, serve: str | None, livelink:
     Example:
       facesynth stream db.h5 --audio corpus/audio/neutral_s016.wav > frames.jsonl
     """
+    from facesynth.domain.methods import MethodSettings
     from facesynth.stages import stream as stage
 
     c = ctx.config
-    model = stage.load_model(db_path, c.settings("synthesize"), c.settings("stream"), c.settings("solve"), method, lookahead,
-                             c.settings("trajectory"))
+    model = stage.load_model(db_path, MethodSettings.of(c), c.settings("stream"), c.settings("solve"), method, lookahead)
     if serve is not None:
         stage.serve(model, c.settings("align"), serve, livelink=livelink, ready=ctx.say, workers=workers)
         ctx.say("stopped.")

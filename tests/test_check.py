@@ -76,7 +76,7 @@ def written(tiny_corpus, tiny_artifacts, tiny_db, held_out_take, config, tmp_pat
                    method="trajectory", phones_path=tg)
     out["coarticulation"], out["coarticulation_motion"], out["mean_motion"] = d / "coart.h5", d / "coart_motion.h5", d / "mean.h5"
     fit_method.run("coarticulation", tiny_db, out["coarticulation"],
-                   dataclasses.replace(every, coarticulation=dataclasses.replace(every.coarticulation, iterations=5)))
+                   every.replace(coarticulation=dataclasses.replace(every.coarticulation, iterations=5)))
     for name, source in (("coarticulation", out["coarticulation"]), ("mean", tiny_db)):
         synthesize.run(source, out[f"{name}_motion"], every, config.settings("ingest"), config.settings("align"),
                        method=name, phones_path=tg)

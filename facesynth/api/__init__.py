@@ -28,7 +28,7 @@ import os
 from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, replace
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeAlias
 
 import numpy as np
 
@@ -85,7 +85,7 @@ __all__ = [
 #: A file name: a string or a path.
 StrPath = str | os.PathLike
 #: A fitted model of a member of the method family (``facesynth fit-method``).
-FittedModel = TrajectoryModel | CoarticulationModel
+FittedModel: TypeAlias = TrajectoryModel | CoarticulationModel
 
 
 def load_config(path: StrPath | None = None, overrides: Sequence[str] = ()) -> Config:
@@ -251,7 +251,7 @@ def synthesize(source: StrPath | MotionDatabase | FittedModel, utterance: Uttera
 
     source: the motion database (or its file) for ``dp``, ``greedy`` and ``mean``; a fitted model
         (or its file) for ``trajectory`` and ``coarticulation``.
-    method: a member of the family (:func:`methods`); default: ``synthesize.search`` (``dp``) for
+    method: a member of the family (:func:`methods`); default: ``synthesize.method`` (``dp``) for
         a database, the model's own member for a fitted model.
     constraints: motion nodes the DP must use: a file (``INDEX NODE`` or ``TIMEs NODE`` lines) or
         {phone index: node id} (``dp`` only).
@@ -410,12 +410,12 @@ def _fitted_member(path: Path) -> Method:
 
 def _default_method(source: object, path: Path | None, settings: MethodSettings) -> str:
     """The member that reads ``source`` when none is named: the fitted member of a model,
-    ``synthesize.search`` otherwise."""
+    ``synthesize.method`` otherwise."""
     kind = artifact_kind(path) if path is not None else getattr(source, "KIND", None)
     for entry in METHODS.entries():
         if entry.facts.get("fitted") and entry.facts.get("source_kind") == kind:
             return entry.name
-    return settings.synthesize.search
+    return steps.chosen_method(None, settings.synthesize)
 
 
 def _check_source(member: Method, source: object) -> None:

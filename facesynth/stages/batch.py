@@ -3,7 +3,7 @@ rig curves, ARKit CSV, glTF with the audio, USD, a video; or a plain mesh's anim
 with a summary of every line (see :mod:`facesynth.domain.batch`).
 
 Every line is synthesized by one member of the method family (``method``: default
-``synthesize.search``, i.e. the DP) through the same shared core as ``facesynth synthesize``
+``synthesize.method``, i.e. the DP) through the same shared core as ``facesynth synthesize``
 (:mod:`facesynth.domain.methods.steps`), under the command's ``[limits]``, which the job carries to the
 workers. The script is checked first: a file without the required columns is refused before any work
 (and before a cluster is started). Each line then runs as one task; the summary
@@ -39,7 +39,7 @@ from facesynth.domain.batch.line import Job, LineResult, output_names, rig_outpu
 from facesynth.domain.batch.report import write_summary
 from facesynth.domain.batch.runner import dask_client, run_lines
 from facesynth.domain.batch.script import read_script
-from facesynth.domain.methods import MethodSettings
+from facesynth.domain.methods import MethodSettings, steps
 from facesynth.domain.rig.loading import BUILTIN, arkit_to_rig, load_rig
 from facesynth.model.artifacts import check_output_folder, open_artifact, sha256_of
 
@@ -60,7 +60,7 @@ def prepare(script: Path, db: Path, out_dir: Path, settings: BatchSettings, synt
     (:func:`facesynth.base.limits.current`)."""
     if isinstance(synthesize, SynthesizeSettings):
         synthesize = MethodSettings.packaged(synthesize=synthesize)
-    member = methods.get(method or synthesize.synthesize.search)
+    member = methods.get(steps.chosen_method(method, synthesize.synthesize))
     outputs, renamed = output_names(settings.outputs)
     for warning in renamed:
         log.warning("warning: %s", warning)

@@ -23,6 +23,7 @@ from facesynth.domain.live.livelink import LiveLinkSender
 from facesynth.domain.live.phones import SAMPLE_RATE
 from facesynth.domain.live.server import StreamServer, run_pipe
 from facesynth.domain.live.synthesizer import LiveModel
+from facesynth.domain.methods import MethodSettings
 from facesynth.formats.audio import pcm16, read_audio, resample
 from facesynth.model.artifacts import artifact_kind
 
@@ -39,22 +40,27 @@ def parse_address(text: str, what: str) -> tuple[str, int]:
     return host.strip("[]"), int(port)
 
 
-def load_model(source_path: Path, synth: SynthesizeSettings, stream: StreamSettings, solve: SolveSettings,
+def load_model(source_path: Path, synth: SynthesizeSettings | MethodSettings, stream: StreamSettings, solve: SolveSettings,
                method: str | None = None, lookahead: int | None = None,
                trajectory: TrajectorySettings | None = None) -> LiveModel:
-    """The shared live model of ``source_path``: the motion database, or for the ``trajectory``
-    method its trained model (``method``/``lookahead`` override ``stream``'s)."""
+    """The shared live model of ``source_path``: the motion database, or the streamed member's
+    fitted model (``method``/``lookahead`` override ``stream``'s; ``synth``: the
+    :class:`~facesynth.domain.methods.MethodSettings`, or ``[synthesize]`` with ``trajectory``)."""
     if method is not None:
         stream = replace(stream, method=method)
     if lookahead is not None:
         if lookahead < 0:
             raise InputError(f"--lookahead {lookahead}: give 0 or more phones.")
         stream = replace(stream, lookahead_phones=lookahead)
-    if stream.method != "trajectory" and artifact_kind(source_path) == "trajectory":
-        raise InputError(f"{source_path}: a trajectory model streams with the trajectory method; add --method "
-                         "trajectory, or give the motion database.")
+    member, kind = methods.get(stream.method), artifact_kind(source_path)
+    owner = methods.reader_of(kind) if kind is not None and kind != member.source_kind else None
+    if owner is not None:  # a fitted model given to another member: name the one that reads it
+        raise InputError(f"{source_path}: a {kind} model streams with the {owner} method; add --method {owner}, "
+                         "or give the motion database." if owner in methods.live_names() else
+                         f"{source_path}: a {kind} model is read by the {owner} method, which does not stream "
+                         f"({methods.get(owner).not_live}); give the motion database.")
     # each method reads its own source, as `synthesize --method` does
-    return LiveModel(methods.get(stream.method).read(source_path), synth, stream, solve, trajectory)
+    return LiveModel(member.read(source_path), synth, stream, solve, trajectory)
 
 
 def run_stdin(model: LiveModel, align: AlignSettings, source: BinaryIO, write: Callable[[str], None], *,

@@ -64,7 +64,7 @@ def run(source_path: Path, out: Path, settings: SynthesizeSettings | MethodSetti
         overwrite: bool = False) -> SynthesizeResult:
     """Synthesize the utterance (phones from ``phones_path``, or ``audio`` aligned to ``text``) with
     its emotions (and, for ``dp``, its constraints) by ``method`` (a member's name; default
-    ``synthesize.search``) from ``source_path`` (the motion database, or the method's fitted
+    ``synthesize.method``) from ``source_path`` (the motion database, or the method's fitted
     model), and write ``out`` (a ``motion`` artifact). ``settings``: the :class:`MethodSettings`, or
     ``[synthesize]`` alone (the packaged defaults for the rest). ``head_motion_path`` (a
     ``headmotion`` artifact, see ``facesynth head-motion``) replaces the head motion of the output
@@ -74,7 +74,7 @@ def run(source_path: Path, out: Path, settings: SynthesizeSettings | MethodSetti
     :func:`steps.write_motion`, :func:`steps.motion_inputs`), so the command and the API write the
     same artifact."""
     settings = method_settings(settings)
-    member = methods.get(method or settings.synthesize.search)
+    member = methods.get(steps.chosen_method(method, settings.synthesize))
     if constraints_path is not None:
         member.refuse_constraints({0: 0})
     check_output(out, overwrite)

@@ -150,9 +150,9 @@ class Objective:
 
 
 def tunable(method: str | None, synth: SynthesizeSettings):
-    """The member of the method family to tune (default ``synthesize.search``) and ``synth`` with
+    """The member of the method family to tune (default ``synthesize.method``) and ``synth`` with
     its search; a usage error for a method without the search's cost weights."""
-    member = methods.get(method or synth.search)
+    member = methods.get(steps.chosen_method(method, synth))
     if not member.tunable:
         tunables = [n for n in methods.names() if methods.get(n).tunable]
         raise UsageError(f"facesynth tune tunes the cost weights of the database searches (alpha1..alpha6, PNT); "
@@ -163,7 +163,7 @@ def tunable(method: str | None, synth: SynthesizeSettings):
 def tune(db_path: Path, corpus: Path, settings: TuneSettings, synth: SynthesizeSettings, build: BuildDbSettings,
          normalize_settings: NormalizeSettings, progress_fn=None, method: str | None = None) -> TuneResult:
     """Tune the weights, the boundary-fit length and the smoothing window of ``method`` (a search
-    member, default ``synthesize.search``) on the validation takes of ``corpus``; returns the
+    member, default ``synthesize.method``) on the validation takes of ``corpus``; returns the
     settings and the errors (mm^2) before and after on the validation and test takes.
     ``progress_fn(done, total, error, best)`` is called after each evaluation."""
     member, synth = tunable(method, synth)
@@ -317,7 +317,7 @@ class TuneResult:
 def run(db_path: Path, corpus: Path, out: Path, settings: TuneSettings, synth: SynthesizeSettings,
         build: BuildDbSettings, normalize_settings: NormalizeSettings, overwrite: bool = False,
         progress_fn=None, method: str | None = None) -> TuneResult:
-    """Tune ``method`` (a search member; default ``synthesize.search``) and write ``out``."""
+    """Tune ``method`` (a search member; default ``synthesize.method``) and write ``out``."""
     tunable(method, synth)  # refused before anything is read
     check_output(out, overwrite)
     result = tune(db_path, corpus, settings, synth, build, normalize_settings, progress_fn, method)

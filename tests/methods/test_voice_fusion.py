@@ -132,7 +132,7 @@ def test_recognised_phones_take_the_voice_articulation_given_phones_the_loudness
     member, source, read = spoken
     settings = MethodSettings.of(config)
     # always trusted: the fusion itself (the trust gate has its own test)
-    settings = replace(settings, synthesize=replace(settings.synthesize, use_opencl=False, voice_trust_low=-1.0,
+    settings = settings.replace(synthesize=replace(settings.synthesize, use_opencl=False, voice_trust_low=-1.0,
                                                     voice_trust_high=-1.0))
     phones = steps.synthesize(member, source, read.utterance, settings)
     given = steps.synthesize(member, source, read.utterance, settings, audio=read.audio)
@@ -148,7 +148,7 @@ def test_recognised_phones_take_the_voice_articulation_given_phones_the_loudness
     assert r_after > r_before + 0.1 and r_after > 0.75  # the mouth now follows what the voice says
     # off is the phones alone, bit for bit
     off = steps.synthesize(member, source, read.utterance,
-                          replace(settings, synthesize=replace(s, voice_recognized="off")), audio=read.audio,
+                          settings.replace(synthesize=replace(s, voice_recognized="off")), audio=read.audio,
                           recognized=True)
     assert np.array_equal(off.motion.markers, phones.motion.markers)
 
@@ -156,7 +156,7 @@ def test_recognised_phones_take_the_voice_articulation_given_phones_the_loudness
 def test_the_fusion_is_deterministic_and_moves_only_where_the_mouth_does(spoken, config):
     member, source, read = spoken
     settings = MethodSettings.of(config)
-    settings = replace(settings, synthesize=replace(settings.synthesize, use_opencl=False))
+    settings = settings.replace(synthesize=replace(settings.synthesize, use_opencl=False))
     made = [steps.synthesize(member, source, read.utterance, settings, audio=read.audio, recognized=True).motion
             for _ in range(2)]
     assert np.array_equal(made[0].markers, made[1].markers)
@@ -172,7 +172,7 @@ def test_the_fusion_is_deterministic_and_moves_only_where_the_mouth_does(spoken,
 def test_audio_that_is_silence_leaves_the_phones(spoken, config):
     member, source, read = spoken
     settings = MethodSettings.of(config)
-    settings = replace(settings, synthesize=replace(settings.synthesize, use_opencl=False))
+    settings = settings.replace(synthesize=replace(settings.synthesize, use_opencl=False))
     samples, rate = read.audio
     quiet = (np.zeros_like(samples), rate)
     phones = steps.synthesize(member, source, read.utterance, settings).motion
@@ -186,7 +186,7 @@ def test_pinned_phones_keep_their_closure_and_rounding_stays_in_the_method_range
     member, source, read = spoken
     settings = MethodSettings.of(config)
     s = replace(settings.synthesize, use_opencl=False)
-    motion = steps.synthesize(member, source, read.utterance, replace(settings, synthesize=s)).motion
+    motion = steps.synthesize(member, source, read.utterance, settings.replace(synthesize=s)).motion
     samples, rate = read.audio
     model = fusion.articulation_model("")
     utt = read.utterance

@@ -3,10 +3,13 @@ interpolated linearly, the rest pose in pauses. The means are those of the datab
 (the mean PCA frame of every node of that phone and emotion; a pair the database lacks takes the
 phone's nodes of every emotion, an unseen phone its viseme's nodes, else every node). It reads the
 motion database directly: nothing is fitted. ``evaluate`` also scores the per-phone variant
-(:func:`mean_pose_coefficients` with ``by_emotion=False``, the ``baseline`` row).
+(:func:`mean_pose_coefficients` with ``by_emotion=False``, the ``mean_per_phone`` row).
 """
 
 from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
 
 import numpy as np
 
@@ -57,6 +60,12 @@ class MeanMethod(DatabaseMethod):
     """The per-(phone, emotion) mean pose; source: the motion database."""
 
     name = "mean"
+    not_live = ("each phone's frames lean toward the next phone's centre pose, placed where that phone "
+                "ends; stream dp or greedy, which read the same database")
+
+    def ablations(self, db, settings: MethodSettings) -> dict[str, Callable[[Any], np.ndarray]]:
+        """``mean_per_phone``: the per-phone mean pose (every emotion pooled)."""
+        return {"mean_per_phone": lambda utt: mean_pose_markers(db, utt, by_emotion=False)}
 
     def synthesize(self, source, utt, settings: MethodSettings, constraints=None, *, prepared=None,
                    where: str = "the utterance") -> Synthesis:

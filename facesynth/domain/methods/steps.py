@@ -290,12 +290,27 @@ def frame_motion(name: str, utt: Utterance, markers_capture: np.ndarray, coeffic
                   None if coefficients is None else np.asarray(coefficients, np.float32), path, provenance)
 
 
-def chosen_method(method: str | None, search: str | None, configured_search: str) -> str:
-    """The member ``synthesize`` (and ``batch``) run: ``--method``, where ``dp`` (and no
-    ``--method``) follows ``--search`` or ``synthesize.search`` as before the family existed."""
-    if method in (None, "dp"):
-        return search or configured_search
-    if search is not None:
+def chosen_method(method: str | None, synth) -> str:
+    """The member ``synthesize``, ``batch`` and ``tune`` run: ``method`` (``--method``), else
+    ``synthesize.method``; where that is ``dp``, the deprecated ``synthesize.search`` still picks
+    the greedy search (``synth``: the ``[synthesize]`` settings)."""
+    name = method or synth.method
+    return synth.search if name == "dp" else name
+
+
+def deprecated_search(method: str | None, search: str | None, synth, configured: bool) -> tuple[str, list[str]]:
+    """The member a command line with the deprecated ``--search`` (``search``) or a configured
+    ``synthesize.search`` (``configured``: given in a ``--config`` file or a ``--set``) runs, and
+    the warnings naming the new names. ``--search`` is ``--method``'s old name for the two
+    searches; with ``--method dp`` (or none) it picks the search, as before."""
+    warnings = []
+    if configured:
+        warnings.append(f"synthesize.search is deprecated and will go in a later release; set synthesize.method = "
+                        f"\"{synth.search}\" instead.")
+    if search is None:
+        return chosen_method(method, synth), warnings
+    warnings.append(f"`--search` is deprecated and will go in a later release; use `--method {search}`.")
+    if method not in (None, "dp"):
         raise UsageError(f"--search chooses how the motion database is searched; the {method} method does not "
                          "take it: drop --search or use --method dp.")
-    return method
+    return search, warnings

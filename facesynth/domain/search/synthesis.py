@@ -59,7 +59,7 @@ def greedy_search(db: MotionDatabase, tc, utt: Utterance, steps: StepCosts, sett
     terms = path_terms(result.path, tc, steps)
     cost = float(sum(v.astype(np.float64).sum() for v in terms.values()))
     graph_kind = f"{settings.greedy_clusters} clusters" if settings.greedy_clusters else "unclustered"
-    return DpResult(cost, result.path, np.zeros((0, 0), np.float32)), (f"greedy ({graph_kind})", "synthesize.search = greedy")
+    return DpResult(cost, result.path, np.zeros((0, 0), np.float32)), (f"greedy ({graph_kind})", "the greedy method")
 
 
 def search(tc, steps: StepCosts, settings: SynthesizeSettings, *, while_running: Callable[[], None] | None = None,
