@@ -225,7 +225,7 @@ def synthesize(db: MotionDatabase, utt: Utterance, constraints: dict[int, int], 
         tc = transition_costs(db, settings, on_device)
         timings["transition_s"] = time.perf_counter() - t0
     t0 = time.perf_counter()
-    steps = step_costs(utt.phones, utt.emotions, db.nodes.phone, db.nodes.emotion, constraints, settings)
+    steps = step_costs(utt.phones, utt.emotions, db.nodes.phone, db.nodes.emotion, constraints, settings, utt.ipa)
     timings["steps_s"] = time.perf_counter() - t0
     t0 = time.perf_counter()
     if settings.search == "greedy":
