@@ -184,10 +184,12 @@ def test_align_settings_reach_the_aligner_of_transcript_only_takes(corpus, tmp_p
     received = []
 
     def fake_align(samples, rate, text, *, settings=None, extra=None, where="audio"):
-        received.append(settings)
-        return read_phone_segments(aligned, ("phones",))
+        from facesynth.domain.speech.alignment import Alignment
 
-    monkeypatch.setattr(ingest, "align_samples", fake_align)
+        received.append(settings)
+        return Alignment(read_phone_segments(aligned, ("phones",)), [], "given")
+
+    monkeypatch.setattr(ingest, "align_robust", fake_align)
     r = CliRunner().invoke(main, ["ingest", str(corpus / "manifest.csv"), "-o", str(tmp_path / "c.h5"),
                                   "--set", "align.sample_rate=8000", "--set", "align.frame_rate=50"])
     assert r.exit_code == 0, r.output

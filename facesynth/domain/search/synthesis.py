@@ -225,7 +225,8 @@ def synthesize(db: MotionDatabase, utt: Utterance, constraints: dict[int, int], 
         tc = transition_costs(db, settings, on_device)
         timings["transition_s"] = time.perf_counter() - t0
     t0 = time.perf_counter()
-    steps = step_costs(utt.phones, utt.emotions, db.nodes.phone, db.nodes.emotion, constraints, settings, utt.ipa)
+    steps = step_costs(utt.phones, utt.emotions, db.nodes.phone, db.nodes.emotion, constraints, settings, utt.ipa,
+                       db.nodes.ipa)
     timings["steps_s"] = time.perf_counter() - t0
     t0 = time.perf_counter()
     if settings.search == "greedy":
