@@ -110,11 +110,12 @@ def written(tiny_corpus, tiny_artifacts, tiny_db, held_out_take, config, tmp_pat
 
     relabelled = Corpus.read(tiny_artifacts["corpus"])
     relabelled.phones.ipa = ["" if p == "pau" else FESTIVAL_IPA[p] for p in relabelled.phones.phone]
-    out["ipa_corpus"], out["ipa_motiondb"] = d / "ipa_corpus.h5", d / "ipa_db.h5"
+    for name in ("corpus", "normalized", "pca", "motiondb"):
+        out[f"ipa_{name}"] = d / f"ipa_{name}.h5"
     relabelled.write(out["ipa_corpus"], config="{}", inputs=[])
-    normalize.run(out["ipa_corpus"], d / "ipa_normalized.h5", config.settings("normalize"))
-    pca.run(d / "ipa_normalized.h5", d / "ipa_pca.h5", config.settings("pca"))
-    build_db.run(d / "ipa_pca.h5", out["ipa_motiondb"], config.settings("build_db"))
+    normalize.run(out["ipa_corpus"], out["ipa_normalized"], config.settings("normalize"))
+    pca.run(out["ipa_normalized"], out["ipa_pca"], config.settings("pca"))
+    build_db.run(out["ipa_pca"], out["ipa_motiondb"], config.settings("build_db"))
     return out
 
 
@@ -162,7 +163,8 @@ def test_the_specification_covers_every_kind_at_its_schema():
                                   "capture", "meshanim", "expression", "restyle", "headmotion", "keyshapes", "curves",
                                   "retargeted", "rig_mesh", "trajectory", "trajectory_motion", "coarticulation",
                                   "coarticulation_motion", "mean_motion", "posed_corpus", "posed_normalized",
-                                  "articulation", "ipa_corpus", "ipa_motiondb"])
+                                  "articulation", "ipa_corpus", "ipa_normalized", "ipa_pca",
+                                  "ipa_motiondb"])
 def test_every_kind_written_by_its_stage_checks_clean(written, name):
     report = check.check_file(written[name])
     assert report.problems == []
