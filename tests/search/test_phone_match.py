@@ -176,3 +176,15 @@ def test_a_french_line_keeps_its_ipa_phones_through_the_alignment(tiny_corpus):
     assert all(q for _, q in spoken) and all(not q for p, q in zip(utt.phones, utt.ipa) if p == PAU)
     english = facesynth.utterance_from_audio(tiny_corpus / "audio" / "neutral_s000.wav", "laugh tail with west roll")
     assert english.data.utterance.ipa is None
+
+
+def test_the_summary_names_a_foreign_phone_the_database_lacks_by_its_ipa(db):
+    from facesynth.domain.search.synthesis import unseen_phones
+
+    utt = utterance(["pau", "uw", "aa", "sh", "pau"], [0, 1, 2, 3, 4], [1, 2, 3, 4, 5], ipa=["", "y", "ɑ", "ʃ", ""])
+    unseen = unseen_phones(utt, db, "unseen")
+    assert set(unseen) == {"y", "ʃ"}                            # /ɑ/ is aa's: the database has it
+    assert "/u/ first" in unseen["y"] and "articulatory features" in unseen["y"]
+    assert unseen_phones(utt, db, "viseme") == {"sh": "any node (Table II rule 3)"}  # no node of its viseme
+    english = utterance(["pau", "sh", "pau"], [0, 1, 2], [1, 2, 3])
+    assert list(unseen_phones(english, db, "unseen")) == ["sh"]  # an English line: Table II's message

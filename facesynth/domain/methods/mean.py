@@ -73,4 +73,5 @@ class MeanMethod(DatabaseMethod):
         motion = frame_motion(self.name, utt, source.model.reconstruct(coeffs), coeffs, source.fps,
                               settings.synthesize.output_fps, source.marker_names, source.reference, list(utt.phones),
                               [e if p != PAU else "" for p, e in zip(utt.phones, used)], "cpu (NumPy)")
-        return Synthesis(motion, SynthesisSummary(len(utt), len(motion.markers), unseen_phones(utt, source)))
+        return Synthesis(motion, SynthesisSummary(len(utt), len(motion.markers),
+                                                  unseen_phones(utt, source, settings.synthesize.phone_match)))

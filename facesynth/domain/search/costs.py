@@ -124,7 +124,7 @@ def step_costs(phones: list[str], emotions: list[str], node_phone: list[str], no
     oc = np.empty((t_count, n), np.float32)
     emp = np.empty((t_count, n), np.float32)
     block = np.zeros((t_count, n), np.float32)
-    by_features = phone_match_costs(phones, ipa, node_phone, node_ipa, node_vis, s)
+    by_features = phone_match_costs(phones, ipa, (phone_codes, node_phone_code), node_ipa, node_vis, s)
     for t, (p, e) in enumerate(zip(phones, emotions)):
         if p == PAU:
             oc[t] = 0.0
@@ -141,10 +141,12 @@ def step_costs(phones: list[str], emotions: list[str], node_phone: list[str], no
     return StepCosts(oc, emp, block)
 
 
-def phone_match_costs(phones: list[str], ipa: list[str] | None, node_phone: list[str], node_ipa: list[str] | None,
-                      node_vis: np.ndarray, s: SynthesizeSettings) -> dict[int, np.ndarray]:
+def phone_match_costs(phones: list[str], ipa: list[str] | None, node_phone: tuple[dict[str, int], np.ndarray],
+                      node_ipa: list[str] | None, node_vis: np.ndarray, s: SynthesizeSettings) -> dict[int, np.ndarray]:
     """The observation cost (N,) float64 of the steps matched by articulatory features
     (``synthesize.phone_match``), by step; the other steps keep Table II on their Festival phones.
+    ``node_phone``: the nodes' Festival phones as :func:`_codes` gives them (each distinct
+    phone's code, the (N,) int64 codes); ``node_vis``: (N,) int64 their visemes.
 
     A step's phone is its IPA (``ipa[t]``) or its Festival phone's; a node's likewise. Under
     ``viseme`` no step is matched by features. Under ``unseen`` a step given in IPA is: when some
@@ -154,9 +156,12 @@ def phone_match_costs(phones: list[str], ipa: list[str] | None, node_phone: list
     alpha5 PNT. Under ``features`` every spoken step costs the latter."""
     if s.phone_match == "viseme" or (s.phone_match == "unseen" and not any(ipa or ())):
         return {}
-    node_names = [q or festival_phone_ipa(p) for p, q in zip(node_phone, node_ipa or [""] * len(node_phone))]
-    node_codes, node_code = _codes(node_names)
-    distinct = list(node_codes)
+    if node_ipa is None:  # English nodes: each distinct phone's IPA
+        distinct, node_code = [festival_phone_ipa(p) for p in node_phone[0]], node_phone[1]
+    else:
+        names = list(node_phone[0])
+        node_codes, node_code = _codes([q or festival_phone_ipa(names[c]) for q, c in zip(node_ipa, node_phone[1])])
+        distinct = list(node_codes)
     unit = s.alpha5 * s.pnt
     out: dict[int, np.ndarray] = {}
     levels: dict[str, np.ndarray] = {}
