@@ -362,12 +362,13 @@ def festival_phone_ipa(phone: str) -> str:
 
 
 def match_level(d: float, same_viseme: float, scale: float) -> float:
-    """The phone-matching cost (paper Table II) of two phones ``d`` apart in features
-    (:func:`distance`), as a fraction of Table II's cost of another viseme: 0 for equal features,
-    else ``same_viseme + (1 - same_viseme) * d / scale``, at most 1. ``same_viseme`` is Table II's
+    """The phone-matching cost (paper Table II) of a phone ``d`` further in features
+    (:func:`distance`) than the nearest (or the same) phone, as a fraction of Table II's cost of
+    another viseme: 0 at ``d`` 0, else ``same_viseme + (1 - same_viseme) * d / scale``, at most 1. ``same_viseme`` is Table II's
     discount for a node of the same viseme (``synthesize.alpha4``), so any other phone costs at
-    least what Table II's rule 2 charges, and a phone ``scale`` or more away (one visible contrast:
-    rounding, or a vowel against a consonant, weighs 3, :data:`WEIGHTS`) costs what rule 3 charges.
+    least what Table II's rule 2 charges, and a phone ``scale`` or more further (one visible
+    contrast: rounding, or a vowel against a consonant, weighs 3, :data:`WEIGHTS`) costs what rule 3
+    charges.
     Table II is the case of a distance that is 0 for the same phone, near 0 within a viseme and at
     least ``scale`` between visemes."""
     if d <= 0.0:

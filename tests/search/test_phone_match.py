@@ -127,6 +127,19 @@ def test_mandarin_retroflexes_take_the_postalveolars(db, s):
     assert min(tiny, key=tiny.__getitem__) == "s" and tiny["s"] < tiny["th"] < tiny["f"]
 
 
+def test_a_phone_the_database_lacks_costs_by_its_extra_distance(s):
+    # French /y/ against an English database: /uw/ is nearest (1.0), so its nodes cost 0 as the same
+    # phone's would; /uh/ 0.2 further, /iy/ 2.0 further, /p/ far: capped at Table II's rule 3
+    nodes = ["uw", "uh", "iy", "p"]
+    oc = step_costs(["uw"], ["neutral"], nodes, ["neutral"] * 4, {}, s, ["y"]).oc[0]
+    d = np.array([phone_distance("y", FESTIVAL_IPA[p]) for p in nodes])
+    unit = s.alpha5 * s.pnt
+    assert oc[0] == 0.0
+    assert oc[1] == pytest.approx(unit * match_level(d[1] - d[0], s.alpha4, s.phone_match_scale), rel=1e-6)
+    assert oc[2] == pytest.approx(unit * match_level(d[2] - d[0], s.alpha4, s.phone_match_scale), rel=1e-6)
+    assert oc[1] < oc[2] < oc[3] == pytest.approx(unit)
+
+
 def test_the_search_picks_rounded_nodes_for_french_tu(db, config):
     from facesynth.domain.search.synthesis import synthesize
 
@@ -188,3 +201,31 @@ def test_the_summary_names_a_foreign_phone_the_database_lacks_by_its_ipa(db):
     assert unseen_phones(utt, db, "viseme") == {"sh": "any node (Table II rule 3)"}  # no node of its viseme
     english = utterance(["pau", "sh", "pau"], [0, 1, 2], [1, 2, 3])
     assert list(unseen_phones(english, db, "unseen")) == ["sh"]  # an English line: Table II's message
+
+
+@pytest.mark.skipif(importlib.util.find_spec("gruut_lang_fr") is None,
+                    reason="gruut's French pack is not installed (pip install 'facesynth[languages]')")
+def test_a_french_lines_rounded_front_vowels_take_rounded_nodes_and_a_narrow_mouth(db, config, tiny_corpus):
+    import facesynth
+    from facesynth.domain.search.synthesis import synthesize
+
+    s = dataclasses.replace(config.settings("synthesize"), use_opencl=False)
+    utt = facesynth.utterance_from_audio(tiny_corpus / "audio" / "neutral_s000.wav", "Tu as vu une rue, du jus.",
+                                         language="fr").data.utterance
+    assert utt.ipa is not None
+    res = synthesize(db, utt, {}, s)
+    names = list(db.marker_names)
+    right, left = names.index("MC_R"), names.index("MC_L")
+    markers = res.rendered.markers_capture
+
+    def width(t: int) -> float:
+        f = min(int(round((utt.starts[t] + utt.ends[t]) / 2 * db.fps)), len(markers) - 1)
+        return float(np.linalg.norm(markers[f, right] - markers[f, left]))
+
+    front = [(t, features(q)) for t, q in enumerate(utt.ipa) if q and features(q).vowel and features(q).backness < 0.25]
+    rounded = [t for t, f in front if f.rounded]
+    spread = [t for t, f in front if not f.rounded]
+    assert len(rounded) >= 4 and spread
+    assert all(features(FESTIVAL_IPA[db.nodes.phone[int(res.path[t])]]).rounded for t in rounded)
+    # measured on the tiny database: 42.5 mm wide at /y/ against 54.7 mm at the unrounded front vowels
+    assert np.mean([width(t) for t in rounded]) < np.mean([width(t) for t in spread]) - 5.0

@@ -152,8 +152,11 @@ def phone_match_costs(phones: list[str], ipa: list[str] | None, node_phone: tupl
     ``viseme`` no step is matched by features. Under ``unseen`` a step given in IPA is: when some
     node's phone has its features (the database has the phone), those nodes cost 0, the others
     Table II's levels by the viseme of the step's nearest English phone; when none has, each node
-    costs :func:`~facesynth.base.ipa.match_level` of the distance between the two phones times
-    alpha5 PNT. Under ``features`` every spoken step costs the latter."""
+    costs :func:`~facesynth.base.ipa.match_level` of how much further its phone is from the step's
+    than the nearest phone the database has (so the nearest phone's nodes cost 0, as the same
+    phone would, and the others rise with their extra distance), times alpha5 PNT. Under
+    ``features`` every spoken step costs the latter (0 extra distance for a phone the database
+    has: the distance itself)."""
     if s.phone_match == "viseme" or (s.phone_match == "unseen" and not any(ipa or ())):
         return {}
     if node_ipa is None:  # English nodes: each distinct phone's IPA
@@ -174,8 +177,9 @@ def phone_match_costs(phones: list[str], ipa: list[str] | None, node_phone: tupl
             d = np.array([phone_distance(q, name) for name in distinct], np.float64)
             if s.phone_match == "unseen" and (d == 0.0).any():
                 level = np.where((d == 0.0)[node_code], 0.0, np.where(node_vis == viseme(p), s.alpha4, 1.0))
-            else:
-                level = np.array([match_level(x, s.alpha4, s.phone_match_scale) for x in d], np.float64)[node_code]
+            else:  # the phones nearest it stand in for the phone itself, the others dearer by how much further
+                level = np.array([match_level(x, s.alpha4, s.phone_match_scale) for x in d - d.min()],
+                                 np.float64)[node_code]
             levels[q] = unit * level
         out[t] = levels[q]
     return out
