@@ -229,3 +229,39 @@ def test_a_french_lines_rounded_front_vowels_take_rounded_nodes_and_a_narrow_mou
     assert all(features(FESTIVAL_IPA[db.nodes.phone[int(res.path[t])]]).rounded for t in rounded)
     # measured on the tiny database: 42.5 mm wide at /y/ against 54.7 mm at the unrounded front vowels
     assert np.mean([width(t) for t in rounded]) < np.mean([width(t) for t in spread]) - 5.0
+
+
+# --- the fitted members: a phone of another language they never saw -------------------------
+
+
+def _ich(ipa: bool):
+    """German "ich" with pauses: /ɪ ç/, standing as the English /ih sh/ (the tiny database has no /sh/)."""
+    return utterance(["pau", "ih", "sh", "pau"], [0.0, 0.2, 0.3, 0.45], [0.2, 0.3, 0.45, 0.7],
+                     ipa=["", "ɪ", "ç", ""] if ipa else None)
+
+
+def test_mean_takes_the_phone_nearest_in_features_for_a_foreign_phone_it_lacks(db):
+    from facesynth.domain.methods.mean import mean_pose_coefficients
+
+    assert "sh" not in db.nodes.phone and "s" in db.nodes.phone
+    by_features = mean_pose_coefficients(db, _ich(True), phone_match="unseen")
+    as_s = mean_pose_coefficients(db, utterance(["pau", "ih", "s", "pau"], [0.0, 0.2, 0.3, 0.45],
+                                                [0.2, 0.3, 0.45, 0.7]))
+    assert np.array_equal(by_features, as_s)       # /ç/ looked up as /s/, the nearest phone the database has
+    paper = mean_pose_coefficients(db, _ich(True), phone_match="viseme")
+    assert np.array_equal(paper, mean_pose_coefficients(db, _ich(False)))  # the viseme rule: as English /sh/
+    assert not np.array_equal(paper, by_features)
+
+
+def test_trajectory_covers_a_foreign_phone_its_viseme_class_lacks(tiny_trajectory, config):
+    from facesynth.base.errors import InputError
+    from facesynth.domain.methods.trajectory import synthesize_motion
+    from facesynth.model.trajectory import TrajectoryModel
+
+    model = TrajectoryModel.read(tiny_trajectory)
+    settings = config.settings("trajectory")
+    assert "sh" not in model.phones and not {"ch", "jh"} & set(model.phones)
+    motion, _ = synthesize_motion(model, _ich(True), settings, 30.0)
+    assert motion.path is not None and motion.path.node_phone[2] == "s"  # the nearest phone by features
+    with pytest.raises(InputError, match="not in the trajectory model"):  # English /sh/: no phone of its viseme
+        synthesize_motion(model, _ich(False), settings, 30.0)
