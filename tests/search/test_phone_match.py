@@ -265,3 +265,22 @@ def test_trajectory_covers_a_foreign_phone_its_viseme_class_lacks(tiny_trajector
     assert motion.path is not None and motion.path.node_phone[2] == "s"  # the nearest phone by features
     with pytest.raises(InputError, match="not in the trajectory model"):  # English /sh/: no phone of its viseme
         synthesize_motion(model, _ich(False), settings, 30.0)
+
+
+def test_coarticulation_takes_the_phone_nearest_in_features_for_a_foreign_phone_it_lacks(tiny_db, config, tmp_path):
+    from facesynth.domain.methods import MethodSettings
+    from facesynth.domain.methods.coarticulation import CoarticulationMethod
+    from facesynth.model.coarticulation import CoarticulationModel
+    from facesynth.stages import fit_method
+
+    every = MethodSettings.of(config)
+    quick = dataclasses.replace(every, coarticulation=dataclasses.replace(every.coarticulation, iterations=5))
+    fit_method.run("coarticulation", tiny_db, tmp_path / "coart.h5", quick)
+    model = CoarticulationModel.read(tmp_path / "coart.h5")
+    assert not any(label.split("|")[0] == "sh" for label in model.labels)
+    method = CoarticulationMethod()
+    as_s = utterance(["pau", "ih", "s", "pau"], [0.0, 0.2, 0.3, 0.45], [0.2, 0.3, 0.45, 0.7])
+    got = method.synthesize(model, _ich(True), every).motion.markers
+    assert np.array_equal(got, method.synthesize(model, as_s, every).motion.markers)
+    paper = dataclasses.replace(every, synthesize=dataclasses.replace(every.synthesize, phone_match="viseme"))
+    assert not np.array_equal(got, method.synthesize(model, _ich(True), paper).motion.markers)  # the mean of every phone
