@@ -50,6 +50,7 @@ from facesynth.domain.rig.face import Rig
 from facesynth.domain.rig.loading import load_rig
 from facesynth.domain.rig.neutral import NeutralChoice
 from facesynth.domain.speech.alignment import AlignmentFailed, align_robust
+from facesynth.domain.speech.languages import ipa_phones, is_english
 from facesynth.domain.speech.recognition import recognize
 from facesynth.formats.audio import read_audio, resample
 from facesynth.formats.labels import Segment, check_segments, read_phone_segments, read_textgrid
@@ -310,7 +311,11 @@ def ingest(rows: list[ManifestRow], settings: IngestSettings, align_settings: Al
                 check_segments(segs, source)
         if segs and segs[-1].end > motion_s + settings.max_audio_mismatch_s:
             raise InputError(f"{source}: the alignment ends at {segs[-1].end:.2f} s, after the motion ({motion_s:.2f} s); use the take's own alignment.")
-        labels = map_phones([s.label for s in segs], source, [s.start for s in segs]) if segs else []
+        if segs and ipa is None and row.alignment is not None and not is_english(take_align.language):
+            # a take's own alignment in another language: its labels are IPA
+            labels, ipa = ipa_phones([s.label for s in segs], source, [s.start for s in segs], take_align.language)
+        else:
+            labels = map_phones([s.label for s in segs], source, [s.start for s in segs]) if segs else []
         starts.append(sum(counts))
         counts.append(take.positions.shape[0])
         markers.append(take.positions)
