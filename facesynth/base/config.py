@@ -232,6 +232,15 @@ class SynthesizeSettings:
     alpha5: float = setting("Table II", ge=0)
     alpha6: float = setting("Eq. 5", ge=0)
     huge_penalty: float = setting("Eq. 10 (HugePenalty)", unit="cost", gt=0)
+    phone_match: str = setting("not in the paper: Table II's phone matching for a phone of another language (viseme: "
+                               "by its nearest English phone, the paper's rule; unseen: one the database lacks by "
+                               "articulatory features, its nearest phone's nodes 0 and the others by how much "
+                               "further they are, facesynth.base.ipa; features: every phone so, English too)",
+                               choices=("viseme", "unseen", "features"))
+    phone_match_scale: float = setting("not in the paper: how much further in features (facesynth.base.ipa.WEIGHTS) "
+                                       "than the nearest phone a node's phone costs what Table II's rule 3 charges "
+                                       "(another viseme); nearer, from alpha4 times that up", unit="feature distance",
+                                       gt=0)
     join_smoothing: str = setting("paper VII-B, Eq. 16 (eq16, free-ended); not in the paper: a displacement blend "
                                   "continuous in position and velocity (blend)", choices=("blend", "eq16"))
     smoothing_half_window: int = setting("Eq. 16 (s = 3); the blend's reach on each side of a join",

@@ -42,6 +42,8 @@ class Nodes:
     start_s, end_s : (N,) float64, seconds from the take's start.
     prev_phone, next_phone : triphone context (``pau`` at sentence edges).
     pre, suc : (N,) int64, captured predecessor / successor node, or -1.
+    ipa : N IPA phones pronounced (a take in another language; ``phone`` is then the nearest
+        English phone), ``""`` for English phones; None when every take is English.
     """
 
     phone: list[str]
@@ -56,6 +58,7 @@ class Nodes:
     next_phone: list[str]
     pre: np.ndarray
     suc: np.ndarray
+    ipa: list[str] | None = None
 
     def __len__(self) -> int:
         return len(self.phone)
@@ -73,7 +76,8 @@ class Nodes:
         suc = np.where(self.suc[keep] >= 0, remap[np.maximum(self.suc[keep], 0)], -1)
         return Nodes(pick(self.phone), self.viseme[keep], pick(self.emotion), self.take[keep],
                      self.frame_start[keep], self.frame_count[keep], self.start_s[keep], self.end_s[keep],
-                     pick(self.prev_phone), pick(self.next_phone), pre, suc)
+                     pick(self.prev_phone), pick(self.next_phone), pre, suc,
+                     None if self.ipa is None else pick(self.ipa))
 
     _STRINGS = ("phone", "emotion", "prev_phone", "next_phone")
     _ARRAYS = ("viseme", "take", "frame_start", "frame_count", "start_s", "end_s", "pre", "suc")
@@ -85,13 +89,15 @@ class Nodes:
             write_strings(g, key, getattr(self, key))
         for key in self._ARRAYS:
             g.create_dataset(key, data=getattr(self, key))
+        if self.ipa is not None:
+            write_strings(g, "ipa", self.ipa)
 
     @classmethod
     def read(cls, f: h5py.File) -> "Nodes":
         """The table under ``/nodes`` of an open artifact."""
         values: dict[str, list[str] | np.ndarray] = {k: read_strings(f, f"nodes/{k}") for k in cls._STRINGS}
         values.update({k: read(f, f"nodes/{k}") for k in cls._ARRAYS})
-        return cls(**values)  # type: ignore[arg-type]
+        return cls(**values, ipa=read_strings(f, "nodes/ipa") if "nodes/ipa" in f else None)  # type: ignore[arg-type]
 
 
 def node_frames(nodes: Nodes, n_frames: int) -> tuple[np.ndarray, np.ndarray]:

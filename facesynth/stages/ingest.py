@@ -49,7 +49,8 @@ from facesynth.domain.capture.readers import CaptureOptions, read_capture
 from facesynth.domain.rig.face import Rig
 from facesynth.domain.rig.loading import load_rig
 from facesynth.domain.rig.neutral import NeutralChoice
-from facesynth.domain.speech.alignment import AlignmentFailed, align_samples
+from facesynth.domain.speech.alignment import AlignmentFailed, align_robust
+from facesynth.domain.speech.languages import ipa_phones, is_english
 from facesynth.domain.speech.recognition import recognize
 from facesynth.formats.audio import read_audio, resample
 from facesynth.formats.labels import Segment, check_segments, read_phone_segments, read_textgrid
@@ -146,17 +147,21 @@ def read_manifest(path: Path, settings: IngestSettings) -> list[ManifestRow]:
 
 
 def _segments_for(row: ManifestRow, settings: IngestSettings, align_settings: AlignSettings, samples: np.ndarray,
-                  rate: int | None, where: str) -> list[Segment]:
+                  rate: int | None, where: str) -> tuple[list[Segment], list[str] | None]:
     """The take's phone segments (seconds): read from its alignment file, or its transcript
-    aligned to ``samples`` (mono, ``rate`` Hz; None: the take has no audio) with ``align_settings``."""
+    aligned to ``samples`` (mono, ``rate`` Hz; None: the take has no audio) with ``align_settings``;
+    and, for a transcript in another language than English, the IPA phone of each segment
+    (:attr:`~facesynth.domain.speech.alignment.Alignment.ipa`; else None)."""
     if row.alignment is not None:
         if not row.alignment.exists():
             raise InputError(f"{where}: alignment file {row.alignment} not found; fix the manifest's alignment column.")
-        return read_phone_segments(row.alignment, settings.phone_tiers)
+        return read_phone_segments(row.alignment, settings.phone_tiers), None
     if rate is None:  # read_manifest refuses such a row
         raise InputError(f"{where}: a transcript to align but no audio; give its audio or its phone timing.")
-
-    return align_samples(samples, rate, row.transcript, settings=align_settings, where=where)
+    aligned = align_robust(samples, rate, row.transcript, settings=align_settings, where=where)
+    for warning in aligned.warnings:
+        log.warning(warning)
+    return aligned.phones, aligned.ipa
 
 
 def phone_emotions(row: ManifestRow, segs: list[Segment], settings: IngestSettings) -> list[str]:
@@ -247,6 +252,7 @@ def ingest(rows: list[ManifestRow], settings: IngestSettings, align_settings: Al
     module docstring)."""
     markers, audio, starts, counts = [], [], [], []
     phone_take, phone_start, phone_end, phone_label, phone_emotion = [], [], [], [], []
+    phone_ipa: list[str] = []
     names = fps = None
     options = options or capture_options(settings)
     rigid: list[str] = []
@@ -291,11 +297,12 @@ def ingest(rows: list[ManifestRow], settings: IngestSettings, align_settings: Al
                 raise InputError(f"{what} {motion_s:.2f} s; trim or pad them to the same length (tolerance "
                                  f"{settings.max_audio_mismatch_s:g} s).")
         segs: list[Segment] = []
+        ipa: list[str] | None = None
         source = str(row.alignment or row.audio or row.mocap)
         # the take's language column, else align.language
         take_align = replace(align_settings, language=row.language) if row.language else align_settings
         if row.alignment is not None or row.transcript:
-            segs = _segments_for(row, settings, take_align, samples, rate, where)
+            segs, ipa = _segments_for(row, settings, take_align, samples, rate, where)
             check_segments(segs, source)
         elif rate is not None and settings.recognize_phones:  # audio alone: the phones recognised from it
             segs = _recognized(samples, rate, take_align, source)
@@ -304,7 +311,11 @@ def ingest(rows: list[ManifestRow], settings: IngestSettings, align_settings: Al
                 check_segments(segs, source)
         if segs and segs[-1].end > motion_s + settings.max_audio_mismatch_s:
             raise InputError(f"{source}: the alignment ends at {segs[-1].end:.2f} s, after the motion ({motion_s:.2f} s); use the take's own alignment.")
-        labels = map_phones([s.label for s in segs], source, [s.start for s in segs]) if segs else []
+        if segs and ipa is None and row.alignment is not None and not is_english(take_align.language):
+            # a take's own alignment in another language: its labels are IPA
+            labels, ipa = ipa_phones([s.label for s in segs], source, [s.start for s in segs], take_align.language)
+        else:
+            labels = map_phones([s.label for s in segs], source, [s.start for s in segs]) if segs else []
         starts.append(sum(counts))
         counts.append(take.positions.shape[0])
         markers.append(take.positions)
@@ -314,10 +325,11 @@ def ingest(rows: list[ManifestRow], settings: IngestSettings, align_settings: Al
         phone_end += [s.end for s in segs]
         phone_label += labels
         phone_emotion += phone_emotions(row, segs, settings)
+        phone_ipa += ipa if ipa is not None else [""] * len(segs)
     takes = Takes([r.take for r in rows], [r.emotion for r in rows], [r.sentence for r in rows],
                   [r.split for r in rows], [r.transcript for r in rows], np.array(starts), np.array(counts))
     phones = Phones(np.array(phone_take, np.int64), np.array(phone_start, np.float64), np.array(phone_end, np.float64),
-                    phone_label, phone_emotion)
+                    phone_label, phone_emotion, phone_ipa if any(phone_ipa) else None)
     rest = rests[0]
     posed = rest is not None and all(r is not None and np.array_equal(r, rest) for r in rests) \
         and all(p is not None for p in poses)

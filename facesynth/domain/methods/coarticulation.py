@@ -38,6 +38,7 @@ from facesynth.base.config import EvaluateSettings
 from facesynth.base.errors import InputError
 from facesynth.base.phonemes import PAU
 from facesynth.domain.postprocess.concatenation import frame_ranges
+from facesynth.domain.speech.utterance import stand_in_phones
 from facesynth.model.coarticulation import CoarticulationModel
 
 from . import FitSummary, Method, MethodSettings, Synthesis, SynthesisSummary
@@ -285,7 +286,8 @@ class CoarticulationMethod(Method):
         saw ('/aa/ in sad', or '/zh/' for a phone it never saw in any emotion) and what covers each."""
         self.refuse_constraints(constraints)
         model = DominanceModel(tuple(source.labels), source.targets, source.magnitude, source.rate)
-        labels = emotion_labels(list(utt.phones), list(utt.emotions))
+        fitted = {label.split("|")[0] for label in source.labels}
+        labels = emotion_labels(stand_in_phones(utt, fitted, settings.synthesize.phone_match), list(utt.emotions))
         total = frame_ranges(utt.starts, utt.ends, source.fps)[-1][1]
         coeffs = model.predict(labels, utt.starts, utt.ends, total, source.fps)
         markers = source.pca.reconstruct(coeffs)

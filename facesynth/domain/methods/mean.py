@@ -16,15 +16,18 @@ import numpy as np
 from facesynth.base.phonemes import PAU, viseme
 from facesynth.domain.postprocess.concatenation import frame_ranges
 from facesynth.domain.search.synthesis import unseen_phones
+from facesynth.domain.speech.utterance import stand_in_phones
 
 from . import MethodSettings, Synthesis, SynthesisSummary
 from .steps import DatabaseMethod, frame_motion
 
 
-def mean_pose_coefficients(db, utt, by_emotion: bool = True) -> np.ndarray:
+def mean_pose_coefficients(db, utt, by_emotion: bool = True, phone_match: str = "unseen") -> np.ndarray:
     """PCA coefficients (T, K) float64 at the capture rate of the per-(phone, emotion) (or, without
     ``by_emotion``, per-phone) mean poses at phone centres, linearly interpolated. db : a
-    MotionDatabase; utt : an Utterance."""
+    MotionDatabase; utt : an Utterance. A phone of another language the database lacks takes the
+    phone nearest it in features (``phone_match``: ``synthesize.phone_match``,
+    :func:`~facesynth.domain.speech.utterance.stand_in_phones`)."""
     phones = np.array(db.nodes.phone)
     emotions = np.array(db.nodes.emotion)
     means: dict[tuple[str, str], np.ndarray] = {}
@@ -46,7 +49,8 @@ def mean_pose_coefficients(db, utt, by_emotion: bool = True) -> np.ndarray:
     ranges = frame_ranges(utt.starts, utt.ends, db.fps)
     total = ranges[-1][1]
     centres = np.array([(a + b - 1) / 2.0 for a, b in ranges])
-    poses = np.stack([rest if p == PAU else mean_pose(p, e) for p, e in zip(utt.phones, utt.emotions)])
+    looked_up = stand_in_phones(utt, set(db.nodes.phone), phone_match)
+    poses = np.stack([rest if p == PAU else mean_pose(p, e) for p, e in zip(looked_up, utt.emotions)])
     frames = np.arange(total)
     return np.stack([np.interp(frames, centres, poses[:, k]) for k in range(poses.shape[1])], 1)
 
@@ -72,10 +76,11 @@ class MeanMethod(DatabaseMethod):
         """The mean poses of ``utt`` from ``source`` (a MotionDatabase); the summary's ``unseen``
         names the phones the database has no node of."""
         self.refuse_constraints(constraints)
-        coeffs = mean_pose_coefficients(source, utt, by_emotion=True)
+        coeffs = mean_pose_coefficients(source, utt, by_emotion=True, phone_match=settings.synthesize.phone_match)
         have = set(zip(source.nodes.phone, source.nodes.emotion))
         used = [e if (p, e) in have else "" for p, e in zip(utt.phones, utt.emotions)]
         motion = frame_motion(self.name, utt, source.model.reconstruct(coeffs), coeffs, source.fps,
                               settings.synthesize.output_fps, source.marker_names, source.reference, list(utt.phones),
                               [e if p != PAU else "" for p, e in zip(utt.phones, used)], "cpu (NumPy)")
-        return Synthesis(motion, SynthesisSummary(len(utt), len(motion.markers), unseen_phones(utt, source)))
+        return Synthesis(motion, SynthesisSummary(len(utt), len(motion.markers),
+                                                  unseen_phones(utt, source, settings.synthesize.phone_match)))

@@ -70,7 +70,7 @@ class SearchMethod(DatabaseMethod):
         s = self.settings_of(settings)
         res = synthesize(source, utt, dict(constraints or {}), s, tc=prepared)
         motion = as_motion(source, utt, res, s)
-        return Synthesis(motion, SynthesisSummary(len(utt), len(res.rendered.markers), unseen_phones(utt, source),
+        return Synthesis(motion, SynthesisSummary(len(utt), len(res.rendered.markers), unseen_phones(utt, source, s.phone_match),
                                                   cost=res.cost, joins=res.rendered.non_captured_joins,
                                                   device=res.device, phases=res.timings.phases()))
 

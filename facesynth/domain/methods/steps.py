@@ -145,7 +145,7 @@ def read_utterance(ingest: IngestSettings, *, phones_path: Path | None = None, a
         for warning in warnings:  # the one mismatch policy: a warning, never a failure
             log.warning(warning)
         segs = aligned.phones
-        utt = utterance([s.label for s in segs], [s.start for s in segs], [s.end for s in segs])
+        utt = utterance([s.label for s in segs], [s.start for s in segs], [s.end for s in segs], ipa=aligned.ipa)
     elif text is not None:
         raise UsageError("--text says what --audio says; give --audio too (or the phones with --phonemes).")
     else:

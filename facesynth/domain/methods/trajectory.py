@@ -45,6 +45,7 @@ from facesynth.base.errors import InputError, UsageError
 from facesynth.base.phonemes import PAU, VISEME_GROUPS, viseme
 from facesynth.domain.postprocess.concatenation import downsample, downsample_sources, frame_ranges
 from facesynth.domain.retarget.solve import nnls_weights
+from facesynth.domain.speech.utterance import stand_in_phones
 from facesynth.model.motion import Motion, Provenance, SearchPath
 from facesynth.model.trajectory import TrajectoryModel
 
@@ -379,7 +380,7 @@ def train_model(db, keyshapes, settings, where: str = "the database"):
     return model, samples
 
 
-def synthesize_motion(model, utt, settings, output_fps: float, where: str = "the utterance"):
+def synthesize_motion(model, utt, settings, output_fps: float, where: str = "the utterance", phone_match: str = "unseen"):
     """The ``motion`` artifact's contents (source ``trajectory``) for an utterance.
 
     model : a TrajectoryModel; utt : a :class:`~facesynth.domain.speech.utterance.Utterance`; settings :
@@ -392,8 +393,10 @@ def synthesize_motion(model, utt, settings, output_fps: float, where: str = "the
     ``cost_oc`` / ``cost_tc`` the data and smoothness terms of Eq. 6 over each phone's frames,
     ``cost_emp`` and ``cost_block`` zero, ``total_cost`` Eq. 6; provenance node, take and source frame
     -1 (no source frame), ``smoothed`` False. The head does not move (identity rotation, zero
-    translation): the model has no head motion. Returns (Motion, Path)."""
-    path = synthesize_path(model, list(utt.phones), list(utt.emotions), utt.starts, utt.ends,
+    translation): the model has no head motion. A phone of another language the model lacks takes
+    its phone nearest in features (``phone_match``: ``synthesize.phone_match``). Returns (Motion, Path)."""
+    path = synthesize_path(model, stand_in_phones(utt, set(model.phones), phone_match), list(utt.emotions),
+                           utt.starts, utt.ends,
                            smoothness=settings.smoothness, smoothness_fps=settings.smoothness_fps, fps=settings.fps,
                            duration_normalization=settings.duration_normalization, where=where)
     ranges = frame_ranges(utt.starts, utt.ends, model.fps)
@@ -467,7 +470,8 @@ class TrajectoryMethod(Method):
         """The path of Eq. 6-7 (:func:`synthesize_motion`); the summary holds the Eq. 6 ``energy``,
         ``lam`` (lambda) and the ``fallbacks`` (unseen phones and the viseme class that covered each)."""
         self.refuse_constraints(constraints)
-        motion, path = synthesize_motion(source, utt, settings.trajectory, settings.synthesize.output_fps, where)
+        motion, path = synthesize_motion(source, utt, settings.trajectory, settings.synthesize.output_fps, where,
+                                         settings.synthesize.phone_match)
         return Synthesis(motion, SynthesisSummary(len(utt), len(motion.markers), energy=path.energy, lam=path.lam,
                                                   fallbacks=path.targets.fallbacks))
 

@@ -11,6 +11,7 @@ from pathlib import Path
 import numpy as np
 
 from facesynth.base.errors import InputError
+from facesynth.base.ipa import festival_phone_ipa, nearest_phone
 from facesynth.base.phonemes import PAU, map_phones
 from facesynth.formats.labels import Segment, check_segments, read_phone_segments, read_text, read_textgrid
 
@@ -19,12 +20,18 @@ log = logging.getLogger(__name__)
 
 @dataclass
 class Utterance:
-    """The input phone sequence: Festival phones with times (s) and an emotion per phone."""
+    """The input phone sequence: Festival phones with times (s) and an emotion per phone.
+
+    ``ipa``: for a line in another language than English, the phone each step pronounces (IPA,
+    :mod:`facesynth.base.ipa`; ``""`` at pauses), of which ``phones`` holds the nearest English
+    phone; None for English (each step is its Festival phone). The search matches these phones
+    by their features (``synthesize.phone_match``)."""
 
     phones: list[str]
     starts: np.ndarray
     ends: np.ndarray
     emotions: list[str]
+    ipa: list[str] | None = None
 
     def __len__(self) -> int:
         return len(self.phones)
@@ -35,11 +42,13 @@ class Utterance:
         return int(hits[0]) if len(hits) else None
 
 
-def utterance(phones, starts, ends, emotions=None) -> Utterance:
-    """An Utterance with adjacent pauses merged: one silence is one step of the search."""
+def utterance(phones, starts, ends, emotions=None, ipa=None) -> Utterance:
+    """An Utterance with adjacent pauses merged: one silence is one step of the search. ``ipa``:
+    each phone's IPA (:attr:`Utterance.ipa`, same length as ``phones``) or None."""
     emotions = list(emotions) if emotions is not None else ["neutral"] * len(phones)
-    out_p, out_s, out_e, out_m = [], [], [], []
-    for p, a, b, m in zip(phones, starts, ends, emotions):
+    given = list(ipa) if ipa is not None else [""] * len(phones)
+    out_p, out_s, out_e, out_m, out_i = [], [], [], [], []
+    for p, a, b, m, q in zip(phones, starts, ends, emotions, given):
         if out_p and p == PAU and out_p[-1] == PAU:
             out_e[-1] = b
             continue
@@ -47,7 +56,8 @@ def utterance(phones, starts, ends, emotions=None) -> Utterance:
         out_s.append(a)
         out_e.append(b)
         out_m.append(m)
-    return Utterance(out_p, np.array(out_s, float), np.array(out_e, float), out_m)
+        out_i.append("" if p == PAU else q)
+    return Utterance(out_p, np.array(out_s, float), np.array(out_e, float), out_m, out_i if ipa is not None else None)
 
 
 def read_utterance(phones_path: Path, tier_names=("phones",)) -> Utterance:
@@ -159,3 +169,21 @@ def set_emotions(utt: Utterance, spans: list[tuple[float, float, str, str]], emo
                         "widen it to cover the phones meant.")
         for k in np.nonzero(held)[0]:
             utt.emotions[k] = name
+
+
+def stand_in_phones(utt: Utterance, have, phone_match: str = "unseen") -> list[str]:
+    """The phone each step of ``utt`` is looked up by in a fitted model or database whose
+    phones (Festival names) are ``have``: its own phone when ``have`` holds it; else, for a step
+    pronounced in another language (:attr:`Utterance.ipa`), or for every step under
+    ``phone_match`` ``features``, the phone of ``have`` nearest its IPA in articulatory features
+    (:func:`facesynth.base.ipa.nearest_phone`; ``synthesize.phone_match`` ``viseme`` never);
+    else its own phone (the model's own fallback, by viseme, covers it). Pauses stay ``pau``."""
+    known = sorted(set(have) - {PAU})
+    out = []
+    for t, p in enumerate(utt.phones):
+        q = utt.ipa[t] if utt.ipa is not None else ""
+        if p == PAU or p in have or not known or phone_match == "viseme" or (not q and phone_match != "features"):
+            out.append(p)
+        else:
+            out.append(nearest_phone(q or festival_phone_ipa(p), known))
+    return out
