@@ -1247,17 +1247,18 @@ def tune(ctx: Context, db: Path, validation: Path, method: str | None, output: P
     finally:
         if bar is not None:
             bar.close()
-    for warning in s.warnings:
+    t = s.tuning
+    for warning in t.warnings:
         ctx.say(f"warning: {warning}")
-    ctx.say(f"{s.evaluations} evaluations in {s.seconds:.1f} s on {s.validation_sentences} validation sentences: "
-            f"error {s.validation_err_before:.4f} -> {s.validation_err_after:.4f} mm^2")
-    if s.test_ci_before is not None and s.test_ci_after is not None:  # with test takes, as the test errors
-        (lb, hb), (la, ha) = s.test_ci_before, s.test_ci_after
-        ctx.say(f"on {s.test_sentences} test sentences not used for tuning: {s.test_err_before:.4f} [{lb:.4f}, {hb:.4f}] -> "
-                f"{s.test_err_after:.4f} [{la:.4f}, {ha:.4f}] mm^2 (bootstrap 95%)")
-    ctx.say("weights: " + ", ".join(f"{k}={v:.4g}" for k, v in s.weights.items())
-            + f"; smoothing_half_window={s.smoothing_half_window}, boundary_fit_frames={s.boundary_fit_frames} -> {output}")
-    if s.boundary_fit_changed:
+    ctx.say(f"{t.evaluations} evaluations in {s.seconds:.1f} s on {t.validation_sentences} validation sentences: "
+            f"error {t.validation_err_before:.4f} -> {t.validation_err_after:.4f} mm^2")
+    if t.test_ci_before is not None and t.test_ci_after is not None:  # with test takes, as the test errors
+        (lb, hb), (la, ha) = t.test_ci_before, t.test_ci_after
+        ctx.say(f"on {t.test_sentences} test sentences not used for tuning: {t.test_err_before:.4f} [{lb:.4f}, {hb:.4f}] -> "
+                f"{t.test_err_after:.4f} [{la:.4f}, {ha:.4f}] mm^2 (bootstrap 95%)")
+    ctx.say("weights: " + ", ".join(f"{k}={v:.4g}" for k, v in t.weights.items())
+            + f"; smoothing_half_window={t.smoothing_half_window}, boundary_fit_frames={t.boundary_fit_frames} -> {output}")
+    if t.boundary_fit_changed:
         ctx.say(f"the boundary-fit length changed: run build-db (and prune) again with --config {output} for it to take effect.")
 
 
