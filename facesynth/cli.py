@@ -602,7 +602,7 @@ def suggest(ctx: Context, db: Path, phonemes: Path, at_s: float, emotions, const
     if top < 1:
         raise click.BadParameter(f"{top}: list at least one suggestion.", param_hint="--top")
     found = stage.suggest(db, phonemes, at_s, ctx.config.settings("synthesize"), ctx.config.settings("ingest"),
-                          emotions, constraints)
+                          emotions, constraints).suggestions
     rows = found.rows
     listed = stage.shown(rows, top, context_only)
     if not listed:  # only --context-only can leave nothing: every phone has at least one node
