@@ -554,29 +554,30 @@ def synthesize(ctx: Context, db: Path, method, phonemes, audio, text, language, 
                   phones_path=phonemes, emotions_path=emotions, constraints_path=constraints, audio=audio, text=text,
                   head_motion_path=head_motion_path, overwrite=ctx.overwrite)
     on_database = not _fitted(METHODS.entry(s.method))
-    for phone, how in s.unseen.items():
+    made = s.summary
+    for phone, how in made.unseen.items():
         what = f"database has no node of /{phone}/" if on_database else f"model has no {phone}"
         ctx.say(f"warning: the {what}; it will be covered by {how}.")
-    for phone, group in s.fallbacks.items():
+    for phone, group in made.fallbacks.items():
         ctx.say(f"warning: the trajectory model has no Gaussian of /{phone}/; it uses the pooled Gaussian of its "
                 f"viseme class ({group}).")
     phases = [("device choice", "device_choice_s"), ("transition costs", "transition_s"), ("step costs", "steps_s"),
               ("OpenCL set-up", "opencl_setup_s"), ("search", "search_s"), ("post-processing", "postprocess_s"),
               ("the voice", "voice_s")]
     timed = ([("read database" if on_database else "read model", s.load_s)]
-             + [(label, s.phases[key]) for label, key in phases if s.phases.get(key) is not None]
+             + [(label, made.phases[key]) for label, key in phases if made.phases.get(key) is not None]
              + [("input hashes", s.hash_wait_s), ("write", s.write_s)])
     ctx.detail("phases: " + ", ".join(f"{label} {value:.3f} s" for label, value in timed)
-               + (f"; search on {s.device}" if s.device else ""))
-    if s.cost is not None:
-        ctx.say(f"synthesized {s.phones} phones, {s.frames} frames, cost {s.cost:.2f}, "
-                f"{s.joins} non-captured joins -> {output}")
-    elif s.energy is not None:
-        ctx.detail(f"lambda {s.lam:g} per frame")
-        ctx.say(f"synthesized {s.phones} phones, {s.frames} frames by the trajectory method, "
-                f"Eq. 6 energy {s.energy:.2f} -> {output}")
+               + (f"; search on {made.device}" if made.device else ""))
+    if made.cost is not None:
+        ctx.say(f"synthesized {made.phones} phones, {made.frames} frames, cost {made.cost:.2f}, "
+                f"{made.joins} non-captured joins -> {output}")
+    elif made.energy is not None:
+        ctx.detail(f"lambda {made.lam:g} per frame")
+        ctx.say(f"synthesized {made.phones} phones, {made.frames} frames by the trajectory method, "
+                f"Eq. 6 energy {made.energy:.2f} -> {output}")
     else:
-        ctx.say(f"synthesized {s.phones} phones, {s.frames} frames by the {s.method} method -> {output}")
+        ctx.say(f"synthesized {made.phones} phones, {made.frames} frames by the {s.method} method -> {output}")
 
 
 @main.command()
@@ -601,7 +602,7 @@ def suggest(ctx: Context, db: Path, phonemes: Path, at_s: float, emotions, const
     if top < 1:
         raise click.BadParameter(f"{top}: list at least one suggestion.", param_hint="--top")
     found = stage.suggest(db, phonemes, at_s, ctx.config.settings("synthesize"), ctx.config.settings("ingest"),
-                          emotions, constraints)
+                          emotions, constraints).suggestions
     rows = found.rows
     listed = stage.shown(rows, top, context_only)
     if not listed:  # only --context-only can leave nothing: every phone has at least one node
@@ -725,13 +726,14 @@ def _fit_method(ctx: Context, method: str, db: Path, keyshapes_path: Path | None
     from facesynth.domain.methods import MethodSettings
     from facesynth.stages import fit_method as stage
 
-    s = stage.run(method, db, output, MethodSettings.of(ctx.config), keyshapes_path=keyshapes_path,
-                  overwrite=ctx.overwrite)
-    ctx.detail(f"fitted in {s.fit_s:.2f} s")
-    parts = [f"{s.phones} phones and {s.pairs} (phone, emotion) Gaussians over {s.keyshapes} key-shapes"
-             if s.keyshapes is not None else "", f"{s.labels} (phone, emotion) types" if s.labels is not None else ""]
+    m = stage.run(method, db, output, MethodSettings.of(ctx.config), keyshapes_path=keyshapes_path,
+                  overwrite=ctx.overwrite).model
+    f = m.fit
+    ctx.detail(f"fitted in {m.fit_s:.2f} s")
+    parts = [f"{f.phones} phones and {f.pairs} (phone, emotion) Gaussians over {f.keyshapes} key-shapes"
+             if f.keyshapes is not None else "", f"{f.labels} (phone, emotion) types" if f.labels is not None else ""]
     what = "; ".join(p for p in parts if p) or "fitted"
-    ctx.say(f"{method} model: {what} (fit RMS {s.fit_rms_mm:.2f} mm per marker), {s.bytes} bytes -> {output}")
+    ctx.say(f"{method} model: {what} (fit RMS {f.fit_rms_mm:.2f} mm per marker), {m.bytes} bytes -> {output}")
 
 
 @main.command()
@@ -1257,17 +1259,18 @@ def tune(ctx: Context, db: Path, validation: Path, method: str | None, output: P
     finally:
         if bar is not None:
             bar.close()
-    for warning in s.warnings:
+    t = s.tuning
+    for warning in t.warnings:
         ctx.say(f"warning: {warning}")
-    ctx.say(f"{s.evaluations} evaluations in {s.seconds:.1f} s on {s.validation_sentences} validation sentences: "
-            f"error {s.validation_err_before:.4f} -> {s.validation_err_after:.4f} mm^2")
-    if s.test_ci_before is not None and s.test_ci_after is not None:  # with test takes, as the test errors
-        (lb, hb), (la, ha) = s.test_ci_before, s.test_ci_after
-        ctx.say(f"on {s.test_sentences} test sentences not used for tuning: {s.test_err_before:.4f} [{lb:.4f}, {hb:.4f}] -> "
-                f"{s.test_err_after:.4f} [{la:.4f}, {ha:.4f}] mm^2 (bootstrap 95%)")
-    ctx.say("weights: " + ", ".join(f"{k}={v:.4g}" for k, v in s.weights.items())
-            + f"; smoothing_half_window={s.smoothing_half_window}, boundary_fit_frames={s.boundary_fit_frames} -> {output}")
-    if s.boundary_fit_changed:
+    ctx.say(f"{t.evaluations} evaluations in {s.seconds:.1f} s on {t.validation_sentences} validation sentences: "
+            f"error {t.validation_err_before:.4f} -> {t.validation_err_after:.4f} mm^2")
+    if t.test_ci_before is not None and t.test_ci_after is not None:  # with test takes, as the test errors
+        (lb, hb), (la, ha) = t.test_ci_before, t.test_ci_after
+        ctx.say(f"on {t.test_sentences} test sentences not used for tuning: {t.test_err_before:.4f} [{lb:.4f}, {hb:.4f}] -> "
+                f"{t.test_err_after:.4f} [{la:.4f}, {ha:.4f}] mm^2 (bootstrap 95%)")
+    ctx.say("weights: " + ", ".join(f"{k}={v:.4g}" for k, v in t.weights.items())
+            + f"; smoothing_half_window={t.smoothing_half_window}, boundary_fit_frames={t.boundary_fit_frames} -> {output}")
+    if t.boundary_fit_changed:
         ctx.say(f"the boundary-fit length changed: run build-db (and prune) again with --config {output} for it to take effect.")
 
 

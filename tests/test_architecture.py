@@ -228,6 +228,36 @@ def test_no_stage_imports_another_stage():
     assert crossing == []
 
 
+#: The most lines a stage module may have beside its result classes (docs/architecture.md, "How to
+#: add a stage"): a stage reads its inputs, calls the domain and writes its outputs.
+STAGE_MAX_LINES = 150
+
+
+def stage_lines(path: Path) -> int:
+    """Lines of the stage module ``path`` not counting its result classes (top-level classes whose
+    name ends with ``Result``, decorators included)."""
+    source = path.read_text(encoding="utf-8")
+    results = sum(node.end_lineno - min([node.lineno] + [d.lineno for d in node.decorator_list]) + 1
+                  for node in ast.parse(source).body
+                  if isinstance(node, ast.ClassDef) and node.name.endswith("Result") and node.end_lineno)
+    return len(source.splitlines()) - results
+
+
+def test_stage_line_counting_leaves_out_only_result_classes(tmp_path):
+    stage = tmp_path / "toy.py"
+    stage.write_text("import dataclasses\n\n\n@dataclasses.dataclass(frozen=True)\nclass ToyResult:\n    n: int\n\n\n"
+                     "class Helper:\n    pass\n\n\ndef run() -> ToyResult:\n    return ToyResult(1)\n", encoding="utf-8")
+    assert stage_lines(stage) == 14 - 3  # the decorator and the class's two lines are not counted
+
+
+def test_no_stage_module_holds_an_algorithm():
+    """A stage module is at most STAGE_MAX_LINES lines beside its result classes: the algorithm
+    lives in the domain package of its subject."""
+    long = sorted(f"{m}: {n} lines" for m, path in MODULES.items() if layer(m) == "stages"
+                  and (n := stage_lines(path)) > STAGE_MAX_LINES)
+    assert long == []
+
+
 def test_stdlib_only_modules_import_only_the_standard_library():
     for name in STDLIB_ONLY:
         if name not in MODULES:

@@ -218,7 +218,7 @@ STAGES: tuple[Stage, ...] = (
            output_options=("output",), takes="phones (or audio to align), audio (its loudness), emotions, constraints (dp)",
            paper="VI, VII-B (dp, greedy); mean, coarticulation, trajectory ([methods](methods.md))"),
     _stage("suggest", "Suggest motion nodes for a constraint at a time.",
-           "facesynth suggest db.h5 --phonemes X.TextGrid --at 1.25", _s("suggest", "suggest", "Suggestions"),
+           "facesynth suggest db.h5 --phonemes X.TextGrid --at 1.25", _s("suggest", "suggest", "SuggestResult"),
            reads=("synthesize", "ingest"), inputs=("motiondb",), takes="phones", makes="table of nodes",
            paper="VI-A"),
     _stage("expression fit", "Fit the bilinear style/content expression model.",

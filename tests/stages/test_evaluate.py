@@ -9,6 +9,7 @@ from facesynth.base.errors import InputError
 from facesynth.cli import main
 from facesynth.domain.evaluation import held_out as evaluation
 from facesynth.domain.evaluation.bootstrap import paired_difference, resamples
+from facesynth.domain.search import tuning
 from facesynth.domain.speech.utterance import Utterance
 from facesynth.stages import tune
 
@@ -80,17 +81,18 @@ def test_tune_writes_weights_synthesize_accepts(tiny_db, tiny_artifacts, tmp_pat
     out = tmp_path / "tuned.toml"
     s = tune.run(tiny_db, tiny_artifacts["corpus"], out, c.settings("tune"), c.settings("synthesize"),
                  c.settings("build_db"), c.settings("normalize"))
-    assert s.validation_err_after <= s.validation_err_before  # the search starts from the current weights
-    assert s.test_err_after is not None and s.test_sentences == 4
+    t = s.tuning
+    assert t.validation_err_after <= t.validation_err_before  # the search starts from the current weights
+    assert t.test_err_after is not None and t.test_sentences == 4
     tuned = Config.load(out).settings("synthesize")
-    assert tuned.alpha1 == pytest.approx(s.weights["alpha1"]) and 0 < tuned.alpha4 < 1
+    assert tuned.alpha1 == pytest.approx(t.weights["alpha1"]) and 0 < tuned.alpha4 < 1
     assert "validation error" in out.read_text()
 
 
 def test_vector_round_trip():
     s = Config.load().settings("synthesize")
-    back = tune.from_vector(tune.to_vector(s), s)
-    for k in tune.ALPHAS:
+    back = tuning.from_vector(tuning.to_vector(s), s)
+    for k in tuning.ALPHAS:
         assert getattr(back, k) == pytest.approx(getattr(s, k))
 
 

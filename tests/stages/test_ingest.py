@@ -174,8 +174,8 @@ def test_align_settings_reach_the_aligner_of_transcript_only_takes(corpus, tmp_p
     from click.testing import CliRunner
 
     from facesynth.cli import main
+    from facesynth.domain.capture import takes
     from facesynth.formats.labels import read_phone_segments
-    from facesynth.stages import ingest
 
     rows = _rows(corpus)
     aligned = corpus / rows[1]["alignment"]
@@ -189,7 +189,7 @@ def test_align_settings_reach_the_aligner_of_transcript_only_takes(corpus, tmp_p
         received.append(settings)
         return Alignment(read_phone_segments(aligned, ("phones",)), [], "given")
 
-    monkeypatch.setattr(ingest, "align_robust", fake_align)
+    monkeypatch.setattr(takes, "align_robust", fake_align)
     r = CliRunner().invoke(main, ["ingest", str(corpus / "manifest.csv"), "-o", str(tmp_path / "c.h5"),
                                   "--set", "align.sample_rate=8000", "--set", "align.frame_rate=50"])
     assert r.exit_code == 0, r.output

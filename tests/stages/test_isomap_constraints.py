@@ -77,7 +77,7 @@ def _expected(tiny_db, tg, text: str):
     from facesynth.base.config import Config
 
     config = Config.load()
-    found = suggest.suggest(tiny_db, tg, float(text), config.settings("synthesize"), config.settings("ingest"))
+    found = suggest.suggest(tiny_db, tg, float(text), config.settings("synthesize"), config.settings("ingest")).suggestions
     return (found.index, " ".join(str(n) for n in sorted(r.node for r in found.rows if r.context_correct)),
             {r.node: r.time_correct_frame for r in found.rows})
 
