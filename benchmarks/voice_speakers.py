@@ -33,14 +33,23 @@ from them on the built-in actress's database (``small`` preset, seed 0), at 30 f
 - ``articulation``, ``loudness``, ``phones``: the same with ``voice_recognized`` =
   articulation, loudness (the release before), off (the recognised phones alone).
 - ``given_articulation``, ``given_loudness``, ``given_phones``: where the utterance comes with its
-  spoken phones (a TextGrid), the same modes of ``synthesize.voice_given`` on those phones.
+  spoken phones (a TextGrid) or its text (``--texts``; a GRID clip's from its file name, which
+  spells its sentence), the same modes of ``synthesize.voice_given`` on those phones (the text
+  aligned to the audio, as ``synthesize --audio --text``); ``given_packaged``: the articulation
+  path with the packaged model (as ``packaged`` below).
 - ``openfacefx``: openfacefx on the recognised phones (its inner-lip gap on the built-in rig).
 - ``energy``: the loudness alone (log RMS, 0.1 s); ``voice``: the fold model's predicted opening;
   ``voice_jaw``: its predicted jawOpen.
 - ``live``: the mouth ``stream`` sends with ``stream.voice = "articulation"``
   (:class:`facesynth.domain.live.voice_frames.VoiceFrames`, 20 ms chunks, the fold's model), as its
   inner-lip gap; ``live_jaw``: its jawOpen weight; ``live_packaged``: the same with the packaged model.
-- ``packaged``: ``default`` with the packaged model (fitted on FACEGOOD: within-speaker there).
+- ``packaged``: ``default`` with the packaged model (within-speaker on the speakers it was fitted
+  on; with ``--packaged-folds`` such a speaker is scored by the packaged fit refitted without it).
+
+Features (``--features``, with ``--no-chain``; ``benchmarks/voice_features.py`` compares the runs):
+``mel`` as shipped; ``envelope`` the bands of the cepstrally liftered envelope (no pitch);
+``delta`` the bands' slopes (no channel); ``vtln`` each voice's spectrum read at its vocal-tract
+warp against the fold's training voices (``--warp-per utterance`` or ``speaker``).
 
 Scores: Pearson r of each mode's mouth opening against the real one in windows of about
 ``--window-s`` (an utterance shorter than a window is one window; frames where the real curve is
@@ -50,7 +59,7 @@ paired differences (default minus each mode) on the same resamples. With fewer t
 scored speakers there is no interval (``null``).
 
     python benchmarks/voice_speakers.py --facegood FACEGOOD_DIR [--speech-data DIR] --work WORK \\
-        [--synthetic 4] [--variant NAME] > benchmarks/voice_speakers.json
+        [--synthetic 4] [--variant NAME] [--texts benchmarks/voice_texts.json] > benchmarks/voice_speakers.json
 """
 
 from __future__ import annotations
@@ -390,6 +399,11 @@ def summarize(per_speaker: dict[str, dict[str, list[float]]], resample_count: in
             continue
         cell = paired_difference(stat(table[lead]), stat(v), k, idx)
         paired[f"{lead} - {m}"] = rounded(cell if k >= 3 else {**cell, "low": None, "high": None})
+    if "given_default" in table:  # the text-and-audio default against the other given modes
+        for m in ("given_articulation", "given_loudness", "given_phones", "given_packaged", "default"):
+            if m in table:
+                cell = paired_difference(stat(table["given_default"]), stat(table[m]), k, idx)
+                paired[f"given_default - {m}"] = rounded(cell if k >= 3 else {**cell, "low": None, "high": None})
     # modes only some speakers have (given phones): pooled over those speakers
     partial = {}
     for m in MODES:
@@ -499,7 +513,9 @@ VARIANTS: dict[str, dict] = {
 #: colouring gone); "vtln" every utterance's spectrum warped toward the training voices' vocal tract
 #: (:func:`facesynth.domain.voice.articulation.estimate_warp` of its long-term envelope against the
 #: fold's training speakers' mean, fitted and scored alike); "envelope+vtln" both.
-FEATURES = ("mel", "envelope", "delta", "vtln", "envelope+vtln")
+#: "pitch-warp" the warp from the voice's median pitch against the training voices' (formants scale
+#: with pitch across speakers: :func:`facesynth.domain.voice.tract.pitch_warp`).
+FEATURES = ("mel", "envelope", "delta", "vtln", "envelope+vtln", "pitch-warp")
 
 
 def mel_deltas(mel: np.ndarray) -> np.ndarray:
@@ -598,6 +614,7 @@ def main(argv=None) -> dict:
     for u in utts:
         u.raw = utterance_features(u, args.features, 1.0, feature_cache)
     ltes = {u.key: tract.long_term_envelope(u.samples, u.rate) for u in utts} if "vtln" in args.features else {}
+    pitches = {u.key: tract.median_pitch(u.samples, u.rate) for u in utts} if args.features == "pitch-warp" else {}
     warps: dict[str, list[float]] = {}
     by_speaker: dict[str, list[Utt]] = {}
     for u in utts:
@@ -635,10 +652,23 @@ def main(argv=None) -> dict:
         # the speakers left out with this one: itself, or its whole source (--folds source)
         fold = speaker if args.folds == "speaker" else by_speaker[speaker][0].source
         tag = args.variant if args.features == "mel" else f"{args.variant}.{args.features}" + \
-            (f".per-{args.warp_per}" if "vtln" in args.features else "")
+            (f".per-{args.warp_per}" if "warp" in args.features or "vtln" in args.features else "")
         cached = args.work / "folds" / f"{tag}.s{args.synthetic}.{fold.replace('/', '+')}.h5"
         if fold not in fold_models and args.reuse_folds and cached.exists():
             fold_models[fold] = (A.ArticulationModel.read(cached), cached)
+        if args.features == "pitch-warp":  # every utterance warped by its pitch against this fold's training voices
+            def pitch_of(names: list[Utt]) -> float | None:
+                v = [pitches[x.key] for x in names if pitches.get(x.key) is not None]
+                return float(np.median(v)) if v else None
+            trained = [pitch_of(v) for s, v in by_speaker.items() if v[0].real_voice
+                       and (s if args.folds == "speaker" else v[0].source) != fold]
+            reference_pitch = float(np.median([p for p in trained if p is not None]))
+            for u in utts:
+                p = pitch_of(by_speaker[u.speaker]) if args.warp_per == "speaker" else pitches[u.key]
+                w = round(tract.pitch_warp(p, reference_pitch), 2)
+                u.raw = utterance_features(u, args.features, w, feature_cache)
+                if u.speaker == speaker:
+                    warps.setdefault(speaker, []).append(w)
         if "vtln" in args.features:  # every utterance warped toward this fold's training voices
             reference = fold_reference(by_speaker, ltes, [s for s, v in by_speaker.items()
                                                           if (s if args.folds == "speaker" else v[0].source) != fold])
@@ -726,7 +756,7 @@ def main(argv=None) -> dict:
                                   args.seed, args.model_out, not args.no_balance) if args.model_out else None
     summary = summarize(per_speaker, args.resamples, args.seed)
     return {"benchmark": "voice_speakers", "folds": args.folds, "variant": args.variant, "fit": VARIANTS[args.variant],
-            "features": args.features, "warp_per": args.warp_per if "vtln" in args.features else None,
+            "features": args.features, "warp_per": args.warp_per if "vtln" in args.features or "warp" in args.features else None,
             "warps": {s: [round(float(np.mean(w)), 3), round(float(np.min(w)), 3), round(float(np.max(w)), 3)]
                       for s, w in sorted(warps.items())},
             "synthetic_speakers": args.synthetic,

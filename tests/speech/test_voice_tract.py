@@ -90,3 +90,16 @@ def test_no_voiced_frames_leave_the_voice_unwarped():
     silence = np.zeros(RATE)
     assert tract.long_term_envelope(silence, RATE) is None
     assert tract.estimate_warp(None, np.zeros(len(tract.WARP_GRID))) == 1.0
+
+
+@pytest.mark.parametrize("f0", [95.0, 210.0])
+def test_the_median_pitch_of_a_voice_is_its_pulse_rate(f0):
+    assert tract.median_pitch(vowels(f0), RATE) == pytest.approx(f0, rel=0.02)
+    assert tract.median_pitch(np.zeros(RATE), RATE) is None
+
+
+def test_a_higher_voice_reads_as_a_shorter_tract_within_bounds():
+    assert tract.pitch_warp(216.0, 120.0) == pytest.approx(1.8 ** tract.PITCH_TO_WARP)
+    assert tract.pitch_warp(120.0, 120.0) == 1.0
+    assert tract.pitch_warp(4000.0, 60.0) == pytest.approx(np.exp(tract.MAX_LOG_WARP))
+    assert tract.pitch_warp(None, 120.0) == 1.0

@@ -79,3 +79,40 @@ def estimate_warp(lte: np.ndarray | None, reference: np.ndarray) -> float:
         if a - 2 * b + c < 0:
             shift += 0.5 * (a - c) / (a - 2 * b + c)
     return float(np.exp(0.01 * shift))
+
+
+#: How a voice's formants scale with its pitch across speakers: women's pitch is about 1.8 times
+#: men's and their formants about 1.17 times (Peterson and Barney 1952), 1.17 = 1.8 ** 0.27.
+PITCH_TO_WARP = 0.27
+
+
+def median_pitch(samples: np.ndarray, rate: int) -> float | None:
+    """The median pitch (Hz, 60..400) of a voice's voiced frames within 30 dB of its loudest (the
+    lag of the peak of each frame's normalized autocorrelation); None with fewer than 20 of them."""
+    import scipy.fft
+
+    x = A.to_analysis_rate(samples, rate)
+    k = A.frame_count(len(x))
+    padded = np.concatenate([np.zeros(A.WIN // 2, np.float32), x.astype(np.float32), np.zeros(A.WIN, np.float32)])
+    frames = np.lib.stride_tricks.sliding_window_view(padded, A.WIN)[::A.HOP][:k]
+    raw = A.frame_features(samples, rate)
+    picked = np.flatnonzero((raw[:, A.I_VOICING] > 0.6) & (raw[:, A.I_LOG_RMS] > raw[:, A.I_LOG_RMS].max() - 3.45))
+    if len(picked) < 20:
+        return None
+    pitches = []
+    for a in range(0, len(picked), 4096):
+        f = frames[picked[a:a + 4096]].astype(np.float64)
+        f = (f - f.mean(1, keepdims=True)) * A._WINDOW
+        power = np.abs(scipy.fft.rfft(f, A.NFFT, axis=1)) ** 2
+        ac = scipy.fft.irfft(power, A.NFFT, axis=1)[:, :A.LAG_MAX + 1]
+        lags = A.LAG_MIN + np.argmax(ac[:, A.LAG_MIN:], axis=1)
+        pitches.append(A.RATE / lags)
+    return float(np.median(np.concatenate(pitches)))
+
+
+def pitch_warp(pitch: float | None, reference_pitch: float) -> float:
+    """The vocal-tract warp a voice's median ``pitch`` (Hz) implies against a reference's:
+    ``(pitch / reference_pitch) ** PITCH_TO_WARP``, within exp(+-MAX_LOG_WARP); 1.0 for None."""
+    if pitch is None or reference_pitch <= 0:
+        return 1.0
+    return float(np.exp(np.clip(PITCH_TO_WARP * np.log(pitch / reference_pitch), -MAX_LOG_WARP, MAX_LOG_WARP)))
