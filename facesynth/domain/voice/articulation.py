@@ -27,6 +27,12 @@ audio up to ``k * 10 ms + 16 ms``. The model samples these frames at fixed offse
 output frame time (:func:`context`), so the look-ahead of a prediction is ``max(offsets) + 16 ms``
 (plus the pooling of :func:`context`), independent of the output frame rate.
 
+Two alternatives of the mel bands were measured on held-out speakers and are not what a model
+reads (``docs/real-speech.md``: neither beat these): ``envelope`` (the bands of the cepstrally
+liftered log envelope, :func:`envelope_of`: no pitch harmonics) and ``warp`` (the bands and
+formant proxies read at a vocal-tract warp, :func:`warped_filterbank`,
+:mod:`facesynth.domain.voice.tract`), parameters of :func:`frame_features`.
+
 **Normalization** (:class:`Normalizer`): a speaker's voice and a microphone shift every log band by
 a constant (gain) and colour it (a filter); the mouth does not care. Each feature is standardized
 by a mean and standard deviation that are the training set's (``global``), the whole utterance's
@@ -146,7 +152,7 @@ def frame_count(n_samples: int) -> int:
 
 #: Quefrency (samples at :data:`RATE`) below which the cepstrum is kept whole by :func:`envelope_of`,
 #: and above which it is gone (a half-Hann taper between): 1.25..1.9 ms, below the pitch period of
-#: any voice up to 520 Hz, so the log envelope keeps the formants and loses the harmonics.
+#: any voice up to 530 Hz, so the log envelope keeps the formants and loses the harmonics.
 LIFTER_PASS, LIFTER_STOP = 20, 30
 _LIFTER = np.zeros(NFFT // 2 + 1, np.float32)
 _LIFTER[:LIFTER_PASS] = 1.0

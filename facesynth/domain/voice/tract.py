@@ -7,8 +7,14 @@ reference's, and the shift of best correlation is the warp's logarithm. The feat
 the voice's spectrum at ``w`` times their frequencies
 (:func:`facesynth.domain.voice.articulation.warped_filterbank`).
 
-On real speakers this did not help the articulation model (``docs/real-speech.md``: its estimate
-from a few seconds of one utterance is noisy); it is kept for the benchmark that measured it.
+A second estimate reads the warp from the voice's median pitch (:func:`median_pitch`,
+:func:`pitch_warp`): across speakers, formants scale with about the 0.27th power of the pitch.
+
+Neither helped the articulation model on real speakers held out (``docs/real-speech.md``,
+``benchmarks/voice_features.json``): the envelope's warp follows the recording more than the
+speaker, and the pitch's, though it tells women from men, leaves the r level or lower. Both are
+kept for the benchmark that measured them (``benchmarks/voice_speakers.py --features``); the
+packaged model reads unwarped features.
 """
 
 from __future__ import annotations
