@@ -7,7 +7,7 @@ For every run: its folds (``source``: one whole source left out at a time; ``spe
 speaker), its features (and ``--warp-per`` for the vocal-tract warp), the mean r over speakers
 with its 95% interval, and the paired difference from the ``mel`` run of the same folds (the mean
 over the speakers both scored, 95% bootstrap interval resampling speakers: 2000 resamples, seed 0),
-with the mean difference per source; for a warped run, the mean warp of the women's and of the
+with the mean difference per source, and every speaker's r; for a warped run, the mean warp of the women's and of the
 men's voices (from ``--speech-data``'s ``speakers.json``; FACEGOOD's performer is a woman).
 
     python benchmarks/voice_features.py --speakers SPEECH_DIR/speakers.json RUN.json ... > benchmarks/voice_features.json
@@ -52,6 +52,7 @@ def compare(runs: list[dict], sexes: dict[str, str], count: int = 2000, seed: in
             w = run["warps"]
             entry["mean_warp"] = {sex: round(float(np.mean([w[s][0] for s in w if sexes.get(s) == sex])), 3)
                                   for sex in ("F", "M") if any(sexes.get(s) == sex for s in w)}
+        entry["per_speaker"] = {s: v["voice"] for s, v in sorted(run["per_speaker"].items())}
         out.append(entry)
     return out
 
