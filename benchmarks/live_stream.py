@@ -307,7 +307,7 @@ def actress_voice(db_path: Path, corpus: Path, takes: list[str], config: Config)
     truth = TruthFolder.open(corpus, db.marker_names, config.settings("normalize"))
     model = LiveModel(db, config.settings("synthesize"), config.settings("stream"), config.settings("solve"))
     settings = MethodSettings.of(config)
-    settings = replace(settings, synthesize=replace(settings.synthesize, use_opencl=False))
+    settings = settings.replace(synthesize=replace(settings.synthesize, use_opencl=False))
     names = list(db.marker_names)
     member = methods.get("dp")
     latency, r_live, r_batch, cpu, audio_s = [], [], [], 0.0, 0.0

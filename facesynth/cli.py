@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import contextlib
 import functools
+import importlib
 import logging
 import signal
 import statistics
@@ -101,8 +102,23 @@ def _echo_lines(lines) -> None:
 
 
 class Context:
-    def __init__(self, config: Config, verbose: int, quiet: bool, overwrite: bool):
+    """What a command's body gets: its settings (only the sections it declares), the global
+    options, and its stage's declaration (:data:`facesynth.base.pipeline.STAGE`), through which it
+    calls its core: commands import no stage by hand."""
+
+    def __init__(self, config: Config, verbose: int, quiet: bool, overwrite: bool, declared: pipeline.Stage):
         self.config, self.verbose, self.quiet, self.overwrite = config, verbose, quiet, overwrite
+        self.declared = declared
+
+    def core(self, *args, **kwargs):
+        """Call the command's core (its stage's ``core``, imported now) with these arguments."""
+        return self.declared.load_core()(*args, **kwargs)
+
+    @property
+    def stage_module(self):
+        """The module of the command's core, for the few helpers its output needs (the
+        suggestions' table, the Isomap pick's CSV)."""
+        return importlib.import_module(self.declared.core.partition(":")[0])
 
     def say(self, message: str) -> None:
         if not self.quiet:
@@ -264,7 +280,7 @@ def stage(func=None, *, writes: bool = True):
             command = _command_path()
             config = Config.load(config_path, tuple(overrides))
             _check_overrides_read(command, tuple(overrides))
-            ctx = Context(config.only(READS[command]), verbose, quiet, overwrite)
+            ctx = Context(config.only(READS[command]), verbose, quiet, overwrite, pipeline.STAGE[command])
             recording: contextlib.AbstractContextManager = contextlib.nullcontext()
             if writes:
                 from facesynth.model.artifacts import recording_published
@@ -344,9 +360,7 @@ def sample_corpus_cmd(ctx: Context, out_dir: Path, preset: str, seed: int):
     Example:
       facesynth sample-corpus corpus/ --preset small --seed 0
     """
-    from facesynth.stages import sample_corpus as stage
-
-    summary = stage.run(out_dir, preset, seed, ctx.config.settings("sample_corpus"), ctx.overwrite)
+    summary = ctx.core(out_dir, preset, seed, ctx.config.settings("sample_corpus"), ctx.overwrite)
     if preset == "facegood":
         ctx.say(f"wrote {summary.takes} takes of {summary.performer}, {summary.seconds:.1f} s of speech and curves, "
                 f"to {out_dir}; ingest recognises their phones from the audio")
@@ -380,11 +394,9 @@ def align(ctx: Context, audio: Path, text: str | None, transcript: Path | None, 
       facesynth align corpus/audio/neutral_s000.wav --text "beautiful he men from began pretty strong" \\
           -o s000.TextGrid
     """
-    from facesynth.stages import align as stage_align
-
     if text is not None and transcript is not None:
         raise UsageError("give one of --text or --transcript, not both.")
-    summary = stage_align.run(audio, text if transcript is None else stage_align.read_transcript(transcript), output,
+    summary = ctx.core(audio, text if transcript is None else ctx.stage_module.read_transcript(transcript), output,
                               _with_language(ctx.config.settings("align"), language), dict_path, ctx.overwrite)
     if summary.recognized:
         ctx.say(f"recognised: {summary.recognized}")
@@ -413,9 +425,7 @@ def ingest(ctx: Context, manifest: Path, output: Path, rig: Path | None, binding
     Example:
       facesynth ingest corpus/manifest.csv -o corpus.h5
     """
-    from facesynth.stages import ingest as stage_ingest
-
-    s = stage_ingest.run(manifest, output, ctx.config.settings("ingest"), ctx.config.settings("align"), ctx.overwrite,
+    s = ctx.core(manifest, output, ctx.config.settings("ingest"), ctx.config.settings("align"), ctx.overwrite,
                          rig, binding)
     def takes(names: list[str]) -> str:
         listed = ", ".join(names[:4]) + (", ..." if len(names) > 4 else "")
@@ -447,9 +457,7 @@ def normalize(ctx: Context, corpus: Path, output: Path):
     Example:
       facesynth normalize corpus.h5 -o normalized.h5
     """
-    from facesynth.stages import normalize as stage_normalize
-
-    s = stage_normalize.run(corpus, output, ctx.config.settings("normalize"), ctx.overwrite)
+    s = ctx.core(corpus, output, ctx.config.settings("normalize"), ctx.overwrite)
     for take, marker, start, length in s.long_gaps:
         ctx.detail(f"take {take!r}, marker {marker}: gap of {length:.3f} s at {start:.3f} s is too long to fill; "
                    "PCA will project those frames from the visible markers.")
@@ -477,9 +485,7 @@ def pca(ctx: Context, normalized: Path, output: Path):
     Example:
       facesynth pca normalized.h5 -o pca.h5 --set pca.n_components=25
     """
-    from facesynth.stages import pca as stage_pca
-
-    s = stage_pca.run(normalized, output, ctx.config.settings("pca"), ctx.overwrite)
+    s = ctx.core(normalized, output, ctx.config.settings("pca"), ctx.overwrite)
     ctx.say(f"PCA: {s.components} components cover {100 * s.explained:.2f}% of the variance "
             f"(reconstruction RMS {s.rms_error_mm:.3f} mm per marker) -> {output}")
 
@@ -495,9 +501,7 @@ def build_db(ctx: Context, pca_path: Path, output: Path):
     Example:
       facesynth build-db pca.h5 -o db.h5
     """
-    from facesynth.stages import build_db as stage
-
-    s = stage.run(pca_path, output, ctx.config.settings("build_db"), ctx.overwrite)
+    s = ctx.core(pca_path, output, ctx.config.settings("build_db"), ctx.overwrite)
     ctx.say(f"built {s.nodes} motion nodes ({s.with_predecessor} with a captured predecessor); "
             f"DSC features {s.dsc_s:.2f} s, boundary states {s.boundary_s:.2f} s, write {s.write_s:.2f} s -> {output}")
 
@@ -543,13 +547,11 @@ def synthesize(ctx: Context, db: Path, method, phonemes, audio, text, language, 
           --emotions spans.txt -o motion.h5
     """
     from facesynth.domain.methods import MethodSettings, steps
-    from facesynth.stages import synthesize as stage
-
     settings = MethodSettings.of(ctx.config)
     name, warnings = steps.deprecated_search(method, search, settings.synthesize, ctx.config.given("synthesize.search"))
     for warning in warnings:
         ctx.say(f"warning: {warning}")
-    s = stage.run(db, output, settings, ctx.config.settings("ingest"),
+    s = ctx.core(db, output, settings, ctx.config.settings("ingest"),
                   _with_language(ctx.config.settings("align"), language), method=name,
                   phones_path=phonemes, emotions_path=emotions, constraints_path=constraints, audio=audio, text=text,
                   head_motion_path=head_motion_path, overwrite=ctx.overwrite)
@@ -597,26 +599,24 @@ def suggest(ctx: Context, db: Path, phonemes: Path, at_s: float, emotions, const
       facesynth suggest db.h5 --phonemes corpus/labels/sad_s017.TextGrid --at 1.25
     """
     from facesynth.base.errors import InputError
-    from facesynth.stages import suggest as stage
-
     if top < 1:
         raise click.BadParameter(f"{top}: list at least one suggestion.", param_hint="--top")
-    found = stage.suggest(db, phonemes, at_s, ctx.config.settings("synthesize"), ctx.config.settings("ingest"),
+    found = ctx.core(db, phonemes, at_s, ctx.config.settings("synthesize"), ctx.config.settings("ingest"),
                           emotions, constraints).suggestions
     rows = found.rows
-    listed = stage.shown(rows, top, context_only)
+    listed = ctx.stage_module.shown(rows, top, context_only)
     if not listed:  # only --context-only can leave nothing: every phone has at least one node
-        raise InputError(stage.no_context_message(found, at_s) + "; drop --context-only to see the time-correct nodes.")
+        raise InputError(ctx.stage_module.no_context_message(found, at_s) + "; drop --context-only to see the time-correct nodes.")
     ctx.say(f"phone {found.index} /{found.phone}/ in context {found.context}, relative time {found.relative_time:.2f}; "
             f"unconstrained optimum {found.optimum:.2f} uses node {found.optimal_node}")
     if not any(r.context_correct for r in rows):
-        ctx.say("warning: " + stage.no_context_message(found, at_s) + ".")
-    for line in stage.table(rows, top, context_only):
+        ctx.say("warning: " + ctx.stage_module.no_context_message(found, at_s) + ".")
+    for line in ctx.stage_module.table(rows, top, context_only):
         click.echo(line)
     best = listed[0]
     ctx.say(f"best: rank 1 (the first row under the header), node {best.node}, "
             f"{'context-correct' if best.context_correct else 'time-correct only'}, cost {best.cost:.2f}; to use it:")
-    ctx.say(f"  {stage.use_line(at_s, best, constraints)}")
+    ctx.say(f"  {ctx.stage_module.use_line(at_s, best, constraints)}")
     emotion_option = f" --emotions {emotions}" if emotions else ""
     ctx.say(f"  facesynth synthesize {db} --phonemes {phonemes}{emotion_option} "
             f"--constraints {constraints or 'constraints.txt'} -o constrained.h5")
@@ -639,9 +639,7 @@ def deform(ctx: Context, motion: Path, mesh: Path, binding: Path, output: Path):
     Example:
       facesynth deform motion.h5 --mesh corpus/face.obj --binding corpus/markers.csv -o anim.h5
     """
-    from facesynth.stages import deform as stage
-
-    s = stage.run(motion, mesh, binding, output, ctx.config.settings("deform"), ctx.overwrite)
+    s = ctx.core(motion, mesh, binding, output, ctx.config.settings("deform"), ctx.overwrite)
     if s.unreached:  # eyes, teeth, the back of the head: expected, so only with -v
         ctx.detail(f"{s.unreached} vertices are farther than deform.distance_threshold from every marker and stay at rest.")
     ctx.say(f"deformed {s.vertices} vertices over {s.frames} frames (marker fit RMS {s.fit_rms:.3g} mesh units) -> {output}")
@@ -672,11 +670,9 @@ def keyshapes(ctx: Context, db: Path, method, count, sheet, output: Path):
     """
     import dataclasses
 
-    from facesynth.stages import keyshapes as stage
-
     settings = ctx.config.settings("keyshapes")
     settings = dataclasses.replace(settings, **{k: v for k, v in (("method", method), ("count", count)) if v is not None})
-    s = stage.run(db, output, settings, sheet, ctx.overwrite)
+    s = ctx.core(db, output, settings, sheet, ctx.overwrite)
     per = ", ".join(f"{e} {v.count} ({v.rms_mm:.2f} mm)" for e, v in s.emotions.items())
     ctx.say(f"key-shapes by {s.method}: {per} -> {output}" + (f" (sheet {sheet})" if sheet else ""))
 
@@ -724,9 +720,7 @@ def fit_method(ctx: Context, method: str, db: Path, keyshapes_path: Path | None,
 
 def _fit_method(ctx: Context, method: str, db: Path, keyshapes_path: Path | None, output: Path) -> None:
     from facesynth.domain.methods import MethodSettings
-    from facesynth.stages import fit_method as stage
-
-    m = stage.run(method, db, output, MethodSettings.of(ctx.config), keyshapes_path=keyshapes_path,
+    m = ctx.core(method, db, output, MethodSettings.of(ctx.config), keyshapes_path=keyshapes_path,
                   overwrite=ctx.overwrite).model
     f = m.fit
     ctx.detail(f"fitted in {m.fit_s:.2f} s")
@@ -763,12 +757,10 @@ def bind(ctx: Context, capture: Path, rig, frame, up, forward, output: Path):
     """
     import dataclasses
 
-    from facesynth.stages import bind as stage
-
     settings = ctx.config.settings("bind")
     if frame is not None:
         settings = dataclasses.replace(settings, frame=frame)
-    s = stage.run(capture, output, settings, ctx.config.settings("normalize"), rig, up, forward, ctx.overwrite)
+    s = ctx.core(capture, output, settings, ctx.config.settings("normalize"), rig, up, forward, ctx.overwrite)
     for name, r in s.residual_mm.items():
         ctx.detail(f"  {name}: {r:.2f} mm from its vertex" + ("  (flagged)" if name in s.flagged else ""))
     if s.unbound:
@@ -812,10 +804,8 @@ def fit_articulation(ctx: Context, normalized: Path, corpus_path: Path, binding,
       facesynth fit-articulation normalized.h5 --corpus corpus.h5 -o articulation.h5
       facesynth synthesize db.h5 --audio corpus/audio/neutral_s016.wav --set synthesize.articulation_model=articulation.h5 -o voiced.h5
     """
-    from facesynth.stages import fit_articulation as stage
-
     c = ctx.config
-    s = stage.run(normalized, corpus_path, output, c.settings("synthesize"), c.settings("solve"), binding=binding,
+    s = ctx.core(normalized, corpus_path, output, c.settings("synthesize"), c.settings("solve"), binding=binding,
                   takes=None if takes is None else [t.strip() for t in takes.split(",") if t.strip()],
                   overwrite=ctx.overwrite)
     if not s.solved:
@@ -852,12 +842,10 @@ def solve(ctx: Context, motion: Path, rig, binding, take, neutral, output: Path)
     """
     import dataclasses
 
-    from facesynth.stages import solve as stage
-
     settings = ctx.config.settings("solve")
     if neutral is not None:
         settings = dataclasses.replace(settings, neutral=neutral)
-    s = stage.run(motion, output, settings, rig, binding, ctx.overwrite, take)
+    s = ctx.core(motion, output, settings, rig, binding, ctx.overwrite, take)
     if s.exact:
         ctx.say("note: a capture posed from curves (noise-free markers) is solved without smoothing or ridge "
                 "(solve.posed_captures).")
@@ -891,12 +879,10 @@ def retarget(ctx: Context, motion: Path, keyshapes_path: Path, rig, binding, key
     """
     import dataclasses
 
-    from facesynth.stages import retarget as stage
-
     settings = ctx.config.settings("retarget")
     if blend:
         settings = dataclasses.replace(settings, blend=blend)
-    s = stage.run(motion, keyshapes_path, output, settings, ctx.config.settings("keyshapes"), rig, binding, keymorphs,
+    s = ctx.core(motion, keyshapes_path, output, settings, ctx.config.settings("keyshapes"), rig, binding, keymorphs,
                   mesh_out, emotion, ctx.overwrite)
     ctx.say(f"retargeted {s.frames} frames through {s.keyshapes} key-shapes onto rig {s.rig} (key-shape fit RMS "
             f"{s.residual_rms_mm:.3g} mm) -> {output}" + (f", {s.blend} mesh -> {mesh_out}" if mesh_out else ""))
@@ -918,9 +904,7 @@ def rig_mesh(ctx: Context, curves: Path, rig, binding, output: Path):
       facesynth solve motion.h5 -o solved.h5
       facesynth rig-mesh solved.h5 -o solved_anim.h5
     """
-    from facesynth.stages import rig_mesh as stage
-
-    s = stage.run(curves, output, rig, binding, ctx.overwrite)
+    s = ctx.core(curves, output, rig, binding, ctx.overwrite)
     ctx.say(f"posed rig {s.rig} ({s.vertices} vertices) over {s.frames} frames -> {output}")
 
 
@@ -941,9 +925,7 @@ def openfacefx(ctx: Context, motion: Path, rig, output: Path):
       facesynth openfacefx motion.h5 -o openfacefx.h5
       facesynth render curves.h5 --compare openfacefx.h5 --view side-by-side -o compare.avi
     """
-    from facesynth.stages import openfacefx as stage
-
-    s = stage.run(motion, output, rig, ctx.overwrite)
+    s = ctx.core(motion, output, rig, ctx.overwrite)
     ctx.say(f"openfacefx lip sync of {s.phones} phones on rig {s.rig} over {s.frames} frames "
             f"({s.fps:g} frames/s) -> {output}")
 
@@ -976,12 +958,10 @@ def render(ctx: Context, anims, audios, view, compare, rig, binding, output: Pat
     """
     import dataclasses
 
-    from facesynth.stages import render as stage
-
     settings = ctx.config.settings("render")
     if view:
         settings = dataclasses.replace(settings, view=view)
-    s = stage.run(list(anims), list(audios), output, settings, list(compare), ctx.overwrite, rig, binding)
+    s = ctx.core(list(anims), list(audios), output, settings, list(compare), ctx.overwrite, rig, binding)
     for note in s.notes:  # a mesh without eye or mouth holes: expected for plain meshes, so only with -v
         ctx.detail(f"render: {note}.")
     ctx.say(f"rendered {s.frames} frames ({s.seconds:.2f} s of video, {s.frames_per_s:.1f} frames/s) -> {output}")
@@ -1013,9 +993,7 @@ def export(ctx: Context, artifact: Path, fmt: str, fps: float | None, head_motio
       facesynth export motion.h5 --format c3d -o motion.c3d
       facesynth export curves.h5 --format obj-seq -o anim_obj
     """
-    from facesynth.stages import export as stage
-
-    s = stage.run(artifact, fmt, output, ctx.config.settings("export"), fps=fps, head_motion=head_motion, audio=audio,
+    s = ctx.core(artifact, fmt, output, ctx.config.settings("export"), fps=fps, head_motion=head_motion, audio=audio,
                   mesh=mesh, overwrite=ctx.overwrite)
     folder = EXPORT_FORMATS.entry(fmt).facts.get("folder", False)
     extra = f" (+ {s.files[1].name})" if not folder and len(s.files) > 1 else ""
@@ -1054,19 +1032,17 @@ def player(ctx: Context, artifact: Path | None, audio: Path | None, motion: Path
       facesynth player curves.h5 --motion motion.h5 --audio corpus/audio/neutral_s016.wav -o player.html
       facesynth player --live ws://127.0.0.1:8765 --audio corpus/audio/neutral_s016.wav -o live.html
     """
-    from facesynth.stages import player as stage
-
     if (artifact is None) == (live_url is None):
         raise click.UsageError("give either an ARTIFACT to play or --live WS_URL (a live page), not both or neither.")
     if live_url is not None:
         if motion is not None:
             raise click.UsageError("--motion is for an ARTIFACT; a live page takes its frames from the stream.")
-        s = stage.run_live(live_url, output, audio=audio, view=ctx.config.settings("render"), overwrite=ctx.overwrite)
+        s = ctx.stage_module.run_live(live_url, output, audio=audio, view=ctx.config.settings("render"), overwrite=ctx.overwrite)
         ctx.say(f"live player for {live_url} ({s.vertices} vertices, {s.targets} ARKit morph targets, "
                 f"{s.seconds:.2f} s of speech to send) -> {output} ({s.bytes / 1e6:.1f} MB)")
         return
     assert artifact is not None
-    s = stage.run(artifact, output, audio=audio, motion=motion, view=ctx.config.settings("render"),
+    s = ctx.core(artifact, output, audio=audio, motion=motion, view=ctx.config.settings("render"),
                   overwrite=ctx.overwrite)
     ctx.say(f"player of {s.frames} frames ({s.seconds:.2f} s at {s.fps:g} frames/s, "
             f"{s.phones} phones) -> {output} ({s.bytes / 1e6:.1f} MB)")
@@ -1114,8 +1090,6 @@ def batch(ctx: Context, script: Path, db_path: Path, method: str | None, output:
     """
     import dataclasses
 
-    from facesynth.stages import batch as stage
-
     settings = ctx.config.settings("batch")
     if outputs is not None:
         kinds = tuple(k.strip() for k in outputs.split(",") if k.strip())
@@ -1141,7 +1115,7 @@ def batch(ctx: Context, script: Path, db_path: Path, method: str | None, output:
                                                ctx.config.given("synthesize.search"))
     for warning in warnings:
         ctx.say(f"warning: {warning}")
-    s = stage.run(script, db_path, output, settings, method_settings, ctx.config.settings("ingest"),
+    s = ctx.core(script, db_path, output, settings, method_settings, ctx.config.settings("ingest"),
                   ctx.config.settings("align"), ctx.config.settings("deform"), ctx.config.settings("render"),
                   method=chosen, mesh=mesh, binding=binding,
                   scheduler=scheduler, overwrite=ctx.overwrite, on_result=on_result, solve=ctx.config.settings("solve"),
@@ -1179,13 +1153,11 @@ def evaluate(ctx: Context, db: Path, heldout: Path, truth: Path | None, models: 
       facesynth evaluate db.h5 --heldout corpus.h5 --truth corpus/ -o report/
     """
     from facesynth.domain.methods import MethodSettings
-    from facesynth.stages import evaluate as stage
-
     if trajectory is not None:
         ctx.say("warning: `--trajectory` is deprecated and will go in a later release; give the model with "
                 "`--model` (it is scored by the method whose model it is).")
         models = models + (trajectory,)
-    s = stage.run(db, heldout, output, ctx.config.settings("evaluate"), MethodSettings.of(ctx.config),
+    s = ctx.core(db, heldout, output, ctx.config.settings("evaluate"), MethodSettings.of(ctx.config),
                   ctx.config.settings("normalize"), ctx.overwrite, truth=truth, models=models)
     for method, m in s.methods.items():
         f = m.get("figures", {})
@@ -1212,9 +1184,7 @@ def capture(ctx: Context, corpus: Path, db_path: Path, take: str, output: Path):
       facesynth render curves.h5 --audio corpus/audio/neutral_s016.wav --view side-by-side \\
           --compare truth_curves.h5 -o compare.avi
     """
-    from facesynth.stages import capture as stage
-
-    s = stage.run(db_path, corpus, take, output, ctx.config.settings("normalize"),
+    s = ctx.core(db_path, corpus, take, output, ctx.config.settings("normalize"),
                       ctx.config.settings("synthesize").output_fps, ctx.overwrite)
     ctx.say(f"exported take {s.take} ({s.frames} frames) -> {output}")
 
@@ -1242,8 +1212,6 @@ def tune(ctx: Context, db: Path, validation: Path, method: str | None, output: P
       facesynth synthesize db.h5 --phonemes corpus/labels/neutral_s016.TextGrid --config tuned.toml -o tuned.h5
     """
     from facesynth.base.progress import Overall
-    from facesynth.stages import tune as stage
-
     bar = None
 
     def show(done: int, total: int, err: float, best: float) -> None:
@@ -1253,7 +1221,7 @@ def tune(ctx: Context, db: Path, validation: Path, method: str | None, output: P
         bar.step(f"best {best:.4f} mm^2 (last {err:.4f})")
 
     try:
-        s = stage.run(db, validation, output, ctx.config.settings("tune"), ctx.config.settings("synthesize"),
+        s = ctx.core(db, validation, output, ctx.config.settings("tune"), ctx.config.settings("synthesize"),
                       ctx.config.settings("build_db"), ctx.config.settings("normalize"), ctx.overwrite, progress_fn=show,
                       method=method)
     finally:
@@ -1299,9 +1267,7 @@ def isomap_build(ctx: Context, db: Path, output: Path, images: Path | None):
     Example:
       facesynth isomap build db.h5 -o isomap.h5 --images isomaps/
     """
-    from facesynth.stages import isomap as stage
-
-    s = stage.run(db, output, ctx.config.settings("isomap"), images, ctx.overwrite)
+    s = ctx.core(db, output, ctx.config.settings("isomap"), images, ctx.overwrite)
     for phone, note in s.notes.items():  # small clusters get fewer neighbours: expected, so only with -v
         ctx.detail(f"/{phone}/: {note}")
     where = f"; images in {images}/index.html" if images else ""
@@ -1327,11 +1293,9 @@ def isomap_pick(ctx: Context, isomap_path: Path, phoneme: str, x: float, y: floa
       facesynth isomap db.h5 -o isomap.h5
       facesynth isomap pick isomap.h5 aa 0.5 -1.2 > frame.csv
     """
-    from facesynth.stages import isomap as stage
-
-    picked = stage.pick(isomap_path, phoneme, x, y, pca_map)
+    picked = ctx.core(isomap_path, phoneme, x, y, pca_map)
     ctx.detail(f"triangle of frames {picked.corners} (nodes {picked.nodes}), weights {picked.weights}")
-    _echo_lines(stage.markers_csv(picked.markers, picked.marker_names))
+    _echo_lines(ctx.stage_module.markers_csv(picked.markers, picked.marker_names))
 
 
 @isomap.command("page")
@@ -1357,9 +1321,7 @@ def isomap_page(ctx: Context, isomap_path: Path, db: Path, phonemes: Path, emoti
       facesynth isomap page isomap.h5 db.h5 --phonemes corpus/labels/neutral_s016.TextGrid \\
           --motion motion.h5 -o constraints.html
     """
-    from facesynth.stages import isomap as stage
-
-    s = stage.page(isomap_path, db, phonemes, output, ctx.config.settings("isomap"), ctx.config.settings("ingest"),
+    s = ctx.core(isomap_path, db, phonemes, output, ctx.config.settings("isomap"), ctx.config.settings("ingest"),
                    emotions, constraints, motion, ctx.overwrite)
     if s.missing:
         ctx.say(f"warning: the database has no node of {', '.join('/' + p + '/' for p in s.missing)}; "
@@ -1423,9 +1385,7 @@ def expression_fit(ctx: Context, normalized: Path, output: Path):
     Example:
       facesynth expression fit normalized.h5 -o expr.h5
     """
-    from facesynth.stages import expression as stage
-
-    s = stage.fit(normalized, output, ctx.config.settings("expression"), ctx.overwrite)
+    s = ctx.core(normalized, output, ctx.config.settings("expression"), ctx.overwrite)
     for note in s.skipped:
         ctx.detail(f"skipped {note}.")
     for n, err in enumerate(s.errors, 1):
@@ -1447,9 +1407,7 @@ def expression_analyze(ctx: Context, model: Path, motion: Path):
       facesynth expression fit normalized.h5 -o expr.h5
       facesynth expression analyze expr.h5 motion.h5 > styles.csv
     """
-    from facesynth.stages import expression as stage
-
-    _echo_lines(stage.analyze(model, motion, ctx.config.settings("expression")))
+    _echo_lines(ctx.core(model, motion, ctx.config.settings("expression")))
 
 
 @expression.command("restyle")
@@ -1474,11 +1432,9 @@ def expression_restyle(ctx: Context, model: Path, motion: Path, to, emotions, in
       echo "0.5 1.5 angry" > spans.txt
       facesynth expression restyle expr.h5 motion.h5 --emotions spans.txt --intensity 1 -o angry.h5
     """
-    from facesynth.stages import expression as stage
-
     if (to is None) == (emotions is None):
         raise UsageError("give exactly one of --to or --emotions.")
-    s = stage.restyle(model, motion, output, ctx.config.settings("expression"), ctx.config.settings("ingest"), to=to,
+    s = ctx.core(model, motion, output, ctx.config.settings("expression"), ctx.config.settings("ingest"), to=to,
                       intensity=intensity, emotions_path=emotions, overwrite=ctx.overwrite)
     ctx.say(f"restyled {s.frames} frames (mostly {s.from_emotion} before) to {to or emotions} at intensity {intensity:g}; "
             f"RMS marker change {s.change_mm:.2f} mm -> {output}")
@@ -1506,9 +1462,7 @@ def head_motion(ctx: Context, db: Path, audio: Path, corpus_path: Path, output: 
       facesynth deform moving.h5 --mesh corpus/face.obj --binding corpus/markers.csv \\
           --set deform.apply_head_motion=true -o moving_anim.h5
     """
-    from facesynth.stages import head_motion as stage
-
-    s = stage.run(db, corpus_path, audio, output, ctx.config.settings("head_motion"), ctx.overwrite)
+    s = ctx.core(db, corpus_path, audio, output, ctx.config.settings("head_motion"), ctx.overwrite)
     for warning in s.warnings:
         ctx.say(f"warning: {warning}")
     ctx.say(f"head motion for {s.seconds:.2f} s from {s.segments} pitch segments ({s.consecutive} joins "
@@ -1546,15 +1500,13 @@ def stream(ctx: Context, db_path: Path, audio: str, serve: str | None, livelink:
       facesynth stream db.h5 --audio corpus/audio/neutral_s016.wav > frames.jsonl
     """
     from facesynth.domain.methods import MethodSettings
-    from facesynth.stages import stream as stage
-
     c = ctx.config
-    model = stage.load_model(db_path, MethodSettings.of(c), c.settings("stream"), c.settings("solve"), method, lookahead)
+    model = ctx.stage_module.load_model(db_path, MethodSettings.of(c), c.settings("stream"), c.settings("solve"), method, lookahead)
     if serve is not None:
-        stage.serve(model, c.settings("align"), serve, livelink=livelink, ready=ctx.say, workers=workers)
+        ctx.stage_module.serve(model, c.settings("align"), serve, livelink=livelink, ready=ctx.say, workers=workers)
         ctx.say("stopped.")
         return
-    frames = stage.run(model, c.settings("align"), audio, click.echo, livelink=livelink, markers=markers,
+    frames = ctx.core(model, c.settings("align"), audio, click.echo, livelink=livelink, markers=markers,
                        realtime=realtime)
     ctx.detail(f"{frames} frames")
 
@@ -1574,14 +1526,12 @@ def prune(ctx: Context, db_path: Path, remove: str | None, auto: bool, reason: s
       facesynth prune db.h5 --auto -o db_clean.h5
       facesynth prune db.h5 --remove 12,40-42 --reason "lip marker swap" -o db_hand.h5
     """
-    from facesynth.stages import prune as stage
-
-    s = stage.run(db_path, output, ctx.config.settings("prune"), remove, auto, reason, ctx.overwrite)
+    s = ctx.core(db_path, output, ctx.config.settings("prune"), remove, auto, reason, ctx.overwrite)
     if not s.removed:
         ctx.say("nothing to remove; no output written.")
         return
     if auto:
-        ctx.say("found " + ", ".join(f"{v} {k}" for k, v in stage.count_by_kind(s.found).items()))
+        ctx.say("found " + ", ".join(f"{v} {k}" for k, v in ctx.stage_module.count_by_kind(s.found).items()))
         ctx.detail("removed: " + ",".join(str(i) for i in s.found))
     ctx.say(f"removed {s.removed} nodes, kept {s.kept} ({s.links_cut} captured links cut) -> {output}")
 

@@ -274,7 +274,7 @@ def test_coarticulation_takes_the_phone_nearest_in_features_for_a_foreign_phone_
     from facesynth.stages import fit_method
 
     every = MethodSettings.of(config)
-    quick = dataclasses.replace(every, coarticulation=dataclasses.replace(every.coarticulation, iterations=5))
+    quick = every.replace(coarticulation=dataclasses.replace(every.coarticulation, iterations=5))
     fit_method.run("coarticulation", tiny_db, tmp_path / "coart.h5", quick)
     model = CoarticulationModel.read(tmp_path / "coart.h5")
     assert not any(label.split("|")[0] == "sh" for label in model.labels)
@@ -282,5 +282,5 @@ def test_coarticulation_takes_the_phone_nearest_in_features_for_a_foreign_phone_
     as_s = utterance(["pau", "ih", "s", "pau"], [0.0, 0.2, 0.3, 0.45], [0.2, 0.3, 0.45, 0.7])
     got = method.synthesize(model, _ich(True), every).motion.markers
     assert np.array_equal(got, method.synthesize(model, as_s, every).motion.markers)
-    paper = dataclasses.replace(every, synthesize=dataclasses.replace(every.synthesize, phone_match="viseme"))
+    paper = every.replace(synthesize=dataclasses.replace(every.synthesize, phone_match="viseme"))
     assert not np.array_equal(got, method.synthesize(model, _ich(True), paper).motion.markers)  # the mean of every phone

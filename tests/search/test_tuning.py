@@ -86,7 +86,7 @@ def test_config_text_loads_back_as_the_tuned_settings(tmp_path):
     assert "3.0000 [2.8000, 3.2000] -> 2.5000 [2.3000, 2.7000]" in text
     loaded = Config.load(path)
     assert {k: getattr(loaded.settings("synthesize"), k) for k in tuning.WEIGHTS} == {k: 0.5 for k in tuning.WEIGHTS}
-    assert loaded.settings("synthesize").search == "greedy"  # another search than the DP's is named
+    assert loaded.settings("synthesize").method == "greedy"  # another member than the DP is named
     assert loaded.settings("synthesize").smoothing_half_window == 6
     assert loaded.settings("build_db").boundary_fit_frames == 5
 
