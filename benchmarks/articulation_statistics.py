@@ -180,7 +180,7 @@ def calibration_distance(actress: dict, real: dict) -> float:
 def quick_actress(settings, lip_markers: list[str], takes: int = 24, seed: int = 5) -> dict:
     """The actress's statistics from ``takes`` performances (sentences of the ``small`` preset's
     length, the four emotions in turn) with ``settings``, without writing a corpus."""
-    from facesynth.domain.corpus.articulation import ContactSolver
+    from facesynth.domain.corpus.actress_mouth import ContactSolver
     from facesynth.domain.corpus.generate import CAPTURE_FPS, PRESETS, perform
     from facesynth.domain.corpus.nonspeech import EMOTIONS
     from facesynth.domain.corpus.speech import STYLES, design_sentences, synthesize_audio

@@ -32,10 +32,10 @@ OUTPUTS = ("motion", "curves", "arkit-csv", "gltf", "usd", "avi", "anim")
 
 
 def measure(corpus: Path, db: Path, take: str, work: Path, repeats: int) -> dict:
+    from facesynth.domain.batch.job import prepare
     from facesynth.domain.batch.line import run_line
     from facesynth.domain.batch.script import read_script
-    from facesynth.domain.exports import usd
-    from facesynth.stages import batch
+    from facesynth.formats import usd
 
     row = next(r for r in csv.DictReader(open(corpus / "manifest.csv", encoding="utf-8")) if r["take"] == take)
     script = work / "script.csv"
@@ -54,7 +54,7 @@ def measure(corpus: Path, db: Path, take: str, work: Path, repeats: int) -> dict
         for _ in range(repeats):
             out = work / "lines"
             shutil.rmtree(out, ignore_errors=True)
-            _, job = batch.prepare(script, db, out, *values, mesh=corpus / "face.obj", binding=corpus / "markers.csv")
+            _, job = prepare(script, db, out, *values, mesh=corpus / "face.obj", binding=corpus / "markers.csv")
             started = time.perf_counter()
             r = run_line(line, job)
             walls.append(time.perf_counter() - started)

@@ -32,12 +32,11 @@ from pathlib import Path
 import numpy as np
 
 from facesynth.base.config import Config
-from facesynth.domain.expression import bilinear
+from facesynth.domain.expression import bilinear, training
+from facesynth.domain.head_motion import from_pitch
 from facesynth.model.corpus import Corpus
 from facesynth.model.frames import NormalizedFrames, relative_to_take
 from facesynth.model.motiondb import MotionDatabase
-from facesynth.stages import expression as expr_stage
-from facesynth.stages import head_motion as head_stage
 
 HELD_OUT = ("val", "test")
 INTENSITIES = (0.25, 0.5, 1.0)
@@ -73,8 +72,8 @@ def restyle_eval(norm: NormalizedFrames, config: Config, rng: np.random.Generato
     from sklearn.linear_model import LogisticRegression
 
     settings = config.settings("expression")
-    X, emotions, _, _ = expr_stage.aligned_data(norm, settings.splits, settings.frame_step)
-    model = expr_stage.fit_model(X, emotions, settings)
+    X, emotions, _, _ = training.aligned_data(norm, settings.splits, settings.frame_step)
+    model = training.fit_model(X, emotions, settings)
     # the classifier: captured training frames (every 4th, 30 Hz), in the model's PCA coefficients
     takes, fr = norm.takes, norm.frames
     feats, labels = [], []
@@ -86,7 +85,7 @@ def restyle_eval(norm: NormalizedFrames, config: Config, rng: np.random.Generato
             labels += [takes.emotion[i]] * len(m)
     clf = LogisticRegression(max_iter=2000).fit(np.concatenate(feats), labels)
     step = max(1, int(round(fr.fps / 30)))
-    blocks, emos, used, _ = expr_stage.aligned_blocks(norm, HELD_OUT, step)
+    blocks, emos, used, _ = training.aligned_blocks(norm, HELD_OUT, step)
     assert emos == emotions, (emos, emotions)
     neutral = emotions.index("neutral")
     rows = {"baseline_neutral": []} | {f"restyled_{a:g}": [] for a in INTENSITIES}
@@ -144,10 +143,10 @@ def head_eval(work: Path, config: Config, rng: np.random.Generator, plot: Path |
     db = MotionDatabase.read(work / "db.h5")
     corpus = Corpus.read(work / "corpus.h5")
     norm = NormalizedFrames.read(work / "normalized.h5")
-    lib = head_stage.library(db, corpus, work / "db.h5", work / "corpus.h5", s)
+    lib = from_pitch.library(db, corpus, work / "db.h5", work / "corpus.h5", s)
     rel_r, rel_t = relative_to_take(norm.frames.head_rotation, norm.frames.head_translation,
                                     [norm.takes.frames(i) for i in range(len(norm.takes))])
-    truth_all = head_stage.head_channels(rel_r, rel_t)
+    truth_all = from_pitch.head_channels(rel_r, rel_t)
     methods = ("method", "no_motion", "random_segments")
     rms = {m: [] for m in methods}
     speed = {m: [] for m in methods}
@@ -161,10 +160,10 @@ def head_eval(work: Path, config: Config, rng: np.random.Generator, plot: Path |
         a = int(corpus.audio_start[k])
         samples = corpus.audio[a:a + int(corpus.audio_count[k])]
         dur = len(samples) / corpus.sample_rate
-        p = head_stage.clean_pitch(samples, corpus.sample_rate, s)
+        p = from_pitch.clean_pitch(samples, corpus.sample_rate, s)
         truth_c = truth_all[norm.takes.frames(i)]
-        res, _ = head_stage.synthesize(lib, p, dur, s, exclude={norm.takes.sentence[i]})
-        rnd, _ = head_stage.synthesize(lib, p, dur, s, exclude={norm.takes.sentence[i]}, random=rng)
+        res, _ = from_pitch.synthesize(lib, p, dur, s, exclude={norm.takes.sentence[i]})
+        rnd, _ = from_pitch.synthesize(lib, p, dur, s, exclude={norm.takes.sentence[i]}, random=rng)
         T = len(res.head)
         src = np.arange(len(truth_c)) / norm.frames.fps
         truth = np.stack([np.interp(np.arange(T) / s.fps, src, truth_c[:, d]) for d in range(6)], 1)

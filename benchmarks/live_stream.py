@@ -67,13 +67,13 @@ from facesynth.base.config import Config
 from facesynth.base.phonemes import PAU
 from facesynth.domain import methods
 from facesynth.domain.evaluation.held_out import TruthFolder
-from facesynth.domain.live.core import LiveModel
 from facesynth.domain.live.session import Session
-from facesynth.domain.methods import MethodSettings, core
+from facesynth.domain.live.synthesizer import LiveModel
+from facesynth.domain.methods import MethodSettings, steps
 from facesynth.domain.methods.trajectory import synthesize_motion
 from facesynth.domain.postprocess.concatenation import downsample
-from facesynth.domain.search.inputs import read_utterance, utterance
 from facesynth.domain.search.synthesis import synthesize
+from facesynth.domain.speech.utterance import read_utterance, utterance
 from facesynth.model.motiondb import MotionDatabase
 from facesynth.model.trajectory import TrajectoryModel
 
@@ -307,7 +307,7 @@ def actress_voice(db_path: Path, corpus: Path, takes: list[str], config: Config)
     truth = TruthFolder.open(corpus, db.marker_names, config.settings("normalize"))
     model = LiveModel(db, config.settings("synthesize"), config.settings("stream"), config.settings("solve"))
     settings = MethodSettings.of(config)
-    settings = replace(settings, synthesize=replace(settings.synthesize, use_opencl=False))
+    settings = settings.replace(synthesize=replace(settings.synthesize, use_opencl=False))
     names = list(db.marker_names)
     member = methods.get("dp")
     latency, r_live, r_batch, cpu, audio_s = [], [], [], 0.0, 0.0
@@ -318,8 +318,8 @@ def actress_voice(db_path: Path, corpus: Path, takes: list[str], config: Config)
         latency.append(lat)
         cpu += t_cpu
         audio_s += len(pcm) / 32000
-        read = core.read_utterance(config.settings("ingest"), audio=wav, align=config.settings("align"))
-        batch = core.synthesize_utterance(member, db, read, settings).motion.markers
+        read = steps.read_utterance(config.settings("ingest"), audio=wav, align=config.settings("align"))
+        batch = steps.synthesize_utterance(member, db, read, settings).motion.markers
         clean, _ = truth.clean(take, names, db.reference)
         clean = downsample(clean, db.fps, model.stream.fps)
         n = min(len(clean), len(live), len(batch))

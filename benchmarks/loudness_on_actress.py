@@ -30,7 +30,7 @@ from facesynth.base.config import Config
 from facesynth.domain import methods
 from facesynth.domain.evaluation.bootstrap import interval, paired_difference, resamples
 from facesynth.domain.evaluation.held_out import TruthFolder, heldout
-from facesynth.domain.methods import MethodSettings, core
+from facesynth.domain.methods import MethodSettings, steps
 from facesynth.domain.speech.loudness import lip_gaps
 from facesynth.formats.audio import read_audio
 from facesynth.model.motiondb import MotionDatabase
@@ -62,7 +62,7 @@ def main(argv=None) -> dict:
         audio = read_audio(args.work / "corpus" / "audio" / f"{s.take}.wav")
         true_gap = lip_gaps(s.clean, db.marker_names, lips).astype(np.float64)
         for name, given in (("phones", None), ("audio", audio)):
-            motion = core.synthesize(member, source, s.utterance, settings, prepared=prepared, audio=given).motion
+            motion = steps.synthesize(member, source, s.utterance, settings, prepared=prepared, audio=given).motion
             gap = lip_gaps(motion.markers_capture, motion.marker_names, lips).astype(np.float64)
             n = min(len(gap), len(true_gap))
             rows[name]["r"].append(float(np.corrcoef(gap[:n], true_gap[:n])[0, 1]))

@@ -367,7 +367,7 @@ def voice_method(samples: np.ndarray, rate: int, n: int) -> dict[str, np.ndarray
     """The packaged articulation model's own curves (n,) for a take's audio (opening, jawOpen,
     mouthFunnel, mouthPucker): what the voice alone says, before any motion takes it in (in-sample
     on FACEGOOD: the packaged model is fitted on all its takes)."""
-    from facesynth.domain.speech import articulation
+    from facesynth.domain.voice import articulation
     from facesynth.model.articulation import ArticulationModel
 
     model = ArticulationModel.read(ARTICULATION_MODEL)
@@ -379,7 +379,7 @@ def actress_mean_method(database, segs: list[Segment], n: int, lip_markers) -> d
     """The actress's per-phone mean pose (``facesynth evaluate``'s ``baseline``) as a mouth opening (n,)."""
     from facesynth.domain.evaluation.held_out import lip_gaps
     from facesynth.domain.methods.mean import mean_pose_markers
-    from facesynth.domain.search.inputs import utterance
+    from facesynth.domain.speech.utterance import utterance
 
     utt = utterance([s.label for s in segs], np.array([s.start for s in segs]), np.array([s.end for s in segs]))
     gap = lip_gaps(mean_pose_markers(database, utt, by_emotion=False), list(database.marker_names), lip_markers)

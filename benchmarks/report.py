@@ -133,11 +133,18 @@ QUALITY = [
 ]
 
 
+def _baseline(ev: dict) -> dict:
+    """The per-phoneme mean pose's row of an ``evaluate`` metrics.json: ``mean_per_phone`` (the
+    ``mean`` method's per-phone variant), ``baseline`` in reports written before rows took their
+    method's name."""
+    return ev["mean_per_phone"] if "mean_per_phone" in ev else ev["baseline"]
+
+
 def seed_figures(raw: dict) -> dict:
     """The quality figures of one seed (keys of QUALITY) from its raw outputs: the
     ``evaluate`` metrics.json, prune_auto.py and search_comparison.py JSON, the tune
     summary, the PCA's explained variance fraction and the corpus and database sizes."""
-    ev = raw["evaluate"]
+    ev = {**raw["evaluate"], "baseline": _baseline(raw["evaluate"])}
     f = {}
     for m in ("dp", "baseline"):
         o = ev[m]["overall"]
@@ -178,7 +185,7 @@ def seed_figures(raw: dict) -> dict:
 
 def sentence_rows(raw: dict) -> list[dict]:
     """One row per held-out sentence of a seed: frames and both methods' Eq. 13 error (mm²)."""
-    dp, base = raw["evaluate"]["dp"]["per_sentence"], raw["evaluate"]["baseline"]["per_sentence"]
+    dp, base = raw["evaluate"]["dp"]["per_sentence"], _baseline(raw["evaluate"])["per_sentence"]
     return [{"seed": raw["seed"], "take": a["take"], "frames": a["frames"], "dp_err_mm2": a["err_mm2"],
              "baseline_err_mm2": b["err_mm2"]} for a, b in zip(dp, base)]
 
@@ -199,7 +206,7 @@ def method_figures(raws: list[dict]) -> list[dict]:
 
 def method_tables(methods: list[dict]) -> list[str]:
     """Markdown lines: for each seed, methods x figures with intervals and the paired differences."""
-    from facesynth.stages.evaluate import figure_rows
+    from facesynth.domain.evaluation.report import figure_rows
 
     lines = []
     for entry in methods:

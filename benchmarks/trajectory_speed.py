@@ -32,7 +32,7 @@ from facesynth.domain.methods.trajectory import (
     solve,
     synthesize_motion,
 )
-from facesynth.domain.search.inputs import utterance
+from facesynth.domain.speech.utterance import utterance
 from facesynth.model.trajectory import TrajectoryModel
 
 

@@ -19,7 +19,7 @@ from pathlib import Path
 import numpy as np
 from scipy.stats import rankdata
 
-from facesynth.domain.search.pairs import node_features
+from facesynth.domain.search.pairs import node_features, pair_terms
 from facesynth.model.motiondb import MotionDatabase
 
 
@@ -48,7 +48,7 @@ def measure(db_path: Path, any_phone: bool, seed: int, boot: int = 500) -> dict:
     cont = [np.empty(len(j)) for _ in names]
     disc = [np.empty(len(j)) for _ in names]
     for n in range(len(j)):
-        a = features.terms(np.array([i[n]]), np.array([j[n], k[n]]))
+        a = pair_terms(features, np.array([i[n]]), np.array([j[n], k[n]]))
         for t in range(3):
             cont[t][n], disc[t][n] = a[t][0, 0], a[t][0, 1]
     for t, name in enumerate(names):

@@ -27,7 +27,7 @@ from pathlib import Path
 import numpy as np
 
 from facesynth.domain.evaluation.bootstrap import interval, resamples
-from facesynth.domain.speech import articulation as A
+from facesynth.domain.voice import articulation as A
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 

@@ -1,5 +1,5 @@
 """The voice's articulation on real speech (issue 42, step 1): the acoustic articulation model
-(:mod:`facesynth.domain.speech.articulation`) fitted on FACEGOOD's calibration takes and scored on
+(:mod:`facesynth.domain.voice.articulation`) fitted on FACEGOOD's calibration takes and scored on
 its fair takes, against the voice's loudness alone; then leave-one-take-out over all seven takes.
 
 FACEGOOD (one speaker, Mandarin, ARKit-like curves at 30 frames/s; ``--data`` laid out as for
@@ -37,8 +37,8 @@ import numpy as np
 
 from facesynth.base.hashing import sha256_of
 from facesynth.domain.evaluation.bootstrap import interval, paired_difference, resamples
-from facesynth.domain.speech import articulation as A
 from facesynth.domain.speech.loudness import envelope
+from facesynth.domain.voice import articulation as A
 from facesynth.formats.audio import read_audio
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
@@ -50,7 +50,7 @@ CALIBRATION = ("1114_2_01", "1114_2_02", "1114_2_03")
 FAIR = ("1114_2_04", "1114_2_05", "1114_3_15")
 ALL = ("1114_2_01", "1114_2_02", "1114_2_03", "1114_2_04", "1114_2_05", "1114_3_15", "1114_3_16")
 #: The model's targets: the real channels, and the closure scores made of the real opening
-#: (:func:`facesynth.domain.speech.articulation.closure_target`: every closure, and the closings
+#: (:func:`facesynth.domain.voice.articulation.closure_target`: every closure, and the closings
 #: within speech), which the fusion's closures come from.
 TARGETS = ("opening", "closure", "closing", "jawOpen", "mouthFunnel", "mouthPucker")
 #: The channels the loudness envelope alone is scored on (it says nothing of rounding).

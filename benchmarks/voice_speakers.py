@@ -14,12 +14,12 @@ Data (real voices only are scored; ``--work`` caches everything per utterance):
   a list of ``{"source", "speaker", "sex", "language", ...}``) labels the speakers; a source
   ``facegood`` there is skipped when ``--facegood`` is given (read with all its channels).
 - ``--synthetic N``: N synthetic speakers made from the training speakers' voices by
-  :mod:`facesynth.domain.speech.voices` (vocal-tract length, pitch, microphone): training only, never
+  :mod:`facesynth.domain.voice.synthetic` (vocal-tract length, pitch, microphone): training only, never
   scored (they teach invariance; they are no evidence).
 
 Per held-out speaker (every real speaker in turn), the articulation model is fitted on every other
 real speaker (plus the synthetic speakers made of *their* voices), with the settings of
-:func:`facesynth.domain.speech.articulation.fit` (``--variant`` changes them, below). The targets
+:func:`facesynth.domain.voice.articulation.fit` (``--variant`` changes them, below). The targets
 of each training speaker are its curves mapped so that its 5th..95th percentiles fall on FACEGOOD's
 (the units live frames use); a curve a source lacks is left out of that target's fit.
 
@@ -29,18 +29,27 @@ from them on the built-in actress's database (``small`` preset, seed 0), at 30 f
 
 - ``default``: ``synthesize --audio`` as configured (``synthesize.voice_recognized`` and its
   settings), the fold's model as ``synthesize.articulation_model``; the voice step is
-  :func:`facesynth.domain.methods.voice.apply` run on the DP's motion, as ``synthesize`` runs it.
+  :func:`facesynth.domain.voice.fusion.apply` run on the DP's motion, as ``synthesize`` runs it.
 - ``articulation``, ``loudness``, ``phones``: the same with ``voice_recognized`` =
   articulation, loudness (the release before), off (the recognised phones alone).
 - ``given_articulation``, ``given_loudness``, ``given_phones``: where the utterance comes with its
-  spoken phones (a TextGrid), the same modes of ``synthesize.voice_given`` on those phones.
+  spoken phones (a TextGrid) or its text (``--texts``; a GRID clip's from its file name, which
+  spells its sentence), the same modes of ``synthesize.voice_given`` on those phones (the text
+  aligned to the audio, as ``synthesize --audio --text``); ``given_packaged``: the articulation
+  path with the packaged model (as ``packaged`` below).
 - ``openfacefx``: openfacefx on the recognised phones (its inner-lip gap on the built-in rig).
 - ``energy``: the loudness alone (log RMS, 0.1 s); ``voice``: the fold model's predicted opening;
   ``voice_jaw``: its predicted jawOpen.
 - ``live``: the mouth ``stream`` sends with ``stream.voice = "articulation"``
-  (:class:`facesynth.domain.live.voice.VoiceFrames`, 20 ms chunks, the fold's model), as its
+  (:class:`facesynth.domain.live.voice_frames.VoiceFrames`, 20 ms chunks, the fold's model), as its
   inner-lip gap; ``live_jaw``: its jawOpen weight; ``live_packaged``: the same with the packaged model.
-- ``packaged``: ``default`` with the packaged model (fitted on FACEGOOD: within-speaker there).
+- ``packaged``: ``default`` with the packaged model (within-speaker on the speakers it was fitted
+  on; with ``--packaged-folds`` such a speaker is scored by the packaged fit refitted without it).
+
+Features (``--features``, with ``--no-chain``; ``benchmarks/voice_features.py`` compares the runs):
+``mel`` as shipped; ``envelope`` the bands of the cepstrally liftered envelope (no pitch);
+``delta`` the bands' slopes (no channel); ``vtln`` each voice's spectrum read at its vocal-tract
+warp against the fold's training voices (``--warp-per utterance`` or ``speaker``).
 
 Scores: Pearson r of each mode's mouth opening against the real one in windows of about
 ``--window-s`` (an utterance shorter than a window is one window; frames where the real curve is
@@ -50,7 +59,7 @@ paired differences (default minus each mode) on the same resamples. With fewer t
 scored speakers there is no interval (``null``).
 
     python benchmarks/voice_speakers.py --facegood FACEGOOD_DIR [--speech-data DIR] --work WORK \\
-        [--synthetic 4] [--variant NAME] > benchmarks/voice_speakers.json
+        [--synthetic 4] [--variant NAME] [--texts benchmarks/voice_texts.json] > benchmarks/voice_speakers.json
 """
 
 from __future__ import annotations
@@ -70,8 +79,9 @@ from facesynth.base.config import Config, settings_json
 from facesynth.base.errors import InputError
 from facesynth.base.hashing import sha256_of
 from facesynth.domain.evaluation.bootstrap import interval, paired_difference, resamples
-from facesynth.domain.speech import articulation as A
 from facesynth.domain.speech.loudness import envelope, lip_gaps
+from facesynth.domain.voice import articulation as A
+from facesynth.domain.voice import tract
 from facesynth.formats.audio import read_audio
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
@@ -85,7 +95,7 @@ TARGETS = ("opening", "closure", "closing", "jawOpen", "mouthFunnel", "mouthPuck
 #: Every mode, in table order (module docstring).
 MODES = ("default", "articulation", "loudness", "phones", "openfacefx", "energy", "voice", "voice_jaw", "live",
          "live_jaw", "live_packaged",
-         "packaged", "given_default", "given_articulation", "given_loudness", "given_phones")
+         "packaged", "given_default", "given_articulation", "given_loudness", "given_phones", "given_packaged")
 FACEGOOD_SPEAKER = "facegood/shirley"
 #: FACEGOOD's takes used for no choice (docs/real-speech.md).
 FACEGOOD_FAIR = ("1114_2_04", "1114_2_05", "1114_3_15")
@@ -109,6 +119,8 @@ class Utt:
     n: int
     real: dict[str, np.ndarray]
     given_phones: Path | None = None
+    #: what it says (``--texts``; GRID's from its file name): the text-and-audio modes align to it
+    text: str | None = None
     #: a real voice (scored) or the virtual actress's synthetic one (training only)
     real_voice: bool = True
     raw: np.ndarray = field(default_factory=lambda: np.zeros((0, A.N_FEATURES), np.float32))
@@ -177,6 +189,33 @@ def speech_data_utterances(root: Path, skip: tuple[str, ...] = (), only: list[st
             out.append(Utt(source, f"{source}/{npz.parent.name}", npz.stem, wav, samples, rate, n, real,
                            given if given.exists() else None))
     return out
+
+
+#: GRID's sentences are its file names: command, colour, preposition, letter, digit, adverb
+#: (Cooke et al. 2006), one letter each (the digit a number, z for zero).
+GRID_WORDS = ({"b": "bin", "l": "lay", "p": "place", "s": "set"}, {"b": "blue", "g": "green", "r": "red", "w": "white"},
+              {"a": "at", "b": "by", "i": "in", "w": "with"}, None,
+              {**{str(i): w for i, w in enumerate("zero one two three four five six seven eight nine".split())}, "z": "zero"},
+              {"a": "again", "n": "now", "p": "please", "s": "soon"})
+
+
+def grid_text(name: str) -> str | None:
+    """What a GRID clip says, from its name (``bbaf2n`` -> "bin blue at f two now"; a prefix before
+    the last ``_`` is ignored); None for a name that is not a GRID sentence code."""
+    code = name.rsplit("_", 1)[-1].lower()
+    if len(code) != 6:
+        return None
+    words = []
+    for ch, table in zip(code, GRID_WORDS):
+        if table is None:
+            if not ch.isalpha():
+                return None
+            words.append(ch)
+        elif ch in table:
+            words.append(table[ch])
+        else:
+            return None
+    return " ".join(words)
 
 
 def actress_utterances(work: Path, lip_markers) -> list[Utt]:
@@ -256,17 +295,22 @@ def phones_motion(db_path: Path, u: Utt, work: Path, given: bool = False):
     folder = work / "utts" / u.key
     folder.mkdir(parents=True, exist_ok=True)
     config = _phones_config()
-    tag = "given" if given else "recognized"
+    tag = ("text" if u.text else "given") if given else "recognized"
     # the voice step's settings do not change the phones' motion (the voice is off here)
     synth = {k: v for k, v in json.loads(settings_json(config.settings("synthesize"))).items()
              if k not in VOICE_STEP_SETTINGS}
-    digest = _digest(u.wav.read_bytes(), (u.given_phones.read_bytes() if given else b""), tag.encode(),
+    said = (u.text.encode() if u.text else u.given_phones.read_bytes()) if given else b""  # type: ignore[union-attr]
+    digest = _digest(u.wav.read_bytes(), said, tag.encode(),
                      json.dumps(synth, sort_keys=True).encode(),
                      settings_json(config.settings("align")).encode(), sha256_of(db_path).encode())
     motion_file, phones_file = folder / f"motion.{tag}.{digest}.h5", folder / f"phones.{tag}.{digest}.json"
     if not motion_file.exists() or not phones_file.exists():
-        utt = (facesynth.utterance_from_phones(u.given_phones, audio=u.wav, config=config) if given
-               else facesynth.utterance_from_audio(u.wav, config=config))
+        if given and u.text:  # synthesize --audio --text: the phones aligned to what is said
+            utt = facesynth.utterance_from_audio(u.wav, text=u.text, config=config)
+        elif given:
+            utt = facesynth.utterance_from_phones(u.given_phones, audio=u.wav, config=config)
+        else:
+            utt = facesynth.utterance_from_audio(u.wav, config=config)
         facesynth.synthesize(db_path, utt, config=config, output=motion_file, overwrite=True)
         phones_file.write_text(json.dumps({"starts": [float(x) for x in utt.starts], "ends": [float(x) for x in utt.ends],
                                            "phones": list(utt.phones)}))
@@ -279,10 +323,10 @@ def voice_step(motion, u: Utt, phones, settings, model_path: Path, recognized: b
     (and the synthesize settings ``changes``)."""
     from dataclasses import replace
 
-    from facesynth.domain.methods import voice
+    from facesynth.domain.voice import fusion
 
     s = replace(settings, articulation_model=str(model_path), voice_recognized=path, voice_given=path, **changes)
-    moved, _, _ = voice.apply(motion, u.samples, u.rate, phones[0], phones[1], phones[2], s, recognized=recognized)
+    moved, _, _ = fusion.apply(motion, u.samples, u.rate, phones[0], phones[1], phones[2], s, recognized=recognized)
     return opening_of(moved, settings, u.n)
 
 
@@ -297,7 +341,7 @@ def opening_of(motion, settings, n: int) -> np.ndarray:
 def live_curves(live_model, model, u: Utt, settings, lip_markers) -> dict[str, np.ndarray]:
     """The mouth ``stream`` sends from ``u``'s audio (20 ms chunks) with ``model``: {live: its inner-lip
     gap, live_jaw: its jawOpen weight}, (n,) each at FPS."""
-    from facesynth.domain.live.voice import VoiceFrames
+    from facesynth.domain.live.voice_frames import VoiceFrames
     from facesynth.formats.audio import resample
 
     x = np.asarray(u.samples, np.float64)
@@ -355,6 +399,11 @@ def summarize(per_speaker: dict[str, dict[str, list[float]]], resample_count: in
             continue
         cell = paired_difference(stat(table[lead]), stat(v), k, idx)
         paired[f"{lead} - {m}"] = rounded(cell if k >= 3 else {**cell, "low": None, "high": None})
+    if "given_default" in table:  # the text-and-audio default against the other given modes
+        for m in ("given_articulation", "given_loudness", "given_phones", "given_packaged", "default"):
+            if m in table:
+                cell = paired_difference(stat(table["given_default"]), stat(table[m]), k, idx)
+                paired[f"given_default - {m}"] = rounded(cell if k >= 3 else {**cell, "low": None, "high": None})
     # modes only some speakers have (given phones): pooled over those speakers
     partial = {}
     for m in MODES:
@@ -394,15 +443,15 @@ def fit_fold(train: dict[str, list[Utt]], ref, variant: str, synthetic: int | di
 
 def synthetic_features(u: Utt, count: int, seed: int) -> list[np.ndarray]:
     """The raw features (K, D) of ``count`` synthetic speakers saying ``u`` (each voice drawn by
-    :func:`facesynth.domain.speech.voices.random_voice` from a generator seeded by ``seed``, the
+    :func:`facesynth.domain.voice.synthetic.random_voice` from a generator seeded by ``seed``, the
     utterance's name and the speaker's number), made once per run."""
-    from facesynth.domain.speech import voices
+    from facesynth.domain.voice import synthetic
 
     while len(u.synthetic) < count:
         i = len(u.synthetic)
         key = int.from_bytes(hashlib.sha256(f"{seed}/{u.key}/{i}".encode()).digest()[:8], "little")
-        voice = voices.random_voice(np.random.default_rng(key))
-        u.synthetic.append(A.frame_features(voices.transform(u.samples, u.rate, voice), u.rate))
+        voice = synthetic.random_voice(np.random.default_rng(key))
+        u.synthetic.append(A.frame_features(synthetic.transform(u.samples, u.rate, voice), u.rate))
     return u.synthetic[:count]
 
 
@@ -458,16 +507,62 @@ VARIANTS: dict[str, dict] = {
 }
 
 
+#: Voice features tried (item: features that do not carry the speaker; "mel" is what ships):
+#: "envelope" the mel bands of the cepstrally liftered log envelope (no pitch harmonics);
+#: "delta" the mel bands replaced by their slopes over +-2 frames (a channel's constant and slow
+#: colouring gone); "vtln" every utterance's spectrum warped toward the training voices' vocal tract
+#: (:func:`facesynth.domain.voice.articulation.estimate_warp` of its long-term envelope against the
+#: fold's training speakers' mean, fitted and scored alike); "envelope+vtln" both.
+#: "pitch-warp" the warp from the voice's median pitch against the training voices' (formants scale
+#: with pitch across speakers: :func:`facesynth.domain.voice.tract.pitch_warp`).
+FEATURES = ("mel", "envelope", "delta", "vtln", "envelope+vtln", "pitch-warp")
+
+
+def mel_deltas(mel: np.ndarray) -> np.ndarray:
+    """(K, B) float32 regression slopes of (K, B) log-mel frames over +-2 frames (ends repeated)."""
+    p = np.concatenate([mel[:1], mel[:1], mel, mel[-1:], mel[-1:]])
+    return ((p[3:-1] - p[1:-3]) + 2.0 * (p[4:] - p[:-4])).astype(np.float32) / 10.0
+
+
+def utterance_features(u: Utt, features: str, warp: float, cache: dict) -> np.ndarray:
+    """(K, D) raw features of ``u`` as ``features`` (:data:`FEATURES`) computes them, at ``warp``."""
+    key = (u.key, features, round(warp, 3))
+    if key not in cache:
+        raw = A.frame_features(u.samples, u.rate, envelope="envelope" in features, warp=warp)
+        if features == "delta":
+            raw[:, :A.N_MELS] = mel_deltas(raw[:, :A.N_MELS])
+        cache[key] = raw
+    return cache[key]
+
+
+def fold_reference(by_speaker: dict[str, list[Utt]], ltes: dict[str, np.ndarray | None], train: list[str]) -> np.ndarray:
+    """(G,) the mean long-term envelope (on ``WARP_GRID``) of the training speakers, each speaker once."""
+    step = int(round(tract.MAX_LOG_WARP / 0.01))
+    per = []
+    for s in train:
+        v = [ltes[u.key] for u in by_speaker[s] if u.real_voice and ltes.get(u.key) is not None]
+        if v:
+            per.append(np.mean(v, 0)[step:step + len(tract.WARP_GRID)])
+    return np.mean(per, 0)
+
+
 def main(argv=None) -> dict:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--facegood", type=Path, default=None, help="FACEGOOD's folder (see real_speech_lipsync.py)")
     ap.add_argument("--speech-data", type=Path, default=None, help="a folder of sources (module docstring)")
     ap.add_argument("--work", type=Path, required=True, help="cache: database, phones, motions, fold models")
     ap.add_argument("--variant", default="default", choices=sorted(VARIANTS))
+    ap.add_argument("--features", default="mel", choices=FEATURES,
+                    help="the voice features the fold models read (mel: as shipped; --no-chain only for others)")
     ap.add_argument("--actress", action="store_true",
                     help="train every fold on the built-in actress's takes too (her synthetic voice; never scored)")
     ap.add_argument("--synthetic", type=int, default=0, help="synthetic speakers per fold (training only)")
     ap.add_argument("--speakers", default=None, help="comma-separated speakers to score (default: all)")
+    ap.add_argument("--warp-per", default="utterance", choices=("utterance", "speaker"),
+                    help="--features vtln: each utterance's own warp, or one per speaker from all its utterances")
+    ap.add_argument("--texts", type=Path, default=None,
+                    help='a JSON {"<source>/<speaker>/<utt>": "what it says"}: the text-and-audio modes '
+                         '(given_*) on those utterances (GRID\'s texts come from its file names)')
     ap.add_argument("--no-chain", action="store_true", help="score the voice model alone (no synthesis)")
     ap.add_argument("--folds", default="speaker", choices=("speaker", "source"),
                     help="leave out one speaker at a time, or one whole source (its microphone, language, setting)")
@@ -486,6 +581,9 @@ def main(argv=None) -> dict:
                     help="the sources whose licences let a model fitted on them ship (for --model-out)")
     ap.add_argument("--no-balance", action="store_true",
                     help="--model-out: no synthetic voices to give each speaker as long as the longest-heard one")
+    ap.add_argument("--packaged-folds", action="store_true",
+                    help="score a speaker of --ship-sources with the packaged fit refitted without it (as --model-out "
+                         "fits it), not the packaged model that heard it")
     ap.add_argument("--sweep-packaged", action="store_true",
                     help="the --sweep points with the packaged model too (modes 'packaged trust ...')")
     ap.add_argument("--window-s", type=float, default=10.0)
@@ -498,6 +596,9 @@ def main(argv=None) -> dict:
                                 args.sources.split(",") if args.sources else None) if args.speech_data else [])
     if not utts:
         raise SystemExit("no utterances: give --facegood and/or --speech-data (with READY-<source> markers)")
+    texts = json.loads(args.texts.read_text()) if args.texts else {}
+    for u in utts:
+        u.text = texts.get(u.key) or (grid_text(u.name) if u.source == "grid" else None)
     config = Config.load()
     _phones_config()  # read now: the settings of the whole run
     settings = config.settings("synthesize")
@@ -507,8 +608,14 @@ def main(argv=None) -> dict:
         bench.build_database(args.work)
     if args.actress:
         utts += actress_utterances(args.work, settings.loudness_lip_markers)
+    if args.features != "mel" and not args.no_chain:
+        raise SystemExit(f"--features {args.features}: the packaged chain reads mel features; give --no-chain")
+    feature_cache: dict = {}
     for u in utts:
-        u.raw = A.frame_features(u.samples, u.rate)
+        u.raw = utterance_features(u, args.features, 1.0, feature_cache)
+    ltes = {u.key: tract.long_term_envelope(u.samples, u.rate) for u in utts} if "vtln" in args.features else {}
+    pitches = {u.key: tract.median_pitch(u.samples, u.rate) for u in utts} if args.features == "pitch-warp" else {}
+    warps: dict[str, list[float]] = {}
     by_speaker: dict[str, list[Utt]] = {}
     for u in utts:
         by_speaker.setdefault(u.speaker, []).append(u)
@@ -523,7 +630,7 @@ def main(argv=None) -> dict:
     scored = args.speakers.split(",") if args.speakers else real
     db = rig = lip_vertices = live_model = None
     if not args.no_chain:
-        from facesynth.domain.live.core import LiveModel
+        from facesynth.domain.live.synthesizer import LiveModel
         from facesynth.domain.rig.face import load_face_rig
         from facesynth.formats.mesh import read_binding
         from facesynth.model.motiondb import MotionDatabase
@@ -534,6 +641,7 @@ def main(argv=None) -> dict:
         lip_vertices = np.array([binding[m] for m in lip_markers])
         live_model = LiveModel(MotionDatabase.read(db), settings, config.settings("stream"), config.settings("solve"))
     packaged = bench.ARTICULATION_MODEL
+    ship_sources = args.ship_sources.split(",")
     packaged_model = A.ArticulationModel.read(packaged)
     per_speaker: dict[str, dict[str, list[float]]] = {}
     skipped: list[dict] = []
@@ -543,16 +651,43 @@ def main(argv=None) -> dict:
         t0 = time.perf_counter()
         # the speakers left out with this one: itself, or its whole source (--folds source)
         fold = speaker if args.folds == "speaker" else by_speaker[speaker][0].source
-        cached = args.work / "folds" / f"{args.variant}.s{args.synthetic}.{fold.replace('/', '+')}.h5"
+        tag = args.variant if args.features == "mel" else f"{args.variant}.{args.features}" + \
+            (f".per-{args.warp_per}" if "warp" in args.features or "vtln" in args.features else "")
+        cached = args.work / "folds" / f"{tag}.s{args.synthetic}.{fold.replace('/', '+')}.h5"
         if fold not in fold_models and args.reuse_folds and cached.exists():
             fold_models[fold] = (A.ArticulationModel.read(cached), cached)
+        if args.features == "pitch-warp":  # every utterance warped by its pitch against this fold's training voices
+            def pitch_of(names: list[Utt]) -> float | None:
+                v = [pitches[x.key] for x in names if pitches.get(x.key) is not None]
+                return float(np.median(v)) if v else None
+            trained = [pitch_of(v) for s, v in by_speaker.items() if v[0].real_voice
+                       and (s if args.folds == "speaker" else v[0].source) != fold]
+            reference_pitch = float(np.median([p for p in trained if p is not None]))
+            for u in utts:
+                p = pitch_of(by_speaker[u.speaker]) if args.warp_per == "speaker" else pitches[u.key]
+                w = round(tract.pitch_warp(p, reference_pitch), 2)
+                u.raw = utterance_features(u, args.features, w, feature_cache)
+                if u.speaker == speaker:
+                    warps.setdefault(speaker, []).append(w)
+        if "vtln" in args.features:  # every utterance warped toward this fold's training voices
+            reference = fold_reference(by_speaker, ltes, [s for s, v in by_speaker.items()
+                                                          if (s if args.folds == "speaker" else v[0].source) != fold])
+            for u in utts:
+                lte = ltes[u.key]
+                if args.warp_per == "speaker":  # one warp per speaker, from all its utterances (an enrolment)
+                    v = [ltes[x.key] for x in by_speaker[u.speaker] if ltes.get(x.key) is not None]
+                    lte = np.mean(v, 0) if v else None
+                w = round(tract.estimate_warp(lte, reference), 2)
+                u.raw = utterance_features(u, args.features, w, feature_cache)
+                if u.speaker == speaker:
+                    warps.setdefault(speaker, []).append(w)
         if fold not in fold_models:
             train = {s: v for s, v in by_speaker.items()
                      if (s if args.folds == "speaker" else v[0].source) != fold}
             if not train:
                 raise SystemExit(f"{fold} holds every speaker: leaving it out leaves nothing to fit on")
             model = fit_fold(train, ref, args.variant, args.synthetic, args.seed)
-            model_path = args.work / "folds" / f"{args.variant}.s{args.synthetic}.{fold.replace('/', '+')}.h5"
+            model_path = cached
             model_path.parent.mkdir(parents=True, exist_ok=True)
             model.write(model_path, config=json.dumps({"held_out": fold, "variant": args.variant}), inputs=[],
                         overwrite=True)
@@ -587,7 +722,14 @@ def main(argv=None) -> dict:
                                                                    voice_trust_high=high, voice_weight=weight)
                 curves["default"] = curves[settings.voice_recognized] if settings.voice_recognized != "off" \
                     else curves["phones"]
-                curves["packaged"] = voice_step(motion, u, phones, settings, packaged, True, settings.voice_recognized)
+                shipped_path = packaged
+                if args.packaged_folds and u.source in ship_sources:  # the packaged fit, this speaker left out
+                    shipped_path = args.work / "folds" / f"packaged-minus.{speaker.replace('/', '+')}.h5"
+                    if not shipped_path.exists():
+                        write_packaged({s: v for s, v in by_speaker.items() if s != speaker}, ship_sources, ref,
+                                       args.variant, args.synthetic, args.seed, shipped_path, not args.no_balance)
+                curves["packaged"] = voice_step(motion, u, phones, settings, shipped_path, True,
+                                                settings.voice_recognized)
                 from facesynth.base.phonemes import PAU  # noqa: F401  (segments as openfacefx reads them)
                 from facesynth.formats.labels import Segment
 
@@ -597,13 +739,14 @@ def main(argv=None) -> dict:
                     curves.update(live_curves(live_model, model, u, settings, settings.loudness_lip_markers))
                     shipped = live_curves(live_model, packaged_model, u, settings, settings.loudness_lip_markers)
                     curves["live_packaged"] = shipped["live"]
-                if u.given_phones is not None:
+                if u.given_phones is not None or u.text:
                     gm, gp = phones_motion(db, u, args.work, given=True)
                     curves["given_phones"] = opening_of(gm, settings, u.n)
                     for mode in ("articulation", "loudness"):
                         curves[f"given_{mode}"] = voice_step(gm, u, gp, settings, model_path, False, mode)
                     curves["given_default"] = curves[f"given_{settings.voice_given}"] \
                         if settings.voice_given != "off" else curves["given_phones"]
+                    curves["given_packaged"] = voice_step(gm, u, gp, settings, shipped_path, False, "articulation")
             for mode, curve in curves.items():
                 scores.setdefault(mode, []).extend(window_scores(curve, u.real["opening"], u.n, args.window_s))
         if scores.get("voice"):
@@ -613,6 +756,9 @@ def main(argv=None) -> dict:
                                   args.seed, args.model_out, not args.no_balance) if args.model_out else None
     summary = summarize(per_speaker, args.resamples, args.seed)
     return {"benchmark": "voice_speakers", "folds": args.folds, "variant": args.variant, "fit": VARIANTS[args.variant],
+            "features": args.features, "warp_per": args.warp_per if "vtln" in args.features or "warp" in args.features else None,
+            "warps": {s: [round(float(np.mean(w)), 3), round(float(np.min(w)), 3), round(float(np.max(w)), 3)]
+                      for s, w in sorted(warps.items())},
             "synthetic_speakers": args.synthetic,
             "settings": {"voice_recognized": settings.voice_recognized, "voice_given": settings.voice_given,
                          "window_s": args.window_s, "resamples": args.resamples, "seed": args.seed, "fps": FPS},

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import contextlib
 import functools
+import importlib
 import logging
 import signal
 import statistics
@@ -101,8 +102,23 @@ def _echo_lines(lines) -> None:
 
 
 class Context:
-    def __init__(self, config: Config, verbose: int, quiet: bool, overwrite: bool):
+    """What a command's body gets: its settings (only the sections it declares), the global
+    options, and its stage's declaration (:data:`facesynth.base.pipeline.STAGE`), through which it
+    calls its core: commands import no stage by hand."""
+
+    def __init__(self, config: Config, verbose: int, quiet: bool, overwrite: bool, declared: pipeline.Stage):
         self.config, self.verbose, self.quiet, self.overwrite = config, verbose, quiet, overwrite
+        self.declared = declared
+
+    def core(self, *args, **kwargs):
+        """Call the command's core (its stage's ``core``, imported now) with these arguments."""
+        return self.declared.load_core()(*args, **kwargs)
+
+    @property
+    def stage_module(self):
+        """The module of the command's core, for the few helpers its output needs (the
+        suggestions' table, the Isomap pick's CSV)."""
+        return importlib.import_module(self.declared.core.partition(":")[0])
 
     def say(self, message: str) -> None:
         if not self.quiet:
@@ -264,7 +280,7 @@ def stage(func=None, *, writes: bool = True):
             command = _command_path()
             config = Config.load(config_path, tuple(overrides))
             _check_overrides_read(command, tuple(overrides))
-            ctx = Context(config.only(READS[command]), verbose, quiet, overwrite)
+            ctx = Context(config.only(READS[command]), verbose, quiet, overwrite, pipeline.STAGE[command])
             recording: contextlib.AbstractContextManager = contextlib.nullcontext()
             if writes:
                 from facesynth.model.artifacts import recording_published
@@ -344,9 +360,7 @@ def sample_corpus_cmd(ctx: Context, out_dir: Path, preset: str, seed: int):
     Example:
       facesynth sample-corpus corpus/ --preset small --seed 0
     """
-    from facesynth.stages import sample_corpus as stage
-
-    summary = stage.run(out_dir, preset, seed, ctx.config.settings("sample_corpus"), ctx.overwrite)
+    summary = ctx.core(out_dir, preset, seed, ctx.config.settings("sample_corpus"), ctx.overwrite)
     if preset == "facegood":
         ctx.say(f"wrote {summary.takes} takes of {summary.performer}, {summary.seconds:.1f} s of speech and curves, "
                 f"to {out_dir}; ingest recognises their phones from the audio")
@@ -380,11 +394,9 @@ def align(ctx: Context, audio: Path, text: str | None, transcript: Path | None, 
       facesynth align corpus/audio/neutral_s000.wav --text "beautiful he men from began pretty strong" \\
           -o s000.TextGrid
     """
-    from facesynth.stages import align as stage_align
-
     if text is not None and transcript is not None:
         raise UsageError("give one of --text or --transcript, not both.")
-    summary = stage_align.run(audio, text if transcript is None else stage_align.read_transcript(transcript), output,
+    summary = ctx.core(audio, text if transcript is None else ctx.stage_module.read_transcript(transcript), output,
                               _with_language(ctx.config.settings("align"), language), dict_path, ctx.overwrite)
     if summary.recognized:
         ctx.say(f"recognised: {summary.recognized}")
@@ -413,9 +425,7 @@ def ingest(ctx: Context, manifest: Path, output: Path, rig: Path | None, binding
     Example:
       facesynth ingest corpus/manifest.csv -o corpus.h5
     """
-    from facesynth.stages import ingest as stage_ingest
-
-    s = stage_ingest.run(manifest, output, ctx.config.settings("ingest"), ctx.config.settings("align"), ctx.overwrite,
+    s = ctx.core(manifest, output, ctx.config.settings("ingest"), ctx.config.settings("align"), ctx.overwrite,
                          rig, binding)
     def takes(names: list[str]) -> str:
         listed = ", ".join(names[:4]) + (", ..." if len(names) > 4 else "")
@@ -447,9 +457,7 @@ def normalize(ctx: Context, corpus: Path, output: Path):
     Example:
       facesynth normalize corpus.h5 -o normalized.h5
     """
-    from facesynth.stages import normalize as stage_normalize
-
-    s = stage_normalize.run(corpus, output, ctx.config.settings("normalize"), ctx.overwrite)
+    s = ctx.core(corpus, output, ctx.config.settings("normalize"), ctx.overwrite)
     for take, marker, start, length in s.long_gaps:
         ctx.detail(f"take {take!r}, marker {marker}: gap of {length:.3f} s at {start:.3f} s is too long to fill; "
                    "PCA will project those frames from the visible markers.")
@@ -477,9 +485,7 @@ def pca(ctx: Context, normalized: Path, output: Path):
     Example:
       facesynth pca normalized.h5 -o pca.h5 --set pca.n_components=25
     """
-    from facesynth.stages import pca as stage_pca
-
-    s = stage_pca.run(normalized, output, ctx.config.settings("pca"), ctx.overwrite)
+    s = ctx.core(normalized, output, ctx.config.settings("pca"), ctx.overwrite)
     ctx.say(f"PCA: {s.components} components cover {100 * s.explained:.2f}% of the variance "
             f"(reconstruction RMS {s.rms_error_mm:.3f} mm per marker) -> {output}")
 
@@ -495,9 +501,7 @@ def build_db(ctx: Context, pca_path: Path, output: Path):
     Example:
       facesynth build-db pca.h5 -o db.h5
     """
-    from facesynth.stages import build_db as stage
-
-    s = stage.run(pca_path, output, ctx.config.settings("build_db"), ctx.overwrite)
+    s = ctx.core(pca_path, output, ctx.config.settings("build_db"), ctx.overwrite)
     ctx.say(f"built {s.nodes} motion nodes ({s.with_predecessor} with a captured predecessor); "
             f"DSC features {s.dsc_s:.2f} s, boundary states {s.boundary_s:.2f} s, write {s.write_s:.2f} s -> {output}")
 
@@ -505,7 +509,7 @@ def build_db(ctx: Context, pca_path: Path, output: Path):
 @main.command()
 @click.argument("db", metavar="DB|MODEL", type=EXISTING)
 @click.option("--method", type=RegistryChoice(METHODS), default=None,
-              help="The synthesis method (default: dp, or --search): dp and greedy search the motion database (DB), "
+              help="The synthesis method (default: synthesize.method, dp): dp and greedy search the motion database (DB), "
                    "mean takes its per-(phone, emotion) mean poses; trajectory and coarticulation read a MODEL "
                    "fitted on it (facesynth fit-method).")
 @click.option("--phonemes", type=EXISTING, default=None, help="The utterance's phone timing (TextGrid or .lab).")
@@ -518,7 +522,8 @@ def build_db(ctx: Context, pca_path: Path, output: Path):
 @click.option("--language", default=None, help=LANGUAGE_HELP)
 @click.option("--emotions", type=EXISTING, default=None, help="Emotion spans: 'start_s end_s emotion' lines, or a TextGrid tier 'emotions'.")
 @click.option("--constraints", type=EXISTING, default=None, help="Motion-node constraints: 'INDEX NODE' or 'TIMEs NODE' lines (dp only).")
-@click.option("--search", type=click.Choice(choices("synthesize", "search")), default=None, help="Search (default: synthesize.search).")
+@click.option("--search", type=click.Choice(choices("synthesize", "search")), default=None, hidden=True,
+              help="Deprecated: --method.")
 @click.option("--head-motion", "head_motion_path", type=EXISTING, default=None,
               help="Head motion from `facesynth head-motion` to put on the output instead of the source takes'.")
 @click.option("-o", "--output", type=PATH, required=True, help="Output motion.h5.")
@@ -527,8 +532,8 @@ def synthesize(ctx: Context, db: Path, method, phonemes, audio, text, language, 
                head_motion_path, output: Path):
     """Synthesize expressive marker motion for a new utterance (paper VI, Algorithm 1).
 
-    --method picks the member of the method family: dp (the default; --search greedy or
-    synthesize.search = greedy runs the greedy search instead), greedy, mean, and the fitted
+    --method (or synthesize.method) picks the member of the method family: dp (the default),
+    greedy, mean, and the fitted
     trajectory (Huang et al. Eq. 6-7) and coarticulation (Cohen-Massaro) models, whose model file
     (facesynth fit-method) is then the first argument. With --audio the voice shapes the mouth
     too: recognised without --text or --phonemes, its articulation (the acoustic articulation
@@ -541,43 +546,40 @@ def synthesize(ctx: Context, db: Path, method, phonemes, audio, text, language, 
       facesynth synthesize db.h5 --phonemes corpus/labels/neutral_s016.TextGrid \\
           --emotions spans.txt -o motion.h5
     """
-    import dataclasses
-
-    from facesynth.domain.methods import MethodSettings, core
-    from facesynth.stages import synthesize as stage
-
+    from facesynth.domain.methods import MethodSettings, steps
     settings = MethodSettings.of(ctx.config)
-    name = core.chosen_method(method, search, settings.synthesize.search)
-    if search:
-        settings = dataclasses.replace(settings, synthesize=dataclasses.replace(settings.synthesize, search=search))
-    s = stage.run(db, output, settings, ctx.config.settings("ingest"),
+    name, warnings = steps.deprecated_search(method, search, settings.synthesize, ctx.config.given("synthesize.search"))
+    for warning in warnings:
+        ctx.say(f"warning: {warning}")
+    s = ctx.core(db, output, settings, ctx.config.settings("ingest"),
                   _with_language(ctx.config.settings("align"), language), method=name,
                   phones_path=phonemes, emotions_path=emotions, constraints_path=constraints, audio=audio, text=text,
                   head_motion_path=head_motion_path, overwrite=ctx.overwrite)
     on_database = not _fitted(METHODS.entry(s.method))
-    for phone, how in s.unseen.items():
+    made = s.summary
+    for phone, how in made.unseen.items():
         what = f"database has no node of /{phone}/" if on_database else f"model has no {phone}"
         ctx.say(f"warning: the {what}; it will be covered by {how}.")
-    for phone, group in s.fallbacks.items():
+    for phone, group in made.fallbacks.items():
         ctx.say(f"warning: the trajectory model has no Gaussian of /{phone}/; it uses the pooled Gaussian of its "
                 f"viseme class ({group}).")
     phases = [("device choice", "device_choice_s"), ("transition costs", "transition_s"), ("step costs", "steps_s"),
               ("OpenCL set-up", "opencl_setup_s"), ("search", "search_s"), ("post-processing", "postprocess_s"),
               ("the voice", "voice_s")]
     timed = ([("read database" if on_database else "read model", s.load_s)]
-             + [(label, s.phases[key]) for label, key in phases if s.phases.get(key) is not None]
+             + [(label, made.phases[key]) for label, key in phases if made.phases.get(key) is not None]
              + [("input hashes", s.hash_wait_s), ("write", s.write_s)])
     ctx.detail("phases: " + ", ".join(f"{label} {value:.3f} s" for label, value in timed)
-               + (f"; search on {s.device}" if s.device else ""))
-    if s.cost is not None:
-        ctx.say(f"synthesized {s.phones} phones, {s.frames} frames, cost {s.cost:.2f}, "
-                f"{s.joins} non-captured joins -> {output}")
-    elif s.energy is not None:
-        ctx.detail(f"lambda {s.lam:g} per frame")
-        ctx.say(f"synthesized {s.phones} phones, {s.frames} frames by the trajectory method, "
-                f"Eq. 6 energy {s.energy:.2f} -> {output}")
+               + (f"; search on {made.device}" if made.device else ""))
+    if made.cost is not None:
+        ctx.say(f"synthesized {made.phones} phones, {made.frames} frames, cost {made.cost:.2f}, "
+                f"{made.joins} non-captured joins -> {output}")
+    elif made.energy is not None:
+        ctx.detail(f"lambda {made.lam:g} per frame")
+        ctx.say(f"synthesized {made.phones} phones, {made.frames} frames by the trajectory method, "
+                f"Eq. 6 energy {made.energy:.2f} -> {output}")
     else:
-        ctx.say(f"synthesized {s.phones} phones, {s.frames} frames by the {s.method} method -> {output}")
+        ctx.say(f"synthesized {made.phones} phones, {made.frames} frames by the {s.method} method -> {output}")
 
 
 @main.command()
@@ -597,26 +599,24 @@ def suggest(ctx: Context, db: Path, phonemes: Path, at_s: float, emotions, const
       facesynth suggest db.h5 --phonemes corpus/labels/sad_s017.TextGrid --at 1.25
     """
     from facesynth.base.errors import InputError
-    from facesynth.stages import suggest as stage
-
     if top < 1:
         raise click.BadParameter(f"{top}: list at least one suggestion.", param_hint="--top")
-    found = stage.suggest(db, phonemes, at_s, ctx.config.settings("synthesize"), ctx.config.settings("ingest"),
-                          emotions, constraints)
+    found = ctx.core(db, phonemes, at_s, ctx.config.settings("synthesize"), ctx.config.settings("ingest"),
+                          emotions, constraints).suggestions
     rows = found.rows
-    listed = stage.shown(rows, top, context_only)
+    listed = ctx.stage_module.shown(rows, top, context_only)
     if not listed:  # only --context-only can leave nothing: every phone has at least one node
-        raise InputError(stage.no_context_message(found, at_s) + "; drop --context-only to see the time-correct nodes.")
+        raise InputError(ctx.stage_module.no_context_message(found, at_s) + "; drop --context-only to see the time-correct nodes.")
     ctx.say(f"phone {found.index} /{found.phone}/ in context {found.context}, relative time {found.relative_time:.2f}; "
             f"unconstrained optimum {found.optimum:.2f} uses node {found.optimal_node}")
     if not any(r.context_correct for r in rows):
-        ctx.say("warning: " + stage.no_context_message(found, at_s) + ".")
-    for line in stage.table(rows, top, context_only):
+        ctx.say("warning: " + ctx.stage_module.no_context_message(found, at_s) + ".")
+    for line in ctx.stage_module.table(rows, top, context_only):
         click.echo(line)
     best = listed[0]
     ctx.say(f"best: rank 1 (the first row under the header), node {best.node}, "
             f"{'context-correct' if best.context_correct else 'time-correct only'}, cost {best.cost:.2f}; to use it:")
-    ctx.say(f"  {stage.use_line(at_s, best, constraints)}")
+    ctx.say(f"  {ctx.stage_module.use_line(at_s, best, constraints)}")
     emotion_option = f" --emotions {emotions}" if emotions else ""
     ctx.say(f"  facesynth synthesize {db} --phonemes {phonemes}{emotion_option} "
             f"--constraints {constraints or 'constraints.txt'} -o constrained.h5")
@@ -639,9 +639,7 @@ def deform(ctx: Context, motion: Path, mesh: Path, binding: Path, output: Path):
     Example:
       facesynth deform motion.h5 --mesh corpus/face.obj --binding corpus/markers.csv -o anim.h5
     """
-    from facesynth.stages import deform as stage
-
-    s = stage.run(motion, mesh, binding, output, ctx.config.settings("deform"), ctx.overwrite)
+    s = ctx.core(motion, mesh, binding, output, ctx.config.settings("deform"), ctx.overwrite)
     if s.unreached:  # eyes, teeth, the back of the head: expected, so only with -v
         ctx.detail(f"{s.unreached} vertices are farther than deform.distance_threshold from every marker and stay at rest.")
     ctx.say(f"deformed {s.vertices} vertices over {s.frames} frames (marker fit RMS {s.fit_rms:.3g} mesh units) -> {output}")
@@ -672,11 +670,9 @@ def keyshapes(ctx: Context, db: Path, method, count, sheet, output: Path):
     """
     import dataclasses
 
-    from facesynth.stages import keyshapes as stage
-
     settings = ctx.config.settings("keyshapes")
     settings = dataclasses.replace(settings, **{k: v for k, v in (("method", method), ("count", count)) if v is not None})
-    s = stage.run(db, output, settings, sheet, ctx.overwrite)
+    s = ctx.core(db, output, settings, sheet, ctx.overwrite)
     per = ", ".join(f"{e} {v.count} ({v.rms_mm:.2f} mm)" for e, v in s.emotions.items())
     ctx.say(f"key-shapes by {s.method}: {per} -> {output}" + (f" (sheet {sheet})" if sheet else ""))
 
@@ -724,15 +720,14 @@ def fit_method(ctx: Context, method: str, db: Path, keyshapes_path: Path | None,
 
 def _fit_method(ctx: Context, method: str, db: Path, keyshapes_path: Path | None, output: Path) -> None:
     from facesynth.domain.methods import MethodSettings
-    from facesynth.stages import fit_method as stage
-
-    s = stage.run(method, db, output, MethodSettings.of(ctx.config), keyshapes_path=keyshapes_path,
-                  overwrite=ctx.overwrite)
-    ctx.detail(f"fitted in {s.fit_s:.2f} s")
-    parts = [f"{s.phones} phones and {s.pairs} (phone, emotion) Gaussians over {s.keyshapes} key-shapes"
-             if s.keyshapes is not None else "", f"{s.labels} (phone, emotion) types" if s.labels is not None else ""]
+    m = ctx.core(method, db, output, MethodSettings.of(ctx.config), keyshapes_path=keyshapes_path,
+                  overwrite=ctx.overwrite).model
+    f = m.fit
+    ctx.detail(f"fitted in {m.fit_s:.2f} s")
+    parts = [f"{f.phones} phones and {f.pairs} (phone, emotion) Gaussians over {f.keyshapes} key-shapes"
+             if f.keyshapes is not None else "", f"{f.labels} (phone, emotion) types" if f.labels is not None else ""]
     what = "; ".join(p for p in parts if p) or "fitted"
-    ctx.say(f"{method} model: {what} (fit RMS {s.fit_rms_mm:.2f} mm per marker), {s.bytes} bytes -> {output}")
+    ctx.say(f"{method} model: {what} (fit RMS {f.fit_rms_mm:.2f} mm per marker), {m.bytes} bytes -> {output}")
 
 
 @main.command()
@@ -762,12 +757,10 @@ def bind(ctx: Context, capture: Path, rig, frame, up, forward, output: Path):
     """
     import dataclasses
 
-    from facesynth.stages import bind as stage
-
     settings = ctx.config.settings("bind")
     if frame is not None:
         settings = dataclasses.replace(settings, frame=frame)
-    s = stage.run(capture, output, settings, ctx.config.settings("normalize"), rig, up, forward, ctx.overwrite)
+    s = ctx.core(capture, output, settings, ctx.config.settings("normalize"), rig, up, forward, ctx.overwrite)
     for name, r in s.residual_mm.items():
         ctx.detail(f"  {name}: {r:.2f} mm from its vertex" + ("  (flagged)" if name in s.flagged else ""))
     if s.unbound:
@@ -811,10 +804,8 @@ def fit_articulation(ctx: Context, normalized: Path, corpus_path: Path, binding,
       facesynth fit-articulation normalized.h5 --corpus corpus.h5 -o articulation.h5
       facesynth synthesize db.h5 --audio corpus/audio/neutral_s016.wav --set synthesize.articulation_model=articulation.h5 -o voiced.h5
     """
-    from facesynth.stages import fit_articulation as stage
-
     c = ctx.config
-    s = stage.run(normalized, corpus_path, output, c.settings("synthesize"), c.settings("solve"), binding=binding,
+    s = ctx.core(normalized, corpus_path, output, c.settings("synthesize"), c.settings("solve"), binding=binding,
                   takes=None if takes is None else [t.strip() for t in takes.split(",") if t.strip()],
                   overwrite=ctx.overwrite)
     if not s.solved:
@@ -851,12 +842,10 @@ def solve(ctx: Context, motion: Path, rig, binding, take, neutral, output: Path)
     """
     import dataclasses
 
-    from facesynth.stages import solve as stage
-
     settings = ctx.config.settings("solve")
     if neutral is not None:
         settings = dataclasses.replace(settings, neutral=neutral)
-    s = stage.run(motion, output, settings, rig, binding, ctx.overwrite, take)
+    s = ctx.core(motion, output, settings, rig, binding, ctx.overwrite, take)
     if s.exact:
         ctx.say("note: a capture posed from curves (noise-free markers) is solved without smoothing or ridge "
                 "(solve.posed_captures).")
@@ -890,12 +879,10 @@ def retarget(ctx: Context, motion: Path, keyshapes_path: Path, rig, binding, key
     """
     import dataclasses
 
-    from facesynth.stages import retarget as stage
-
     settings = ctx.config.settings("retarget")
     if blend:
         settings = dataclasses.replace(settings, blend=blend)
-    s = stage.run(motion, keyshapes_path, output, settings, ctx.config.settings("keyshapes"), rig, binding, keymorphs,
+    s = ctx.core(motion, keyshapes_path, output, settings, ctx.config.settings("keyshapes"), rig, binding, keymorphs,
                   mesh_out, emotion, ctx.overwrite)
     ctx.say(f"retargeted {s.frames} frames through {s.keyshapes} key-shapes onto rig {s.rig} (key-shape fit RMS "
             f"{s.residual_rms_mm:.3g} mm) -> {output}" + (f", {s.blend} mesh -> {mesh_out}" if mesh_out else ""))
@@ -917,9 +904,7 @@ def rig_mesh(ctx: Context, curves: Path, rig, binding, output: Path):
       facesynth solve motion.h5 -o solved.h5
       facesynth rig-mesh solved.h5 -o solved_anim.h5
     """
-    from facesynth.stages import rig_mesh as stage
-
-    s = stage.run(curves, output, rig, binding, ctx.overwrite)
+    s = ctx.core(curves, output, rig, binding, ctx.overwrite)
     ctx.say(f"posed rig {s.rig} ({s.vertices} vertices) over {s.frames} frames -> {output}")
 
 
@@ -940,9 +925,7 @@ def openfacefx(ctx: Context, motion: Path, rig, output: Path):
       facesynth openfacefx motion.h5 -o openfacefx.h5
       facesynth render curves.h5 --compare openfacefx.h5 --view side-by-side -o compare.avi
     """
-    from facesynth.stages import openfacefx as stage
-
-    s = stage.run(motion, output, rig, ctx.overwrite)
+    s = ctx.core(motion, output, rig, ctx.overwrite)
     ctx.say(f"openfacefx lip sync of {s.phones} phones on rig {s.rig} over {s.frames} frames "
             f"({s.fps:g} frames/s) -> {output}")
 
@@ -975,12 +958,10 @@ def render(ctx: Context, anims, audios, view, compare, rig, binding, output: Pat
     """
     import dataclasses
 
-    from facesynth.stages import render as stage
-
     settings = ctx.config.settings("render")
     if view:
         settings = dataclasses.replace(settings, view=view)
-    s = stage.run(list(anims), list(audios), output, settings, list(compare), ctx.overwrite, rig, binding)
+    s = ctx.core(list(anims), list(audios), output, settings, list(compare), ctx.overwrite, rig, binding)
     for note in s.notes:  # a mesh without eye or mouth holes: expected for plain meshes, so only with -v
         ctx.detail(f"render: {note}.")
     ctx.say(f"rendered {s.frames} frames ({s.seconds:.2f} s of video, {s.frames_per_s:.1f} frames/s) -> {output}")
@@ -1012,9 +993,7 @@ def export(ctx: Context, artifact: Path, fmt: str, fps: float | None, head_motio
       facesynth export motion.h5 --format c3d -o motion.c3d
       facesynth export curves.h5 --format obj-seq -o anim_obj
     """
-    from facesynth.stages import export as stage
-
-    s = stage.run(artifact, fmt, output, ctx.config.settings("export"), fps=fps, head_motion=head_motion, audio=audio,
+    s = ctx.core(artifact, fmt, output, ctx.config.settings("export"), fps=fps, head_motion=head_motion, audio=audio,
                   mesh=mesh, overwrite=ctx.overwrite)
     folder = EXPORT_FORMATS.entry(fmt).facts.get("folder", False)
     extra = f" (+ {s.files[1].name})" if not folder and len(s.files) > 1 else ""
@@ -1053,19 +1032,17 @@ def player(ctx: Context, artifact: Path | None, audio: Path | None, motion: Path
       facesynth player curves.h5 --motion motion.h5 --audio corpus/audio/neutral_s016.wav -o player.html
       facesynth player --live ws://127.0.0.1:8765 --audio corpus/audio/neutral_s016.wav -o live.html
     """
-    from facesynth.stages import player as stage
-
     if (artifact is None) == (live_url is None):
         raise click.UsageError("give either an ARTIFACT to play or --live WS_URL (a live page), not both or neither.")
     if live_url is not None:
         if motion is not None:
             raise click.UsageError("--motion is for an ARTIFACT; a live page takes its frames from the stream.")
-        s = stage.run_live(live_url, output, audio=audio, view=ctx.config.settings("render"), overwrite=ctx.overwrite)
+        s = ctx.stage_module.run_live(live_url, output, audio=audio, view=ctx.config.settings("render"), overwrite=ctx.overwrite)
         ctx.say(f"live player for {live_url} ({s.vertices} vertices, {s.targets} ARKit morph targets, "
                 f"{s.seconds:.2f} s of speech to send) -> {output} ({s.bytes / 1e6:.1f} MB)")
         return
     assert artifact is not None
-    s = stage.run(artifact, output, audio=audio, motion=motion, view=ctx.config.settings("render"),
+    s = ctx.core(artifact, output, audio=audio, motion=motion, view=ctx.config.settings("render"),
                   overwrite=ctx.overwrite)
     ctx.say(f"player of {s.frames} frames ({s.seconds:.2f} s at {s.fps:g} frames/s, "
             f"{s.phones} phones) -> {output} ({s.bytes / 1e6:.1f} MB)")
@@ -1076,7 +1053,7 @@ def player(ctx: Context, artifact: Path | None, audio: Path | None, motion: Path
 @click.option("--db", "db_path", type=EXISTING, required=True,
               help="The motion database (db.h5), or for --method trajectory / coarticulation its fitted model.")
 @click.option("--method", type=RegistryChoice(METHODS), default=None,
-              help="The synthesis method of every line (default: dp, following synthesize.search), as for synthesize.")
+              help="The synthesis method of every line (default: synthesize.method, dp), as for synthesize.")
 @click.option("-o", "--output", type=PATH, required=True, help="Output folder (per-line files and the summary).")
 @click.option("--outputs", default=None, metavar="KINDS",
               help="Comma-separated: motion, curves, avi, anim and the export formats (arkit-csv, gltf, usd, ...; default: batch.outputs).")
@@ -1113,8 +1090,6 @@ def batch(ctx: Context, script: Path, db_path: Path, method: str | None, output:
     """
     import dataclasses
 
-    from facesynth.stages import batch as stage
-
     settings = ctx.config.settings("batch")
     if outputs is not None:
         kinds = tuple(k.strip() for k in outputs.split(",") if k.strip())
@@ -1133,12 +1108,16 @@ def batch(ctx: Context, script: Path, db_path: Path, method: str | None, output:
         else:
             ctx.detail(f"{r.id}: {r.status} ({r.method}, {r.phones} phones, {r.total_s:.2f} s)")
 
-    from facesynth.domain.methods import MethodSettings, core
+    from facesynth.domain.methods import MethodSettings, steps
 
     method_settings = MethodSettings.of(ctx.config)
-    s = stage.run(script, db_path, output, settings, method_settings, ctx.config.settings("ingest"),
+    chosen, warnings = steps.deprecated_search(method, None, method_settings.synthesize,
+                                               ctx.config.given("synthesize.search"))
+    for warning in warnings:
+        ctx.say(f"warning: {warning}")
+    s = ctx.core(script, db_path, output, settings, method_settings, ctx.config.settings("ingest"),
                   ctx.config.settings("align"), ctx.config.settings("deform"), ctx.config.settings("render"),
-                  method=core.chosen_method(method, None, method_settings.synthesize.search), mesh=mesh, binding=binding,
+                  method=chosen, mesh=mesh, binding=binding,
                   scheduler=scheduler, overwrite=ctx.overwrite, on_result=on_result, solve=ctx.config.settings("solve"),
                   export=ctx.config.settings("export"), rig=rig, rig_binding=rig_binding)
     skipped = f", {s.skipped} up to date" if s.skipped else ""
@@ -1155,11 +1134,14 @@ def batch(ctx: Context, script: Path, db_path: Path, method: str | None, output:
 @click.option("--heldout", type=EXISTING, required=True, help="The corpus.h5 holding the held-out takes.")
 @click.option("--truth", type=PATH, default=None,
               help="The corpus folder with clean ground truth (groundtruth/, markers.csv): adds errors against it and openfacefx.")
-@click.option("--trajectory", type=EXISTING, default=None,
-              help="A trajectory model trained on DB (facesynth fit-method trajectory): adds the trajectory method.")
+@click.option("--model", "models", type=EXISTING, multiple=True,
+              help="A model fitted on DB (facesynth fit-method), scored by its method (trajectory needs one; "
+                   "coarticulation is fitted here without); repeat for several.")
+@click.option("--trajectory", type=EXISTING, default=None, hidden=True, help="Deprecated: --model.")
 @click.option("-o", "--output", type=PATH, required=True, help="Report folder (metrics.json, table.md, index.html, plots).")
 @stage
-def evaluate(ctx: Context, db: Path, heldout: Path, truth: Path | None, trajectory: Path | None, output: Path):
+def evaluate(ctx: Context, db: Path, heldout: Path, truth: Path | None, models: tuple[Path, ...],
+             trajectory: Path | None, output: Path):
     """Synthesize every held-out sentence and compare it with its capture and baselines.
 
     The measures: Eq. 12-13 of the paper against the capture and (with --truth) the clean
@@ -1170,15 +1152,17 @@ def evaluate(ctx: Context, db: Path, heldout: Path, truth: Path | None, trajecto
     Example:
       facesynth evaluate db.h5 --heldout corpus.h5 --truth corpus/ -o report/
     """
-    from facesynth.stages import evaluate as stage
-
-    s = stage.run(db, heldout, output, ctx.config.settings("evaluate"), ctx.config.settings("synthesize"),
-                  ctx.config.settings("normalize"), ctx.overwrite, truth=truth, trajectory=trajectory,
-                  trajectory_settings=ctx.config.settings("trajectory"))
+    from facesynth.domain.methods import MethodSettings
+    if trajectory is not None:
+        ctx.say("warning: `--trajectory` is deprecated and will go in a later release; give the model with "
+                "`--model` (it is scored by the method whose model it is).")
+        models = models + (trajectory,)
+    s = ctx.core(db, heldout, output, ctx.config.settings("evaluate"), MethodSettings.of(ctx.config),
+                  ctx.config.settings("normalize"), ctx.overwrite, truth=truth, models=models)
     for method, m in s.methods.items():
         f = m.get("figures", {})
         clean = f" (clean truth {f['rms_clean_mm']['value']:.3f} mm)" if f.get("rms_clean_mm", {}).get("value") is not None else ""
-        ctx.say(f"{stage.row_label(method)}: RMS {m['rms_mm']:.3f} mm{clean}, velocity RMS {m['velocity_rms_mm_s']:.1f} mm/s")
+        ctx.say(f"{method}: RMS {m['rms_mm']:.3f} mm{clean}, velocity RMS {m['velocity_rms_mm_s']:.1f} mm/s")
     ctx.say(f"report -> {output}/index.html, table -> {output}/table.md")
     if s.recommendation:
         ctx.say(s.recommendation)
@@ -1200,9 +1184,7 @@ def capture(ctx: Context, corpus: Path, db_path: Path, take: str, output: Path):
       facesynth render curves.h5 --audio corpus/audio/neutral_s016.wav --view side-by-side \\
           --compare truth_curves.h5 -o compare.avi
     """
-    from facesynth.stages import capture as stage
-
-    s = stage.run(db_path, corpus, take, output, ctx.config.settings("normalize"),
+    s = ctx.core(db_path, corpus, take, output, ctx.config.settings("normalize"),
                       ctx.config.settings("synthesize").output_fps, ctx.overwrite)
     ctx.say(f"exported take {s.take} ({s.frames} frames) -> {output}")
 
@@ -1211,7 +1193,7 @@ def capture(ctx: Context, corpus: Path, db_path: Path, take: str, output: Path):
 @click.argument("db", type=EXISTING)
 @click.option("--validation", type=EXISTING, required=True, help="The corpus.h5 with val (tuning) and test (report) takes.")
 @click.option("--method", type=RegistryChoice(METHODS), default=None,
-              help="The method whose weights to tune (default: synthesize.search); only dp and greedy have any.")
+              help="The method whose weights to tune (default: synthesize.method); only dp and greedy have any.")
 @click.option("-o", "--output", type=PATH, required=True, help="Output TOML with the tuned [synthesize] weights.")
 @stage
 def tune(ctx: Context, db: Path, validation: Path, method: str | None, output: Path):
@@ -1230,8 +1212,6 @@ def tune(ctx: Context, db: Path, validation: Path, method: str | None, output: P
       facesynth synthesize db.h5 --phonemes corpus/labels/neutral_s016.TextGrid --config tuned.toml -o tuned.h5
     """
     from facesynth.base.progress import Overall
-    from facesynth.stages import tune as stage
-
     bar = None
 
     def show(done: int, total: int, err: float, best: float) -> None:
@@ -1241,23 +1221,24 @@ def tune(ctx: Context, db: Path, validation: Path, method: str | None, output: P
         bar.step(f"best {best:.4f} mm^2 (last {err:.4f})")
 
     try:
-        s = stage.run(db, validation, output, ctx.config.settings("tune"), ctx.config.settings("synthesize"),
+        s = ctx.core(db, validation, output, ctx.config.settings("tune"), ctx.config.settings("synthesize"),
                       ctx.config.settings("build_db"), ctx.config.settings("normalize"), ctx.overwrite, progress_fn=show,
                       method=method)
     finally:
         if bar is not None:
             bar.close()
-    for warning in s.warnings:
+    t = s.tuning
+    for warning in t.warnings:
         ctx.say(f"warning: {warning}")
-    ctx.say(f"{s.evaluations} evaluations in {s.seconds:.1f} s on {s.validation_sentences} validation sentences: "
-            f"error {s.validation_err_before:.4f} -> {s.validation_err_after:.4f} mm^2")
-    if s.test_ci_before is not None and s.test_ci_after is not None:  # with test takes, as the test errors
-        (lb, hb), (la, ha) = s.test_ci_before, s.test_ci_after
-        ctx.say(f"on {s.test_sentences} test sentences not used for tuning: {s.test_err_before:.4f} [{lb:.4f}, {hb:.4f}] -> "
-                f"{s.test_err_after:.4f} [{la:.4f}, {ha:.4f}] mm^2 (bootstrap 95%)")
-    ctx.say("weights: " + ", ".join(f"{k}={v:.4g}" for k, v in s.weights.items())
-            + f"; smoothing_half_window={s.smoothing_half_window}, boundary_fit_frames={s.boundary_fit_frames} -> {output}")
-    if s.boundary_fit_changed:
+    ctx.say(f"{t.evaluations} evaluations in {s.seconds:.1f} s on {t.validation_sentences} validation sentences: "
+            f"error {t.validation_err_before:.4f} -> {t.validation_err_after:.4f} mm^2")
+    if t.test_ci_before is not None and t.test_ci_after is not None:  # with test takes, as the test errors
+        (lb, hb), (la, ha) = t.test_ci_before, t.test_ci_after
+        ctx.say(f"on {t.test_sentences} test sentences not used for tuning: {t.test_err_before:.4f} [{lb:.4f}, {hb:.4f}] -> "
+                f"{t.test_err_after:.4f} [{la:.4f}, {ha:.4f}] mm^2 (bootstrap 95%)")
+    ctx.say("weights: " + ", ".join(f"{k}={v:.4g}" for k, v in t.weights.items())
+            + f"; smoothing_half_window={t.smoothing_half_window}, boundary_fit_frames={t.boundary_fit_frames} -> {output}")
+    if t.boundary_fit_changed:
         ctx.say(f"the boundary-fit length changed: run build-db (and prune) again with --config {output} for it to take effect.")
 
 
@@ -1286,9 +1267,7 @@ def isomap_build(ctx: Context, db: Path, output: Path, images: Path | None):
     Example:
       facesynth isomap build db.h5 -o isomap.h5 --images isomaps/
     """
-    from facesynth.stages import isomap as stage
-
-    s = stage.run(db, output, ctx.config.settings("isomap"), images, ctx.overwrite)
+    s = ctx.core(db, output, ctx.config.settings("isomap"), images, ctx.overwrite)
     for phone, note in s.notes.items():  # small clusters get fewer neighbours: expected, so only with -v
         ctx.detail(f"/{phone}/: {note}")
     where = f"; images in {images}/index.html" if images else ""
@@ -1314,11 +1293,9 @@ def isomap_pick(ctx: Context, isomap_path: Path, phoneme: str, x: float, y: floa
       facesynth isomap db.h5 -o isomap.h5
       facesynth isomap pick isomap.h5 aa 0.5 -1.2 > frame.csv
     """
-    from facesynth.stages import isomap as stage
-
-    picked = stage.pick(isomap_path, phoneme, x, y, pca_map)
+    picked = ctx.core(isomap_path, phoneme, x, y, pca_map)
     ctx.detail(f"triangle of frames {picked.corners} (nodes {picked.nodes}), weights {picked.weights}")
-    _echo_lines(stage.markers_csv(picked.markers, picked.marker_names))
+    _echo_lines(ctx.stage_module.markers_csv(picked.markers, picked.marker_names))
 
 
 @isomap.command("page")
@@ -1344,9 +1321,7 @@ def isomap_page(ctx: Context, isomap_path: Path, db: Path, phonemes: Path, emoti
       facesynth isomap page isomap.h5 db.h5 --phonemes corpus/labels/neutral_s016.TextGrid \\
           --motion motion.h5 -o constraints.html
     """
-    from facesynth.stages import isomap as stage
-
-    s = stage.page(isomap_path, db, phonemes, output, ctx.config.settings("isomap"), ctx.config.settings("ingest"),
+    s = ctx.core(isomap_path, db, phonemes, output, ctx.config.settings("isomap"), ctx.config.settings("ingest"),
                    emotions, constraints, motion, ctx.overwrite)
     if s.missing:
         ctx.say(f"warning: the database has no node of {', '.join('/' + p + '/' for p in s.missing)}; "
@@ -1410,9 +1385,7 @@ def expression_fit(ctx: Context, normalized: Path, output: Path):
     Example:
       facesynth expression fit normalized.h5 -o expr.h5
     """
-    from facesynth.stages import expression as stage
-
-    s = stage.fit(normalized, output, ctx.config.settings("expression"), ctx.overwrite)
+    s = ctx.core(normalized, output, ctx.config.settings("expression"), ctx.overwrite)
     for note in s.skipped:
         ctx.detail(f"skipped {note}.")
     for n, err in enumerate(s.errors, 1):
@@ -1434,9 +1407,7 @@ def expression_analyze(ctx: Context, model: Path, motion: Path):
       facesynth expression fit normalized.h5 -o expr.h5
       facesynth expression analyze expr.h5 motion.h5 > styles.csv
     """
-    from facesynth.stages import expression as stage
-
-    _echo_lines(stage.analyze(model, motion, ctx.config.settings("expression")))
+    _echo_lines(ctx.core(model, motion, ctx.config.settings("expression")))
 
 
 @expression.command("restyle")
@@ -1461,11 +1432,9 @@ def expression_restyle(ctx: Context, model: Path, motion: Path, to, emotions, in
       echo "0.5 1.5 angry" > spans.txt
       facesynth expression restyle expr.h5 motion.h5 --emotions spans.txt --intensity 1 -o angry.h5
     """
-    from facesynth.stages import expression as stage
-
     if (to is None) == (emotions is None):
         raise UsageError("give exactly one of --to or --emotions.")
-    s = stage.restyle(model, motion, output, ctx.config.settings("expression"), ctx.config.settings("ingest"), to=to,
+    s = ctx.core(model, motion, output, ctx.config.settings("expression"), ctx.config.settings("ingest"), to=to,
                       intensity=intensity, emotions_path=emotions, overwrite=ctx.overwrite)
     ctx.say(f"restyled {s.frames} frames (mostly {s.from_emotion} before) to {to or emotions} at intensity {intensity:g}; "
             f"RMS marker change {s.change_mm:.2f} mm -> {output}")
@@ -1493,9 +1462,7 @@ def head_motion(ctx: Context, db: Path, audio: Path, corpus_path: Path, output: 
       facesynth deform moving.h5 --mesh corpus/face.obj --binding corpus/markers.csv \\
           --set deform.apply_head_motion=true -o moving_anim.h5
     """
-    from facesynth.stages import head_motion as stage
-
-    s = stage.run(db, corpus_path, audio, output, ctx.config.settings("head_motion"), ctx.overwrite)
+    s = ctx.core(db, corpus_path, audio, output, ctx.config.settings("head_motion"), ctx.overwrite)
     for warning in s.warnings:
         ctx.say(f"warning: {warning}")
     ctx.say(f"head motion for {s.seconds:.2f} s from {s.segments} pitch segments ({s.consecutive} joins "
@@ -1510,7 +1477,8 @@ def head_motion(ctx: Context, db: Path, audio: Path, corpus_path: Path, output: 
                    "PCM.")
 @click.option("--serve", default=None, metavar="HOST:PORT", help="Serve WebSocket clients instead (e.g. 127.0.0.1:8765).")
 @click.option("--livelink", default=None, metavar="HOST:PORT", help="Also send Live Link Face UDP packets (port 11111).")
-@click.option("--method", type=click.Choice(choices("stream", "method")), default=None, help="Decisions (default: stream.method).")
+@click.option("--method", type=RegistryChoice(METHODS, lambda e: bool(e.facts.get("streams"))), default=None,
+              help="The member streamed, one with a live form (default: stream.method).")
 @click.option("--lookahead", type=int, default=None, help="Phones of look-ahead (default: stream.lookahead_phones).")
 @click.option("--markers", is_flag=True, help="Add the markers (mm) to every frame.")
 @click.option("--realtime", is_flag=True, help="Read --audio at its own speed, as if it arrived live.")
@@ -1531,16 +1499,14 @@ def stream(ctx: Context, db_path: Path, audio: str, serve: str | None, livelink:
     Example:
       facesynth stream db.h5 --audio corpus/audio/neutral_s016.wav > frames.jsonl
     """
-    from facesynth.stages import stream as stage
-
+    from facesynth.domain.methods import MethodSettings
     c = ctx.config
-    model = stage.load_model(db_path, c.settings("synthesize"), c.settings("stream"), c.settings("solve"), method, lookahead,
-                             c.settings("trajectory"))
+    model = ctx.stage_module.load_model(db_path, MethodSettings.of(c), c.settings("stream"), c.settings("solve"), method, lookahead)
     if serve is not None:
-        stage.serve(model, c.settings("align"), serve, livelink=livelink, ready=ctx.say, workers=workers)
+        ctx.stage_module.serve(model, c.settings("align"), serve, livelink=livelink, ready=ctx.say, workers=workers)
         ctx.say("stopped.")
         return
-    frames = stage.run(model, c.settings("align"), audio, click.echo, livelink=livelink, markers=markers,
+    frames = ctx.core(model, c.settings("align"), audio, click.echo, livelink=livelink, markers=markers,
                        realtime=realtime)
     ctx.detail(f"{frames} frames")
 
@@ -1560,14 +1526,12 @@ def prune(ctx: Context, db_path: Path, remove: str | None, auto: bool, reason: s
       facesynth prune db.h5 --auto -o db_clean.h5
       facesynth prune db.h5 --remove 12,40-42 --reason "lip marker swap" -o db_hand.h5
     """
-    from facesynth.stages import prune as stage
-
-    s = stage.run(db_path, output, ctx.config.settings("prune"), remove, auto, reason, ctx.overwrite)
+    s = ctx.core(db_path, output, ctx.config.settings("prune"), remove, auto, reason, ctx.overwrite)
     if not s.removed:
         ctx.say("nothing to remove; no output written.")
         return
     if auto:
-        ctx.say("found " + ", ".join(f"{v} {k}" for k, v in stage.count_by_kind(s.found).items()))
+        ctx.say("found " + ", ".join(f"{v} {k}" for k, v in ctx.stage_module.count_by_kind(s.found).items()))
         ctx.detail("removed: " + ",".join(str(i) for i in s.found))
     ctx.say(f"removed {s.removed} nodes, kept {s.kept} ({s.links_cut} captured links cut) -> {output}")
 

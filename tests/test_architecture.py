@@ -25,8 +25,8 @@ DEFERRED = {
 
 #: The domain's subject packages in the order they may import one another: each imports only
 #: those before it (and base, formats, model). docs/architecture.md's table says what each holds.
-DOMAIN_ORDER = ("postprocess", "speech", "head_motion", "rig", "search", "retarget", "rendering", "expression",
-                "database", "corpus", "capture", "methods", "live", "exports", "evaluation", "batch")
+DOMAIN_ORDER = ("postprocess", "geometry", "speech", "head_motion", "rig", "search", "retarget", "voice", "rendering",
+                "expression", "database", "corpus", "capture", "methods", "live", "exports", "evaluation", "batch")
 
 #: Modules that import only the standard library (they are read before anything is installed
 #: or configured: the stage declarations, the registries).
@@ -215,10 +215,12 @@ def test_imports_inside_functions_are_the_listed_ones():
     assert len(DEFERRED) <= 10
 
 
-def test_only_the_command_line_imports_a_stage():
-    """The stages are the command line's: the domain and the API (below them) import none."""
+def test_no_module_imports_a_stage():
+    """The stages are the command line's, reached through the stage table: the domain and the API
+    (below them) import none, and ``cli.py`` calls each command's core as its
+    :class:`~facesynth.base.pipeline.Stage` declares it (``Context.core``), importing none by hand."""
     crossing = sorted(f"{m} -> {t}" for m, targets in GRAPH.items() for t in targets
-                      if t.startswith("facesynth.stages") and layer(m) not in ("stages", "cli"))
+                      if t.startswith("facesynth.stages") and layer(m) != "stages")
     assert crossing == []
 
 
@@ -226,6 +228,36 @@ def test_no_stage_imports_another_stage():
     crossing = sorted(f"{m} -> {t}" for m, targets in GRAPH.items() if m.startswith("facesynth.stages.")
                       for t in targets if t.startswith("facesynth.stages.") and t != m)
     assert crossing == []
+
+
+#: The most lines a stage module may have beside its result classes (docs/architecture.md, "How to
+#: add a stage"): a stage reads its inputs, calls the domain and writes its outputs.
+STAGE_MAX_LINES = 150
+
+
+def stage_lines(path: Path) -> int:
+    """Lines of the stage module ``path`` not counting its result classes (top-level classes whose
+    name ends with ``Result``, decorators included)."""
+    source = path.read_text(encoding="utf-8")
+    results = sum(node.end_lineno - min([node.lineno] + [d.lineno for d in node.decorator_list]) + 1
+                  for node in ast.parse(source).body
+                  if isinstance(node, ast.ClassDef) and node.name.endswith("Result") and node.end_lineno)
+    return len(source.splitlines()) - results
+
+
+def test_stage_line_counting_leaves_out_only_result_classes(tmp_path):
+    stage = tmp_path / "toy.py"
+    stage.write_text("import dataclasses\n\n\n@dataclasses.dataclass(frozen=True)\nclass ToyResult:\n    n: int\n\n\n"
+                     "class Helper:\n    pass\n\n\ndef run() -> ToyResult:\n    return ToyResult(1)\n", encoding="utf-8")
+    assert stage_lines(stage) == 14 - 3  # the decorator and the class's two lines are not counted
+
+
+def test_no_stage_module_holds_an_algorithm():
+    """A stage module is at most STAGE_MAX_LINES lines beside its result classes: the algorithm
+    lives in the domain package of its subject."""
+    long = sorted(f"{m}: {n} lines" for m, path in MODULES.items() if layer(m) == "stages"
+                  and (n := stage_lines(path)) > STAGE_MAX_LINES)
+    assert long == []
 
 
 def test_stdlib_only_modules_import_only_the_standard_library():
@@ -300,3 +332,28 @@ def test_the_layer_map_sees_the_imports():
     assert {"facesynth.model.motion", "facesynth.domain.retarget.deform"} <= GRAPH["facesynth.stages.deform"]
     assert "facesynth.base.opencl" in GRAPH["facesynth.model.artifacts"]
     assert layer("facesynth.stages.deform") == "stages" and layer("facesynth.model.spec") == "model"
+
+
+def test_the_tree_in_the_docs_lists_every_module():
+    """docs/architecture.md's tree names every module of every layer and domain package, in
+    DOMAIN_ORDER, and no module that is gone."""
+    text = (Path(__file__).parent.parent / "docs" / "architecture.md").read_text(encoding="utf-8")
+    block = text.split("### The tree", 1)[1].split("```text\n", 1)[1].split("```", 1)[0]
+    listed: dict[str, set[str]] = {}
+    folder = ""
+    for line in block.splitlines()[2:]:  # after "facesynth/" and "cli.py"
+        head, _, rest = line.strip().partition("/")
+        if line.startswith("    ") and not line.startswith("      ") or line.startswith("  ") and not line.startswith("    "):
+            folder = ("domain/" + head) if line.startswith("    ") else head
+            listed[folder] = set(rest.split()) - {"(__init__.py", "only)"}
+        else:
+            listed[folder] |= set(line.split())
+    listed.pop("domain", None)
+    root = PACKAGE
+    present = {str(d.relative_to(root)): {p.stem for p in d.glob("*.py") if p.stem != "__init__"}
+               for d in [root / name for name in ("base", "formats", "model", "api", "stages")]
+               + [root / "domain" / pkg for pkg in DOMAIN_ORDER]}
+    assert listed == present
+    domain_order = [f for f in listed if f.startswith("domain/")]
+    assert domain_order == [f"domain/{pkg}" for pkg in DOMAIN_ORDER]
+    assert not (set(p.name for p in (root / "domain").iterdir() if (p / "__init__.py").exists()) - set(DOMAIN_ORDER))

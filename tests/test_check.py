@@ -76,7 +76,7 @@ def written(tiny_corpus, tiny_artifacts, tiny_db, held_out_take, config, tmp_pat
                    method="trajectory", phones_path=tg)
     out["coarticulation"], out["coarticulation_motion"], out["mean_motion"] = d / "coart.h5", d / "coart_motion.h5", d / "mean.h5"
     fit_method.run("coarticulation", tiny_db, out["coarticulation"],
-                   dataclasses.replace(every, coarticulation=dataclasses.replace(every.coarticulation, iterations=5)))
+                   every.replace(coarticulation=dataclasses.replace(every.coarticulation, iterations=5)))
     for name, source in (("coarticulation", out["coarticulation"]), ("mean", tiny_db)):
         synthesize.run(source, out[f"{name}_motion"], every, config.settings("ingest"), config.settings("align"),
                        method=name, phones_path=tg)
@@ -93,7 +93,7 @@ def written(tiny_corpus, tiny_artifacts, tiny_db, held_out_take, config, tmp_pat
     ingest.run(d / "live_link" / "manifest.csv", out["posed_corpus"], config.settings("ingest"), config.settings("align"))
     normalize.run(out["posed_corpus"], out["posed_normalized"], config.settings("normalize"))
     # no stage fits the articulation model yet: one fitted on a take's audio, its loudness the target
-    from facesynth.domain.speech import articulation
+    from facesynth.domain.voice import articulation
     from facesynth.formats.audio import read_audio
 
     samples, rate = read_audio(tiny_corpus / "audio" / f"{held_out_take}.wav")
@@ -102,6 +102,20 @@ def written(tiny_corpus, tiny_artifacts, tiny_db, held_out_take, config, tmp_pat
     out["articulation"] = d / "articulation.h5"
     articulation.fit([articulation.Take(raw, loudness, 100.0 / 3.0)], ("opening",)).write(
         out["articulation"], config="{}", inputs=[])
+    # a capture in another language keeps each phone's IPA (phones/ipa, nodes/ipa): the tiny corpus
+    # with its phones written as IPA, as ingest writes a take aligned in its own language
+    from facesynth.base.ipa import FESTIVAL_IPA
+    from facesynth.model.corpus import Corpus
+    from facesynth.stages import build_db, pca
+
+    relabelled = Corpus.read(tiny_artifacts["corpus"])
+    relabelled.phones.ipa = ["" if p == "pau" else FESTIVAL_IPA[p] for p in relabelled.phones.phone]
+    for name in ("corpus", "normalized", "pca", "motiondb"):
+        out[f"ipa_{name}"] = d / f"ipa_{name}.h5"
+    relabelled.write(out["ipa_corpus"], config="{}", inputs=[])
+    normalize.run(out["ipa_corpus"], out["ipa_normalized"], config.settings("normalize"))
+    pca.run(out["ipa_normalized"], out["ipa_pca"], config.settings("pca"))
+    build_db.run(out["ipa_pca"], out["ipa_motiondb"], config.settings("build_db"))
     return out
 
 
@@ -149,7 +163,8 @@ def test_the_specification_covers_every_kind_at_its_schema():
                                   "capture", "meshanim", "expression", "restyle", "headmotion", "keyshapes", "curves",
                                   "retargeted", "rig_mesh", "trajectory", "trajectory_motion", "coarticulation",
                                   "coarticulation_motion", "mean_motion", "posed_corpus", "posed_normalized",
-                                  "articulation"])
+                                  "articulation", "ipa_corpus", "ipa_normalized", "ipa_pca",
+                                  "ipa_motiondb"])
 def test_every_kind_written_by_its_stage_checks_clean(written, name):
     report = check.check_file(written[name])
     assert report.problems == []

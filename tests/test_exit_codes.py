@@ -212,7 +212,7 @@ def test_emotion_span_partly_outside_is_fine(tiny_db, utterance, tmp_path):
 
 
 def test_emotion_span_between_midpoints_is_warned_about(tiny_db, utterance, tmp_path):
-    from facesynth.domain.search.inputs import read_utterance
+    from facesynth.domain.speech.utterance import read_utterance
 
     utt = read_utterance(utterance[0], ("phones",))
     spans = tmp_path / "spans.txt"

@@ -80,7 +80,7 @@ def test_core_and_result_resolve(stage):
 def test_kinds_and_sections_are_real():
     for stage in STAGES:
         assert set(stage.input_kinds()) | set(stage.output_kinds()) <= set(SCHEMAS), stage.name
-        assert set(stage.reads) <= set(SECTIONS) - {pipeline.ALWAYS_READ}, stage.name
+        assert set(stage.sections()) <= set(SECTIONS) - {pipeline.ALWAYS_READ}, stage.name
     assert {s for stage in STAGES for s in pipeline.READS[stage.name]} == set(SECTIONS)
 
 

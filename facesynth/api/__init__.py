@@ -4,7 +4,7 @@ method family, solve it onto a rig and export it (``docs/api.md`` says what is p
 versions change it).
 
 A thin facade over the domain: each function calls the very steps its command runs
-(:func:`facesynth.domain.methods.core.synthesize_utterance`,
+(:func:`facesynth.domain.methods.steps.synthesize_utterance`,
 :mod:`facesynth.domain.retarget.facial_solve`, :func:`facesynth.domain.exports.format.export`),
 so an output written here holds the same bytes as the command's for the same inputs and
 settings. The API sits below the stages and imports none of them. Each function returns the
@@ -28,7 +28,7 @@ import os
 from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, replace
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeAlias
 
 import numpy as np
 
@@ -48,12 +48,13 @@ from facesynth.base.registry import EXPORT_FORMATS, METHODS
 from facesynth.domain import methods as family
 from facesynth.domain.exports import format as exporting
 from facesynth.domain.exports.animation import load, of_artifact
-from facesynth.domain.methods import Method, MethodSettings, core
+from facesynth.domain.methods import Method, MethodSettings, steps
 from facesynth.domain.retarget import facial_solve
 from facesynth.domain.rig.face import Rig
 from facesynth.domain.rig.loading import load_rig
-from facesynth.domain.search.inputs import given_constraints, phones_utterance, read_constraints
+from facesynth.domain.search.constraints import given_constraints, read_constraints
 from facesynth.domain.speech.alignment import Alignment
+from facesynth.domain.speech.utterance import phones_utterance
 from facesynth.model.artifacts import artifact_kind, check_output, input_record
 from facesynth.model.coarticulation import CoarticulationModel
 from facesynth.model.curves import RigCurves
@@ -84,7 +85,7 @@ __all__ = [
 #: A file name: a string or a path.
 StrPath = str | os.PathLike
 #: A fitted model of a member of the method family (``facesynth fit-method``).
-FittedModel = TrajectoryModel | CoarticulationModel
+FittedModel: TypeAlias = TrajectoryModel | CoarticulationModel
 
 
 def load_config(path: StrPath | None = None, overrides: Sequence[str] = ()) -> Config:
@@ -135,12 +136,12 @@ class Utterance:
     """An utterance to synthesize: its phones with times and an emotion per phone, and the files
     it was read from (recorded by the artifacts made of it).
 
-    data: the shared core's :class:`~facesynth.domain.methods.core.UtteranceInput` (the phone
+    data: the shared core's :class:`~facesynth.domain.methods.steps.UtteranceInput` (the phone
         sequence, the alignment when it came from audio, warnings, the audio samples).
     phones_file, emotions_file, audio_file: the files given, or None.
     """
 
-    data: core.UtteranceInput
+    data: steps.UtteranceInput
     phones_file: Path | None = None
     emotions_file: Path | None = None
     audio_file: Path | None = None
@@ -205,7 +206,7 @@ def utterance_from_phones(phones: StrPath | Sequence[tuple[str, float, float]], 
             phones_file, made = Path(phones), None
         else:
             phones_file, made = None, phones_utterance(phones)
-        data = core.read_utterance(cfg.settings("ingest"), phones_path=phones_file, phones=made, audio=_path(audio),
+        data = steps.read_utterance(cfg.settings("ingest"), phones_path=phones_file, phones=made, audio=_path(audio),
                                    align=cfg.settings("align"), **_emotions(emotions))
     return Utterance(data, phones_file, _file(emotions), _path(audio))
 
@@ -225,7 +226,7 @@ def utterance_from_audio(audio: StrPath, text: str | None = None, *,
     if language is not None:
         align = replace(align, language=language)
     with _limits(cfg):
-        data = core.read_utterance(cfg.settings("ingest"), audio=Path(audio), text=text, align=align,
+        data = steps.read_utterance(cfg.settings("ingest"), audio=Path(audio), text=text, align=align,
                                    **_emotions(emotions))
     return Utterance(data, None, _file(emotions), Path(audio))
 
@@ -250,7 +251,7 @@ def synthesize(source: StrPath | MotionDatabase | FittedModel, utterance: Uttera
 
     source: the motion database (or its file) for ``dp``, ``greedy`` and ``mean``; a fitted model
         (or its file) for ``trajectory`` and ``coarticulation``.
-    method: a member of the family (:func:`methods`); default: ``synthesize.search`` (``dp``) for
+    method: a member of the family (:func:`methods`); default: ``synthesize.method`` (``dp``) for
         a database, the model's own member for a fitted model.
     constraints: motion nodes the DP must use: a file (``INDEX NODE`` or ``TIMEs NODE`` lines) or
         {phone index: node id} (``dp`` only).
@@ -287,13 +288,13 @@ def synthesize(source: StrPath | MotionDatabase | FittedModel, utterance: Uttera
         elif constraints is not None:
             assert isinstance(constraints, Mapping)
             chosen = given_constraints(constraints, utterance.data.utterance, src.nodes.phone)
-        made = core.synthesize_utterance(member, src, utterance.data, settings, chosen, head=head,
+        made = steps.synthesize_utterance(member, src, utterance.data, settings, chosen, head=head,
                                          source_where=source_where, where=utterance.where)
         if output is not None:
-            recorded = core.motion_inputs(source_file, utterance.phones_file, utterance.emotions_file,
+            recorded = steps.motion_inputs(source_file, utterance.phones_file, utterance.emotions_file,
                                           constraints_path, utterance.audio_file, head_path,
                                           settings.synthesize.articulation_model)
-            core.write_motion(made, Path(output), [input_record(p) for p in recorded], overwrite=overwrite)
+            steps.write_motion(made, Path(output), [input_record(p) for p in recorded], overwrite=overwrite)
     return made.motion
 
 
@@ -387,7 +388,7 @@ def _path(value: StrPath | None) -> Path | None:
 
 
 def _emotions(emotions: StrPath | Sequence[tuple[float, float, str]] | None) -> dict[str, Any]:
-    """The emotion arguments of :func:`core.read_utterance`: a spans file, or the spans themselves."""
+    """The emotion arguments of :func:`steps.read_utterance`: a spans file, or the spans themselves."""
     if emotions is None:
         return {}
     if isinstance(emotions, (str, os.PathLike)):
@@ -409,12 +410,12 @@ def _fitted_member(path: Path) -> Method:
 
 def _default_method(source: object, path: Path | None, settings: MethodSettings) -> str:
     """The member that reads ``source`` when none is named: the fitted member of a model,
-    ``synthesize.search`` otherwise."""
+    ``synthesize.method`` otherwise."""
     kind = artifact_kind(path) if path is not None else getattr(source, "KIND", None)
     for entry in METHODS.entries():
         if entry.facts.get("fitted") and entry.facts.get("source_kind") == kind:
             return entry.name
-    return settings.synthesize.search
+    return steps.chosen_method(None, settings.synthesize)
 
 
 def _check_source(member: Method, source: object) -> None:

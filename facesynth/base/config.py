@@ -215,7 +215,10 @@ class SynthesizeSettings:
     (Eq. 16, Table IV), silence and output rate.
     """
 
-    search: str = setting("paper VI-B, Algorithm 1 (dp); Cao et al. 2004 (greedy)", choices=("dp", "greedy"))
+    method: str = setting("paper VI-B, Algorithm 1 (dp); the other members of the method family (docs/methods.md)",
+                          choices=Members(METHODS))
+    search: str = setting("deprecated, now synthesize.method (which it follows when that is dp): paper VI-B, "
+                          "Algorithm 1 (dp); Cao et al. 2004 (greedy)", choices=("dp", "greedy"))
     greedy_clusters: int = setting("Cao et al. 5.3; 0: unclustered Anime Graph", unit="clusters", ge=0)
     postprocess: str = setting("paper VII-B, Eq. 16 (deng); Cao et al. 6.3 (cao)", choices=("deng", "cao"))
     use_opencl: bool = setting("not in the paper: compute device")
@@ -229,6 +232,15 @@ class SynthesizeSettings:
     alpha5: float = setting("Table II", ge=0)
     alpha6: float = setting("Eq. 5", ge=0)
     huge_penalty: float = setting("Eq. 10 (HugePenalty)", unit="cost", gt=0)
+    phone_match: str = setting("not in the paper: Table II's phone matching for a phone of another language (viseme: "
+                               "by its nearest English phone, the paper's rule; unseen: one the database lacks by "
+                               "articulatory features, its nearest phone's nodes 0 and the others by how much "
+                               "further they are, facesynth.base.ipa; features: every phone so, English too)",
+                               choices=("viseme", "unseen", "features"))
+    phone_match_scale: float = setting("not in the paper: how much further in features (facesynth.base.ipa.WEIGHTS) "
+                                       "than the nearest phone a node's phone costs what Table II's rule 3 charges "
+                                       "(another viseme); nearer, from alpha4 times that up", unit="feature distance",
+                                       gt=0)
     join_smoothing: str = setting("paper VII-B, Eq. 16 (eq16, free-ended); not in the paper: a displacement blend "
                                   "continuous in position and velocity (blend)", choices=("blend", "eq16"))
     smoothing_half_window: int = setting("Eq. 16 (s = 3); the blend's reach on each side of a join",
@@ -306,7 +318,7 @@ class EvaluateSettings:
     plot_marker: str = setting("paper Figs. 15-16 (marker #79)")
     dominance_iterations: int = setting("not in the paper: L-BFGS-B iterations fitting the Cohen-Massaro baseline", ge=1)
     methods: tuple[str, ...] = setting("not in the paper: the synthesis methods scored (dp always: the paired "
-                                       "differences are dp minus each); trajectory also needs --trajectory",
+                                       "differences are dp minus each); trajectory also needs --model",
                                        choices=Members(METHODS))
     bootstrap_resamples: int = setting("not in the paper: resamples of the sentences for every 95% interval", ge=100)
     classifier_frames: int = setting("not in the paper: training frames of the emotion classifier", unit="frames", ge=100)
@@ -752,17 +764,55 @@ def _literal(value: Any) -> str:
     return str(value)
 
 
-def _declarations() -> dict[str, dict[str, Declared]]:
-    out: dict[str, dict[str, Declared]] = {}
-    for section, cls in SECTIONS.items():
-        hints = typing.get_type_hints(cls)
-        out[section] = {f.name: Declared(section, f.name, hints[f.name], f.metadata["setting"])
-                        for f in dataclasses.fields(cls)}
+def member_sections() -> dict[str, tuple[type, Mapping[str, Any]]]:
+    """The settings sections members of the method family bring that facesynth does not declare
+    above: {section: (its settings dataclass, its default values)}, from the registrations' facts
+    ``settings`` (the section's name), ``settings_type`` and ``settings_defaults`` (a member
+    outside facesynth: a plug-in's, a test's toy). A member whose section is one of
+    :data:`SECTIONS` names it alone."""
+    out: dict[str, tuple[type, Mapping[str, Any]]] = {}
+    for e in METHODS.entries():
+        section = e.facts.get("settings")
+        if section and section not in SECTIONS:
+            out[section] = (e.facts["settings_type"], e.facts.get("settings_defaults", {}))
     return out
 
 
-#: Every setting's declaration, by section and key (built once from the dataclasses above).
-DECLARATIONS: Mapping[str, Mapping[str, Declared]] = _declarations()
+def sections() -> dict[str, type]:
+    """Every settings section, :data:`SECTIONS` then the members' own (:func:`member_sections`)."""
+    return {**SECTIONS, **{name: cls for name, (cls, _) in member_sections().items()}}
+
+
+def _declared(section: str, cls: type) -> dict[str, Declared]:
+    hints = typing.get_type_hints(cls)
+    return {f.name: Declared(section, f.name, hints[f.name], f.metadata["setting"]) for f in dataclasses.fields(cls)}
+
+
+class _Declarations(Mapping):
+    """Every setting's declaration, by section and key: :data:`SECTIONS`' built once, the members'
+    own sections (:func:`member_sections`) as registered when asked."""
+
+    def __init__(self) -> None:
+        self._fixed = {section: _declared(section, cls) for section, cls in SECTIONS.items()}
+
+    def _all(self) -> dict[str, dict[str, Declared]]:
+        extra = {name: _declared(name, cls) for name, (cls, _) in member_sections().items()}
+        return {**self._fixed, **extra} if extra else self._fixed
+
+    def __getitem__(self, section: str) -> dict[str, Declared]:
+        if section in self._fixed:
+            return self._fixed[section]
+        return self._all()[section]
+
+    def __iter__(self):
+        return iter(self._all())
+
+    def __len__(self) -> int:
+        return len(self._all())
+
+
+#: Every setting's declaration, by section and key (from the dataclasses above and the members' sections).
+DECLARATIONS: Mapping[str, Mapping[str, Declared]] = _Declarations()
 
 
 def choices(section: str, name: str) -> tuple[str, ...]:
@@ -790,7 +840,10 @@ def _read_toml(path: Path) -> dict[str, Any]:
 def default_config() -> dict[str, dict[str, Any]]:
     """The packaged defaults, ``configs/default.toml``, as nested dicts (not yet checked)."""
     text = resources.files("facesynth").joinpath(DEFAULTS_NAME).read_text("utf-8")
-    return tomllib.loads(text)
+    data = tomllib.loads(text)
+    for section, (_, defaults) in member_sections().items():
+        data.setdefault(section, dict(defaults))
+    return data
 
 
 def parse_override(item: str) -> tuple[str, str, Any]:
@@ -803,7 +856,7 @@ def parse_override(item: str) -> tuple[str, str, Any]:
     try:
         value = tomllib.loads(f"v = {raw}")["v"]
     except tomllib.TOMLDecodeError:
-        value = raw  # a bare word is a string: --set synthesize.search=greedy
+        value = raw  # a bare word is a string: --set synthesize.method=greedy
     return section, name, value
 
 
@@ -826,14 +879,21 @@ def _apply(data: dict[str, dict[str, Any]], layer: dict[str, Any], origin: str) 
 class Config:
     """The resolved, checked configuration: defaults, then a file, then ``--set`` overrides."""
 
-    def __init__(self, data: dict[str, dict[str, Any]], reads: tuple[str, ...] | None = None):
+    def __init__(self, data: dict[str, dict[str, Any]], reads: tuple[str, ...] | None = None,
+                 given: frozenset[str] = frozenset()):
         self._data = data
         self._reads = reads
+        self._given = given
 
     def only(self, reads: tuple[str, ...]) -> "Config":
         """The same values, of which :meth:`settings` hands out only the sections ``reads``
         (the command line's declaration of what a command reads, kept true by this guard)."""
-        return Config(self._data, tuple(reads))
+        return Config(self._data, tuple(reads), self._given)
+
+    def given(self, key: str) -> bool:
+        """Whether ``section.key`` was given by a ``--config`` file or a ``--set`` (not the default):
+        a deprecated name warns only then."""
+        return key in self._given
 
     @classmethod
     def load(cls, path: Path | None = None, overrides: tuple[str, ...] = ()) -> "Config":
@@ -846,15 +906,19 @@ class Config:
             lacking = [name for name in declared if name not in data.get(section, {})]
             if lacking:
                 raise ConfigError(f"{DEFAULTS_NAME}: no default for '{section}.{lacking[0]}'; every setting needs one.")
+        given: set[str] = set()
         if path is not None:
-            _apply(data, _read_toml(Path(path)), str(path))
+            layer = _read_toml(Path(path))
+            _apply(data, layer, str(path))
+            given |= {f"{section}.{name}" for section, values in layer.items() for name in values}
         for item in overrides:
             section, name, value = parse_override(item)
             try:
                 _apply(data, {section: {name: value}}, f"--set {item}")
             except ConfigError as exc:
                 raise OverrideError(str(exc)) from None
-        return cls(data)
+            given.add(f"{section}.{name}")
+        return cls(data, given=frozenset(given))
 
     def settings(self, section: str, cls: type[S] | None = None) -> S:
         """The section as its frozen dataclass (lists become tuples)."""
@@ -862,7 +926,7 @@ class Config:
             # A programming error, not the user's: the command reads a section it does not declare.
             raise RuntimeError(f"[{section}] is not among the sections this command declares ({', '.join(self._reads)}); "
                                "add it to the reads of its Stage in facesynth/base/pipeline.py")
-        cls = cls or SECTIONS[section]
+        cls = cls or sections()[section]
         values = {}
         for field in dataclasses.fields(cls):
             value = self._data[section][field.name]

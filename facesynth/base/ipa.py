@@ -348,3 +348,39 @@ def viseme_table() -> str:
         cells += ["yes" if v[c] is True else "" if v[c] is False else str(v[c]) for c in VISEME_COLUMNS]
         rows.append(f"| {' | '.join(cells)} |")
     return "\n".join(rows)
+
+
+@lru_cache(maxsize=65536)
+def phone_distance(a: str, b: str) -> float:
+    """:func:`distance` of two IPA phones (their :func:`features`); 0 for phones of equal features."""
+    return distance(features(a), features(b))
+
+
+def festival_phone_ipa(phone: str) -> str:
+    """The IPA of a Festival phone (:data:`FESTIVAL_IPA`); KeyError for another name."""
+    return FESTIVAL_IPA[phone]
+
+
+def match_level(d: float, same_viseme: float, scale: float) -> float:
+    """The phone-matching cost (paper Table II) of a phone ``d`` further in features
+    (:func:`distance`) than the nearest (or the same) phone, as a fraction of Table II's cost of
+    another viseme: 0 at ``d`` 0, else ``same_viseme + (1 - same_viseme) * d / scale``, at most 1. ``same_viseme`` is Table II's
+    discount for a node of the same viseme (``synthesize.alpha4``), so any other phone costs at
+    least what Table II's rule 2 charges, and a phone ``scale`` or more further (one visible
+    contrast: rounding, or a vowel against a consonant, weighs 3, :data:`WEIGHTS`) costs what rule 3
+    charges.
+    Table II is the case of a distance that is 0 for the same phone, near 0 within a viseme and at
+    least ``scale`` between visemes."""
+    if d <= 0.0:
+        return 0.0
+    return min(1.0, same_viseme + (1.0 - same_viseme) * d / scale)
+
+
+def nearest_phone(phone: str, candidates, ipa_of=festival_phone_ipa) -> str:
+    """The one of ``candidates`` (names; ``ipa_of`` gives each one's IPA, Festival names by
+    default) nearest the IPA phone ``phone`` in features (:func:`distance`); ties go to the first
+    in the order given. ValueError when there is no candidate."""
+    names = list(candidates)
+    if not names:
+        raise ValueError("nearest_phone: no candidate phones")
+    return min(names, key=lambda name: phone_distance(phone, ipa_of(name)))

@@ -61,7 +61,8 @@ class Stage:
     name: the command path below ``facesynth`` ("normalize", "isomap build").
     summary: what it does, in one line.
     usage: a typical command line (the docs' stage table).
-    reads: the settings sections it reads (``[limits]``, read by every command, is not listed).
+    reads: the settings sections it reads (``[limits]``, read by every command, is not listed;
+        :data:`METHOD_SECTIONS` stands for the sections of the method family's members).
     inputs, outputs: the artifact kinds it reads and writes (``facesynth.model.spec.KINDS``).
     output_options: the options (click parameter names) naming the paths it writes, checked
         (writable, not clobbered) before any work.
@@ -101,6 +102,17 @@ class Stage:
         """The output options naming a folder, for these parsed options."""
         return {name: folder for name, folder in self.folder_outputs.items() if folder.applies(options)}
 
+    def sections(self) -> tuple[str, ...]:
+        """The settings sections it reads, the registered members' sections spelled out
+        (``[limits]`` not included)."""
+        out: list[str] = []
+        for section in self.reads:
+            if section == METHOD_SECTIONS:
+                out += [e.facts["settings"] for e in METHODS.entries() if e.facts.get("settings")]
+            else:
+                out.append(section)
+        return tuple(dict.fromkeys(out))
+
     def input_kinds(self) -> tuple[str, ...]:
         """The artifact kinds it reads, the registered fitted models' kinds spelled out."""
         return _kinds(self.inputs)
@@ -123,6 +135,10 @@ class Stage:
 #: those of the fitted members that also stream.
 FITTED_MODELS = "<fitted models>"
 STREAMING_MODELS = "<fitted models that stream>"
+#: In a stage's ``reads``: the settings section of every member of the method family, as
+#: registered (the fact ``settings``: ``synthesize`` for the searches and ``mean``, ``trajectory``,
+#: ``coarticulation``, a new member's own), so that a command running any member can read it.
+METHOD_SECTIONS = "<the members' sections>"
 
 
 def _kinds(declared: tuple[str, ...]) -> tuple[str, ...]:
@@ -197,12 +213,12 @@ STAGES: tuple[Stage, ...] = (
     _stage("synthesize", "Synthesize expressive marker motion for a new utterance.",
            "facesynth synthesize [--method M] db.h5|MODEL --phonemes X.TextGrid [--audio X.wav] -o motion.h5",
            _s("synthesize", "run", "SynthesizeResult"),
-           reads=("synthesize", "ingest", "align", "trajectory", "coarticulation"),
+           reads=("synthesize", "ingest", "align", METHOD_SECTIONS),
            inputs=("motiondb", FITTED_MODELS, "headmotion"), outputs=("motion",),
            output_options=("output",), takes="phones (or audio to align), audio (its loudness), emotions, constraints (dp)",
            paper="VI, VII-B (dp, greedy); mean, coarticulation, trajectory ([methods](methods.md))"),
     _stage("suggest", "Suggest motion nodes for a constraint at a time.",
-           "facesynth suggest db.h5 --phonemes X.TextGrid --at 1.25", _s("suggest", "suggest", "Suggestions"),
+           "facesynth suggest db.h5 --phonemes X.TextGrid --at 1.25", _s("suggest", "suggest", "SuggestResult"),
            reads=("synthesize", "ingest"), inputs=("motiondb",), takes="phones", makes="table of nodes",
            paper="VI-A"),
     _stage("expression fit", "Fit the bilinear style/content expression model.",
@@ -232,12 +248,12 @@ STAGES: tuple[Stage, ...] = (
            paper="Chuang & Bregler 2005 §4.1, Eq. 8; Huang et al. §5.2"),
     _stage("train-trajectory", "Deprecated: the same as fit-method trajectory (warns).",
            "facesynth train-trajectory db.h5 --keyshapes keyshapes.h5 -o traj.h5",
-           _s("fit_method", "run", "FitMethodResult"), reads=("synthesize", "trajectory", "coarticulation"),
+           _s("fit_method", "run", "FitMethodResult"), reads=(METHOD_SECTIONS,),
            inputs=("motiondb", "keyshapes"), outputs=("trajectory",), output_options=("output",),
            paper="Huang, Chen & Chuang §5.4"),
     _stage("fit-method", "Fit a synthesis method (coarticulation, trajectory) and write its model.",
            "facesynth fit-method coarticulation|trajectory db.h5 [--keyshapes K] -o model.h5",
-           _s("fit_method", "run", "FitMethodResult"), reads=("synthesize", "trajectory", "coarticulation"),
+           _s("fit_method", "run", "FitMethodResult"), reads=(METHOD_SECTIONS,),
            inputs=("motiondb", "keyshapes"), outputs=(FITTED_MODELS,), output_options=("output",),
            paper="Cohen & Massaro (coarticulation); Huang, Chen & Chuang §5.4 (trajectory)"),
     _stage("bind", "Place a capture's own markers on a rig.",
@@ -283,15 +299,14 @@ STAGES: tuple[Stage, ...] = (
            makes="one HTML page: the whole face, render's camera, head motion, a phone timeline"),
     _stage("stream", "Live synthesis: audio in, frames of ARKit curves out.",
            "facesynth stream db.h5 [--audio X.wav | --serve HOST:PORT] [--livelink HOST:PORT]",
-           _s("stream", "run"), reads=("stream", "synthesize", "align", "solve", "trajectory"),
+           _s("stream", "run"), reads=("stream", "synthesize", "align", "solve", METHOD_SECTIONS),
            inputs=("motiondb", STREAMING_MODELS),
            takes="live audio, or any sound file or video with sound (and phone timings, emotion messages)",
            makes="JSON frames of ARKit curves (stdout or WebSocket), Live Link Face UDP",
            paper="VI-VII live: a fixed-lag Algorithm 1 ([live](live.md))"),
     _stage("batch", "Synthesize every line of a dialogue script on Dask.", "facesynth batch script.csv --db db.h5 -o OUT/",
            _s("batch", "run", "BatchResult"),
-           reads=("batch", "synthesize", "ingest", "align", "deform", "render", "trajectory", "coarticulation", "solve",
-                  "export"),
+           reads=("batch", "synthesize", "ingest", "align", "deform", "render", METHOD_SECTIONS, "solve", "export"),
            inputs=("motiondb", FITTED_MODELS), outputs=("motion", "curves", "meshanim"),
            output_options=("output",), folder_outputs={"output": Folder("the batch outputs", in_place=True)},
            takes="per line: audio, text (none: recognised) or phones, emotion(s), constraints",
@@ -303,8 +318,8 @@ STAGES: tuple[Stage, ...] = (
            output_options=("output",), paper="VIII (ground truth beside synthesis)"),
     _stage("evaluate", "Synthesize every held-out sentence and compare it with its capture and baselines.",
            "facesynth evaluate db.h5 --heldout corpus.h5 --truth corpus/ -o report/",
-           _s("evaluate", "run", "EvaluateResult"), reads=("evaluate", "synthesize", "normalize", "trajectory"),
-           inputs=("motiondb", "corpus", "trajectory"), output_options=("output",),
+           _s("evaluate", "run", "EvaluateResult"), reads=("evaluate", "synthesize", "normalize", METHOD_SECTIONS),
+           inputs=("motiondb", "corpus", FITTED_MODELS), output_options=("output",),
            folder_outputs={"output": Folder("the report")},
            takes="the sample corpus folder's `groundtruth/`, `markers.csv`",
            makes="metrics.json, table.md, index.html, PNG", paper="VI-D, VIII, Eq. 12-13, Figs. 15-16"),
@@ -322,8 +337,22 @@ STAGE: dict[str, Stage] = {s.name: s for s in STAGES}
 #: The top-level commands (groups for "isomap build", "db show") in pipeline order.
 COMMAND_ORDER: tuple[str, ...] = tuple(dict.fromkeys(s.name.split()[0] for s in STAGES))
 
-#: The settings sections each command reads, ``[limits]`` included, by command path.
-READS: dict[str, tuple[str, ...]] = {s.name: s.reads + (ALWAYS_READ,) for s in STAGES}
+class _Reads(Mapping):
+    """See :data:`READS` (current: a member registered later adds its section)."""
+
+    def __getitem__(self, name: str) -> tuple[str, ...]:
+        return STAGE[name].sections() + (ALWAYS_READ,)
+
+    def __iter__(self):
+        return iter(STAGE)
+
+    def __len__(self) -> int:
+        return len(STAGE)
+
+
+#: The settings sections each command reads, ``[limits]`` included, by command path (the members'
+#: sections as registered when asked).
+READS: Mapping[str, tuple[str, ...]] = _Reads()
 
 #: The folder outputs of each command that has any, {command: {option: Folder}}.
 FOLDER_OUTPUTS: dict[str, Mapping[str, Folder]] = {s.name: s.folder_outputs for s in STAGES if s.folder_outputs}
@@ -371,7 +400,7 @@ def table() -> str:
     rows = [_NOTE, "", "| command | what it does | reads | writes | settings | paper |", "|---|---|---|---|---|---|"]
     for s in STAGES:
         reads, writes = _join(_list(s.input_kinds()), _cell(s.takes)), _join(_list(s.output_kinds()), _cell(s.makes))
-        rows.append(f"| `{_cell(s.usage)}` | {_cell(s.summary)} | {reads} | {writes} | {_list(s.reads) or '—'} "
+        rows.append(f"| `{_cell(s.usage)}` | {_cell(s.summary)} | {reads} | {writes} | {_list(s.sections()) or '—'} "
                     f"| {_cell(s.paper) or '—'} |")
     return "\n".join(rows) + "\n"
 

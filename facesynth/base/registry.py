@@ -133,8 +133,10 @@ class _View(Mapping):
 
 
 #: Synthesis methods: ``target`` a :class:`facesynth.domain.methods.Method` subclass; facts:
-#: ``fitted`` (its source is a model made by ``facesynth fit-method``), ``source_kind`` (the
-#: artifact kind it reads), ``takes_constraints``, ``report_row`` (its row in ``evaluate``'s table).
+#: ``settings`` (the settings section it reads; a section facesynth does not declare comes with
+#: ``settings_type``, its dataclass, and ``settings_defaults``), ``fitted`` (its source is a model
+#: made by ``facesynth fit-method``), ``source_kind`` (the artifact kind it reads), ``streams`` (it
+#: has a live form, ``facesynth stream`` runs it), ``searches`` and ``simplicity`` (for ``evaluate``).
 METHODS = Registry("method", "facesynth.domain.methods")
 #: Export formats (``facesynth export --format``, ``batch``'s outputs): ``target`` a writer
 #: ``(Exportable, Path, ExportOptions) -> None``; facts: ``suffix``, ``needs`` (an optional extra).
@@ -155,7 +157,8 @@ G2P_BACKENDS = Registry("G2P backend", "facesynth.domain.speech.languages")
 #: The registries by the name their docs tables use, with the facts each table shows (column
 #: header, fact, value when the member does not say).
 TABLES: dict[str, tuple[Registry, tuple[tuple[str, str, Any], ...]]] = {
-    "methods": (METHODS, (("reads", "source_kind", "motiondb"), ("streams", "streams", False))),
+    "methods": (METHODS, (("reads", "source_kind", "motiondb"), ("settings", "settings", "synthesize"),
+                          ("streams", "streams", False))),
     "export-formats": (EXPORT_FORMATS, (("file", "suffix", ""), ("batch output", "batch", False))),
     "capture-formats": (CAPTURE_READERS, (("file names", "suffixes", ()),)),
     "artifact-kinds": (ARTIFACT_KINDS, ()),

@@ -2,10 +2,10 @@
 regression) from the voice's frame features, read at fixed offsets around each output frame, to
 the mouth's curves of a capture (jawOpen, the mouth opening, funnel, pucker, ...), with the
 features' normalization, so that the mouth is predicted from audio with this file alone
-(:mod:`facesynth.domain.speech.articulation` holds the features, the fit and the prediction).
+(:mod:`facesynth.domain.voice.articulation` holds the features, the fit and the prediction).
 Written by ``facesynth fit-articulation`` (a performer's capture) and by
 ``benchmarks/voice_articulation.py --model-out`` (FACEGOOD: the packaged model); read by
-``synthesize.articulation_model`` (:func:`facesynth.domain.methods.voice.articulation_model`).
+``synthesize.articulation_model`` (:func:`facesynth.domain.voice.fusion.articulation_model`).
 """
 
 from __future__ import annotations
@@ -19,7 +19,7 @@ import numpy as np
 from .artifacts import attr, open_artifact, read, read_strings, write_artifact, write_strings
 from .trajectory import stored_records
 
-#: The normalizations of the voice features (see :class:`facesynth.domain.speech.articulation.Normalizer`).
+#: The normalizations of the voice features (see :class:`facesynth.domain.voice.articulation.Normalizer`).
 NORMALIZATIONS = ("global", "utterance", "running")
 
 

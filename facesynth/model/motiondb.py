@@ -42,6 +42,8 @@ class Nodes:
     start_s, end_s : (N,) float64, seconds from the take's start.
     prev_phone, next_phone : triphone context (``pau`` at sentence edges).
     pre, suc : (N,) int64, captured predecessor / successor node, or -1.
+    ipa : N IPA phones pronounced (a take in another language; ``phone`` is then the nearest
+        English phone), ``""`` for English phones; None when every take is English.
     """
 
     phone: list[str]
@@ -56,6 +58,7 @@ class Nodes:
     next_phone: list[str]
     pre: np.ndarray
     suc: np.ndarray
+    ipa: list[str] | None = None
 
     def __len__(self) -> int:
         return len(self.phone)
@@ -73,7 +76,8 @@ class Nodes:
         suc = np.where(self.suc[keep] >= 0, remap[np.maximum(self.suc[keep], 0)], -1)
         return Nodes(pick(self.phone), self.viseme[keep], pick(self.emotion), self.take[keep],
                      self.frame_start[keep], self.frame_count[keep], self.start_s[keep], self.end_s[keep],
-                     pick(self.prev_phone), pick(self.next_phone), pre, suc)
+                     pick(self.prev_phone), pick(self.next_phone), pre, suc,
+                     None if self.ipa is None else pick(self.ipa))
 
     _STRINGS = ("phone", "emotion", "prev_phone", "next_phone")
     _ARRAYS = ("viseme", "take", "frame_start", "frame_count", "start_s", "end_s", "pre", "suc")
@@ -85,13 +89,15 @@ class Nodes:
             write_strings(g, key, getattr(self, key))
         for key in self._ARRAYS:
             g.create_dataset(key, data=getattr(self, key))
+        if self.ipa is not None:
+            write_strings(g, "ipa", self.ipa)
 
     @classmethod
     def read(cls, f: h5py.File) -> "Nodes":
         """The table under ``/nodes`` of an open artifact."""
         values: dict[str, list[str] | np.ndarray] = {k: read_strings(f, f"nodes/{k}") for k in cls._STRINGS}
         values.update({k: read(f, f"nodes/{k}") for k in cls._ARRAYS})
-        return cls(**values)  # type: ignore[arg-type]
+        return cls(**values, ipa=read_strings(f, "nodes/ipa") if "nodes/ipa" in f else None)  # type: ignore[arg-type]
 
 
 def node_frames(nodes: Nodes, n_frames: int) -> tuple[np.ndarray, np.ndarray]:
@@ -106,13 +112,26 @@ def node_frames(nodes: Nodes, n_frames: int) -> tuple[np.ndarray, np.ndarray]:
     return node, relative
 
 
-@dataclass(frozen=True)
-class TransitionArrays:
-    """The per-node transition features a ``motiondb`` stores (N nodes, M markers, D DSC terms):
-    ``first_pos``, ``last_pos`` (N, 3M) float32 mm and ``first_vel``, ``last_vel`` (N, 3M)
-    float32 mm/frame (each node's first and last frame); ``dsc_out``, ``dsc_in`` (N, D) float32
-    mm and ``dsc_scale`` (N,) float32 1/frame^3 (paper Eq. 6); ``pivot_distances``, four (N, P)
-    float32 arrays (mm, mm, mm/frame, mm/frame) for the search's bounds."""
+@dataclass
+class TransitionFeatures:
+    """The per-node data from which every pair's Table I terms (DSC, PGap, VGap) are computed,
+    as a ``motiondb`` stores it (N nodes, M markers, D DSC terms); the search computes the pair
+    terms from it (:mod:`facesynth.domain.search.pairs`).
+
+    first_pos, last_pos : (N, 3M) float32 mm, markers of the node's first / last frame.
+    first_vel, last_vel : (N, 3M) float32 mm/frame, velocity at the first / last frame.
+    dsc_out : (N, D) float32, x_i: second differences of (1 - s) warp(o_i) (PCA space, mm; Eq. 6).
+    dsc_in : (N, D) float32, y_j: second differences of s * pre(o_j) (0 without predecessor).
+    dsc_scale : (N,) float32, 1/frame^3 (0 without predecessor).
+    viseme : (N,) int64 Table VI class; pre : (N,) int64 captured predecessor or -1.
+    pivot_distances : four (N, P) float32 arrays: mixed-norm distances (sum over markers of the
+        Euclidean distance) of last_pos, first_pos, last_vel, first_vel from P pivots (mm, mm,
+        mm/frame, mm/frame), for the search's bounds; None until computed
+        (:func:`facesynth.domain.search.pairs.pivot_distances`), required to write a database.
+    device_layout : the search's padded, lane-ordered copies of the arrays
+        (:func:`facesynth.domain.search.pairs.layout`), made once on first use; not stored, and
+        not carried by ``dataclasses.replace`` (a replaced array needs its own).
+    """
 
     first_pos: np.ndarray
     last_pos: np.ndarray
@@ -121,7 +140,31 @@ class TransitionArrays:
     dsc_out: np.ndarray
     dsc_in: np.ndarray
     dsc_scale: np.ndarray
-    pivot_distances: tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]
+    viseme: np.ndarray
+    pre: np.ndarray
+    pivot_distances: tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray] | None = None
+    device_layout: object = field(default=None, init=False, repr=False, compare=False)
+
+    def __len__(self) -> int:
+        return len(self.pre)
+
+    @property
+    def pre_viseme(self) -> np.ndarray:
+        """(N,) int64: viseme of pre(o_j), -1 without predecessor."""
+        return np.where(self.pre >= 0, self.viseme[np.maximum(self.pre, 0)], -1)
+
+    def subset(self, keep: np.ndarray, pre: np.ndarray) -> TransitionFeatures:
+        """The nodes ``keep`` with re-indexed links ``pre``; a node whose predecessor is gone
+        gets DSC features 0 (Table I rule 4 does not use DSC)."""
+        lost = pre < 0
+        dsc_in = self.dsc_in[keep].copy()
+        scale = self.dsc_scale[keep].copy()
+        dsc_in[lost] = 0.0
+        scale[lost] = 0.0
+        pivots = None if self.pivot_distances is None else tuple(d[keep] for d in self.pivot_distances)
+        return TransitionFeatures(self.first_pos[keep], self.last_pos[keep], self.first_vel[keep], self.last_vel[keep],
+                                  self.dsc_out[keep], dsc_in, scale, self.viseme[keep], pre,
+                                  pivots)
 
 
 @dataclass
@@ -233,21 +276,20 @@ class MotionDatabase:
             keys = [f"boundary/{k}" for k in BOUNDARY_KEYS] + [f"transition/{k}" for k in DSC_KEYS + PIVOT_KEYS]
             return int(sum(f[k].size * f[k].dtype.itemsize for k in keys))
 
-    def transition_arrays(self) -> TransitionArrays:
-        """The per-node transition features as stored (the search builds its pair terms from
-        them: :func:`facesynth.domain.search.pairs.node_features`), page-aligned so that an
-        OpenCL CPU device reads them in place."""
+    def transition_features(self) -> TransitionFeatures:
+        """The per-node transition features as stored, with the nodes' visemes and captured
+        predecessors (the search builds its pair terms from them), the arrays page-aligned so
+        that an OpenCL CPU device reads them in place."""
         with self._opened() as f:
             first_pos, last_pos, first_vel, last_vel = (read(f, f"boundary/{k}", HOST_ALIGNMENT) for k in BOUNDARY_KEYS)
             dsc_out, dsc_in, dsc_scale = (read(f, f"transition/{k}", HOST_ALIGNMENT) for k in DSC_KEYS)
             pivots = tuple(read(f, f"transition/{k}") for k in PIVOT_KEYS)
-            return TransitionArrays(first_pos, last_pos, first_vel, last_vel, dsc_out, dsc_in, dsc_scale,
-                                    pivots)  # type: ignore[arg-type]
+            return TransitionFeatures(first_pos, last_pos, first_vel, last_vel, dsc_out, dsc_in, dsc_scale,
+                                      self.nodes.viseme, self.nodes.pre, pivots)  # type: ignore[arg-type]
 
-    def write(self, path: Path, features, *, config: str, inputs, overwrite: bool = False) -> None:
-        """Write the database with its transition ``features`` (anything with the fields of
-        :class:`TransitionArrays`, such as the search's ``PairFeatures``, its pivot distances
-        computed); ``frames.markers`` must be loaded."""
+    def write(self, path: Path, features: TransitionFeatures, *, config: str, inputs, overwrite: bool = False) -> None:
+        """Write the database with its transition ``features`` (their pivot distances computed;
+        the visemes and predecessors are the nodes'); ``frames.markers`` must be loaded."""
         if features.pivot_distances is None:
             raise ValueError("MotionDatabase.write: the features' pivot distances are not computed")
         with write_artifact(path, self.KIND, config=config, inputs=inputs, overwrite=overwrite) as g:

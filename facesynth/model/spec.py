@@ -255,6 +255,9 @@ TABLES = Block("tables", "The corpus tables, copied forward by every corpus-side
         Dataset("phone", "str", ("P",), "Festival phone (Table VI set), `pau` for silence"),
         Dataset("emotion", "str", ("P",), "emotion of the phone (from the alignment's emotion tier, else its take's); "
                 "absent in files written before it existed, read then as the take's", required=False),
+        Dataset("ipa", "str", ("P",), "the IPA phone pronounced (takes in another language than English; `phone` "
+                "is then its nearest English phone), empty for English phones and pauses; absent when every take "
+                "is English", required=False),
     )),
     Dataset("marker_names", "str", ("M",), "marker order of every marker array"),
 ))
@@ -338,6 +341,9 @@ MOTIONDB = Kind("motiondb", 2, (
         Dataset("end_s", "float64", ("N",), "the phone's end in its take", "s"),
         Dataset("pre", "int64", ("N",), "captured predecessor node, -1 if none"),
         Dataset("suc", "int64", ("N",), "captured successor node, -1 if none"),
+        Dataset("ipa", "str", ("N",), "the IPA phone the node pronounces (a take in another language than English; "
+                "`phone` is then its nearest English phone, and the search matches it by its articulatory "
+                "features), empty for English phones; absent when every take is English", required=False),
     )),
     Group("frames", "phoneme-clusters", "per frame: its node; a phoneme cluster is the frames whose node has that phone", (
         Dataset("node", "int64", ("F",), "node of each frame, -1 outside nodes (pauses, held-out takes)",
@@ -618,7 +624,7 @@ ARTICULATION = Kind("articulation", 1, (
     "(`feature_names`, 10 ms analysis frames, normalized as `normalization` says), each averaged over `pool` "
     "frames around every offset of `offsets_s` from an output frame's time (with the loudness hinges at `knots` "
     "where `expand` is 1), to the mouth's curves `target_names`: `curves = context @ coef + intercept`, the "
-    "context offset-major. `facesynth.domain.speech.articulation.predict` needs this file alone."), (
+    "context offset-major. `facesynth.domain.voice.articulation.predict` needs this file alone."), (
     Dataset("target_names", "str", ("Ya",), "the predicted curves (ARKit names, or `opening`)"),
     Dataset("offsets_s", "float64", ("Ca",), "offsets of the context from the frame time", "s", (SECONDS,)),
     Dataset("feature_names", "str", ("Da",), "the voice features, in column order"),

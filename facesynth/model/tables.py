@@ -59,13 +59,17 @@ class Takes:
 class Phones:
     """One row per phone segment: its take (row index into :class:`Takes`), times (s), phone,
     and its emotion (``None``: every phone has its take's emotion, as in files written
-    before per-phone emotion existed; see :meth:`emotions`)."""
+    before per-phone emotion existed; see :meth:`emotions`). ``ipa``: for takes spoken in
+    another language than English, the IPA phone each segment pronounces (``phone`` is then its
+    nearest English phone), ``""`` for English phones and pauses; None when every take is
+    English (and in files written before it existed)."""
 
     take: np.ndarray   # (n,) int64
     start: np.ndarray  # (n,) float64, seconds from the take's start
     end: np.ndarray    # (n,) float64
     phone: list[str]
     emotion: list[str] | None = None
+    ipa: list[str] | None = None
 
     def emotions(self, takes: "Takes") -> list[str]:
         """The emotion of every phone: its own, or its take's when the table has none."""
@@ -85,6 +89,8 @@ class Phones:
         write_strings(g, "phone", self.phone)
         if self.emotion is not None:
             write_strings(g, "emotion", self.emotion)
+        if self.ipa is not None:
+            write_strings(g, "ipa", self.ipa)
         g["start"].attrs["units"] = "s"
         g["end"].attrs["units"] = "s"
 
@@ -92,8 +98,9 @@ class Phones:
     def read(cls, f: h5py.File) -> "Phones":
         """The table under ``/phones`` of an open artifact."""
         emotion = read_strings(f, "phones/emotion") if "phones/emotion" in f else None
+        ipa = read_strings(f, "phones/ipa") if "phones/ipa" in f else None
         return cls(read(f, "phones/take"), read(f, "phones/start"), read(f, "phones/end"), read_strings(f, "phones/phone"),
-                   emotion)
+                   emotion, ipa)
 
 
 def read_tables(f: h5py.File) -> tuple[Takes, Phones, list[str]]:

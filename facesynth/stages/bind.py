@@ -3,12 +3,12 @@
 ``residual_mm`` and ``flagged`` for the user to check).
 
 One frame is fitted to the rig's surface by :func:`facesynth.domain.retarget.bind.bind_markers`:
-``bind.frame``, else the take's most typical frame (:func:`facesynth.domain.head_motion.rigid.typical_frame`,
+``bind.frame``, else the take's most typical frame (:func:`facesynth.domain.geometry.rigid.typical_frame`,
 the face it holds most; ``normalize`` takes the same frame as its reference when no silence is
 marked); markers the capture shows riding on the jaw take vertices the rig's ``jawOpen``
 carries, and markers that do not, vertices it does not (:func:`facesynth.domain.retarget.bind.jaw_sides`).
 The rigid flags are the markers whose mutual distances vary least over the whole take
-(:func:`facesynth.domain.head_motion.rigid.find_rigid_markers`, with ``normalize.rigid_max_spread_mm``), so
+(:func:`facesynth.domain.geometry.rigid.find_rigid_markers`, with ``normalize.rigid_max_spread_mm``), so
 that ``ingest`` records them when the CSV is saved as ``markers.csv`` beside the manifest and
 ``normalize`` fits the head pose on them; a take with too few markers seen for that gets no
 rigid flags (and no jaw sides), with a note.
@@ -24,7 +24,7 @@ import numpy as np
 from facesynth.base.config import BindSettings, NormalizeSettings
 from facesynth.base.errors import InputError
 from facesynth.domain.capture.readers import CaptureOptions, read_capture
-from facesynth.domain.head_motion.rigid import fill_gaps, find_rigid_markers, head_pose, typical_frame
+from facesynth.domain.geometry.rigid import fill_gaps, find_rigid_markers, head_pose, typical_frame
 from facesynth.domain.retarget.bind import AXES, bind_markers, jaw_sides
 from facesynth.domain.rig.loading import load_rig_mesh
 from facesynth.formats.mesh import write_binding

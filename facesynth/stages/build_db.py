@@ -19,12 +19,12 @@ import numpy as np
 from facesynth.base.config import BuildDbSettings, settings_json
 from facesynth.base.limits import bound, require_memory
 from facesynth.domain.search.nodes import build_nodes, dsc_features
-from facesynth.domain.search.pairs import PairFeatures, boundary_states, pivot_distances
-from facesynth.model.motiondb import MotionDatabase
+from facesynth.domain.search.pairs import boundary_states, pivot_distances
+from facesynth.model.motiondb import MotionDatabase, TransitionFeatures
 from facesynth.model.pca import PcaFrames
 
 
-def build(pca: PcaFrames, settings: BuildDbSettings, source: str = "") -> tuple[MotionDatabase, PairFeatures, dict]:
+def build(pca: PcaFrames, settings: BuildDbSettings, source: str = "") -> tuple[MotionDatabase, TransitionFeatures, dict]:
     """The database and its per-node transition features for a PCA artifact's contents
     (read from ``source``, named in refusals); returns them with the seconds spent on the DSC
     features and the boundary states."""
@@ -41,9 +41,9 @@ def build(pca: PcaFrames, settings: BuildDbSettings, source: str = "") -> tuple[
     t0 = time.perf_counter()
     states = boundary_states(coeffs, nodes, pca.model, settings.boundary_fit_frames)
     timings["boundary_s"] = time.perf_counter() - t0
-    features = PairFeatures(*(np.ascontiguousarray(a, np.float32) for a in states[:2]),  # type: ignore[arg-type, call-arg]
-                            *(np.ascontiguousarray(a, np.float32) for a in states[2:]), x, y, scale,
-                            nodes.viseme, nodes.pre)
+    features = TransitionFeatures(*(np.ascontiguousarray(a, np.float32) for a in states[:2]),  # type: ignore[arg-type, call-arg]
+                                  *(np.ascontiguousarray(a, np.float32) for a in states[2:]), x, y, scale,
+                                  nodes.viseme, nodes.pre)
     features.pivot_distances = pivot_distances(features)
     db = MotionDatabase(pca.takes, pca.phones, pca.marker_names, pca.model, coeffs, pca.frames, nodes)
     return db, features, timings

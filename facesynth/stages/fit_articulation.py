@@ -1,5 +1,5 @@
 """``facesynth fit-articulation``: the acoustic articulation model fitted on a performer's own
-capture with its audio (:mod:`facesynth.domain.methods.voice_fit`), adapted from the general model
+capture with its audio (:mod:`facesynth.domain.voice.fitting`), adapted from the general model
 (``synthesize.articulation_model``, the packaged one by default) by ``synthesize.articulation_prior``,
 written as an
 ``articulation`` artifact that ``synthesize.articulation_model`` names: the voice of this
@@ -13,10 +13,10 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from facesynth.base.config import SolveSettings, SynthesizeSettings
-from facesynth.domain.methods.voice import articulation_model
-from facesynth.domain.methods.voice_fit import fit_performer, performer_takes
 from facesynth.domain.rig.loading import load_rig
-from facesynth.domain.speech.articulation import model_look_ahead_s
+from facesynth.domain.voice.articulation import model_look_ahead_s
+from facesynth.domain.voice.fitting import fit_performer, performer_takes
+from facesynth.domain.voice.fusion import articulation_model
 from facesynth.model.artifacts import check_output
 from facesynth.model.corpus import Corpus
 from facesynth.model.frames import NormalizedFrames

@@ -9,7 +9,7 @@ a frame index inside the node's take, 0 at the take's first frame), whether it i
 total cost (Eq. 4) of the whole utterance when the phone is constrained to it:
 ``phi_c(j) + psi_c(j) - obs_c(j)``, where ``phi`` is the forward DP of Algorithm 1 and
 ``psi`` the same DP run backwards (transposed TC, reversed steps). Best first.
-The time- and context-correct definitions live in :mod:`facesynth.domain.search.constraint_choice`,
+The definitions and the ranking live in :mod:`facesynth.domain.search.constraint_choice`,
 which ``facesynth isomap page`` shares to highlight the same nodes on the phone's Isomap.
 
 Context-correct nodes exist only where the input shares a triphone with a training
@@ -23,105 +23,37 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
-import numpy as np
-
 from facesynth.base.config import IngestSettings, SynthesizeSettings
-from facesynth.base.errors import InputError
 from facesynth.base.opencl import use_opencl
 from facesynth.domain import methods
-from facesynth.domain.methods import core
-from facesynth.domain.search.constraint_choice import (
-    ContextStep,
-    context_correct,
-    context_correct_steps,
-    context_name,
-    relative_time,
-    spoken_step_at,
-    time_correct_take_frame,
-)
-from facesynth.domain.search.costs import step_costs
-from facesynth.domain.search.pairs import transition_costs
-from facesynth.domain.search.pruned import backward_pruned, dp_pruned
+from facesynth.domain.methods import steps
+from facesynth.domain.search import constraint_choice
+from facesynth.domain.search.constraint_choice import Suggestion, Suggestions
 from facesynth.model.motiondb import MotionDatabase
 
 HEADER = "rank\tnode\temotion\ttake\tcontext\tcontext_correct\ttime_correct_take_frame\tcost\textra_cost"
 
 
-@dataclass
-class Suggestion:
-    """A node to constrain the phone at the asked time to: its emotion, take, triphone context
-    (and whether it matches), the time-correct frame (an integer frame index inside the
-    node's take), the best total cost of the utterance through it and that cost above the
-    unconstrained optimum.
-    """
-
-    node: int
-    emotion: str
-    take: str
-    context: str
-    context_correct: bool
-    time_correct_frame: int     # frame index inside the node's take (0 = the take's first frame)
-    cost: float                 # best total cost of the utterance through this node
-    extra: float                # cost above the unconstrained optimum
-
-
 @dataclass(frozen=True)
-class Suggestions:
-    """What ``facesynth suggest`` found for the phone at the asked time.
+class SuggestResult:
+    """What ``facesynth suggest`` found.
 
-    index: the phone's step in the utterance.
-    phone: the phone.
-    relative_time: where the time falls within the phone, 0 (start) to 1 (end).
-    context: its triphone context, 'prev-phone+next'.
-    optimum: the cost of the unconstrained optimum (the DP's).
-    optimal_node: the node the optimum uses at this step.
-    context_correct_at: every spoken phone of the utterance that has context-correct nodes.
-    rows: the phone's nodes ranked by the best total cost through them, best first.
+    suggestions: the phone at the asked time, its nodes ranked best first and where the
+        utterance has context-correct nodes.
     """
 
-    index: int
-    phone: str
-    relative_time: float
-    context: str
-    optimum: float
-    optimal_node: int
-    context_correct_at: list[ContextStep]
-    rows: list[Suggestion]
+    suggestions: Suggestions
 
 
 def suggest(db_path: Path, phones_path: Path, at_s: float, settings: SynthesizeSettings, ingest_settings: IngestSettings,
-            emotions_path: Path | None = None, constraints_path: Path | None = None) -> Suggestions:
+            emotions_path: Path | None = None, constraints_path: Path | None = None) -> SuggestResult:
     """Nodes of the phone at ``at_s`` (s) ranked by the best total cost through them (forward and
     backward DP, paper VI-A), with the phone's description."""
     db = MotionDatabase.read(db_path)
-    utt = core.read_utterance(ingest_settings, phones_path=phones_path, emotions_path=emotions_path).utterance
-    constraints = core.constraints_for(methods.get("dp"), db, constraints_path, utt)
-    c = spoken_step_at(utt, at_s, str(phones_path))
-    phone = utt.phones[c]
-    candidates = np.nonzero(np.array(db.nodes.phone) == phone)[0]
-    if len(candidates) == 0:
-        raise InputError(f"{db_path}: the database has no node of /{phone}/ to suggest.")
-    rel = relative_time(utt, c, at_s)
-    correct = context_correct(db.nodes, utt.phones, c)
-    tc = transition_costs(db, settings, use_opencl(settings.use_opencl))
-    obs = step_costs(utt.phones, utt.emotions, db.nodes.phone, db.nodes.emotion, constraints, settings).total
-    # The optimum, and every node's best cost up to step c and from step c on: the values the
-    # dense DP forwards and backwards would give, computed exactly without an N x N matrix.
-    forward, _ = dp_pruned(tc, obs)
-    up_to, _ = dp_pruned(tc, obs[: c + 1], keep_last=True)
-    from_here, _ = backward_pruned(tc, obs, c)
-    through = up_to.phi[c].astype(np.float64) + from_here - obs[c]
-    out = []
-    for j in candidates:
-        take = int(db.nodes.take[j])
-        ctx = f"{db.nodes.prev_phone[j]}-{phone}+{db.nodes.next_phone[j]}"
-        out.append(Suggestion(int(j), db.nodes.emotion[j], db.takes.name[take], ctx, bool(correct[j]),
-                              time_correct_take_frame(db.nodes, db.takes.frame_start, int(j), rel),
-                              float(through[j]), max(0.0, float(through[j] - forward.cost))))
-    out.sort(key=lambda s: (s.cost, s.node))
-    contexts = set(zip(db.nodes.prev_phone, db.nodes.phone, db.nodes.next_phone))
-    return Suggestions(c, phone, rel, context_name(utt.phones, c), forward.cost, int(forward.path[c]),
-                       context_correct_steps(utt.phones, utt.starts, utt.ends, contexts), out)
+    utt = steps.read_utterance(ingest_settings, phones_path=phones_path, emotions_path=emotions_path).utterance
+    constraints = steps.constraints_for(methods.get("dp"), db, constraints_path, utt)
+    return SuggestResult(constraint_choice.suggest(db, utt, at_s, constraints, settings, use_opencl(settings.use_opencl),
+                                                   where=str(phones_path), db_where=str(db_path)))
 
 
 def shown(rows: list[Suggestion], top: int, context_only: bool) -> list[Suggestion]:

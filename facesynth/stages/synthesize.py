@@ -3,18 +3,18 @@ family (:mod:`facesynth.domain.methods`): by default the paper's DP search of th
 (paper VI and VII-B; the search and post-processing are :mod:`facesynth.domain.search.synthesis`), or
 greedy, the mean pose, or a fitted model (``trajectory``: Huang et al. §5.4; ``coarticulation``:
 Cohen-Massaro) read from its own artifact. The utterance, its emotions, the memory check and the
-transcript-mismatch policy are the shared core's (:mod:`facesynth.domain.methods.core`).
+transcript-mismatch policy are the shared core's (:mod:`facesynth.domain.methods.steps`).
 """
 
 from __future__ import annotations
 
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 
 from facesynth.base.config import AlignSettings, IngestSettings, SynthesizeSettings
 from facesynth.domain import methods
-from facesynth.domain.methods import MethodSettings, core
+from facesynth.domain.methods import MethodSettings, SynthesisSummary, steps
 from facesynth.domain.methods.search import memory_estimate as memory_estimate  # the DP's estimate, where it always was
 from facesynth.model.artifacts import check_output, input_records_in_background
 from facesynth.model.head_motion import HeadMotion
@@ -25,36 +25,27 @@ class SynthesizeResult:
     """What ``facesynth synthesize`` made.
 
     method: the member of the method family that made it.
-    phones: phones of the utterance.
-    frames: frames of the motion at the output rate.
-    unseen: phones the source (database or model) has nothing of, with what covers each.
-    warnings: what the shared core warned about (e.g. a transcript that does not match the speech).
+    summary: what the method reports about the motion
+        (:class:`~facesynth.domain.methods.SynthesisSummary`: phones, frames, what the source
+        had nothing of, the search's cost and joins, the trajectory method's energy, the
+        method's warnings and the seconds of its phases).
+    reading_warnings: what reading the utterance warned about (e.g. a transcript that does not
+        match the speech).
     load_s, hash_wait_s, write_s: seconds reading the source, waiting for the inputs' sha256
         (hashed on another thread meanwhile) and writing.
-    cost, joins, device: the searches' path cost (Eq. 4), joins between nodes not captured one
-        after the other, and where the search ran; None for the other methods.
-    energy, lam, fallbacks: the trajectory method's Eq. 6 energy, its smoothness weight lambda per
-        frame, and the phones it covered by their viseme class's pooled Gaussian (with that class);
-        None (and no fallbacks) for the other methods.
-    phases: seconds of the method's own phases (the searches': device_choice_s, transition_s,
-        steps_s, opencl_setup_s, search_s, postprocess_s).
     """
 
     method: str
-    phones: int
-    frames: int
-    unseen: dict[str, str]
-    warnings: list[str]
+    summary: SynthesisSummary
+    reading_warnings: list[str]
     load_s: float
     hash_wait_s: float
     write_s: float
-    cost: float | None = None
-    joins: int | None = None
-    device: str | None = None
-    energy: float | None = None
-    lam: float | None = None
-    fallbacks: dict[str, str] = field(default_factory=dict)
-    phases: dict[str, float] = field(default_factory=dict)
+
+    @property
+    def warnings(self) -> list[str]:
+        """Every warning: the utterance's reading's, then the method's."""
+        return self.reading_warnings + list(self.summary.warnings)
 
 
 def run(source_path: Path, out: Path, settings: SynthesizeSettings | MethodSettings, ingest_settings: IngestSettings,
@@ -64,17 +55,17 @@ def run(source_path: Path, out: Path, settings: SynthesizeSettings | MethodSetti
         overwrite: bool = False) -> SynthesizeResult:
     """Synthesize the utterance (phones from ``phones_path``, or ``audio`` aligned to ``text``) with
     its emotions (and, for ``dp``, its constraints) by ``method`` (a member's name; default
-    ``synthesize.search``) from ``source_path`` (the motion database, or the method's fitted
+    ``synthesize.method``) from ``source_path`` (the motion database, or the method's fitted
     model), and write ``out`` (a ``motion`` artifact). ``settings``: the :class:`MethodSettings`, or
     ``[synthesize]`` alone (the packaged defaults for the rest). ``head_motion_path`` (a
     ``headmotion`` artifact, see ``facesynth head-motion``) replaces the head motion of the output
     (the source takes' for the searches, none for the others).
 
-    The steps are the ones :mod:`facesynth.api` calls (:func:`core.synthesize_utterance`,
-    :func:`core.write_motion`, :func:`core.motion_inputs`), so the command and the API write the
+    The steps are the ones :mod:`facesynth.api` calls (:func:`steps.synthesize_utterance`,
+    :func:`steps.write_motion`, :func:`steps.motion_inputs`), so the command and the API write the
     same artifact."""
     settings = method_settings(settings)
-    member = methods.get(method or settings.synthesize.search)
+    member = methods.get(steps.chosen_method(method, settings.synthesize))
     if constraints_path is not None:
         member.refuse_constraints({0: 0})
     check_output(out, overwrite)
@@ -84,25 +75,21 @@ def run(source_path: Path, out: Path, settings: SynthesizeSettings | MethodSetti
     load_s = time.perf_counter() - t0
     # hashed from here, while the method runs: the source's record comes from the file just
     # validated (not opened again), and a source replaced meanwhile is refused
-    records = input_records_in_background(core.motion_inputs(source_path, phones_path, emotions_path, constraints_path,
+    records = input_records_in_background(steps.motion_inputs(source_path, phones_path, emotions_path, constraints_path,
                                                              audio, head_motion_path,
                                                              settings.synthesize.articulation_model))
-    read = core.read_utterance(ingest_settings, phones_path=phones_path, audio=audio, text=text, align=align_settings,
+    read = steps.read_utterance(ingest_settings, phones_path=phones_path, audio=audio, text=text, align=align_settings,
                                emotions_path=emotions_path)
-    constraints = core.constraints_for(member, source, constraints_path, read.utterance)
-    made = core.synthesize_utterance(member, source, read, settings, constraints, head=head,
+    constraints = steps.constraints_for(member, source, constraints_path, read.utterance)
+    made = steps.synthesize_utterance(member, source, read, settings, constraints, head=head,
                                      source_where=str(source_path), where=str(phones_path or audio))
     t0 = time.perf_counter()
     input_records = records()
     hash_wait_s = time.perf_counter() - t0
     t0 = time.perf_counter()
-    core.write_motion(made, out, input_records, overwrite=overwrite)
+    steps.write_motion(made, out, input_records, overwrite=overwrite)
     write_s = time.perf_counter() - t0
-    summary = made.summary
-    return SynthesizeResult(member.name, summary.phones, summary.frames, dict(summary.unseen),
-                            list(read.warnings) + list(summary.warnings), load_s, hash_wait_s, write_s, summary.cost,
-                            summary.joins, summary.device, summary.energy, summary.lam, dict(summary.fallbacks),
-                            dict(summary.phases))
+    return SynthesizeResult(member.name, made.summary, list(read.warnings), load_s, hash_wait_s, write_s)
 
 
 def method_settings(settings: SynthesizeSettings | MethodSettings) -> MethodSettings:

@@ -21,7 +21,7 @@ from facesynth import api
 from facesynth.base.errors import FacesynthError
 from facesynth.cli import main
 from facesynth.domain.exports import format as exporting
-from facesynth.domain.methods import core
+from facesynth.domain.methods import steps
 from facesynth.domain.retarget import facial_solve
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -233,7 +233,7 @@ def test_the_command_and_the_api_go_through_the_same_steps(held_out_synthesized,
             return real(*args, **kwargs)
         monkeypatch.setattr(module, name, wrapper)
 
-    for module, name in [(core, "synthesize_utterance"), (core, "write_motion"), (facial_solve, "solve"),
+    for module, name in [(steps, "synthesize_utterance"), (steps, "write_motion"), (facial_solve, "solve"),
                          (facial_solve, "write"), (exporting, "chosen_format"), (exporting, "export")]:
         spy(module, name)
     cli("synthesize", inputs["db"], "--phonemes", inputs["phones"], "-o", tmp_path / "m.h5")
@@ -244,7 +244,7 @@ def test_the_command_and_the_api_go_through_the_same_steps(held_out_synthesized,
     motion = facesynth.synthesize(inputs["db"], facesynth.utterance_from_phones(inputs["phones"]),
                                   output=tmp_path / "m2.h5")
     facesynth.export(facesynth.solve(motion, output=tmp_path / "c2.h5"), "arkit-csv", tmp_path / "c2.csv")
-    assert calls == by_command == ["core.synthesize_utterance", "core.write_motion", "facial_solve.solve",
+    assert calls == by_command == ["steps.synthesize_utterance", "steps.write_motion", "facial_solve.solve",
                                    "facial_solve.write", "format.chosen_format", "format.export"]
 
 

@@ -20,7 +20,7 @@ from facesynth.base.errors import InputError
 from facesynth.cli import main
 from facesynth.domain.capture.readers import read_capture
 from facesynth.domain.corpus.truth import read_truth
-from facesynth.domain.head_motion.rigid import similarity_fit
+from facesynth.domain.geometry.rigid import similarity_fit
 from facesynth.domain.postprocess.concatenation import downsample
 from facesynth.domain.rig.face import BUILTIN_RIG_NAME, builtin_rig_sha256, load_face_rig
 from facesynth.domain.rig.markers import build_marker_set

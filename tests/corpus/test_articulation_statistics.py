@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from facesynth.base.config import Config
-from facesynth.domain.corpus.articulation import ContactSolver, channel_stiffness_hz
+from facesynth.domain.corpus.actress_mouth import ContactSolver, channel_stiffness_hz
 from facesynth.domain.corpus.generate import perform
 from facesynth.domain.corpus.statistics import (
     audio_lag,

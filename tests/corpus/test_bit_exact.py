@@ -5,7 +5,7 @@ number text)."""
 import numpy as np
 from scipy.signal import lfilter
 
-from facesynth.domain.corpus.articulation import critically_damped
+from facesynth.domain.corpus.actress_mouth import critically_damped
 from facesynth.domain.corpus.recurrences_numba import section_cascade
 from facesynth.domain.corpus.speech import _euler
 from facesynth.domain.corpus.truth import _number_rows

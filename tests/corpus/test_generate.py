@@ -6,7 +6,7 @@ import hashlib
 import numpy as np
 import pytest
 
-from facesynth.domain.corpus.articulation import (
+from facesynth.domain.corpus.actress_mouth import (
     CHANNEL_NAMES,
     ContactSolver,
     TokenVariation,

@@ -27,8 +27,8 @@ from facesynth.base.config import Config
 from facesynth.cli import main
 from facesynth.domain.capture.facegood import shipped
 from facesynth.domain.exports import player
-from facesynth.domain.live.core import LiveModel
 from facesynth.domain.live.server import StreamServer
+from facesynth.domain.live.synthesizer import LiveModel
 from facesynth.domain.rendering.parts import build_scene
 from facesynth.domain.rendering.raster import BACKGROUND
 from facesynth.domain.rendering.video import ShadedView

@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from facesynth.base.config import Config
-from facesynth.domain.exports import usd
+from facesynth.formats import usd
 from facesynth.model import check
 from facesynth.model.curves import RigCurves
 from facesynth.model.meshanim import MeshAnimation

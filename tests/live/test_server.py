@@ -21,8 +21,8 @@ import pytest
 from click.testing import CliRunner
 
 from facesynth.cli import main
-from facesynth.domain.live.core import LiveModel
 from facesynth.domain.live.server import StreamServer
+from facesynth.domain.live.synthesizer import LiveModel
 from facesynth.model.motiondb import MotionDatabase
 
 websockets = pytest.importorskip("websockets", reason="the WebSocket transport needs the websockets package")
@@ -145,7 +145,7 @@ def test_websocket_client_streams_and_gets_frames(model, pcm):
 
 
 def test_given_phone_timings_and_an_emotion_switch(model, pcm, tiny_corpus, held_out_take):
-    from facesynth.domain.search.inputs import read_utterance
+    from facesynth.domain.speech.utterance import read_utterance
 
     utt = read_utterance(tiny_corpus / "labels" / f"{held_out_take}.TextGrid")
     phones = [{"phone": p, "start": a, "end": b} for p, a, b in zip(utt.phones, utt.starts, utt.ends)]
@@ -321,7 +321,7 @@ def test_given_phones_at_their_start_leave_no_frame_waiting_past_the_pause_wait(
     """A TTS engine sends each phone as it starts speaking it (look-ahead 0): the silences between
     its phones are taken as pauses after stream.pause_wait_s, and their frames go out then."""
     from facesynth.domain.live.session import Session
-    from facesynth.domain.search.inputs import read_utterance
+    from facesynth.domain.speech.utterance import read_utterance
 
     stream = replace(config.settings("stream"), lookahead_phones=0, pause_wait_s=pause_wait_s)
     model = LiveModel(MotionDatabase.read(tiny_db), config.settings("synthesize"), stream, config.settings("solve"))

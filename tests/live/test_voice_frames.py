@@ -1,4 +1,4 @@
-"""Live frames from the voice (facesynth.domain.live.voice): sent within the model's look-ahead of
+"""Live frames from the voice (facesynth.domain.live.voice_frames): sent within the model's look-ahead of
 their sound, equal to what the articulation model predicts from the whole audio, the emotion's
 pose around the voice's mouth, and the phone-driven path when the voice is off."""
 
@@ -10,9 +10,9 @@ import numpy as np
 import pytest
 
 from facesynth.base.config import Config
-from facesynth.domain.live.core import SPEECH_SHAPES, LiveModel
 from facesynth.domain.live.session import Session
-from facesynth.domain.speech import articulation
+from facesynth.domain.live.synthesizer import SPEECH_SHAPES, LiveModel
+from facesynth.domain.voice import articulation
 from facesynth.model.motiondb import MotionDatabase
 
 CHUNK = 320  # 20 ms of 16 kHz PCM, as a browser or a phone sends it
@@ -156,7 +156,7 @@ def test_voice_off_streams_the_recognised_phones(model, pcm, config):
 
 
 def test_given_phones_keep_their_path(model, pcm, tiny_corpus, held_out_take):
-    from facesynth.domain.search.inputs import read_utterance
+    from facesynth.domain.speech.utterance import read_utterance
 
     utt = read_utterance(tiny_corpus / "labels" / f"{held_out_take}.TextGrid")
     phones = [{"phone": p, "start": float(a), "end": float(b)} for p, a, b in zip(utt.phones, utt.starts, utt.ends)]

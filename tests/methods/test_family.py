@@ -9,14 +9,16 @@ import numpy as np
 import pytest
 from click.testing import CliRunner
 
+from facesynth.base.config import choices
 from facesynth.base.errors import ArtifactError, UsageError
 from facesynth.base.phonemes import PAU
+from facesynth.base.registry import METHODS
 from facesynth.cli import main
 from facesynth.domain import methods
 from facesynth.domain.evaluation.held_out import recommend
-from facesynth.domain.methods import MethodSettings, core
-from facesynth.domain.search.inputs import read_utterance
+from facesynth.domain.methods import Method, MethodSettings, steps
 from facesynth.domain.search.synthesis import as_motion, synthesize
+from facesynth.domain.speech.utterance import read_utterance
 from facesynth.model import check
 from facesynth.model.coarticulation import CoarticulationModel
 from facesynth.model.motion import Motion
@@ -26,7 +28,7 @@ from facesynth.model.motiondb import MotionDatabase
 @pytest.fixture(scope="module")
 def settings(config):
     every = MethodSettings.of(config)
-    return dataclasses.replace(every, coarticulation=dataclasses.replace(every.coarticulation, iterations=8))
+    return every.replace(coarticulation=dataclasses.replace(every.coarticulation, iterations=8))
 
 
 @pytest.fixture(scope="module")
@@ -67,7 +69,7 @@ def test_the_registry_names_every_member_and_refuses_another_name():
 @pytest.mark.parametrize("name", ["dp", "greedy", "trajectory", "coarticulation", "mean"])
 def test_every_member_makes_a_motion_with_the_same_fields_and_provenance(name, sources, utt, settings, db):
     _, source = sources[name]
-    result = core.synthesize(methods.get(name), source, utt, settings)
+    result = steps.synthesize(methods.get(name), source, utt, settings)
     m = result.motion
     n_capture = round(float(utt.ends[-1]) * db.fps)
     assert abs(len(m.markers_capture) - n_capture) <= 1 and m.capture_fps == db.fps
@@ -90,7 +92,7 @@ def test_every_member_makes_a_motion_with_the_same_fields_and_provenance(name, s
 def test_a_motion_of_every_member_is_written_and_read_back(sources, utt, settings, tmp_path):
     for name, (_, source) in sources.items():
         out = tmp_path / f"{name}.h5"
-        core.synthesize(methods.get(name), source, utt, settings).motion.write(out, config="{}")
+        steps.synthesize(methods.get(name), source, utt, settings).motion.write(out, config="{}")
         search, provenance = Motion.read_search(out)
         assert search.search == name and provenance.step.max() == len(utt) - 1
         assert check.check_file(out).problems == [], name
@@ -99,7 +101,7 @@ def test_a_motion_of_every_member_is_written_and_read_back(sources, utt, setting
 def test_dp_through_the_family_is_bit_identical_to_the_search(sources, utt, settings, db):
     res = synthesize(db, utt, {}, settings.synthesize)
     old = as_motion(db, utt, res, settings.synthesize)
-    new = core.synthesize(methods.get("dp"), sources["dp"][1], utt, settings).motion
+    new = steps.synthesize(methods.get("dp"), sources["dp"][1], utt, settings).motion
     for field in ("markers", "markers_capture", "coefficients", "head_rotation", "head_translation"):
         assert np.array_equal(getattr(old, field), getattr(new, field)), field
     assert np.array_equal(old.path.node, new.path.node) and old.path.total_cost == new.path.total_cost
@@ -125,7 +127,7 @@ def test_the_coarticulation_model_is_fitted_written_read_back_and_checked(source
     with h5py.File(path) as f:
         assert f.attrs["facesynth_kind"] == "coarticulation" and "pca/basis" in f
     # synthesis from the file alone equals the database's PCA reconstruction of the fitted model's poses
-    motion = core.synthesize(methods.get("coarticulation"), CoarticulationModel.read(path), utt, settings).motion
+    motion = steps.synthesize(methods.get("coarticulation"), CoarticulationModel.read(path), utt, settings).motion
     n = len(motion.markers_capture)
     poses = DominanceModel(tuple(direct.phones), direct.targets, direct.magnitude, direct.rate).predict(
         emotion_labels(utt.phones, utt.emotions), utt.starts, utt.ends, n, db.fps)
@@ -145,7 +147,7 @@ def test_the_coarticulation_model_is_fitted_written_read_back_and_checked(source
 @pytest.mark.parametrize("name", ["greedy", "trajectory", "coarticulation", "mean"])
 def test_constraints_are_refused_off_the_dp_in_one_sentence(name, sources, utt, settings):
     with pytest.raises(UsageError) as err:
-        core.synthesize(methods.get(name), sources[name][1], utt, settings, {1: 0})
+        steps.synthesize(methods.get(name), sources[name][1], utt, settings, {1: 0})
     assert str(err.value) == (f"motion-node constraints need the DP search (Eq. 10); the {name} method takes none: "
                               "drop --constraints or use --method dp.")
 
@@ -191,8 +193,8 @@ def _f(value, low, high):
 
 
 def test_the_recommendation_is_the_lowest_rms_whose_interval_stands_clear():
-    figures = {"dp": {"rms_mm": _f(2.9, 2.7, 3.1)}, "dominance_emotion": {"rms_mm": _f(2.0, 1.9, 2.1)},
-               "baseline_emotion": {"rms_mm": _f(2.5, 2.3, 2.7)}}
+    figures = {"dp": {"rms_mm": _f(2.9, 2.7, 3.1)}, "coarticulation": {"rms_mm": _f(2.0, 1.9, 2.1)},
+               "mean": {"rms_mm": _f(2.5, 2.3, 2.7)}}
     r = recommend(figures)
     assert r.method == "coarticulation" and r.figure == "rms_mm"
     assert r.sentence == ("Recommended for this database: coarticulation, the lowest RMS vs noisy capture (2.000 mm "
@@ -202,8 +204,8 @@ def test_the_recommendation_is_the_lowest_rms_whose_interval_stands_clear():
 
 def test_tied_intervals_recommend_the_simplest_and_the_clean_truth_decides_where_there_is_one():
     figures = {"dp": {"rms_mm": _f(1.0, 0.5, 1.5), "rms_clean_mm": _f(2.2, 2.0, 2.4)},
-               "dominance_emotion": {"rms_mm": _f(5.0, 4.0, 6.0), "rms_clean_mm": _f(2.1, 1.9, 2.3)},
-               "baseline_emotion": {"rms_mm": _f(5.0, 4.0, 6.0), "rms_clean_mm": _f(3.0, 2.9, 3.1)},
+               "coarticulation": {"rms_mm": _f(5.0, 4.0, 6.0), "rms_clean_mm": _f(2.1, 1.9, 2.3)},
+               "mean": {"rms_mm": _f(5.0, 4.0, 6.0), "rms_clean_mm": _f(3.0, 2.9, 3.1)},
                "greedy": {"rms_mm": _f(1.0, 0.5, 1.5), "rms_clean_mm": _f(2.35, 2.29, 2.5)}}
     r = recommend(figures)
     # coarticulation has the lowest clean RMS, but dp's and greedy's intervals overlap it; mean's does not
@@ -211,7 +213,7 @@ def test_tied_intervals_recommend_the_simplest_and_the_clean_truth_decides_where
     assert r.sentence == ("Recommended for this database: coarticulation; coarticulation has the lowest RMS vs clean "
                           "truth (2.100 mm [1.900, 2.300]), but its 95% interval does not tell it from dp 2.200 mm "
                           "[2.000, 2.400], greedy 2.350 mm [2.290, 2.500], and it is the simplest and fastest of these.")
-    figures["baseline_emotion"]["rms_clean_mm"] = _f(2.3, 2.2, 2.4)  # now the mean is tied too, and simplest
+    figures["mean"]["rms_clean_mm"] = _f(2.3, 2.2, 2.4)  # now the mean is tied too, and simplest
     tied = recommend(figures)
     assert tied.method == "mean" and tied.sentence.startswith(
         "Recommended for this database: mean, the simplest and fastest of the tied methods (RMS vs clean truth "
@@ -224,10 +226,10 @@ def test_tied_intervals_recommend_the_simplest_and_the_clean_truth_decides_where
 def test_paired_intervals_decide_where_the_sentences_share_their_difficulty():
     """Every method's own interval overlaps the others' (the sentences differ in difficulty), but on the
     same resamples coarticulation is lower than each other method: it is recommended."""
-    figures = {"dp": {"rms_mm": _f(1.90, 1.67, 2.18)}, "dominance_emotion": {"rms_mm": _f(1.45, 1.25, 1.69)},
-               "baseline_emotion": {"rms_mm": _f(1.76, 1.41, 2.16)}, "trajectory": {"rms_mm": _f(1.69, 1.48, 1.96)}}
+    figures = {"dp": {"rms_mm": _f(1.90, 1.67, 2.18)}, "coarticulation": {"rms_mm": _f(1.45, 1.25, 1.69)},
+               "mean": {"rms_mm": _f(1.76, 1.41, 2.16)}, "trajectory": {"rms_mm": _f(1.69, 1.48, 1.96)}}
     assert recommend(figures).method == "mean"  # by the methods' own intervals: tied
-    paired = {"dp": _f(0.45, 0.39, 0.51), "baseline_emotion": _f(0.31, 0.12, 0.50), "trajectory": _f(0.24, 0.10, 0.35)}
+    paired = {"dp": _f(0.45, 0.39, 0.51), "mean": _f(0.31, 0.12, 0.50), "trajectory": _f(0.24, 0.10, 0.35)}
     calls = []
 
     def difference(key, other, best):
@@ -235,9 +237,55 @@ def test_paired_intervals_decide_where_the_sentences_share_their_difficulty():
         return paired[other]
 
     r = recommend(figures, difference=difference)
-    assert r.method == "coarticulation" and all(c[0] == "rms_mm" and c[2] == "dominance_emotion" for c in calls)
+    assert r.method == "coarticulation" and all(c[0] == "rms_mm" and c[2] == "coarticulation" for c in calls)
     assert r.sentence.endswith("every other method is higher beyond the paired 95% interval (next: trajectory "
                                "+0.240 mm [+0.100, +0.350]).")
     paired["trajectory"] = _f(0.24, -0.02, 0.35)  # one paired interval holds 0: tied with it, and it is simpler
     tied = recommend(figures, difference=difference)
     assert tied.method == "coarticulation" and "does not tell it from trajectory +0.240 mm [-0.020, +0.350]" in tied.sentence
+
+
+def test_every_member_declares_its_live_form_or_why_not(settings):
+    """A member streams exactly when it has a live form (Method.live) and is registered with
+    streams=True; the others say why not; stream.method offers the first."""
+    for entry in METHODS.entries():
+        member = methods.get(entry.name)
+        live = type(member).live is not Method.live
+        assert live == bool(entry.facts.get("streams")), entry.name
+        if not live:
+            assert member.not_live != Method.not_live, f"{entry.name} gives no reason it does not stream"
+            with pytest.raises(UsageError, match=f"the {entry.name} method does not stream: .*; use one of dp"):
+                member.live(None, settings)
+    assert choices("stream", "method") == methods.live_names() == ("dp", "greedy", "trajectory")
+
+
+def test_every_member_declares_its_settings_section(config):
+    sections = {e.name: e.facts.get("settings") for e in METHODS.entries()}
+    assert sections == {"dp": "synthesize", "greedy": "synthesize", "trajectory": "trajectory",
+                        "coarticulation": "coarticulation", "mean": "synthesize"}
+    every = MethodSettings.of(config)
+    assert set(every.sections()) == {"synthesize", "trajectory", "coarticulation"}
+    assert every.trajectory == config.settings("trajectory") and every.section("coarticulation").iterations > 0
+    assert methods.get("coarticulation").fit_settings(every) == every.coarticulation
+    with pytest.raises(AttributeError, match=r"no \[nope\] section"):
+        every.nope  # noqa: B018
+
+
+def test_the_deprecated_search_names_warn_and_still_choose(tiny_db, tiny_corpus, held_out_take, tmp_path):
+    tg = str(tiny_corpus / "labels" / f"{held_out_take}.TextGrid")
+
+    def run(*extra):
+        out = tmp_path / f"m{len(list(tmp_path.iterdir()))}.h5"
+        r = CliRunner().invoke(main, ["synthesize", str(tiny_db), "--phonemes", tg, "-o", str(out), *extra])
+        assert r.exit_code == 0, r.output
+        return r.output, Motion.read_search(out)[0].search
+
+    output, search = run("--search", "greedy")
+    assert search == "greedy" and "warning: `--search` is deprecated" in output and "`--method greedy`" in output
+    output, search = run("--set", "synthesize.search=greedy")
+    assert search == "greedy" and "warning: synthesize.search is deprecated" in output
+    assert 'synthesize.method = "greedy"' in output
+    output, search = run("--set", "synthesize.method=greedy")
+    assert search == "greedy" and "is deprecated" not in output
+    output, search = run()
+    assert search == "dp" and "is deprecated" not in output

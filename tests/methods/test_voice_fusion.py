@@ -1,4 +1,4 @@
-"""The voice in the mouth (facesynth.domain.methods.voice): the fusion's cores on curves, its paths
+"""The voice in the mouth (facesynth.domain.voice.fusion): the fusion's cores on curves, its paths
 by where the phones came from, and what it does to a synthesized motion with real audio."""
 
 from dataclasses import replace
@@ -7,10 +7,10 @@ import numpy as np
 import pytest
 
 from facesynth.base.errors import ArtifactError, InputError
-from facesynth.domain.methods import MethodSettings, core, voice
+from facesynth.domain.methods import MethodSettings, steps
 from facesynth.domain.postprocess.concatenation import frame_ranges
-from facesynth.domain.speech import articulation
 from facesynth.domain.speech.loudness import lip_gaps
+from facesynth.domain.voice import articulation, fusion
 
 
 @pytest.fixture(scope="module")
@@ -23,11 +23,11 @@ def test_range_map_keeps_the_shape_in_the_method_range():
     rng = np.random.default_rng(0)
     predicted = rng.normal(size=500)
     opening = 2.0 + 6.0 * rng.random(500)
-    mapped = voice.range_map(predicted, opening)
+    mapped = fusion.range_map(predicted, opening)
     assert np.corrcoef(mapped, predicted)[0, 1] > 0.99  # monotone, nearly affine
     np.testing.assert_allclose(np.percentile(mapped, [5, 95]), np.percentile(opening, [5, 95]), rtol=0.02)
     assert mapped.min() > 0  # the soft floor stays above a closed mouth
-    assert np.array_equal(voice.range_map(np.ones(10), np.arange(10.0)), np.arange(10.0))  # a flat prediction says nothing
+    assert np.array_equal(fusion.range_map(np.ones(10), np.arange(10.0)), np.arange(10.0))  # a flat prediction says nothing
 
 
 def test_target_gap_follows_the_voice_and_closes_where_it_says(synth):
@@ -38,14 +38,14 @@ def test_target_gap_follows_the_voice_and_closes_where_it_says(synth):
     score = np.zeros(n)
     score[150] = 1.0
     score = np.convolve(score, np.exp(-0.5 * (np.arange(-9, 10) / 3.0) ** 2), "same")
-    target, done = voice.target_gap(opening, predicted, score, None, np.ones(n), [], fps, synth)
+    target, done = fusion.target_gap(opening, predicted, score, None, np.ones(n), [], fps, synth)
     assert np.corrcoef(target[:140], predicted[:140])[0, 1] > 0.95  # weight 1: the voice's opening
     assert target[150] == pytest.approx(min(opening.min(), target.min()), abs=1e-6)  # closed at the score's peak
     assert target[150] < target[145] and target[150] < target[155]
     assert done["closures_from_voice"] == 1
-    none, _ = voice.target_gap(opening, predicted, None, None, np.ones(n), [], fps, replace(synth, voice_weight=0.0))
+    none, _ = fusion.target_gap(opening, predicted, None, None, np.ones(n), [], fps, replace(synth, voice_weight=0.0))
     np.testing.assert_allclose(none, opening)  # weight 0: the phones' opening
-    quiet, _ = voice.target_gap(opening, predicted, None, None, np.zeros(n), [], fps, synth)
+    quiet, _ = fusion.target_gap(opening, predicted, None, None, np.zeros(n), [], fps, synth)
     np.testing.assert_allclose(quiet, opening)  # no confidence in the voice: the phones' opening
 
 
@@ -61,9 +61,9 @@ def test_the_opening_by_rank_closes_the_mouth_as_often_as_the_method_does(synth)
     opening = np.where(speech, 0.5 + 9.5 * syllable, 0.5)  # the method's gaps, mm: closed between syllables
     predicted = np.where(speech, 0.7 + 0.3 * np.roll(syllable, 2), 0.0)  # the voice, a little late
     assert synth.voice_opening_map == "percentiles"  # the default
-    by_rank, _ = voice.target_gap(opening, predicted, None, None, np.ones(n), [], fps,
+    by_rank, _ = fusion.target_gap(opening, predicted, None, None, np.ones(n), [], fps,
                                   replace(synth, voice_opening_map="rank"))
-    affine, _ = voice.target_gap(opening, predicted, None, None, np.ones(n), [], fps, synth)
+    affine, _ = fusion.target_gap(opening, predicted, None, None, np.ones(n), [], fps, synth)
     def closed(gap):
         return float(np.mean(gap[speech] < 2.0))  # nearly closed, within speech
     assert closed(opening) > 0.15
@@ -73,7 +73,7 @@ def test_the_opening_by_rank_closes_the_mouth_as_often_as_the_method_does(synth)
     np.testing.assert_allclose(np.percentile(by_rank, quartiles), np.percentile(opening, quartiles), atol=0.5)
     rank = lambda x: np.argsort(np.argsort(x, kind="stable"), kind="stable")  # noqa: E731
     assert np.corrcoef(rank(by_rank[speech]), rank(predicted[speech]))[0, 1] > 0.99  # in the voice's order
-    np.testing.assert_allclose(voice.rank_map(np.ones(10), np.arange(10.0)), np.arange(10.0))  # a flat voice says nothing
+    np.testing.assert_allclose(fusion.rank_map(np.ones(10), np.arange(10.0)), np.arange(10.0))  # a flat voice says nothing
 
 
 def test_a_pinned_phone_keeps_its_closure_unless_the_voice_says_open(synth):
@@ -81,11 +81,11 @@ def test_a_pinned_phone_keeps_its_closure_unless_the_voice_says_open(synth):
     opening = np.full(n, 6.0)
     opening[50:56] = 0.2  # the method's /p/ closure
     predicted = np.linspace(0, 1, n)  # the voice rises through the utterance
-    closed_voice, done = voice.target_gap(opening, predicted, None, None, np.ones(n), [(50, 56)], fps, synth)
+    closed_voice, done = fusion.target_gap(opening, predicted, None, None, np.ones(n), [(50, 56)], fps, synth)
     assert closed_voice[52] == pytest.approx(0.2) and done["pinned_kept"] == 1  # low prediction there: kept
     loud = predicted.copy()
     loud[45:60] = 5.0  # the voice says the lips were wide open over the phone
-    _, vetoed = voice.target_gap(opening, loud, None, None, np.ones(n), [(50, 56)], fps, synth)
+    _, vetoed = fusion.target_gap(opening, loud, None, None, np.ones(n), [(50, 56)], fps, synth)
     assert vetoed["pinned_vetoed"] == 1
 
 
@@ -102,14 +102,14 @@ def test_the_closure_targets_mark_a_capture_closures():
 
 
 def test_the_packaged_model_predicts_what_the_fusion_reads():
-    model = voice.articulation_model("")
+    model = fusion.articulation_model("")
     assert {"opening", "closure", "closing", "jawOpen", "mouthFunnel", "mouthPucker"} <= set(model.target_names)
     assert articulation.model_look_ahead_s(model) <= 0.05  # live frames within 80 ms of their sound
 
 
 def test_a_missing_model_file_is_one_sentence(tmp_path):
     with pytest.raises(InputError, match="is not a file; give an articulation model"):
-        voice.articulation_model(str(tmp_path / "none.h5"))
+        fusion.articulation_model(str(tmp_path / "none.h5"))
 
 
 @pytest.fixture(scope="module")
@@ -119,7 +119,7 @@ def spoken(tiny_db, tiny_corpus, held_out_take, config):
 
     member = get("dp")
     source = member.read(tiny_db)
-    read = core.read_utterance(config.settings("ingest"), phones_path=tiny_corpus / "labels" / f"{held_out_take}.TextGrid",
+    read = steps.read_utterance(config.settings("ingest"), phones_path=tiny_corpus / "labels" / f"{held_out_take}.TextGrid",
                                audio=tiny_corpus / "audio" / f"{held_out_take}.wav")
     return member, source, read
 
@@ -132,23 +132,23 @@ def test_recognised_phones_take_the_voice_articulation_given_phones_the_loudness
     member, source, read = spoken
     settings = MethodSettings.of(config)
     # always trusted: the fusion itself (the trust gate has its own test)
-    settings = replace(settings, synthesize=replace(settings.synthesize, use_opencl=False, voice_trust_low=-1.0,
+    settings = settings.replace(synthesize=replace(settings.synthesize, use_opencl=False, voice_trust_low=-1.0,
                                                     voice_trust_high=-1.0))
-    phones = core.synthesize(member, source, read.utterance, settings)
-    given = core.synthesize(member, source, read.utterance, settings, audio=read.audio)
-    heard = core.synthesize(member, source, read.utterance, settings, audio=read.audio, recognized=True)
+    phones = steps.synthesize(member, source, read.utterance, settings)
+    given = steps.synthesize(member, source, read.utterance, settings, audio=read.audio)
+    heard = steps.synthesize(member, source, read.utterance, settings, audio=read.audio, recognized=True)
     assert (phones.summary.voice, given.summary.voice, heard.summary.voice) == ("off", "loudness", "articulation")
     s = settings.synthesize
     samples, rate = read.audio
-    model = voice.articulation_model("")
+    model = fusion.articulation_model("")
     predicted = articulation.predict(model, samples, rate, len(phones.motion.markers), phones.motion.fps)
     opening = predicted[:, model.target_names.index("opening")]
     r_before = np.corrcoef(_gap(phones.motion, s), opening)[0, 1]
     r_after = np.corrcoef(_gap(heard.motion, s), opening)[0, 1]
     assert r_after > r_before + 0.1 and r_after > 0.75  # the mouth now follows what the voice says
     # off is the phones alone, bit for bit
-    off = core.synthesize(member, source, read.utterance,
-                          replace(settings, synthesize=replace(s, voice_recognized="off")), audio=read.audio,
+    off = steps.synthesize(member, source, read.utterance,
+                          settings.replace(synthesize=replace(s, voice_recognized="off")), audio=read.audio,
                           recognized=True)
     assert np.array_equal(off.motion.markers, phones.motion.markers)
 
@@ -156,11 +156,11 @@ def test_recognised_phones_take_the_voice_articulation_given_phones_the_loudness
 def test_the_fusion_is_deterministic_and_moves_only_where_the_mouth_does(spoken, config):
     member, source, read = spoken
     settings = MethodSettings.of(config)
-    settings = replace(settings, synthesize=replace(settings.synthesize, use_opencl=False))
-    made = [core.synthesize(member, source, read.utterance, settings, audio=read.audio, recognized=True).motion
+    settings = settings.replace(synthesize=replace(settings.synthesize, use_opencl=False))
+    made = [steps.synthesize(member, source, read.utterance, settings, audio=read.audio, recognized=True).motion
             for _ in range(2)]
     assert np.array_equal(made[0].markers, made[1].markers)
-    phones = core.synthesize(member, source, read.utterance, settings).motion
+    phones = steps.synthesize(member, source, read.utterance, settings).motion
     moved = np.linalg.norm(made[0].markers - phones.markers, axis=-1).mean(0)  # (M,) mm
     names = list(phones.marker_names)
     brows = [i for i, m in enumerate(names) if m.startswith(("BROW", "FH"))]
@@ -172,11 +172,11 @@ def test_the_fusion_is_deterministic_and_moves_only_where_the_mouth_does(spoken,
 def test_audio_that_is_silence_leaves_the_phones(spoken, config):
     member, source, read = spoken
     settings = MethodSettings.of(config)
-    settings = replace(settings, synthesize=replace(settings.synthesize, use_opencl=False))
+    settings = settings.replace(synthesize=replace(settings.synthesize, use_opencl=False))
     samples, rate = read.audio
     quiet = (np.zeros_like(samples), rate)
-    phones = core.synthesize(member, source, read.utterance, settings).motion
-    heard = core.synthesize(member, source, read.utterance, settings, audio=quiet, recognized=True).motion
+    phones = steps.synthesize(member, source, read.utterance, settings).motion
+    heard = steps.synthesize(member, source, read.utterance, settings, audio=quiet, recognized=True).motion
     assert np.abs(heard.markers - phones.markers).max() < 0.5  # no confidence anywhere: barely moved
 
 
@@ -186,11 +186,11 @@ def test_pinned_phones_keep_their_closure_and_rounding_stays_in_the_method_range
     member, source, read = spoken
     settings = MethodSettings.of(config)
     s = replace(settings.synthesize, use_opencl=False)
-    motion = core.synthesize(member, source, read.utterance, replace(settings, synthesize=s)).motion
+    motion = steps.synthesize(member, source, read.utterance, settings.replace(synthesize=s)).motion
     samples, rate = read.audio
-    model = voice.articulation_model("")
+    model = fusion.articulation_model("")
     utt = read.utterance
-    fused, done, _ = voice.fuse(motion, samples, rate, utt.starts, utt.ends, list(utt.phones), model, s, pinned=True)
+    fused, done, _ = fusion.fuse(motion, samples, rate, utt.starts, utt.ends, list(utt.phones), model, s, pinned=True)
     fps = motion.capture_fps
     names, lips = list(motion.marker_names), tuple(s.loudness_lip_markers)
     before, after = (lip_gaps(m.markers_capture, names, lips) for m in (motion, fused))
@@ -198,12 +198,12 @@ def test_pinned_phones_keep_their_closure_and_rounding_stays_in_the_method_range
     pinned = [r for r, p in zip(ranges, utt.phones) if p in s.pinned_phones]
     raw = articulation.frame_features(samples, rate)
     opening = articulation.predict_raw(model, raw, np.arange(len(before)) / fps)[:, model.target_names.index("opening")]
-    kept = voice.kept_pinned(pinned, opening)
+    kept = fusion.kept_pinned(pinned, opening)
     assert kept and done.pinned_kept == len(kept)
     for a, b in kept:
         assert after[a:b].min() <= before[a:b].min() + 0.05  # the closure is kept, not opened
-    shapes = voice.RigShapes(voice._builtin_rig(), names, motion.reference)
-    for name in voice.ROUNDING_SHAPES:
+    shapes = fusion.RigShapes(fusion._builtin_rig(), names, motion.reference)
+    for name in fusion.ROUNDING_SHAPES:
         w0, w1 = (shapes.weights(m.markers_capture, [name])[:, 0] for m in (motion, fused))
         lo, hi = np.percentile(w0, [5, 95])
         assert abs(np.median(w1) - np.median(w0)) < 0.25 * (hi - lo)  # moved within its range, not off it
@@ -211,7 +211,7 @@ def test_pinned_phones_keep_their_closure_and_rounding_stays_in_the_method_range
 
 def test_no_voice_past_the_audio_end():
     raw = articulation.frame_features(np.sin(np.arange(16000) * 0.05).astype(np.float32) * 0.3, 16000)
-    c = voice.confidence(raw, np.array([0.5, 0.9, 1.2, 2.0]))
+    c = fusion.confidence(raw, np.array([0.5, 0.9, 1.2, 2.0]))
     assert c[2] == 0 and c[3] == 0
 
 
@@ -231,10 +231,10 @@ def test_a_fit_leaves_out_unknown_frames_and_a_broken_model_is_refused():
 def test_local_r_is_pearson_over_the_window():
     rng = np.random.default_rng(1)
     a, b = rng.normal(size=200), rng.normal(size=200)
-    r = voice.local_r(a, b, 31)
+    r = fusion.local_r(a, b, 31)
     for k in (15, 100, 184):
         assert r[k] == pytest.approx(np.corrcoef(a[k - 15:k + 16], b[k - 15:k + 16])[0, 1], abs=1e-9)
-    assert np.all(voice.local_r(np.ones(50), b[:50], 11) == 0)  # a flat curve agrees with nothing
+    assert np.all(fusion.local_r(np.ones(50), b[:50], 11) == 0)  # a flat curve agrees with nothing
 
 
 def test_a_voice_that_disagrees_with_the_phones_is_not_trusted(synth):
@@ -244,13 +244,13 @@ def test_a_voice_that_disagrees_with_the_phones_is_not_trusted(synth):
     follows = np.sin(2 * np.pi * 1.1 * t + 0.3) + 0.1 * np.sin(2 * np.pi * 4 * t)  # a voice read well
     lost = np.random.default_rng(0).normal(size=n)  # a voice the model cannot read
     trusting = replace(synth, voice_trust_low=0.1, voice_trust_high=0.4)
-    assert voice.trust(follows, opening, fps, trusting)[30:-30].min() == 1.0
-    assert voice.trust(lost, opening, fps, trusting).mean() < 0.1
+    assert fusion.trust(follows, opening, fps, trusting)[30:-30].min() == 1.0
+    assert fusion.trust(lost, opening, fps, trusting).mean() < 0.1
     score = np.zeros(n)
     score[300] = 1.0
-    kept, done = voice.target_gap(opening, lost, score, None, np.ones(n), [], fps,
+    kept, done = fusion.target_gap(opening, lost, score, None, np.ones(n), [], fps,
                                   replace(trusting, voice_trust_low=0.5, voice_trust_high=0.9))
     np.testing.assert_allclose(kept, opening)  # untrusted: the phones' opening, no closure of the voice's
     assert done["closures_from_voice"] == 0 and done["mean_trust"] == 0.0
-    always = voice.trust(lost, opening, fps, replace(synth, voice_trust_low=-1.0, voice_trust_high=-1.0))
+    always = fusion.trust(lost, opening, fps, replace(synth, voice_trust_low=-1.0, voice_trust_high=-1.0))
     assert np.all(always == 1.0)  # -1, -1: always trusted (the release before)

@@ -2,7 +2,7 @@ import numpy as np
 import pytest
 from scipy.spatial.transform import Rotation
 
-from facesynth.domain.head_motion.rotations import apply, follow_sources
+from facesynth.domain.geometry.rotations import apply, follow_sources
 from facesynth.model.frames import relative_to_take
 
 

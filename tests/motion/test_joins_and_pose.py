@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from facesynth.domain.head_motion.rigid import head_pose, procrustes_align
+from facesynth.domain.geometry.rigid import head_pose, procrustes_align
 from facesynth.domain.postprocess.concatenation import blend_join, end_slope_weights, hermite
 
 

@@ -8,8 +8,8 @@ from click.testing import CliRunner
 
 from facesynth.cli import main
 from facesynth.domain.postprocess.concatenation import downsample, frame_ranges
-from facesynth.domain.search.inputs import read_utterance
 from facesynth.domain.speech import loudness
+from facesynth.domain.speech.utterance import read_utterance
 from facesynth.formats.audio import read_audio
 from facesynth.model.motion import Motion
 
@@ -189,16 +189,16 @@ def test_ranks_and_filters_are_scipys():
 def test_aligned_audio_is_kept_for_its_loudness(tiny_corpus, held_out_take, config):
     import csv
 
-    from facesynth.domain.methods import core
+    from facesynth.domain.methods import steps
 
     row = next(r for r in csv.DictReader(open(tiny_corpus / "manifest.csv")) if r["take"] == held_out_take)
     wav = tiny_corpus / row["audio"]
-    read = core.read_utterance(config.settings("ingest"), audio=wav, text=row["transcript"],
+    read = steps.read_utterance(config.settings("ingest"), audio=wav, text=row["transcript"],
                                align=config.settings("align"))
     samples, rate = read_audio(wav)
     assert read.alignment is not None and read.audio is not None and read.audio[1] == rate
     np.testing.assert_array_equal(read.audio[0], samples)
     # phones from a file: the audio is read for its loudness only
-    given = core.read_utterance(config.settings("ingest"), phones_path=tiny_corpus / row["alignment"], audio=wav)
+    given = steps.read_utterance(config.settings("ingest"), phones_path=tiny_corpus / row["alignment"], audio=wav)
     assert given.alignment is None and given.audio is not None and len(given.audio[0]) == len(samples)
-    assert core.read_utterance(config.settings("ingest"), phones_path=tiny_corpus / row["alignment"]).audio is None
+    assert steps.read_utterance(config.settings("ingest"), phones_path=tiny_corpus / row["alignment"]).audio is None

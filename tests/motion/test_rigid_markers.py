@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 from scipy.spatial.transform import Rotation
 
-from facesynth.domain.head_motion.rigid import choose_rigid, find_rigid_markers, typical_frame
+from facesynth.domain.geometry.rigid import choose_rigid, find_rigid_markers, typical_frame
 from facesynth.formats.mocap import read_mocap
 
 

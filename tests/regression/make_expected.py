@@ -19,10 +19,10 @@ from facesynth.stages import build_db, ingest, normalize, pca
 
 CHECKED = {
     "dp": ["rms_mm", "velocity_rms_mm_s", "lip_closure_rate", "emotion_agreement", "non_captured_joins"],
-    "baseline": ["rms_mm", "velocity_rms_mm_s"],
-    "baseline_emotion": ["rms_mm"],
-    "dominance": ["rms_mm"],
-    "dominance_emotion": ["rms_mm"],
+    "mean_per_phone": ["rms_mm", "velocity_rms_mm_s"],
+    "mean": ["rms_mm"],
+    "coarticulation_per_phone": ["rms_mm"],
+    "coarticulation": ["rms_mm"],
 }
 
 

@@ -8,7 +8,7 @@ import pytest
 from scipy.spatial import cKDTree
 from scipy.spatial.transform import Rotation
 
-from facesynth.domain.head_motion.rigid import similarity_fit, typical_frame
+from facesynth.domain.geometry.rigid import similarity_fit, typical_frame
 from facesynth.domain.retarget.bind import _icp, _start_rotations, axis_rotation, bind_markers, front_surface
 from facesynth.domain.rig.face import load_face_rig
 from facesynth.formats.mocap import read_mocap

@@ -2,7 +2,7 @@ import numpy as np
 import pytest
 
 from facesynth.base.errors import InputError
-from facesynth.domain.head_motion.rigid import similarity_fit
+from facesynth.domain.geometry.rigid import similarity_fit
 from facesynth.domain.rendering.parts import classify_holes, lip_halves
 from facesynth.domain.retarget.deform import animate, bind, mesh_distances
 from facesynth.domain.rig.face import load_face_rig

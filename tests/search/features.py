@@ -2,10 +2,10 @@
 
 import numpy as np
 
-from facesynth.domain.search.pairs import PairFeatures
+from facesynth.model.motiondb import TransitionFeatures
 
 
-def random_features(n: int, seed: int, markers: int = 7, dims: int = 12, duplicates: int = 0) -> PairFeatures:
+def random_features(n: int, seed: int, markers: int = 7, dims: int = 12, duplicates: int = 0) -> TransitionFeatures:
     """Seeded random features of ``n`` nodes in captured runs of 1-5, with ``duplicates`` nodes
     copied from others (so that pair costs tie exactly)."""
     rng = np.random.default_rng(seed)
@@ -27,7 +27,7 @@ def random_features(n: int, seed: int, markers: int = 7, dims: int = 12, duplica
         viseme[dst] = viseme[src]
     y[pre < 0] = 0.0
     scale[pre < 0] = 0.0
-    return PairFeatures(*arrays, x, y, scale, viseme, pre)
+    return TransitionFeatures(*arrays, x, y, scale, viseme, pre)
 
 
 def tiny_utterance_steps(db, s, textgrid, with_emotions: bool, with_constraints: bool):
@@ -36,7 +36,7 @@ def tiny_utterance_steps(db, s, textgrid, with_emotions: bool, with_constraints:
     ``with_emotions``, and with ``with_constraints`` up to three phones constrained to a node
     of their own phone. Returns (StepCosts, constraints {step: node})."""
     from facesynth.domain.search.costs import step_costs
-    from facesynth.domain.search.inputs import read_utterance
+    from facesynth.domain.speech.utterance import read_utterance
 
     utt = read_utterance(textgrid)
     if with_emotions:

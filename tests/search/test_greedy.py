@@ -9,8 +9,8 @@ from facesynth.domain.postprocess.cao import blend_jumps, learned_cutoffs, lowpa
 from facesynth.domain.search.costs import path_terms, step_costs
 from facesynth.domain.search.dp import dp_numpy
 from facesynth.domain.search.greedy import Greedy, anime_graph, cluster_graph, motion_features, pq_matching
-from facesynth.domain.search.inputs import read_utterance
 from facesynth.domain.search.pairs import transition_costs
+from facesynth.domain.speech.utterance import read_utterance
 from facesynth.model.motiondb import MotionDatabase
 
 

@@ -6,7 +6,8 @@ import pytest
 from features import random_features
 
 from facesynth.base.config import Config
-from facesynth.domain.search.pairs import PairFeatures, TransitionCosts
+from facesynth.domain.search.pairs import TransitionCosts
+from facesynth.model.motiondb import TransitionFeatures
 
 
 @pytest.fixture(scope="module")
@@ -21,8 +22,8 @@ def test_table_i_by_hand(s):
     last_pos[2] = [3, 4, 0, 0, 0, 1]      # |(0,0,0)-(3,4,0)| + |(0,0,0)-(0,0,1)| = 5 + 1
     x = np.array([[1.0], [0.0], [2.0]], np.float32)
     y = np.array([[0.0], [0.0], [1.0]], np.float32)
-    f = PairFeatures(first_pos, last_pos, z.copy(), z.copy(), x, y, np.array([0, 0, 2], np.float32),
-                     np.array([1, 1, 2]), np.array([-1, 0, 1]))
+    f = TransitionFeatures(first_pos, last_pos, z.copy(), z.copy(), x, y, np.array([0, 0, 2], np.float32),
+                           np.array([1, 1, 2]), np.array([-1, 0, 1]))
     tc = TransitionCosts(f, s).dense()
     assert tc[0, 1] == 0.0 and tc[1, 2] == 0.0                       # rule 1
     assert tc[:, 0].tolist() == [20.0, 20.0, 20.0 + 3 * 6]           # rule 4: alpha1 PNT + alpha3 PGap + VGap
@@ -69,9 +70,52 @@ def test_pair_tables_give_the_on_demand_costs_bit_for_bit(s):
     reference = TransitionCosts(f, s).dense()
     assert np.array_equal(dense.dense().view(np.uint32), reference.view(np.uint32))
     # other velocities: DSC and PGap shared, VGap recomputed, still bit-identical
-    g = PairFeatures(f.first_pos, f.last_pos, f.first_vel * 2, f.last_vel[::-1].copy(), f.dsc_out, f.dsc_in, f.dsc_scale,
-                     f.viseme, f.pre)
+    g = TransitionFeatures(f.first_pos, f.last_pos, f.first_vel * 2, f.last_vel[::-1].copy(), f.dsc_out, f.dsc_in, f.dsc_scale,
+                           f.viseme, f.pre)
     again = PairTerms(g, like=terms)
     assert again.dsc is terms.dsc and again.pgap is terms.pgap
     assert np.array_equal(again.costs(s).dense().view(np.uint32), TransitionCosts(g, s).dense().view(np.uint32))
     assert dense[3, 4] == reference[3, 4] and np.array_equal(dense.block([1, 2], [5, 0]), reference[np.ix_([1, 2], [5, 0])])
+
+
+def test_features_with_other_velocities_get_their_own_lane_layout():
+    """The padded copies the pair sums read are kept on the features they were made from: a
+    ``dataclasses.replace`` with other velocities (as ``tune`` makes) must not read the old ones."""
+    import dataclasses
+
+    from facesynth.domain.search.pairs import pair_terms
+
+    f = random_features(40, seed=3)
+    rows = cols = np.arange(len(f))
+    _, _, vgap = pair_terms(f, rows, cols)  # all nodes: the layout is made and kept
+    assert f.device_layout is not None
+    g = dataclasses.replace(f, first_vel=f.first_vel * 2, last_vel=f.last_vel[::-1].copy())
+    assert g.device_layout is None
+    fresh = TransitionFeatures(f.first_pos, f.last_pos, g.first_vel, g.last_vel, f.dsc_out, f.dsc_in, f.dsc_scale,
+                               f.viseme, f.pre)
+    expected = pair_terms(fresh, rows, cols)[2]
+    few = np.arange(3)  # few nodes: laid out on the spot, no layout kept
+    np.testing.assert_array_equal(pair_terms(g, few, few)[2], expected[:3, :3])
+    assert g.device_layout is None
+    np.testing.assert_array_equal(pair_terms(g, rows, cols)[2], expected)
+    assert g.device_layout is not None and g.device_layout is not f.device_layout
+    assert not np.array_equal(expected, vgap)
+
+
+def test_a_database_reads_back_the_features_build_db_wrote(tiny_artifacts, tiny_db, config):
+    """One class for the features from build-db to the search: what ``build`` computes is what
+    ``MotionDatabase.transition_features`` reads, with the nodes' visemes and predecessors."""
+    from facesynth.model.motiondb import MotionDatabase
+    from facesynth.model.pca import PcaFrames
+    from facesynth.stages.build_db import build
+
+    _, built, _ = build(PcaFrames.read(tiny_artifacts["pca"]), config.settings("build_db"))
+    db = MotionDatabase.read(tiny_db)
+    read = db.transition_features()
+    assert isinstance(read, TransitionFeatures) and len(read) == len(db.nodes)
+    for name in ("first_pos", "last_pos", "first_vel", "last_vel", "dsc_out", "dsc_in", "dsc_scale", "viseme", "pre"):
+        np.testing.assert_array_equal(getattr(read, name), getattr(built, name), err_msg=name)
+    assert built.pivot_distances is not None and read.pivot_distances is not None
+    for a, b in zip(read.pivot_distances, built.pivot_distances):
+        np.testing.assert_array_equal(a, b)
+    np.testing.assert_array_equal(read.viseme, db.nodes.viseme)

@@ -10,8 +10,9 @@ from features import random_features, tiny_utterance_steps
 
 from facesynth.base.config import Config
 from facesynth.domain.search.dp import dp_numpy, dp_opencl
-from facesynth.domain.search.pairs import PairFeatures, TransitionCosts, transition_costs
+from facesynth.domain.search.pairs import TransitionCosts, transition_costs
 from facesynth.domain.search.pruned import _column_minima_numpy, dp_pruned
+from facesynth.model.motiondb import TransitionFeatures
 
 
 def _settings(*overrides):
@@ -29,7 +30,7 @@ def _check(tc: TransitionCosts, obs: np.ndarray):
     return res, stats
 
 
-def _random_obs(features: PairFeatures, t: int, seed: int, s) -> np.ndarray:
+def _random_obs(features: TransitionFeatures, t: int, seed: int, s) -> np.ndarray:
     """Observation costs of a random phone string: each node's 'phone' is its viseme here, so
     the Table II constants separate them; coarse values give many ties."""
     rng = np.random.default_rng(seed)
@@ -132,7 +133,7 @@ def test_backward_values_and_a_kept_last_step_equal_the_dense_dp(opencl):
     assert np.array_equal(res.phi[-1], fwd.phi[-1])
 
 
-def _clustered(n: int, seed: int) -> PairFeatures:
+def _clustered(n: int, seed: int) -> TransitionFeatures:
     """Random features whose boundary states sit in a few tight clusters far apart (copies of
     a few poses with small noise, as replicated takes are), so row groups are tight and whole
     groups are skipped; duplicates make exact ties."""

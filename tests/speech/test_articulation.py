@@ -1,4 +1,4 @@
-"""The voice's articulation (facesynth.domain.speech.articulation) and its ``articulation``
+"""The voice's articulation (facesynth.domain.voice.articulation) and its ``articulation``
 artifact, on audio and arrays made here: streaming equals batch, the model round-trips bit for
 bit and checks clean, a fit recovers a known linear map, and everything is deterministic."""
 
@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from facesynth.base.errors import ArtifactError, InputError
-from facesynth.domain.speech import articulation as A
+from facesynth.domain.voice import articulation as A
 from facesynth.model import check
 from facesynth.model.articulation import ArticulationModel
 

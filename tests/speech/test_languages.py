@@ -285,10 +285,10 @@ def test_audio_alone_in_another_language_takes_the_voices_path(mandarin_clip, co
     """Recognised phones are what sends synthesize's mouth to the voice's articulation model."""
     import dataclasses
 
-    from facesynth.domain.methods import core
+    from facesynth.domain.methods import steps
 
     align = dataclasses.replace(config.settings("align"), language="cmn")
-    read = core.read_utterance(config.settings("ingest"), audio=mandarin_clip, align=align)
+    read = steps.read_utterance(config.settings("ingest"), audio=mandarin_clip, align=align)
     assert read.recognized and read.alignment.method == "phones" and not read.alignment.words
 
 

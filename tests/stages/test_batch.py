@@ -15,6 +15,7 @@ from click.testing import CliRunner
 pytest.importorskip("distributed", reason="facesynth batch needs dask[distributed] (pip install 'dask[distributed]')")
 
 from facesynth.cli import main  # noqa: E402
+from facesynth.domain.batch.job import prepare  # noqa: E402
 from facesynth.stages import batch  # noqa: E402
 
 
@@ -182,14 +183,14 @@ def test_a_line_checks_memory_matches_aliases_in_any_case_and_refuses_constraint
     values = _settings(config)
     values[2] = dataclasses.replace(values[2], emotion_aliases={"Joy": "happy"})
     joy, pinned = read_script(script)
-    _, job = batch.prepare(script, tiny_db, tmp_path / "out", *values)
+    _, job = prepare(script, tiny_db, tmp_path / "out", *values)
     result = run_line(joy, job)
     assert result.status == "ok", result.reason
     from facesynth.model.motion import Motion
 
     assert set(Motion.read_search(tmp_path / "out" / "joy.motion.h5")[0].emotion) == {"happy"}
 
-    _, mean_job = batch.prepare(script, tiny_db, tmp_path / "mean", *values, method="mean")
+    _, mean_job = prepare(script, tiny_db, tmp_path / "mean", *values, method="mean")
     refused = run_line(pinned, mean_job)
     assert refused.status == "failed" and refused.reason == (
         "motion-node constraints need the DP search (Eq. 10); the mean method takes none: drop --constraints or use "
@@ -292,13 +293,13 @@ def test_a_line_without_usd_core_fails_alone_in_one_sentence(tiny_corpus, tiny_d
                                                               monkeypatch):
     from facesynth.domain.batch.line import run_line
     from facesynth.domain.batch.script import read_script
-    from facesynth.domain.exports import usd
+    from facesynth.formats import usd
 
     row = takes["neutral_s001"]
     script = _write(tmp_path / "s.csv", [("id", "audio", "alignment"),
                                          ("one", str(tiny_corpus / row["audio"]), str(tiny_corpus / row["alignment"]))])
     monkeypatch.setattr(usd, "available", lambda: False)
-    _, job = batch.prepare(script, tiny_db, tmp_path / "out", *_settings(config, outputs=("curves", "usd")))
+    _, job = prepare(script, tiny_db, tmp_path / "out", *_settings(config, outputs=("curves", "usd")))
     result = run_line(read_script(script)[0], job)
     assert result.status == "failed" and result.reason == (
         "usd export needs Pixar's usd-core, which is not installed; run `pip install 'facesynth[usd]'` "
@@ -353,7 +354,7 @@ def test_a_user_s_rig_takes_the_rig_outputs(tiny_corpus, tiny_db, takes, config,
                                          ("one", str(tiny_corpus / row["audio"]), str(tiny_corpus / row["alignment"]))])
     values = _settings(config, outputs=("curves", "arkit-csv", "gltf", "avi"))
     values[5] = dataclasses.replace(values[5], width=64, height=48)
-    _, job = batch.prepare(script, tiny_db, tmp_path / "out", *values, rig=folder, rig_binding=binding)
+    _, job = prepare(script, tiny_db, tmp_path / "out", *values, rig=folder, rig_binding=binding)
     result = run_line(read_script(script)[0], job)
     assert result.status == "ok", result.reason
     curves = RigCurves.read(tmp_path / "out" / "one.curves.h5")
@@ -364,14 +365,14 @@ def test_a_user_s_rig_takes_the_rig_outputs(tiny_corpus, tiny_db, takes, config,
     assert imageio_ffmpeg.count_frames_and_secs(str(tmp_path / "out" / "one.avi"))[0] == curves.n_frames
     assert np.isfinite(curves.weights).all()
 
-    assert batch.prepare(script, tiny_db, tmp_path / "o1", *values, rig=Path("builtin"))[1].rig is None
+    assert prepare(script, tiny_db, tmp_path / "o1", *values, rig=Path("builtin"))[1].rig is None
     with pytest.raises(UsageError, match="a user's rig needs --rig-binding"):
-        batch.prepare(script, tiny_db, tmp_path / "o2", *values, rig=folder)
+        prepare(script, tiny_db, tmp_path / "o2", *values, rig=folder)
     for p in folder.glob("*.obj"):
         if p.stem != "neutral":
             p.rename(p.with_name(f"shape_{p.name}"))
     with pytest.raises(InputError, match="none of the shapes of rig 'myrig' has an ARKit name"):
-        batch.prepare(script, tiny_db, tmp_path / "o3", *values, rig=folder, rig_binding=binding)
+        prepare(script, tiny_db, tmp_path / "o3", *values, rig=folder, rig_binding=binding)
 
 
 def test_the_old_name_of_an_output_still_works_with_a_warning():

@@ -9,7 +9,8 @@ from facesynth.base.errors import InputError
 from facesynth.cli import main
 from facesynth.domain.evaluation import held_out as evaluation
 from facesynth.domain.evaluation.bootstrap import paired_difference, resamples
-from facesynth.domain.search.inputs import Utterance
+from facesynth.domain.search import tuning
+from facesynth.domain.speech.utterance import Utterance
 from facesynth.stages import tune
 
 
@@ -18,8 +19,8 @@ def test_report_has_numbers_per_method_and_plots(tiny_db, tiny_artifacts, tmp_pa
                                   "--set", "evaluate.bootstrap_resamples=100"])  # point values and files are tested, not the intervals
     assert r.exit_code == 0, r.output
     m = json.loads((tmp_path / "rep" / "metrics.json").read_text())
-    assert set(m) >= {"dp", "baseline", "meta"}
-    for method in ("dp", "baseline"):
+    assert set(m) >= {"dp", "mean_per_phone", "meta"}
+    for method in ("dp", "mean_per_phone"):
         overall = m[method]["overall"]
         assert overall["sentences"] == 4 and overall["rms_mm"] > 0
         assert overall["total_err_mm2"] == pytest.approx(sum(s["err_mm2"] for s in m[method]["per_sentence"]))
@@ -49,8 +50,8 @@ def test_evaluate_scores_the_methods_it_is_asked_for(tiny_db, tiny_artifacts, tm
     assert r.exit_code == 0, r.output
     m = json.loads((tmp_path / "rep" / "metrics.json").read_text())
     # dp always (the paired differences are dp minus each), the mean method with its per-phone variant
-    assert set(m) - {"figures_meta", "meta"} == {"dp", "baseline", "baseline_emotion", "capture"}
-    assert "baseline_emotion (mean): RMS" in r.output
+    assert set(m) - {"figures_meta", "meta"} == {"dp", "mean", "mean_per_phone", "capture"}
+    assert "\nmean: RMS" in r.output
     assert m["figures_meta"]["recommendation"]["method"] in ("dp", "mean")
 
 
@@ -80,17 +81,18 @@ def test_tune_writes_weights_synthesize_accepts(tiny_db, tiny_artifacts, tmp_pat
     out = tmp_path / "tuned.toml"
     s = tune.run(tiny_db, tiny_artifacts["corpus"], out, c.settings("tune"), c.settings("synthesize"),
                  c.settings("build_db"), c.settings("normalize"))
-    assert s.validation_err_after <= s.validation_err_before  # the search starts from the current weights
-    assert s.test_err_after is not None and s.test_sentences == 4
+    t = s.tuning
+    assert t.validation_err_after <= t.validation_err_before  # the search starts from the current weights
+    assert t.test_err_after is not None and t.test_sentences == 4
     tuned = Config.load(out).settings("synthesize")
-    assert tuned.alpha1 == pytest.approx(s.weights["alpha1"]) and 0 < tuned.alpha4 < 1
+    assert tuned.alpha1 == pytest.approx(t.weights["alpha1"]) and 0 < tuned.alpha4 < 1
     assert "validation error" in out.read_text()
 
 
 def test_vector_round_trip():
     s = Config.load().settings("synthesize")
-    back = tune.from_vector(tune.to_vector(s), s)
-    for k in tune.ALPHAS:
+    back = tuning.from_vector(tuning.to_vector(s), s)
+    for k in tuning.ALPHAS:
         assert getattr(back, k) == pytest.approx(getattr(s, k))
 
 
@@ -103,3 +105,29 @@ def test_gaps_in_the_capture_are_left_out_of_the_error():
     utt = Utterance(["aa"], np.array([0.0]), np.array([0.06]), ["neutral"])
     m = evaluation.sentence_metrics(syn, truth, utt, 100.0, names, settings)
     assert m.err_mm2 == pytest.approx(3.0)  # every seen marker is off by (1, 1, 1) mm; the gap is skipped, not NaN
+
+
+def test_a_fitted_model_is_given_with_model_and_the_old_option_warns(tiny_db, tiny_artifacts, tiny_trajectory, tmp_path):
+    """--model gives any fitted member's model (its kind names the member); --trajectory, its old
+    name, still works and says so; a file that is no fitted model is refused naming what to give."""
+    base = ["evaluate", str(tiny_db), "--heldout", str(tiny_artifacts["corpus"]), "--set", "evaluate.bootstrap_resamples=100",
+            "--set", "evaluate.methods=['trajectory']"]
+    r = CliRunner().invoke(main, base + ["--model", str(tiny_trajectory), "-o", str(tmp_path / "new")])
+    assert r.exit_code == 0, r.output
+    assert "deprecated" not in r.output and "\ntrajectory: RMS" in r.output
+    old = CliRunner().invoke(main, base + ["--trajectory", str(tiny_trajectory), "-o", str(tmp_path / "old")])
+    assert old.exit_code == 0, old.output
+    assert "warning: `--trajectory` is deprecated" in old.output and "`--model`" in old.output
+    new_m, old_m = (json.loads((tmp_path / d / "metrics.json").read_text()) for d in ("new", "old"))
+    assert new_m["trajectory"]["overall"] == old_m["trajectory"]["overall"]
+    bad = CliRunner().invoke(main, base + ["--model", str(tiny_db), "-o", str(tmp_path / "bad")])
+    assert bad.exit_code == 1 and "is a motiondb artifact, not a fitted model" in bad.output
+    assert "fit-method" in bad.output and not (tmp_path / "bad").exists()
+
+
+def test_rows_of_earlier_reports_read_under_their_names_now():
+    old = {"dp": 1, "baseline": 2, "baseline_emotion": 3, "dominance": 4, "dominance_emotion": 5, "meta": {}}
+    assert evaluation.current_rows(old) == {"dp": 1, "mean_per_phone": 2, "mean": 3, "coarticulation_per_phone": 4,
+                                            "coarticulation": 5, "meta": {}}
+    new = {"dp": 1, "mean": 3}
+    assert evaluation.current_rows(new) == new

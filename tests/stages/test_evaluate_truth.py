@@ -13,7 +13,7 @@ from facesynth.domain.corpus.truth import read_truth
 from facesynth.domain.evaluation import baselines, bootstrap
 from facesynth.domain.evaluation import held_out as evaluation
 from facesynth.domain.rig.face import load_face_rig
-from facesynth.domain.search.inputs import Utterance
+from facesynth.domain.speech.utterance import Utterance
 from facesynth.model.motiondb import MotionDatabase
 
 
@@ -139,13 +139,13 @@ def test_evaluate_with_truth_writes_figures_with_intervals(tiny_db, tiny_artifac
                                   "--set", "evaluate.bootstrap_resamples=200", "-o", str(tmp_path / "rep")])
     assert r.exit_code == 0, r.output
     m = json.loads((tmp_path / "rep" / "metrics.json").read_text())
-    methods = {"dp", "greedy", "baseline", "baseline_emotion", "dominance", "dominance_emotion", "capture", "clean"}
+    methods = {"dp", "greedy", "mean", "mean_per_phone", "coarticulation", "coarticulation_per_phone", "capture", "clean"}
     assert methods <= set(m)
     assert ("openfacefx" in m) == (baselines.openfacefx_missing() is None)
     assert m["clean"]["figures"]["rms_clean_mm"]["value"] == 0.0
     f = m["dp"]["figures"]
     for key in ("rms_clean_mm", "rms_mm", "velocity_rms_clean_mm_s", "mouth_r", "closure_rate", "join_d2_p99", "emotion_accuracy"):
         assert f[key]["low"] <= f[key]["value"] <= f[key]["high"], key
-    assert "dp_minus.rms_clean_mm" in m["baseline_emotion"]["figures"]
+    assert "dp_minus.rms_clean_mm" in m["mean"]["figures"]
     table = (tmp_path / "rep" / "table.md").read_text()
     assert "dp − greedy" in table and "RMS vs clean truth" in table

@@ -6,6 +6,7 @@ from click.testing import CliRunner
 
 from facesynth.base.errors import InputError
 from facesynth.cli import main
+from facesynth.domain.expression.analysis import check_markers
 from facesynth.model.expression import ExpressionModel
 from facesynth.model.motion import Motion
 from facesynth.stages import capture
@@ -93,7 +94,7 @@ def test_restyle_of_motion_with_other_markers_is_refused(fitted):
     d, _ = fitted
     model, names = ExpressionModel.read(d / "expr.h5")
     with pytest.raises(InputError, match="its markers differ"):
-        stage._check_markers(names[:-1], names, d / "take.h5", d / "expr.h5")
+        check_markers(names[:-1], names, d / "take.h5", d / "expr.h5")
 
 
 def test_fit_without_a_sentence_in_every_emotion_says_so(tiny_artifacts, config, tmp_path):

@@ -10,8 +10,7 @@ from click.testing import CliRunner
 
 from facesynth.base.errors import InputError
 from facesynth.cli import main
-from facesynth.domain.methods import voice
-from facesynth.domain.speech import articulation
+from facesynth.domain.voice import articulation, fusion
 from facesynth.model.articulation import ArticulationModel
 from facesynth.model.corpus import Corpus
 from facesynth.stages import fit_articulation
@@ -37,7 +36,7 @@ def test_the_model_learns_the_capture_mouth_from_its_voice(fitted, tiny_artifact
     with h5py.File(out) as f:
         config = json.loads(f.attrs["config"])
     assert config["takes"] == result.takes and config["lip_markers"] == ["ULI_C", "LLI_C"]
-    voice.articulation_model(str(out))  # what synthesize.articulation_model reads
+    fusion.articulation_model(str(out))  # what synthesize.articulation_model reads
 
 
 def test_the_same_capture_gives_the_same_model(fitted, tiny_artifacts, config, tmp_path):

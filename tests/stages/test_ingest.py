@@ -174,8 +174,8 @@ def test_align_settings_reach_the_aligner_of_transcript_only_takes(corpus, tmp_p
     from click.testing import CliRunner
 
     from facesynth.cli import main
+    from facesynth.domain.capture import takes
     from facesynth.formats.labels import read_phone_segments
-    from facesynth.stages import ingest
 
     rows = _rows(corpus)
     aligned = corpus / rows[1]["alignment"]
@@ -184,10 +184,12 @@ def test_align_settings_reach_the_aligner_of_transcript_only_takes(corpus, tmp_p
     received = []
 
     def fake_align(samples, rate, text, *, settings=None, extra=None, where="audio"):
-        received.append(settings)
-        return read_phone_segments(aligned, ("phones",))
+        from facesynth.domain.speech.alignment import Alignment
 
-    monkeypatch.setattr(ingest, "align_samples", fake_align)
+        received.append(settings)
+        return Alignment(read_phone_segments(aligned, ("phones",)), [], "given")
+
+    monkeypatch.setattr(takes, "align_robust", fake_align)
     r = CliRunner().invoke(main, ["ingest", str(corpus / "manifest.csv"), "-o", str(tmp_path / "c.h5"),
                                   "--set", "align.sample_rate=8000", "--set", "align.frame_rate=50"])
     assert r.exit_code == 0, r.output
@@ -249,3 +251,39 @@ def test_an_audio_column_without_sound_is_refused(corpus, coded_speech, config, 
     rows[1]["audio"] = str(coded_speech[name])
     _write_manifest(corpus, rows)
     _refused(corpus, config, re.escape(f"{coded_speech[name]}: {said}"))
+
+
+def test_a_takes_own_alignment_in_another_language_is_read_as_ipa(corpus, config, tmp_path):
+    """A German take's TextGrid labelled in IPA (as MFA's German model writes it): each phone keeps
+    its IPA, standing as its nearest English phone; an English take's labels stay Festival."""
+    from facesynth.model.corpus import Corpus
+
+    rows = _rows(corpus)
+    labels = ["sil", "ɪ", "ç", "m", "aː", "x", "ə", "sp", "ʁ", "yː", "spn"]
+    segs = [Segment(round(0.1 * i, 3), round(0.1 * (i + 1), 3), lab) for i, lab in enumerate(labels)]
+    write_textgrid(corpus / "ich.TextGrid", {"phones": segs})
+    for r in rows:
+        r["language"] = ""
+    rows[0]["alignment"], rows[0]["language"] = "ich.TextGrid", "de"
+    _write_manifest(corpus, rows)
+    ingest.run(corpus / "manifest.csv", tmp_path / "c.h5", config.settings("ingest"), config.settings("align"))
+    phones = Corpus.read(tmp_path / "c.h5", audio=False).phones
+    first = [k for k, t in enumerate(phones.take) if t == 0]
+    assert phones.ipa is not None
+    assert [phones.ipa[k] for k in first] == ["", "ɪ", "ç", "m", "aː", "x", "ə", "", "ʁ", "yː", ""]
+    assert [phones.phone[k] for k in first][:4] == ["pau", "ih", "sh", "m"]
+    assert [phones.phone[k] for k in first][9] == "uw"
+    rest = [k for k, t in enumerate(phones.take) if t != 0]
+    assert rest and all(phones.ipa[k] == "" for k in rest)  # the English takes: their Festival labels
+
+
+def test_an_unknown_ipa_label_of_a_take_in_another_language_is_named(corpus, config, tmp_path):
+    rows = _rows(corpus)
+    write_textgrid(corpus / "bad.TextGrid", {"phones": [Segment(0.0, 0.2, "a"), Segment(0.2, 0.4, "sh")]})
+    for r in rows:
+        r["language"] = ""
+    rows[0]["alignment"], rows[0]["language"] = "bad.TextGrid", "de"
+    _write_manifest(corpus, rows)
+    with pytest.raises(InputError, match=r"bad\.TextGrid, 0\.200 s: unknown IPA phone 'sh'; a take in language 'de'"):
+        ingest.run(corpus / "manifest.csv", tmp_path / "c.h5", config.settings("ingest"), config.settings("align"))
+    assert not (tmp_path / "c.h5").exists()

@@ -6,7 +6,7 @@ from click.testing import CliRunner
 from facesynth.base.config import Config
 from facesynth.base.errors import InputError
 from facesynth.cli import main
-from facesynth.domain.database import embedding
+from facesynth.domain.database import embedding, isomap_images
 from facesynth.stages import isomap
 
 
@@ -85,15 +85,15 @@ def test_pick_outside_and_unknown_phone_are_clear(iso):
 
 
 def _blend_every_pixel(points, emotion, settings):
-    """Eq. 3 blended over the whole image, emotion after emotion (what :func:`isomap.render_map`
+    """Eq. 3 blended over the whole image, emotion after emotion (what :func:`isomap_images.render_map`
     must equal, bit for bit)."""
     from scipy.ndimage import gaussian_filter
 
     size, s = settings.image_size, settings.kernel_sigma_px
-    t = isomap.map_transform(points, size)
+    t = isomap_images.map_transform(points, size)
     px = np.stack([t.x0 + t.sx * points[:, 0], t.y0 + t.sy * points[:, 1]], -1)
     image = np.ones((size, size, 3))
-    for name, colour in isomap.EMOTION_COLOURS.items():
+    for name, colour in isomap_images.EMOTION_COLOURS.items():
         sel = np.array(emotion) == name
         if not sel.any():
             continue
@@ -113,6 +113,6 @@ def test_the_map_image_blends_only_where_the_kernels_reach_and_is_the_whole_imag
     # on the plot's edges and repeated frames on one pixel
     points = np.concatenate([rng.normal(0, 1, (300, 2)), rng.normal(3, 0.2, (40, 2)), [[-4, -4], [6, 5], [6, 5]]])
     emotion = list(rng.choice(["neutral", "angry", "happy"], 300)) + ["sad"] * 40 + ["angry"] * 3
-    image, _ = isomap.render_map(points, emotion, settings)
+    image, _ = isomap_images.render_map(points, emotion, settings)
     np.testing.assert_array_equal(image, _blend_every_pixel(points, emotion, settings))
     assert (image != 255).any(axis=2).mean() > 0.05  # the kernels drew something

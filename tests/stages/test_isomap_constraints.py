@@ -15,7 +15,8 @@ from click.testing import CliRunner
 from facesynth.cli import main
 from facesynth.domain.exports.isomap_page import mid_time
 from facesynth.domain.search.constraint_choice import time_correct_offset
-from facesynth.domain.search.inputs import read_constraints, read_utterance
+from facesynth.domain.search.constraints import read_constraints
+from facesynth.domain.speech.utterance import read_utterance
 from facesynth.formats.labels import Segment, read_phone_segments, write_textgrid
 from facesynth.model.motion import Motion
 from facesynth.model.motiondb import MotionDatabase
@@ -76,7 +77,7 @@ def _expected(tiny_db, tg, text: str):
     from facesynth.base.config import Config
 
     config = Config.load()
-    found = suggest.suggest(tiny_db, tg, float(text), config.settings("synthesize"), config.settings("ingest"))
+    found = suggest.suggest(tiny_db, tg, float(text), config.settings("synthesize"), config.settings("ingest")).suggestions
     return (found.index, " ".join(str(n) for n in sorted(r.node for r in found.rows if r.context_correct)),
             {r.node: r.time_correct_frame for r in found.rows})
 

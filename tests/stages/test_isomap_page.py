@@ -12,6 +12,7 @@ from chromium_page import CHROMIUM, remove_singleton_folder
 from PIL import Image
 
 from facesynth.base.config import Config
+from facesynth.domain.database import isomap_images
 from facesynth.model.isomap import PhonemeMaps
 from facesynth.model.motiondb import MotionDatabase
 from facesynth.stages import isomap
@@ -37,21 +38,21 @@ def _chromium(tmp_path, url, *args, timeout=120):
 
 
 def test_tick_values_are_round_and_inside():
-    ticks = isomap.nice_ticks(-47.3, 58.1)
+    ticks = isomap_images.nice_ticks(-47.3, 58.1)
     assert list(ticks) == [-40, -20, 0, 20, 40]
-    assert list(isomap.nice_ticks(0.013, 0.071)) == pytest.approx([0.02, 0.03, 0.04, 0.05, 0.06, 0.07])
+    assert list(isomap_images.nice_ticks(0.013, 0.071)) == pytest.approx([0.02, 0.03, 0.04, 0.05, 0.06, 0.07])
 
 
 def test_images_have_axes_in_map_coordinates(page):
     maps = PhonemeMaps.read(page / "iso.h5")
     size = Config.load().settings("isomap").image_size
-    x0, y0, x1, y1 = isomap.plot_box(size)
+    x0, y0, x1, y1 = isomap_images.plot_box(size)
     for phone, c in maps.clusters.items():
         for kind, points in (("isomap", c.isomap), ("pca", c.pca_map)):
             img = np.asarray(Image.open(page / "img" / f"{phone}_{kind}.png").convert("L"))
             assert (img[y1, x0:x1 + 1] < 80).all() and (img[y0:y1 + 1, x0] < 80).all()  # the frame's bottom and left
-            t = isomap.map_transform(points, size)
-            for v in isomap.nice_ticks(t.lo[0], t.hi[0]):  # tick marks below the frame
+            t = isomap_images.map_transform(points, size)
+            for v in isomap_images.nice_ticks(t.lo[0], t.hi[0]):  # tick marks below the frame
                 px = round(t.x0 + t.sx * v)
                 assert (img[y1 + 1:y1 + 6, px] < 80).all()
             assert (img[y1 + 7:y1 + 20, x0:x1] < 128).any()  # tick labels
@@ -92,7 +93,7 @@ def test_page_in_headless_chromium_shows_axes_and_hover(page, tmp_path):
     # Hover: a synthetic pointer over the first frame of /aa/'s Isomap names its node, take and emotion.
     maps = PhonemeMaps.read(page / "iso.h5")
     c = maps.clusters[sorted(maps.clusters)[0]]
-    t = isomap.map_transform(c.isomap, Config.load().settings("isomap").image_size)
+    t = isomap_images.map_transform(c.isomap, Config.load().settings("isomap").image_size)
     px, py = t.x0 + t.sx * c.isomap[0, 0], t.y0 + t.sy * c.isomap[0, 1]
     probe = page / "img" / "probe.html"
     probe.write_text((page / "img" / "index.html").read_text() + (

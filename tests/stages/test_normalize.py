@@ -2,7 +2,7 @@ import numpy as np
 import pytest
 from scipy.spatial.transform import Rotation
 
-from facesynth.domain.head_motion.rigid import fill_gaps, rigid_align
+from facesynth.domain.geometry.rigid import fill_gaps, rigid_align
 
 
 def test_known_rotation_and_translation_are_recovered_exactly():

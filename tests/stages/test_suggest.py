@@ -4,7 +4,7 @@ from click.testing import CliRunner
 
 from facesynth.base.errors import InputError
 from facesynth.cli import main
-from facesynth.domain.search.inputs import read_utterance
+from facesynth.domain.speech.utterance import read_utterance
 from facesynth.model.motiondb import MotionDatabase
 from facesynth.stages import suggest, synthesize
 
@@ -15,7 +15,7 @@ def test_suggested_costs_are_what_the_constrained_search_finds(tiny_db, tiny_cor
     db = MotionDatabase.read(tiny_db)
     c = next(k for k, p in enumerate(utt.phones) if p != "pau" and db.nodes.phone.count(p) >= 3)
     at = 0.5 * (utt.starts[c] + utt.ends[c])
-    info = suggest.suggest(tiny_db, tg, at, config.settings("synthesize"), config.settings("ingest"))
+    info = suggest.suggest(tiny_db, tg, at, config.settings("synthesize"), config.settings("ingest")).suggestions
     rows = info.rows
     assert info.index == c and info.relative_time == pytest.approx(0.5)
     assert {r.node for r in rows} == {j for j, p in enumerate(db.nodes.phone) if p == utt.phones[c]}
@@ -49,7 +49,7 @@ def test_a_shared_triphone_gives_context_correct_suggestions(tiny_db, spliced_se
     db = MotionDatabase.read(tiny_db)
     c = 3  # pau, s3, s4, [s5], ...: an inner phone, its neighbours as in the training sentence
     at = 0.5 * (segs[c].start + segs[c].end)
-    info = suggest.suggest(tiny_db, tg, at, config.settings("synthesize"), config.settings("ingest"))
+    info = suggest.suggest(tiny_db, tg, at, config.settings("synthesize"), config.settings("ingest")).suggestions
     rows = info.rows
     context = (segs[c - 1].label, segs[c].label, segs[c + 1].label)
     assert info.context == "{}-{}+{}".format(*context)
@@ -72,7 +72,7 @@ def test_a_filter_that_leaves_nothing_is_an_error(tiny_db, tiny_corpus, held_out
     utt = read_utterance(tg)
     c = next(k for k, p in enumerate(utt.phones) if p != "pau")
     at = 0.5 * (utt.starts[c] + utt.ends[c])
-    info = suggest.suggest(tiny_db, tg, at, config.settings("synthesize"), config.settings("ingest"))
+    info = suggest.suggest(tiny_db, tg, at, config.settings("synthesize"), config.settings("ingest")).suggestions
     rows = info.rows
     if any(r.context_correct for r in rows):
         pytest.skip("this phone of the held-out sentence has context-correct nodes")

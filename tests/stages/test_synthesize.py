@@ -24,10 +24,10 @@ def test_motion_artifact_holds_both_rates_path_costs_and_provenance(tiny_db, tin
         assert m30.attrs["fps"] == 30 and m120.attrs["fps"] == 120 and m30.attrs["units"] == "mm"
         assert len(m120) == pytest.approx(4 * (len(m30) - 1) + 1, abs=3)
         path = f["path/node"][()]
-        assert len(path) == s.phones
+        assert len(path) == s.summary.phones
         total = sum(f[f"path/cost_{k}"][()].astype(np.float64).sum() for k in ("tc", "oc", "emp", "block"))
         assert total == pytest.approx(f["path"].attrs["total_cost"], rel=1e-5)
-        assert f["path"].attrs["non_captured_joins"] == s.joins
+        assert f["path"].attrs["non_captured_joins"] == s.summary.joins
         node, take, src = f["provenance/node"][()], f["provenance/take"][()], f["provenance/source_frame"][()]
         assert len(node) == len(m120)
         assert ((node == -1) == (src == -1)).all() and ((node == -1) == (take == -1)).all()
@@ -38,7 +38,7 @@ def test_motion_artifact_holds_both_rates_path_costs_and_provenance(tiny_db, tin
 def test_constraints_are_met_and_emotions_steer_the_search(tiny_db, tiny_corpus, held_out_take, config, tmp_path):
     tg = tiny_corpus / "labels" / f"{held_out_take}.TextGrid"
     db = MotionDatabase.read(tiny_db)
-    from facesynth.domain.search.inputs import read_utterance
+    from facesynth.domain.speech.utterance import read_utterance
 
     utt = read_utterance(tg)
     t = next(k for k, p in enumerate(utt.phones) if p != "pau" and p in db.nodes.phone)
@@ -69,7 +69,7 @@ def test_bad_constraints_are_named(tiny_db, tiny_corpus, held_out_take, config, 
 
 
 def test_constraint_with_a_node_of_another_phone(tiny_db, tiny_corpus, held_out_take, config, tmp_path):
-    from facesynth.domain.search.inputs import read_utterance
+    from facesynth.domain.speech.utterance import read_utterance
 
     db = MotionDatabase.read(tiny_db)
     utt = read_utterance(tiny_corpus / "labels" / f"{held_out_take}.TextGrid")
@@ -130,7 +130,7 @@ def test_pruned_and_dense_searches_write_the_same_motion(tiny_db, tiny_corpus, h
     from facesynth.base.config import Config
 
     tg = tiny_corpus / "labels" / f"{held_out_take}.TextGrid"
-    costs = [_run(tiny_db, tg, tmp_path / f"{dp}.h5", Config.load(None, (f"synthesize.dp={dp}", f"synthesize.use_opencl={use_opencl}"))).cost
+    costs = [_run(tiny_db, tg, tmp_path / f"{dp}.h5", Config.load(None, (f"synthesize.dp={dp}", f"synthesize.use_opencl={use_opencl}"))).summary.cost
              for dp in ("pruned", "dense")]
     assert costs[0] == costs[1]
     with h5py.File(tmp_path / "pruned.h5") as a, h5py.File(tmp_path / "dense.h5") as b:
@@ -146,7 +146,7 @@ def test_audio_and_text_are_aligned_on_the_fly_and_emotion_tiers_read(tiny_db, t
     row = next(r for r in csv.DictReader(open(tiny_corpus / "manifest.csv")) if r["take"] == "neutral_s001")
     s = synthesize.run(tiny_db, tmp_path / "a.h5", config.settings("synthesize"), config.settings("ingest"),
                        config.settings("align"), audio=tiny_corpus / row["audio"], text=row["transcript"])
-    assert s.phones > len(row["transcript"].split())
+    assert s.summary.phones > len(row["transcript"].split())
     tiers = read_textgrid(tiny_corpus / row["alignment"])
     end = tiers["phones"][-1].end
     write_textgrid(tmp_path / "e.TextGrid", {"phones": tiers["phones"],

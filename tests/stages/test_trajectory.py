@@ -22,7 +22,7 @@ from facesynth.domain.methods.trajectory import (
     solve,
     synthesize_path,
 )
-from facesynth.domain.search.inputs import read_utterance
+from facesynth.domain.speech.utterance import read_utterance
 from facesynth.model.motion import Motion
 from facesynth.model.trajectory import TrajectoryModel
 from facesynth.stages import synthesize
@@ -233,8 +233,7 @@ def test_evaluate_lists_the_trajectory_method(tiny_db, tiny_artifacts, tiny_traj
 
     quick = dataclasses.replace(config.settings("evaluate"), bootstrap_resamples=100)  # the intervals' width is not tested here
     s = evaluate.run(tiny_db, tiny_artifacts["corpus"], tmp_path / "report", quick,
-                     config.settings("synthesize"), config.settings("normalize"), trajectory=tiny_trajectory,
-                     trajectory_settings=config.settings("trajectory"))
+                     MethodSettings.of(config), config.settings("normalize"), models=[tiny_trajectory])
     assert "trajectory" in s.methods and np.isfinite(s.methods["trajectory"]["rms_mm"])
     assert "dp_minus.rms_mm" in s.methods["trajectory"]["figures"]
     assert "| trajectory |" in (tmp_path / "report" / "table.md").read_text()
@@ -247,6 +246,5 @@ def test_evaluate_refuses_a_model_of_another_database(tiny_artifacts, tiny_traje
     build_db.run(tiny_artifacts["pca"], other, dataclasses.replace(config.settings("build_db"), dsc_samples=6))
     with pytest.raises(InputError, match="was trained on another database"):
         evaluate.run(other, tiny_artifacts["corpus"], tmp_path / "report", config.settings("evaluate"),
-                     config.settings("synthesize"), config.settings("normalize"), trajectory=tiny_trajectory,
-                     trajectory_settings=config.settings("trajectory"))
+                     MethodSettings.of(config), config.settings("normalize"), models=[tiny_trajectory])
     assert not (tmp_path / "report").exists()

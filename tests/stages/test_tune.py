@@ -1,4 +1,4 @@
-"""``facesynth tune``: the search vector, the search on the tiny corpus and its report."""
+"""``facesynth tune``: the search on the tiny corpus, what it reads and its report."""
 
 import csv
 import dataclasses
@@ -9,6 +9,7 @@ import pytest
 from facesynth.base.config import Config
 from facesynth.base.errors import InputError
 from facesynth.domain.evaluation import held_out as evaluation
+from facesynth.domain.search import tuning
 from facesynth.stages import tune
 
 #: A budget small enough for the tiny corpus: the initial simplex (7 points) and a step or two.
@@ -23,46 +24,6 @@ def _settings(*overrides):
 def _splits(tiny_corpus):
     rows = list(csv.DictReader(open(tiny_corpus / "manifest.csv", encoding="utf-8")))
     return {split: {r["take"] for r in rows if r["split"] == split} for split in ("train", "val", "test")}
-
-
-# --- the search vector -------------------------------------------------------------------------
-
-
-def test_vector_is_logs_and_a_logit():
-    s = dataclasses.replace(Config.load().settings("synthesize"), alpha1=1.0, alpha2=np.e, alpha3=0.5,
-                            alpha4=0.75, alpha5=np.e**2, alpha6=4.0, pnt=np.e**3)
-    v = tune.to_vector(s)
-    # log 1, log e, log 0.5, logit 0.75 = log(0.75 / 0.25) = log 3, log e^2, log 4, log e^3
-    np.testing.assert_allclose(v, [0.0, 1.0, np.log(0.5), np.log(3.0), 2.0, np.log(4.0), 3.0], rtol=0, atol=1e-12)
-
-
-def test_round_trip_keeps_every_weight_and_the_other_settings():
-    s = dataclasses.replace(Config.load().settings("synthesize"), alpha1=1.75, alpha2=0.00123, alpha3=0.856,
-                            alpha4=0.552, alpha5=9.37, alpha6=1.54, pnt=123.0, search="greedy")
-    back = tune.from_vector(tune.to_vector(s), s)
-    for name in tune.WEIGHTS:
-        assert getattr(back, name) == pytest.approx(getattr(s, name), rel=1e-12), name
-    # only the weights move (PNT among them: it balances the penalties against PGap, VGap, DSC)
-    assert dataclasses.replace(back, **{n: getattr(s, n) for n in tune.WEIGHTS}) == s
-
-
-@pytest.mark.parametrize("logit", [-800.0, -40.0, -5.0, 0.0, 5.0, 37.0, 40.0])
-def test_alpha4_stays_inside_zero_one_for_any_search_vector(logit):
-    s = Config.load().settings("synthesize")
-    v = tune.to_vector(s)
-    v[3] = logit
-    a4 = tune.from_vector(v, s).alpha4
-    assert 0.0 < a4 < 1.0  # Table II, rule 2: a discount; 1.0 would be refused by Config.load
-    assert a4 > 0.5 if logit > 0 else (a4 < 0.5 if logit < 0 else a4 == 0.5)
-
-
-def test_a_moved_vector_moves_the_alphas_as_logs():
-    s = Config.load().settings("synthesize")
-    v = tune.to_vector(s)
-    moved = tune.from_vector(v + np.log(2.0) * np.array([1, 0, -1, 0, 0, 1, 1]), s)
-    assert moved.alpha1 == pytest.approx(2 * s.alpha1) and moved.alpha3 == pytest.approx(s.alpha3 / 2)
-    assert moved.alpha6 == pytest.approx(2 * s.alpha6) and moved.pnt == pytest.approx(2 * s.pnt)
-    assert (moved.alpha2, moved.alpha4, moved.alpha5) == pytest.approx((s.alpha2, s.alpha4, s.alpha5))
 
 
 # --- tuning on the tiny corpus -----------------------------------------------------------------
@@ -81,30 +42,30 @@ def tuned(tiny_db, tiny_artifacts, tmp_path_factory):
 
 def test_tuned_validation_error_is_never_above_the_start(tuned):
     summary, calls, _ = tuned
-    assert summary.validation_sentences == 4 and summary.test_sentences == 4
-    assert 0 < summary.validation_err_after <= summary.validation_err_before
+    assert summary.tuning.validation_sentences == 4 and summary.tuning.test_sentences == 4
+    assert 0 < summary.tuning.validation_err_after <= summary.tuning.validation_err_before
     # the first evaluation is the start; the reported best is the least of every evaluation
-    assert calls[0][2] == summary.validation_err_before
-    assert summary.validation_err_after == min(c[2] for c in calls)
-    assert [c[0] for c in calls] == list(range(1, summary.evaluations + 1))
+    assert calls[0][2] == summary.tuning.validation_err_before
+    assert summary.tuning.validation_err_after == min(c[2] for c in calls)
+    assert [c[0] for c in calls] == list(range(1, summary.tuning.evaluations + 1))
     # one overall count: the weight budget plus the fit lengths and windows, the best so far with it
-    budget = 6 + len(tune.FIT_LENGTHS) - 1 + len(tune.WINDOWS) - 1
-    assert {c[1] for c in calls} == {budget} and summary.evaluations <= budget
+    budget = 6 + len(tuning.FIT_LENGTHS) - 1 + len(tuning.WINDOWS) - 1
+    assert {c[1] for c in calls} == {budget} and summary.tuning.evaluations <= budget
     assert [c[3] for c in calls] == list(np.minimum.accumulate([c[2] for c in calls]))
 
 
 def test_written_toml_loads_back_and_reproduces_the_weights(tuned):
     summary, _, out = tuned
     text = out.read_text(encoding="utf-8")
-    assert f"{summary.validation_err_before:.4f} -> {summary.validation_err_after:.4f}" in text
-    assert f"{summary.test_err_before:.4f} [" in text and f"-> {summary.test_err_after:.4f} [" in text
+    assert f"{summary.tuning.validation_err_before:.4f} -> {summary.tuning.validation_err_after:.4f}" in text
+    assert f"{summary.tuning.test_err_before:.4f} [" in text and f"-> {summary.tuning.test_err_after:.4f} [" in text
     loaded = Config.load(out)
-    assert {k: getattr(loaded.settings("synthesize"), k) for k in tune.WEIGHTS} == summary.weights  # exact: repr
-    assert loaded.settings("synthesize").smoothing_half_window == summary.smoothing_half_window
-    assert loaded.settings("build_db").boundary_fit_frames == summary.boundary_fit_frames
+    assert {k: getattr(loaded.settings("synthesize"), k) for k in tuning.WEIGHTS} == summary.tuning.weights  # exact: repr
+    assert loaded.settings("synthesize").smoothing_half_window == summary.tuning.smoothing_half_window
+    assert loaded.settings("build_db").boundary_fit_frames == summary.tuning.boundary_fit_frames
     # only those are written: every other setting stays at its default
     default = Config.load().settings("synthesize")
-    moved = {k: getattr(default, k) for k in tune.WEIGHTS + ("smoothing_half_window",)}
+    moved = {k: getattr(default, k) for k in tuning.WEIGHTS + ("smoothing_half_window",)}
     assert dataclasses.replace(loaded.settings("synthesize"), **moved) == default
 
 
@@ -114,27 +75,27 @@ def test_test_error_is_the_error_on_the_test_takes(tuned, tiny_db, tiny_artifact
     ev = Config.load().settings("evaluate")
     test_ev = dataclasses.replace(ev, split="test")
     before, _ = evaluation.evaluate(tiny_db, tiny_artifacts["corpus"], test_ev, synth, norm, with_baseline=False)
-    assert summary.test_err_before == pytest.approx(before["dp"]["overall"]["err_mm2"], rel=1e-9)
-    lo, hi = summary.test_ci_before
-    assert lo <= summary.test_err_before <= hi
-    if summary.boundary_fit_frames == build.boundary_fit_frames:  # the database's features are the tuned ones
+    assert summary.tuning.test_err_before == pytest.approx(before["dp"]["overall"]["err_mm2"], rel=1e-9)
+    lo, hi = summary.tuning.test_ci_before
+    assert lo <= summary.tuning.test_err_before <= hi
+    if summary.tuning.boundary_fit_frames == build.boundary_fit_frames:  # the database's features are the tuned ones
         after, _ = evaluation.evaluate(tiny_db, tiny_artifacts["corpus"], test_ev, Config.load(out).settings("synthesize"),
                                        norm, with_baseline=False)
-        assert summary.test_err_after == pytest.approx(after["dp"]["overall"]["err_mm2"], rel=1e-9)
+        assert summary.tuning.test_err_after == pytest.approx(after["dp"]["overall"]["err_mm2"], rel=1e-9)
     val_ev = dataclasses.replace(ev, split="val")
     on_val, _ = evaluation.evaluate(tiny_db, tiny_artifacts["corpus"], val_ev, synth, norm, with_baseline=False)
-    assert summary.validation_err_before == pytest.approx(on_val["dp"]["overall"]["err_mm2"], rel=1e-9)
-    assert summary.test_err_before != pytest.approx(summary.validation_err_before)  # two different sets
+    assert summary.tuning.validation_err_before == pytest.approx(on_val["dp"]["overall"]["err_mm2"], rel=1e-9)
+    assert summary.tuning.test_err_before != pytest.approx(summary.tuning.validation_err_before)  # two different sets
 
 
 def _spy_synthesize(monkeypatch, seen):
-    real = tune.synthesize
+    real = tuning.synthesize
 
     def spy(db, utt, constraints, settings, tc=None):
         seen.append((utt, settings))
         return real(db, utt, constraints, settings, tc=tc)
 
-    monkeypatch.setattr(tune, "synthesize", spy)
+    monkeypatch.setattr(tuning, "synthesize", spy)
 
 
 def test_the_search_sees_validation_takes_only(tiny_db, tiny_artifacts, tiny_corpus, monkeypatch):
@@ -160,7 +121,7 @@ def test_the_search_sees_validation_takes_only(tiny_db, tiny_artifacts, tiny_cor
     assert set(splits_seen[:first_test]) == {"val"} and set(splits_seen[first_test:]) == {"test"}
     assert {takes_of[id(utt)][1] for utt, _ in seen[:first_test]} == splits["val"]
     assert {takes_of[id(utt)][1] for utt, _ in seen[first_test:]} == splits["test"]
-    assert summary.evaluations >= 1
+    assert summary.tuning.evaluations >= 1
 
 
 def test_same_seed_same_result_with_random_starts(tiny_db, tiny_artifacts, monkeypatch):
@@ -172,7 +133,7 @@ def test_same_seed_same_result_with_random_starts(tiny_db, tiny_artifacts, monke
         summary = dataclasses.replace(summary, seconds=0.0)
         tried = []
         for _, s in seen:
-            w = tuple(getattr(s, k) for k in tune.WEIGHTS)
+            w = tuple(getattr(s, k) for k in tuning.WEIGHTS)
             if not tried or tried[-1] != w:
                 tried.append(w)
         return summary, tried
@@ -180,7 +141,7 @@ def test_same_seed_same_result_with_random_starts(tiny_db, tiny_artifacts, monke
     (first, tried_first), (again, tried_again), (_, tried_other) = run(3), run(3), run(4)
     assert first == again and tried_first == tried_again
     # the first start is the current weights whatever the seed; the second is drawn from the seed
-    current = tuple(getattr(_settings()[1], k) for k in tune.WEIGHTS)
+    current = tuple(getattr(_settings()[1], k) for k in tuning.WEIGHTS)
     assert tried_first[0] == tried_other[0] == pytest.approx(current, rel=1e-12)
     assert set(tried_first) != set(tried_other)
 
@@ -188,7 +149,7 @@ def test_same_seed_same_result_with_random_starts(tiny_db, tiny_artifacts, monke
 def test_nothing_better_writes_the_start_with_a_warning(tiny_db, tiny_artifacts, tmp_path, monkeypatch):
     """A search that finds nothing better (here: every candidate but the start scores worse)
     writes the start settings and says so."""
-    real = tune.Objective.errors
+    real = tuning.Objective.errors
     calls = {"n": 0}
 
     def worse(self, s, fit, sentences, tag):
@@ -196,19 +157,19 @@ def test_nothing_better_writes_the_start_with_a_warning(tiny_db, tiny_artifacts,
         calls["n"] += 1
         return out if (tag == "test" or calls["n"] == 1) else out + 100.0
 
-    monkeypatch.setattr(tune.Objective, "errors", worse)
+    monkeypatch.setattr(tuning.Objective, "errors", worse)
     out = tmp_path / "tuned.toml"
     t, synth, build, norm = _settings()
     summary = tune.run(tiny_db, tiny_artifacts["corpus"], out, t, synth, build, norm)
-    assert not summary.improved and summary.warnings
-    assert summary.validation_err_after == summary.validation_err_before
+    assert not summary.tuning.improved and summary.tuning.warnings
+    assert summary.tuning.validation_err_after == summary.tuning.validation_err_before
     loaded = Config.load(out)
-    assert {k: getattr(loaded.settings("synthesize"), k) for k in tune.WEIGHTS} == pytest.approx(
-        {k: getattr(synth, k) for k in tune.WEIGHTS}, rel=1e-12)
+    assert {k: getattr(loaded.settings("synthesize"), k) for k in tuning.WEIGHTS} == pytest.approx(
+        {k: getattr(synth, k) for k in tuning.WEIGHTS}, rel=1e-12)
     assert "# warning: no setting tried beat the start" in out.read_text(encoding="utf-8")
 
 
-@pytest.mark.parametrize("name", tune.WEIGHTS)
+@pytest.mark.parametrize("name", tuning.WEIGHTS)
 def test_non_positive_alphas_are_refused_by_name(tiny_db, tiny_artifacts, name):
     t, synth, build, norm = _settings()
     zero = dataclasses.replace(synth, **{name: 0.0})

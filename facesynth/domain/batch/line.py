@@ -1,6 +1,6 @@
 """One line of a batch, done in a Dask worker process: the utterance read (its alignment, or its
 audio aligned to its text, or recognised when there is none) and synthesized by the job's
-method through the shared core (:mod:`facesynth.domain.methods.core`: the same transcript-mismatch
+method through the shared core (:mod:`facesynth.domain.methods.steps`: the same transcript-mismatch
 policy, emotion names, memory check and method code as ``facesynth synthesize``), under the
 job's ``[limits]``; then the asked outputs and a manifest.
 
@@ -51,7 +51,7 @@ from facesynth.base.registry import EXPORT_FORMATS
 from facesynth.domain import methods
 from facesynth.domain.exports.animation import from_curves
 from facesynth.domain.exports.format import ExportOptions, write_export
-from facesynth.domain.methods import MethodSettings, core
+from facesynth.domain.methods import MethodSettings, steps
 from facesynth.domain.rendering.video import render_video
 from facesynth.domain.retarget.deform import animate, bind
 from facesynth.domain.retarget.solve import solve_motion, solved_curves
@@ -298,7 +298,7 @@ def _check_inputs(line: Line, job: Job) -> tuple[str, Path]:
     for name in job.outputs:  # an optional dependency missing is refused before any work
         if name in EXPORT_FORMATS:
             EXPORT_FORMATS.get(name).require()
-    return core.emotion_name(line.emotion or "neutral", job.ingest.emotions, job.ingest.emotion_aliases,
+    return steps.emotion_name(line.emotion or "neutral", job.ingest.emotions, job.ingest.emotion_aliases,
                              "the emotion column"), line.audio
 
 
@@ -369,11 +369,11 @@ def _do_line(line: Line, job: Job, emotion: str, audio: Path, key: dict, outputs
     result.audio_s = len(samples) / rate
     one_emotion = None if line.emotions is not None else emotion
     if line.alignment is not None:
-        read = core.read_utterance(job.ingest, phones_path=line.alignment, audio=audio,
+        read = steps.read_utterance(job.ingest, phones_path=line.alignment, audio=audio,
                                    emotions_path=line.emotions, emotion=one_emotion, samples=(samples, rate))
         result.method = "given"
     else:  # a line without text is recognised (the script reader makes an empty cell None)
-        read = core.read_utterance(job.ingest, audio=audio, text=line.text, align=line_align(job.align, line),
+        read = steps.read_utterance(job.ingest, audio=audio, text=line.text, align=line_align(job.align, line),
                                    emotions_path=line.emotions, emotion=one_emotion, samples=(samples, rate))
         assert read.alignment is not None  # audio is aligned or recognised
         result.method, result.recognized = read.alignment.method, read.alignment.recognized
@@ -385,8 +385,8 @@ def _do_line(line: Line, job: Job, emotion: str, audio: Path, key: dict, outputs
     t0 = time.perf_counter()
     member = methods.get(job.method)
     source, prepared, result.load_s = database(job.db, job.method, job.settings)
-    constraints = core.constraints_for(member, source, line.constraints, utt)
-    synthesis = core.synthesize(member, source, utt, job.settings, constraints, prepared=prepared,
+    constraints = steps.constraints_for(member, source, line.constraints, utt)
+    synthesis = steps.synthesize(member, source, utt, job.settings, constraints, prepared=prepared,
                                 source_where=str(job.db), where=str(line.alignment or audio),
                                 audio=(samples, rate), recognized=read.recognized)
     motion = synthesis.motion
@@ -406,7 +406,7 @@ def _do_line(line: Line, job: Job, emotion: str, audio: Path, key: dict, outputs
                                 ("constraints", line.constraints)) if p is not None]
     motion_path = outputs.get("motion") or job.out_dir / f"{line.id}.motion.h5.part-{os.getpid()}"
     keep_motion = "motion" in outputs
-    motion.write(motion_path, config=core.recorded_config(member, job.settings, True), records=records,
+    motion.write(motion_path, config=steps.recorded_config(member, job.settings, True), records=records,
                  overwrite=True)
     if keep_motion:
         result.outputs.append(motion_path.name)

@@ -1,7 +1,7 @@
 """``facesynth sample-corpus``: write the virtual actress's corpus in the formats a real user has.
 
 The actress lives on the production face rig (:mod:`facesynth.domain.rig.face`): her speech is
-articulated in the rig's blendshape weights (:mod:`facesynth.domain.corpus.articulation`), her face
+articulated in the rig's blendshape weights (:mod:`facesynth.domain.corpus.actress_mouth`), her face
 blinks, raises the brows, looks around and shows four emotions, sometimes changing emotion
 inside a sentence (:mod:`facesynth.domain.corpus.nonspeech`), and her head moves with pitch and
 phrasing (:mod:`facesynth.domain.corpus.speech`). About 90 markers glued to rig vertices
@@ -46,7 +46,7 @@ from facesynth.formats.mesh import write_binding, write_obj
 from facesynth.formats.mocap import MarkerTake, write_c3d
 from facesynth.model.artifacts import check_output_folder
 
-from .articulation import CHANNEL_NAMES, ContactSolver, TokenVariation, apply_contact, articulate
+from .actress_mouth import CHANNEL_NAMES, ContactSolver, TokenVariation, apply_contact, articulate
 from .nonspeech import (
     EMOTIONS,
     EmotionTrack,

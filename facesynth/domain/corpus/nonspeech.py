@@ -28,7 +28,7 @@ import numpy as np
 
 from facesynth.domain.rig.face import Rig
 
-from .articulation import critically_damped
+from .actress_mouth import critically_damped
 
 EMOTIONS = ("neutral", "happy", "angry", "sad")
 

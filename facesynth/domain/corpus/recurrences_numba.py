@@ -3,7 +3,7 @@ as the plain NumPy loop and ``scipy.signal.lfilter`` calls they stand for, bit f
 corpus's bytes do not depend on which computes them.
 
 * :func:`damped_response`: the critically damped articulators of
-  :func:`facesynth.domain.corpus.articulation.critically_damped` (semi-implicit Euler substeps);
+  :func:`facesynth.domain.corpus.actress_mouth.critically_damped` (semi-implicit Euler substeps);
 * :func:`section_cascade`: ``scipy.signal.lfilter`` through a cascade of second-order sections
   run block by block, each section's state carried from one block to the next (``zi``/``zf``),
   with coefficients that change per block (the formant resonators of

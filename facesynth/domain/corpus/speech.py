@@ -4,7 +4,7 @@ Phone durations follow the phone class, stress, phrase-final lengthening and the
 tempo (word by word, so a take that changes emotion changes tempo with it); pitch has
 declination, accents on some stressed vowels (which also raise the brows, see
 :mod:`facesynth.domain.corpus.nonspeech`) and a final fall; the head nods with the pitch. The
-articulation itself is in :mod:`facesynth.domain.corpus.articulation`.
+articulation itself is in :mod:`facesynth.domain.corpus.actress_mouth`.
 """
 
 from __future__ import annotations

@@ -17,13 +17,15 @@ four frames its Isomap map falls back to the PCA map. Both are reported in the c
 from __future__ import annotations
 
 import warnings
+from pathlib import Path
 
 import numpy as np
 from scipy.spatial import Delaunay
 
 from facesynth.base.config import IsomapSettings
+from facesynth.base.errors import InputError
 from facesynth.base.progress import progress
-from facesynth.model.isomap import Cluster
+from facesynth.model.isomap import Cluster, PhonemeMaps
 from facesynth.model.motiondb import Nodes
 
 
@@ -104,6 +106,30 @@ def barycentric_pick(points: np.ndarray, xy: tuple[float, float]) -> tuple[np.nd
     t = tri.transform[s]
     b = t[:2] @ (np.asarray(xy, float) - t[2])
     return tri.simplices[s], np.array([b[0], b[1], 1.0 - b.sum()])
+
+
+def picked_frame(maps: PhonemeMaps, phone: str, xy: tuple[float, float], use_pca_map: bool,
+                 where: Path) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Fig. 7: the frame at the point ``xy`` of ``phone``'s Isomap (or its PCA map), by
+    barycentric interpolation of the three captured frames of the covering triangle.
+
+    Returns the frame's markers (M, 3) mm, the triangle's three rows of the cluster (3,) and
+    their weights (3,), summing to 1. A point outside the triangulation is an InputError naming
+    ``where`` (the maps' file) and the map's range.
+    """
+    cluster = maps.cluster(phone, where)
+    kind = "pca_map" if use_pca_map else "isomap"
+    points = getattr(cluster, kind)
+    hit = barycentric_pick(points, xy)
+    if hit is None:
+        lo, hi = points.min(0), points.max(0)
+        raise InputError(
+            f"/{phone}/: the point ({xy[0]:g}, {xy[1]:g}) lies outside the triangulation of its {kind.replace('_', ' ')} "
+            f"(x {lo[0]:.3g} to {hi[0]:.3g}, y {lo[1]:.3g} to {hi[1]:.3g}); pick a point inside it."
+        )
+    corners, weights = hit
+    frame = (weights[:, None] * cluster.coefficients[corners].astype(np.float64)).sum(0)
+    return maps.model.reconstruct(frame[None])[0], corners, weights
 
 
 def memory_estimate(nodes: Nodes, settings: IsomapSettings) -> float:

@@ -16,22 +16,24 @@ timing and emotion, with no constraints, and compared at the capture rate with
   of ``lip_markers``), and lip-closure timing.
 
 Methods, each given the same phone timing (and emotions): the members of the method family
-named by ``evaluate.methods`` (:mod:`facesynth.domain.methods`; ``dp`` always), each synthesized through
-the shared core (:func:`facesynth.domain.methods.core.synthesize`), scored under the row names of
-earlier reports (:func:`member_rows`), and two per-phone variants as ablations:
+named by ``evaluate.methods`` (:mod:`facesynth.domain.methods`; ``dp`` always), each from its
+evaluation source (:meth:`~facesynth.domain.methods.Method.evaluation_source`: the database, a model
+given with ``--model`` or one fitted now), synthesized through the shared core
+(:func:`facesynth.domain.methods.steps.synthesize`) and scored under its own name, each followed by
+the variants it declares (:meth:`~facesynth.domain.methods.Method.ablations`):
 
 * ``dp``: the paper's search; ``greedy``: Cao et al.'s greedy search on the same database and
   cost terms;
-* ``baseline_emotion`` (the ``mean`` method): the mean pose per (phone, emotion) placed at each
-  phone's centre and interpolated linearly, the rest pose in pauses; ``baseline``: the same with
-  the per-phoneme mean pose (:mod:`facesynth.domain.methods.mean`);
-* ``dominance_emotion`` (the ``coarticulation`` method): a Cohen-Massaro coarticulation model
-  per (phone, emotion) fitted on the database's training takes (``evaluate.dominance_iterations``);
-  ``dominance``: the same per phone (:mod:`facesynth.domain.methods.coarticulation`);
 * ``trajectory``: Huang et al.'s compact key-shape trajectory model (:mod:`facesynth.domain.methods.trajectory`),
-  when a model trained on the same database is given (``facesynth evaluate --trajectory``): the
+  when a model fitted on the same database is given (``facesynth evaluate --model``): the
   smooth path of Eq. 6-7 through per-(phone, emotion) Gaussians of key-shape weights, scored at
   phone boundaries like the other non-search methods;
+* ``coarticulation``: a Cohen-Massaro coarticulation model per (phone, emotion) fitted on the
+  database's training takes (``evaluate.dominance_iterations``) or given; ``coarticulation_per_phone``:
+  the same per phone (:mod:`facesynth.domain.methods.coarticulation`);
+* ``mean``: the mean pose per (phone, emotion) placed at each phone's centre and interpolated
+  linearly, the rest pose in pauses; ``mean_per_phone``: the same with the per-phoneme mean pose
+  (:mod:`facesynth.domain.methods.mean`);
 * ``openfacefx``: the external text-driven system (:mod:`facesynth.domain.evaluation.baselines`), its ARKit
   curves through the corpus's face rig to the markers (only with the ``truth`` folder, which
   holds ``markers.csv``, and when openfacefx is installed; otherwise the report says why not);
@@ -69,34 +71,25 @@ is one) between the lowest method and each other.
 from __future__ import annotations
 
 import dataclasses
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
-from facesynth.base.config import (
-    CoarticulationSettings,
-    Config,
-    EvaluateSettings,
-    NormalizeSettings,
-    SynthesizeSettings,
-    TrajectorySettings,
-)
+from facesynth.base.config import EvaluateSettings, NormalizeSettings, SynthesizeSettings
 from facesynth.base.errors import InputError
 from facesynth.base.phonemes import PAU
 from facesynth.base.progress import progress
 from facesynth.base.registry import METHODS
-from facesynth.domain.head_motion.rigid import choose_rigid, fill_gaps, head_pose
-from facesynth.domain.methods import Method, MethodSettings, NotEvaluable, core, names
+from facesynth.domain.geometry.rigid import choose_rigid, fill_gaps, head_pose
+from facesynth.domain.methods import Method, MethodSettings, NotEvaluable, names, steps
 from facesynth.domain.methods import get as get_method
-from facesynth.domain.methods.coarticulation import DominanceModel, fit_dominance, training_sentences
-from facesynth.domain.methods.mean import mean_pose_markers
 from facesynth.domain.postprocess.concatenation import frame_ranges
 from facesynth.domain.rig.face import load_face_rig
-from facesynth.domain.search.inputs import Utterance, utterance
 from facesynth.domain.speech.loudness import lip_gaps
+from facesynth.domain.speech.utterance import Utterance, utterance
 from facesynth.formats.mesh import read_binding, read_rigid_markers
 from facesynth.formats.mocap import read_c3d
 from facesynth.model.corpus import Corpus
@@ -122,14 +115,16 @@ CLOSURE_SWEEP = (0.5, 1.0, 2.0, 4.0)
 JOIN_PERCENTILE = 99.0
 #: The references scored beside the methods.
 REFERENCES = ("capture", "clean")
-#: The report's rows in the order of earlier reports; rows of other members follow them.
-ROW_ORDER = ("dp", "greedy", "baseline", "baseline_emotion", "dominance", "dominance_emotion", "openfacefx", "trajectory")
+#: Rows of reports written before each row took its member's name: old name -> name now. A
+#: metrics.json of such a report reads with :func:`current_rows`.
+OLD_ROWS = {"baseline_emotion": "mean", "baseline": "mean_per_phone", "dominance_emotion": "coarticulation",
+            "dominance": "coarticulation_per_phone"}
 
 
-def member_rows() -> dict[str, str]:
-    """The row of the report that scores each member of the method family (its registration's
-    ``report_row``: the names of earlier reports; else its name)."""
-    return {e.name: e.facts.get("report_row", e.name) for e in METHODS.entries()}
+def current_rows(metrics: dict) -> dict:
+    """``metrics`` (a report's metrics.json, by row) with the rows of earlier reports under their
+    names now (:data:`OLD_ROWS`); a report of this version comes back as it is."""
+    return {OLD_ROWS.get(row, row): value for row, value in metrics.items()}
 
 
 def searches(name: str) -> bool:
@@ -240,13 +235,6 @@ def heldout(corpus_path: Path, db: MotionDatabase, split: str, normalize_setting
             s.clean, s.to_reference = truth.clean(takes.name[i], db.marker_names, db.reference)
         out.append(s)
     return out
-
-
-def dominance_baseline(db: MotionDatabase, model: DominanceModel, utt: Utterance) -> np.ndarray:
-    """The per-phone Cohen-Massaro model's markers (T, M, 3) mm at the capture rate (the ``dominance``
-    ablation row; the per-(phone, emotion) model is the ``coarticulation`` method)."""
-    total = frame_ranges(utt.starts, utt.ends, db.fps)[-1][1]
-    return db.model.reconstruct(model.predict(utt.phones, utt.starts, utt.ends, total, db.fps))
 
 
 def openfacefx_baseline(db: MotionDatabase, utt: Utterance, rig, vertices: np.ndarray,
@@ -604,36 +592,34 @@ def _needed(key: str) -> str:
 @dataclass
 class Member:
     """A member of the method family as ``evaluate`` runs it: the method, its source (the
-    database, or its model) and the work prepared once for every sentence."""
+    database, or its model), the settings it runs with and the work prepared once for every sentence."""
 
     method: Method
     source: Any
+    settings: MethodSettings
     prepared: Any = None
 
 
-def method_outputs(db: MotionDatabase, s: Sentence, members: dict[str, Member], method_settings: MethodSettings,
-                   ablations: dict[str, DominanceModel | None], rig=None, vertices=None, source_where: str = "the database"
-                   ) -> tuple[dict, dict]:
+def method_outputs(db: MotionDatabase, s: Sentence, members: dict[str, Member],
+                   ablations: Mapping[str, Callable[[Utterance], np.ndarray]], rig=None, vertices=None,
+                   source_where: str = "the database") -> tuple[dict, dict]:
     """Every row's markers (T, M, 3) mm at the capture rate for one sentence, and per row its extra
-    fields (search methods: emotion agreement, joins). ``members``: by name, run through the shared
-    core; ``ablations``: the per-phone rows to add (``baseline``; ``dominance`` with its model)."""
+    fields (search methods: emotion agreement, joins). ``members``: by name (the row), run through
+    the shared core; ``ablations``: the members' variants, row -> utterance -> markers."""
     outputs, extra = {}, {}
     for name, m in members.items():
-        result = core.synthesize(m.method, m.source, s.utterance, method_settings, prepared=m.prepared,
-                                 source_where=source_where, where=s.take)
-        motion, row = result.motion, member_rows()[name]
-        outputs[row] = motion.markers_capture
+        result = steps.synthesize(m.method, m.source, s.utterance, m.settings, prepared=m.prepared,
+                                  source_where=source_where, where=s.take)
+        motion = result.motion
+        outputs[name] = motion.markers_capture
         if searches(name):
             spoken = [k for k, p in enumerate(s.utterance.phones) if p != PAU]
-            extra[row] = {"emotion_agreement": float(np.mean([motion.path.node_emotion[k] == s.utterance.emotions[k]
-                                                              for k in spoken])),
-                          "non_captured_joins": motion.path.non_captured_joins,
-                          "joins": search_joins(db, s.utterance, motion.path.node)}
-    if "baseline" in ablations:
-        outputs["baseline"] = mean_pose_markers(db, s.utterance, by_emotion=False)
-    dominance = ablations.get("dominance")
-    if dominance is not None:
-        outputs["dominance"] = dominance_baseline(db, dominance, s.utterance)
+            extra[name] = {"emotion_agreement": float(np.mean([motion.path.node_emotion[k] == s.utterance.emotions[k]
+                                                               for k in spoken])),
+                           "non_captured_joins": motion.path.non_captured_joins,
+                           "joins": search_joins(db, s.utterance, motion.path.node)}
+    for row, markers in ablations.items():
+        outputs[row] = markers(s.utterance)
     if rig is not None:
         if s.to_reference is None:  # evaluate() passes the rig only with every sentence's clean truth
             raise ValueError(f"{s.take}: the openfacefx baseline needs the clean truth's head frame")
@@ -655,7 +641,7 @@ def recommend(figures: dict[str, dict], row_of: dict[str, str] | None = None, di
     """One sentence recommending a method from the report's own bootstrap intervals.
 
     ``figures``: per row, its :data:`FIGURES` entries ({value, low, high}); ``row_of``: member ->
-    row (default :func:`member_rows`, members absent from ``figures`` ignored). The figure is the
+    row (default: every member under its name; members absent from ``figures`` ignored). The figure is the
     RMS error against the clean truth where computed, else against the noisy capture.
     ``difference(key, other_row, best_row)``: the paired bootstrap interval of ``other - best``
     on the same resamples ({value, low, high}); without it the methods' own intervals are compared.
@@ -665,7 +651,7 @@ def recommend(figures: dict[str, dict], row_of: dict[str, str] | None = None, di
     own interval lies entirely below every other's). Otherwise the methods not told apart from it
     (a paired interval holding 0, an overlapping interval) are tied with it, and the simplest and
     fastest of them (:func:`simplest_first`) is recommended."""
-    row_of = row_of if row_of is not None else member_rows()
+    row_of = row_of if row_of is not None else {m: m for m in names()}
     present = {m: r for m, r in row_of.items() if r in figures}
     for key in ("rms_clean_mm", "rms_mm"):
         scored = {m: figures[r][key] for m, r in present.items()
@@ -720,22 +706,24 @@ def recommend(figures: dict[str, dict], row_of: dict[str, str] | None = None, di
                                        f"tied methods ({label} {cell(choice)}); {lowest}.")
 
 
-def evaluate(db_path: Path, corpus: Path, settings: EvaluateSettings, synth: SynthesizeSettings,
+def evaluate(db_path: Path, corpus: Path, settings: EvaluateSettings, synth: SynthesizeSettings | MethodSettings,
              normalize_settings: NormalizeSettings, sentences: list[Sentence] | None = None,
              db: MotionDatabase | None = None, tc=None, with_baseline: bool = True,
-             truth: Path | None = None, trajectory=None,
-             trajectory_settings: TrajectorySettings | None = None) -> tuple[dict, list[dict]]:
+             truth: Path | None = None, models: Mapping[str, Any] | None = None) -> tuple[dict, list[dict]]:
     """Returns (metrics per row, per-sentence records with the curves to plot).
 
-    The members of ``settings.methods`` (``dp`` always) are scored, the ``mean`` and
-    ``coarticulation`` members with their per-phone ablations. ``with_baseline=False`` evaluates
+    The members of ``settings.methods`` (``dp`` always) are scored, each with the variants it
+    declares (:meth:`~facesynth.domain.methods.Method.ablations`). ``synth``: the
+    :class:`MethodSettings` (or ``[synthesize]`` alone: the packaged defaults for the members'
+    sections). ``models``: member -> its model given for this database (read; the members'
+    :meth:`~facesynth.domain.methods.Method.evaluation_source` fit one where none is given and
+    they can). ``with_baseline=False`` evaluates
     the DP alone against the noisy capture (tune leaves the other methods and figures out of its
     many evaluations). ``truth``: a corpus folder with clean ground truth (:class:`TruthFolder`),
     which adds the clean-truth figures, the ``openfacefx`` baseline and the ``capture`` / ``clean``
     references. Metrics per row: ``overall``, ``per_emotion``, ``per_sentence``, and ``figures``
     (with intervals); under ``"_figures"`` the table's meta (labels, skipped methods and why, the
-    :class:`Recommendation` as ``recommendation``). ``trajectory``: a TrajectoryModel trained on
-    ``db`` (with ``trajectory_settings``) adds the ``trajectory`` member (only with the others)."""
+    :class:`Recommendation` as ``recommendation``)."""
     db = db or MotionDatabase.read(db_path)
     for name in tuple(settings.lip_markers) + (settings.plot_marker,):
         if name not in db.marker_names:
@@ -743,31 +731,27 @@ def evaluate(db_path: Path, corpus: Path, settings: EvaluateSettings, synth: Syn
     folder = TruthFolder.open(truth, db.marker_names, normalize_settings) if truth is not None else None
     sentences = sentences if sentences is not None else heldout(corpus, db, settings.split, normalize_settings, folder)
     with_clean = folder is not None and all(s.clean is not None for s in sentences)
-    method_settings = MethodSettings(synth, trajectory_settings or Config.load().settings("trajectory"),
-                                     CoarticulationSettings(iterations=settings.dominance_iterations))
+    method_settings = synth if isinstance(synth, MethodSettings) else MethodSettings.packaged(synthesize=synth)
     wanted = ("dp",) + tuple(m for m in settings.methods if m != "dp") if with_baseline else ("dp",)
     skipped = {}
     members: dict[str, Member] = {}
-    given = {"trajectory": trajectory}
+    ablations: dict[str, Callable[[Utterance], np.ndarray]] = {}
+    order: list[str] = []  # the rows: each member, then its variants
     for name in names():  # the report's order
         if name not in wanted:
             continue
         method = get_method(name)
+        own = method.for_evaluation(method_settings, settings)
         try:
-            source = method.evaluation_source(db, method_settings, given, str(db_path))
+            source = method.evaluation_source(db, own, models or {}, str(db_path))
         except NotEvaluable as reason:
             skipped[name] = str(reason)
             continue
         shared = tc if tc is not None and searches(name) else None  # the caller's transition costs, for both searches
-        members[name] = Member(method, source, shared if shared is not None else method.prepare(source, method_settings))
-    ablations: dict[str, DominanceModel | None] = {}
-    for name in members:
-        ablation = METHODS.entry(name).facts.get("ablation")
-        if ablation == "baseline":
-            ablations["baseline"] = None
-        elif ablation == "dominance":
-            ablations["dominance"] = fit_dominance(training_sentences(db, by_emotion=False), db.fps,
-                                                   settings.dominance_iterations)
+        members[name] = Member(method, source, own, shared if shared is not None else method.prepare(source, own))
+        variants = method.ablations(db, own) if with_baseline else {}
+        ablations.update(variants)
+        order += [name, *variants]
     rig = vertices = None
     if with_baseline:
         missing = "it needs the clean truth folder (--truth), which holds the rig's marker binding" if not with_clean else openfacefx_missing()
@@ -775,16 +759,14 @@ def evaluate(db_path: Path, corpus: Path, settings: EvaluateSettings, synth: Syn
             skipped["openfacefx"] = missing
         elif folder is not None:  # with_clean: there is one
             rig, vertices = load_face_rig(), folder.vertices(db.marker_names)
-    rows = [member_rows()[m] for m in members]
-    order = list(ROW_ORDER) + [r for r in rows if r not in ROW_ORDER]
-    present = set(rows) | set(ablations) | ({"openfacefx"} if rig is not None else set())
+    order += ["openfacefx"] if rig is not None else []
     references = (REFERENCES if with_clean else ("capture",)) if with_baseline else ()
-    per_method: dict[str, list[dict]] = {m: [] for m in [r for r in order if r in present] + list(references)}
+    per_method: dict[str, list[dict]] = {m: [] for m in order + list(references)}
     classifier = EmotionClassifier(db, settings.classifier_frames, settings.seed) if with_baseline else None
     k = db.marker_names.index(settings.plot_marker)
     records = []
     for s in progress(sentences, "evaluate"):
-        outputs, extra = method_outputs(db, s, members, method_settings, ablations, rig, vertices, str(db_path))
+        outputs, extra = method_outputs(db, s, members, ablations, rig, vertices, str(db_path))
         if "capture" in references:
             outputs["capture"] = s.truth
         clean = s.clean if with_clean else None  # with_clean: every sentence has it
@@ -827,7 +809,7 @@ def evaluate(db_path: Path, corpus: Path, settings: EvaluateSettings, synth: Syn
             return paired_difference(stat(per_method[other]), stat(per_method[best]), len(sentences), index)
 
         choice = recommend({r: metrics[r]["figures"] for r in metrics if "figures" in metrics[r]},
-                           {m: member_rows()[m] for m in members}, difference)
+                           {m: m for m in members}, difference)
         metrics["_figures"] = {"labels": {key: label for key, (label, _, _, _) in FIGURES.items()},
                                "lower_is_better": {key: lower for key, (_, _, _, lower) in FIGURES.items()},
                                "clean_truth": with_clean, "skipped": skipped,

@@ -25,10 +25,10 @@ import numpy as np
 from facesynth.base.errors import InputError
 from facesynth.base.phonemes import PAU
 from facesynth.domain.search.constraint_choice import context_correct, context_name
-from facesynth.domain.search.inputs import Utterance
+from facesynth.domain.speech.utterance import Utterance
 from facesynth.model.artifacts import recorded_inputs, sha256_of
 from facesynth.model.isomap import Cluster, PhonemeMaps
-from facesynth.model.motion import SearchPath
+from facesynth.model.motion import Motion, SearchPath
 from facesynth.model.motiondb import MotionDatabase
 
 
@@ -72,6 +72,29 @@ def check_path(path: SearchPath | None, utt: Utterance, db: MotionDatabase, moti
             raise InputError(f"{motion_path}: its path uses node {int(node)} at phone {k}, which {db_path} does not "
                              f"have as /{path.node_phone[k]}/; give a motion synthesized from {db_path}.")
     return path
+
+
+def require_maps_of(maps: PhonemeMaps, db: MotionDatabase, isomap_path: Path, db_path: Path) -> None:
+    """Refuse maps built from another database than ``db_path``, or holding nodes it lacks."""
+    require_same_database(isomap_path, PhonemeMaps.KIND, "was built", db_path,
+                          f"run facesynth isomap build {db_path} -o ISOMAP.h5 and use that")
+    check_maps(maps, db, isomap_path, db_path)
+
+
+def checked_motion_path(motion_path: Path, utt: Utterance, db: MotionDatabase, phones_path: Path,
+                        db_path: Path) -> tuple[SearchPath, list[str]]:
+    """The search path of the motion at ``motion_path``, checked to be ``db``'s nodes for
+    ``utt``, with a warning when it was synthesized with other emotions than the page's."""
+    require_same_database(motion_path, Motion.KIND, "was synthesized", db_path,
+                          f"give a motion synthesized from {db_path}, or that motion's database")
+    path = check_path(Motion.read_search(motion_path)[0], utt, db, motion_path, phones_path, db_path)
+    differ, notes = emotion_differences(path, utt), []
+    if differ:
+        k = differ[0]
+        notes.append(f"{motion_path} was synthesized with other emotions than the page's at {len(differ)} phones "
+                     f"(phone {k} /{utt.phones[k]}/: {path.emotion[k]}, not {utt.emotions[k]}); "
+                     "give the --emotions it was made with")
+    return path, notes
 
 
 def emotion_differences(path: SearchPath, utt: Utterance) -> list[int]:

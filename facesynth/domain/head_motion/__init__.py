@@ -1,2 +1,2 @@
-"""Head motion: its rotations, removing it from a capture (the rigid markers, paper Eq. 1-2)
-and synthesizing it from pitch."""
+"""Head motion: removing it from a capture (:mod:`.removal`: the rigid markers, paper Eq. 1-2, with
+:mod:`facesynth.domain.geometry.rigid`) and synthesizing it from pitch (:mod:`.synthesis`)."""

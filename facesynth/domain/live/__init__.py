@@ -1,8 +1,9 @@
 """Live synthesis (``facesynth stream``): audio arriving in chunks, frames of rig curves out with a
 fixed latency and no frame revised after it is sent.
 
-- :mod:`.core`: the transport-free core, :class:`~.core.LiveSynthesizer` (phones in, frames out),
+- :mod:`.synthesizer`: the transport-free core, :class:`~.synthesizer.LiveSynthesizer` (phones in, frames out),
   with the fixed-lag DP or the greedy search over a sliding window.
+- :mod:`.voice_frames`: frames from the voice's articulation model as audio arrives.
 - :mod:`.phones`: phones as they become known: pocketsphinx's live phone-loop decoding, or the
   timings a TTS engine gives.
 - :mod:`.livelink`: the Live Link Face UDP packet (encoder and decoder).

@@ -30,10 +30,10 @@ from typing import BinaryIO, cast
 from facesynth.base.config import AlignSettings
 from facesynth.base.errors import FacesynthError, InputError
 
-from .core import LiveModel
 from .livelink import LiveLinkSender
 from .phones import SAMPLE_RATE
 from .session import Session
+from .synthesizer import LiveModel
 
 log = logging.getLogger(__name__)
 

@@ -29,12 +29,12 @@ import numpy as np
 from facesynth.base.config import AlignSettings
 from facesynth.base.errors import InputError
 from facesynth.base.phonemes import PAU
-from facesynth.domain.speech.articulation import model_look_ahead_s
 from facesynth.domain.speech.languages import is_english
+from facesynth.domain.voice.articulation import model_look_ahead_s
 
-from .core import Frame, LiveModel, LiveSynthesizer
 from .phones import SAMPLE_RATE, PhoneRecognizer, given_phones
-from .voice import VoiceFrames
+from .synthesizer import Frame, LiveModel, LiveSynthesizer
+from .voice_frames import VoiceFrames
 
 #: A BCP-47 tag as a start message's ``language`` may give it (``en``, ``fr-CA``, ``cmn``, ``zh_Hans``).
 _LANGUAGE_TAG = re.compile(r"[A-Za-z]{2,3}(?:[-_][A-Za-z0-9]{1,8})*")

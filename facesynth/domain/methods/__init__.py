@@ -1,6 +1,6 @@
 """Synthesis methods as one family: every way facesynth makes motion from an utterance.
 
-A method turns an utterance (:class:`~facesynth.domain.search.inputs.Utterance`: phones with times in
+A method turns an utterance (:class:`~facesynth.domain.speech.utterance.Utterance`: phones with times in
 seconds and an emotion per phone, and, for the DP alone, motion-node constraints) into a
 :class:`~facesynth.model.motion.Motion` with the same fields and provenance whatever the method:
 markers at the output rate and at the capture rate, the per-phone path (``path.search`` names the
@@ -24,52 +24,109 @@ name                      source        what it does
 ========================  ============  ============================================================
 
 Adding a member: a subclass of :class:`Method` in its own module, and one registration line
-below (:data:`facesynth.base.registry.METHODS`); ``synthesize --method``, ``evaluate``, ``batch``,
-``tune``, ``fit-method`` (a fitted member), ``--set`` and the docs' table then offer it. The
-shared steps around a method (reading the utterance, emotion names, the memory check) are
-:mod:`facesynth.domain.methods.core`.
+below (:data:`facesynth.base.registry.METHODS`), which with the class declares everything the
+commands need of it: its settings section (fact ``settings``), its source or fitted artifact
+(``fitted``, ``source_kind``), its evaluation (:meth:`Method.evaluation_source`,
+:meth:`Method.ablations`; its report row is its name) and its live behaviour (:meth:`Method.live`
+with ``streams=True``, or :attr:`Method.not_live`). ``synthesize --method``, ``evaluate``,
+``batch``, ``tune``, ``stream``, ``fit-method`` (a fitted member), ``--set`` and the docs' tables
+then offer it. The shared steps around a method (reading the utterance, emotion names, the
+memory check) are :mod:`facesynth.domain.methods.steps`; the live forms' interface is
+:mod:`facesynth.domain.methods.live`.
 """
 
 from __future__ import annotations
 
 from abc import ABC, abstractmethod
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, ClassVar
 
-from facesynth.base.config import CoarticulationSettings, Config, SynthesizeSettings, TrajectorySettings
+from facesynth.base.config import Config, EvaluateSettings, SynthesizeSettings
 from facesynth.base.errors import UsageError
 from facesynth.base.registry import METHODS
+
+from .live import LiveSource
 
 
 class NotEvaluable(Exception):
     """A member ``evaluate`` cannot score on this database; the message says what to give."""
 
 
-@dataclass(frozen=True)
 class MethodSettings:
-    """The settings sections the members read: ``synthesize`` (every member's output rate; the
-    searches' costs and post-processing), ``trajectory`` (the path of Eq. 6-7), ``coarticulation``
-    (its fitting)."""
+    """The settings sections the members read, by section name: ``synthesize`` (every member's
+    output rate; the searches' costs and post-processing) and each registered member's own section
+    (its registration's fact ``settings``: ``trajectory``, ``coarticulation``, a new member's).
+    ``settings.trajectory`` is that section's frozen dataclass; :meth:`replace` gives a copy with
+    other sections. Immutable."""
 
-    synthesize: SynthesizeSettings
-    trajectory: TrajectorySettings
-    coarticulation: CoarticulationSettings
+    __slots__ = ("_sections",)
+
+    def __init__(self, sections: Mapping[str, Any] | None = None, /, **named: Any) -> None:
+        merged = {**dict(sections or {}), **named}
+        if "synthesize" not in merged:
+            raise ValueError("MethodSettings needs the [synthesize] section")  # a caller's bug
+        object.__setattr__(self, "_sections", merged)
+
+    def __getattr__(self, name: str) -> Any:
+        if name.startswith("_"):
+            raise AttributeError(name)
+        sections = object.__getattribute__(self, "_sections")
+        if name not in sections:
+            raise AttributeError(f"no [{name}] section among the method settings ({', '.join(sections)})")
+        return sections[name]
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        raise AttributeError("MethodSettings is immutable; use .replace(section=...)")
+
+    def __reduce__(self):  # pickled to batch's workers
+        return (MethodSettings, (dict(self._sections),))
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, MethodSettings) and self._sections == other._sections
+
+    def __hash__(self) -> int:
+        return hash(tuple(sorted(self._sections.items())))
+
+    def __repr__(self) -> str:
+        return f"MethodSettings({', '.join(f'{k}={v!r}' for k, v in self._sections.items())})"
+
+    @property
+    def synthesize(self) -> SynthesizeSettings:
+        """``[synthesize]``: every member's output rate, the searches' costs and post-processing."""
+        return self._sections["synthesize"]
+
+    def section(self, name: str) -> Any:
+        """The section called ``name``'s frozen dataclass."""
+        return getattr(self, name)
+
+    def sections(self) -> dict[str, Any]:
+        """Every section held, by name."""
+        return dict(self._sections)
+
+    def replace(self, **sections: Any) -> "MethodSettings":
+        """A copy with the sections ``sections`` (``synthesize=...``) instead."""
+        return MethodSettings(self._sections, **sections)
+
+    @staticmethod
+    def names() -> tuple[str, ...]:
+        """The sections the members read: ``synthesize`` and every registered member's own."""
+        return tuple(dict.fromkeys(["synthesize"] + [e.facts["settings"] for e in METHODS.entries()
+                                                     if e.facts.get("settings")]))
 
     @classmethod
     def of(cls, config) -> "MethodSettings":
         """The sections of a :class:`~facesynth.base.config.Config` (a command reading them declares
-        ``synthesize``, ``trajectory`` and ``coarticulation``)."""
-        return cls(config.settings("synthesize"), config.settings("trajectory"), config.settings("coarticulation"))
+        ``METHOD_SECTIONS`` among its ``reads``, :mod:`facesynth.base.pipeline`)."""
+        return cls({name: config.settings(name) for name in cls.names()})
 
     @classmethod
     def packaged(cls, **given) -> "MethodSettings":
         """The packaged defaults, with the sections ``given`` (``synthesize=...``) instead (for
         library callers and commands that read only some sections)."""
         defaults = Config.load()
-        return cls(**{name: given.get(name) or defaults.settings(name)
-                      for name in ("synthesize", "trajectory", "coarticulation")})
+        return cls({name: given.get(name) or defaults.settings(name) for name in cls.names()})
 
 
 @dataclass(frozen=True)
@@ -81,7 +138,7 @@ class SynthesisSummary:
     unseen: what the source has nothing of (a phone, or '/aa/ in sad' for a (phone, emotion)
         pair) -> what covered it.
     warnings: sentences for the user (e.g. the voice could not move the mouth).
-    voice: what the utterance's voice did to the mouth (:mod:`.voice`): ``articulation``,
+    voice: what the utterance's voice did to the mouth (:mod:`facesynth.domain.voice.fusion`): ``articulation``,
         ``loudness``, or ``off`` (no audio, or the step was off or could not run).
     cost, joins, device: the searches' path cost (Eq. 4), joins between nodes not captured one
         after the other, and where the search ran; None for the other methods.
@@ -135,16 +192,32 @@ class Synthesis:
 
 class Method(ABC):
     """One member of the family. Subclasses set the class attributes and :meth:`synthesize`;
-    fitted members also :meth:`fit`.
+    fitted members also :meth:`fit`; members that stream :meth:`live`.
 
-    ``source_kind``: the artifact kind the method reads (``motiondb``, or its model's kind);
-    ``fitted``: the source is a model fitted on a database (``facesynth fit-method``);
+    What a member declares, where it is defined (its registration's facts and this class):
+
+    - its settings section (fact ``settings``; :attr:`section`), which :class:`MethodSettings`,
+      ``--set`` and the commands running members read;
+    - its source: the motion database or its fitted artifact (facts ``fitted``, ``source_kind``);
+    - its evaluation source (:meth:`evaluation_source`), the settings ``evaluate`` runs it with
+      (:meth:`for_evaluation`) and its report rows: its name, and its :meth:`ablations`;
+    - its live behaviour: :meth:`live` (with the fact ``streams``), or :attr:`not_live`, the reason
+      it does not stream.
+
     ``takes_constraints``: accepts motion-node constraints; ``tunable``: ``facesynth tune`` can
     tune its weights."""
 
     name: ClassVar[str]
     takes_constraints: ClassVar[bool] = False
     tunable: ClassVar[bool] = False
+    #: Why ``facesynth stream`` cannot run the member (members without :meth:`live`).
+    not_live: ClassVar[str] = "it has no live form"
+
+    @property
+    def section(self) -> str:
+        """The settings section the member reads besides ``[synthesize]``'s output rate (its
+        registration's ``settings``; ``synthesize`` when it names none)."""
+        return str(METHODS.entry(self.name).facts.get("settings", "synthesize"))
 
     @property
     def summary(self) -> str:
@@ -179,9 +252,26 @@ class Method(ABC):
         model = given.get(self.name)
         return model if model is not None else self.fit(db, settings, where=where)[0]
 
+    def for_evaluation(self, settings: MethodSettings, evaluate: EvaluateSettings) -> MethodSettings:
+        """The settings ``facesynth evaluate`` runs the member with (``settings`` unless the member
+        takes some of ``[evaluate]``)."""
+        return settings
+
+    def ablations(self, db, settings: MethodSettings) -> dict[str, Callable[[Any], Any]]:
+        """Variants ``evaluate`` scores beside the member on ``db``: {report row: utterance ->
+        markers (T, M, 3) mm at the capture rate}; none by default."""
+        return {}
+
+    def live(self, source, settings: MethodSettings) -> LiveSource:
+        """The member's live form on ``source`` (:mod:`facesynth.domain.methods.live`), which
+        ``facesynth stream`` runs; a member that does not stream says why (:attr:`not_live`)."""
+        raise UsageError(f"the {self.name} method does not stream: {self.not_live}; use one of "
+                         f"{', '.join(live_names())}.")
+
     def fit_settings(self, settings: MethodSettings):
-        """The settings section a fitted model records as its ``config`` (fitted members)."""
-        return settings.synthesize
+        """The settings section a fitted model records as its ``config`` (fitted members): the
+        member's own."""
+        return settings.section(self.section)
 
     def prepare(self, source, settings: MethodSettings):
         """Work that depends only on the source and settings, done once for many utterances
@@ -222,30 +312,40 @@ def fitted_names() -> tuple[str, ...]:
     return tuple(e.name for e in METHODS.entries() if e.facts.get("fitted"))
 
 
+def live_names() -> tuple[str, ...]:
+    """The members ``facesynth stream`` runs (registered with ``streams=True``: a :meth:`Method.live`)."""
+    return tuple(e.name for e in METHODS.entries() if e.facts.get("streams"))
+
+
+def reader_of(kind: str) -> str | None:
+    """The fitted member whose model is an artifact of ``kind`` (its ``source_kind``), or None."""
+    return next((e.name for e in METHODS.entries() if e.facts.get("fitted") and e.facts.get("source_kind") == kind),
+                None)
+
+
 def get(name: str) -> Method:
     """The member called ``name``; a usage error naming the members for another name."""
     return METHODS.get(name)()
 
 
 # The members, in the order reports list them: name, "module:class", summary, and what the
-# commands need to know before importing them: ``fitted`` and its model's ``source_kind`` (made
-# by ``facesynth fit-method``), ``streams`` (``facesynth stream`` runs it live), and for
-# ``evaluate``: ``searches`` (a path of motion nodes, whose joins are scored), ``report_row`` (its
-# row, where earlier reports named it otherwise), ``ablation`` (the per-phone variant scored
-# beside it) and ``simplicity`` (the recommendation prefers the lowest among tied members).
+# commands need to know before importing them: ``settings`` (the settings section it reads),
+# ``fitted`` and its model's ``source_kind`` (made by ``facesynth fit-method``), ``streams``
+# (``facesynth stream`` runs its :meth:`Method.live`), and for ``evaluate``: ``searches`` (a path of
+# motion nodes, whose joins are scored) and ``simplicity`` (the recommendation prefers the lowest
+# among tied members). Its report row is its name.
 METHODS.register("dp", "facesynth.domain.methods.search:DpMethod",
                  "the paper's constrained DP search of the motion database (Algorithm 1, Eq. 4-10)",
-                 streams=True, searches=True, simplicity=4)
+                 settings="synthesize", streams=True, searches=True, simplicity=4)
 METHODS.register("greedy", "facesynth.domain.methods.search:GreedyMethod",
                  "Cao et al.'s greedy search of the same database with the same costs",
-                 streams=True, searches=True, simplicity=3)
+                 settings="synthesize", streams=True, searches=True, simplicity=3)
 METHODS.register("trajectory", "facesynth.domain.methods.trajectory:TrajectoryMethod",
                  "Huang et al.'s smooth key-shape path through per-(phone, emotion) Gaussians (Eq. 6-7)",
-                 fitted=True, source_kind="trajectory", streams=True, simplicity=2)
+                 settings="trajectory", fitted=True, source_kind="trajectory", streams=True, simplicity=2)
 METHODS.register("coarticulation", "facesynth.domain.methods.coarticulation:CoarticulationMethod",
                  "a Cohen-Massaro dominance model per (phone, emotion), fitted on the training takes",
-                 fitted=True, source_kind="coarticulation", report_row="dominance_emotion", ablation="dominance",
-                 simplicity=1)
+                 settings="coarticulation", fitted=True, source_kind="coarticulation", simplicity=1)
 METHODS.register("mean", "facesynth.domain.methods.mean:MeanMethod",
                  "the per-(phone, emotion) mean pose at phone centres, interpolated linearly",
-                 report_row="baseline_emotion", ablation="baseline", simplicity=0)
+                 settings="synthesize", simplicity=0)

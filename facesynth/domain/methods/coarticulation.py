@@ -25,19 +25,24 @@ of that phone's other emotions, else of every type, with the median magnitude an
 
 from __future__ import annotations
 
+import dataclasses
+from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from scipy.optimize import minimize
 
 from facesynth.base.blas import one_blas_thread
+from facesynth.base.config import EvaluateSettings
 from facesynth.base.errors import InputError
 from facesynth.base.phonemes import PAU
 from facesynth.domain.postprocess.concatenation import frame_ranges
+from facesynth.domain.speech.utterance import stand_in_phones
 from facesynth.model.coarticulation import CoarticulationModel
 
 from . import FitSummary, Method, MethodSettings, Synthesis, SynthesisSummary
-from .core import frame_motion
+from .steps import frame_motion
 
 #: Ridge on the targets, relative to the mean diagonal of the design's Gram matrix at the
 #: start: without it a type with a tiny magnitude gets a huge target that only fits the
@@ -237,13 +242,27 @@ class CoarticulationMethod(Method):
     """The fitted Cohen-Massaro model per (phone, emotion); source: a ``coarticulation`` artifact."""
 
     name = "coarticulation"
+    not_live = ("each frame depends on the dominance of phones after it, up to the end of the utterance "
+                "(a live form would need a look-ahead the model does not bound)")
 
     def read(self, path):
 
         return CoarticulationModel.read(path)
 
-    def fit_settings(self, settings: MethodSettings):
-        return settings.coarticulation
+    def for_evaluation(self, settings: MethodSettings, evaluate: EvaluateSettings) -> MethodSettings:
+        """Fitted with ``evaluate.dominance_iterations`` L-BFGS-B iterations."""
+        return settings.replace(coarticulation=dataclasses.replace(settings.coarticulation,
+                                                                   iterations=evaluate.dominance_iterations))
+
+    def ablations(self, db, settings: MethodSettings) -> dict[str, Callable[[Any], np.ndarray]]:
+        """``coarticulation_per_phone``: the same model per phone (every emotion pooled), fitted on
+        ``db``'s training takes."""
+        model = fit_dominance(training_sentences(db, by_emotion=False), db.fps, settings.coarticulation.iterations)
+
+        def markers(utt) -> np.ndarray:
+            total = frame_ranges(utt.starts, utt.ends, db.fps)[-1][1]
+            return db.model.reconstruct(model.predict(utt.phones, utt.starts, utt.ends, total, db.fps))
+        return {"coarticulation_per_phone": markers}
 
     def fit(self, db, settings: MethodSettings, *, keyshapes=None, where: str = "the database"):
         """The model of ``db``'s training takes (``coarticulation.iterations`` L-BFGS-B iterations);
@@ -267,7 +286,8 @@ class CoarticulationMethod(Method):
         saw ('/aa/ in sad', or '/zh/' for a phone it never saw in any emotion) and what covers each."""
         self.refuse_constraints(constraints)
         model = DominanceModel(tuple(source.labels), source.targets, source.magnitude, source.rate)
-        labels = emotion_labels(list(utt.phones), list(utt.emotions))
+        fitted = {label.split("|")[0] for label in source.labels}
+        labels = emotion_labels(stand_in_phones(utt, fitted, settings.synthesize.phone_match), list(utt.emotions))
         total = frame_ranges(utt.starts, utt.ends, source.fps)[-1][1]
         coeffs = model.predict(labels, utt.starts, utt.ends, total, source.fps)
         markers = source.pca.reconstruct(coeffs)

@@ -40,14 +40,17 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from facesynth.base.config import SynthesizeSettings, TrajectorySettings
 from facesynth.base.errors import InputError, UsageError
 from facesynth.base.phonemes import PAU, VISEME_GROUPS, viseme
-from facesynth.domain.postprocess.concatenation import downsample, frame_ranges
+from facesynth.domain.postprocess.concatenation import downsample, downsample_sources, frame_ranges
 from facesynth.domain.retarget.solve import nnls_weights
+from facesynth.domain.speech.utterance import stand_in_phones
 from facesynth.model.motion import Motion, Provenance, SearchPath
 from facesynth.model.trajectory import TrajectoryModel
 
 from . import FitSummary, Method, MethodSettings, NotEvaluable, Synthesis, SynthesisSummary
+from .live import LiveSource, LiveStepper, Track, wrong_source
 
 log = logging.getLogger(__name__)
 
@@ -377,10 +380,10 @@ def train_model(db, keyshapes, settings, where: str = "the database"):
     return model, samples
 
 
-def synthesize_motion(model, utt, settings, output_fps: float, where: str = "the utterance"):
+def synthesize_motion(model, utt, settings, output_fps: float, where: str = "the utterance", phone_match: str = "unseen"):
     """The ``motion`` artifact's contents (source ``trajectory``) for an utterance.
 
-    model : a TrajectoryModel; utt : a :class:`~facesynth.domain.search.inputs.Utterance`; settings :
+    model : a TrajectoryModel; utt : a :class:`~facesynth.domain.speech.utterance.Utterance`; settings :
     TrajectorySettings. The path is solved on its grid, interpolated to the model's capture rate
     (``markers_capture``), back-projected and down-sampled to ``output_fps`` as the DP's output is.
     Fields of the search that do not apply are filled so that every reader of a synthesized motion
@@ -390,8 +393,10 @@ def synthesize_motion(model, utt, settings, output_fps: float, where: str = "the
     ``cost_oc`` / ``cost_tc`` the data and smoothness terms of Eq. 6 over each phone's frames,
     ``cost_emp`` and ``cost_block`` zero, ``total_cost`` Eq. 6; provenance node, take and source frame
     -1 (no source frame), ``smoothed`` False. The head does not move (identity rotation, zero
-    translation): the model has no head motion. Returns (Motion, Path)."""
-    path = synthesize_path(model, list(utt.phones), list(utt.emotions), utt.starts, utt.ends,
+    translation): the model has no head motion. A phone of another language the model lacks takes
+    its phone nearest in features (``phone_match``: ``synthesize.phone_match``). Returns (Motion, Path)."""
+    path = synthesize_path(model, stand_in_phones(utt, set(model.phones), phone_match), list(utt.emotions),
+                           utt.starts, utt.ends,
                            smoothness=settings.smoothness, smoothness_fps=settings.smoothness_fps, fps=settings.fps,
                            duration_normalization=settings.duration_normalization, where=where)
     ranges = frame_ranges(utt.starts, utt.ends, model.fps)
@@ -435,14 +440,15 @@ class TrajectoryMethod(Method):
     def recorded_settings(self, settings: MethodSettings):
         return settings.trajectory
 
-    def fit_settings(self, settings: MethodSettings):
-        return settings.trajectory
+    def live(self, source, settings: MethodSettings) -> "TrajectoryLive":
+        """Eq. 7 solved on ``source`` (a TrajectoryModel) as phones arrive, the sent frames fixed."""
+        return TrajectoryLive(source, settings.synthesize, settings.trajectory)
 
     def evaluation_source(self, db, settings: MethodSettings, given, where: str):
         """The model given for this database (its fit needs key-shapes, which ``evaluate`` does not make)."""
         model = given.get(self.name)
         if model is None:
-            raise NotEvaluable("give a model fitted on this database with --trajectory (facesynth fit-method trajectory)")
+            raise NotEvaluable("give a model fitted on this database with --model (facesynth fit-method trajectory)")
         if model.fps != db.fps or list(model.marker_names) != list(db.marker_names):
             raise InputError("evaluate: the trajectory model's markers or capture rate are not the database's; "
                              "fit it on this database with `facesynth fit-method trajectory`.")
@@ -464,6 +470,76 @@ class TrajectoryMethod(Method):
         """The path of Eq. 6-7 (:func:`synthesize_motion`); the summary holds the Eq. 6 ``energy``,
         ``lam`` (lambda) and the ``fallbacks`` (unseen phones and the viseme class that covered each)."""
         self.refuse_constraints(constraints)
-        motion, path = synthesize_motion(source, utt, settings.trajectory, settings.synthesize.output_fps, where)
+        motion, path = synthesize_motion(source, utt, settings.trajectory, settings.synthesize.output_fps, where,
+                                         settings.synthesize.phone_match)
         return Synthesis(motion, SynthesisSummary(len(utt), len(motion.markers), energy=path.energy, lam=path.lam,
                                                   fallbacks=path.targets.fallbacks))
+
+
+class TrajectoryLive(LiveSource):
+    """The trajectory member live on its fitted model (``settings``: its smoothness and duration
+    normalization)."""
+
+    what = "the trajectory model"
+
+    def __init__(self, model, synth: SynthesizeSettings, settings: TrajectorySettings):
+        if not isinstance(model, TrajectoryModel):
+            raise wrong_source("trajectory", "a trajectory model", "`facesynth fit-method trajectory` in place of the "
+                                "database")
+        self.model, self.synth, self.settings = model, synth, settings
+        self.fps = float(synth.output_fps)
+        self.marker_names, self.reference = list(model.marker_names), np.asarray(model.reference, np.float32)
+        #: the model's capture rate, as batch synthesis solves it (``trajectory.fps`` 0); output
+        #: frames are down-sampled from it
+        self.grid_fps = float(model.fps)
+        self.emotions = sorted(set(model.keyshape_emotion) | set(model.pair_emotion))
+        self.rest_markers = self.reference.copy()  # all key-shape weights 0
+
+    def stepper(self) -> LiveStepper:
+        return _TrajectoryStepper(self)
+
+
+class _TrajectoryStepper(LiveStepper):
+    def __init__(self, live: TrajectoryLive):
+        self.live = live
+        self.solved: tuple[int, np.ndarray] | None = None  # the last capture frame a sent frame used, (index, (K,) weights)
+
+    def decide(self, track: Track, upto: int) -> list[int]:
+        return [-1] * (upto - len(track.committed))  # no nodes: a committed phone's frames may be sent
+
+    def final_limit(self, track: Track) -> int:
+        return int(round(track.ends[len(track.committed) - 1] * self.live.grid_fps))  # the solve reaches every frame
+
+    def render(self, track: Track, first: int, stop: int) -> np.ndarray:
+        """Eq. 7 solved over the frames after the last one a sent frame used, up to the end of the
+        known phones, that frame fixed (the frames between, used only by frames sent while a pause
+        waited, are solved again), down-sampled as batch synthesis down-samples."""
+        live = self.live
+        model, settings, grid = live.model, live.settings, live.grid_fps
+        ratio = grid / live.fps
+        begin, before = (0, None) if self.solved is None else (self.solved[0] + 1, self.solved[1])
+        k = max(0, int(np.searchsorted(np.array(track.starts), begin / grid + 1e-9, side="right")) - 1)
+        while k > 0 and int(round(track.starts[k] * grid)) > begin:
+            k -= 1
+        targets = frame_targets(model, track.phones[k:], track.emotions[k:],
+                                                  np.array(track.starts[k:]), np.array(track.ends[k:]), grid,
+                                                  "the stream")
+        ranges = targets.ranges  # on the capture grid: the targets start at frame ranges[0][0]
+        offset, known = ranges[0][0], ranges[-1][1]
+        # Eq. 6's D with T the frames known so far (the utterance's length is not known yet)
+        d = duration_weights(ranges, known, settings.duration_normalization)[offset:]
+        skip = begin - offset  # the targets' frames before the window
+        precisions = d[skip:, None] / targets.variances[skip:]
+        lam = effective_lambda(settings.smoothness, grid, settings.smoothness_fps)
+        x = solve(targets.means[skip:], precisions, lam, before)
+        # the capture frames batch's down-sampling takes output frames [first, stop) from
+        below, above, w = downsample_sources(np.arange(first, stop), ratio, known)
+        if below[0] < begin or above[-1] >= known:
+            raise AssertionError(f"solve window [{begin}, {known}) does not hold frames [{first}, {stop})")  # a bug
+        last = int(above[-1] if w[-1] > 0 else below[-1])  # the last capture frame a sent frame uses
+        capture = model.markers(x[below[0] - begin: last + 1 - begin])
+        lo, w3 = capture[below - below[0]], w[:, None, None]
+        markers = lo if not w.any() else (lo * (1 - w3) + capture[np.minimum(above, last) - below[0]] * w3
+                                          ).astype(capture.dtype)
+        self.solved = (last, x[last - begin])
+        return markers

@@ -161,7 +161,7 @@ def _nearest(points: np.ndarray, tree: cKDTree, scale: np.ndarray, rotation: np.
 
 def _similarities(source: np.ndarray, target: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Umeyama's scale and rotation of S point sets at once (as
-    :func:`facesynth.domain.head_motion.rigid.similarity_fit` fits one): (S,) scales and
+    :func:`facesynth.domain.geometry.rigid.similarity_fit` fits one): (S,) scales and
     (S, 3, 3) rotations best taking each (S, K, 3) ``source`` onto its ``target``."""
     a = source - source.mean(1)[:, None, :]
     b = target - target.mean(1)[:, None, :]

@@ -30,8 +30,8 @@ from scipy.sparse.csgraph import dijkstra
 
 from facesynth.base.config import DeformSettings
 from facesynth.base.errors import InputError
-from facesynth.domain.head_motion.rigid import similarity_fit
-from facesynth.domain.head_motion.rotations import apply
+from facesynth.domain.geometry.rigid import similarity_fit
+from facesynth.domain.geometry.rotations import apply
 
 
 def edge_graph(vertices: np.ndarray, faces: np.ndarray) -> sparse.csr_matrix:

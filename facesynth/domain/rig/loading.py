@@ -19,7 +19,7 @@ from pathlib import Path
 import numpy as np
 
 from facesynth.base.errors import InputError
-from facesynth.domain.head_motion.rigid import similarity_fit
+from facesynth.domain.geometry.rigid import similarity_fit
 from facesynth.domain.rig.face import gaze_from_rig_weights
 from facesynth.formats.gltf import read_morph_mesh
 from facesynth.formats.mesh import read_binding, read_mesh

@@ -13,6 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from facesynth.base.config import SynthesizeSettings
+from facesynth.base.ipa import festival_phone_ipa, match_level, phone_distance
 from facesynth.base.phonemes import PAU, viseme
 
 
@@ -106,8 +107,16 @@ def transition_matrix(dsc: np.ndarray, pgap: np.ndarray, vgap: np.ndarray, node_
 
 
 def step_costs(phones: list[str], emotions: list[str], node_phone: list[str], node_emotion: list[str],
-               constraints: dict[int, int], s: SynthesizeSettings) -> StepCosts:
-    """OC (Table II), EMP (Eq. 5) and B (Eq. 10) for every input step and node."""
+               constraints: dict[int, int], s: SynthesizeSettings, ipa: list[str] | None = None,
+               node_ipa: list[str] | None = None) -> StepCosts:
+    """OC (Table II), EMP (Eq. 5) and B (Eq. 10) for every input step and node.
+
+    ``phones``/``node_phone`` are Festival phones. ``ipa``: the IPA phone each step pronounces
+    (a line in another language: :attr:`~facesynth.domain.speech.utterance.Utterance.ipa`;
+    ``""`` or None: the step's Festival phone); ``node_ipa`` likewise for the nodes. Under
+    ``s.phone_match`` (see :func:`phone_match_costs`) such a phone, or every phone, is matched by
+    its distance in articulatory features; a step without IPA under ``viseme`` or ``unseen`` is
+    Table II exactly: the same phone 0, the same viseme alpha4 alpha5 PNT, else alpha5 PNT."""
     t_count, n = len(phones), len(node_phone)
     phone_codes, node_phone_code = _codes(node_phone)
     emotion_codes, node_emo = _codes(node_emotion)
@@ -115,9 +124,12 @@ def step_costs(phones: list[str], emotions: list[str], node_phone: list[str], no
     oc = np.empty((t_count, n), np.float32)
     emp = np.empty((t_count, n), np.float32)
     block = np.zeros((t_count, n), np.float32)
+    by_features = phone_match_costs(phones, ipa, (phone_codes, node_phone_code), node_ipa, node_vis, s)
     for t, (p, e) in enumerate(zip(phones, emotions)):
         if p == PAU:
             oc[t] = 0.0
+        elif t in by_features:
+            oc[t] = by_features[t]
         else:
             same_phone = node_phone_code == phone_codes.get(p, -1)
             same_viseme = node_vis == viseme(p)
@@ -127,6 +139,50 @@ def step_costs(phones: list[str], emotions: list[str], node_phone: list[str], no
         block[t] = s.huge_penalty
         block[t, node] = 0.0
     return StepCosts(oc, emp, block)
+
+
+def phone_match_costs(phones: list[str], ipa: list[str] | None, node_phone: tuple[dict[str, int], np.ndarray],
+                      node_ipa: list[str] | None, node_vis: np.ndarray, s: SynthesizeSettings) -> dict[int, np.ndarray]:
+    """The observation cost (N,) float64 of the steps matched by articulatory features
+    (``synthesize.phone_match``), by step; the other steps keep Table II on their Festival phones.
+    ``node_phone``: the nodes' Festival phones as :func:`_codes` gives them (each distinct
+    phone's code, the (N,) int64 codes); ``node_vis``: (N,) int64 their visemes.
+
+    A step's phone is its IPA (``ipa[t]``) or its Festival phone's; a node's likewise. Under
+    ``viseme`` no step is matched by features. Under ``unseen`` a step given in IPA is: when some
+    node's phone has its features (the database has the phone), those nodes cost 0, the others
+    Table II's levels by the viseme of the step's nearest English phone; when none has, each node
+    costs :func:`~facesynth.base.ipa.match_level` of how much further its phone is from the step's
+    than the nearest phone the database has (so the nearest phone's nodes cost 0, as the same
+    phone would, and the others rise with their extra distance), times alpha5 PNT. Under
+    ``features`` every spoken step costs the latter (0 extra distance for a phone the database
+    has: the distance itself)."""
+    if s.phone_match == "viseme" or (s.phone_match == "unseen" and not any(ipa or ())):
+        return {}
+    if node_ipa is None:  # English nodes: each distinct phone's IPA
+        distinct, node_code = [festival_phone_ipa(p) for p in node_phone[0]], node_phone[1]
+    else:
+        names = list(node_phone[0])
+        node_codes, node_code = _codes([q or festival_phone_ipa(names[c]) for q, c in zip(node_ipa, node_phone[1])])
+        distinct = list(node_codes)
+    unit = s.alpha5 * s.pnt
+    out: dict[int, np.ndarray] = {}
+    levels: dict[str, np.ndarray] = {}
+    for t, p in enumerate(phones):
+        q = (ipa[t] if ipa is not None else "") or ""
+        if p == PAU or (s.phone_match == "unseen" and not q):
+            continue
+        q = q or festival_phone_ipa(p)
+        if q not in levels:
+            d = np.array([phone_distance(q, name) for name in distinct], np.float64)
+            if s.phone_match == "unseen" and (d == 0.0).any():
+                level = np.where((d == 0.0)[node_code], 0.0, np.where(node_vis == viseme(p), s.alpha4, 1.0))
+            else:  # the phones nearest it stand in for the phone itself, the others dearer by how much further
+                level = np.array([match_level(x, s.alpha4, s.phone_match_scale) for x in d - d.min()],
+                                 np.float64)[node_code]
+            levels[q] = unit * level
+        out[t] = levels[q]
+    return out
 
 
 def _codes(names: list[str]) -> tuple[dict[str, int], np.ndarray]:

@@ -28,9 +28,10 @@ from facesynth.model.tables import Phones, Takes
 
 
 def build_nodes(takes: Takes, phones: Phones, fps: float) -> Nodes:
-    """One node per non-pause phone of the training takes, with links and triphone context."""
+    """One node per non-pause phone of the training takes, with links and triphone context (and
+    the IPA phone each pronounces when a training take is in another language than English)."""
     rows: dict[str, list] = {k: [] for k in ("phone", "viseme", "emotion", "take", "frame_start", "frame_count",
-                                             "start_s", "end_s", "prev_phone", "next_phone", "pre", "suc")}
+                                             "start_s", "end_s", "prev_phone", "next_phone", "pre", "suc", "ipa")}
     phone_emotion = phones.emotions(takes)
     for t in range(len(takes)):
         if takes.split[t] != "train":
@@ -49,6 +50,7 @@ def build_nodes(takes: Takes, phones: Phones, fps: float) -> Nodes:
                 a, b = max(0, n_frames - 2), n_frames
             k = len(rows["phone"])
             rows["phone"].append(phone)
+            rows["ipa"].append(phones.ipa[r] if phones.ipa is not None else "")
             rows["viseme"].append(viseme(phone))
             rows["emotion"].append(phone_emotion[r])
             rows["take"].append(t)
@@ -66,6 +68,8 @@ def build_nodes(takes: Takes, phones: Phones, fps: float) -> Nodes:
     if not rows["phone"]:
         raise InputError("no training phones: the manifest's split column marks no take 'train', every phone is a pause, "
                          "or the takes have no phone timing (give each an alignment or a transcript in the manifest).")
+    if phones.ipa is None or not any(rows["ipa"]):  # every training take English
+        rows["ipa"] = None  # type: ignore[assignment]
     ints = ("viseme", "take", "frame_start", "frame_count", "pre", "suc")
     return Nodes(**{k: (np.array(v, np.int64) if k in ints else np.array(v) if k in ("start_s", "end_s") else v)
                     for k, v in rows.items()})  # type: ignore[arg-type]

@@ -31,7 +31,7 @@ from facesynth.base.config import SynthesizeSettings
 from facesynth.base.jit import worth
 from facesynth.base.opencl import context, kernel, queue, use_opencl
 from facesynth.domain.postprocess.concatenation import end_slope_weights
-from facesynth.model.motiondb import MotionDatabase
+from facesynth.model.motiondb import MotionDatabase, TransitionFeatures
 
 from .costs import transition_matrix
 from .dp import PanelMatrix
@@ -49,87 +49,6 @@ LOCAL_SIZE = 16
 
 
 @dataclass
-class PairFeatures:
-    """Per-node data from which every pair's Table I terms are computed (N nodes, M markers).
-
-    first_pos, last_pos : (N, 3M) float32 mm, markers of the node's first / last frame.
-    first_vel, last_vel : (N, 3M) float32 mm/frame, velocity at the first / last frame.
-    dsc_out : (N, D) float32, x_i: second differences of (1 - s) warp(o_i) (PCA space, mm).
-    dsc_in : (N, D) float32, y_j: second differences of s * pre(o_j) (0 without predecessor).
-    dsc_scale : (N,) float32, 1/frame^3 (0 without predecessor).
-    viseme : (N,) int64 Table VI class; pre : (N,) int64 captured predecessor or -1.
-    pivot_distances : (N, PIVOTS) float32 each: mixed-norm distances (sum over markers of the
-        Euclidean distance) of last_pos, first_pos, last_vel, first_vel from the pivots of
-        :func:`pivot_distances` (mm, mm, mm/frame, mm/frame); computed when None.
-    """
-
-    first_pos: np.ndarray
-    last_pos: np.ndarray
-    first_vel: np.ndarray
-    last_vel: np.ndarray
-    dsc_out: np.ndarray
-    dsc_in: np.ndarray
-    dsc_scale: np.ndarray
-    viseme: np.ndarray
-    pre: np.ndarray
-    pivot_distances: tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray] | None = None
-
-    def __len__(self) -> int:
-        return len(self.pre)
-
-    @property
-    def pre_viseme(self) -> np.ndarray:
-        """(N,) int64: viseme of pre(o_j), -1 without predecessor."""
-        return np.where(self.pre >= 0, self.viseme[np.maximum(self.pre, 0)], -1)
-
-    def subset(self, keep: np.ndarray, pre: np.ndarray) -> "PairFeatures":
-        """The nodes ``keep`` with re-indexed links ``pre``; a node whose predecessor is gone
-        gets DSC features 0 (Table I rule 4 does not use DSC)."""
-        lost = pre < 0
-        dsc_in = self.dsc_in[keep].copy()
-        scale = self.dsc_scale[keep].copy()
-        dsc_in[lost] = 0.0
-        scale[lost] = 0.0
-        pivots = None if self.pivot_distances is None else tuple(d[keep] for d in self.pivot_distances)
-        return PairFeatures(self.first_pos[keep], self.last_pos[keep], self.first_vel[keep], self.last_vel[keep],
-                            self.dsc_out[keep], dsc_in, scale, self.viseme[keep], pre, pivots)
-
-    def layout(self) -> "DeviceLayout":
-        """The padded, lane-ordered copies the pair sums run on (made once)."""
-        if getattr(self, "_layout", None) is None:
-            self._layout = DeviceLayout.of(self)
-        return self._layout
-
-    def terms(self, rows: np.ndarray, cols: np.ndarray, paired: bool = False) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """DSC, PGap and VGap of every (rows[a], cols[b]), each (r, c) float32, or with ``paired``
-        of each (rows[k], cols[k]), each (K,) float32; summed in eight lanes and then across them
-        (the reference of ``kernels/pair_costs.cl``, bit-identical)."""
-        rows, cols = np.asarray(rows), np.asarray(cols)
-        if getattr(self, "_layout", None) is not None or len(rows) + len(cols) >= len(self) // 4:
-            lay = self.layout()
-            x, y = lay.x[rows], lay.y[cols]  # (r, Q, 8), (c, Q, 8)
-            last_pos, first_pos = lay.last_pos[rows], lay.first_pos[cols]
-            last_vel, first_vel = lay.last_vel[rows], lay.first_vel[cols]
-        else:  # a few nodes (backtracking, a pruned scan): lay out only those, the same values
-            x, y = _lanes8(self.dsc_out[rows]), _lanes8(self.dsc_in[cols])
-            last_pos, first_pos = _planes(self.last_pos[rows]), _planes(self.first_pos[cols])
-            last_vel, first_vel = _planes(self.last_vel[rows]), _planes(self.first_vel[cols])
-        scale = self.dsc_scale[cols]
-        if not paired:  # rows along the first axis, columns along the second
-            x, last_pos, last_vel = x[:, None], last_pos[:, None], last_vel[:, None]
-            y, first_pos, first_vel, scale = y[None], first_pos[None], first_vel[None], scale[None]
-        acc = np.zeros(np.broadcast_shapes(x.shape[:-2], y.shape[:-2]) + (8,), np.float32)
-        s = np.empty_like(acc)
-        for q in range(x.shape[-2]):
-            np.add(x[..., q, :], y[..., q, :], out=s)
-            s *= s
-            acc += s
-        dsc = _lanes(acc)
-        dsc *= scale
-        return dsc, _gap_lanes(last_pos, first_pos), _gap_lanes(last_vel, first_vel)
-
-
-@dataclass
 class DeviceLayout:
     """The features as the pair sums read them: x, y (N, Q, 8) float32 zero-padded to a
     multiple of 8; boundary states (N, 3, Mq, 8) float32, coordinate planes with marker k in
@@ -143,9 +62,47 @@ class DeviceLayout:
     first_vel: np.ndarray
 
     @classmethod
-    def of(cls, f: PairFeatures) -> "DeviceLayout":
+    def of(cls, f: TransitionFeatures) -> "DeviceLayout":
         return cls(_lanes8(f.dsc_out), _lanes8(f.dsc_in), _planes(f.last_pos), _planes(f.first_pos),
                    _planes(f.last_vel), _planes(f.first_vel))
+
+
+def layout(f: TransitionFeatures) -> DeviceLayout:
+    """The padded, lane-ordered copies of ``f`` the pair sums run on (made once, kept in
+    ``f.device_layout``)."""
+    if f.device_layout is None:
+        f.device_layout = DeviceLayout.of(f)
+    return f.device_layout  # type: ignore[return-value]
+
+
+def pair_terms(f: TransitionFeatures, rows: np.ndarray, cols: np.ndarray,
+               paired: bool = False) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """DSC, PGap and VGap of every (rows[a], cols[b]), each (r, c) float32, or with ``paired``
+    of each (rows[k], cols[k]), each (K,) float32; summed in eight lanes and then across them
+    (the reference of ``kernels/pair_costs.cl``, bit-identical)."""
+    rows, cols = np.asarray(rows), np.asarray(cols)
+    if f.device_layout is not None or len(rows) + len(cols) >= len(f) // 4:
+        lay = layout(f)
+        x, y = lay.x[rows], lay.y[cols]  # (r, Q, 8), (c, Q, 8)
+        last_pos, first_pos = lay.last_pos[rows], lay.first_pos[cols]
+        last_vel, first_vel = lay.last_vel[rows], lay.first_vel[cols]
+    else:  # a few nodes (backtracking, a pruned scan): lay out only those, the same values
+        x, y = _lanes8(f.dsc_out[rows]), _lanes8(f.dsc_in[cols])
+        last_pos, first_pos = _planes(f.last_pos[rows]), _planes(f.first_pos[cols])
+        last_vel, first_vel = _planes(f.last_vel[rows]), _planes(f.first_vel[cols])
+    scale = f.dsc_scale[cols]
+    if not paired:  # rows along the first axis, columns along the second
+        x, last_pos, last_vel = x[:, None], last_pos[:, None], last_vel[:, None]
+        y, first_pos, first_vel, scale = y[None], first_pos[None], first_vel[None], scale[None]
+    acc = np.zeros(np.broadcast_shapes(x.shape[:-2], y.shape[:-2]) + (8,), np.float32)
+    s = np.empty_like(acc)
+    for q in range(x.shape[-2]):
+        np.add(x[..., q, :], y[..., q, :], out=s)
+        s *= s
+        acc += s
+    dsc = _lanes(acc)
+    dsc *= scale
+    return dsc, _gap_lanes(last_pos, first_pos), _gap_lanes(last_vel, first_vel)
 
 
 def _lanes8(a: np.ndarray) -> np.ndarray:
@@ -213,7 +170,7 @@ def _pivots(a: np.ndarray, b: np.ndarray, count: int) -> np.ndarray:
     return np.array(picks, np.float32)
 
 
-def pivot_distances(f: PairFeatures) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+def pivot_distances(f: TransitionFeatures) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """Distances of every node's last/first positions and last/first velocities from
     :data:`PIVOTS` pivots each ((N, PIVOTS) float32; positions and velocities have their own
     pivots: the mean, then farthest-first picks). Only bounds use them, so any pivots are
@@ -313,7 +270,7 @@ class TransitionCosts:
     inequality of the mixed norm sum_k ||.||), likewise for velocities.
     """
 
-    f: PairFeatures
+    f: TransitionFeatures
     s: SynthesizeSettings
     opencl: bool = False
     _device: object = field(default=None, repr=False)
@@ -366,7 +323,7 @@ class TransitionCosts:
         step = max(1, (1 << 21) // max(len(cols), 1))
         for a in range(0, len(rows), step):
             r = rows[a : a + step]
-            out[a : a + step] = self._rules(*self.f.terms(r, cols), r[:, None], cols[None, :])
+            out[a : a + step] = self._rules(*pair_terms(self.f, r, cols), r[:, None], cols[None, :])
         return out
 
     def pairs_numpy(self, rows: np.ndarray, cols: np.ndarray) -> np.ndarray:
@@ -376,7 +333,7 @@ class TransitionCosts:
         step = 1 << 16
         for a in range(0, len(rows), step):
             r, c = rows[a : a + step], cols[a : a + step]
-            out[a : a + step] = self._rules(*self.f.terms(r, c, paired=True), r, c)
+            out[a : a + step] = self._rules(*pair_terms(self.f, r, c, paired=True), r, c)
         return out
 
     def _rules(self, dsc: np.ndarray, pgap: np.ndarray, vgap: np.ndarray, r: np.ndarray, c: np.ndarray) -> np.ndarray:
@@ -474,6 +431,11 @@ class TransitionCosts:
             suc[self.pre[has]] = np.nonzero(has)[0]
             self._suc_cache = suc
         return self._suc_cache
+
+    @property
+    def layout(self) -> DeviceLayout:
+        """The features' padded, lane-ordered copies (:func:`layout`, made once)."""
+        return layout(self.f)
 
     @property
     def device(self):
@@ -665,7 +627,7 @@ class PairTerms:
     with :func:`facesynth.domain.search.costs.transition_matrix`, the same float32 operations as
     :meth:`TransitionCosts.block_numpy`, so the matrix is bit-identical to the on-demand one."""
 
-    def __init__(self, f: PairFeatures, like: "PairTerms | None" = None):
+    def __init__(self, f: TransitionFeatures, like: "PairTerms | None" = None):
         """The tables of ``f``; with ``like`` (the tables of features that differ from ``f`` in
         the boundary velocities only) DSC and PGap are shared and only VGap is computed."""
         n = len(f)
@@ -675,7 +637,7 @@ class PairTerms:
         if like is not None:
             self.dsc, self.pgap = like.dsc, like.pgap  # type: ignore[has-type]
             self.vgap = np.empty((n, n), np.float32)
-            lay = f.layout()
+            lay = layout(f)
             for a in range(0, n, step):
                 rows = np.arange(a, min(n, a + step))
                 self.vgap[rows] = _gap_lanes(lay.last_vel[rows][:, None], lay.first_vel[cols][None])
@@ -683,7 +645,7 @@ class PairTerms:
         self.dsc, self.pgap, self.vgap = (np.empty((n, n), np.float32) for _ in range(3))
         for a in range(0, n, step):
             rows = np.arange(a, min(n, a + step))
-            self.dsc[rows], self.pgap[rows], self.vgap[rows] = f.terms(rows, cols)
+            self.dsc[rows], self.pgap[rows], self.vgap[rows] = pair_terms(f, rows, cols)
 
     @staticmethod
     def bytes_for(n: int) -> int:
@@ -726,11 +688,9 @@ class DenseCosts:
         return self.matrix
 
 
-def node_features(db: MotionDatabase) -> PairFeatures:
+def node_features(db: MotionDatabase) -> TransitionFeatures:
     """The per-node features ``db`` stores, with its nodes' visemes and captured predecessors."""
-    a = db.transition_arrays()
-    return PairFeatures(a.first_pos, a.last_pos, a.first_vel, a.last_vel, a.dsc_out, a.dsc_in, a.dsc_scale,
-                        db.nodes.viseme, db.nodes.pre, a.pivot_distances)
+    return db.transition_features()
 
 
 def transition_costs(db: MotionDatabase, settings: SynthesizeSettings, opencl: bool | None = None) -> TransitionCosts:

@@ -152,7 +152,7 @@ def _features(tc):
     cached = getattr(tc, "_numba_features", None)
     if cached is not None:
         return cached
-    lay = tc.f.layout()
+    lay = tc.layout
     s = tc.s
     c = np.ascontiguousarray
     feats = (c(lay.x), c(lay.y), c(tc.f.dsc_scale, np.float32), c(lay.last_pos), c(lay.first_pos), c(lay.last_vel),

@@ -18,12 +18,14 @@ import numpy as np
 
 from facesynth.base.config import SynthesizeSettings
 from facesynth.base.errors import UsageError
+from facesynth.base.ipa import festival_phone_ipa, nearest_phone, phone_distance
 from facesynth.base.jit import worth
 from facesynth.base.opencl import device_record, use_opencl
 from facesynth.base.phonemes import PAU, viseme
-from facesynth.domain.head_motion.rotations import follow_sources
+from facesynth.domain.geometry.rotations import follow_sources
 from facesynth.domain.postprocess.cao import blend_jumps, learned_cutoffs, lowpass
 from facesynth.domain.postprocess.concatenation import Concatenated, concatenate, downsample
+from facesynth.domain.speech.utterance import Utterance
 from facesynth.model.motion import Motion, Provenance, SearchPath
 from facesynth.model.motiondb import MotionDatabase, Nodes
 
@@ -31,18 +33,32 @@ from .costs import StepCosts, path_terms, step_costs
 from .dp import DpResult, OpenCLDp, dp_numpy
 from .dp_numba import dp_numba
 from .greedy import Greedy, anime_graph, cluster_graph, motion_features
-from .inputs import Utterance
 from .pairs import transition_costs
 from .pruned import dp_pruned
 
 
-def unseen_phones(utt: Utterance, db: MotionDatabase) -> dict[str, str]:
-    """Input phones with no node, and how the search will cover them."""
+def unseen_phones(utt: Utterance, db: MotionDatabase, phone_match: str = "viseme") -> dict[str, str]:
+    """Input phones with no node, and how the search will cover them. Under ``phone_match``
+    (``synthesize.phone_match``) ``unseen``, a phone pronounced in another language
+    (:attr:`Utterance.ipa`; under ``features`` every phone) is named by its IPA when no node's
+    phone has its features, covered by the nodes nearest it in features."""
     have = set(db.nodes.phone)
     have_vis = {viseme(p) for p in have}
-    out = {}
-    for p in dict.fromkeys(utt.phones):
-        if p == PAU or p in have:
+    node_ipa = set(db.nodes.ipa or ()) - {""}
+    if db.nodes.ipa is None or not all(db.nodes.ipa):
+        node_ipa |= {festival_phone_ipa(p) for p in have}
+    out: dict[str, str] = {}
+    for t, p in enumerate(utt.phones):
+        q = utt.ipa[t] if utt.ipa is not None else ""
+        if p == PAU:
+            continue
+        if phone_match != "viseme" and (q or phone_match == "features"):
+            ipa = q or festival_phone_ipa(p)
+            if (q or p) not in out and node_ipa and all(phone_distance(ipa, r) > 0 for r in node_ipa):
+                nearest = nearest_phone(ipa, sorted(node_ipa), ipa_of=str)
+                out[q or p] = f"the nodes nearest it in articulatory features (/{nearest}/ first; synthesize.phone_match)"
+            continue
+        if p in have or p in out:
             continue
         out[p] = "nodes of the same viseme (Table II rule 2)" if viseme(p) in have_vis else "any node (Table II rule 3)"
     return out
@@ -59,7 +75,7 @@ def greedy_search(db: MotionDatabase, tc, utt: Utterance, steps: StepCosts, sett
     terms = path_terms(result.path, tc, steps)
     cost = float(sum(v.astype(np.float64).sum() for v in terms.values()))
     graph_kind = f"{settings.greedy_clusters} clusters" if settings.greedy_clusters else "unclustered"
-    return DpResult(cost, result.path, np.zeros((0, 0), np.float32)), (f"greedy ({graph_kind})", "synthesize.search = greedy")
+    return DpResult(cost, result.path, np.zeros((0, 0), np.float32)), (f"greedy ({graph_kind})", "the greedy method")
 
 
 def search(tc, steps: StepCosts, settings: SynthesizeSettings, *, while_running: Callable[[], None] | None = None,
@@ -225,7 +241,8 @@ def synthesize(db: MotionDatabase, utt: Utterance, constraints: dict[int, int], 
         tc = transition_costs(db, settings, on_device)
         timings["transition_s"] = time.perf_counter() - t0
     t0 = time.perf_counter()
-    steps = step_costs(utt.phones, utt.emotions, db.nodes.phone, db.nodes.emotion, constraints, settings)
+    steps = step_costs(utt.phones, utt.emotions, db.nodes.phone, db.nodes.emotion, constraints, settings, utt.ipa,
+                       db.nodes.ipa)
     timings["steps_s"] = time.perf_counter() - t0
     t0 = time.perf_counter()
     if settings.search == "greedy":

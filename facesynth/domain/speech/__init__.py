@@ -1,1 +1,2 @@
-"""The voice: forced alignment and phone recognition of speech, its pitch and its loudness."""
+"""Speech: the utterance (phones, times, emotions), forced alignment and phone recognition in
+every language, pitch and loudness."""

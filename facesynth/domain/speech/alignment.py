@@ -117,7 +117,9 @@ class Alignment:
     ``voiced_pause_s``: the longest stretch of voice activity (s) inside a ``pau`` segment;
     ``warnings``: sentences for the user (a transcript that seems to lack words);
     ``recognized``: empty for a given text; for audio alone (:mod:`facesynth.domain.speech.recognition`) the
-    recognised words, or phones, that were aligned.
+    recognised words, or phones, that were aligned;
+    ``ipa``: for words given in another language (:func:`align_pronounced`), the IPA phone each
+    segment of ``phones`` pronounces (``""`` at pauses); None otherwise.
     """
 
     phones: list[Segment]
@@ -128,6 +130,7 @@ class Alignment:
     voiced_pause_at_s: float = 0.0
     warnings: list[str] = field(default_factory=list)
     recognized: str = ""
+    ipa: list[str] | None = None
 
     @property
     def mismatch(self) -> bool:
@@ -292,7 +295,27 @@ def align_pronounced(samples: np.ndarray, rate: int, words: list[Word], *, setti
     english = replace(settings, language="en", dictionary="")  # the words are already pronounced
     result = align_robust(samples, rate, " ".join(keys + list(marks or [])), settings=english, extra=own, where=where)
     result.words = [Segment(w.start, w.end, written.get(w.label, w.label)) for w in result.words]
+    result.ipa = pronounced_ipa(result.phones, words)
     return result
+
+
+def pronounced_ipa(phones: list[Segment], words: list[Word]) -> list[str] | None:
+    """The IPA phone of each of ``phones`` (aligned Festival segments, pauses ``pau``): the spoken
+    phones in order are the words' nearest English phones in order, so each takes its word's IPA
+    phone (``""`` at pauses). None when the spoken phones are not exactly the words' (then the
+    line is matched by its English phones alone)."""
+    spoken = [(p, q) for w in words for p, q in zip(w.phones, w.ipa)]
+    out: list[str] = []
+    k = 0
+    for seg in phones:
+        if seg.label == PAU:
+            out.append("")
+            continue
+        if k >= len(spoken) or spoken[k][0] != seg.label:
+            return None
+        out.append(spoken[k][1])
+        k += 1
+    return out if k == len(spoken) else None
 
 
 def voice_activity(audio: np.ndarray, settings: AlignSettings) -> np.ndarray:

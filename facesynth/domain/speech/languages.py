@@ -31,6 +31,7 @@ from pathlib import Path
 
 from facesynth.base.errors import InputError
 from facesynth.base.ipa import features, nearest_festival, split
+from facesynth.base.phonemes import PAU, to_festival
 from facesynth.base.registry import G2P_BACKENDS
 
 #: Non-speech in a transcript ([breath], <noise>, {cough}): not words (as in the English aligner).
@@ -249,3 +250,27 @@ G2P_BACKENDS.register("gruut", "facesynth.domain.speech.languages:gruut_words",
 G2P_BACKENDS.register("pinyin", "facesynth.domain.speech.languages:pinyin_words",
                       "Mandarin: pypinyin (MIT) and facesynth's pinyin-to-IPA table", languages=("cmn",),
                       installed=pinyin_installed, needs="languages")
+
+
+def ipa_phones(labels, where: str, times, language: str) -> tuple[list[str], list[str]]:
+    """Phone labels written in IPA (a take's alignment in ``language``, not English, as the Montreal
+    Forced Aligner's models of other languages write them), one phone per label: each label's
+    nearest English (Festival) phone and its IPA, ``pau`` and ``""`` for a silence or noise label
+    (``sil``, ``sp``, ``spn``, empty). ``times``: each label's start (s), named with ``where`` in
+    the error for a label :mod:`facesynth.base.ipa` does not describe."""
+    festival, ipa = [], []
+    for label, start in zip(labels, times):
+        text = unicodedata.normalize("NFC", label.strip())
+        if to_festival(text) == PAU:
+            festival.append(PAU)
+            ipa.append("")
+            continue
+        try:
+            features(text)
+        except KeyError:
+            raise InputError(f"{where}, {start:.3f} s: unknown IPA phone {label!r}; a take in language {language!r} "
+                             "labels its phones in IPA (one phone per interval, as facesynth.base.ipa describes them), "
+                             "or leave its alignment empty to align its transcript.") from None
+        festival.append(nearest_festival(text))
+        ipa.append(text)
+    return festival, ipa

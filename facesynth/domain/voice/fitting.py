@@ -1,13 +1,13 @@
 """The articulation model fitted on a performer's own capture with its audio (``facesynth
 fit-articulation``): what the voice says about this performer's mouth, for the fusion of
-:mod:`facesynth.domain.methods.voice` and for live frames.
+:mod:`facesynth.domain.voice.fusion` and for live frames.
 
 Per take of an ingested capture (its ``corpus``: the audio; its ``normalized`` frames: the
 markers in the head frame), at :data:`FIT_FPS` frames/s:
 
 * ``opening``: the inner-lip gap (mm) between ``synthesize.loudness_lip_markers``;
 * ``closure`` and ``closing``: the closure scores made of that opening
-  (:func:`facesynth.domain.speech.articulation.closure_target`: every closure, and the closings
+  (:func:`facesynth.domain.voice.articulation.closure_target`: every closure, and the closings
   within speech);
 * ``jawOpen``, ``mouthFunnel``, ``mouthPucker``: the rig's weights of the take solved onto the
   built-in rig (the direct facial solve, ``[solve]`` settings; its markers bound by the rig's own
@@ -15,7 +15,7 @@ markers in the head frame), at :data:`FIT_FPS` frames/s:
   bind gets the opening and closure targets alone (the fusion then leaves the rounding to the
   phones).
 
-The fit is :func:`facesynth.domain.speech.articulation.fit` with its defaults (10 offsets,
+The fit is :func:`facesynth.domain.voice.articulation.fit` with its defaults (10 offsets,
 -250..+20 ms; ridge; running normalization), deterministic. The packaged model is this fit on
 FACEGOOD's calibration takes, through ``benchmarks/voice_articulation.py`` (which reads FACEGOOD's
 own curves instead of a solve).
@@ -31,13 +31,13 @@ from facesynth.base.config import SolveSettings
 from facesynth.base.errors import InputError
 from facesynth.domain.retarget import facial_solve
 from facesynth.domain.rig.face import Rig
-from facesynth.domain.speech import articulation
 from facesynth.domain.speech.loudness import lip_gaps
+from facesynth.domain.voice import articulation
 from facesynth.model.articulation import ArticulationModel
 from facesynth.model.corpus import Corpus
 from facesynth.model.frames import NormalizedFrames
 
-#: The frame rate the targets are fitted at (the closure scores' rate, :data:`facesynth.domain.methods.voice.CLOSURE_FIT_FPS`).
+#: The frame rate the targets are fitted at (the closure scores' rate, :data:`facesynth.domain.voice.fusion.CLOSURE_FIT_FPS`).
 FIT_FPS = 30.0
 #: The rig shapes fitted as targets where the markers are bound (ARKit names of the built-in rig).
 RIG_TARGETS = ("jawOpen", "mouthFunnel", "mouthPucker")
@@ -47,7 +47,7 @@ MIN_FRAMES = 10
 
 @dataclass(frozen=True)
 class PerformerTakes:
-    """The takes a model is fitted on: ``takes`` (:class:`~facesynth.domain.speech.articulation.Take`
+    """The takes a model is fitted on: ``takes`` (:class:`~facesynth.domain.voice.articulation.Take`
     per take with audio), the ``names`` of the targets, the take ``names_used`` and ``seconds`` of
     audio, and whether the rig's curves are among the targets (``solved``)."""
 
@@ -111,7 +111,7 @@ def performer_takes(corpus: Corpus, normalized: NormalizedFrames, rig: Rig, solv
 def fit_performer(data: PerformerTakes, prior: ArticulationModel | None = None,
                   prior_strength: float = 0.0) -> tuple[ArticulationModel, dict[str, float]]:
     """The model fitted on ``data`` (adapted from the general model ``prior`` with
-    ``prior_strength``, :func:`facesynth.domain.speech.articulation.fit`), and per target its
+    ``prior_strength``, :func:`facesynth.domain.voice.articulation.fit`), and per target its
     Pearson r on the takes it was fitted on (in-sample: how much of each target the voice explains
     at best)."""
     model = articulation.fit(data.takes, data.names, prior=prior, prior_strength=prior_strength)

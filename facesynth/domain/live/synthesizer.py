@@ -1,7 +1,12 @@
 """The live core: phones arrive one by one (with their times), node decisions are taken with a
 bounded look-ahead, and frames are sent once, in order, never revised.
 
-Decisions (``stream.method``):
+Decisions (``stream.method``): the member of the method family streamed is asked for its live
+form (:meth:`facesynth.domain.methods.Method.live`, :mod:`facesynth.domain.methods.live`): a source
+shared by the streams and, per stream, a stepper that takes the member's decisions for the known
+phones, says how far the committed ones fix the frames and renders them. A member without a live
+form says why (its ``not_live``), and ``stream.method`` offers only the members registered with
+``streams=True``. Of the built-in members:
 
 - ``dp``: the exact DP of paper Algorithm 1 over a sliding window. When phones are known up to
   step K and steps ``[0, c)`` are committed, the DP runs on steps ``[c - 1, K]`` with step
@@ -57,20 +62,14 @@ import numpy as np
 from facesynth.base.config import SolveSettings, StreamSettings, SynthesizeSettings, TrajectorySettings
 from facesynth.base.errors import InputError
 from facesynth.base.phonemes import PAU
-from facesynth.domain.methods import trajectory as trajectory_method
-from facesynth.domain.methods.voice import articulation_model
-from facesynth.domain.postprocess.concatenation import downsample_sources
+from facesynth.domain import methods
+from facesynth.domain.methods import MethodSettings
+from facesynth.domain.methods.live import LiveStepper
 from facesynth.domain.retarget.solve import FacePriors, solve_curves
 from facesynth.domain.rig.face import load_face_rig
 from facesynth.domain.rig.loading import builtin_rig, marker_map
-from facesynth.domain.search.costs import step_costs
-from facesynth.domain.search.dp import dp_numpy
-from facesynth.domain.search.greedy import Greedy, anime_graph, cluster_graph, motion_features
-from facesynth.domain.search.inputs import Utterance
-from facesynth.domain.search.pairs import transition_costs
-from facesynth.domain.search.synthesis import render_path
+from facesynth.domain.voice.fusion import articulation_model
 from facesynth.model.motiondb import MotionDatabase
-from facesynth.model.trajectory import TrajectoryModel
 
 #: The rig shapes that speak: the voice sets jawOpen, mouthFunnel and mouthPucker, and an emotion's
 #: pose (:meth:`LiveModel.emotion_pose`) leaves these at 0, keeping its smile, frown and stretch.
@@ -94,70 +93,41 @@ class Frame:
 
 
 class LiveModel:
-    """What every stream of one source shares (read once): for ``dp`` and ``greedy`` the database,
-    the dense transition costs (Table I, (N, N) float32) and the greedy search; for
-    ``trajectory`` the trajectory model; and the facial solve's basis.
+    """What every stream of one source shares (read once): the member's live source
+    (:class:`~facesynth.domain.methods.live.LiveSource`: for ``dp`` and ``greedy`` the database and
+    its dense transition costs, for ``trajectory`` its model) and the facial solve's basis.
 
-    source : a read :class:`MotionDatabase`, or for ``stream.method = "trajectory"`` a read
-    :class:`~facesynth.model.trajectory.TrajectoryModel`; synth : the search and post-processing
-    settings (smoothing, output rate are taken from ``stream`` where it has them); solve : the
-    facial solve's; trajectory : the trajectory method's (its smoothness and duration
-    normalization; needed for ``trajectory``).
+    source : the member's source as read (a :class:`MotionDatabase`, or a fitted model);
+    settings : the :class:`~facesynth.domain.methods.MethodSettings` (or ``[synthesize]`` alone,
+    with ``trajectory`` the trajectory method's section; the packaged defaults for the rest): the
+    search and post-processing settings (the output rate is taken from ``stream``); solve : the
+    facial solve's.
     """
 
-    def __init__(self, source, synth: SynthesizeSettings, stream: StreamSettings, solve: SolveSettings,
-                 trajectory: TrajectorySettings | None = None):
-
+    def __init__(self, source, settings: SynthesizeSettings | MethodSettings, stream: StreamSettings,
+                 solve: SolveSettings, trajectory: TrajectorySettings | None = None):
+        if not isinstance(settings, MethodSettings):
+            given = {"trajectory": trajectory} if trajectory is not None else {}
+            settings = MethodSettings.packaged(synthesize=settings, **given)
+        synth = settings.synthesize
         self.stream = stream
         self.solve_settings = solve
         self.synth = replace(synth, output_fps=stream.fps, postprocess="deng", use_opencl=False)
-        self.greedy: Greedy | None = None
-        self.db: MotionDatabase | None = None  # None exactly for the trajectory method
-        self.trajectory: TrajectoryModel | None = None
-        if stream.method == "trajectory":
-            if not isinstance(source, TrajectoryModel):
-                raise InputError("stream.method 'trajectory' streams from a trajectory model: give the output of "
-                                 "`facesynth fit-method trajectory` in place of the database.")
-            if trajectory is None:
-                raise ValueError("the trajectory method needs its [trajectory] settings")  # a caller's bug
-            self.trajectory, self.trajectory_settings = source, trajectory
-            self.marker_names, self.reference = list(source.marker_names), np.asarray(source.reference, np.float32)
-            #: frames/s of the grid phones are placed on and the path is solved on: the model's capture
-            #: rate, as batch synthesis solves it (``trajectory.fps`` 0); output frames are down-sampled
-            self.grid_fps = float(source.fps)
-            self.emotions = sorted(set(source.keyshape_emotion) | set(source.pair_emotion))
-            #: (M, 3) mm: the rest pose (all key-shape weights 0)
-            self.rest_markers = self.reference.copy()
-        else:
-            if not isinstance(source, MotionDatabase):
-                raise InputError(f"stream.method {stream.method!r} streams from a motion database: give the output of "
-                                 "`facesynth build-db` (or `prune`).")
-            db = self.db = source
-            self.marker_names, self.reference = list(db.marker_names), db.reference
-            self.grid_fps = float(db.fps)  # the capture grid, where the path is rendered
-            self.tc = transition_costs(db, self.synth, False)
-            self.dense = np.ascontiguousarray(self.tc.dense(), np.float32)
-            self.emotions = sorted(set(db.nodes.emotion))
-            if stream.method == "greedy":
-
-                if self.synth.greedy_clusters > 0:
-                    features = motion_features(db.coeffs, db.nodes.frame_start, db.nodes.frame_count)
-                    graph = cluster_graph(db.nodes.phone, db.nodes.emotion, db.nodes.suc, features,
-                                          self.synth.greedy_clusters)
-                else:
-                    graph = anime_graph(db.nodes.phone, db.nodes.emotion, db.nodes.suc)
-                # the dense matrix, read-only: streams on several threads share it
-                self.greedy = Greedy(graph, db.nodes.viseme, db.nodes.emotion, self.dense, self.synth.alpha6 * self.synth.pnt)
-            rest_coeffs = db.model.project(db.reference[None])[0]
-            #: (M, 3) mm: the rest pose as the PCA model reconstructs it (where silences settle)
-            self.rest_markers = db.model.reconstruct(rest_coeffs[None])[0].astype(np.float32)
+        #: the member's live form (its decisions, the frames they fix, their rendering)
+        self.live = methods.get(stream.method).live(source, settings.replace(synthesize=self.synth))
+        self.db: MotionDatabase | None = self.live.db  # None for a member that streams from a fitted model
+        self.marker_names, self.reference = self.live.marker_names, self.live.reference
+        #: frames/s of the grid phones are placed on and the path is made on (the capture rate)
+        self.grid_fps = self.live.grid_fps
+        self.emotions = self.live.emotions
+        #: (M, 3) mm: where silences settle
+        self.rest_markers = self.live.rest_markers
         rig = self.rig = builtin_rig()
         self.face = load_face_rig()
-        self.marker_map = marker_map(rig, self.marker_names, self.reference,
-                                     "the trajectory model" if self.db is None else "the motion database")
+        self.marker_map = marker_map(rig, self.marker_names, self.reference, self.live.what)
         self.basis = rig.deltas[:, self.marker_map.vertices]
         #: the articulation model frames come from when the phones would be recognised
-        #: (``stream.voice = "articulation"``, :mod:`facesynth.domain.live.voice`), else None
+        #: (``stream.voice = "articulation"``, :mod:`facesynth.domain.live.voice_frames`), else None
         self.voice_model = articulation_model(synth.articulation_model) if stream.voice == "articulation" else None
         if self.voice_model is not None and "jawOpen" not in self.voice_model.target_names:
             raise InputError(f"synthesize.articulation_model {synth.articulation_model or '(packaged)'} predicts no "
@@ -192,18 +162,12 @@ class LiveModel:
         return out.astype(np.float32)
 
     def emotion_pose(self, emotion: str) -> np.ndarray:
-        """(E,) rig weights of ``emotion``'s pose without the speech: the mean of the database's
-        captured frames of that emotion (the rest pose for a trajectory model) solved onto the
+        """(E,) rig weights of ``emotion``'s pose without the speech: the source's pose of that
+        emotion (:meth:`~facesynth.domain.methods.live.LiveSource.emotion_markers`: the mean of a
+        database's captured frames of it, the rest pose for a trajectory model) solved onto the
         rig, its speech shapes (:data:`SPEECH_SHAPES`) at 0. Computed once per emotion."""
         if emotion not in self._poses:
-            markers = self.rest_markers
-            db = self.db
-            if db is not None:
-                frames = [np.arange(a, a + n) for a, n, e in zip(db.nodes.frame_start, db.nodes.frame_count,
-                                                                   db.nodes.emotion) if e == emotion]
-                if frames:
-                    mean = np.asarray(db.coeffs)[np.concatenate(frames)].mean(0)
-                    markers = db.model.reconstruct(mean[None])[0].astype(np.float32)
+            markers = self.live.emotion_markers(emotion)
             weights = self.solve(np.asarray(markers, np.float32)[None], None)[0]
             names = list(self.rig.shape_names)
             weights[[names.index(n) for n in SPEECH_SHAPES if n in names]] = 0.0
@@ -239,9 +203,10 @@ class LiveSynthesizer:
     _open_pause: int | None = None     # the step of a pause whose frames went out before its next phone was decided
     _pause_left: tuple[int, np.ndarray] | None = None  # the open pause's starting frame: (index, (M, 3) markers)
     _silence_growing: bool = False     # the last phone is a pause from :meth:`extend_silence`: its end is not known
-    _solved: tuple[int, np.ndarray] | None = None  # trajectory: the last capture frame a sent frame used, (index, (K,) weights)
+    stepper: LiveStepper = field(init=False)  # the member's decisions and frames for this stream
 
     def __post_init__(self):
+        self.stepper = self.model.live.stepper()
         self.set_emotion(self.emotion)
 
     def set_emotion(self, name: str) -> None:
@@ -309,47 +274,9 @@ class LiveSynthesizer:
     # -- decisions -------------------------------------------------------------------------
 
     def _decide(self, upto: int) -> None:
-        """Commit steps up to (not including) ``upto``."""
-        c = len(self.committed)
-        if upto <= c:
-            return
-        db = self.model.db
-        if db is None:  # the trajectory method: no nodes; a committed phone's frames may be sent
-            self.committed.extend([-1] * (upto - c))
-            return
-        first = max(0, c - 1)
-        phones = self.phones[first:]
-        emotions = self.emotions[first:]
-        if self.model.greedy is not None:
-            path = self._greedy(self.model.greedy, phones, emotions, self.committed[-1] if c else -1, pinned=c > 0)
-        else:
-            constraints = {0: self.committed[-1]} if c else {}
-            s = self.model.synth
-            steps = step_costs(phones, emotions, db.nodes.phone, db.nodes.emotion, constraints, s)
-            path = dp_numpy(self.model.dense, steps.total).path
-        offset = c - first
-        self.committed.extend(int(n) for n in path[offset : offset + upto - c])
-
-    def _greedy(self, greedy: Greedy, phones: list[str], emotions: list[str], before: int, pinned: bool) -> np.ndarray:
-        """Greedy tiling of ``phones`` by ``greedy`` (the first pinned to ``before`` when ``pinned``)."""
-        start = 1 if pinned else 0
-        nodes = np.full(len(phones), -1, np.int64)
-        if pinned:
-            nodes[0] = before
-        t = start
-        while t < len(phones):
-            if phones[t] == PAU:  # a pause's frames are regenerated: any node will do; keep the last
-                nodes[t] = before if before >= 0 else 0
-                t += 1
-                continue
-            end = t
-            while end < len(phones) and phones[end] != PAU:
-                end += 1
-            animes = greedy.tile(phones[t:end], emotions[t:end], before)
-            nodes[t:end] = greedy.g.node[animes]
-            before = int(nodes[end - 1])
-            t = end
-        return nodes
+        """Commit steps up to (not including) ``upto``: the member's decisions (its stepper's)."""
+        if upto > len(self.committed):
+            self.committed.extend(self.stepper.decide(self, upto))
 
     # -- frames ----------------------------------------------------------------------------
 
@@ -357,26 +284,18 @@ class LiveSynthesizer:
         """How many output frames depend on committed steps only.
 
         The capture frames of step t start at ``round(starts[t] * fps)`` (:func:`frame_ranges`).
-        With steps ``[0, c)`` committed: a committed pause at ``c - 1`` is interpolated toward the
-        next step's first frame, so frames stop at its first; otherwise frames stop at step c's
-        first, less the blend's reach (``smoothing_half_window`` frames) when step c is spoken or not
-        yet known (joins next to a pause are not smoothed). An output frame takes the capture frame
-        under it (and the next one when the rates are not in a whole ratio)."""
+        With steps ``[0, c)`` committed, the member's stepper says up to which capture frame they
+        fix the frames (:meth:`~facesynth.domain.methods.live.LiveStepper.final_limit`: for the
+        searches, a committed pause at ``c - 1`` waits for the next step's first frame, a spoken
+        step for the join blend's reach). An output frame takes the capture frame under it (and
+        the next one when the rates are not in a whole ratio)."""
         c = len(self.committed)
         if c == 0:
             return 0
         if self.phones_complete and c == len(self.phones):
             return self._total_frames()
-        grid, s = self.model.grid_fps, self.model.synth
-        if self.model.trajectory is not None:
-            limit = int(round(self.ends[c - 1] * grid))  # the solve reaches every frame: no join to wait for
-        elif self.phones[c - 1] == PAU:
-            limit = int(round(self.starts[c - 1] * grid))
-        else:
-            limit = int(round(self.ends[c - 1] * grid))
-            if c == len(self.phones) or self.phones[c] != PAU:
-                limit -= s.smoothing_half_window
-        ratio = grid / self.model.stream.fps
+        limit = self.stepper.final_limit(self)
+        ratio = self.model.grid_fps / self.model.stream.fps
         if abs(ratio - round(ratio)) > 1e-9:
             limit -= 1  # the down-sampling interpolates with the next capture frame
         return max(0, int(np.ceil(limit / ratio - 1e-9)))
@@ -484,71 +403,5 @@ class LiveSynthesizer:
         return int(np.floor((n_capture - 1) / ratio)) + 1 if n_capture > 0 else 0
 
     def _render(self, first: int, stop: int) -> np.ndarray:
-        """Markers (stop - first, M, 3) mm of output frames [first, stop), rendering the committed
-        steps from two spoken phones before the step of frame ``first``."""
-        db = self.model.db
-        if db is None:  # the trajectory method
-            return self._solve(first, stop)
-        fps = self.model.stream.fps
-        c = len(self.committed)
-        starts = np.array(self.starts[:c])
-        k = int(np.searchsorted(starts, first / fps, side="right")) - 1
-        k = max(0, k)
-        spoken = 0
-        while k > 0 and spoken < 2:
-            k -= 1
-            if self.phones[k] != PAU:
-                spoken += 1
-        while k > 0 and self.phones[k] == PAU:
-            k -= 1
-        # shift the window to start on a whole capture frame, so its frame grid is batch's grid
-        ratio = db.fps / fps
-        if abs(ratio - round(ratio)) < 1e-9:  # a whole number of output frames: the grids agree
-            shift_frames = int(round(self.starts[k] * db.fps)) // int(round(ratio)) * int(round(ratio))
-        else:
-            shift_frames = 0  # no common grid: render from the start
-        shift = shift_frames / db.fps
-        utt = Utterance(self.phones[k:c], np.array(self.starts[k:c]) - shift, np.array(self.ends[k:c]) - shift,
-                        self.emotions[k:c])
-        out = render_path(db, utt, np.array(self.committed[k:c]), self.model.synth).markers
-        base = int(round(shift * fps))
-        lo, hi = first - base, stop - base
-        if lo < 0 or hi > len(out):
-            raise AssertionError(f"render window [{lo}, {hi}) outside its {len(out)} frames")  # a bug, not input
-        return out[lo:hi].astype(np.float32)
-
-    def _solve(self, first: int, stop: int) -> np.ndarray:
-        """Trajectory: markers (stop - first, M, 3) mm of output frames [first, stop), from Eq. 7
-        solved on the model's capture grid over the frames after the last one a sent frame used,
-        up to the end of the known phones, that frame fixed (the frames between, used only by
-        frames sent while a pause waited, are solved again), and down-sampled as batch synthesis
-        down-samples. Keeps the last capture frame the sent frames use for the next solve."""
-        model, settings = self.model.trajectory, self.model.trajectory_settings
-        assert model is not None
-        grid = self.model.grid_fps
-        ratio = grid / self.model.stream.fps
-        begin, before = (0, None) if self._solved is None else (self._solved[0] + 1, self._solved[1])
-        k = max(0, int(np.searchsorted(np.array(self.starts), begin / grid + 1e-9, side="right")) - 1)
-        while k > 0 and int(round(self.starts[k] * grid)) > begin:
-            k -= 1
-        targets = trajectory_method.frame_targets(model, self.phones[k:], self.emotions[k:], np.array(self.starts[k:]),
-                                                  np.array(self.ends[k:]), grid, "the stream")
-        ranges = targets.ranges  # on the capture grid: the targets start at frame ranges[0][0]
-        offset, known = ranges[0][0], ranges[-1][1]
-        # Eq. 6's D with T the frames known so far (the utterance's length is not known yet)
-        d = trajectory_method.duration_weights(ranges, known, settings.duration_normalization)[offset:]
-        skip = begin - offset  # the targets' frames before the window
-        precisions = d[skip:, None] / targets.variances[skip:]
-        lam = trajectory_method.effective_lambda(settings.smoothness, grid, settings.smoothness_fps)
-        x = trajectory_method.solve(targets.means[skip:], precisions, lam, before)
-        # the capture frames batch's down-sampling takes output frames [first, stop) from
-        below, above, w = downsample_sources(np.arange(first, stop), ratio, known)
-        if below[0] < begin or above[-1] >= known:
-            raise AssertionError(f"solve window [{begin}, {known}) does not hold frames [{first}, {stop})")  # a bug
-        last = int(above[-1] if w[-1] > 0 else below[-1])  # the last capture frame a sent frame uses
-        capture = model.markers(x[below[0] - begin : last + 1 - begin])
-        lo, w3 = capture[below - below[0]], w[:, None, None]
-        markers = lo if not w.any() else (lo * (1 - w3) + capture[np.minimum(above, last) - below[0]] * w3
-                                          ).astype(capture.dtype)
-        self._solved = (last, x[last - begin])
-        return markers
+        """Markers (stop - first, M, 3) mm of output frames [first, stop), rendered by the member's stepper."""
+        return self.stepper.render(self, first, stop)

@@ -1,5 +1,5 @@
-"""What a synthesis request is made of: the new utterance's phones, its emotion spans and
-its motion-node constraints (formats documented in ``docs/inputs.md``)."""
+"""The new utterance a synthesis request speaks: its phones with their times and an emotion per
+phone, read from a phones file or given, with its emotion spans (formats in ``docs/inputs.md``)."""
 
 from __future__ import annotations
 
@@ -10,7 +10,8 @@ from pathlib import Path
 
 import numpy as np
 
-from facesynth.base.errors import InputError, SearchError
+from facesynth.base.errors import InputError
+from facesynth.base.ipa import festival_phone_ipa, nearest_phone
 from facesynth.base.phonemes import PAU, map_phones
 from facesynth.formats.labels import Segment, check_segments, read_phone_segments, read_text, read_textgrid
 
@@ -19,12 +20,18 @@ log = logging.getLogger(__name__)
 
 @dataclass
 class Utterance:
-    """The input phone sequence: Festival phones with times (s) and an emotion per phone."""
+    """The input phone sequence: Festival phones with times (s) and an emotion per phone.
+
+    ``ipa``: for a line in another language than English, the phone each step pronounces (IPA,
+    :mod:`facesynth.base.ipa`; ``""`` at pauses), of which ``phones`` holds the nearest English
+    phone; None for English (each step is its Festival phone). The search matches these phones
+    by their features (``synthesize.phone_match``)."""
 
     phones: list[str]
     starts: np.ndarray
     ends: np.ndarray
     emotions: list[str]
+    ipa: list[str] | None = None
 
     def __len__(self) -> int:
         return len(self.phones)
@@ -35,11 +42,13 @@ class Utterance:
         return int(hits[0]) if len(hits) else None
 
 
-def utterance(phones, starts, ends, emotions=None) -> Utterance:
-    """An Utterance with adjacent pauses merged: one silence is one step of the search."""
+def utterance(phones, starts, ends, emotions=None, ipa=None) -> Utterance:
+    """An Utterance with adjacent pauses merged: one silence is one step of the search. ``ipa``:
+    each phone's IPA (:attr:`Utterance.ipa`, same length as ``phones``) or None."""
     emotions = list(emotions) if emotions is not None else ["neutral"] * len(phones)
-    out_p, out_s, out_e, out_m = [], [], [], []
-    for p, a, b, m in zip(phones, starts, ends, emotions):
+    given = list(ipa) if ipa is not None else [""] * len(phones)
+    out_p, out_s, out_e, out_m, out_i = [], [], [], [], []
+    for p, a, b, m, q in zip(phones, starts, ends, emotions, given):
         if out_p and p == PAU and out_p[-1] == PAU:
             out_e[-1] = b
             continue
@@ -47,7 +56,8 @@ def utterance(phones, starts, ends, emotions=None) -> Utterance:
         out_s.append(a)
         out_e.append(b)
         out_m.append(m)
-    return Utterance(out_p, np.array(out_s, float), np.array(out_e, float), out_m)
+        out_i.append("" if p == PAU else q)
+    return Utterance(out_p, np.array(out_s, float), np.array(out_e, float), out_m, out_i if ipa is not None else None)
 
 
 def read_utterance(phones_path: Path, tier_names=("phones",)) -> Utterance:
@@ -161,68 +171,19 @@ def set_emotions(utt: Utterance, spans: list[tuple[float, float, str, str]], emo
             utt.emotions[k] = name
 
 
-def read_constraints(path: Path, utt: Utterance, node_phone: list[str]) -> dict[int, int]:
-    """Hard motion-node constraints: ``INDEX NODE`` (0-based phone index) or ``TIMEs NODE``
-    (a time in seconds with an ``s`` suffix) per line. Returns {phone index: node id}."""
-    path = Path(path)
-    if not path.exists():
-        raise InputError(f"{path}: constraints file not found; check the --constraints path.")
-    out: dict[int, int] = {}
-    for n, line in enumerate(read_text(path, "constraints file").splitlines(), 1):
-        line = line.split("#", 1)[0].strip()
-        if not line:
-            continue
-        where = f"{path}, line {n}"
-        parts = line.split()
-        if len(parts) != 2:
-            raise InputError(f"{where}: expected 'INDEX NODE' or 'TIMEs NODE', got {line!r}.")
-        at, node_text = parts
-        try:
-            node = int(node_text)
-            if at.endswith("s"):
-                time_s = float(at[:-1])
-                index = utt.index_at(time_s)
-                if index is None:
-                    raise SearchError(f"{where}: time {time_s:.3f} s is outside the utterance (0 to {utt.ends[-1]:.3f} s).")
-                place = f"the phone at {time_s:.3f} s (index {index})"
-            else:
-                index = int(at)
-                if not 0 <= index < len(utt):
-                    raise SearchError(f"{where}: phone index {index} is out of range (0 to {len(utt) - 1}).")
-                place = f"phone {index}"
-        except ValueError:
-            raise InputError(f"{where}: expected 'INDEX NODE' or 'TIMEs NODE' with numbers, got {line!r}.") from None
-        _add_constraint(out, index, node, place, where, utt, node_phone)
+def stand_in_phones(utt: Utterance, have, phone_match: str = "unseen") -> list[str]:
+    """The phone each step of ``utt`` is looked up by in a fitted model or database whose
+    phones (Festival names) are ``have``: its own phone when ``have`` holds it; else, for a step
+    pronounced in another language (:attr:`Utterance.ipa`), or for every step under
+    ``phone_match`` ``features``, the phone of ``have`` nearest its IPA in articulatory features
+    (:func:`facesynth.base.ipa.nearest_phone`; ``synthesize.phone_match`` ``viseme`` never);
+    else its own phone (the model's own fallback, by viseme, covers it). Pauses stay ``pau``."""
+    known = sorted(set(have) - {PAU})
+    out = []
+    for t, p in enumerate(utt.phones):
+        q = utt.ipa[t] if utt.ipa is not None else ""
+        if p == PAU or p in have or not known or phone_match == "viseme" or (not q and phone_match != "features"):
+            out.append(p)
+        else:
+            out.append(nearest_phone(q or festival_phone_ipa(p), known))
     return out
-
-
-def given_constraints(constraints, utt: Utterance, node_phone: list[str],
-                      where: str = "the constraints given") -> dict[int, int]:
-    """Hard motion-node constraints given as {phone index: node id} (0-based phone index of
-    ``utt``), checked as a constraints file's lines are. Returns a new {phone index: node id}."""
-    out: dict[int, int] = {}
-    for at, node in dict(constraints).items():
-        here = f"{where}, phone {at!r}"
-        if isinstance(at, bool) or not isinstance(at, (int, np.integer)) or isinstance(node, bool) \
-                or not isinstance(node, (int, np.integer)):
-            raise InputError(f"{here}: expected a phone index and a node id, both whole numbers, got {at!r}: {node!r}.")
-        index, node = int(at), int(node)
-        if not 0 <= index < len(utt):
-            raise SearchError(f"{here}: phone index {index} is out of range (0 to {len(utt) - 1}).")
-        _add_constraint(out, index, node, f"phone {index}", here, utt, node_phone)
-    return out
-
-
-def _add_constraint(out: dict[int, int], index: int, node: int, place: str, where: str, utt: Utterance,
-                    node_phone: list[str]) -> None:
-    """Add ``index -> node`` to ``out`` after the checks every constraint passes (the node
-    exists, is of the phone's phone, the phone is spoken and not constrained already)."""
-    if not 0 <= node < len(node_phone):
-        raise SearchError(f"{where}: node {node} does not exist (the database has nodes 0 to {len(node_phone) - 1}).")
-    if utt.phones[index] == PAU:
-        raise SearchError(f"{where}: {place} is a pause, whose frames are interpolated; constrain a spoken phone.")
-    if node_phone[node] != utt.phones[index]:
-        raise SearchError(f"{where}: node {node} is /{node_phone[node]}/ but {place} is /{utt.phones[index]}/; pick a node of that phone (see facesynth suggest).")
-    if index in out:
-        raise SearchError(f"{where}: {place} is already constrained to node {out[index]}; keep one constraint per phone.")
-    out[index] = node

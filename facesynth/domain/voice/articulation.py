@@ -27,6 +27,12 @@ audio up to ``k * 10 ms + 16 ms``. The model samples these frames at fixed offse
 output frame time (:func:`context`), so the look-ahead of a prediction is ``max(offsets) + 16 ms``
 (plus the pooling of :func:`context`), independent of the output frame rate.
 
+Two alternatives of the mel bands were measured on held-out speakers and are not what a model
+reads (``docs/real-speech.md``: neither beat these): ``envelope`` (the bands of the cepstrally
+liftered log envelope, :func:`envelope_of`: no pitch harmonics) and ``warp`` (the bands and
+formant proxies read at a vocal-tract warp, :func:`warped_filterbank`,
+:mod:`facesynth.domain.voice.tract`), parameters of :func:`frame_features`.
+
 **Normalization** (:class:`Normalizer`): a speaker's voice and a microphone shift every log band by
 a constant (gain) and colour it (a filter); the mouth does not care. Each feature is standardized
 by a mean and standard deviation that are the training set's (``global``), the whole utterance's
@@ -144,9 +150,53 @@ def frame_count(n_samples: int) -> int:
     return int(np.ceil(n_samples / HOP)) if n_samples > 0 else 0
 
 
-def features_of_frames(frames: np.ndarray) -> np.ndarray:
+#: Quefrency (samples at :data:`RATE`) below which the cepstrum is kept whole by :func:`envelope_of`,
+#: and above which it is gone (a half-Hann taper between): 1.25..1.9 ms, below the pitch period of
+#: any voice up to 530 Hz, so the log envelope keeps the formants and loses the harmonics.
+LIFTER_PASS, LIFTER_STOP = 20, 30
+_LIFTER = np.zeros(NFFT // 2 + 1, np.float32)
+_LIFTER[:LIFTER_PASS] = 1.0
+_LIFTER[LIFTER_PASS:LIFTER_STOP] = 0.5 + 0.5 * np.cos(np.pi * (np.arange(LIFTER_STOP - LIFTER_PASS) + 1)
+                                                      / (LIFTER_STOP - LIFTER_PASS + 1))
+
+
+def envelope_of(log_power: np.ndarray) -> np.ndarray:
+    """(K, NFFT // 2 + 1) float32 log spectral envelope of log power spectra (K, NFFT // 2 + 1):
+    the real cepstrum liftered to quefrencies below :data:`LIFTER_STOP` samples (the vocal tract's
+    smooth envelope; the pitch's harmonics, at the pitch period and beyond, are removed)."""
+    import scipy.fft
+
+    cep = scipy.fft.irfft(log_power, NFFT, axis=1)[:, :NFFT // 2 + 1]
+    cep *= _LIFTER
+    # the cepstrum is even: its spectrum is the cosine series of its first half (a DCT-I)
+    return scipy.fft.dct(cep, type=1, axis=1).astype(np.float32)
+
+
+def warped_filterbank(warp: float) -> np.ndarray:
+    """(NFFT // 2 + 1, N_MELS) float32 mel filters read at ``warp`` times their frequencies below
+    5.6 kHz / max(warp, 1) and linearly up to :data:`FMAX` above (piecewise-linear vocal-tract-length
+    warping): a voice whose formants are ``warp`` times a reference's reads in each band what the
+    reference reads in it. ``warp`` 1 is the plain filterbank."""
+    if abs(warp - 1.0) < 1e-9:
+        return _MEL_T
+    cut = 5600.0 / max(warp, 1.0)
+    edges = _mel_to_hz(np.linspace(_hz_to_mel(FMIN), _hz_to_mel(FMAX), N_MELS + 2))
+    top = FMAX
+    warped = np.where(edges <= cut, warp * edges,
+                      warp * cut + (edges - cut) * (top - warp * cut) / (top - cut))
+    lo, mid, hi = warped[:-2, None], warped[1:-1, None], warped[2:, None]
+    up = (_FREQS[None] - lo) / (mid - lo)
+    down = (hi - _FREQS[None]) / (hi - mid)
+    fb = np.clip(np.minimum(up, down), 0.0, None)
+    return (fb / np.maximum(fb.sum(1, keepdims=True), 1e-12)).T.astype(np.float32)
+
+
+def features_of_frames(frames: np.ndarray, envelope: bool = False, warp: float = 1.0) -> np.ndarray:
     """(K, N_FEATURES) float32 features of (K, WIN) raw (unwindowed) sample frames at :data:`RATE`
-    (the columns of :data:`FEATURE_NAMES`). Float32 throughout (the features are far coarser)."""
+    (the columns of :data:`FEATURE_NAMES`). Float32 throughout (the features are far coarser).
+    ``envelope``: the mel bands (and the tilt) read the cepstrally liftered log envelope
+    (:func:`envelope_of`: no pitch harmonics) instead of the log power; ``warp``: the bands and the
+    formant proxies read at ``warp`` times their frequencies (:func:`warped_filterbank`)."""
     import scipy.fft  # scipy where used: `synthesize` starts without it
 
     k = len(frames)
@@ -159,7 +209,11 @@ def features_of_frames(frames: np.ndarray) -> np.ndarray:
     power = spec.real * spec.real
     power += spec.imag * spec.imag
     power *= 1.0 / _WIN_POWER
-    mel = np.log(power @ _MEL_T + POWER_FLOOR)
+    fb = warped_filterbank(warp)
+    if envelope:
+        mel = envelope_of(np.log(power + POWER_FLOOR)) @ fb
+    else:
+        mel = np.log(power @ fb + POWER_FLOOR)
     out[:, :N_MELS] = mel
     out[:, I_LOG_RMS] = 0.5 * np.log(np.einsum("ij,ij->i", x, x) / WIN + POWER_FLOOR)
     ac = scipy.fft.irfft(power[:, :_AC_N // 2 + 1], _AC_N, axis=1)[:, :_LAG_MAX2 + 1]
@@ -168,7 +222,7 @@ def features_of_frames(frames: np.ndarray) -> np.ndarray:
     signs = np.signbit(x)
     out[:, I_VOICING + 1] = np.count_nonzero(signs[:, 1:] != signs[:, :-1], axis=1) / (WIN - 1)
     out[:, I_VOICING + 2] = mel @ _TILT
-    b = power @ _BANDS
+    b = power @ (_BANDS if abs(warp - 1.0) < 1e-9 else _bands(warp))
     out[:, I_VOICING + 3] = b[:, 1] / (b[:, 0] + POWER_FLOOR)  # 0 in digital silence
     out[:, I_VOICING + 4] = b[:, 3] / (b[:, 2] + POWER_FLOOR)
     b += POWER_FLOOR
@@ -177,9 +231,19 @@ def features_of_frames(frames: np.ndarray) -> np.ndarray:
     return out
 
 
-def frame_features(samples: np.ndarray, rate: int) -> np.ndarray:
+def _bands(warp: float) -> np.ndarray:
+    """:data:`_BANDS` with the formant and low/high bands at ``warp`` times their frequencies (kHz
+    read back in the reference's scale)."""
+    f = _FREQS / warp
+    f1, f2 = (f >= 200) & (f < 900), (f >= 900) & (f < 2600)
+    return np.stack([f1, f1 * f / 1000.0, f2, f2 * f / 1000.0, f >= 3500, f < 1000, np.ones_like(f)],
+                    1).astype(np.float32)
+
+
+def frame_features(samples: np.ndarray, rate: int, envelope: bool = False, warp: float = 1.0) -> np.ndarray:
     """(K, N_FEATURES) float32 raw features of mono ``samples`` (n,) at ``rate`` Hz: analysis frame
-    k centred at k * FRAME_S seconds, K = ceil(duration / FRAME_S)."""
+    k centred at k * FRAME_S seconds, K = ceil(duration / FRAME_S) (``envelope``, ``warp``: as
+    :func:`features_of_frames`)."""
     x = to_analysis_rate(samples, rate)
     k = frame_count(len(x))
     padded = np.concatenate([np.zeros(WIN // 2, np.float32), x.astype(np.float32), np.zeros(WIN, np.float32)])
@@ -187,7 +251,7 @@ def frame_features(samples: np.ndarray, rate: int) -> np.ndarray:
     out = np.empty((k, N_FEATURES), np.float32)
     block = 4096  # bounded memory: (block, NFFT) complex64 at a time, 17 MB
     for a in range(0, k, block):
-        out[a:a + block] = features_of_frames(frames[a:a + block])
+        out[a:a + block] = features_of_frames(frames[a:a + block], envelope, warp)
     return out
 
 

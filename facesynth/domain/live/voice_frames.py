@@ -2,14 +2,14 @@
 
 With ``stream.voice = "articulation"`` a stream whose phones would be recognised from its audio
 (``"phones": "recognize"``, the default) sends each output frame as soon as the audio up to its
-time plus the articulation model's look-ahead (:func:`facesynth.domain.speech.articulation.model_look_ahead_s`,
+time plus the articulation model's look-ahead (:func:`facesynth.domain.voice.articulation.model_look_ahead_s`,
 46 ms for the packaged model) has arrived. The frame is decided then and never revised:
 
 * the mouth is the voice's: the model's jawOpen (with ``stream.voice_jaw = "opening"``, the
   default, its predicted mouth opening carried into the jaw's units by the two targets' training
   means and standard deviations: on voices the model was not fitted on the opening is the better
   read, ``benchmarks/voice_speakers.py``), mouthFunnel and mouthPucker predictions
-  (:class:`facesynth.domain.speech.articulation.StreamingPredictor`, frame by frame from 20 ms
+  (:class:`facesynth.domain.voice.articulation.StreamingPredictor`, frame by frame from 20 ms
   chunks, equal to the batch predictions) set those rig shapes, the jaw closing where the model's
   closure score rises above ``synthesize.voice_closure_threshold``;
 * the rest of the face is the emotion's pose: the mean of the database's captured frames of the
@@ -32,12 +32,12 @@ from collections import deque
 import numpy as np
 
 from facesynth.base.config import SynthesizeSettings
-from facesynth.domain.methods.voice import FLOOR_RISE_PER_S, SNR_FULL, SNR_NONE
-from facesynth.domain.speech.articulation import StreamingPredictor, model_look_ahead_s
+from facesynth.domain.voice.articulation import StreamingPredictor, model_look_ahead_s
+from facesynth.domain.voice.fusion import FLOOR_RISE_PER_S, SNR_FULL, SNR_NONE
 from facesynth.model.articulation import ArticulationModel
 
-from .core import Frame
 from .phones import SAMPLE_RATE
+from .synthesizer import Frame
 
 #: The rig shapes the voice sets, by the articulation model's target of the same name.
 VOICE_SHAPES = ("jawOpen", "mouthFunnel", "mouthPucker")
@@ -51,7 +51,7 @@ CONFIDENCE_BACK_S = 0.25
 
 
 class VoiceFrames:
-    """One stream's frames from its voice. ``model``: the stream's :class:`~facesynth.domain.live.core.LiveModel`
+    """One stream's frames from its voice. ``model``: the stream's :class:`~facesynth.domain.live.synthesizer.LiveModel`
     (its ``voice_model``, the rig and the emotions' poses); :meth:`push` takes mono float samples at
     16 kHz and returns the frames the audio so far decides; :meth:`finish` the rest."""
 
@@ -76,7 +76,7 @@ class VoiceFrames:
         self.sent = 0
         self.samples = 0
         self.look_ahead_s = model_look_ahead_s(voice_model)
-        # the voice's confidence, as batch fusion's (:func:`facesynth.domain.methods.voice.confidence`):
+        # the voice's confidence, as batch fusion's (:func:`facesynth.domain.voice.fusion.confidence`):
         # each 10 ms's log RMS above a running noise floor; the recent values are kept
         self._pending = np.zeros(0, np.float32)
         self._floor: float | None = None

@@ -36,28 +36,29 @@ from facesynth.base.config import AlignSettings, IngestSettings, settings_json
 from facesynth.base.errors import InputError, UsageError
 from facesynth.base.limits import require_memory
 from facesynth.domain.postprocess.concatenation import downsample, frame_ranges
-from facesynth.domain.search.inputs import (
+from facesynth.domain.search.constraints import read_constraints
+from facesynth.domain.speech.alignment import Alignment
+from facesynth.domain.speech.recognition import align_or_recognize
+from facesynth.domain.speech.utterance import (
     Utterance,
     apply_emotions,
     emotion_name,
     given_spans,
-    read_constraints,
     set_emotions,
     utterance,
 )
-from facesynth.domain.search.inputs import read_utterance as read_phone_file
-from facesynth.domain.speech.alignment import Alignment
-from facesynth.domain.speech.recognition import align_or_recognize
+from facesynth.domain.speech.utterance import read_utterance as read_phone_file
+from facesynth.domain.voice import fusion
 from facesynth.formats.audio import read_audio
 from facesynth.model.head_motion import HeadMotion
 from facesynth.model.motion import Motion, Provenance, SearchPath
 from facesynth.model.motiondb import MotionDatabase
 
-from . import Method, MethodSettings, Synthesis, SynthesisSummary, voice
+from . import Method, MethodSettings, Synthesis, SynthesisSummary
 
 log = logging.getLogger(__name__)
 
-#: The ``[synthesize]`` settings of the voice step (:mod:`.voice`), recorded by a motion made with
+#: The ``[synthesize]`` settings of the voice step (:mod:`facesynth.domain.voice.fusion`), recorded by a motion made with
 #: the audio by a method whose own section is another.
 VOICE_SETTINGS = ("loudness_weight", "loudness_smoothing_s", "loudness_lip_markers", "pinned_phones",
                   "voice_recognized", "voice_given", "articulation_model", "voice_weight", "voice_opening_map",
@@ -144,7 +145,7 @@ def read_utterance(ingest: IngestSettings, *, phones_path: Path | None = None, a
         for warning in warnings:  # the one mismatch policy: a warning, never a failure
             log.warning(warning)
         segs = aligned.phones
-        utt = utterance([s.label for s in segs], [s.start for s in segs], [s.end for s in segs])
+        utt = utterance([s.label for s in segs], [s.start for s in segs], [s.end for s in segs], ipa=aligned.ipa)
     elif text is not None:
         raise UsageError("--text says what --audio says; give --audio too (or the phones with --phonemes).")
     else:
@@ -174,7 +175,7 @@ def synthesize(method: Method, source, utt: Utterance, settings: MethodSettings,
     """``method``'s motion of ``utt`` from ``source``, after the memory check (its message names
     ``source_where``; the method's own messages name the utterance, ``where``). With the
     utterance's ``audio`` ((n,) mono samples, rate Hz), the mouth then takes what the voice says
-    (:mod:`facesynth.domain.methods.voice`: its articulation or its loudness, by whether the
+    (:mod:`facesynth.domain.voice.fusion`: its articulation or its loudness, by whether the
     phones were ``recognized`` from that audio); a motion without the lip markers is left as it
     is, and the summary's ``warnings`` say so."""
     method.refuse_constraints(constraints)
@@ -182,7 +183,7 @@ def synthesize(method: Method, source, utt: Utterance, settings: MethodSettings,
     result = method.synthesize(source, utt, settings, constraints, prepared=prepared, where=where)
     if audio is not None:
         t0 = time.perf_counter()
-        result.motion, done, warning = voice.apply(result.motion, *audio, utt.starts, utt.ends, list(utt.phones),
+        result.motion, done, warning = fusion.apply(result.motion, *audio, utt.starts, utt.ends, list(utt.phones),
                                                    settings.synthesize, recognized=recognized)
         phases = {**result.summary.phases, "voice_s": time.perf_counter() - t0}
         result.summary = dataclasses.replace(result.summary, voice=done.path, phases=phases)
@@ -289,12 +290,27 @@ def frame_motion(name: str, utt: Utterance, markers_capture: np.ndarray, coeffic
                   None if coefficients is None else np.asarray(coefficients, np.float32), path, provenance)
 
 
-def chosen_method(method: str | None, search: str | None, configured_search: str) -> str:
-    """The member ``synthesize`` (and ``batch``) run: ``--method``, where ``dp`` (and no
-    ``--method``) follows ``--search`` or ``synthesize.search`` as before the family existed."""
-    if method in (None, "dp"):
-        return search or configured_search
-    if search is not None:
+def chosen_method(method: str | None, synth) -> str:
+    """The member ``synthesize``, ``batch`` and ``tune`` run: ``method`` (``--method``), else
+    ``synthesize.method``; where that is ``dp``, the deprecated ``synthesize.search`` still picks
+    the greedy search (``synth``: the ``[synthesize]`` settings)."""
+    name = method or synth.method
+    return synth.search if name == "dp" else name
+
+
+def deprecated_search(method: str | None, search: str | None, synth, configured: bool) -> tuple[str, list[str]]:
+    """The member a command line with the deprecated ``--search`` (``search``) or a configured
+    ``synthesize.search`` (``configured``: given in a ``--config`` file or a ``--set``) runs, and
+    the warnings naming the new names. ``--search`` is ``--method``'s old name for the two
+    searches; with ``--method dp`` (or none) it picks the search, as before."""
+    warnings = []
+    if configured:
+        warnings.append(f"synthesize.search is deprecated and will go in a later release; set synthesize.method = "
+                        f"\"{synth.search}\" instead.")
+    if search is None:
+        return chosen_method(method, synth), warnings
+    warnings.append(f"`--search` is deprecated and will go in a later release; use `--method {search}`.")
+    if method not in (None, "dp"):
         raise UsageError(f"--search chooses how the motion database is searched; the {method} method does not "
                          "take it: drop --search or use --method dp.")
-    return method
+    return search, warnings

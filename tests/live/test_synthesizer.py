@@ -7,14 +7,14 @@ import numpy as np
 import pytest
 
 from facesynth.base.errors import ArtifactError, InputError
-from facesynth.domain.live.core import LiveModel, LiveSynthesizer
 from facesynth.domain.live.phones import given_phones
+from facesynth.domain.live.synthesizer import LiveModel, LiveSynthesizer
 from facesynth.domain.methods.trajectory import synthesize_motion
 from facesynth.domain.search.costs import step_costs
 from facesynth.domain.search.dp import dp_numpy
-from facesynth.domain.search.inputs import read_utterance
 from facesynth.domain.search.pairs import transition_costs
 from facesynth.domain.search.synthesis import render_path, synthesize
+from facesynth.domain.speech.utterance import read_utterance
 from facesynth.model.motiondb import MotionDatabase
 
 

@@ -6,7 +6,7 @@ motion above all) toward what the voice says, in one of two ways (``synthesize.v
 when the phones were recognised from the audio, ``synthesize.voice_given`` when they were given
 or aligned to a transcript):
 
-* ``"articulation"``: the acoustic articulation model (:mod:`facesynth.domain.speech.articulation`,
+* ``"articulation"``: the acoustic articulation model (:mod:`facesynth.domain.voice.articulation`,
   the ``articulation`` artifact ``synthesize.articulation_model``; the packaged one, fitted on
   FACEGOOD's and GRID's speakers, by default) predicts the mouth's curves from the voice, and
   :func:`fuse` takes them in (below);
@@ -72,9 +72,9 @@ from facesynth.base.errors import InputError
 from facesynth.domain.postprocess.concatenation import downsample, frame_ranges
 from facesynth.domain.rig.face import Rig
 from facesynth.domain.rig.loading import load_rig, marker_map
-from facesynth.domain.speech import articulation as voice_model
 from facesynth.domain.speech import loudness
 from facesynth.domain.speech.loudness import lip_gaps, move_to_gaps, moving_average, opening_direction
+from facesynth.domain.voice import articulation as voice_model
 from facesynth.model.articulation import ArticulationModel
 from facesynth.model.motion import Motion
 
@@ -169,7 +169,7 @@ def apply(motion: Motion, samples: np.ndarray, rate: int, starts: np.ndarray, en
 
 def confidence(raw: np.ndarray, times_s: np.ndarray) -> np.ndarray:
     """(T,) 0..1 how clearly the voice is heard at ``times_s`` (T,) s, from the raw features (K, D)
-    of :func:`facesynth.domain.speech.articulation.frame_features`: each frame's log RMS above the
+    of :func:`facesynth.domain.voice.articulation.frame_features`: each frame's log RMS above the
     running noise floor (a running minimum rising by :data:`FLOOR_RISE_PER_S` a second), from
     :data:`SNR_NONE` (0) to :data:`SNR_FULL` (1), the highest over the speech around it
     (0.3 s: the jaw moves through a syllable's quiet parts too); causal but for that window; 0 past
@@ -249,7 +249,7 @@ def pinned_free(kept: list[tuple[int, int]], n: int, fps: float, settings: Synth
 
 def method_closings(opening: np.ndarray, closing: np.ndarray | None, fps: float, threshold: float) -> np.ndarray:
     """Frames (K,) of the method's own closures (the deep minima of its gap ``opening`` (T,),
-    :func:`facesynth.domain.speech.articulation.closure_frames_of`) that the voice's closing score
+    :func:`facesynth.domain.voice.articulation.closure_frames_of`) that the voice's closing score
     ``closing`` (T,) confirms: it reaches ``threshold`` within :data:`CLOSING_REACH_S`."""
     if closing is None or threshold > 1.0 or len(opening) < 3:
         return np.zeros(0, np.int64)

@@ -1,0 +1,69 @@
+"""Pieces of the leave-speakers-out voice benchmarks (benchmarks/voice_speakers.py,
+benchmarks/voice_features.py) that decide what is scored: GRID's sentences read from its file
+names, the channel-free slopes of the bands, and the paired comparison of feature runs."""
+
+from __future__ import annotations
+
+import importlib.util
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+BENCHMARKS = Path(__file__).resolve().parents[1] / "benchmarks"
+
+
+def load(name: str):
+    if str(BENCHMARKS) not in sys.path:
+        sys.path.insert(0, str(BENCHMARKS))  # voice_speakers imports real_speech_lipsync beside it
+    spec = importlib.util.spec_from_file_location(name, BENCHMARKS / f"{name}.py")
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[name] = module  # its dataclasses look their module up
+    spec.loader.exec_module(module)
+    return module
+
+
+speakers = load("voice_speakers")
+features = load("voice_features")
+
+
+@pytest.mark.parametrize("name, text", [("bbaf2n", "bin blue at f two now"),
+                                        ("lwbsza", "lay white by s zero again"),
+                                        ("id2_vcd_swwp2s", "set white with p two soon"),
+                                        ("PWIJ3P", "place white in j three please")])
+def test_a_grid_clip_says_what_its_name_spells(name, text):
+    assert speakers.grid_text(name) == text
+
+
+@pytest.mark.parametrize("name", ["F01_B01_S01_R01_N", "bbaf2", "xbaf2n", "bba12n", "bbaf2x"])
+def test_a_name_that_is_no_grid_sentence_has_no_text(name):
+    assert speakers.grid_text(name) is None
+
+
+def test_the_slopes_of_the_bands_ignore_a_channel_and_follow_a_ramp():
+    k = np.arange(20, dtype=np.float32)[:, None]
+    mel = np.concatenate([0.5 * k, -2.0 * k], 1)
+    slopes = speakers.mel_deltas(mel)
+    assert slopes.shape == mel.shape
+    assert np.allclose(slopes[2:-2], [[0.5, -2.0]])
+    assert np.allclose(speakers.mel_deltas(mel + 7.0), slopes)  # a constant gain or colouring is gone
+
+
+def run(folds, name, values, warps=None):
+    per = {f"src{i % 2}/s{i}": {"voice": v} for i, v in enumerate(values)}
+    return {"folds": folds, "features": name, "speakers": len(values), "r": {"voice": {"value": float(np.mean(values))}},
+            "per_speaker": per, **({"warps": warps} if warps else {})}
+
+
+def test_feature_runs_are_compared_paired_with_the_mel_run_of_their_folds():
+    base = [0.2, 0.4, 0.3, 0.5, 0.1, 0.6]
+    better = [v + 0.05 for v in base]
+    warps = {"src0/s0": [1.1, 1.1, 1.1], "src1/s1": [0.9, 0.9, 0.9]}
+    out = features.compare([run("source", "mel", base), run("source", "vtln", better, warps),
+                            run("speaker", "mel", better)], {"src0/s0": "F", "src1/s1": "M"})
+    assert "minus_mel" not in out[0] and "minus_mel" not in out[2]  # each mel run is its folds' reference
+    diff = out[1]["minus_mel"]
+    assert diff["value"] == pytest.approx(0.05) and diff["low"] == pytest.approx(0.05)
+    assert out[1]["minus_mel_per_source"] == {"src0": pytest.approx(0.05), "src1": pytest.approx(0.05)}
+    assert out[1]["mean_warp"] == {"F": 1.1, "M": 0.9}
