@@ -34,14 +34,15 @@ def _model(db, config, **stream):
 
 
 def _stream(model, utt, switch: dict | None = None):
-    """Feed ``utt`` phone by phone (``switch``: step -> emotion set before it); returns the
-    synthesizer, the frames in the order sent and the committed prefix after each step."""
+    """Feed ``utt`` phone by phone (``switch``: step -> emotion set before it; its IPA, for a line
+    in another language); returns the synthesizer, the frames in the order sent and the committed
+    prefix after each step."""
     live = LiveSynthesizer(model)
     frames, prefixes = [], []
     for t, (p, a, b) in enumerate(zip(utt.phones, utt.starts, utt.ends)):
         if switch and t in switch:
             live.set_emotion(switch[t])
-        live.add_phone(p, a, b)
+        live.add_phone(p, a, b, utt.ipa[t] if utt.ipa else "")
         frames += live.step(b)
         prefixes.append(list(live.committed))
     frames += live.finish(utt.ends[-1])
@@ -62,6 +63,23 @@ def test_fixed_lag_dp_is_the_whole_utterance_dp_when_the_lookahead_covers_it(db,
     markers = np.stack([f.markers for f in frames])
     assert markers.shape == batch.rendered.markers.shape
     np.testing.assert_allclose(markers, batch.rendered.markers, atol=1e-4)
+
+
+def test_a_line_in_another_language_is_searched_by_its_phones_features_as_batch_does(db, utt, config):
+    """German /ç/ and French /y/ given live (their nearest English phones /sh/ and /uw/, with
+    their IPA): the live DP matches them by their features (synthesize.phone_match), so with
+    the whole utterance in view it takes batch's path for the same line, not the English one's."""
+    ipa = {"sh": "ç", "s": "ç", "uw": "y", "iy": "y", "ih": "y"}
+    foreign = replace(utt, phones=[{"ç": "sh", "y": "uw"}.get(ipa.get(p, ""), p) for p in utt.phones],
+                      ipa=[ipa.get(p, "") for p in utt.phones])
+    assert any(foreign.ipa)
+    model = _model(db, config, method="dp", lookahead_phones=len(utt), pause_wait_s=3600.0)
+    live, _, _ = _stream(model, foreign)
+    batch = _batch(db, foreign, config).path
+    english = _batch(db, replace(foreign, ipa=None), config).path
+    assert not np.array_equal(batch, english)  # the features change the path on this line
+    np.testing.assert_array_equal(live.committed, batch)
+    assert live.ipa == foreign.ipa
 
 
 @pytest.mark.parametrize("method,lookahead,fps", [("dp", 0, 30), ("dp", 1, 30), ("dp", 2, 30), ("greedy", 1, 30),
@@ -160,7 +178,7 @@ def test_an_emotion_switch_applies_to_the_phones_after_it(db, utt, config):
 
 def test_given_phone_timings_are_checked():
     assert given_phones([{"phone": "HH", "start": 0, "end": 0.1}, {"phone": "AH0", "start": 0.1, "end": 0.2}],
-                        "m") == [("hh", 0.0, 0.1), ("ax", 0.1, 0.2)]
+                        "m") == [("hh", 0.0, 0.1, ""), ("ax", 0.1, 0.2, "")]
     with pytest.raises(InputError, match="m, 0.100 s: unknown phone 'QQ'"):
         given_phones([{"phone": "HH", "start": 0, "end": 0.1}, {"phone": "QQ", "start": 0.1, "end": 0.2}], "m")
     with pytest.raises(InputError, match="starts at 0.050 s, before the previous phone ends"):
@@ -176,9 +194,9 @@ def test_given_ipa_phones_of_another_language_take_their_nearest_english_phones(
              {"phone": "sil", "start": 0.2, "end": 0.3}, {"phone": "ʁ", "start": 0.3, "end": 0.4},
              {"phone": "ɸ", "start": 0.4, "end": 0.5}]
     # French /y/ is the rounded vowel, /ʁ/ the velar stop, /ɸ/ closes the lips (facesynth.base.ipa)
-    assert given_phones(items, "m", ipa=True) == [("t", 0.0, 0.1), ("uw", 0.1, 0.2), ("pau", 0.2, 0.3),
-                                                  ("g", 0.3, 0.4), ("p", 0.4, 0.5)]
-    assert given_phones(items[:2], "m") == [("t", 0.0, 0.1), ("y", 0.1, 0.2)]  # English: /y/ is the glide
+    assert given_phones(items, "m", ipa=True) == [("t", 0.0, 0.1, "t"), ("uw", 0.1, 0.2, "y"), ("pau", 0.2, 0.3, ""),
+                                                  ("g", 0.3, 0.4, "ʁ"), ("p", 0.4, 0.5, "ɸ")]
+    assert given_phones(items[:2], "m") == [("t", 0.0, 0.1, ""), ("y", 0.1, 0.2, "")]  # English: /y/ is the glide
     with pytest.raises(InputError, match="m, 0.100 s: 'ǂ' is not an IPA phone facesynth knows"):
         given_phones([items[0], {"phone": "ǂ", "start": 0.1, "end": 0.2}], "m", ipa=True)
 

@@ -112,11 +112,13 @@ class PhoneRecognizer:
         return out
 
 
-def given_phones(items, where: str, ipa: bool = False) -> list[tuple[str, float, float]]:
+def given_phones(items, where: str, ipa: bool = False) -> list[tuple[str, float, float, str]]:
     """Phone timings of a control message: a list of ``{"phone": name, "start": s, "end": s}``
     (CMU/ARPAbet with or without stress digits, or Festival names; with ``ipa``, a stream in
-    another language, IPA symbols, each played by its articulatory nearest English phone), in
-    time order: ``(festival_phone, start_s, end_s)`` tuples."""
+    another language, IPA symbols, each standing as its articulatory nearest English phone and
+    matched by its features in the search, as batch does), in time order:
+    ``(festival_phone, start_s, end_s, ipa_phone)`` tuples (``ipa_phone`` "" for English and
+    pauses)."""
     if not isinstance(items, list):
         raise InputError(f"{where}: 'phones' must be a list of {{\"phone\", \"start\", \"end\"}} objects.")
     names: list[str] = []
@@ -134,8 +136,11 @@ def given_phones(items, where: str, ipa: bool = False) -> list[tuple[str, float,
         names.append(item["phone"])
         starts.append(a)
         ends.append(b)
-    labels = _ipa_phones(names, where, starts) if ipa else map_phones(names, where, starts)
-    return list(zip(labels, starts, ends))
+    if not ipa:
+        return [(label, a, b, "") for label, a, b in zip(map_phones(names, where, starts), starts, ends)]
+    labels = _ipa_phones(names, where, starts)
+    return [(label, a, b, "" if label == PAU else name.strip())
+            for label, name, a, b in zip(labels, names, starts, ends)]
 
 
 #: Names a stream in another language may give a pause (IPA has no symbol for silence).

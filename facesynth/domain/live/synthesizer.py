@@ -191,6 +191,7 @@ class LiveSynthesizer:
     model: LiveModel
     emotion: str = "neutral"
     phones: list[str] = field(default_factory=list)
+    ipa: list[str] = field(default_factory=list)  # per phone: the IPA it stands for in another language, else ""
     starts: list[float] = field(default_factory=list)
     ends: list[float] = field(default_factory=list)
     emotions: list[str] = field(default_factory=list)
@@ -221,8 +222,9 @@ class LiveSynthesizer:
         """End of the last known phone, s."""
         return self.ends[-1] if self.ends else 0.0
 
-    def add_phone(self, phone: str, start: float, end: float) -> None:
-        """Append a phone (Festival name, seconds). A start after the last end is preceded by a
+    def add_phone(self, phone: str, start: float, end: float, ipa: str = "") -> None:
+        """Append a phone (Festival name, seconds; ``ipa``: the IPA phone it stands for in a
+        stream in another language, matched by its features, ``synthesize.phone_match``). A start after the last end is preceded by a
         pause; a start before it is moved to it (the recogniser's boundaries can shift by a
         frame); a phone that ends no later than the last end is ignored."""
         if self.finished:
@@ -234,7 +236,7 @@ class LiveSynthesizer:
             return
         if start > last + 1e-6:
             self._append(PAU, last, start)
-        self._append(phone, max(start, last), end)
+        self._append(phone, max(start, last), end, ipa)
         self._silence_growing = False
 
     def extend_silence(self, until: float) -> None:
@@ -244,11 +246,12 @@ class LiveSynthesizer:
             self.add_phone(PAU, self.known_until, until)
             self._silence_growing = True
 
-    def _append(self, phone: str, start: float, end: float) -> None:
+    def _append(self, phone: str, start: float, end: float, ipa: str = "") -> None:
         if phone == PAU and self.phones and self.phones[-1] == PAU:
             self.ends[-1] = end  # one silence is one step (batch merges them likewise)
             return
         self.phones.append(phone)
+        self.ipa.append(ipa)
         self.starts.append(start)
         self.ends.append(end)
         self.emotions.append(self.emotion)

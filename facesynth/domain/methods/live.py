@@ -36,10 +36,12 @@ from facesynth.base.errors import InputError
 
 class Track(Protocol):
     """What a stream knows (:class:`facesynth.domain.live.synthesizer.LiveSynthesizer`): the phones
-    (Festival names) with their start and end (s) and emotion, and the committed steps' nodes (-1
+    (Festival names, and the IPA phone each stands for in another language, else "") with their
+    start and end (s) and emotion, and the committed steps' nodes (-1
     where the member has none)."""
 
     phones: list[str]
+    ipa: list[str]
     starts: list[float]
     ends: list[float]
     emotions: list[str]

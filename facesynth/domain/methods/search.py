@@ -144,12 +144,13 @@ class _SearchStepper(LiveStepper):
         db = live.db
         assert db is not None
         first = max(0, c - 1)
-        phones, emotions = track.phones[first:], track.emotions[first:]
+        phones, emotions, ipa = track.phones[first:], track.emotions[first:], track.ipa[first:]
         if live.greedy is not None:
             path = _greedy(live.greedy, phones, emotions, track.committed[-1] if c else -1, pinned=c > 0)
         else:
             constraints = {0: track.committed[-1]} if c else {}
-            steps = step_costs(phones, emotions, db.nodes.phone, db.nodes.emotion, constraints, live.synth)
+            steps = step_costs(phones, emotions, db.nodes.phone, db.nodes.emotion, constraints, live.synth, ipa,
+                               db.nodes.ipa)
             path = dp_numpy(live.dense, steps.total).path
         offset = c - first
         return [int(n) for n in path[offset: offset + upto - c]]
