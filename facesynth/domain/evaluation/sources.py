@@ -16,7 +16,8 @@ def trained_on(model: Any, model_path: Path, db_path: Path, member: str) -> None
     """Refuse a model whose recorded training database (its ``inputs`` records) is not ``db_path``
     (by sha256): the methods must learn from the same takes, and the held-out ones must stay unseen."""
     dbs = [r for r in getattr(model, "inputs", []) if r.get("kind") == "motiondb"]
-    if not any(r.get("sha256") == sha256_of(db_path) for r in dbs):
+    digest = sha256_of(db_path)  # once, not per record
+    if not any(r.get("sha256") == digest for r in dbs):
         was = f" ({dbs[0].get('path')})" if dbs else ""
         raise InputError(f"{model_path}: was trained on another database{was}, not {db_path}; train it on {db_path} "
                          f"with `facesynth fit-method {member}` so that every method learns from the same takes.")
