@@ -270,6 +270,14 @@ def test_toy_members_work_like_the_built_in_ones(toys, tiny_db, tiny_corpus, hel
     toy = ToyModel.read(model)
     with h5py.File(motion, "r") as f:  # its settings section reached it
         np.testing.assert_allclose(f["markers_capture"][0], held_pose(toy, 0.5), atol=1e-4)
+        assert f.attrs["source"] == "synthesis" and f["path"].attrs["method"] == "toymean"
+        assert "coefficients" not in f and "keyshape_weights" not in f  # it makes markers directly
+    r = runner.invoke(main, ["check", str(motion)])  # a motion without PCA frames is a whole motion
+    assert r.exit_code == 0 and "motion" in r.output, r.output
+    curves = tmp_path / "c.h5"
+    assert runner.invoke(main, ["solve", str(motion), "-o", str(curves)]).exit_code == 0
+    with h5py.File(curves, "r") as f:  # what is made from it names the member too
+        assert f["provenance"].attrs["origin"] == "synthesis" and f["provenance"].attrs["method"] == "toymean"
     out = tmp_path / "w.toy.txt"
     r = runner.invoke(main, ["export", str(held_out_synthesized["curves"]), "--format", "toy-txt", "-o", str(out)])
     assert r.exit_code == 0, r.output

@@ -16,7 +16,7 @@ counter-clockwise faces seen from outside. Time: frame i at time code i,
 ``endTimeCode`` T - 1.
 
 Provenance: where each frame came from is in ``/Face``'s ``customData`` under
-``facesynth:provenance`` (a dictionary: ``origin``, ``resampling``, per time code the arrays
+``facesynth:provenance`` (a dictionary: ``origin``, ``method``, ``resampling``, per time code the arrays
 ``phone``, ``emotion``, ``node``, ``take``, ``source_frame``, ``step``, and the utterance's phones
 as ``segment_phone``, ``segment_emotion``, ``segment_start`` and ``segment_end`` in seconds,
 ``segment_node``, ``segment_take``).
@@ -84,6 +84,7 @@ def _provenance(prim, provenance) -> None:
     key = "facesynth:provenance:"
     f = provenance.to_json()
     prim.SetCustomDataByKey(key + "origin", f["origin"])
+    prim.SetCustomDataByKey(key + "method", f["method"])
     prim.SetCustomDataByKey(key + "resampling", f["resampling"])
     for name, values in f["frames"].items():
         array = Vt.StringArray(values) if name in ("phone", "emotion", "take") else Vt.IntArray(values)

@@ -21,13 +21,14 @@ class Motion:
     marker_names : M names; reference : (M, 3) float32 mm rest pose.
     head_rotation : (T, 3, 3) float32, head_translation : (T, 3) float32 mm, at ``fps``: the head
         pose relative to the source take's mean (x -> head_rotation @ x + head_translation).
-    coefficients : (F, K) float32 PCA coefficients at ``capture_fps`` (synthesis only; as the method
-        made them: the voice's loudness moves the markers only).
-    path, provenance : the search and where each frame came from (synthesis only).
-    source : "synthesis", "capture", "restyle" or "trajectory"; take : the captured take (capture only).
+    coefficients : (F, K) float32 PCA coefficients at ``capture_fps`` (a synthesis by a method in the
+        database's PCA space; as the method made them: the voice's loudness moves the markers only).
+    path, provenance : the search and where each frame came from (synthesis only; ``path.method``
+        names the method).
+    source : "synthesis", "capture" or "restyle"; take : the captured take (capture only).
     keyshape_weights : (F, Kt) float32 key-shape weights at ``capture_fps``, keyshape_names : Kt
-        names (trajectory synthesis only: the path of Eq. 7 the markers were back-projected from,
-        before the voice's loudness moved them).
+        names (a synthesis by a method in key-shapes, the trajectory: the path of Eq. 7 the markers
+        were back-projected from, before the voice's loudness moved them).
     """
 
     markers: np.ndarray
@@ -74,7 +75,7 @@ class Motion:
                                 read_strings(f, "path/emotion"), read_strings(f, "path/node_phone"),
                                 read_strings(f, "path/node_emotion"), read(f, "path/start"), read(f, "path/end"), costs,
                                 float(p.attrs.get("total_cost", np.nan)), int(p.attrs.get("non_captured_joins", 0)),
-                                str(p.attrs.get("search", "")), str(p.attrs.get("device", "")),
+                                str(p.attrs.get("method", "")), str(p.attrs.get("device", "")),
                                 str(p.attrs.get("device_reason", "")))
             provenance = Provenance(read(f, "provenance/node").astype(np.int64),
                                     read(f, "provenance/take").astype(np.int64), read_strings(f, "provenance/take_names"),
@@ -91,7 +92,7 @@ class Motion:
         if path is None:
             search, prov = self.path, self.provenance
         else:
-            search, prov = self.read_search(path) if self.source in ("synthesis", "trajectory") else (None, None)
+            search, prov = self.read_search(path) if self.source == "synthesis" else (None, None)
         return of_motion(search, prov, len(self.markers), self.fps, self.source, self.take, len(self.markers_capture),
                          self.capture_fps)
 
@@ -103,8 +104,7 @@ class Motion:
     def write(self, out: Path, *, config: str, inputs=(), records=None, overwrite: bool = False) -> None:
         """Write a ``motion`` artifact to ``out`` (provenance from ``inputs`` or precomputed ``records``)."""
         with write_artifact(out, self.KIND, config=config, inputs=inputs, records=records, overwrite=overwrite) as g:
-            if self.source != "synthesis":
-                g.attrs["source"] = self.source
+            g.attrs["source"] = self.source
             if self.source == "capture":
                 g.attrs["take"] = self.take
             m = g.create_dataset("markers", data=self.markers)
@@ -114,7 +114,7 @@ class Motion:
             if self.coefficients is not None:
                 c = g.create_dataset("coefficients", data=self.coefficients)
                 c.attrs["fps"] = self.capture_fps
-            if self.keyshape_weights is not None and self.keyshape_names is not None:  # a pair (trajectory)
+            if self.keyshape_weights is not None and self.keyshape_names is not None:  # a pair (a method in key-shapes)
                 w = g.create_dataset("keyshape_weights", data=np.asarray(self.keyshape_weights, np.float32))
                 w.attrs.update(units="weight", fps=self.capture_fps)
                 write_strings(g, "keyshape_names", self.keyshape_names)
@@ -142,7 +142,7 @@ def _write_path(g, s: SearchPath) -> None:
     p.create_dataset("end", data=s.end).attrs["units"] = "s"
     for key, value in s.costs.items():
         p.create_dataset(f"cost_{key}", data=value)
-    p.attrs.update(total_cost=s.total_cost, non_captured_joins=s.non_captured_joins, search=s.search, device=s.device,
+    p.attrs.update(total_cost=s.total_cost, non_captured_joins=s.non_captured_joins, method=s.method, device=s.device,
                    device_reason=s.device_reason)
 
 

@@ -18,8 +18,9 @@ import numpy as np
 
 from .artifacts import read, read_strings, stamp, write_strings
 
-#: What made the frames the provenance describes (the motion's ``source``).
-ORIGINS = ("synthesis", "trajectory", "capture")
+#: What made the frames the provenance describes (the motion's ``source``; a synthesis names its
+#: method in ``method``).
+ORIGINS = ("synthesis", "capture")
 
 #: The rule by which frames made at another rate take their provenance, as stored in the files.
 RESAMPLING = "a frame made at another rate than its source has the provenance of the nearest source frame"
@@ -31,8 +32,9 @@ class SearchPath:
 
     node : (T,) int64 chosen node; phone, emotion : asked; node_phone, node_emotion : chosen.
     start, end : (T,) float64 s. costs : per term ("tc", "oc", "emp", "block"), (T,) float32.
-    total_cost : Eq. 4; non_captured_joins : joins without a captured link; search : "dp" or
-    "greedy"; device : where the search ran, device_reason : why there.
+    total_cost : Eq. 4; non_captured_joins : joins without a captured link; method : the member of
+    the method family that made the motion ("dp", "greedy", "trajectory", ...); device : where the
+    search ran, device_reason : why there.
     """
 
     node: np.ndarray
@@ -45,7 +47,7 @@ class SearchPath:
     costs: dict[str, np.ndarray]
     total_cost: float
     non_captured_joins: int
-    search: str
+    method: str
     device: str
     device_reason: str = ""
 
@@ -87,7 +89,8 @@ class FrameProvenance:
     source_frame : (T,) int64 source frame (a synthesis: row of the database's frames; a capture:
         frame of the take at its capture rate; -1 where none);
     step : (T,) int64 the frame's row of ``segments`` (-1 without phones);
-    segments : the utterance's phones (empty for a capture); origin : one of :data:`ORIGINS`.
+    segments : the utterance's phones (empty for a capture); origin : one of :data:`ORIGINS`;
+    method : the member of the method family that made a synthesis ('' for a capture).
     """
 
     phone: list[str]
@@ -98,6 +101,7 @@ class FrameProvenance:
     step: np.ndarray
     segments: list[PhoneSegment]
     origin: str
+    method: str = ""
 
     def __post_init__(self) -> None:
         self.node = np.asarray(self.node, np.int64)
@@ -118,7 +122,7 @@ class FrameProvenance:
         rows = np.asarray(rows, np.int64)
         return FrameProvenance([self.phone[i] for i in rows], [self.emotion[i] for i in rows], self.node[rows],
                                [self.take[i] for i in rows], self.source_frame[rows], self.step[rows],
-                               list(self.segments), self.origin)
+                               list(self.segments), self.origin, self.method)
 
     def resampled(self, n_frames: int, fps_from: float, fps_to: float) -> "FrameProvenance":
         """The provenance of ``n_frames`` frames at ``fps_to`` made from these at ``fps_from``: each
@@ -134,7 +138,7 @@ class FrameProvenance:
 
     def to_json(self) -> dict:
         """Plain lists for JSON (glTF ``extras``, the player): per-frame lists and the phones."""
-        return {"origin": self.origin, "resampling": RESAMPLING,
+        return {"origin": self.origin, "method": self.method, "resampling": RESAMPLING,
                 "frames": {"phone": list(self.phone), "emotion": list(self.emotion), "node": self.node.tolist(),
                            "take": list(self.take), "source_frame": self.source_frame.tolist(),
                            "step": self.step.tolist()},
@@ -145,6 +149,8 @@ class FrameProvenance:
         """Write the ``provenance`` group (``frame-provenance``) into the open artifact ``g``."""
         p = stamp(g.create_group("provenance"), "frame-provenance")
         p.attrs.update(origin=self.origin, resampling=RESAMPLING)
+        if self.method:
+            p.attrs["method"] = self.method
         write_strings(p, "phone", self.phone)
         write_strings(p, "emotion", self.emotion)
         p.create_dataset("node", data=self.node)
@@ -171,9 +177,13 @@ class FrameProvenance:
             segments = [PhoneSegment(p, e, float(a), float(b), int(n), t) for p, e, a, b, n, t in zip(
                 read_strings(f, k + "phone"), read_strings(f, k + "emotion"), read(f, k + "start"), read(f, k + "end"),
                 read(f, k + "node"), read_strings(f, k + "take"))]
+        attrs = f["provenance"].attrs
+        origin, method = str(attrs.get("origin", "synthesis")), str(attrs.get("method", ""))
+        if origin == "trajectory":  # written before motion schema 2 named the method
+            origin, method = "synthesis", "trajectory"
         return cls(read_strings(f, "provenance/phone"), read_strings(f, "provenance/emotion"),
                    read(f, "provenance/node"), read_strings(f, "provenance/take"), read(f, "provenance/source_frame"),
-                   read(f, "provenance/step"), segments, str(f["provenance"].attrs.get("origin", "synthesis")))
+                   read(f, "provenance/step"), segments, origin, method)
 
 
 def nearest_frames(n_out: int, fps_out: float, n_in: int, fps_in: float) -> np.ndarray:
@@ -185,13 +195,13 @@ def of_motion(search: SearchPath | None, prov: Provenance | None, n_frames: int,
               take: str = "", capture_frames: int = 0, capture_fps: float = 0.0) -> FrameProvenance | None:
     """The provenance of a motion's ``n_frames`` output frames at ``fps``.
 
-    A synthesis (``source`` "synthesis" or "trajectory") takes its search path and capture-rate
-    provenance (``search``, ``prov``); a capture (``source`` "capture") its take name, and the
+    A synthesis (``source`` "synthesis", by any method) takes its search path and capture-rate
+    provenance (``search``, ``prov``), and its method from the path; a capture (``source`` "capture") its take name, and the
     source frame from the take's ``capture_frames`` frames at ``capture_fps``. None for any other
     motion (a restyle)."""
     if source == "capture":
         return of_take(take, n_frames, fps, capture_frames, capture_fps)
-    if source not in ("synthesis", "trajectory") or search is None or prov is None:
+    if source != "synthesis" or search is None or prov is None:
         return None
     rows = nearest_frames(n_frames, fps, len(prov.node), prov.fps)
     step = prov.step[rows]
@@ -205,7 +215,8 @@ def of_motion(search: SearchPath | None, prov: Provenance | None, n_frames: int,
     ok = (step >= 0) & (step < len(search.phone))
     return FrameProvenance([search.phone[s] if o else "" for s, o in zip(step, ok)],
                            [search.emotion[s] if o else "" for s, o in zip(step, ok)],
-                           prov.node[rows], takes, prov.source_frame[rows], np.where(ok, step, -1), segments, source)
+                           prov.node[rows], takes, prov.source_frame[rows], np.where(ok, step, -1), segments, source,
+                           search.method)
 
 
 def of_take(take: str, n_frames: int, fps: float, capture_frames: int, capture_fps: float) -> FrameProvenance:

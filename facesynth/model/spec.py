@@ -406,31 +406,34 @@ ISOMAP = Kind("isomap", 1, (
 
 _HEAD_CONVENTION = Attr("convention", "str", "how the head motion applies")
 
-MOTION = Kind("motion", 1, (
+MOTION = Kind("motion", 2, (
     "Marker motion in the head frame, with the head motion beside it. `facesynth synthesize` writes the "
-    "`synthesis` variant (with the search path and per-frame provenance); `facesynth capture` writes a "
-    "captured take as the `capture` variant (root attribute `source = \"capture\"`, no `coefficients`, "
-    "`path` or `provenance`), whose markers keep NaN where a gap was too long to fill; `facesynth expression "
-    "restyle` writes the `restyle` variant (`source = \"restyle\"`, likewise without them); `facesynth synthesize "
-    "--method trajectory` writes the `trajectory` variant (`source = \"trajectory\"`: no `coefficients`; "
-    "`keyshape_weights`, the path of Huang et al. Eq. 7; `path/node` and the provenance's node, take and source "
-    "frame are -1, `path/node_phone` and `node_emotion` name the Gaussian used, `cost_oc` and `cost_tc` hold "
-    "Eq. 6's data and smoothness terms per phone, `cost_emp` and `cost_block` zero; the head does not move). "
-    "`--method mean` and `--method coarticulation` write the `synthesis` variant without motion nodes: "
-    "`path/search` names the method, `path/node` and the provenance's node, take and source frame are -1, "
-    "`node_phone` / `node_emotion` the phone and emotion whose pose was used ('' for a phone's pose over every "
-    "emotion), the cost terms and `total_cost` zero; the head does not move."), (
+    "`synthesis` variant (root attribute `source = \"synthesis\"`) whatever the method: the search path "
+    "(`path/method` names the member of the method family that made it) and per-frame provenance; "
+    "`coefficients` when the method works in the database's PCA space (`dp`, `greedy`, `mean`, "
+    "`coarticulation`), `keyshape_weights` and `keyshape_names` when it works in key-shapes (`trajectory`: "
+    "the path of Huang et al. Eq. 7), neither for a method that makes markers directly. A method without "
+    "motion nodes writes -1 for `path/node` and the provenance's node, take and source frame, and zero for "
+    "the cost terms it has not (`trajectory`: `cost_oc` and `cost_tc` hold Eq. 6's data and smoothness terms "
+    "per phone; `mean`, `coarticulation`: `node_phone` / `node_emotion` the phone and emotion whose pose was "
+    "used, '' for a phone's pose over every emotion); the head moves only for the search's members. "
+    "`facesynth capture` writes a captured take as the `capture` variant (`source = \"capture\"`, no "
+    "`coefficients`, `path` or `provenance`), whose markers keep NaN where a gap was too long to fill; "
+    "`facesynth expression restyle` writes the `restyle` variant (`source = \"restyle\"`, likewise without "
+    "them). Schema 1 named the trajectory method in `source` and the method in `path/search`."), (
     Dataset("markers", "float32", ("Fo", "M", 3), "the motion at the output rate, head frame", "mm",
             (MM, _fps("output rate, frames/s")), finite="synthesis"),
     Dataset("markers_capture", "float32", ("F", "M", 3), "the motion at the capture rate, before down-sampling", "mm",
             (MM, _fps("capture rate, frames/s")), finite="synthesis"),
-    Dataset("coefficients", "float32", ("F", "K"), "the concatenated, smoothed PCA frames (as the method made them: the voice's loudness, "
-            "`synthesize.loudness_weight`, moves the markers only; so for `keyshape_weights`)", "mm",
-            (_fps("capture rate, frames/s"),), required="synthesis"),
-    Dataset("keyshape_weights", "float32", ("F", "Kt"), "key-shape weights of the trajectory (Huang et al. Eq. 7), "
-            "interpolated to the capture rate", "weight", (_units("weight"), _fps("capture rate, frames/s")), ge=0,
-            required="trajectory"),
-    Dataset("keyshape_names", "str", ("Kt",), "the key-shapes, column order of `keyshape_weights`", required="trajectory"),
+    Dataset("coefficients", "float32", ("F", "K"), "the concatenated, smoothed PCA frames, for a method in the "
+            "database's PCA space (as the method made them: the voice's loudness, `synthesize.loudness_weight`, "
+            "moves the markers only; so for `keyshape_weights`)", "mm",
+            (_fps("capture rate, frames/s"),), required=False),
+    Dataset("keyshape_weights", "float32", ("F", "Kt"), "key-shape weights, for a method in key-shapes (the "
+            "trajectory of Huang et al. Eq. 7), interpolated to the capture rate", "weight",
+            (_units("weight"), _fps("capture rate, frames/s")), ge=0, required=False),
+    Dataset("keyshape_names", "str", ("Kt",), "the key-shapes, column order of `keyshape_weights` (with it)",
+            required=False),
     Dataset("marker_names", "str", ("M",), "marker order"),
     Dataset("reference", "float32", ("M", 3), "rest pose", "mm", (MM,)),
     Dataset("head_rotation", "float32", ("Fo", 3, 3),
@@ -452,8 +455,8 @@ MOTION = Kind("motion", 1, (
         Dataset("cost_block", "float32", ("U",), "blocking penalty of Eq. 10"),
     ), attrs=(Attr("total_cost", "float", "Eq. 4 along the path (trajectory: Eq. 6 of Huang et al.)"),
               Attr("non_captured_joins", "int", "joins without a captured predecessor/successor link", ge=0),
-              Attr("search", "str", "the method that made the motion (`dp`, `greedy`, `trajectory`, `coarticulation` "
-                   "or `mean`)"),
+              Attr("method", "str", "the member of the method family that made the motion (`facesynth synthesize "
+                   "--method`: `dp`, `greedy`, `trajectory`, `coarticulation`, `mean`, or a plug-in's name)"),
               Attr("device", "str", "where the search ran"),
               Attr("device_reason", "str", "why that device (the OpenCL choice, or why NumPy)")), required="synthesis"),
     Group("provenance", "provenance", "where each capture-rate frame came from", (
@@ -464,11 +467,11 @@ MOTION = Kind("motion", 1, (
         Dataset("step", "int64", ("F",), "input phone (row of `path`)"),
         Dataset("smoothed", "bool", ("F",), "frame changed by Eq. 16 smoothing (or Cao's blending)"),
     ), attrs=(_fps("capture rate, frames/s"), Attr("meaning", "str", "what the values are")), required="synthesis"),
-), attrs=(Attr("source", "str", "`capture` for a captured take, `restyle` for a motion in another expression, "
-                         "`trajectory` for the trajectory method; absent for a synthesis by search",
-                         choices=("capture", "restyle", "trajectory"), required=False),
+), attrs=(Attr("source", "str", "`synthesis` for a motion any method made (`path/method` names it), `capture` "
+                         "for a captured take, `restyle` for a motion in another expression",
+                         choices=("synthesis", "capture", "restyle")),
           Attr("take", "str", "the captured take", required="capture")),
-    variant_attr="source", variants=("synthesis", "capture", "restyle", "trajectory"))
+    variant_attr="source", variants=("synthesis", "capture", "restyle"))
 
 FRAME_PROVENANCE = Group("provenance", "frame-provenance", (
     "where each frame came from, carried from `facesynth synthesize` (its `path` and `provenance`); a frame made "
@@ -490,7 +493,11 @@ FRAME_PROVENANCE = Group("provenance", "frame-provenance", (
         Dataset("node", "int64", ("U",), "the chosen database node, -1 for none", ge=-1),
         Dataset("take", "str", ("U",), "the take most of the phone's frames came from, empty for none"),
     ), required=False),
-), attrs=(Attr("origin", "str", "what made the frames: the motion's source", choices=("synthesis", "trajectory", "capture")),
+), attrs=(Attr("origin", "str", "what made the frames: the motion's source (`trajectory`, written before motion "
+                         "schema 2, is read as a synthesis by the trajectory method)",
+                         choices=("synthesis", "trajectory", "capture")),
+          Attr("method", "str", "the method that made a synthesis's frames (the motion's `path/method`)",
+               required=False),
           Attr("resampling", "str", "the rule for frames made at another rate, in words")), required=False)
 
 MESHANIM = Kind("meshanim", 1, (

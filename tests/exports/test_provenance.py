@@ -64,7 +64,7 @@ def test_every_artifact_of_the_chain_keeps_the_motions_provenance(carried):
                          ("rt.h5", RigCurves.read), ("rt_mesh.h5", MeshAnimation.read)):
         prov = reader(carried / name).provenance
         assert prov is not None, name
-        assert prov.origin == "synthesis"
+        assert prov.origin == "synthesis" and prov.method == "dp"
         assert prov.phone == phone and prov.emotion == emotion and prov.take == take, name
         np.testing.assert_array_equal(prov.node, node, err_msg=name)
         assert [s.phone for s in prov.segments] == search.phone
@@ -74,9 +74,36 @@ def test_every_artifact_of_the_chain_keeps_the_motions_provenance(carried):
         assert report.problems == [], name
 
 
+def test_a_motion_of_the_first_schema_is_refused_and_curves_made_from_one_still_read(carried, tmp_path):
+    """Motion schema 1 named the trajectory method in ``source`` and the method in ``path/search``;
+    such a motion is refused with the command that makes it again, while curves written from one
+    (provenance ``origin = "trajectory"``) read as a synthesis by the trajectory method."""
+    import shutil
+
+    import h5py
+    from click.testing import CliRunner
+
+    from facesynth.cli import main
+
+    old = tmp_path / "old_motion.h5"
+    shutil.copy(carried / "m.h5", old)
+    with h5py.File(old, "r+") as f:
+        f.attrs["facesynth_schema"] = 1
+    r = CliRunner().invoke(main, ["solve", str(old), "-o", str(tmp_path / "c.h5")])
+    assert r.exit_code == 1 and "'motion' schema 1 is not the supported schema 2" in r.output
+    assert "facesynth synthesize" in r.output and not (tmp_path / "c.h5").exists()
+    curves = tmp_path / "old_curves.h5"
+    shutil.copy(carried / "c.h5", curves)
+    with h5py.File(curves, "r+") as f:
+        f["provenance"].attrs["origin"] = "trajectory"
+        del f["provenance"].attrs["method"]
+    prov = RigCurves.read(curves).provenance
+    assert (prov.origin, prov.method) == ("synthesis", "trajectory")
+
+
 def test_a_captured_take_carries_its_name_and_no_phones(carried, held_out_take):
     prov = RigCurves.read(carried / "cap_c.h5").provenance
-    assert prov.origin == "capture" and prov.segments == []
+    assert prov.origin == "capture" and prov.method == "" and prov.segments == []
     assert set(prov.take) == {held_out_take} and set(prov.phone) == {""} and (prov.node == -1).all()
     cap = Motion.read(carried / "cap.h5")
     np.testing.assert_array_equal(prov.source_frame, nearest_frames(len(cap.markers), cap.fps, len(cap.markers_capture),
@@ -90,7 +117,7 @@ def test_gltf_extras_carry_the_provenance(carried):
     doc = json.loads((carried / "c.gltf").read_text())
     p = doc["animations"][0]["extras"]["facesynth_provenance"]
     assert p["frames"]["phone"] == phone and p["frames"]["emotion"] == emotion and p["frames"]["take"] == take
-    assert p["frames"]["node"] == node.tolist()
+    assert p["frames"]["node"] == node.tolist() and p["method"] == "dp"
     assert [s["phone"] for s in p["phones"]] == search.phone and [s["node"] for s in p["phones"]] == search.node.tolist()
 
 
@@ -119,7 +146,7 @@ def test_usd_custom_data_carries_the_provenance(carried, name):
     assert list(data["phone"]) == phone and list(data["emotion"]) == emotion and list(data["take"]) == take
     assert list(data["node"]) == node.tolist()
     assert list(data["segment_phone"]) == search.phone and list(data["segment_node"]) == search.node.tolist()
-    assert data["origin"] == "synthesis"
+    assert data["origin"] == "synthesis" and data["method"] == "dp"
 
 
 def test_the_player_labels_a_capture_with_its_take_and_a_synthesis_with_its_phones(carried, held_out_take):

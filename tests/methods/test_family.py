@@ -78,7 +78,7 @@ def test_every_member_makes_a_motion_with_the_same_fields_and_provenance(name, s
     assert m.markers.shape[1:] == (len(db.marker_names), 3) and m.marker_names == list(db.marker_names)
     assert np.isfinite(m.markers).all() and m.head_rotation.shape == (len(m.markers), 3, 3)
     # the path: one row per input phone, the phones and per-phone emotions asked, the method's name
-    assert m.path.search == name and m.path.phone == list(utt.phones) and m.path.emotion == ["sad"] * len(utt)
+    assert m.path.method == name and m.path.phone == list(utt.phones) and m.path.emotion == ["sad"] * len(utt)
     assert np.array_equal(m.path.start, utt.starts) and len(m.path.node) == len(utt)
     # nodes only where the method has them
     assert (m.path.node >= 0).all() if name in ("dp", "greedy") else (m.path.node == -1).all()
@@ -94,7 +94,7 @@ def test_a_motion_of_every_member_is_written_and_read_back(sources, utt, setting
         out = tmp_path / f"{name}.h5"
         steps.synthesize(methods.get(name), source, utt, settings).motion.write(out, config="{}")
         search, provenance = Motion.read_search(out)
-        assert search.search == name and provenance.step.max() == len(utt) - 1
+        assert search.method == name and provenance.step.max() == len(utt) - 1
         assert check.check_file(out).problems == [], name
 
 
@@ -168,7 +168,7 @@ def test_fit_method_and_synthesize_through_the_command_line(tiny_db, tiny_corpus
     assert "coarticulation model:" in r.output and "(phone, emotion) types" in r.output
     r = CliRunner().invoke(main, ["synthesize", "--method", "coarticulation", str(model), "--phonemes", tg, "-o", str(out)])
     assert r.exit_code == 0, r.output
-    assert "frames by the coarticulation method" in r.output and Motion.read_search(out)[0].search == "coarticulation"
+    assert "frames by the coarticulation method" in r.output and Motion.read_search(out)[0].method == "coarticulation"
     r = CliRunner().invoke(main, ["synthesize", "--method", "mean", str(tiny_db), "--phonemes", tg, "--search", "dp",
                                   "-o", str(tmp_path / "x.h5")])
     assert r.exit_code == 2 and "the mean method does not take it" in r.output
@@ -177,7 +177,7 @@ def test_fit_method_and_synthesize_through_the_command_line(tiny_db, tiny_corpus
     assert r.exit_code == 1 and "coarticulation" in r.output and not (tmp_path / "y.h5").exists()
     r = CliRunner().invoke(main, ["synthesize", "--method", "greedy", str(tiny_db), "--phonemes", tg,
                                   "-o", str(tmp_path / "g.h5")])
-    assert r.exit_code == 0 and Motion.read_search(tmp_path / "g.h5")[0].search == "greedy"
+    assert r.exit_code == 0 and Motion.read_search(tmp_path / "g.h5")[0].method == "greedy"
 
 
 def test_tune_refuses_a_method_without_weights(tiny_db, tiny_artifacts, tmp_path):
@@ -278,7 +278,7 @@ def test_the_deprecated_search_names_warn_and_still_choose(tiny_db, tiny_corpus,
         out = tmp_path / f"m{len(list(tmp_path.iterdir()))}.h5"
         r = CliRunner().invoke(main, ["synthesize", str(tiny_db), "--phonemes", tg, "-o", str(out), *extra])
         assert r.exit_code == 0, r.output
-        return r.output, Motion.read_search(out)[0].search
+        return r.output, Motion.read_search(out)[0].method
 
     output, search = run("--search", "greedy")
     assert search == "greedy" and "warning: `--search` is deprecated" in output and "`--method greedy`" in output

@@ -122,10 +122,10 @@ def test_synthesis_writes_a_motion_that_deform_reads_and_is_deterministic(tiny_t
     _synth(tiny_trajectory, tg, tmp_path / "a.h5", config, emotions_path=tmp_path / "e.txt")
     _synth(tiny_trajectory, tg, tmp_path / "b.h5", config, emotions_path=tmp_path / "e.txt")
     a, b = Motion.read(tmp_path / "a.h5"), Motion.read(tmp_path / "b.h5")
-    assert a.source == "trajectory" and a.fps == 30 and a.capture_fps == 120
+    assert a.source == "synthesis" and a.fps == 30 and a.capture_fps == 120
     assert np.array_equal(a.markers, b.markers) and np.isfinite(a.markers).all()
     search, provenance = Motion.read_search(tmp_path / "a.h5")
-    assert search.search == "trajectory" and (search.node == -1).all() and (provenance.source_frame == -1).all()
+    assert search.method == "trajectory" and (search.node == -1).all() and (provenance.source_frame == -1).all()
     assert set(search.emotion) == {"sad"}
     with h5py.File(tmp_path / "a.h5") as f:
         assert f["keyshape_weights"].shape[0] == len(f["markers_capture"]) and (f["keyshape_weights"][()] >= -1e-6).all()
@@ -225,7 +225,7 @@ def test_the_cli_trains_and_synthesizes(tiny_db, tiny_corpus, held_out_take, tin
                                   "-o", str(tmp_path / "m.h5"), "--set", "trajectory.smoothness=5"])
     assert r.exit_code == 0 and "by the trajectory method" in r.output
     with h5py.File(tmp_path / "m.h5") as f:
-        assert f.attrs["source"] == "trajectory"
+        assert f.attrs["source"] == "synthesis" and f["path"].attrs["method"] == "trajectory"
 
 
 def test_evaluate_lists_the_trajectory_method(tiny_db, tiny_artifacts, tiny_trajectory, config, tmp_path):

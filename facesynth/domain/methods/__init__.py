@@ -3,7 +3,7 @@
 A method turns an utterance (:class:`~facesynth.domain.speech.utterance.Utterance`: phones with times in
 seconds and an emotion per phone, and, for the DP alone, motion-node constraints) into a
 :class:`~facesynth.model.motion.Motion` with the same fields and provenance whatever the method:
-markers at the output rate and at the capture rate, the per-phone path (``path.search`` names the
+markers at the output rate and at the capture rate, the per-phone path (``path.method`` names the
 method; ``path.node`` the chosen motion nodes, -1 where the method has none) and per capture-rate
 frame the input phone it belongs to (``provenance.step``).
 

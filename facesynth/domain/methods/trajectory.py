@@ -422,7 +422,7 @@ def synthesize_motion(model, utt, settings, output_fps: float, where: str = "the
     rotation = np.repeat(np.eye(3, dtype=np.float32)[None], n_out, axis=0)
     motion = Motion(markers, output_fps, markers_capture, model.fps, list(model.marker_names),
                     np.asarray(model.reference, np.float32), rotation, np.zeros((n_out, 3), np.float32), None, search,
-                    provenance, source="trajectory", keyshape_weights=weights.astype(np.float32),
+                    provenance, keyshape_weights=weights.astype(np.float32),
                     keyshape_names=list(model.keyshape_names))
     return motion, path
 
