@@ -15,7 +15,8 @@ settings: as configured (``default``: its iterations, tolerance and time), and t
 * ``arkit_rms``: the RMS error of the 52 ARKit weights against the truth
   (``groundtruth/<take>_truth.csv``) of the default solve and of the minimum (captured takes only).
 
-Pooled: means with a bootstrap 95% interval over takes.
+Pooled: means over takes with their bootstrap 95% interval, and paired differences on the same
+resamples (:mod:`facesynth.domain.evaluation.bootstrap`).
 
 To compare another version of the solve (a worktree of another commit, the same corpus), run this
 file there with ``--save DIR --no-minimum`` (its default solves' weights, one ``.npy`` per take
@@ -37,6 +38,7 @@ import numpy as np
 
 from facesynth.base.config import Config
 from facesynth.domain.corpus.truth import read_truth
+from facesynth.domain.evaluation.bootstrap import interval, paired_difference, resamples
 from facesynth.domain.postprocess.concatenation import downsample
 from facesynth.domain.retarget.solve import FacePriors, solve_curves
 from facesynth.domain.rig.loading import builtin_rig, marker_map
@@ -45,13 +47,10 @@ from facesynth.model.motiondb import MotionDatabase
 from facesynth.stages import capture, synthesize
 
 
-def boot(values, seed: int = 0, n: int = 2000) -> dict:
-    """Mean with a bootstrap 95% interval over the values (takes)."""
+def mean_of(values):
+    """The statistic (take indices -> float) of the mean of one value per take."""
     v = np.asarray(values, np.float64)
-    idx = np.random.default_rng(seed).integers(0, len(v), (n, len(v)))
-    means = v[idx].mean(1)
-    return {"mean": float(v.mean()), "ci95": [float(np.percentile(means, 2.5)), float(np.percentile(means, 97.5))],
-            "n": int(len(v))}
+    return lambda i: float(v[i].mean())
 
 
 def solve(motion: Motion, rig, settings, *, tolerance: float, iterations: int) -> tuple[np.ndarray, int, float]:
@@ -120,22 +119,30 @@ def main(argv: list[str]) -> int:
     pooled = {}
     for kind in ("captured", "synthesized"):
         mine = [r for r in rows if r["motion"] == kind]
-        pooled[kind] = {"iterations": boot([r["iterations"] for r in mine]),
-                        "seconds": boot([r["seconds"] for r in mine])}
+        index = resamples(len(mine), 2000, 0)
+
+        def over_takes(get) -> dict:
+            return interval(mean_of([get(r) for r in mine]), len(mine), index)
+
+        pooled[kind] = {"iterations": over_takes(lambda r: r["iterations"]),
+                        "seconds": over_takes(lambda r: r["seconds"])}
         if args.no_minimum:
             continue
         for key in ("to_minimum", "against"):
             if key in mine[0]:
                 for stat in ("max", "rms"):
-                    pooled[kind][f"{key}_{stat}"] = boot([r[key][stat] for r in mine])
+                    pooled[kind][f"{key}_{stat}"] = over_takes(lambda r, key=key, stat=stat: r[key][stat])
         if "against" in mine[0]:
-            pooled[kind]["against_minus_default_max"] = boot([r["against"]["max"] - r["to_minimum"]["max"] for r in mine])
+            pooled[kind]["against_minus_default_max"] = paired_difference(
+                mean_of([r["against"]["max"] for r in mine]), mean_of([r["to_minimum"]["max"] for r in mine]),
+                len(mine), index)
         if kind == "captured":
             for name in mine[0]["arkit_rms"]:
-                pooled[kind][f"arkit_rms_{name}"] = boot([r["arkit_rms"][name] for r in mine])
+                pooled[kind][f"arkit_rms_{name}"] = over_takes(lambda r, name=name: r["arkit_rms"][name])
             if "against" in mine[0]["arkit_rms"]:
-                pooled[kind]["arkit_rms_against_minus_default"] = boot(
-                    [r["arkit_rms"]["against"] - r["arkit_rms"]["default"] for r in mine])
+                pooled[kind]["arkit_rms_against_minus_default"] = paired_difference(
+                    mean_of([r["arkit_rms"]["against"] for r in mine]),
+                    mean_of([r["arkit_rms"]["default"] for r in mine]), len(mine), index)
     json.dump({"settings": {"iterations": settings.iterations, "tolerance": settings.tolerance,
                             "smooth": settings.smooth, "ridge": settings.ridge},
                "takes": rows, "pooled": pooled}, sys.stdout, indent=1)

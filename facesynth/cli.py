@@ -602,21 +602,21 @@ def suggest(ctx: Context, db: Path, phonemes: Path, at_s: float, emotions, const
     if top < 1:
         raise click.BadParameter(f"{top}: list at least one suggestion.", param_hint="--top")
     found = ctx.core(db, phonemes, at_s, ctx.config.settings("synthesize"), ctx.config.settings("ingest"),
-                          emotions, constraints).suggestions
-    rows = found.rows
-    listed = ctx.stage_module.shown(rows, top, context_only)
+                     emotions, constraints).suggestions
+    rows, stage = found.rows, ctx.stage_module
+    listed = stage.shown(rows, top, context_only)
     if not listed:  # only --context-only can leave nothing: every phone has at least one node
-        raise InputError(ctx.stage_module.no_context_message(found, at_s) + "; drop --context-only to see the time-correct nodes.")
+        raise InputError(stage.no_context_message(found, at_s) + "; drop --context-only to see the time-correct nodes.")
     ctx.say(f"phone {found.index} /{found.phone}/ in context {found.context}, relative time {found.relative_time:.2f}; "
             f"unconstrained optimum {found.optimum:.2f} uses node {found.optimal_node}")
     if not any(r.context_correct for r in rows):
-        ctx.say("warning: " + ctx.stage_module.no_context_message(found, at_s) + ".")
-    for line in ctx.stage_module.table(rows, top, context_only):
+        ctx.say("warning: " + stage.no_context_message(found, at_s) + ".")
+    for line in stage.table(rows, top, context_only):
         click.echo(line)
     best = listed[0]
     ctx.say(f"best: rank 1 (the first row under the header), node {best.node}, "
             f"{'context-correct' if best.context_correct else 'time-correct only'}, cost {best.cost:.2f}; to use it:")
-    ctx.say(f"  {ctx.stage_module.use_line(at_s, best, constraints)}")
+    ctx.say(f"  {stage.use_line(at_s, best, constraints)}")
     emotion_option = f" --emotions {emotions}" if emotions else ""
     ctx.say(f"  facesynth synthesize {db} --phonemes {phonemes}{emotion_option} "
             f"--constraints {constraints or 'constraints.txt'} -o constrained.h5")

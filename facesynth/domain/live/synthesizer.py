@@ -224,9 +224,10 @@ class LiveSynthesizer:
 
     def add_phone(self, phone: str, start: float, end: float, ipa: str = "") -> None:
         """Append a phone (Festival name, seconds; ``ipa``: the IPA phone it stands for in a
-        stream in another language, matched by its features, ``synthesize.phone_match``). A start after the last end is preceded by a
-        pause; a start before it is moved to it (the recogniser's boundaries can shift by a
-        frame); a phone that ends no later than the last end is ignored."""
+        stream in another language, matched by its features, ``synthesize.phone_match``). A start
+        after the last end is preceded by a pause; a start before it is moved to it (the
+        recogniser's boundaries can shift by a frame); a phone that ends no later than the last
+        end is ignored."""
         if self.finished:
             raise InputError("the stream has ended; start a new stream for the next utterance.")
         if self.phones_complete:
