@@ -43,6 +43,9 @@ from them on the built-in actress's database (``small`` preset, seed 0), at 30 f
 - ``live``: the mouth ``stream`` sends with ``stream.voice = "articulation"``
   (:class:`facesynth.domain.live.voice_frames.VoiceFrames`, 20 ms chunks, the fold's model), as its
   inner-lip gap; ``live_jaw``: its jawOpen weight; ``live_packaged``: the same with the packaged model.
+- ``live_phones``: the mouth ``stream`` sends with ``stream.voice = "off"`` (the phones
+  pocketsphinx's phone loop recognises as the audio arrives, through the live DP), its inner-lip
+  gap; ``live_default``: ``live_packaged`` or ``live_phones``, as ``stream.voice`` is configured.
 - ``packaged``: ``default`` with the packaged model (within-speaker on the speakers it was fitted
   on; with ``--packaged-folds`` such a speaker is scored by the packaged fit refitted without it).
 
@@ -70,7 +73,7 @@ import hashlib
 import json
 import sys
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import numpy as np
@@ -94,7 +97,7 @@ FPS = bench.FPS
 TARGETS = ("opening", "closure", "closing", "jawOpen", "mouthFunnel", "mouthPucker")
 #: Every mode, in table order (module docstring).
 MODES = ("default", "articulation", "loudness", "phones", "openfacefx", "energy", "voice", "voice_jaw", "live",
-         "live_jaw", "live_packaged",
+         "live_jaw", "live_packaged", "live_phones", "live_default",
          "packaged", "given_default", "given_articulation", "given_loudness", "given_phones", "given_packaged")
 FACEGOOD_SPEAKER = "facegood/shirley"
 #: FACEGOOD's takes used for no choice (docs/real-speech.md).
@@ -321,8 +324,6 @@ def phones_motion(db_path: Path, u: Utt, work: Path, given: bool = False):
 def voice_step(motion, u: Utt, phones, settings, model_path: Path, recognized: bool, path: str, **changes):
     """The mouth opening (n,) of ``motion`` after the voice step ``path`` with the model at ``model_path``
     (and the synthesize settings ``changes``)."""
-    from dataclasses import replace
-
     from facesynth.domain.voice import fusion
 
     s = replace(settings, articulation_model=str(model_path), voice_recognized=path, voice_given=path, **changes)
@@ -359,6 +360,29 @@ def live_curves(live_model, model, u: Utt, settings, lip_markers) -> dict[str, n
     return {"live": bench.fit_length(gap, u.n), "live_jaw": bench.fit_length(jaw, u.n)}
 
 
+def live_phones_curve(live_model, align, u: Utt, lip_markers) -> np.ndarray:
+    """The inner-lip gap (n,) at FPS of the mouth ``stream`` sends with ``stream.voice = "off"``
+    (``live_model`` built so: the phones pocketsphinx's phone loop recognises as the audio arrives,
+    through the live DP) from ``u``'s audio alone, fed to a
+    :class:`facesynth.domain.live.session.Session` in 20 ms chunks of 16-bit PCM as a client sends it."""
+    from facesynth.domain.live.session import SAMPLE_RATE, Session
+    from facesynth.formats.audio import resample
+
+    x = np.asarray(u.samples, np.float64)
+    if u.rate != SAMPLE_RATE:
+        x = resample(x, u.rate, SAMPLE_RATE)
+    pcm = (np.clip(x, -1.0, 1.0) * 32767.0).astype("<i2").tobytes()
+    session = Session(live_model, align, u.key)
+    session.control(json.dumps({"type": "start", "markers": True}))
+    messages, step = [], 2 * SAMPLE_RATE // 50
+    for a in range(0, len(pcm), step):
+        messages += session.audio(pcm[a:a + step])
+    messages += session.end()
+    markers = np.array([m["markers"] for m in messages if m["type"] == "frame"]).reshape(-1, len(live_model.marker_names), 3)
+    gap = lip_gaps(markers, list(live_model.marker_names), tuple(lip_markers))
+    return bench.fit_length(gap, u.n)
+
+
 # ---------------------------------------------------------------- scoring
 
 def window_scores(method: np.ndarray, real: np.ndarray, n: int, window_s: float) -> list[float]:
@@ -372,9 +396,11 @@ def window_scores(method: np.ndarray, real: np.ndarray, n: int, window_s: float)
     return out
 
 
-def summarize(per_speaker: dict[str, dict[str, list[float]]], resample_count: int, seed: int) -> dict:
+def summarize(per_speaker: dict[str, dict[str, list[float]]], resample_count: int, seed: int,
+              lead: str = "default", pairs: tuple[tuple[str, str], ...] = ()) -> dict:
     """Per speaker the mean window r of every mode; pooled, the mean over speakers with a 95%
-    interval over resampled speakers, and the paired differences of ``default`` against every mode."""
+    interval over resampled speakers, and the paired differences of ``lead`` against every mode
+    (and of each of ``pairs``, first minus second)."""
     speakers = sorted(per_speaker)
     extra = sorted({m for s in speakers for m in per_speaker[s] if m not in MODES})  # the sweep's points
     modes = [m for m in (*MODES, *extra) if all(m in per_speaker[s] for s in speakers)]
@@ -393,12 +419,10 @@ def summarize(per_speaker: dict[str, dict[str, list[float]]], resample_count: in
     for m, v in table.items():
         cell = interval(stat(v), k, idx)
         pooled[m] = rounded(cell if k >= 3 else {**cell, "low": None, "high": None})
-    lead = "default" if "default" in table else "voice"
-    for m, v in table.items():
-        if m == lead:
-            continue
-        cell = paired_difference(stat(table[lead]), stat(v), k, idx)
-        paired[f"{lead} - {m}"] = rounded(cell if k >= 3 else {**cell, "low": None, "high": None})
+    lead = lead if lead in table else "voice"
+    for a, b in [(lead, m) for m in table if m != lead] + [p for p in pairs if p[0] in table and p[1] in table]:
+        cell = paired_difference(stat(table[a]), stat(table[b]), k, idx)
+        paired[f"{a} - {b}"] = rounded(cell if k >= 3 else {**cell, "low": None, "high": None})
     if "given_default" in table:  # the text-and-audio default against the other given modes
         for m in ("given_articulation", "given_loudness", "given_phones", "given_packaged", "default"):
             if m in table:
@@ -421,9 +445,10 @@ def summarize(per_speaker: dict[str, dict[str, list[float]]], resample_count: in
 # ---------------------------------------------------------------- folds
 
 def fit_fold(train: dict[str, list[Utt]], ref, variant: str, synthetic: int | dict[str, int],
-             seed: int) -> A.ArticulationModel:
+             seed: int, feature_names: tuple[str, ...] = A.FEATURE_NAMES) -> A.ArticulationModel:
     """The model fitted on the speakers ``train`` ({speaker: utterances}) with ``variant``'s settings
-    (and ``synthetic`` synthetic speakers made from each one's voice: a count, or one per speaker)."""
+    (and ``synthetic`` synthetic speakers made from each one's voice: a count, or one per speaker),
+    on the utterances' raw features ``u.raw`` whose columns are ``feature_names``."""
     pairs = [(u, y) for speaker in sorted(train) for u, y in zip(train[speaker], speaker_targets(train[speaker], ref))]
     counts = synthetic if isinstance(synthetic, dict) else {s: synthetic for s in train}
     known = np.array([np.isfinite(np.concatenate([y[:, j] for _, y in pairs])).any() for j in range(len(TARGETS))])
@@ -438,7 +463,7 @@ def fit_fold(train: dict[str, list[Utt]], ref, variant: str, synthetic: int | di
     takes = [A.Take(u.raw, y[:, known], FPS) for u, y in pairs]
     for u, y in pairs:
         takes += [A.Take(raw, y[:, known], FPS) for raw in synthetic_features(u, counts.get(u.speaker, 0), seed)]
-    return A.fit(takes, names, **VARIANTS[variant])
+    return A.fit(takes, names, feature_names=feature_names, **VARIANTS[variant])
 
 
 def synthetic_features(u: Utt, count: int, seed: int) -> list[np.ndarray]:
@@ -628,7 +653,8 @@ def main(argv=None) -> dict:
     ref = reference_ranges([u for u in utts if u.speaker == FACEGOOD_SPEAKER] or utts)
     real = sorted({u.speaker for u in utts if u.real_voice})
     scored = args.speakers.split(",") if args.speakers else real
-    db = rig = lip_vertices = live_model = None
+    db = rig = lip_vertices = live_model = phones_live_model = None
+    stream = config.settings("stream")
     if not args.no_chain:
         from facesynth.domain.live.synthesizer import LiveModel
         from facesynth.domain.rig.face import load_face_rig
@@ -639,7 +665,9 @@ def main(argv=None) -> dict:
         rig = load_face_rig()
         binding = read_binding(args.work / "corpus" / "markers.csv")
         lip_vertices = np.array([binding[m] for m in lip_markers])
-        live_model = LiveModel(MotionDatabase.read(db), settings, config.settings("stream"), config.settings("solve"))
+        database = MotionDatabase.read(db)
+        live_model = LiveModel(database, settings, stream, config.settings("solve"))
+        phones_live_model = LiveModel(database, settings, replace(stream, voice="off"), config.settings("solve"))
     packaged = bench.ARTICULATION_MODEL
     ship_sources = args.ship_sources.split(",")
     packaged_model = A.ArticulationModel.read(packaged)
@@ -739,6 +767,9 @@ def main(argv=None) -> dict:
                     curves.update(live_curves(live_model, model, u, settings, settings.loudness_lip_markers))
                     shipped = live_curves(live_model, packaged_model, u, settings, settings.loudness_lip_markers)
                     curves["live_packaged"] = shipped["live"]
+                    curves["live_phones"] = live_phones_curve(phones_live_model, config.settings("align"), u,
+                                                              settings.loudness_lip_markers)
+                    curves["live_default"] = curves["live_packaged" if stream.voice == "articulation" else "live_phones"]
                 if u.given_phones is not None or u.text:
                     gm, gp = phones_motion(db, u, args.work, given=True)
                     curves["given_phones"] = opening_of(gm, settings, u.n)
@@ -755,6 +786,14 @@ def main(argv=None) -> dict:
     packaged_fit = write_packaged(by_speaker, args.ship_sources.split(","), ref, args.variant, args.synthetic,
                                   args.seed, args.model_out, not args.no_balance) if args.model_out else None
     summary = summarize(per_speaker, args.resamples, args.seed)
+    # what ships, on the speakers of the sources the packaged model was not fitted on
+    unheard = {s: v for s, v in per_speaker.items() if by_speaker[s][0].source not in ship_sources}
+    summary["never_heard_by_packaged"] = summarize(
+        unheard, args.resamples, args.seed, lead="packaged",
+        pairs=(("live_default", "packaged"), ("live_default", "live_phones"), ("live_packaged", "live_phones"),
+               ("live_phones", "phones"))) if unheard and not args.no_chain else None
+    if summary["never_heard_by_packaged"]:
+        del summary["never_heard_by_packaged"]["per_speaker"]  # in per_speaker above
     return {"benchmark": "voice_speakers", "folds": args.folds, "variant": args.variant, "fit": VARIANTS[args.variant],
             "features": args.features, "warp_per": args.warp_per if "vtln" in args.features or "warp" in args.features else None,
             "warps": {s: [round(float(np.mean(w)), 3), round(float(np.min(w)), 3), round(float(np.max(w)), 3)]

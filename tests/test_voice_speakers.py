@@ -1,6 +1,7 @@
 """Pieces of the leave-speakers-out voice benchmarks (benchmarks/voice_speakers.py,
-benchmarks/voice_features.py) that decide what is scored: GRID's sentences read from its file
-names, the channel-free slopes of the bands, and the paired comparison of feature runs."""
+benchmarks/voice_features.py, benchmarks/voice_posteriors.py) that decide what is scored: GRID's
+sentences read from its file names, the channel-free slopes of the bands, the paired comparison of
+feature runs, and the recogniser's acoustic model read from its files."""
 
 from __future__ import annotations
 
@@ -67,3 +68,29 @@ def test_feature_runs_are_compared_paired_with_the_mel_run_of_their_folds():
     assert diff["value"] == pytest.approx(0.05) and diff["low"] == pytest.approx(0.05)
     assert out[1]["minus_mel_per_source"] == {"src0": pytest.approx(0.05), "src1": pytest.approx(0.05)}
     assert out[1]["mean_warp"] == {"F": 1.1, "M": 0.9}
+
+
+def test_the_recognisers_acoustic_model_is_read_as_pocketsphinx_wrote_it(tiny_corpus):
+    """benchmarks/voice_posteriors.py reads pocketsphinx's own model files: 42 phones of 3 states,
+    each state's 128 mixture weights summing to 1 (to their 8-bit quantization) in every stream,
+    and its most likely phone per frame agreeing with the actress's labels far above chance."""
+    from facesynth.base.phonemes import to_festival
+    from facesynth.domain.voice import articulation as A
+    from facesynth.formats.audio import read_audio
+    from facesynth.formats.labels import read_textgrid
+
+    posteriors = load("voice_posteriors")
+    scorer = posteriors.PhoneScorer(posteriors.model_folder())
+    assert len(scorer.phones) == 42 and scorer.states == 3 and "SIL" in scorer.phones
+    sums = np.exp(scorer.weights).sum(-1)  # (streams, phones, states)
+    assert sums.shape == (3, 42, 3) and 0.9 < sums.min() and sums.max() <= 1.0
+    festival = [to_festival(p) for p in scorer.phones]
+    hits = frames = 0
+    for wav in sorted((tiny_corpus / "audio").glob("*.wav"))[:3]:
+        samples, rate = read_audio(wav)
+        best = scorer.log_likelihoods(A.to_analysis_rate(samples, rate)).argmax(1)
+        for seg in read_textgrid(tiny_corpus / "labels" / f"{wav.stem}.TextGrid")["phones"]:
+            said = best[int(seg.start * 100):int(seg.end * 100)]
+            hits += sum(festival[k] == seg.label for k in said)
+            frames += len(said)
+    assert hits / frames > 0.1  # chance: 1 in 40

@@ -46,9 +46,9 @@ def stream_url(tiny_db):
     """A ``facesynth stream --serve 127.0.0.1:0`` server on the tiny database, in a thread of
     this process (each page that connects is its own session); its WebSocket URL."""
     config = Config.load()
-    # the voice's frames, which arrive at the speech's own pace: with the default (stream.voice
-    # "off") the recognised phones' frames come a second late in bursts, and a headless Chromium
-    # on a loaded machine shows too few of them for the mouth checks below
+    # the voice's frames (the default, set here whatever the configuration), which arrive at the
+    # speech's own pace: with stream.voice "off" the recognised phones' frames come a second late in
+    # bursts, and a headless Chromium on a loaded machine shows too few of them for the mouth checks below
     stream = dataclasses.replace(config.settings("stream"), voice="articulation")
     model = LiveModel(MotionDatabase.read(tiny_db), config.settings("synthesize"), stream, config.settings("solve"))
     loop = asyncio.new_event_loop()

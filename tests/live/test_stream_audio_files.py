@@ -5,9 +5,10 @@
 
 Measured: the jawOpen curve of every coded file follows the WAV's at r 0.993 (MP3 at 96 kb/s),
 0.995 (AAC at 96 kb/s, M4A and MP4) and 0.997 (Opus at 48 kb/s), every frame within 0.05; the
-test asks r > 0.98. The streams take the voice's frames (``stream.voice = "articulation"``), whose
-mouth follows the sound frame by frame, so the comparison measures the decoder; the default's
-frames come from the recognised phones, which a codec can tip one way or the other.
+test asks r > 0.98. The streams take the voice's frames (``stream.voice = "articulation"``, the
+default, set whatever the configuration), whose mouth follows the sound frame by frame, so the
+comparison measures the decoder; with ``"off"`` the frames come from the recognised phones, which a
+codec can tip one way or the other.
 """
 
 from __future__ import annotations

@@ -166,6 +166,27 @@ def test_model_of_other_features_is_refused():
         A.predict(dataclasses.replace(model, hop=80), x, RATE, 10, FPS)
 
 
+def test_a_benchmark_may_append_feature_columns_that_the_product_refuses():
+    """Columns after the voice features (a benchmark's trial) are learned from, and a model of them
+    never runs where facesynth computes the features itself."""
+    x = speechlike(6.0)
+    raw = A.frame_features(x, RATE)
+    n = int(6.0 * FPS)
+    extra = np.sin(2 * np.pi * 0.7 * np.arange(len(raw)) * A.FRAME_S)[:, None].astype(np.float32)
+    target = np.interp(np.arange(n) / FPS, np.arange(len(raw)) * A.FRAME_S, extra[:, 0])
+    names = A.FEATURE_NAMES + ("trial",)
+    with_extra = np.concatenate([raw, extra], 1)
+    model = A.fit([A.Take(with_extra, np.stack([target, -target], 1), FPS)], ("opening", "mouthFunnel"),
+                  feature_names=names, alpha=0.01)
+    assert tuple(model.feature_names) == names
+    predicted = A.predict_raw(model, with_extra, np.arange(n) / FPS)[:, 0]
+    assert np.corrcoef(predicted, target)[0, 1] > 0.99  # the appended column is what it learned
+    with pytest.raises(ArtifactError, match="other voice features"):
+        A.predict(model, x, RATE, n, FPS)
+    with pytest.raises(InputError, match="first"):
+        A.fit([A.Take(with_extra, np.zeros((n, 1)), FPS)], ("opening",), feature_names=("trial",) + A.FEATURE_NAMES)
+
+
 def test_fit_refuses_mismatched_targets():
     raw = A.frame_features(speechlike(1.0), RATE)
     with pytest.raises(InputError, match="expected"):

@@ -594,7 +594,8 @@ def ridge(x: np.ndarray, y: np.ndarray, alpha: float, prior: np.ndarray | None =
 
 def fit(takes: list[Take], target_names: tuple[str, ...] | list[str], *, offsets_s=DEFAULT_OFFSETS_S,
         pool: int = 3, alpha: float = 1.0, normalization: str = "running", tau_s: float = 3.0,
-        expand: bool = True, prior: ArticulationModel | None = None, prior_strength: float = 0.0) -> ArticulationModel:
+        expand: bool = True, prior: ArticulationModel | None = None, prior_strength: float = 0.0,
+        feature_names: tuple[str, ...] = FEATURE_NAMES) -> ArticulationModel:
     """The model fitted on ``takes`` (their targets' columns named ``target_names``): the
     normalizer's training statistics from the takes' frames with speech, then :func:`ridge` on
     the context. The defaults are the settings chosen by leave-one-take-out within FACEGOOD's
@@ -603,7 +604,13 @@ def fit(takes: list[Take], target_names: tuple[str, ...] | list[str], *, offsets
     With a ``prior`` model (the packaged, general one) and ``prior_strength`` > 0 the fit adapts
     it: the prior's context (offsets, pooling, loudness columns) and its normalization's training
     statistics, and every target the prior predicts pulled toward the prior's coefficients by
-    ``prior_strength`` (:func:`ridge`); targets it lacks are fitted as without it."""
+    ``prior_strength`` (:func:`ridge`); targets it lacks are fitted as without it.
+
+    ``feature_names``: the columns of the takes' raw features, :data:`FEATURE_NAMES` (what
+    :func:`frame_features` computes) or those followed by columns of other features (a benchmark's
+    trial: :func:`check_model` refuses such a model wherever facesynth computes the features)."""
+    if tuple(feature_names[:N_FEATURES]) != FEATURE_NAMES:
+        raise InputError(f"the first {N_FEATURES} feature columns must be those frame_features computes.")
     if prior is not None and prior_strength > 0:
         check_model(prior, "the prior articulation model")
         offsets_s, pool, expand = tuple(np.asarray(prior.offsets_s, np.float64)), int(prior.pool), bool(prior.expand)
@@ -615,15 +622,15 @@ def fit(takes: list[Take], target_names: tuple[str, ...] | list[str], *, offsets
         if np.ndim(t.targets) != 2 or np.shape(t.targets)[1] != len(target_names):
             raise InputError(f"take {i}: targets have shape {np.shape(t.targets)}, expected (T, {len(target_names)}) "
                              "for the target names given.")
-        if np.ndim(t.raw) != 2 or np.shape(t.raw)[1] != N_FEATURES:
-            raise InputError(f"take {i}: raw features have shape {np.shape(t.raw)}, expected (K, {N_FEATURES}).")
+        if np.ndim(t.raw) != 2 or np.shape(t.raw)[1] != len(feature_names):
+            raise InputError(f"take {i}: raw features have shape {np.shape(t.raw)}, expected (K, {len(feature_names)}).")
     norm = Normalizer(mode=normalization, tau_s=tau_s).fit([t.raw for t in takes])
     if prior is not None:  # the prior's columns mean what they meant when it was fitted
         norm.mean, norm.std = np.asarray(prior.feature_mean, np.float64), np.asarray(prior.feature_std, np.float64)
-    width = len(offsets_s) * (N_FEATURES + (N_EXPANDED if expand else 0))
+    width = len(offsets_s) * (len(feature_names) + (N_EXPANDED if expand else 0))
     model = ArticulationModel(
         list(target_names), np.asarray(offsets_s, np.float64), int(pool), norm.mode, float(norm.tau_s),
-        float(norm.gate), float(norm.peak_decay), list(FEATURE_NAMES), norm.mean, norm.std,
+        float(norm.gate), float(norm.peak_decay), list(feature_names), norm.mean, norm.std,
         np.zeros((width, len(target_names))), np.zeros(len(target_names)), float(alpha),
         np.zeros(len(target_names)), np.zeros(len(target_names)), bool(expand), np.asarray(KNOTS, np.float64),
         RATE, HOP, WIN)
