@@ -349,6 +349,7 @@ def export(animation: StrPath | Motion | MeshAnimation | RigCurves, format: str,
     out = Path(output)
     with _limits(cfg):
         form = exporting.chosen_format(format, out, _path(audio), overwrite)
+        speech = exporting.speech_beside(_path(audio))
         animation_path = _file(animation)
         if animation_path is not None:
             anim = load(animation_path)
@@ -356,7 +357,7 @@ def export(animation: StrPath | Motion | MeshAnimation | RigCurves, format: str,
             assert isinstance(animation, (Motion, MeshAnimation, RigCurves))
             anim = of_artifact(animation, Path(f"the {_KIND_WHAT[animation.KIND]} given"))
         _, files = exporting.export(form, anim, out, cfg.settings("export"), fps=fps, head_motion=head_motion,
-                                    audio=_path(audio), mesh=_path(mesh), overwrite=overwrite)
+                                    audio=speech, mesh=_path(mesh), overwrite=overwrite)
     return list(files)
 
 

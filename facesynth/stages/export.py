@@ -53,8 +53,10 @@ def run(artifact: Path, fmt: str, output: Path, settings: ExportSettings, *, fps
     """Export ``artifact`` as ``fmt`` (a registered export format) to ``output``.
 
     The steps are the ones :mod:`facesynth.api` calls (:func:`exporting.chosen_format`,
-    :func:`exporting.export`), so the command and the API write the same files."""
+    :func:`exporting.speech_beside`, :func:`exporting.export`), so the command and the API write
+    the same files."""
     form = exporting.chosen_format(fmt, output, audio, overwrite)
+    speech = exporting.speech_beside(audio)
     anim, files = exporting.export(form, load(artifact), output, settings, fps=fps, head_motion=head_motion,
-                                   audio=audio, mesh=mesh, overwrite=overwrite)
+                                   audio=speech, mesh=mesh, overwrite=overwrite)
     return ExportResult(anim.n_frames, anim.fps, anim.duration_s, files, anim.kind)

@@ -324,16 +324,21 @@ def test_ctrl_c_between_the_scene_and_its_audio_leaves_neither(made, tmp_path, m
 
 
 @pytest.mark.parametrize("name", COMPRESSED)
-def test_gltf_audio_from_coded_speech_is_a_wav_of_its_sound(made, coded_speech, tmp_path, name):
+def test_gltf_audio_from_coded_speech_is_a_wav_of_its_sound(made, coded_speech, tmp_path, name, monkeypatch):
     """``export --audio`` with the sentence as M4A, MP3, Opus, Ogg or an MP4: the file beside the
     glTF is a 16-bit WAV of the decoded sound (not the file's bytes under a .wav name), at the
-    file's own rate, the WAV's sound within the codec's error (r > 0.99 at 16 kHz)."""
+    file's own rate, the WAV's sound within the codec's error (r > 0.99 at 16 kHz), decoded once."""
     import soundfile as sf
 
+    from facesynth.formats import audio
     from facesynth.formats.audio import read_audio, resample
 
+    decodes = []
+    real_decode = audio._read_ffmpeg
+    monkeypatch.setattr(audio, "_read_ffmpeg", lambda path: decodes.append(path) or real_decode(path))
     out = tmp_path / "face.glb"
     ok("export", made["curves"], "--format", "glb", "--audio", coded(coded_speech, name), "-o", out)
+    assert len(decodes) == 1
     info = sf.info(tmp_path / "face.wav")
     assert (info.format, info.subtype, info.channels) == ("WAV", "PCM_16", 1)
     got, rate = read_audio(tmp_path / "face.wav")

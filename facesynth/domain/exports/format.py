@@ -161,12 +161,21 @@ def chosen_format(fmt: str, output: Path, audio: Path | None = None, overwrite: 
         check_output(output, overwrite)
     if audio is not None:
         check_output(audio_path(output), overwrite)
-        read_audio(audio)  # audio that cannot be read is refused before anything is written
     return form
 
 
+def speech_beside(audio: Path | None) -> Path | tuple[np.ndarray, int] | None:
+    """The speech :func:`export` writes beside its output, read once before anything is written
+    (audio that cannot be read is refused here): a WAV's path (copied as it is), any other sound
+    file or video decoded (samples, rate), None without audio."""
+    if audio is None:
+        return None
+    decoded = read_audio(audio)
+    return Path(audio) if is_wav(Path(audio)) else decoded
+
+
 def export(form: ExportFormat, anim: Exportable, output: Path, settings: ExportSettings, *, fps: float | None = None,
-          head_motion: bool = False, audio: Path | None = None, mesh: Path | None = None,
+          head_motion: bool = False, audio: Path | tuple[np.ndarray, int] | None = None, mesh: Path | None = None,
           overwrite: bool = False) -> tuple[Exportable, list[Path]]:
     """What ``facesynth export`` and :func:`facesynth.export` write: ``anim`` (with the faces of
     ``mesh`` when given) written as ``form`` at ``output``, at ``fps`` or the format's rate
