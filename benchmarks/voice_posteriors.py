@@ -41,6 +41,7 @@ from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
 import numpy as np
+import scipy.fft
 
 from facesynth.domain.evaluation.bootstrap import interval, paired_difference, resamples
 from facesynth.domain.voice import articulation as A
@@ -137,8 +138,6 @@ class PhoneScorer:
         padded = np.concatenate([np.zeros(WINDOW // 2), x, np.zeros(WINDOW)])
         frames = np.lib.stride_tricks.sliding_window_view(padded, WINDOW)[::HOP][:k]
         power = np.abs(np.fft.rfft(frames * np.hamming(WINDOW), NFFT, axis=1)) ** 2
-        import scipy.fft
-
         cep = scipy.fft.dct(np.log(np.maximum(power @ self.filters.T, 1e-5)), type=2, norm="ortho", axis=1)[:, :N_CEPSTRA]
         cep *= 1 + LIFTER / 2 * np.sin(np.arange(N_CEPSTRA) * np.pi / LIFTER)
         cep -= cep.mean(0)
