@@ -2,7 +2,7 @@
 
     .venv/bin/python benchmarks/retarget_accuracy.py --corpus out/corpus --corpus-h5 out/corpus.h5 \
         --db out/db.h5 [--corpus ... --corpus-h5 ... --db ... (more corpora)] [--takes 0] \
-        [--counts 7,14,20,30] > benchmarks/retarget_accuracy.json
+        [--counts 7,14,20,30] [--set solve.sparsity=0 ...] > benchmarks/retarget_accuracy.json
 
 Several corpora (e.g. sample corpora of other seeds) pool their held-out takes; key-shapes and
 keymorphs of each come from its own database. Runs about 7 minutes per small-preset corpus on
@@ -144,10 +144,12 @@ def main(argv: list[str]) -> int:
     p.add_argument("--takes", type=int, default=0, help="held-out takes per corpus to score (0: all)")
     p.add_argument("--counts", default="7,14,20,30")
     p.add_argument("--methods", default="pca,affinity")
+    p.add_argument("--set", action="append", default=[], metavar="SECTION.KEY=VALUE",
+                   help="a setting changed from the defaults (repeatable), e.g. solve.sparsity=0")
     args = p.parse_args(argv)
     if not len(args.corpus) == len(args.corpus_h5) == len(args.db):
         p.error("give --corpus, --corpus-h5 and --db once per corpus")
-    config = Config.load()
+    config = Config.load(overrides=tuple(args.set))
     rig = load_face_rig()
     ms = build_marker_set(rig)
     tmp = Path(tempfile.mkdtemp())
@@ -161,7 +163,8 @@ def main(argv: list[str]) -> int:
 
     target = builtin_rig()
     ssolve = config.settings("solve")
-    result = {"corpora": {f"c{i}": str(c) for i, c in enumerate(args.corpus)}, "takes": list(takes), "fps": fps,
+    result = {"corpora": {f"c{i}": str(c) for i, c in enumerate(args.corpus)},
+              **({"settings_changed": args.set} if args.set else {}), "takes": list(takes), "fps": fps,
               "vertices": int(len(rig.neutral)), "rows": [], "baselines": {}}
     per = {k: [] for k in ("solve_rms", "solve_corr", "solve_mesh", "deform_mesh", "truth_gap", "solve_gap", "deform_gap",
                            "truth_closed", "solve_closed", "deform_closed", "syn_solve_resid", "syn_solve_gap")}
