@@ -94,3 +94,18 @@ def test_the_recognisers_acoustic_model_is_read_as_pocketsphinx_wrote_it(tiny_co
             hits += sum(festival[k] == seg.label for k in said)
             frames += len(said)
     assert hits / frames > 0.1  # chance: 1 in 40
+
+
+def test_speakers_are_summarized_against_a_chosen_mode_and_in_named_pairs():
+    """The summary of the speakers the packaged model never heard pairs every mode against the
+    shipped default (``packaged``) and the live modes against each other, speakers resampled."""
+    rng = np.random.default_rng(0)
+    per = {f"src/s{i}": {"packaged": [0.3 + 0.01 * i], "phones": [0.3 + 0.01 * i + rng.normal(0, 0.01)],
+                         "live_default": [0.2 + 0.01 * i], "live_phones": [0.1 + 0.01 * i], "voice": [0.25]}
+           for i in range(8)}
+    out = speakers.summarize(per, 500, 0, lead="packaged", pairs=(("live_default", "live_phones"),))
+    assert out["speakers"] == 8
+    assert out["paired"]["packaged - live_default"]["value"] == pytest.approx(0.1)
+    live = out["paired"]["live_default - live_phones"]
+    assert live["value"] == pytest.approx(0.1) and live["low"] == pytest.approx(0.1)  # the same gap on every speaker
+    assert "default - phones" not in out["paired"] and "packaged - phones" in out["paired"]
