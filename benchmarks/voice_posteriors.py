@@ -124,10 +124,8 @@ class PhoneScorer:
         self.mean_scaled = means * self.inverse
         self.constant = -0.5 * (np.log(2 * np.pi * variances).sum(-1) + (means * means * self.inverse).sum(-1))
         self.weights = weights.transpose(0, 2, 1).reshape(self.n_streams, n_phones, self.states, n_densities)
-        edges = _mel_inverse(np.linspace(_mel(LOWER_HZ), _mel(UPPER_HZ), N_FILTERS + 2))
-        freqs = np.arange(NFFT // 2 + 1) * RATE / NFFT
-        self.filters = np.stack([np.clip(np.minimum((freqs - a) / (b - a), (c - freqs) / (c - b)), 0, None) * 2 / (c - a)
-                                 for a, b, c in zip(edges[:-2], edges[1:-1], edges[2:])])
+        # the model's filters have unit area in Hz; the voice features' filters sum to 1 over bins
+        self.filters = A.mel_filterbank(N_FILTERS, NFFT, RATE, LOWER_HZ, UPPER_HZ) * (NFFT / RATE)
 
     def features(self, samples: np.ndarray) -> np.ndarray:
         """(K, streams, 13) cepstra, deltas and double deltas of 16 kHz samples; frame k centred at
@@ -162,14 +160,6 @@ class PhoneScorer:
             top = total.max(-1)
             out += top + np.log(np.exp(total - top[..., None]).sum(-1))
         return out.max(-1).astype(np.float32)
-
-
-def _mel(f):
-    return 2595.0 * np.log10(1.0 + np.asarray(f) / 700.0)
-
-
-def _mel_inverse(m):
-    return 700.0 * (10.0 ** (np.asarray(m) / 2595.0) - 1.0)
 
 
 def _scored(wav: str) -> np.ndarray:
@@ -233,11 +223,8 @@ def main(argv=None) -> dict:
             u.raw = columns[u.key][name]
         model = vs.fit_fold(train, ref, "default", 0, args.seed, feature_names=names)
         for s in scored:
-            windows, total = [], 0.0
-            for u in by_speaker[s]:
-                if total >= args.score_seconds:
-                    break
-                total += u.n / vs.FPS
+            windows = []
+            for u in vs.scored_utterances(by_speaker[s], args.score_seconds):
                 predicted = A.predict_raw(model, u.raw, np.arange(u.n) / vs.FPS)[:, model.column("opening")]
                 windows += vs.window_scores(predicted, u.real["opening"], u.n, 10.0)
             per_speaker[s][name] = float(np.nanmean(windows))

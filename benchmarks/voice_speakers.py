@@ -385,6 +385,17 @@ def live_phones_curve(live_model, align, u: Utt, lip_markers) -> np.ndarray:
 
 # ---------------------------------------------------------------- scoring
 
+def scored_utterances(utts: list[Utt], seconds: float) -> list[Utt]:
+    """A speaker's first utterances, up to the first that reaches ``seconds`` of audio in all."""
+    chosen, total = [], 0.0
+    for u in utts:
+        if total >= seconds:
+            break
+        chosen.append(u)
+        total += u.n / FPS
+    return chosen
+
+
 def window_scores(method: np.ndarray, real: np.ndarray, n: int, window_s: float) -> list[float]:
     """Pearson r per window (about ``window_s``; one window for a shorter utterance) on the frames
     where the real curve is known."""
@@ -722,13 +733,7 @@ def main(argv=None) -> dict:
             fold_models[fold] = (model, model_path)
         model, model_path = fold_models[fold]
         scores: dict[str, list[float]] = {}
-        chosen, total = [], 0.0
-        for u in by_speaker[speaker]:
-            if total >= args.score_seconds:
-                break
-            chosen.append(u)
-            total += u.n / FPS
-        for u in chosen:
+        for u in scored_utterances(by_speaker[speaker], args.score_seconds):
             predicted = A.predict_raw(model, u.raw, np.arange(u.n) / FPS)
             curves = {"voice": predicted[:, model.column("opening")], "voice_jaw": predicted[:, model.column("jawOpen")],
                       "energy": envelope(u.samples, u.rate, u.n, FPS, 0.1)}
