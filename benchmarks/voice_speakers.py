@@ -153,15 +153,22 @@ def facegood_utterances(data: Path) -> list[Utt]:
     return out
 
 
+#: Sources prepared apart that hold more recordings of another source's corpus and speakers
+#: (``benchmarks/speaker_data.py``: ``grid_more`` holds more GRID clips of ``grid``'s speakers): their
+#: utterances count as that source's, so a speaker left out is left out with all its clips.
+SAME_CORPUS = {"grid_more": "grid"}
+
+
 def speech_data_utterances(root: Path, skip: tuple[str, ...] = (), only: list[str] | None = None) -> list[Utt]:
     """The utterances of every source of ``root`` whose READY-<source> marker exists (those of ``only``
-    where given; never those of ``skip``)."""
+    where given; never those of ``skip``), a source of :data:`SAME_CORPUS` as its corpus's."""
     out = []
     for ready in sorted(root.glob("READY-*")):
-        source = ready.name[len("READY-"):]
-        if source in skip or (only is not None and source not in only):
+        folder = ready.name[len("READY-"):]
+        source = SAME_CORPUS.get(folder, folder)
+        if source in skip or folder in skip or (only is not None and source not in only and folder not in only):
             continue
-        for npz in sorted((root / source).glob("*/*.npz")):
+        for npz in sorted((root / folder).glob("*/*.npz")):
             wav = npz.with_suffix(".wav")
             if not wav.exists():
                 continue
@@ -659,7 +666,7 @@ def main(argv=None) -> dict:
     if args.speech_data and (args.speech_data / "speakers.json").exists():
         listed = json.loads((args.speech_data / "speakers.json").read_text())
         if isinstance(listed, list):  # [{source, speaker, sex, language, ...}]
-            listed = {f"{x['source']}/{x['speaker']}": x for x in listed}
+            listed = {f"{SAME_CORPUS.get(x['source'], x['source'])}/{x['speaker']}": x for x in listed}
         labels = {k: {f: v[f] for f in ("sex", "language", "may_ship") if f in v} for k, v in listed.items()}
     ref = reference_ranges([u for u in utts if u.speaker == FACEGOOD_SPEAKER] or utts)
     real = sorted({u.speaker for u in utts if u.real_voice})

@@ -15,8 +15,11 @@ from facesynth.domain.voice import articulation, fusion
 
 @pytest.fixture(scope="module")
 def synth(config):
-    # the voice always trusted: the fusion's cores (the trust gate has its own test)
-    return replace(config.settings("synthesize"), voice_trust_low=-1.0, voice_trust_high=-1.0)
+    # the fusion's cores: the voice always trusted (the trust gate has its own test), at full weight,
+    # its closures and the method's confirmed closings on (the thresholds chosen on FACEGOOD's voice;
+    # the defaults leave them off for voices the model was not fitted on)
+    return replace(config.settings("synthesize"), voice_trust_low=-1.0, voice_trust_high=-1.0, voice_weight=1.0,
+                   voice_closure_threshold=0.45, voice_closing_threshold=0.2)
 
 
 def test_range_map_keeps_the_shape_in_the_method_range():
