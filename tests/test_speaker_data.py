@@ -167,6 +167,48 @@ def test_a_source_is_prepared_into_the_layout_with_its_speakers(tmp_path, monkey
     assert result["speakers"] == [entry] and result["sources"] == [ready]
 
 
+def _clip_with_a_tone(path: Path, frequency: float) -> Path:
+    """One second of grey picture at 25 frames/s with a tone of ``frequency`` Hz (44.1 kHz)."""
+    import imageio_ffmpeg
+
+    path.parent.mkdir(parents=True, exist_ok=True)
+    subprocess.run([imageio_ffmpeg.get_ffmpeg_exe(), "-loglevel", "error", "-f", "lavfi", "-i",
+                    "color=c=gray:s=160x120:d=1:r=25", "-f", "lavfi", "-i",
+                    f"sine=frequency={frequency}:duration=1:sample_rate=44100", "-shortest", "-pix_fmt", "yuv420p",
+                    str(path)], check=True)
+    return path
+
+
+def test_more_grid_clips_are_read_with_their_sound_each_repository_one_speaker(tmp_path, monkeypatch):
+    """grid_more: a clip's speaker is its repository folder's (two speakers' clips may share a
+    name), its sound is the clip's own, its curves the tracked lips at the clip's frame rate."""
+    from facesynth.domain.capture import video_take
+
+    monkeypatch.setattr(bench, "GRID_MORE", {"repo-a": ("a", "clips", "grid01", "M"),
+                                             "repo-b": ("b", "video/s9", "grid09", "F")})
+    files = [str(_clip_with_a_tone(tmp_path / "repo-a" / "clips" / "bbaf3s.mpg", 200).relative_to(tmp_path)),
+             str(_clip_with_a_tone(tmp_path / "repo-b" / "video" / "s9" / "bbaf3s.mpg", 300).relative_to(tmp_path))]
+
+    def lips(frames, name):  # Face Mesh stand-in: eyes 10 apart, the inner lips opening and closing
+        k = sum(1 for _ in frames)
+        points = np.zeros((k, 478, 3))
+        points[:, 263, 0] = 10.0
+        points[:, 14, 1] = 2.0 + np.sin(np.arange(k) / 3.0)
+        points[:, 291, 0] = 5.0
+        return points
+
+    monkeypatch.setattr(video_take, "track", lips)
+    a, b = bench.grid_more(tmp_path, files)
+    assert (a.speaker, b.speaker) == ("grid01", "grid09") and a.name == b.name == "bbaf3s"
+    for u, frequency in ((a, 200), (b, 300)):
+        assert u.rate == 44100 and len(u.samples) == pytest.approx(44100, abs=1200)
+        spectrum = np.abs(np.fft.rfft(u.samples))
+        assert np.argmax(spectrum) * u.rate / len(u.samples) == pytest.approx(frequency, abs=3)
+        assert u.times == pytest.approx(np.arange(len(u.times)) / 25.0) and len(u.times) == 25
+        assert u.opening == pytest.approx((2.0 + np.sin(np.arange(25) / 3.0)) / 10.0)
+        assert u.rounding == pytest.approx(np.full(25, -0.5))
+
+
 def test_sync_verdict_names_offsets_and_weak_evidence():
     assert bench.sync_verdict({"lag_s": 0.04, "lag_r": 0.5, "r0": 0.45}) == "ok"
     assert bench.sync_verdict({"lag_s": -0.24, "lag_r": 0.5, "r0": 0.1}) == "offset"

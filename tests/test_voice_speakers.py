@@ -109,3 +109,23 @@ def test_speakers_are_summarized_against_a_chosen_mode_and_in_named_pairs():
     live = out["paired"]["live_default - live_phones"]
     assert live["value"] == pytest.approx(0.1) and live["low"] == pytest.approx(0.1)  # the same gap on every speaker
     assert "default - phones" not in out["paired"] and "packaged - phones" in out["paired"]
+
+
+def test_clips_prepared_apart_count_as_their_corpus_speaker(tmp_path):
+    """More GRID clips (``grid_more``) are utterances of ``grid``'s speakers: one speaker, one source,
+    so that leaving a speaker out leaves all its clips out."""
+    from facesynth.formats.audio import write_wav
+
+    rate = 16000
+    t = np.arange(rate) / rate
+    for folder, name in (("grid", "bbaf2n"), ("grid_more", "bbaf3s"), ("grid_more", "lwbsza")):
+        speaker = tmp_path / folder / ("grid01" if name != "lwbsza" else "grid11")
+        speaker.mkdir(parents=True, exist_ok=True)
+        write_wav(speaker / f"{name}.wav", 0.2 * np.sin(2 * np.pi * 150 * t), rate)
+        np.savez(speaker / f"{name}.npz", times=np.arange(25) / 25.0, opening=np.linspace(0.1, 0.3, 25))
+        (tmp_path / f"READY-{folder}").write_text("{}")
+    utts = speakers.speech_data_utterances(tmp_path)
+    assert sorted((u.source, u.speaker, u.name) for u in utts) == [
+        ("grid", "grid/grid01", "bbaf2n"), ("grid", "grid/grid01", "bbaf3s"), ("grid", "grid/grid11", "lwbsza")]
+    assert speakers.speech_data_utterances(tmp_path, skip=("grid",)) == []
+    assert len(speakers.speech_data_utterances(tmp_path, only=["grid"])) == 3
