@@ -17,9 +17,9 @@ from facesynth.domain.voice import articulation, fusion
 def synth(config):
     # the fusion's cores: the voice always trusted (the trust gate has its own test), at full weight,
     # its closures and the method's confirmed closings on (the thresholds chosen on FACEGOOD's voice;
-    # the defaults leave them off for voices the model was not fitted on)
+    # the defaults leave them off for voices the model was not fitted on), the opening mapped affinely
     return replace(config.settings("synthesize"), voice_trust_low=-1.0, voice_trust_high=-1.0, voice_weight=1.0,
-                   voice_closure_threshold=0.45, voice_closing_threshold=0.2)
+                   voice_closure_threshold=0.45, voice_closing_threshold=0.2, voice_opening_map="percentiles")
 
 
 def test_range_map_keeps_the_shape_in_the_method_range():
@@ -63,7 +63,7 @@ def test_the_opening_by_rank_closes_the_mouth_as_often_as_the_method_does(synth)
     syllable = 0.5 - 0.5 * np.cos(2 * np.pi * 4.0 * t)  # 4 syllables a second, 0 between them
     opening = np.where(speech, 0.5 + 9.5 * syllable, 0.5)  # the method's gaps, mm: closed between syllables
     predicted = np.where(speech, 0.7 + 0.3 * np.roll(syllable, 2), 0.0)  # the voice, a little late
-    assert synth.voice_opening_map == "percentiles"  # the default
+    assert synth.voice_opening_map == "percentiles"
     by_rank, _ = fusion.target_gap(opening, predicted, None, None, np.ones(n), [], fps,
                                   replace(synth, voice_opening_map="rank"))
     affine, _ = fusion.target_gap(opening, predicted, None, None, np.ones(n), [], fps, synth)

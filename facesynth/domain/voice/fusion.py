@@ -24,15 +24,17 @@ or aligned to a transcript):
    closure, below). A motion whose markers the built-in rig does not bind keeps its rounding.
 2. *Opening.* The predicted opening mapped onto the method's inner-lip gaps in this utterance
    (no unit, no gain, the method's own range) and blended with the method's gap by
-   ``voice_weight x confidence``. ``voice_opening_map = "percentiles"`` (the default): the
+   ``voice_weight x confidence``. ``voice_opening_map = "rank"`` (the default): each frame takes
+   the method's gap at the rank of its prediction (:func:`rank_map`), so the mouth is as often
+   closed, half and wide open as the method's, in the voice's order. ``"percentiles"``: the
    prediction's 5th..95th percentiles affinely onto the gaps' (:func:`range_map`), keeping the
    prediction's shape; the prediction dips less between syllables than the speaker's mouth, so
    through speech the mouth stays half open, lips apart (the frozen grimace a database shows when
-   a voice drives it). ``"rank"``: each frame takes the method's gap at the rank of its
-   prediction (:func:`rank_map`), so the mouth is as often closed, half and wide open as the
-   method's, in the voice's order; on FACEGOOD's scored takes it follows the speaker's opening
-   less closely (r 0.68 against 0.70, docs/real-speech.md).
-3. *Closures* (wherever the score says, in silence too: the mouth rests closed). Each peak of the
+   a voice drives it). On speakers the packaged model never heard both follow the mouth alike, and
+   by rank the lips close where the speaker's do more often (docs/real-speech.md).
+3. *Closures* (off by default: on voices the model was not fitted on its closure score fires where
+   the lips stay open, and the forced closures cost more than they get right; on a performer's own
+   model they close the lips as she does). Each peak of the
    model's closure score above ``voice_closure_threshold`` takes the gap down to the method's most
    closed gap (a Gaussian dip of :data:`CLOSURE_SIGMA_S`); the
    method's own closings (the phones' /p b m/ and others: deep minima of its gap) are kept where
@@ -47,9 +49,10 @@ or aligned to a transcript):
 **Trust** (:func:`trust`): the voice's weight in 1-3 (and its closures) is also scaled by how well
 its predicted opening agrees with the method's over ``voice_trust_window_s`` (their local
 Pearson r, from ``voice_trust_low`` to ``voice_trust_high``): the loudness says that someone
-speaks, the agreement that the model reads this voice. On speakers the packaged model never heard
-(``benchmarks/voice_speakers.py``) it kept the mouth level with the phones alone, where the
-untrusted voice took it 0.09 below them.
+speaks, the agreement that the model reads this voice. Off by default (``-1`` and ``-1``): it kept
+a packaged model fitted on few voices level with the phones alone on speakers it never heard
+(``benchmarks/voice_speakers.py``), where the untrusted voice took it 0.09 below them; the model
+fitted on more voices reads them well enough that the trust only held it back.
 
 Why the two paths differ (``docs/real-speech.md``): with the phones recognised from the audio
 (the only case FACEGOOD's Mandarin speech allows, and audio alone in general), the voice's
