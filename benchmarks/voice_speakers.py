@@ -59,7 +59,13 @@ Scores: Pearson r of each mode's mouth opening against the real one in windows o
 unknown are left out), averaged per speaker; pooled = the mean over speakers (each speaker
 counts once), with a 95% bootstrap interval that resamples speakers (2000 resamples, seed 0), and
 paired differences (default minus each mode) on the same resamples. With fewer than three
-scored speakers there is no interval (``null``).
+scored speakers there is no interval (``null``). Closures (``closures``, and within
+``never_heard_by_packaged``): the deep minima of the real mouth opening and of each mode's, as
+``benchmarks/real_speech_lipsync.py`` finds them (the curve scaled to its 5th..95th percentiles,
+minima below ``--closure-depth`` standing out by ``--closure-prominence``), met within
+``--closure-tolerance-frames``; recall = the real closures met, precision = the mode's closures
+met, each summed over the speakers' scored utterances, with intervals resampling speakers (EMA
+sensors and tracked lips: these minima are the lips closing or nearly).
 
     python benchmarks/voice_speakers.py --facegood FACEGOOD_DIR [--speech-data DIR] --work WORK \\
         [--synthetic 4] [--variant NAME] [--texts benchmarks/voice_texts.json] > benchmarks/voice_speakers.json
@@ -414,6 +420,36 @@ def window_scores(method: np.ndarray, real: np.ndarray, n: int, window_s: float)
     return out
 
 
+def closure_counts(method: np.ndarray, real: np.ndarray, depth: float, prominence: float, tolerance: int) -> np.ndarray:
+    """(4,) int: the real mouth's closures (:func:`real_speech_lipsync.closure_events` of ``real``
+    (n,), its unknown frames at its median) met by one of ``method``'s (n,) within ``tolerance``
+    frames, the real closures, the method's closures met by a real one, the method's closures."""
+    ok = np.isfinite(real)
+    if ok.sum() < 10:
+        return np.zeros(4, np.int64)
+    rc = bench.closure_events(np.where(ok, real, np.median(real[ok])), depth, prominence)
+    mc = bench.closure_events(method, depth, prominence)
+    hit_real, hit_method = bench.match_closures(rc, mc, tolerance)
+    return np.array([hit_real, len(rc), hit_method, len(mc)], np.int64)
+
+
+def summarize_closures(counts: dict[str, dict[str, np.ndarray]], resample_count: int, seed: int) -> dict:
+    """Per mode, over the speakers of ``counts`` ({speaker: {mode: (4,) closure_counts summed over
+    its scored utterances}}): recall (the real closures met) and precision (the mode's closures met),
+    each the sum over speakers of hits over totals, with a 95% interval resampling speakers."""
+    speakers = sorted(counts)
+    modes = [m for m in counts[speakers[0]] if all(m in counts[s] for s in speakers)] if speakers else []
+    idx = resamples(len(speakers), resample_count, seed)
+    out = {}
+    for m in modes:
+        c = np.array([counts[s][m] for s in speakers], np.float64)
+        cells = {name: interval(bench.ratio_statistic(c[:, h], c[:, t]), len(speakers), idx)
+                 for name, h, t in (("recall", 0, 1), ("precision", 2, 3))}
+        out[m] = {name: {k: round(float(v), 4) for k, v in cell.items()} for name, cell in cells.items()}
+        out[m]["real_closures"], out[m]["closures"] = int(c[:, 1].sum()), int(c[:, 3].sum())
+    return out
+
+
 def summarize(per_speaker: dict[str, dict[str, list[float]]], resample_count: int, seed: int,
               lead: str = "default", pairs: tuple[tuple[str, str], ...] = ()) -> dict:
     """Per speaker the mean window r of every mode; pooled, the mean over speakers with a 95%
@@ -630,6 +666,10 @@ def main(argv=None) -> dict:
     ap.add_argument("--sweep-packaged", action="store_true",
                     help="the --sweep points with the packaged model too (modes 'packaged trust ...')")
     ap.add_argument("--window-s", type=float, default=10.0)
+    ap.add_argument("--closure-depth", type=float, default=0.25,
+                    help="a closure: a minimum of a mouth opening scaled to its 5th..95th percentiles below this")
+    ap.add_argument("--closure-prominence", type=float, default=0.25, help="... standing out by this")
+    ap.add_argument("--closure-tolerance-frames", type=int, default=3, help="closures this near meet")
     ap.add_argument("--resamples", type=int, default=2000)
     ap.add_argument("--seed", type=int, default=0)
     args = ap.parse_args(argv)
@@ -690,6 +730,7 @@ def main(argv=None) -> dict:
     ship_sources = args.ship_sources.split(",")
     packaged_model = A.ArticulationModel.read(packaged)
     per_speaker: dict[str, dict[str, list[float]]] = {}
+    closures_of: dict[str, dict[str, np.ndarray]] = {}
     skipped: list[dict] = []
     timing = {}
     fold_models: dict[str, tuple[A.ArticulationModel, Path]] = {}
@@ -740,6 +781,7 @@ def main(argv=None) -> dict:
             fold_models[fold] = (model, model_path)
         model, model_path = fold_models[fold]
         scores: dict[str, list[float]] = {}
+        closures: dict[str, np.ndarray] = {}
         for u in scored_utterances(by_speaker[speaker], args.score_seconds):
             predicted = A.predict_raw(model, u.raw, np.arange(u.n) / FPS)
             curves = {"voice": predicted[:, model.column("opening")], "voice_jaw": predicted[:, model.column("jawOpen")],
@@ -792,8 +834,12 @@ def main(argv=None) -> dict:
                     curves["given_packaged"] = voice_step(gm, u, gp, settings, shipped_path, False, "articulation")
             for mode, curve in curves.items():
                 scores.setdefault(mode, []).extend(window_scores(curve, u.real["opening"], u.n, args.window_s))
+                closures.setdefault(mode, np.zeros(4, np.int64))
+                closures[mode] += closure_counts(curve, u.real["opening"], args.closure_depth,
+                                                 args.closure_prominence, args.closure_tolerance_frames)
         if scores.get("voice"):
             per_speaker[speaker] = scores
+            closures_of[speaker] = closures
         timing[speaker] = round(time.perf_counter() - t0, 1)
     packaged_fit = write_packaged(by_speaker, args.ship_sources.split(","), ref, args.variant, args.synthetic,
                                   args.seed, args.model_out, not args.no_balance) if args.model_out else None
@@ -806,6 +852,9 @@ def main(argv=None) -> dict:
                ("live_phones", "phones"))) if unheard and not args.no_chain else None
     if summary["never_heard_by_packaged"]:
         del summary["never_heard_by_packaged"]["per_speaker"]  # in per_speaker above
+        summary["never_heard_by_packaged"]["closures"] = summarize_closures(
+            {s: v for s, v in closures_of.items() if s in unheard}, args.resamples, args.seed)
+    summary["closures"] = summarize_closures(closures_of, args.resamples, args.seed)
     return {"benchmark": "voice_speakers", "folds": args.folds, "variant": args.variant, "fit": VARIANTS[args.variant],
             "features": args.features, "warp_per": args.warp_per if "vtln" in args.features or "warp" in args.features else None,
             "warps": {s: [round(float(np.mean(w)), 3), round(float(np.min(w)), 3), round(float(np.max(w)), 3)]

@@ -129,3 +129,27 @@ def test_clips_prepared_apart_count_as_their_corpus_speaker(tmp_path):
         ("grid", "grid/grid01", "bbaf2n"), ("grid", "grid/grid01", "bbaf3s"), ("grid", "grid/grid11", "lwbsza")]
     assert speakers.speech_data_utterances(tmp_path, skip=("grid",)) == []
     assert len(speakers.speech_data_utterances(tmp_path, only=["grid"])) == 3
+
+
+def test_closures_are_counted_where_the_real_mouth_closes_and_pooled_over_speakers():
+    """Four real closures; a mode closing at two of them (one frame late) and once where the real
+    mouth is open meets half the real closures with two of its three."""
+    t = np.arange(300)
+    real = np.ones(300)
+    for c in (40, 100, 160, 220):
+        real -= np.exp(-0.5 * ((t - c) / 4.0) ** 2)
+    mode = np.ones(300)
+    for c in (41, 101, 190):
+        mode -= np.exp(-0.5 * ((t - c) / 4.0) ** 2)
+    counts = speakers.closure_counts(mode, real, 0.25, 0.25, 3)
+    assert counts.tolist() == [2, 4, 2, 3]
+    real_unknown = real.copy()
+    real_unknown[:5] = np.nan  # unknown frames do not make closures
+    assert speakers.closure_counts(mode, real_unknown, 0.25, 0.25, 3).tolist() == [2, 4, 2, 3]
+    late = speakers.closure_counts(np.roll(mode, 4), real, 0.25, 0.25, 3)  # four frames late: none meet
+    assert late.tolist() == [0, 4, 0, 3]
+    pooled = speakers.summarize_closures({"a": {"m": counts}, "b": {"m": late}, "c": {"m": counts}}, 200, 0)
+    assert pooled["m"]["recall"]["value"] == pytest.approx(4 / 12, abs=1e-4)  # rounded to 4 places
+    assert pooled["m"]["precision"]["value"] == pytest.approx(4 / 9, abs=1e-4)
+    assert pooled["m"]["real_closures"] == 12 and pooled["m"]["closures"] == 9
+    assert pooled["m"]["recall"]["low"] <= 4 / 12 <= pooled["m"]["recall"]["high"]
