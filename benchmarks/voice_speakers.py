@@ -295,10 +295,14 @@ def _digest(*parts: bytes) -> str:
     return hashlib.sha256(b"\0".join(parts)).hexdigest()[:16]
 
 
+#: ``--set`` overrides of the run (``SECTION.KEY=VALUE``), in every setting the run reads.
+OVERRIDES: list[str] = []
+
+
 @functools.lru_cache(maxsize=1)
 def _phones_config() -> Config:
     """The settings the phones' motion is made with: the voice step off (read once per run)."""
-    return Config.load(overrides=["synthesize.voice_recognized=off", "synthesize.voice_given=off"])
+    return Config.load(overrides=(*OVERRIDES, "synthesize.voice_recognized=off", "synthesize.voice_given=off"))
 
 
 def phones_motion(db_path: Path, u: Utt, work: Path, given: bool = False):
@@ -665,6 +669,8 @@ def main(argv=None) -> dict:
                          "fits it), not the packaged model that heard it")
     ap.add_argument("--sweep-packaged", action="store_true",
                     help="the --sweep points with the packaged model too (modes 'packaged trust ...')")
+    ap.add_argument("--set", action="append", default=[], metavar="SECTION.KEY=VALUE",
+                    help="a setting other than the defaults for the whole run (e.g. synthesize.voice_opening_map=percentiles)")
     ap.add_argument("--window-s", type=float, default=10.0)
     ap.add_argument("--closure-depth", type=float, default=0.25,
                     help="a closure: a minimum of a mouth opening scaled to its 5th..95th percentiles below this")
@@ -682,7 +688,8 @@ def main(argv=None) -> dict:
     texts = json.loads(args.texts.read_text()) if args.texts else {}
     for u in utts:
         u.text = texts.get(u.key) or (grid_text(u.name) if u.source == "grid" else None)
-    config = Config.load()
+    OVERRIDES[:] = args.set
+    config = Config.load(overrides=tuple(args.set))
     _phones_config()  # read now: the settings of the whole run
     settings = config.settings("synthesize")
     lip_markers = config.settings("evaluate").lip_markers
@@ -860,7 +867,8 @@ def main(argv=None) -> dict:
             "warps": {s: [round(float(np.mean(w)), 3), round(float(np.min(w)), 3), round(float(np.max(w)), 3)]
                       for s, w in sorted(warps.items())},
             "synthetic_speakers": args.synthetic,
-            "settings": {"voice_recognized": settings.voice_recognized, "voice_given": settings.voice_given,
+            "settings": {**({"overrides": args.set} if args.set else {}),
+                         "voice_recognized": settings.voice_recognized, "voice_given": settings.voice_given,
                          "window_s": args.window_s, "resamples": args.resamples, "seed": args.seed, "fps": FPS},
             "data": {s: {"utterances": len(v), "seconds": round(sum(u.n for u in v) / FPS, 1),
                          **labels.get(s, {})} for s, v in sorted(by_speaker.items())},
