@@ -32,9 +32,9 @@ or aligned to a transcript):
    through speech the mouth stays half open, lips apart (the frozen grimace a database shows when
    a voice drives it). On speakers the packaged model never heard both follow the mouth alike, and
    by rank the lips close where the speaker's do more often (docs/real-speech.md).
-3. *Closures* (off by default: on voices the model was not fitted on its closure score fires where
-   the lips stay open, and the forced closures cost more than they get right; on a performer's own
-   model they close the lips as she does). Each peak of the
+3. *Closures* (the voice's own off by default: on voices the model was not fitted on its closure
+   score fires where the lips stay open, and those closures cost more than they get right; on a
+   performer's own model they close the lips as she does). Each peak of the
    model's closure score above ``voice_closure_threshold`` takes the gap down to the method's most
    closed gap (a Gaussian dip of :data:`CLOSURE_SIGMA_S`); the
    method's own closings (the phones' /p b m/ and others: deep minima of its gap) are kept where
