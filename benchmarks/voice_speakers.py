@@ -348,6 +348,23 @@ def voice_step(motion, u: Utt, phones, settings, model_path: Path, recognized: b
     return opening_of(moved, settings, u.n)
 
 
+def sweep_point(point: str, settings) -> tuple[str, dict]:
+    """(mode name, synthesize settings to change) of one ``--sweep`` point: ``LOW:HIGH:WEIGHT`` (the
+    trust's thresholds and the voice's weight) or ``KEY=VALUE,...`` (any voice-step setting, the
+    value read as that setting's type)."""
+    if "=" not in point:
+        low, high, weight = (float(x) for x in point.split(":"))
+        return f"trust {point}", {"voice_trust_low": low, "voice_trust_high": high, "voice_weight": weight}
+    changes = {}
+    for item in point.split(","):
+        key, value = (x.strip() for x in item.split("=", 1))
+        if not (key.startswith("voice_") or key in VOICE_STEP_SETTINGS) or not hasattr(settings, key):
+            raise SystemExit(f"--sweep {point}: {key} is not a setting of synthesize's voice step")
+        kind = type(getattr(settings, key))
+        changes[key] = (value.lower() == "true") if kind is bool else kind(value)
+    return f"set {point}", changes
+
+
 def opening_of(motion, settings, n: int) -> np.ndarray:
     """The inner-lip gap (n,) mm of a motion at FPS."""
     if motion.fps != FPS:
@@ -653,8 +670,9 @@ def main(argv=None) -> dict:
                     help="read each fold's model from --work where an earlier run with the same data wrote it")
     ap.add_argument("--no-live", action="store_true", help="leave out the live modes (the slowest)")
     ap.add_argument("--sweep", default="",
-                    help="semicolon-separated LOW:HIGH:WEIGHT points of synthesize.voice_trust_low, voice_trust_high "
-                         "and voice_weight: the articulation mode with each, as mode 'trust LOW:HIGH:WEIGHT'")
+                    help="semicolon-separated points, each LOW:HIGH:WEIGHT (synthesize.voice_trust_low, "
+                         "voice_trust_high and voice_weight: mode 'trust LOW:HIGH:WEIGHT') or KEY=VALUE,... of "
+                         "synthesize's voice-step settings (mode 'set KEY=VALUE,...'): the articulation mode with each")
     ap.add_argument("--score-seconds", type=float, default=60.0,
                     help="score each held-out speaker on its first utterances up to this many seconds (all are fitted on)")
     ap.add_argument("--sources", default=None, help="comma-separated sources of --speech-data to read (default: all READY)")
@@ -804,11 +822,10 @@ def main(argv=None) -> dict:
                 for mode in ("articulation", "loudness"):
                     curves[mode] = voice_step(motion, u, phones, settings, model_path, True, mode)
                 for point in filter(None, args.sweep.split(";")):
-                    low, high, weight = (float(x) for x in point.split(":"))
+                    name, changes = sweep_point(point, settings)
                     for tag, path in (("", model_path), ("packaged ", packaged)) if args.sweep_packaged else (("", model_path),):
-                        curves[f"{tag}trust {point}"] = voice_step(motion, u, phones, settings, path, True,
-                                                                   "articulation", voice_trust_low=low,
-                                                                   voice_trust_high=high, voice_weight=weight)
+                        curves[f"{tag}{name}"] = voice_step(motion, u, phones, settings, path, True, "articulation",
+                                                            **changes)
                 curves["default"] = curves[settings.voice_recognized] if settings.voice_recognized != "off" \
                     else curves["phones"]
                 shipped_path = packaged

@@ -153,3 +153,15 @@ def test_closures_are_counted_where_the_real_mouth_closes_and_pooled_over_speake
     assert pooled["m"]["precision"]["value"] == pytest.approx(4 / 9, abs=1e-4)
     assert pooled["m"]["real_closures"] == 12 and pooled["m"]["closures"] == 9
     assert pooled["m"]["recall"]["low"] <= 4 / 12 <= pooled["m"]["recall"]["high"]
+
+
+def test_a_sweep_point_is_trust_thresholds_or_named_voice_settings(config):
+    settings = config.settings("synthesize")
+    assert speakers.sweep_point("0.5:0.8:1", settings) == (
+        "trust 0.5:0.8:1", {"voice_trust_low": 0.5, "voice_trust_high": 0.8, "voice_weight": 1.0})
+    name, changes = speakers.sweep_point("voice_opening_map=percentiles,voice_closing_threshold=2,"
+                                         "voice_pin_recognized=true", settings)
+    assert name == "set voice_opening_map=percentiles,voice_closing_threshold=2,voice_pin_recognized=true"
+    assert changes == {"voice_opening_map": "percentiles", "voice_closing_threshold": 2.0, "voice_pin_recognized": True}
+    with pytest.raises(SystemExit, match="use_opencl is not a setting of synthesize's voice step"):
+        speakers.sweep_point("use_opencl=false", settings)
