@@ -680,6 +680,7 @@ def main(argv=None) -> dict:
                     help="also write the model fitted on every speaker of --ship-sources here (the packaged model)")
     ap.add_argument("--ship-sources", default="facegood,grid",
                     help="the sources whose licences let a model fitted on them ship (for --model-out)")
+    ap.add_argument("--fit-only", action="store_true", help="only write --model-out (no speaker is scored)")
     ap.add_argument("--no-balance", action="store_true",
                     help="--model-out: no synthetic voices to give each speaker as long as the longest-heard one")
     ap.add_argument("--packaged-folds", action="store_true",
@@ -697,6 +698,7 @@ def main(argv=None) -> dict:
     ap.add_argument("--resamples", type=int, default=2000)
     ap.add_argument("--seed", type=int, default=0)
     args = ap.parse_args(argv)
+    args.no_chain = args.no_chain or args.fit_only
     started = time.perf_counter()
     utts = (facegood_utterances(args.facegood) if args.facegood else []) + \
         (speech_data_utterances(args.speech_data, ("facegood",) if args.facegood else (),
@@ -735,6 +737,12 @@ def main(argv=None) -> dict:
         labels = {k: {f: v[f] for f in ("sex", "language", "may_ship") if f in v} for k, v in listed.items()}
     ref = reference_ranges([u for u in utts if u.speaker == FACEGOOD_SPEAKER] or utts)
     real = sorted({u.speaker for u in utts if u.real_voice})
+    if args.fit_only:  # the packaged model alone: nothing is scored
+        if not args.model_out:
+            raise SystemExit("--fit-only writes the packaged model: give --model-out")
+        return {"benchmark": "voice_speakers", "packaged_model_fitted_on": write_packaged(
+            by_speaker, args.ship_sources.split(","), ref, args.variant, args.synthetic, args.seed, args.model_out,
+            not args.no_balance)}
     scored = args.speakers.split(",") if args.speakers else real
     db = rig = lip_vertices = live_model = phones_live_model = None
     stream = config.settings("stream")
