@@ -2,7 +2,7 @@ import h5py
 import numpy as np
 import pytest
 from click.testing import CliRunner
-from coded_audio import COMPRESSED, coded, correlation
+from coded_audio import COMPRESSED, coded, correlation, same_motion
 
 from facesynth.base.errors import InputError, SearchError
 from facesynth.cli import main
@@ -183,10 +183,11 @@ def test_align_settings_reach_the_aligner_of_the_input_audio(tiny_db, tiny_corpu
 def test_coded_speech_synthesizes_as_the_wav(tiny_db, tiny_corpus, held_out_take, coded_speech, tmp_path, name):
     """``synthesize --audio`` with the held-out sentence as M4A, MP3, Opus, Ogg or an MP4's sound
     (aligned to its text): the WAV's phones, boundaries within 50 ms, and markers that follow the
-    WAV's at r > 0.95. Measured: r 0.998 (MP3), 0.997 (Opus), 0.962 (AAC: one boundary 30 ms
-    later, a different node there). The tolerance is the aligner's, not the decoder's: the WAV
-    resampled to 44.1 kHz gives 0.9996, the WAV with one least-significant bit of noise added
-    (eight seeds) 0.975-0.980, while AAC's samples follow the WAV's at r 1.0000."""
+    WAV's (``coded_audio.same_motion``: r 0.993 for MP3, Opus and Ogg, 0.930 for AAC, one boundary
+    30 ms later and a different node there). The tolerance is the aligner's, not the decoder's: the
+    WAV resampled to 44.1 kHz gives 0.9996, the WAV with one least-significant bit of noise added
+    (eight seeds) 0.975-0.980 (with the loudness step), while AAC's samples follow the WAV's at r
+    1.0000."""
     import csv
 
     text = next(r for r in csv.DictReader(open(tiny_corpus / "manifest.csv")) if r["take"] == held_out_take)["transcript"]
@@ -200,4 +201,4 @@ def test_coded_speech_synthesizes_as_the_wav(tiny_db, tiny_corpus, held_out_take
     (phones, starts, markers), (phones_c, starts_c, markers_c) = got["wav"], got[name]
     assert phones_c == phones and np.abs(starts_c - starts).max() <= 0.05
     assert abs(len(markers_c) - len(markers)) <= 1
-    assert correlation(markers, markers_c) > 0.95
+    assert correlation(markers, markers_c) > same_motion(name)
