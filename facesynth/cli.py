@@ -536,9 +536,10 @@ def synthesize(ctx: Context, db: Path, method, phonemes, audio, text, language, 
     greedy, mean, and the fitted
     trajectory (Huang et al. Eq. 6-7) and coarticulation (Cohen-Massaro) models, whose model file
     (facesynth fit-method) is then the first argument. With --audio the voice shapes the mouth
-    too: recognised without --text or --phonemes, its articulation (the acoustic articulation
-    model: opening, rounding, closures; synthesize.voice_recognized), else its loudness
-    (synthesize.voice_given, synthesize.loudness_weight); "off": the phones alone.
+    too: its articulation (the acoustic articulation model: opening, rounding, closures), with the
+    phones recognised (without --text or --phonemes: synthesize.voice_recognized) or given
+    (synthesize.voice_given); "loudness" takes its loudness instead (synthesize.loudness_weight),
+    "off" the phones alone.
 
     \b
     Example:

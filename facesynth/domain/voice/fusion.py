@@ -54,12 +54,11 @@ a packaged model fitted on few voices level with the phones alone on speakers it
 (``benchmarks/voice_speakers.py``), where the untrusted voice took it 0.09 below them; the model
 fitted on more voices reads them well enough that the trust only held it back.
 
-Why the two paths differ (``docs/real-speech.md``): with the phones recognised from the audio
-(the only case FACEGOOD's Mandarin speech allows, and audio alone in general), the voice's
-articulation beats the loudness alone and the phones' own closures; with the phones given (text
-aligned, TTS timings), on the virtual actress the phones' opening is better than the voice's and
-the loudness step is ahead of the articulation, so the given path keeps the loudness step. Both
-are settings, and ``voice_weight = 0`` with ``voice_rounding_weight = 0`` leaves the phones alone.
+Both paths take the articulation by default (``docs/real-speech.md``): on real speakers the
+packaged model never heard it is ahead of the phones alone and of the loudness step with the
+phones recognised from the audio and with the phones aligned to a transcript (on the virtual
+actress, with her given phones, the loudness step had been ahead). Both are settings, and
+``voice_weight = 0`` with ``voice_rounding_weight = 0`` leaves the phones alone.
 """
 
 from __future__ import annotations
