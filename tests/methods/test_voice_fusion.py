@@ -131,7 +131,7 @@ def _gap(motion, synth):
     return lip_gaps(motion.markers, list(motion.marker_names), tuple(synth.loudness_lip_markers))
 
 
-def test_recognised_phones_take_the_voice_articulation_given_phones_the_loudness(spoken, config):
+def test_audio_takes_the_voice_articulation_with_phones_recognised_or_given(spoken, config):
     member, source, read = spoken
     settings = MethodSettings.of(config)
     # always trusted: the fusion itself (the trust gate has its own test)
@@ -140,7 +140,11 @@ def test_recognised_phones_take_the_voice_articulation_given_phones_the_loudness
     phones = steps.synthesize(member, source, read.utterance, settings)
     given = steps.synthesize(member, source, read.utterance, settings, audio=read.audio)
     heard = steps.synthesize(member, source, read.utterance, settings, audio=read.audio, recognized=True)
-    assert (phones.summary.voice, given.summary.voice, heard.summary.voice) == ("off", "loudness", "articulation")
+    assert (phones.summary.voice, given.summary.voice, heard.summary.voice) == ("off", "articulation", "articulation")
+    loud = steps.synthesize(member, source, read.utterance,
+                            settings.replace(synthesize=replace(settings.synthesize, voice_given="loudness")),
+                            audio=read.audio)
+    assert loud.summary.voice == "loudness"
     s = settings.synthesize
     samples, rate = read.audio
     model = fusion.articulation_model("")
