@@ -139,13 +139,15 @@ def _synthesize(*args):
 def test_synthesize_with_phones_and_audio(tiny_db, tiny_corpus, held_out_take, held_out_synthesized, tmp_path, config):
     labels = tiny_corpus / "labels" / f"{held_out_take}.TextGrid"
     audio = held_out_synthesized["audio"]
-    r = _synthesize(tiny_db, "--phonemes", labels, "--audio", audio, "-o", tmp_path / "loud.h5")
+    # the loudness step (synthesize.voice_given = "loudness"; the default is the voice's articulation)
+    r = _synthesize(tiny_db, "--phonemes", labels, "--audio", audio, "--set", "synthesize.voice_given=loudness",
+                    "-o", tmp_path / "loud.h5")
     assert r.exit_code == 0, r.output
-    r = _synthesize(tiny_db, "--phonemes", labels, "--audio", audio, "--set", "synthesize.loudness_weight=0",
-                    "-o", tmp_path / "phones.h5")
+    r = _synthesize(tiny_db, "--phonemes", labels, "--audio", audio, "--set", "synthesize.voice_given=loudness",
+                    "--set", "synthesize.loudness_weight=0", "-o", tmp_path / "phones.h5")
     assert r.exit_code == 0, r.output
     phones_only, loud = Motion.read(tmp_path / "phones.h5"), Motion.read(tmp_path / "loud.h5")
-    # weight 0 is the phones alone, exactly; the default moves the mouth
+    # weight 0 is the phones alone, exactly; the default weight moves the mouth
     np.testing.assert_array_equal(phones_only.markers, Motion.read(held_out_synthesized["motion"]).markers)
     lips = config.settings("synthesize").loudness_lip_markers
     change = np.abs(loudness.lip_gaps(loud.markers, loud.marker_names, lips)
