@@ -737,12 +737,17 @@ def main(argv=None) -> dict:
         labels = {k: {f: v[f] for f in ("sex", "language", "may_ship") if f in v} for k, v in listed.items()}
     ref = reference_ranges([u for u in utts if u.speaker == FACEGOOD_SPEAKER] or utts)
     real = sorted({u.speaker for u in utts if u.real_voice})
+    ship_sources = args.ship_sources.split(",")
+
+    def fit_packaged() -> dict | None:
+        """The packaged model written to --model-out (what it was fitted on), or None without it."""
+        return write_packaged(by_speaker, ship_sources, ref, args.variant, args.synthetic, args.seed, args.model_out,
+                              not args.no_balance) if args.model_out else None
+
     if args.fit_only:  # the packaged model alone: nothing is scored
         if not args.model_out:
             raise SystemExit("--fit-only writes the packaged model: give --model-out")
-        return {"benchmark": "voice_speakers", "packaged_model_fitted_on": write_packaged(
-            by_speaker, args.ship_sources.split(","), ref, args.variant, args.synthetic, args.seed, args.model_out,
-            not args.no_balance)}
+        return {"benchmark": "voice_speakers", "packaged_model_fitted_on": fit_packaged()}
     scored = args.speakers.split(",") if args.speakers else real
     db = rig = lip_vertices = live_model = phones_live_model = None
     stream = config.settings("stream")
@@ -760,7 +765,6 @@ def main(argv=None) -> dict:
         live_model = LiveModel(database, settings, stream, config.settings("solve"))
         phones_live_model = LiveModel(database, settings, replace(stream, voice="off"), config.settings("solve"))
     packaged = bench.ARTICULATION_MODEL
-    ship_sources = args.ship_sources.split(",")
     packaged_model = A.ArticulationModel.read(packaged)
     per_speaker: dict[str, dict[str, list[float]]] = {}
     closures_of: dict[str, dict[str, np.ndarray]] = {}
@@ -873,8 +877,7 @@ def main(argv=None) -> dict:
             per_speaker[speaker] = scores
             closures_of[speaker] = closures
         timing[speaker] = round(time.perf_counter() - t0, 1)
-    packaged_fit = write_packaged(by_speaker, args.ship_sources.split(","), ref, args.variant, args.synthetic,
-                                  args.seed, args.model_out, not args.no_balance) if args.model_out else None
+    packaged_fit = fit_packaged()
     summary = summarize(per_speaker, args.resamples, args.seed)
     # what ships, on the speakers of the sources the packaged model was not fitted on
     unheard = {s: v for s, v in per_speaker.items() if by_speaker[s][0].source not in ship_sources}
