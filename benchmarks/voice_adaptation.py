@@ -70,7 +70,7 @@ def main(argv=None) -> dict:
     general_train = {s: v for s, v in by_speaker.items()
                      if s != vs.FACEGOOD_SPEAKER and v[0].source not in check_sources}
     check = {s: v for s, v in by_speaker.items() if v[0].source in check_sources}
-    general = vs.fit_fold(general_train, ref, "default", 0, args.seed)
+    general = vs.fit_fold(general_train, ref, "default", 0, args.seed, speaker_weights="frames")
     her = by_speaker[vs.FACEGOOD_SPEAKER]
     calibration = [u for u in her if u.name in CALIBRATION]
     fair = [u for u in her if u.name in FAIR]

@@ -221,7 +221,7 @@ def main(argv=None) -> dict:
         names = A.FEATURE_NAMES + (tuple(f"p_{p}" for p in phones) if name != "mel" else ())
         for u in utts:
             u.raw = columns[u.key][name]
-        model = vs.fit_fold(train, ref, "default", 0, args.seed, feature_names=names)
+        model = vs.fit_fold(train, ref, "default", 0, args.seed, feature_names=names, speaker_weights="frames")
         for s in scored:
             windows = []
             for u in vs.scored_utterances(by_speaker[s], args.score_seconds):

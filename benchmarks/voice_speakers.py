@@ -110,7 +110,7 @@ FACEGOOD_SPEAKER = "facegood/shirley"
 FACEGOOD_FAIR = ("1114_2_04", "1114_2_05", "1114_3_15")
 #: Settings of the voice step only (not of the phones' motion the cache holds).
 VOICE_STEP_SETTINGS = ("loudness_weight", "loudness_smoothing_s", "voice_recognized", "voice_given",
-                       "articulation_model", "voice_weight", "voice_rounding_weight", "voice_closure_threshold",
+                       "voice_snr_none", "voice_snr_full", "articulation_model", "voice_weight", "voice_rounding_weight", "voice_closure_threshold",
                        "voice_closing_threshold", "voice_trust_window_s", "voice_trust_low", "voice_trust_high",
                        "voice_pin_recognized", "articulation_prior")
 
@@ -519,11 +519,20 @@ def summarize(per_speaker: dict[str, dict[str, list[float]]], resample_count: in
 
 # ---------------------------------------------------------------- folds
 
+#: How the speakers of a fit are weighed (``--speaker-weights``): "equal" every speaker counts alike
+#: (each frame weighs 1 / its speaker's seconds), "frames" every frame alike (a speaker heard for
+#: 49 minutes outweighs one heard for 3 s a thousand times).
+SPEAKER_WEIGHTS = ("equal", "frames")
+
+
 def fit_fold(train: dict[str, list[Utt]], ref, variant: str, synthetic: int | dict[str, int],
-             seed: int, feature_names: tuple[str, ...] = A.FEATURE_NAMES) -> A.ArticulationModel:
+             seed: int, feature_names: tuple[str, ...] = A.FEATURE_NAMES,
+             speaker_weights: str = "equal") -> A.ArticulationModel:
     """The model fitted on the speakers ``train`` ({speaker: utterances}) with ``variant``'s settings
     (and ``synthetic`` synthetic speakers made from each one's voice: a count, or one per speaker),
-    on the utterances' raw features ``u.raw`` whose columns are ``feature_names``."""
+    on the utterances' raw features ``u.raw`` whose columns are ``feature_names``, the speakers
+    weighed as ``speaker_weights`` says (:data:`SPEAKER_WEIGHTS`; a synthetic voice weighs as the
+    real one it was made of)."""
     pairs = [(u, y) for speaker in sorted(train) for u, y in zip(train[speaker], speaker_targets(train[speaker], ref))]
     counts = synthetic if isinstance(synthetic, dict) else {s: synthetic for s in train}
     known = np.array([np.isfinite(np.concatenate([y[:, j] for _, y in pairs])).any() for j in range(len(TARGETS))])
@@ -535,9 +544,13 @@ def fit_fold(train: dict[str, list[Utt]], ref, variant: str, synthetic: int | di
             y[:, jaw] = lo + (y[:, opening] - a) * (hi - lo) / (b - a)
         known[jaw] = True
     names = tuple(t for t, k in zip(TARGETS, known) if k)  # a target no training speaker has is not predicted
-    takes = [A.Take(u.raw, y[:, known], FPS) for u, y in pairs]
+    if speaker_weights not in SPEAKER_WEIGHTS:
+        raise ValueError(f"speaker_weights {speaker_weights!r}: one of {', '.join(SPEAKER_WEIGHTS)}")
+    weight = {s: 1.0 if speaker_weights == "frames" else FPS / sum(u.n for u in v) for s, v in train.items()}
+    takes = [A.Take(u.raw, y[:, known], FPS, weight[u.speaker]) for u, y in pairs]
     for u, y in pairs:
-        takes += [A.Take(raw, y[:, known], FPS) for raw in synthetic_features(u, counts.get(u.speaker, 0), seed)]
+        takes += [A.Take(raw, y[:, known], FPS, weight[u.speaker])
+                  for raw in synthetic_features(u, counts.get(u.speaker, 0), seed)]
     return A.fit(takes, names, feature_names=feature_names, **VARIANTS[variant])
 
 
@@ -563,7 +576,7 @@ def curve_files(u: Utt) -> list[Path]:
 
 
 def write_packaged(by_speaker: dict[str, list[Utt]], sources: list[str], ref, variant: str, synthetic: int, seed: int,
-                   out: Path, balance: bool = True) -> dict:
+                   out: Path, balance: bool = True, speaker_weights: str = "equal") -> dict:
     """Fit the model on every utterance of ``sources`` (those that may ship) and write it to ``out``,
     recording each file it learned from by name and sha256; returns what it was fitted on."""
     train = {s: v for s, v in by_speaker.items() if v[0].source in sources and v[0].real_voice}
@@ -575,7 +588,7 @@ def write_packaged(by_speaker: dict[str, list[Utt]], sources: list[str], ref, va
     # make the model hers
     counts = {sp: synthetic + min(20, max(0, int(np.ceil(max(seconds.values()) / sec)) - 1 - synthetic))
               for sp, sec in seconds.items()} if balance else {sp: synthetic for sp in train}
-    model = fit_fold(train, ref, variant, counts, seed)
+    model = fit_fold(train, ref, variant, counts, seed, speaker_weights=speaker_weights)
     records = []
     for speaker in sorted(train):
         for u in train[speaker]:
@@ -586,13 +599,13 @@ def write_packaged(by_speaker: dict[str, list[Utt]], sources: list[str], ref, va
                                 "seconds": round(u.n / FPS, 2) if path == u.wav else None})
     model.fitted_on = records
     settings = {"variant": variant, **VARIANTS[variant], "synthetic_voices_per_speaker": counts, "seed": seed,
-                "speakers": sorted(train), "targets_in_units_of": FACEGOOD_SPEAKER,
+                "speaker_weights": speaker_weights, "speakers": sorted(train), "targets_in_units_of": FACEGOOD_SPEAKER,
                 "offsets_s": [float(x) for x in model.offsets_s], "pool": model.pool, "alpha": model.alpha,
                 "normalization": model.normalization, "tau_s": model.tau_s, "expand": model.expand}
     model.write(out, config=json.dumps(settings, sort_keys=True), inputs=[], overwrite=True)
     return {"speakers": sorted(train), "files": len(records),
             "seconds": round(sum(u.n for v in train.values() for u in v) / FPS, 1), "targets": list(model.target_names),
-            "synthetic_voices_per_speaker": counts}
+            "synthetic_voices_per_speaker": counts, "speaker_weights": speaker_weights}
 
 
 #: Fit settings tried (item: features that do not carry the speaker); "default" is what ships.
@@ -681,6 +694,9 @@ def main(argv=None) -> dict:
     ap.add_argument("--ship-sources", default="facegood,grid",
                     help="the sources whose licences let a model fitted on them ship (for --model-out)")
     ap.add_argument("--fit-only", action="store_true", help="only write --model-out (no speaker is scored)")
+    ap.add_argument("--speaker-weights", default="equal", choices=SPEAKER_WEIGHTS,
+                    help="equal: every training speaker counts alike (as the packaged model is fitted); frames: "
+                         "every frame alike, a long-recorded speaker outweighing the others (the release before)")
     ap.add_argument("--no-balance", action="store_true",
                     help="--model-out: no synthetic voices to give each speaker as long as the longest-heard one")
     ap.add_argument("--packaged-folds", action="store_true",
@@ -742,7 +758,7 @@ def main(argv=None) -> dict:
     def fit_packaged() -> dict | None:
         """The packaged model written to --model-out (what it was fitted on), or None without it."""
         return write_packaged(by_speaker, ship_sources, ref, args.variant, args.synthetic, args.seed, args.model_out,
-                              not args.no_balance) if args.model_out else None
+                              not args.no_balance, args.speaker_weights) if args.model_out else None
 
     if args.fit_only:  # the packaged model alone: nothing is scored
         if not args.model_out:
@@ -777,7 +793,7 @@ def main(argv=None) -> dict:
         fold = speaker if args.folds == "speaker" else by_speaker[speaker][0].source
         tag = args.variant if args.features == "mel" else f"{args.variant}.{args.features}" + \
             (f".per-{args.warp_per}" if "warp" in args.features or "vtln" in args.features else "")
-        cached = args.work / "folds" / f"{tag}.s{args.synthetic}.{fold.replace('/', '+')}.h5"
+        cached = args.work / "folds" / f"{tag}.s{args.synthetic}.{args.speaker_weights}.{fold.replace('/', '+')}.h5"
         if fold not in fold_models and args.reuse_folds and cached.exists():
             fold_models[fold] = (A.ArticulationModel.read(cached), cached)
         if args.features == "pitch-warp":  # every utterance warped by its pitch against this fold's training voices
@@ -810,10 +826,11 @@ def main(argv=None) -> dict:
                      if (s if args.folds == "speaker" else v[0].source) != fold}
             if not train:
                 raise SystemExit(f"{fold} holds every speaker: leaving it out leaves nothing to fit on")
-            model = fit_fold(train, ref, args.variant, args.synthetic, args.seed)
+            model = fit_fold(train, ref, args.variant, args.synthetic, args.seed, speaker_weights=args.speaker_weights)
             model_path = cached
             model_path.parent.mkdir(parents=True, exist_ok=True)
-            model.write(model_path, config=json.dumps({"held_out": fold, "variant": args.variant}), inputs=[],
+            model.write(model_path, config=json.dumps({"held_out": fold, "variant": args.variant,
+                                                      "speaker_weights": args.speaker_weights}), inputs=[],
                         overwrite=True)
             fold_models[fold] = (model, model_path)
         model, model_path = fold_models[fold]
@@ -842,10 +859,11 @@ def main(argv=None) -> dict:
                     else curves["phones"]
                 shipped_path = packaged
                 if args.packaged_folds and u.source in ship_sources:  # the packaged fit, this speaker left out
-                    shipped_path = args.work / "folds" / f"packaged-minus.{speaker.replace('/', '+')}.h5"
+                    shipped_path = args.work / "folds" / f"packaged-minus.{args.speaker_weights}.{speaker.replace('/', '+')}.h5"
                     if not shipped_path.exists():
                         write_packaged({s: v for s, v in by_speaker.items() if s != speaker}, ship_sources, ref,
-                                       args.variant, args.synthetic, args.seed, shipped_path, not args.no_balance)
+                                       args.variant, args.synthetic, args.seed, shipped_path, not args.no_balance,
+                                       args.speaker_weights)
                 curves["packaged"] = voice_step(motion, u, phones, settings, shipped_path, True,
                                                 settings.voice_recognized)
                 from facesynth.base.phonemes import PAU  # noqa: F401  (segments as openfacefx reads them)
@@ -891,6 +909,7 @@ def main(argv=None) -> dict:
             {s: v for s, v in closures_of.items() if s in unheard}, args.resamples, args.seed)
     summary["closures"] = summarize_closures(closures_of, args.resamples, args.seed)
     return {"benchmark": "voice_speakers", "folds": args.folds, "variant": args.variant, "fit": VARIANTS[args.variant],
+            "speaker_weights": args.speaker_weights,
             "features": args.features, "warp_per": args.warp_per if "vtln" in args.features or "warp" in args.features else None,
             "warps": {s: [round(float(np.mean(w)), 3), round(float(np.min(w)), 3), round(float(np.max(w)), 3)]
                       for s, w in sorted(warps.items())},

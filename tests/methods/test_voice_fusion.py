@@ -218,8 +218,23 @@ def test_pinned_phones_keep_their_closure_and_rounding_stays_in_the_method_range
 
 def test_no_voice_past_the_audio_end():
     raw = articulation.frame_features(np.sin(np.arange(16000) * 0.05).astype(np.float32) * 0.3, 16000)
-    c = fusion.confidence(raw, np.array([0.5, 0.9, 1.2, 2.0]))
+    c = fusion.confidence(raw, np.array([0.5, 0.9, 1.2, 2.0]), 0.5, 1.5)
     assert c[2] == 0 and c[3] == 0
+
+
+def test_the_voice_is_heard_from_snr_none_to_snr_full():
+    np.testing.assert_allclose(fusion.snr_share([-1.0, 0.5, 1.0, 1.5, 3.0], 0.5, 1.5), [0, 0, 0.5, 1, 1])
+    np.testing.assert_array_equal(fusion.snr_share([0.19, 0.2, 0.21], 0.2, 0.2), [0, 0, 1])  # a step
+    # a tone at a steady level over silence: linear in the level above the floor, silence unheard
+    x = np.zeros(32000, np.float32)
+    x[8000:24000] = 0.1 * np.sin(np.arange(16000) * 0.05)
+    raw = articulation.frame_features(x, 16000)
+    times = np.array([0.1, 0.75])
+    wide = fusion.confidence(raw, times, 0.0, 100.0)[1]
+    assert 0 < wide < 0.5
+    np.testing.assert_allclose(fusion.confidence(raw, times, 0.0, 200.0)[1], wide / 2, rtol=1e-9)
+    assert fusion.confidence(raw, times, 0.0, 0.5 * 100.0 * wide)[1] == 1.0
+    assert fusion.confidence(raw, times, 0.0, 0.5 * 100.0 * wide)[0] == 0.0  # silence, far from the tone
 
 
 def test_a_fit_leaves_out_unknown_frames_and_a_broken_model_is_refused():

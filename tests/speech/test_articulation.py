@@ -83,6 +83,47 @@ def test_ridge_recovers_a_linear_map():
     np.testing.assert_allclose(intercept, [4.0], atol=1e-5)
 
 
+
+def test_a_row_of_weight_two_counts_as_the_row_twice():
+    """Weighted ridge (means, deviations, error and penalty all weighed) equals ridge on the rows
+    repeated as many times as their weights, with and without a prior."""
+    rng = np.random.default_rng(3)
+    x = rng.normal(size=(300, 4))
+    y = x @ rng.normal(size=(4, 2)) + rng.normal(size=(300, 2))
+    weights = rng.integers(1, 4, 300)
+    repeated = np.repeat(np.arange(300), weights)
+    prior, prior_std = rng.normal(size=(4, 2)), np.array([0.5, 2.0])
+    for kw in ({}, {"prior": prior, "prior_std": prior_std, "strength": 0.7}):
+        coef, intercept = A.ridge(x, y, 0.3, weights=weights, **kw)
+        coef2, intercept2 = A.ridge(x[repeated], y[repeated], 0.3, **kw)
+        np.testing.assert_allclose(coef, coef2, rtol=1e-9, atol=1e-12)
+        np.testing.assert_allclose(intercept, intercept2, rtol=1e-9, atol=1e-12)
+    plain = A.ridge(x, y, 0.3)
+    np.testing.assert_array_equal(A.ridge(x, y, 0.3, weights=np.full(300, 5.0))[0].round(10), plain[0].round(10))
+
+
+def test_a_take_weighing_two_counts_as_the_take_twice():
+    """Take weights are relative: a short take of weight 2 beside a long one fits as the short take
+    given twice, and the target's mean and spread are weighed alike."""
+    a, b = speechlike(4.0, seed=0), speechlike(2.0, seed=1)
+    takes = []
+    for x in (a, b):
+        raw = A.frame_features(x, RATE)
+        n = int(len(x) / RATE * FPS)
+        env = np.interp(np.arange(n) / FPS, np.arange(len(raw)) * A.FRAME_S, raw[:, A.I_LOG_RMS])
+        takes.append(A.Take(raw, np.exp(env)[:, None], FPS))
+    weighed = A.fit([takes[0], dataclasses.replace(takes[1], weight=2.0)], ("opening",))
+    twice = A.fit([takes[0], takes[1], takes[1]], ("opening",))
+    np.testing.assert_allclose(weighed.coef, twice.coef, rtol=1e-6, atol=1e-9)
+    np.testing.assert_allclose(weighed.intercept, twice.intercept, rtol=1e-6)
+    np.testing.assert_allclose(weighed.target_mean, twice.target_mean, rtol=1e-9)
+    np.testing.assert_allclose(weighed.target_std, twice.target_std, rtol=1e-9)
+    assert not np.allclose(weighed.coef, A.fit(takes, ("opening",)).coef, rtol=1e-3)
+    for bad in (0.0, -1.0, float("nan")):
+        with pytest.raises(InputError, match="take 1: weight"):
+            A.fit([takes[0], dataclasses.replace(takes[1], weight=bad)], ("opening",))
+
+
 def test_fit_recovers_a_known_linear_relation_of_the_context():
     """Targets made as a linear map of the model's own context: the fit finds that map's curves."""
     x = speechlike(6.0)

@@ -33,7 +33,7 @@ import numpy as np
 
 from facesynth.base.config import SynthesizeSettings
 from facesynth.domain.voice.articulation import StreamingPredictor, model_look_ahead_s
-from facesynth.domain.voice.fusion import FLOOR_RISE_PER_S, SNR_FULL, SNR_NONE
+from facesynth.domain.voice.fusion import FLOOR_RISE_PER_S, snr_share
 from facesynth.model.articulation import ArticulationModel
 
 from .phones import SAMPLE_RATE
@@ -62,6 +62,7 @@ class VoiceFrames:
                         if name in voice_model.target_names}
         self.closure = voice_model.target_names.index("closure") if "closure" in voice_model.target_names else None
         self.threshold = synth.voice_closure_threshold
+        self.snr = (synth.voice_snr_none, synth.voice_snr_full)
         #: the jaw from the predicted opening (``stream.voice_jaw = "opening"``): (opening column, the
         #: opening's training mean and std, the jaw's), or None (the predicted jawOpen itself)
         self.jaw_from_opening = None
@@ -118,7 +119,7 @@ class VoiceFrames:
         rise = FLOOR_RISE_PER_S * ENERGY_HOP / SAMPLE_RATE
         for e in energy:
             self._floor = e if self._floor is None else min(e, self._floor + rise)
-            self._confidence.append(float(np.clip((e - self._floor - SNR_NONE) / (SNR_FULL - SNR_NONE), 0.0, 1.0)))
+            self._confidence.append(float(snr_share(e - self._floor, *self.snr)))
         self._hops += len(energy)
 
     def _confidence_at(self, times: np.ndarray) -> np.ndarray:

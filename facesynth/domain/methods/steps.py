@@ -63,7 +63,8 @@ log = logging.getLogger(__name__)
 VOICE_SETTINGS = ("loudness_weight", "loudness_smoothing_s", "loudness_lip_markers", "pinned_phones",
                   "voice_recognized", "voice_given", "articulation_model", "voice_weight", "voice_opening_map",
                   "voice_rounding_weight", "voice_closure_threshold", "voice_closing_threshold",
-                  "voice_trust_window_s", "voice_trust_low", "voice_trust_high", "voice_pin_recognized")
+                  "voice_trust_window_s", "voice_trust_low", "voice_trust_high", "voice_snr_none", "voice_snr_full",
+                  "voice_pin_recognized")
 
 
 class DatabaseMethod(Method):

@@ -293,10 +293,15 @@ class Normalizer:
         peak = np.maximum(np.maximum.accumulate(e + ramp), start) - ramp
         return e > peak - self.gate, float(peak[-1])
 
-    def fit(self, raws: list[np.ndarray]) -> "Normalizer":
-        """Set ``mean``, ``std`` from the speech frames of training utterances (each (K, D))."""
-        rows = np.concatenate([r[self.speech(r)[0]] for r in raws]).astype(np.float64)
-        self.mean, self.std = rows.mean(0), np.maximum(rows.std(0), 1e-6)
+    def fit(self, raws: list[np.ndarray], weights: list[float] | None = None) -> "Normalizer":
+        """Set ``mean``, ``std`` from the speech frames of training utterances (each (K, D)), each
+        utterance's frames weighing ``weights`` (one per utterance; all alike without)."""
+        chosen = [r[self.speech(r)[0]] for r in raws]
+        rows = np.concatenate(chosen).astype(np.float64)
+        w = np.concatenate([np.full(len(c), 1.0 if weights is None else float(wt))
+                            for c, wt in zip(chosen, weights or [1.0] * len(raws))])
+        self.mean = w @ rows / w.sum()
+        self.std = np.maximum(np.sqrt(w @ (rows - self.mean) ** 2 / w.sum()), 1e-6)
         return self
 
     def apply(self, raw: np.ndarray) -> np.ndarray:
@@ -552,11 +557,14 @@ def _closure_bumps(opening: np.ndarray, fps: float, kind: str, sigma_s: float) -
 @dataclass
 class Take:
     """One capture with its audio: raw features (K, D) float32 (:func:`frame_features` of its audio),
-    the targets (T, Y) at ``fps`` frames/s (frame f at f / fps s of the audio)."""
+    the targets (T, Y) at ``fps`` frames/s (frame f at f / fps s of the audio), and ``weight``: how
+    much each of its frames counts in the fit, relative to the other takes' (a speaker's takes
+    given 1 / the speaker's seconds make every speaker count alike, however long each was heard)."""
 
     raw: np.ndarray
     targets: np.ndarray
     fps: float
+    weight: float = 1.0
 
     @property
     def times_s(self) -> np.ndarray:
@@ -565,10 +573,14 @@ class Take:
 
 
 def ridge(x: np.ndarray, y: np.ndarray, alpha: float, prior: np.ndarray | None = None,
-          prior_std: np.ndarray | None = None, strength: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
+          prior_std: np.ndarray | None = None, strength: float = 0.0,
+          weights: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
     """(coef (P, Y), intercept (Y,)) float64 of ridge regression of ``y`` (N, Y) on ``x`` (N, P): the
     columns of x standardized, penalty ``alpha * N`` on the standardized coefficients (so alpha
     does not depend on how many frames there are), the intercept unpenalized.
+
+    ``weights`` (N,) >= 0: each row's weight in the squared error, the means and the standard
+    deviations, N then meaning their sum (a row of weight 2 is the same as the row twice).
 
     With a ``prior`` (P, Y) (another model's coefficients on the same columns, its targets' standard
     deviations ``prior_std`` (Y,)), a second penalty ``strength * N`` pulls the coefficients toward
@@ -577,16 +589,18 @@ def ridge(x: np.ndarray, y: np.ndarray, alpha: float, prior: np.ndarray | None =
     fit stays near the prior, with much it follows the data."""
     x = np.asarray(x, np.float64)
     y = np.asarray(y, np.float64)
-    mx, my = x.mean(0), y.mean(0)
-    sx = np.maximum(x.std(0), 1e-8)
+    w = np.ones(len(x)) if weights is None else np.asarray(weights, np.float64)
+    n = float(w.sum())
+    mx, my = w @ x / n, w @ y / n
+    sx = np.maximum(np.sqrt(w @ (x - mx) ** 2 / n), 1e-8)
     xs = (x - mx) / sx
-    gram = xs.T @ xs
-    gram[np.diag_indices_from(gram)] += (alpha + (strength if prior is not None else 0.0)) * len(x)
-    rhs = xs.T @ (y - my)
+    gram = xs.T @ (w[:, None] * xs)
+    gram[np.diag_indices_from(gram)] += (alpha + (strength if prior is not None else 0.0)) * n
+    rhs = xs.T @ (w[:, None] * (y - my))
     if prior is not None and strength > 0:
-        sy = np.maximum(y.std(0), 1e-12)
+        sy = np.maximum(np.sqrt(w @ (y - my) ** 2 / n), 1e-12)
         scale = sy / np.maximum(np.asarray(prior_std, np.float64), 1e-12)  # the prior in these targets' units
-        rhs = rhs + strength * len(x) * (np.asarray(prior, np.float64) * sx[:, None]) * scale[None]
+        rhs = rhs + strength * n * (np.asarray(prior, np.float64) * sx[:, None]) * scale[None]
     w = np.linalg.solve(gram, rhs)
     coef = w / sx[:, None]
     return coef, my - mx @ coef
@@ -624,7 +638,9 @@ def fit(takes: list[Take], target_names: tuple[str, ...] | list[str], *, offsets
                              "for the target names given.")
         if np.ndim(t.raw) != 2 or np.shape(t.raw)[1] != len(feature_names):
             raise InputError(f"take {i}: raw features have shape {np.shape(t.raw)}, expected (K, {len(feature_names)}).")
-    norm = Normalizer(mode=normalization, tau_s=tau_s).fit([t.raw for t in takes])
+        if not (np.isfinite(t.weight) and t.weight > 0):
+            raise InputError(f"take {i}: weight {t.weight} must be a positive number.")
+    norm = Normalizer(mode=normalization, tau_s=tau_s).fit([t.raw for t in takes], [t.weight for t in takes])
     if prior is not None:  # the prior's columns mean what they meant when it was fitted
         norm.mean, norm.std = np.asarray(prior.feature_mean, np.float64), np.asarray(prior.feature_std, np.float64)
     width = len(offsets_s) * (len(feature_names) + (N_EXPANDED if expand else 0))
@@ -636,6 +652,7 @@ def fit(takes: list[Take], target_names: tuple[str, ...] | list[str], *, offsets
         RATE, HOP, WIN)
     x = np.concatenate([design(model, t.raw, t.times_s) for t in takes])
     y = np.concatenate([t.targets for t in takes]).astype(np.float64)
+    weight = np.concatenate([np.full(len(t.targets), float(t.weight)) for t in takes])
     # frames of a capture's gaps (NaN) are left out; a target some takes lack (a source without a jaw
     # channel) is fitted on the frames that have it, each set of targets with the same frames at once
     known = np.isfinite(y) & np.isfinite(x).all(1)[:, None]
@@ -649,15 +666,18 @@ def fit(takes: list[Take], target_names: tuple[str, ...] | list[str], *, offsets
                              "the articulation model on takes whose lip markers are seen.")
         with_prior = [c for c in cols if prior is not None and target_names[c] in prior.target_names]
         plain = [c for c in cols if c not in with_prior]
+        w = weight[rows] * (rows.sum() / weight[rows].sum())  # relative: alpha keeps its meaning
         if plain:
-            model.coef[:, plain], model.intercept[plain] = ridge(x[rows], y[rows][:, plain], alpha)
+            model.coef[:, plain], model.intercept[plain] = ridge(x[rows], y[rows][:, plain], alpha, weights=w)
         if with_prior:
             assert prior is not None
             pc = [prior.target_names.index(target_names[c]) for c in with_prior]
             model.coef[:, with_prior], model.intercept[with_prior] = ridge(
                 x[rows], y[rows][:, with_prior], alpha, np.asarray(prior.coef, np.float64)[:, pc],
-                np.asarray(prior.target_std, np.float64)[pc], prior_strength)
-        model.target_mean[cols], model.target_std[cols] = y[rows][:, cols].mean(0), y[rows][:, cols].std(0)
+                np.asarray(prior.target_std, np.float64)[pc], prior_strength, weights=w)
+        mean = w @ y[rows][:, cols] / w.sum()
+        model.target_mean[cols] = mean
+        model.target_std[cols] = np.sqrt(w @ (y[rows][:, cols] - mean) ** 2 / w.sum())
     return model
 
 

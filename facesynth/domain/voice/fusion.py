@@ -95,11 +95,11 @@ CLOSURE_SPACING_S = 0.15
 CLOSING_REACH_S = 0.067
 #: A pinned phone keeps its closure unless the predicted opening over it ranks above this quantile.
 PINNED_OPEN_QUANTILE = 0.75
-#: The voice's confidence: 0 at ``SNR_NONE`` and 1 at ``SNR_FULL`` (log RMS above the running
-#: noise floor, which rises by ``FLOOR_RISE_PER_S`` a second). On FACEGOOD's clean takes a
-#: confidence of 1 everywhere was best (chosen on the calibration takes); a noisy recording's
-#: floor rises with its noise and the phones keep their motion where the voice is not above it.
-SNR_NONE, SNR_FULL, FLOOR_RISE_PER_S = 0.5, 1.5, 0.2
+#: The voice's confidence is its log RMS above a running noise floor, which rises by this much a
+#: second (from ``synthesize.voice_snr_none``, no confidence, to ``voice_snr_full``, full): a noisy
+#: recording's floor rises with its noise and the phones keep their motion where the voice is not
+#: above it.
+FLOOR_RISE_PER_S = 0.2
 #: The rig's mouth shapes fitted to read the motion's rounding (jaw, lips), by ARKit name.
 MOUTH_SHAPES = ("jawOpen", "jawForward", "jawLeft", "jawRight", "mouthClose", "mouthFunnel", "mouthPucker",
                 "mouthLeft", "mouthRight", "mouthSmile_L", "mouthSmile_R", "mouthStretch_L", "mouthStretch_R",
@@ -169,11 +169,17 @@ def apply(motion: Motion, samples: np.ndarray, rate: int, starts: np.ndarray, en
 
 # ---------------------------------------------------------------- the voice's side
 
-def confidence(raw: np.ndarray, times_s: np.ndarray) -> np.ndarray:
+def snr_share(above_floor: np.ndarray | float, snr_none: float, snr_full: float) -> np.ndarray:
+    """0..1 the confidence of a log RMS ``above_floor`` the running noise floor: 0 at or below
+    ``snr_none``, 1 at or above ``snr_full``, linear between (a step at ``snr_none`` where the two meet)."""
+    return np.clip((np.asarray(above_floor, np.float64) - snr_none) / max(snr_full - snr_none, 1e-6), 0.0, 1.0)
+
+
+def confidence(raw: np.ndarray, times_s: np.ndarray, snr_none: float, snr_full: float) -> np.ndarray:
     """(T,) 0..1 how clearly the voice is heard at ``times_s`` (T,) s, from the raw features (K, D)
     of :func:`facesynth.domain.voice.articulation.frame_features`: each frame's log RMS above the
     running noise floor (a running minimum rising by :data:`FLOOR_RISE_PER_S` a second), from
-    :data:`SNR_NONE` (0) to :data:`SNR_FULL` (1), the highest over the speech around it
+    ``snr_none`` (0) to ``snr_full`` (1) (:func:`snr_share`), the highest over the speech around it
     (0.3 s: the jaw moves through a syllable's quiet parts too); causal but for that window; 0 past
     the audio's end (a motion may outlast its audio by ``ingest.max_audio_mismatch_s``)."""
     e = raw[:, voice_model.FEATURE_NAMES.index("log_rms")].astype(np.float64)
@@ -181,7 +187,7 @@ def confidence(raw: np.ndarray, times_s: np.ndarray) -> np.ndarray:
         return np.zeros(len(times_s))
     ramp = FLOOR_RISE_PER_S * voice_model.FRAME_S * np.arange(len(e))
     floor = np.minimum.accumulate(e - ramp) + ramp  # f_k = min(e_k, f_{k-1} + rise)
-    c = np.clip((e - floor - SNR_NONE) / (SNR_FULL - SNR_NONE), 0.0, 1.0)
+    c = snr_share(e - floor, snr_none, snr_full)
     from scipy.ndimage import maximum_filter1d
 
     c = maximum_filter1d(c, size=int(round(0.3 / voice_model.FRAME_S)) | 1, mode="nearest")
@@ -403,7 +409,7 @@ def fuse(motion: Motion, samples: np.ndarray, rate: int, starts: np.ndarray, end
     coarse = np.arange(int(np.floor(times[-1] * motion.fps)) + 2) / motion.fps if n else np.zeros(0)
     at_coarse = voice_model.predict_raw(model, raw, coarse)
     pred = {c: np.interp(times, coarse, at_coarse[:, j]) for j, c in enumerate(model.target_names)}
-    conf = confidence(raw, times)
+    conf = confidence(raw, times, settings.voice_snr_none, settings.voice_snr_full)
     ranges = frame_ranges(np.asarray(starts, float), np.asarray(ends, float), fps)
     pinned_ranges = [r for r, p in zip(ranges, phones) if p in settings.pinned_phones] if pinned else []
     moved = frames
