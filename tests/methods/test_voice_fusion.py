@@ -222,6 +222,17 @@ def test_no_voice_past_the_audio_end():
     assert c[2] == 0 and c[3] == 0
 
 
+
+def test_audio_that_starts_in_speech_is_heard_from_its_start():
+    """Batch's noise floor looks both ways: a recording cut in the middle of speech (a steady tone
+    from its first sample, then a pause) is heard from its start, not taken for the noise."""
+    x = np.zeros(48000, np.float32)
+    x[:16000] = 0.1 * np.sin(np.arange(16000) * 0.05)
+    x[32000:] = 0.1 * np.sin(np.arange(16000) * 0.05)
+    raw = articulation.frame_features(x, 16000)
+    c = fusion.confidence(raw, np.array([0.1, 0.5, 1.5, 2.5]), 0.5, 1.5)
+    np.testing.assert_array_equal(c, [1, 1, 0, 1])
+
 def test_the_voice_is_heard_from_snr_none_to_snr_full():
     np.testing.assert_allclose(fusion.snr_share([-1.0, 0.5, 1.0, 1.5, 3.0], 0.5, 1.5), [0, 0, 0.5, 1, 1])
     np.testing.assert_array_equal(fusion.snr_share([0.19, 0.2, 0.21], 0.2, 0.2), [0, 0, 1])  # a step

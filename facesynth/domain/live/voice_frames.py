@@ -17,7 +17,9 @@ time plus the articulation model's look-ahead (:func:`facesynth.domain.voice.art
   the built-in rig once per emotion, with its mouth shapes left to the voice (a trajectory model
   has no frames: its rest pose, whatever the emotion);
 * where nobody speaks the mouth rests: the voice's shapes are scaled by its confidence, the
-  loudness of the last 0.25 s to the look-ahead above a running noise floor, as batch fusion's.
+  loudness of the last 0.25 s to the look-ahead above a running noise floor, as batch fusion's
+  (which looks both ways; a stream's floor starts at its first frame, so a stream that starts in
+  speech takes it for the noise until a quieter frame comes, a fraction of a second).
 
 No phone recogniser runs: a recognised phone settles a phone or more after it ends (300 ms and
 more), long after the frames it could refine were sent, and recognition is what costs a stream

@@ -178,15 +178,18 @@ def snr_share(above_floor: np.ndarray | float, snr_none: float, snr_full: float)
 def confidence(raw: np.ndarray, times_s: np.ndarray, snr_none: float, snr_full: float) -> np.ndarray:
     """(T,) 0..1 how clearly the voice is heard at ``times_s`` (T,) s, from the raw features (K, D)
     of :func:`facesynth.domain.voice.articulation.frame_features`: each frame's log RMS above the
-    running noise floor (a running minimum rising by :data:`FLOOR_RISE_PER_S` a second), from
-    ``snr_none`` (0) to ``snr_full`` (1) (:func:`snr_share`), the highest over the speech around it
-    (0.3 s: the jaw moves through a syllable's quiet parts too); causal but for that window; 0 past
-    the audio's end (a motion may outlast its audio by ``ingest.max_audio_mismatch_s``)."""
+    noise floor (the quietest level within reach, rising by :data:`FLOOR_RISE_PER_S` a second away
+    from each quiet frame, before and after it: audio that starts in speech is heard from its
+    start), from ``snr_none`` (0) to ``snr_full`` (1) (:func:`snr_share`), the highest over the
+    speech around it (0.3 s: the jaw moves through a syllable's quiet parts too); 0 past the
+    audio's end (a motion may outlast its audio by ``ingest.max_audio_mismatch_s``)."""
     e = raw[:, voice_model.FEATURE_NAMES.index("log_rms")].astype(np.float64)
     if not len(e):
         return np.zeros(len(times_s))
     ramp = FLOOR_RISE_PER_S * voice_model.FRAME_S * np.arange(len(e))
-    floor = np.minimum.accumulate(e - ramp) + ramp  # f_k = min(e_k, f_{k-1} + rise)
+    after = np.minimum.accumulate(e - ramp) + ramp  # f_k = min(e_k, f_{k-1} + rise)
+    before = np.minimum.accumulate((e + ramp)[::-1])[::-1] - ramp  # b_k = min(e_k, b_{k+1} + rise)
+    floor = np.minimum(after, before)
     c = snr_share(e - floor, snr_none, snr_full)
     from scipy.ndimage import maximum_filter1d
 
