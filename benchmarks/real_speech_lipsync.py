@@ -31,8 +31,8 @@ Methods, all at 30 frames/s on the take's whole length, no lag (none is searched
   articulation (``synthesize.voice_recognized``, the packaged articulation model). Mouth
   opening = its inner-lip gap (``evaluate.lip_markers``); channels = the solve's curves.
 - ``facesynth_loudness``: ``synthesize --phonemes PHONES --audio TAKE.wav``, the same phones
-  given as a file: the voice's loudness alone moves the mouth (``synthesize.voice_given``), as
-  audio alone did before the articulation model.
+  given as a file, with ``synthesize.voice_given = "loudness"``: the voice's loudness alone moves
+  the mouth, as audio alone did before the articulation model.
 - ``facesynth_phones``: the same from the phones alone (no ``--audio``).
 - ``voice``: the packaged articulation model's own curves from the audio: the voice alone, no
   phones, no motion. The packaged model is now fitted on all seven takes (and GRID's speakers),
@@ -318,12 +318,12 @@ def build_database(work: Path, corpus_config: Path | None = None) -> Path:
 
 def facesynth_method(db: Path, phones: Path | None, folder: Path, n: int, lip_markers, method: str = "dp",
                      audio: Path | None = None, loudness_weight: float | None = None,
-                     solve: bool = True) -> dict[str, np.ndarray]:
+                     solve: bool = True, voice_given: str | None = None) -> dict[str, np.ndarray]:
     """facesynth's channels (n,) for a take: synthesize with ``method`` from ``db`` (the database,
     or the method's fitted model) on the recognised ``phones`` given as a file, with the take's
-    ``audio`` (the voice moves the mouth too, by ``synthesize.voice_given``: its loudness,
-    ``synthesize.loudness_weight`` or ``loudness_weight`` where given) or without it (phones
-    alone); or, ``phones`` None, from the audio alone (``synthesize --audio``: the phones
+    ``audio`` (the voice moves the mouth too, by ``synthesize.voice_given``, or ``voice_given``
+    where given: ``"loudness"`` its loudness, ``synthesize.loudness_weight`` or ``loudness_weight``
+    where given) or without it (phones alone); or, ``phones`` None, from the audio alone (``synthesize --audio``: the phones
     recognised inside, the voice's articulation by ``synthesize.voice_recognized``); solve onto
     the built-in rig (unless ``solve`` is False: the mouth opening alone), read back."""
     from facesynth.domain.evaluation.held_out import lip_gaps
@@ -331,11 +331,14 @@ def facesynth_method(db: Path, phones: Path | None, folder: Path, n: int, lip_ma
     from facesynth.model.motion import Motion
 
     tag = (("" if method == "dp" else f".{method}") + ("" if audio is not None else ".phones")
-           + ("" if phones is not None else ".audio") + ("" if loudness_weight is None else f".w{loudness_weight:g}"))
+           + ("" if phones is not None else ".audio") + ("" if loudness_weight is None else f".w{loudness_weight:g}")
+           + ("" if voice_given is None else f".{voice_given}"))
     motion, curves = folder / f"motion{tag}.h5", folder / f"curves{tag}.h5"
     given = (["--phonemes", str(phones)] if phones is not None else []) + (["--audio", str(audio)] if audio is not None else [])
     if loudness_weight is not None:
         given += ["--set", f"synthesize.loudness_weight={loudness_weight:g}"]
+    if voice_given is not None:
+        given += ["--set", f"synthesize.voice_given={voice_given}"]
     # The cached motion holds only for the source, phones, audio, options and settings it was made from.
     made_from = [phones.read_bytes() if phones is not None else b"", audio.read_bytes() if audio is not None else b"",
                  " ".join(given).encode(), settings_json(Config.load().settings("synthesize")).encode(),
@@ -523,7 +526,8 @@ def main(argv=None) -> dict:
         sources.add(source)
         phones = folder / "phones.TextGrid"
         methods = {"facesynth": facesynth_method(db, None, folder, n, lip_markers, audio=wav),
-                   "facesynth_loudness": facesynth_method(db, phones, folder, n, lip_markers, audio=wav),
+                   "facesynth_loudness": facesynth_method(db, phones, folder, n, lip_markers, audio=wav,
+                                                          voice_given="loudness"),
                    "facesynth_phones": facesynth_method(db, phones, folder, n, lip_markers),
                    "voice": voice_method(samples, rate, n),
                    "coarticulation": facesynth_method(coarticulation, phones, folder, n, lip_markers, "coarticulation",
@@ -539,7 +543,8 @@ def main(argv=None) -> dict:
                                                            lip_markers, audio=wav)
         for weight in sweep:
             sweep[weight].append(window_r(facesynth_method(db, phones, folder, n, lip_markers, audio=wav,
-                                                           loudness_weight=weight, solve=False)["opening"],
+                                                           loudness_weight=weight, solve=False,
+                                                           voice_given="loudness")["opening"],
                                           real["opening"], windows(n, FPS, args.window_s)))
         env = envelope(samples, rate, n, FPS, args.energy_smooth_s)
         methods["energy"] = {"opening": env, "jawOpen": env}

@@ -19,7 +19,9 @@ Data (real voices only are scored; ``--work`` caches everything per utterance):
 
 Per held-out speaker (every real speaker in turn), the articulation model is fitted on every other
 real speaker (plus the synthetic speakers made of *their* voices), with the settings of
-:func:`facesynth.domain.voice.articulation.fit` (``--variant`` changes them, below). The targets
+:func:`facesynth.domain.voice.articulation.fit` (``--variant`` changes them, below), every
+training speaker weighing alike however long it was heard (``--speaker-weights equal``; ``frames``:
+each frame alike, as the releases before fitted). The targets
 of each training speaker are its curves mapped so that its 5th..95th percentiles fall on FACEGOOD's
 (the units live frames use); a curve a source lacks is left out of that target's fit.
 

@@ -612,8 +612,10 @@ def fit(takes: list[Take], target_names: tuple[str, ...] | list[str], *, offsets
         feature_names: tuple[str, ...] = FEATURE_NAMES) -> ArticulationModel:
     """The model fitted on ``takes`` (their targets' columns named ``target_names``): the
     normalizer's training statistics from the takes' frames with speech, then :func:`ridge` on
-    the context. The defaults are the settings chosen by leave-one-take-out within FACEGOOD's
-    calibration takes. Deterministic: the same takes give the same model, bit for bit.
+    the context, each take's frames weighing its ``weight`` (relative to the others': in the
+    statistics, the normalizer's and the targets', and in the squared error). The defaults are the
+    settings chosen by leave-one-take-out within FACEGOOD's calibration takes. Deterministic: the
+    same takes give the same model, bit for bit.
 
     With a ``prior`` model (the packaged, general one) and ``prior_strength`` > 0 the fit adapts
     it: the prior's context (offsets, pooling, loudness columns) and its normalization's training
