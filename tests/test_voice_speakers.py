@@ -165,3 +165,33 @@ def test_a_sweep_point_is_trust_thresholds_or_named_voice_settings(config):
     assert changes == {"voice_opening_map": "percentiles", "voice_closing_threshold": 2.0, "voice_pin_recognized": True}
     with pytest.raises(SystemExit, match="use_opencl is not a setting of synthesize's voice step"):
         speakers.sweep_point("use_opencl=false", settings)
+
+
+def test_speakers_weigh_alike_however_long_each_was_heard():
+    """``--speaker-weights equal``: a speaker heard for 2 s counts as much as one heard for 4 s,
+    exactly as a fit weighing frames alike that hears the short speaker's utterance twice."""
+    from facesynth.domain.voice import articulation as A
+
+    rng = np.random.default_rng(5)
+
+    def utt(speaker: str, seconds: float, seed: int):
+        rate = A.RATE
+        t = np.arange(int(seconds * rate)) / rate
+        syllables = 0.5 + 0.5 * np.sin(2 * np.pi * (3.0 + seed) * t)
+        x = (syllables * np.sin(2 * np.pi * (140 + 40 * seed) * t) + 0.01 * rng.normal(size=len(t))).astype(np.float32)
+        n = int(seconds * speakers.FPS)
+        opening = np.interp(np.arange(n) / speakers.FPS, t, syllables)
+        return speakers.Utt("grid", speaker, f"u{seed}", Path(f"u{seed}.wav"), x, rate, n, {"opening": opening},
+                            raw=A.frame_features(x, rate))
+
+    long, short = utt("grid/a", 4.0, 0), utt("grid/b", 2.0, 1)
+    ref = {"opening": (0.0, 1.0), "jawOpen": (0.0, 0.5)}
+    equal = speakers.fit_fold({"grid/a": [long], "grid/b": [short]}, ref, "default", 0, 0, speaker_weights="equal")
+    twice = speakers.fit_fold({"grid/a": [long], "grid/b": [short, short]}, ref, "default", 0, 0,
+                              speaker_weights="frames")
+    frames = speakers.fit_fold({"grid/a": [long], "grid/b": [short]}, ref, "default", 0, 0, speaker_weights="frames")
+    np.testing.assert_allclose(equal.coef, twice.coef, rtol=1e-6, atol=1e-9)
+    np.testing.assert_allclose(equal.feature_mean, twice.feature_mean, rtol=1e-9)
+    assert not np.allclose(equal.coef, frames.coef, rtol=1e-3)
+    with pytest.raises(ValueError, match="speaker_weights"):
+        speakers.fit_fold({"grid/a": [long]}, ref, "default", 0, 0, speaker_weights="seconds")
