@@ -145,7 +145,9 @@ def test_live_page_in_headless_chromium(stream_url, tiny_corpus, held_out_take, 
     assert body.get("live-done") == "1" and body["live"].startswith("finished")
     # (the screen refreshes as it can in headless Chromium: a frame due while another is shown is skipped)
     assert int(body["frame"]) == frames - 1 and 5 <= int(body["live-shown"]) <= frames
-    assert float(body["jaw-max"]) > 0.2  # the mouth opened on the speech
+    # the mouth opened on the speech: the voice's jaw reaches about 0.2 in a tenth of the frames sent
+    # (0.25 at most), and a loaded machine shows only some of them, so not always its highest
+    assert float(body["jaw-max"]) > 0.12
     assert float(body["jaw"]) < 0.5 * float(body["jaw-max"])  # and closed at its end
     assert body["live-states"].split(" | ")[:3] == ["connecting", "connected", "streaming (file)"]
     # a file is sent up to 100 ms ahead of its time in the speech, so its frames may come back before it
