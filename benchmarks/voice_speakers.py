@@ -112,9 +112,10 @@ FACEGOOD_SPEAKER = "facegood/shirley"
 FACEGOOD_FAIR = ("1114_2_04", "1114_2_05", "1114_3_15")
 #: Settings of the voice step only (not of the phones' motion the cache holds).
 VOICE_STEP_SETTINGS = ("loudness_weight", "loudness_smoothing_s", "voice_recognized", "voice_given",
-                       "voice_snr_none", "voice_snr_full", "articulation_model", "voice_weight", "voice_rounding_weight", "voice_closure_threshold",
-                       "voice_closing_threshold", "voice_trust_window_s", "voice_trust_low", "voice_trust_high",
-                       "voice_pin_recognized", "articulation_prior")
+                       "voice_snr_none", "voice_snr_full", "articulation_model", "voice_weight",
+                       "voice_rounding_weight", "voice_closure_threshold", "voice_closing_threshold",
+                       "voice_trust_window_s", "voice_trust_low", "voice_trust_high", "voice_pin_recognized",
+                       "articulation_prior")
 
 
 @dataclass
@@ -535,6 +536,8 @@ def fit_fold(train: dict[str, list[Utt]], ref, variant: str, synthetic: int | di
     on the utterances' raw features ``u.raw`` whose columns are ``feature_names``, the speakers
     weighed as ``speaker_weights`` says (:data:`SPEAKER_WEIGHTS`; a synthetic voice weighs as the
     real one it was made of)."""
+    if speaker_weights not in SPEAKER_WEIGHTS:
+        raise ValueError(f"speaker_weights {speaker_weights!r}: one of {', '.join(SPEAKER_WEIGHTS)}")
     pairs = [(u, y) for speaker in sorted(train) for u, y in zip(train[speaker], speaker_targets(train[speaker], ref))]
     counts = synthetic if isinstance(synthetic, dict) else {s: synthetic for s in train}
     known = np.array([np.isfinite(np.concatenate([y[:, j] for _, y in pairs])).any() for j in range(len(TARGETS))])
@@ -546,8 +549,6 @@ def fit_fold(train: dict[str, list[Utt]], ref, variant: str, synthetic: int | di
             y[:, jaw] = lo + (y[:, opening] - a) * (hi - lo) / (b - a)
         known[jaw] = True
     names = tuple(t for t, k in zip(TARGETS, known) if k)  # a target no training speaker has is not predicted
-    if speaker_weights not in SPEAKER_WEIGHTS:
-        raise ValueError(f"speaker_weights {speaker_weights!r}: one of {', '.join(SPEAKER_WEIGHTS)}")
     weight = {s: 1.0 if speaker_weights == "frames" else FPS / sum(u.n for u in v) for s, v in train.items()}
     takes = [A.Take(u.raw, y[:, known], FPS, weight[u.speaker]) for u, y in pairs]
     for u, y in pairs:
@@ -861,7 +862,8 @@ def main(argv=None) -> dict:
                     else curves["phones"]
                 shipped_path = packaged
                 if args.packaged_folds and u.source in ship_sources:  # the packaged fit, this speaker left out
-                    shipped_path = args.work / "folds" / f"packaged-minus.{args.speaker_weights}.{speaker.replace('/', '+')}.h5"
+                    shipped_path = (args.work / "folds" /
+                                    f"packaged-minus.{args.speaker_weights}.{speaker.replace('/', '+')}.h5")
                     if not shipped_path.exists():
                         write_packaged({s: v for s, v in by_speaker.items() if s != speaker}, ship_sources, ref,
                                        args.variant, args.synthetic, args.seed, shipped_path, not args.no_balance,

@@ -297,11 +297,10 @@ class Normalizer:
         """Set ``mean``, ``std`` from the speech frames of training utterances (each (K, D)), each
         utterance's frames weighing ``weights`` (one per utterance; all alike without)."""
         chosen = [r[self.speech(r)[0]] for r in raws]
-        rows = np.concatenate(chosen).astype(np.float64)
-        w = np.concatenate([np.full(len(c), 1.0 if weights is None else float(wt))
-                            for c, wt in zip(chosen, weights or [1.0] * len(raws))])
-        self.mean = w @ rows / w.sum()
-        self.std = np.maximum(np.sqrt(w @ (rows - self.mean) ** 2 / w.sum()), 1e-6)
+        weights = [1.0] * len(raws) if weights is None else weights
+        w = np.concatenate([np.full(len(c), float(wt)) for c, wt in zip(chosen, weights)])
+        self.mean, std = weighted_moments(np.concatenate(chosen).astype(np.float64), w)
+        self.std = np.maximum(std, 1e-6)
         return self
 
     def apply(self, raw: np.ndarray) -> np.ndarray:
@@ -572,6 +571,14 @@ class Take:
         return np.arange(len(self.targets)) / self.fps
 
 
+def weighted_moments(values: np.ndarray, weights: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(mean (D,), standard deviation (D,)) float64 of the rows of ``values`` (N, D), each row
+    weighing ``weights`` (N,) >= 0 (a row of weight 2 counts as the row twice)."""
+    n = weights.sum()
+    mean = weights @ values / n
+    return mean, np.sqrt(weights @ (values - mean) ** 2 / n)
+
+
 def ridge(x: np.ndarray, y: np.ndarray, alpha: float, prior: np.ndarray | None = None,
           prior_std: np.ndarray | None = None, strength: float = 0.0,
           weights: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
@@ -591,18 +598,18 @@ def ridge(x: np.ndarray, y: np.ndarray, alpha: float, prior: np.ndarray | None =
     y = np.asarray(y, np.float64)
     w = np.ones(len(x)) if weights is None else np.asarray(weights, np.float64)
     n = float(w.sum())
-    mx, my = w @ x / n, w @ y / n
-    sx = np.maximum(np.sqrt(w @ (x - mx) ** 2 / n), 1e-8)
+    mx, sx = weighted_moments(x, w)
+    my, sy = weighted_moments(y, w)
+    sx = np.maximum(sx, 1e-8)
     xs = (x - mx) / sx
     gram = xs.T @ (w[:, None] * xs)
     gram[np.diag_indices_from(gram)] += (alpha + (strength if prior is not None else 0.0)) * n
     rhs = xs.T @ (w[:, None] * (y - my))
     if prior is not None and strength > 0:
-        sy = np.maximum(np.sqrt(w @ (y - my) ** 2 / n), 1e-12)
-        scale = sy / np.maximum(np.asarray(prior_std, np.float64), 1e-12)  # the prior in these targets' units
+        scale = np.maximum(sy, 1e-12) / np.maximum(np.asarray(prior_std, np.float64), 1e-12)  # the prior in these units
         rhs = rhs + strength * n * (np.asarray(prior, np.float64) * sx[:, None]) * scale[None]
-    w = np.linalg.solve(gram, rhs)
-    coef = w / sx[:, None]
+    beta = np.linalg.solve(gram, rhs)
+    coef = beta / sx[:, None]
     return coef, my - mx @ coef
 
 
@@ -677,9 +684,7 @@ def fit(takes: list[Take], target_names: tuple[str, ...] | list[str], *, offsets
             model.coef[:, with_prior], model.intercept[with_prior] = ridge(
                 x[rows], y[rows][:, with_prior], alpha, np.asarray(prior.coef, np.float64)[:, pc],
                 np.asarray(prior.target_std, np.float64)[pc], prior_strength, weights=w)
-        mean = w @ y[rows][:, cols] / w.sum()
-        model.target_mean[cols] = mean
-        model.target_std[cols] = np.sqrt(w @ (y[rows][:, cols] - mean) ** 2 / w.sum())
+        model.target_mean[cols], model.target_std[cols] = weighted_moments(y[rows][:, cols], w)
     return model
 
 
