@@ -112,7 +112,7 @@ FACEGOOD_SPEAKER = "facegood/shirley"
 FACEGOOD_FAIR = ("1114_2_04", "1114_2_05", "1114_3_15")
 #: Settings of the voice step only (not of the phones' motion the cache holds).
 VOICE_STEP_SETTINGS = ("loudness_weight", "loudness_smoothing_s", "voice_recognized", "voice_given",
-                       "voice_snr_none", "voice_snr_full", "articulation_model", "voice_weight",
+                       "voice_snr_none", "voice_snr_full", "voice_activity", "articulation_model", "voice_weight",
                        "voice_rounding_weight", "voice_closure_threshold", "voice_closing_threshold",
                        "voice_trust_window_s", "voice_trust_low", "voice_trust_high", "voice_pin_recognized",
                        "articulation_prior")

@@ -302,12 +302,15 @@ class SynthesizeSettings:
                                      "closures); -1 with voice_trust_high -1: always trusted", ge=-1, le=1)
     voice_trust_high: float = setting("not in the paper: at or above this local Pearson r the voice is fully "
                                       "trusted (linear between)", ge=-1, le=1)
-    voice_snr_none: float = setting("not in the paper: the voice's log RMS above its running noise floor at or "
+    voice_snr_none: float = setting("not in the paper: the speech band's loudness above its running noise floor at or "
                                     "below which it is not heard (no confidence: the method's mouth in batch, rest "
                                     "live)", unit="natural log of an amplitude ratio", ge=0, le=10)
-    voice_snr_full: float = setting("not in the paper: the voice's log RMS above its running noise floor from which "
+    voice_snr_full: float = setting("not in the paper: the speech band's loudness above its running noise floor from which "
                                     "it is heard fully (linear from voice_snr_none)",
                                     unit="natural log of an amplitude ratio", ge=0, le=10)
+    voice_activity: int = setting("not in the paper: WebRTC's voice activity detector, whose speech frames are "
+                                  "heard fully whatever their level (aggressiveness 0..3: higher calls more noise, "
+                                  "and more quiet speech, not speech; -1: the level alone)", ge=-1, le=3)
     voice_pin_recognized: bool = setting("not in the paper: with the phones recognised, whether pinned_phones keep "
                                          "their closure against the voice's articulation (recognised /p b m/ are "
                                          "often wrong)")

@@ -117,10 +117,46 @@ def test_the_jaw_comes_from_the_opening_or_the_jaw_prediction_as_set(db, config,
 
 def test_the_mouth_rests_in_steady_noise(model):
     rng = np.random.default_rng(0)
-    noise = (rng.normal(0, 0.01 * 32768, 16000 * 2)).astype("<i2").tobytes()  # 2 s at -40 dB, nobody speaking
-    _, frames, _ = _run(model, noise)
-    jaw = np.array([f["arkit"][list(model.arkit_names).index("jawOpen")] for f in frames])
-    assert len(frames) == 60 and jaw.max() < 0.02
+    n = 16000 * 2  # 2 s at about -40 dBFS, nobody speaking
+    spectrum = np.fft.rfft(rng.normal(0, 1, n)) / np.maximum(np.arange(n // 2 + 1), 1)
+    brown = np.fft.irfft(spectrum, n)
+    for name, noise in (("white", rng.normal(0, 0.01, n)), ("brown (rumble)", 0.01 * brown / brown.std())):
+        _, frames, _ = _run(model, (noise * 32768).astype("<i2").tobytes())
+        jaw = np.array([f["arkit"][list(model.arkit_names).index("jawOpen")] for f in frames])
+        assert len(frames) == 60 and jaw.max() < 0.02, name
+
+
+def test_the_frames_do_not_depend_on_how_the_audio_is_cut(model, pcm):
+    _, in_20ms, _ = _run(model, pcm)
+    session = Session(model, Config.load().settings("align"), "test")
+    rng, frames, a = np.random.default_rng(3), [], 0
+    while a < len(pcm):
+        b = a + 2 * int(rng.integers(1, 1500))
+        frames += [m for m in session.audio(pcm[a:b]) if m["type"] == "frame"]
+        a = b
+    frames += [m for m in session.end() if m["type"] == "frame"]
+    assert [f["arkit"] for f in frames] == [f["arkit"] for f in in_20ms]
+
+
+def test_a_stream_that_starts_in_speech_in_a_loud_room_moves_the_mouth(db, config, pcm):
+    """No quiet frame comes before the speech to tell the noise's level: the voice activity
+    detector hears the speech from its first syllable, where the level alone hears it in part."""
+    samples = np.frombuffer(pcm, "<i2").astype(np.float64) / 32768.0
+    speech = samples[int(0.4 * 16000):]  # cut in the middle of the speech
+    noisy = speech + np.random.default_rng(2).normal(0, 1.2 * speech[:24000].std(), len(speech))
+    noisy_pcm = (np.clip(noisy, -1, 1) * 32767).astype("<i2").tobytes()
+    jaws = {}
+    for detector in (2, -1):
+        live = LiveModel(db, replace(config.settings("synthesize"), voice_activity=detector),
+                         replace(config.settings("stream"), voice="articulation"), config.settings("solve"))
+        _, frames, _ = _run(live, noisy_pcm)
+        jaws[detector] = np.array([f["arkit"][list(live.arkit_names).index("jawOpen")] for f in frames])
+    vm = live.voice_model
+    said = expected_jaw(vm, articulation.predict(vm, noisy.astype(np.float32), 16000, len(frames), 30.0),
+                        live.stream.voice_jaw)
+    speaking = slice(6, 45)  # 0.2 .. 1.5 s: after the detector's first 100 ms
+    np.testing.assert_allclose(jaws[2][speaking], said[speaking], atol=2e-4)  # heard fully
+    assert np.mean(jaws[-1][speaking] < said[speaking] - 0.01) > 0.3  # the level alone: in part
 
 
 def test_an_emotion_switch_changes_the_face_around_the_voice_mouth(model, pcm, db):

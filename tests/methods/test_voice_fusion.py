@@ -10,7 +10,7 @@ from facesynth.base.errors import ArtifactError, InputError
 from facesynth.domain.methods import MethodSettings, steps
 from facesynth.domain.postprocess.concatenation import frame_ranges
 from facesynth.domain.speech.loudness import lip_gaps
-from facesynth.domain.voice import articulation, fusion
+from facesynth.domain.voice import activity, articulation, fusion
 
 
 @pytest.fixture(scope="module")
@@ -234,8 +234,8 @@ def test_audio_that_starts_in_speech_is_heard_from_its_start():
     np.testing.assert_array_equal(c, [1, 1, 0, 1])
 
 def test_the_voice_is_heard_from_snr_none_to_snr_full():
-    np.testing.assert_allclose(fusion.snr_share([-1.0, 0.5, 1.0, 1.5, 3.0], 0.5, 1.5), [0, 0, 0.5, 1, 1])
-    np.testing.assert_array_equal(fusion.snr_share([0.19, 0.2, 0.21], 0.2, 0.2), [0, 0, 1])  # a step
+    np.testing.assert_allclose(activity.snr_share([-1.0, 0.5, 1.0, 1.5, 3.0], 0.5, 1.5), [0, 0, 0.5, 1, 1])
+    np.testing.assert_array_equal(activity.snr_share([0.19, 0.2, 0.21], 0.2, 0.2), [0, 0, 1])  # a step
     # a tone at a steady level over silence: linear in the level above the floor, silence unheard
     x = np.zeros(32000, np.float32)
     x[8000:24000] = 0.1 * np.sin(np.arange(16000) * 0.05)

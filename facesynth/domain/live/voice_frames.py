@@ -16,10 +16,13 @@ time plus the articulation model's look-ahead (:func:`facesynth.domain.voice.art
   stream's emotion (the ``emotion`` control message changes it from the next frame), solved onto
   the built-in rig once per emotion, with its mouth shapes left to the voice (a trajectory model
   has no frames: its rest pose, whatever the emotion);
-* where nobody speaks the mouth rests: the voice's shapes are scaled by its confidence, the
-  loudness of the last 0.25 s to the look-ahead above a running noise floor, as batch fusion's
-  (which looks both ways; a stream's floor starts at its first frame, so a stream that starts in
-  speech takes it for the noise until a quieter frame comes, a fraction of a second).
+* where nobody speaks the mouth rests: the voice's shapes are scaled by its confidence over the
+  last 0.25 s to the look-ahead, as batch fusion's (:mod:`facesynth.domain.voice.activity`): fully
+  where WebRTC's voice activity detector hears speech (``synthesize.voice_activity``), else the
+  speech band's loudness above a running noise floor. Batch's floor looks both ways; a stream's
+  starts at its first frame, so a stream that starts in speech would take it for the noise until a
+  quieter frame came: there the detector hears it, as it hears speech that stands only a few dB
+  above a noisy room's hum.
 
 No phone recogniser runs: a recognised phone settles a phone or more after it ends (300 ms and
 more), long after the frames it could refine were sent, and recognition is what costs a stream
@@ -34,8 +37,8 @@ from collections import deque
 import numpy as np
 
 from facesynth.base.config import SynthesizeSettings
-from facesynth.domain.voice.articulation import StreamingPredictor, model_look_ahead_s
-from facesynth.domain.voice.fusion import FLOOR_RISE_PER_S, snr_share
+from facesynth.domain.voice import activity
+from facesynth.domain.voice.articulation import FRAME_S, HALF_WINDOW_S, StreamingPredictor, model_look_ahead_s
 from facesynth.model.articulation import ArticulationModel
 
 from .phones import SAMPLE_RATE
@@ -45,8 +48,6 @@ from .synthesizer import Frame
 VOICE_SHAPES = ("jawOpen", "mouthFunnel", "mouthPucker")
 #: The closure score's rise (above the threshold) over which the jaw goes from open to closed.
 CLOSURE_RAMP = 0.3
-#: The voice's loudness is read in frames of this many samples (10 ms at 16 kHz).
-ENERGY_HOP = 160
 #: How far back from a frame's time the voice's confidence looks (s): the jaw moves through a
 #: syllable's quiet parts too (batch looks 0.15 s each way).
 CONFIDENCE_BACK_S = 0.25
@@ -79,12 +80,14 @@ class VoiceFrames:
         self.sent = 0
         self.samples = 0
         self.look_ahead_s = model_look_ahead_s(voice_model)
-        # the voice's confidence, as batch fusion's (:func:`facesynth.domain.voice.fusion.confidence`):
-        # each 10 ms's log RMS above a running noise floor; the recent values are kept
-        self._pending = np.zeros(0, np.float32)
+        # the voice's confidence, as batch fusion's (:func:`facesynth.domain.voice.fusion.confidence`),
+        # per 10 ms analysis frame of the predictor's; the recent values are kept
+        self.speech = activity.SpeechFrames(synth.voice_activity)
+        self._speech = np.zeros(0)  # the detector's frames not yet matched to an analysis frame
+        self._powers = np.zeros(0)  # the speech band's power of the last analysis frames
         self._floor: float | None = None
-        self._confidence: deque[float] = deque(maxlen=int(round(2.0 * SAMPLE_RATE / ENERGY_HOP)))
-        self._hops = 0  # 10 ms frames of confidence computed so far
+        self._confidence: deque[float] = deque(maxlen=int(round(2.0 / FRAME_S)))
+        self._heard = 0  # analysis frames whose confidence is known
 
     def set_emotion(self, name: str) -> None:
         """The emotion of the frames from the next one on."""
@@ -109,31 +112,33 @@ class VoiceFrames:
             w[:, slot] = value * (open_share if name == "jawOpen" else share)
         return w
 
-    def _listen(self, samples: np.ndarray) -> None:
-        """The confidence of the 10 ms frames ``samples`` (the newest audio) completes."""
-        x = np.concatenate([self._pending, np.asarray(samples, np.float32)])
-        whole = len(x) // ENERGY_HOP * ENERGY_HOP
-        self._pending = x[whole:]
-        if not whole:
+    def _listen(self, raw: np.ndarray) -> None:
+        """The confidence of the analysis frames ``raw`` (k, D) (the predictor's newest; the
+        detector's frames of the same 10 ms are in, each ends before its analysis frame does)."""
+        if not len(raw):
             return
-        hops = x[:whole].reshape(-1, ENERGY_HOP).astype(np.float64)
-        energy = np.log(np.sqrt((hops * hops).mean(1)) + 1e-5)
-        rise = FLOOR_RISE_PER_S * ENERGY_HOP / SAMPLE_RATE
-        for e in energy:
+        power = activity.band_power(raw)
+        level = activity.band_level(power, self._powers)
+        self._powers = np.concatenate([self._powers, power])[-(activity.LEVEL_FRAMES - 1):]
+        speech = np.zeros(len(raw))
+        known = min(len(raw), len(self._speech))  # at the audio's end: a last part-frame the detector never reads
+        speech[:known], self._speech = self._speech[:known], self._speech[known:]
+        rise = activity.FLOOR_RISE_PER_S * FRAME_S
+        for e, heard in zip(level, speech):
             self._floor = e if self._floor is None else min(e, self._floor + rise)
-            self._confidence.append(float(snr_share(e - self._floor, *self.snr)))
-        self._hops += len(energy)
+            self._confidence.append(float(activity.frame_confidence(e, self._floor, heard, *self.snr)))
+        self._heard += len(raw)
 
     def _confidence_at(self, times: np.ndarray) -> np.ndarray:
-        """(k,) the voice's confidence at ``times`` s: the highest over the heard 10 ms frames from
-        :data:`CONFIDENCE_BACK_S` before each time to its look-ahead after it."""
+        """(k,) the voice's confidence at ``times`` s: the highest over the analysis frames from
+        :data:`CONFIDENCE_BACK_S` before each time to the last its prediction reads (those centred
+        up to the look-ahead less the half window, all heard when the frame is sent)."""
         kept = np.array(self._confidence)
-        first = self._hops - len(kept)  # the 10 ms frame of kept[0]
-        hop_s = ENERGY_HOP / SAMPLE_RATE
+        first = self._heard - len(kept)  # the analysis frame of kept[0]
         out = np.zeros(len(times))
         for k, t in enumerate(times):
-            a = max(int(np.floor((t - CONFIDENCE_BACK_S) / hop_s)) - first, 0)
-            b = min(int(np.ceil((t + self.look_ahead_s) / hop_s)) - first, len(kept))
+            a = max(int(np.floor((t - CONFIDENCE_BACK_S) / FRAME_S + 1e-9)) - first, 0)
+            b = min(int(np.floor((t + self.look_ahead_s - HALF_WINDOW_S) / FRAME_S + 1e-9)) + 1 - first, len(kept))
             out[k] = kept[a:b].max() if b > a else 0.0
         return out
 
@@ -151,14 +156,17 @@ class VoiceFrames:
     def push(self, samples: np.ndarray, now: float) -> list[Frame]:
         """The frames that the audio up to ``now`` (s received, ``samples`` the newest) decides."""
         self.samples += len(samples)
-        self._listen(samples)
-        return self._frames(self.predictor.push(samples), now)
+        self._speech = np.concatenate([self._speech, self.speech.push(samples)])
+        predictions = self.predictor.push(samples)
+        self._listen(self.predictor.heard)
+        return self._frames(predictions, now)
 
     def finish(self, now: float) -> list[Frame]:
         """End of stream: the remaining frames, as many in all as batch synthesis gives the audio (its
         capture frames down-sampled to the stream's rate; one more or less than the frames whose time
         lies within the audio, by the rounding of the two grids)."""
         rest = self.predictor.finish()
+        self._listen(self.predictor.heard)
         grid, fps = self.model.grid_fps, self.model.stream.fps
         n_capture = int(round(self.samples / SAMPLE_RATE * grid))
         total = int(np.floor((n_capture - 1) / (grid / fps))) + 1 if n_capture > 0 else 0

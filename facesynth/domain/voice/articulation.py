@@ -717,6 +717,8 @@ class StreamingPredictor:
         self.normed = np.zeros((0, width), np.float32)  # normalized frames kept (from first_kept)
         self.first_kept = 0
         self.done = 0  # output frames emitted
+        #: (k, D) the raw analysis frames the last push or finish completed
+        self.heard = np.zeros((0, N_FEATURES), np.float32)
 
     def _normalize(self, raw: np.ndarray) -> np.ndarray:
         if self.state is None:
@@ -759,14 +761,14 @@ class StreamingPredictor:
 
     def push(self, chunk: np.ndarray) -> np.ndarray:
         """(k, Y) float64 predictions of the output frames that ``chunk`` (n,) completes."""
-        raw = self.frames.push(chunk)
+        raw = self.heard = self.frames.push(chunk)
         if len(raw):
             self.normed = np.concatenate([self.normed, self._normalize(raw)])
         return self._emit(final=False)
 
     def finish(self) -> np.ndarray:
         """(k, Y) float64 predictions of the remaining output frames, up to the audio's end."""
-        raw = self.frames.finish()
+        raw = self.heard = self.frames.finish()
         if len(raw):
             self.normed = np.concatenate([self.normed, self._normalize(raw)])
         return self._emit(final=True)

@@ -76,6 +76,7 @@ from facesynth.domain.rig.face import Rig
 from facesynth.domain.rig.loading import load_rig, marker_map
 from facesynth.domain.speech import loudness
 from facesynth.domain.speech.loudness import lip_gaps, move_to_gaps, moving_average, opening_direction
+from facesynth.domain.voice import activity
 from facesynth.domain.voice import articulation as voice_model
 from facesynth.model.articulation import ArticulationModel
 from facesynth.model.motion import Motion
@@ -95,11 +96,6 @@ CLOSURE_SPACING_S = 0.15
 CLOSING_REACH_S = 0.067
 #: A pinned phone keeps its closure unless the predicted opening over it ranks above this quantile.
 PINNED_OPEN_QUANTILE = 0.75
-#: The voice's confidence is its log RMS above a running noise floor, which rises by this much a
-#: second (from ``synthesize.voice_snr_none``, no confidence, to ``voice_snr_full``, full): a noisy
-#: recording's floor rises with its noise and the phones keep their motion where the voice is not
-#: above it.
-FLOOR_RISE_PER_S = 0.2
 #: The rig's mouth shapes fitted to read the motion's rounding (jaw, lips), by ARKit name.
 MOUTH_SHAPES = ("jawOpen", "jawForward", "jawLeft", "jawRight", "mouthClose", "mouthFunnel", "mouthPucker",
                 "mouthLeft", "mouthRight", "mouthSmile_L", "mouthSmile_R", "mouthStretch_L", "mouthStretch_R",
@@ -169,34 +165,26 @@ def apply(motion: Motion, samples: np.ndarray, rate: int, starts: np.ndarray, en
 
 # ---------------------------------------------------------------- the voice's side
 
-def snr_share(above_floor: np.ndarray | float, snr_none: float, snr_full: float) -> np.ndarray:
-    """0..1 the confidence of a log RMS ``above_floor`` the running noise floor: 0 at or below
-    ``snr_none``, 1 at or above ``snr_full``, linear between (a step at ``snr_none`` where the two meet)."""
-    return np.clip((np.asarray(above_floor, np.float64) - snr_none) / max(snr_full - snr_none, 1e-6), 0.0, 1.0)
-
-
-def confidence(raw: np.ndarray, times_s: np.ndarray, snr_none: float, snr_full: float) -> np.ndarray:
+def confidence(raw: np.ndarray, times_s: np.ndarray, snr_none: float, snr_full: float,
+               speech: np.ndarray | None = None) -> np.ndarray:
     """(T,) 0..1 how clearly the voice is heard at ``times_s`` (T,) s, from the raw features (K, D)
-    of :func:`facesynth.domain.voice.articulation.frame_features`: each frame's log RMS above the
-    noise floor (the quietest level within reach, rising by :data:`FLOOR_RISE_PER_S` a second away
-    from each quiet frame, before and after it: audio that starts in speech is heard from its
-    start), from ``snr_none`` (0) to ``snr_full`` (1) (:func:`snr_share`), the highest over the
-    speech around it (0.3 s: the jaw moves through a syllable's quiet parts too); 0 past the
-    audio's end (a motion may outlast its audio by ``ingest.max_audio_mismatch_s``)."""
-    e = raw[:, voice_model.FEATURE_NAMES.index("log_rms")].astype(np.float64)
-    if not len(e):
+    of :func:`facesynth.domain.voice.articulation.frame_features` and WebRTC's voice activity
+    ``speech`` (K,) 0/1 per 10 ms (none: the level alone): each frame's
+    :func:`facesynth.domain.voice.activity.frame_confidence`, the speech band's level above the
+    noise floor looking both ways (audio that starts in speech is heard from its start), the
+    highest over the speech around it (0.3 s: the jaw moves through a syllable's quiet parts too);
+    0 past the audio's end (a motion may outlast its audio by ``ingest.max_audio_mismatch_s``)."""
+    if not len(raw):
         return np.zeros(len(times_s))
-    ramp = FLOOR_RISE_PER_S * voice_model.FRAME_S * np.arange(len(e))
-    after = np.minimum.accumulate(e - ramp) + ramp  # f_k = min(e_k, f_{k-1} + rise)
-    before = np.minimum.accumulate((e + ramp)[::-1])[::-1] - ramp  # b_k = min(e_k, b_{k+1} + rise)
-    floor = np.minimum(after, before)
-    c = snr_share(e - floor, snr_none, snr_full)
+    level = activity.band_level(activity.band_power(raw))
+    c = activity.frame_confidence(level, activity.floor_both_ways(level),
+                                  np.zeros(len(level)) if speech is None else speech, snr_none, snr_full)
     from scipy.ndimage import maximum_filter1d
 
     c = maximum_filter1d(c, size=int(round(0.3 / voice_model.FRAME_S)) | 1, mode="nearest")
     times_s = np.asarray(times_s, np.float64)
-    idx = np.clip(np.rint(times_s / voice_model.FRAME_S).astype(np.int64), 0, len(e) - 1)
-    return c[idx] * (times_s <= (len(e) - 0.5) * voice_model.FRAME_S)  # past the audio's end: no voice
+    idx = np.clip(np.rint(times_s / voice_model.FRAME_S).astype(np.int64), 0, len(c) - 1)
+    return c[idx] * (times_s <= (len(c) - 0.5) * voice_model.FRAME_S)  # past the audio's end: no voice
 
 
 def closure_frames(score: np.ndarray, fps: float, threshold: float) -> np.ndarray:
@@ -405,14 +393,16 @@ def fuse(motion: Motion, samples: np.ndarray, rate: int, starts: np.ndarray, end
             "synthesize.loudness_lip_markers to its upper and lower inner-lip markers, or synthesize.voice_weight = 0.")
     frames, fps = motion.markers_capture.astype(np.float64), motion.capture_fps
     n = len(frames)
-    raw = voice_model.frame_features(samples, rate)
+    heard = voice_model.to_analysis_rate(samples, rate)
+    raw = voice_model.frame_features(heard, voice_model.RATE)
     times = np.arange(n) / fps
     # predicted at the output rate and interpolated to the capture rate: the model's curves are
     # smoother than 30/s (a 30 ms pooled context), and that is 4 times less work at 120/s
     coarse = np.arange(int(np.floor(times[-1] * motion.fps)) + 2) / motion.fps if n else np.zeros(0)
     at_coarse = voice_model.predict_raw(model, raw, coarse)
     pred = {c: np.interp(times, coarse, at_coarse[:, j]) for j, c in enumerate(model.target_names)}
-    conf = confidence(raw, times, settings.voice_snr_none, settings.voice_snr_full)
+    speech = activity.speech_frames(heard, settings.voice_activity, len(raw))
+    conf = confidence(raw, times, settings.voice_snr_none, settings.voice_snr_full, speech)
     ranges = frame_ranges(np.asarray(starts, float), np.asarray(ends, float), fps)
     pinned_ranges = [r for r, p in zip(ranges, phones) if p in settings.pinned_phones] if pinned else []
     moved = frames
