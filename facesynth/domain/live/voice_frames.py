@@ -124,9 +124,11 @@ class VoiceFrames:
         known = min(len(raw), len(self._speech))  # at the audio's end: a last part-frame the detector never reads
         speech[:known], self._speech = self._speech[:known], self._speech[known:]
         rise = activity.FLOOR_RISE_PER_S * FRAME_S
-        for e, heard in zip(level, speech):
+        floor = np.empty(len(level))
+        for k, e in enumerate(level.tolist()):
             self._floor = e if self._floor is None else min(e, self._floor + rise)
-            self._confidence.append(float(activity.frame_confidence(e, self._floor, heard, *self.snr)))
+            floor[k] = self._floor
+        self._confidence.extend(activity.frame_confidence(level, floor, speech, *self.snr).tolist())
         self._heard += len(raw)
 
     def _confidence_at(self, times: np.ndarray) -> np.ndarray:
