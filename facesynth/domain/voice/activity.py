@@ -21,7 +21,7 @@ speech, each per 10 ms analysis frame, and a frame is heard as clearly as the st
 Why WebRTC's and not a hand-written detector: the voicing feature (the autocorrelation's peak) is
 fooled by rumble (brown noise reads as voiced), and a level detector cannot tell a loud noisy
 room from speech. WebRTC's detector is small (C, no model files), costs microseconds per 10 ms
-and is the one most real-time voice software uses.
+and is the one WebRTC's real-time calls run on.
 """
 
 from __future__ import annotations
