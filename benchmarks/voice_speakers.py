@@ -20,8 +20,9 @@ Data (real voices only are scored; ``--work`` caches everything per utterance):
 Per held-out speaker (every real speaker in turn), the articulation model is fitted on every other
 real speaker (plus the synthetic speakers made of *their* voices), with the settings of
 :func:`facesynth.domain.voice.articulation.fit` (``--variant`` changes them, below), every
-training speaker weighing alike however long it was heard (``--speaker-weights equal``; ``frames``:
-each frame alike, as the releases before fitted). The targets
+training speaker weighing alike however long it was heard (``--speaker-weights equal``; ``sources``:
+every source alike, its speakers alike within it; ``frames``: each frame alike, as the releases
+before last fitted). The targets
 of each training speaker are its curves mapped so that its 5th..95th percentiles fall on FACEGOOD's
 (the units live frames use); a curve a source lacks is left out of that target's fit.
 
@@ -81,6 +82,7 @@ import hashlib
 import json
 import sys
 import time
+from collections import Counter
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
@@ -523,9 +525,10 @@ def summarize(per_speaker: dict[str, dict[str, list[float]]], resample_count: in
 # ---------------------------------------------------------------- folds
 
 #: How the speakers of a fit are weighed (``--speaker-weights``): "equal" every speaker counts alike
-#: (each frame weighs 1 / its speaker's seconds), "frames" every frame alike (a speaker heard for
-#: 49 minutes outweighs one heard for 3 s a thousand times).
-SPEAKER_WEIGHTS = ("equal", "frames")
+#: (each frame weighs 1 / its speaker's seconds), "sources" every source alike and its speakers
+#: alike within it (a source of eleven short clips counts as much as one performer), "frames"
+#: every frame alike (a speaker heard for 49 minutes outweighs one heard for 3 s a thousand times).
+SPEAKER_WEIGHTS = ("equal", "sources", "frames")
 
 
 def fit_fold(train: dict[str, list[Utt]], ref, variant: str, synthetic: int | dict[str, int],
@@ -550,6 +553,9 @@ def fit_fold(train: dict[str, list[Utt]], ref, variant: str, synthetic: int | di
         known[jaw] = True
     names = tuple(t for t, k in zip(TARGETS, known) if k)  # a target no training speaker has is not predicted
     weight = {s: 1.0 if speaker_weights == "frames" else FPS / sum(u.n for u in v) for s, v in train.items()}
+    if speaker_weights == "sources":
+        per_source = Counter(v[0].source for v in train.values())
+        weight = {s: w / per_source[train[s][0].source] for s, w in weight.items()}
     takes = [A.Take(u.raw, y[:, known], FPS, weight[u.speaker]) for u, y in pairs]
     for u, y in pairs:
         takes += [A.Take(raw, y[:, known], FPS, weight[u.speaker])
@@ -698,8 +704,9 @@ def main(argv=None) -> dict:
                     help="the sources whose licences let a model fitted on them ship (for --model-out)")
     ap.add_argument("--fit-only", action="store_true", help="only write --model-out (no speaker is scored)")
     ap.add_argument("--speaker-weights", default="equal", choices=SPEAKER_WEIGHTS,
-                    help="equal: every training speaker counts alike (as the packaged model is fitted); frames: "
-                         "every frame alike, a long-recorded speaker outweighing the others (the release before)")
+                    help="equal: every training speaker counts alike (as the packaged model is fitted); sources: "
+                         "every source alike, its speakers alike within it; frames: every frame alike, a "
+                         "long-recorded speaker outweighing the others (the release before last)")
     ap.add_argument("--no-balance", action="store_true",
                     help="--model-out: no synthetic voices to give each speaker as long as the longest-heard one")
     ap.add_argument("--packaged-folds", action="store_true",

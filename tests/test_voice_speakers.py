@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import importlib.util
 import sys
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -195,3 +196,12 @@ def test_speakers_weigh_alike_however_long_each_was_heard():
     assert not np.allclose(equal.coef, frames.coef, rtol=1e-3)
     with pytest.raises(ValueError, match="speaker_weights"):
         speakers.fit_fold({"grid/a": [long]}, ref, "default", 0, 0, speaker_weights="seconds")
+    # ``sources``: two GRID speakers count as much together as one speaker of another source,
+    # exactly as weighing speakers alike with that speaker heard as two
+    other = replace(utt("haskins/c", 3.0, 2), source="haskins")
+    by_source = speakers.fit_fold({"grid/a": [long], "grid/b": [short], "haskins/c": [other]}, ref, "default", 0, 0,
+                                  speaker_weights="sources")
+    doubled = speakers.fit_fold({"grid/a": [long], "grid/b": [short], "haskins/c": [other],
+                                 "haskins/c2": [replace(other, speaker="haskins/c2")]}, ref, "default", 0, 0,
+                                speaker_weights="equal")
+    np.testing.assert_allclose(by_source.coef, doubled.coef, rtol=1e-6, atol=1e-9)
