@@ -85,7 +85,7 @@ class VoiceFrames:
         self.speech = activity.SpeechFrames(synth.voice_activity)
         self._speech = np.zeros(0)  # the detector's frames not yet matched to an analysis frame
         self._powers = np.zeros(0)  # the speech band's power of the last analysis frames
-        self._floor: float | None = None
+        self._floor = np.inf  # what the noise floor carries from frame to frame (activity.floor_after)
         self._confidence: deque[float] = deque(maxlen=int(round(2.0 / FRAME_S)))
         self._heard = 0  # analysis frames whose confidence is known
 
@@ -123,11 +123,7 @@ class VoiceFrames:
         speech = np.zeros(len(raw))
         known = min(len(raw), len(self._speech))  # at the audio's end: a last part-frame the detector never reads
         speech[:known], self._speech = self._speech[:known], self._speech[known:]
-        rise = activity.FLOOR_RISE_PER_S * FRAME_S
-        floor = np.empty(len(level))
-        for k, e in enumerate(level.tolist()):
-            self._floor = e if self._floor is None else min(e, self._floor + rise)
-            floor[k] = self._floor
+        floor, self._floor = activity.floor_after(level, self._heard, self._floor)
         self._confidence.extend(activity.frame_confidence(level, floor, speech, *self.snr).tolist())
         self._heard += len(raw)
 

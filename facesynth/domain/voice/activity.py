@@ -37,22 +37,14 @@ LEVEL_FRAMES = 3
 #: How fast the noise floor rises away from a quiet frame (natural log of amplitude a second): a
 #: noisy recording's floor follows its noise up, and a syllable's peak is not taken for it.
 FLOOR_RISE_PER_S = 0.2
-#: The rates WebRTC's detector reads (Hz), and its frame (s).
-VAD_RATES = (8000, 16000, 32000, 48000)
-VAD_FRAME_S = 0.01
 #: The detector's first frames are not taken: its noise model starts from its defaults and takes
 #: the first 70 ms of any sound, steady noise included, for speech.
 VAD_WARMUP_FRAMES = 10
 
 
-def _band_columns() -> np.ndarray:
-    edges = voice_model._mel_to_hz(np.linspace(voice_model._hz_to_mel(voice_model.FMIN),
-                                               voice_model._hz_to_mel(voice_model.FMAX), voice_model.N_MELS + 2))
-    centres = edges[1:-1]
-    return np.flatnonzero((centres >= SPEECH_BAND_HZ[0]) & (centres <= SPEECH_BAND_HZ[1]))
-
-
-_BAND = _band_columns()
+_CENTRES_HZ = voice_model.mel_edges_hz()[1:-1]
+#: The mel bands (columns of the raw features) whose centres lie in the speech band.
+_BAND = np.flatnonzero((_CENTRES_HZ >= SPEECH_BAND_HZ[0]) & (_CENTRES_HZ <= SPEECH_BAND_HZ[1]))
 
 
 def band_power(raw: np.ndarray) -> np.ndarray:
@@ -80,14 +72,24 @@ def snr_share(above_floor: np.ndarray | float, snr_none: float, snr_full: float)
     return np.clip((np.asarray(above_floor, np.float64) - snr_none) / max(snr_full - snr_none, 1e-6), 0.0, 1.0)
 
 
+def floor_after(level: np.ndarray, first: int = 0, carried: float = np.inf) -> tuple[np.ndarray, float]:
+    """The noise floor (K,) under ``level`` (K,), the 10 ms frames ``first``.. of an audio, looking
+    back only: f_k = min(e_k, f_{k-1} + rise), rising by :data:`FLOOR_RISE_PER_S` a second away from
+    each quiet frame; with what it carries to the next frames (the running minimum of e_k - rise k,
+    ``carried`` in from the frames before ``first``: a stream's floor, chunk by chunk, is exactly
+    the whole audio's)."""
+    ramp = FLOOR_RISE_PER_S * voice_model.FRAME_S * np.arange(first, first + len(level), dtype=np.float64)
+    lowest = np.minimum.accumulate(np.concatenate([[carried], np.asarray(level, np.float64) - ramp]))[1:]
+    return lowest + ramp, float(lowest[-1]) if len(lowest) else carried
+
+
 def floor_both_ways(level: np.ndarray) -> np.ndarray:
     """(K,) the noise floor under ``level`` (K,) 10 ms frames: the quietest level within reach, rising
     by :data:`FLOOR_RISE_PER_S` a second away from each quiet frame, before and after it."""
     e = np.asarray(level, np.float64)
     ramp = FLOOR_RISE_PER_S * voice_model.FRAME_S * np.arange(len(e))
-    after = np.minimum.accumulate(e - ramp) + ramp  # f_k = min(e_k, f_{k-1} + rise)
     before = np.minimum.accumulate((e + ramp)[::-1])[::-1] - ramp  # b_k = min(e_k, b_{k+1} + rise)
-    return np.minimum(after, before)
+    return np.minimum(floor_after(e)[0], before)
 
 
 class SpeechFrames:
@@ -96,29 +98,26 @@ class SpeechFrames:
     samples [160 j, 160 (j + 1)); the first :data:`VAD_WARMUP_FRAMES` are 0. ``aggressiveness``
     -1: no detector, every frame 0."""
 
-    def __init__(self, aggressiveness: int, rate: int = voice_model.RATE):
-        if rate not in VAD_RATES:
-            raise ValueError(f"WebRTC's voice activity detector reads {VAD_RATES} Hz, not {rate}")
-        self.hop = int(round(rate * VAD_FRAME_S))
+    def __init__(self, aggressiveness: int):
         self.vad = None
         if aggressiveness >= 0:
             import webrtcvad
 
             self.vad = webrtcvad.Vad(aggressiveness)
-        self.rate = rate
         self.pending = np.zeros(0, np.int16)
         self.frames = 0  # frames read so far
 
     def push(self, samples: np.ndarray) -> np.ndarray:
         pcm = np.clip(np.rint(np.asarray(samples, np.float64) * 32767.0), -32768, 32767).astype("<i2")
         x = np.concatenate([self.pending, pcm])
-        k = len(x) // self.hop
-        self.pending = x[k * self.hop:]
+        hop = voice_model.HOP
+        k = len(x) // hop
+        self.pending = x[k * hop:]
         first, self.frames = self.frames, self.frames + k
         if self.vad is None:
             return np.zeros(k)
-        frames = x[:k * self.hop].reshape(k, self.hop)
-        flags = np.array([self.vad.is_speech(f.tobytes(), self.rate) for f in frames], np.float64)
+        frames = x[:k * hop].reshape(k, hop)
+        flags = np.array([self.vad.is_speech(f.tobytes(), voice_model.RATE) for f in frames], np.float64)
         flags[:max(VAD_WARMUP_FRAMES - first, 0)] = 0.0
         return flags
 

@@ -99,12 +99,18 @@ def _mel_to_hz(m):
     return 700.0 * (10.0 ** (np.asarray(m, np.float64) / 2595.0) - 1.0)
 
 
+def mel_edges_hz(n_mels: int = N_MELS, fmin: float = FMIN, fmax: float = FMAX) -> np.ndarray:
+    """(n_mels + 2,) Hz the edges of the mel bands, HTK mel scale: band i rises from edge i, peaks
+    at edge i + 1 (its centre) and falls to edge i + 2."""
+    return _mel_to_hz(np.linspace(_hz_to_mel(fmin), _hz_to_mel(fmax), n_mels + 2))
+
+
 def mel_filterbank(n_mels: int = N_MELS, nfft: int = NFFT, rate: int = RATE, fmin: float = FMIN,
                    fmax: float = FMAX) -> np.ndarray:
     """(n_mels, nfft // 2 + 1) float64 triangular filters, HTK mel scale, each of unit area (so
     a band's value is a mean power density, comparable across band widths)."""
     freqs = np.arange(nfft // 2 + 1) * rate / nfft
-    edges = _mel_to_hz(np.linspace(_hz_to_mel(fmin), _hz_to_mel(fmax), n_mels + 2))
+    edges = mel_edges_hz(n_mels, fmin, fmax)
     lo, mid, hi = edges[:-2, None], edges[1:-1, None], edges[2:, None]
     up = (freqs[None] - lo) / (mid - lo)
     down = (hi - freqs[None]) / (hi - mid)
