@@ -45,10 +45,15 @@ from them on the built-in actress's database (``small`` preset, seed 0), at 30 f
   ``voice_jaw``: its predicted jawOpen.
 - ``live``: the mouth ``stream`` sends with ``stream.voice = "articulation"``
   (:class:`facesynth.domain.live.voice_frames.VoiceFrames`, 20 ms chunks, the fold's model), as its
-  inner-lip gap; ``live_jaw``: its jawOpen weight; ``live_packaged``: the same with the packaged model.
+  inner-lip gap; ``live_jaw``: its jawOpen weight; ``live_packaged``, ``live_packaged_jaw``: the same
+  with the packaged model.
 - ``live_phones``: the mouth ``stream`` sends with ``stream.voice = "off"`` (the phones
   pocketsphinx's phone loop recognises as the audio arrives, through the live DP), its inner-lip
   gap; ``live_default``: ``live_packaged`` or ``live_phones``, as ``stream.voice`` is configured.
+- ``default_jaw``, ``packaged_jaw``, ``phones_jaw``: the ARKit jawOpen an export (Live Link, an ARKit
+  CSV) carries for ``default``, ``packaged`` and ``phones``: the motion solved onto the built-in rig
+  (``solve``'s settings); ``openfacefx_jaw``: openfacefx's own jawOpen. Scored against the real
+  mouth opening, as every mode.
 - ``packaged``: ``default`` with the packaged model (within-speaker on the speakers it was fitted
   on; with ``--packaged-folds`` such a speaker is scored by the packaged fit refitted without it).
 
@@ -107,8 +112,11 @@ FPS = bench.FPS
 TARGETS = ("opening", "closure", "closing", "jawOpen", "mouthFunnel", "mouthPucker")
 #: Every mode, in table order (module docstring).
 MODES = ("default", "articulation", "loudness", "phones", "openfacefx", "energy", "voice", "voice_jaw", "live",
-         "live_jaw", "live_packaged", "live_phones", "live_default",
-         "packaged", "given_default", "given_articulation", "given_loudness", "given_phones", "given_packaged")
+         "live_jaw", "live_packaged", "live_packaged_jaw", "live_phones", "live_default",
+         "packaged", "default_jaw", "packaged_jaw", "phones_jaw", "openfacefx_jaw", "given_default", "given_articulation", "given_loudness", "given_phones", "given_packaged")
+#: The exported jaw of a voice mode against the phones' and openfacefx's (paired differences).
+JAW_PAIRS = {lead: ((lead, "phones_jaw"), (lead, "openfacefx_jaw"), (lead, live))
+             for lead, live in (("default_jaw", "live_jaw"), ("packaged_jaw", "live_packaged_jaw"))}
 FACEGOOD_SPEAKER = "facegood/shirley"
 #: FACEGOOD's takes used for no choice (docs/real-speech.md).
 FACEGOOD_FAIR = ("1114_2_04", "1114_2_05", "1114_3_15")
@@ -343,14 +351,29 @@ def phones_motion(db_path: Path, u: Utt, work: Path, given: bool = False):
     return Motion.read(motion_file), (np.array(p["starts"]), np.array(p["ends"]), list(p["phones"]))
 
 
-def voice_step(motion, u: Utt, phones, settings, model_path: Path, recognized: bool, path: str, **changes):
-    """The mouth opening (n,) of ``motion`` after the voice step ``path`` with the model at ``model_path``
-    (and the synthesize settings ``changes``)."""
+def voice_motion(motion, u: Utt, phones, settings, model_path: Path, recognized: bool, path: str, **changes):
+    """``motion`` after the voice step ``path`` with the model at ``model_path`` (and the synthesize
+    settings ``changes``), as ``synthesize`` runs it."""
     from facesynth.domain.voice import fusion
 
     s = replace(settings, articulation_model=str(model_path), voice_recognized=path, voice_given=path, **changes)
     moved, _, _ = fusion.apply(motion, u.samples, u.rate, phones[0], phones[1], phones[2], s, recognized=recognized)
-    return opening_of(moved, settings, u.n)
+    return moved
+
+
+def voice_step(motion, u: Utt, phones, settings, model_path: Path, recognized: bool, path: str, **changes):
+    """The mouth opening (n,) of ``motion`` after the voice step (:func:`voice_motion`)."""
+    return opening_of(voice_motion(motion, u, phones, settings, model_path, recognized, path, **changes), settings, u.n)
+
+
+def solved_jaw(motion, rig, solve_settings, n: int) -> np.ndarray:
+    """The ARKit jawOpen (n,) at FPS that ``solve`` and an ARKit export (Live Link, a CSV) give
+    ``motion`` on the built-in ``rig`` (bound to the actress's markers)."""
+    from facesynth.domain.retarget.solve import solve_motion
+
+    weights, _, _ = solve_motion(motion, rig, solve_settings, "the benchmark's motion")
+    arkit = np.clip(rig.to_arkit(weights), 0.0, 1.0)
+    return bench.fit_length(arkit[:, list(rig.arkit_names).index("jawOpen")], n)
 
 
 def sweep_point(point: str, settings) -> tuple[str, dict]:
@@ -775,11 +798,12 @@ def main(argv=None) -> dict:
             raise SystemExit("--fit-only writes the packaged model: give --model-out")
         return {"benchmark": "voice_speakers", "packaged_model_fitted_on": fit_packaged()}
     scored = args.speakers.split(",") if args.speakers else real
-    db = rig = lip_vertices = live_model = phones_live_model = None
+    db = rig = solve_rig = lip_vertices = live_model = phones_live_model = None
     stream = config.settings("stream")
     if not args.no_chain:
         from facesynth.domain.live.synthesizer import LiveModel
         from facesynth.domain.rig.face import load_face_rig
+        from facesynth.domain.rig.loading import load_rig
         from facesynth.formats.mesh import read_binding
         from facesynth.model.motiondb import MotionDatabase
 
@@ -789,6 +813,7 @@ def main(argv=None) -> dict:
         lip_vertices = np.array([binding[m] for m in lip_markers])
         database = MotionDatabase.read(db)
         live_model = LiveModel(database, settings, stream, config.settings("solve"))
+        solve_rig = load_rig(None, None)
         phones_live_model = LiveModel(database, settings, replace(stream, voice="off"), config.settings("solve"))
     packaged = bench.ARTICULATION_MODEL
     packaged_model = A.ArticulationModel.read(packaged)
@@ -875,17 +900,24 @@ def main(argv=None) -> dict:
                         write_packaged({s: v for s, v in by_speaker.items() if s != speaker}, ship_sources, ref,
                                        args.variant, args.synthetic, args.seed, shipped_path, not args.no_balance,
                                        args.speaker_weights)
-                curves["packaged"] = voice_step(motion, u, phones, settings, shipped_path, True,
-                                                settings.voice_recognized)
+                shipped_motion = voice_motion(motion, u, phones, settings, shipped_path, True, settings.voice_recognized)
+                curves["packaged"] = opening_of(shipped_motion, settings, u.n)
+                # the jaw an ARKit export carries: the motion solved onto the built-in rig
+                curves["phones_jaw"] = solved_jaw(motion, solve_rig, config.settings("solve"), u.n)
+                curves["packaged_jaw"] = solved_jaw(shipped_motion, solve_rig, config.settings("solve"), u.n)
+                curves["default_jaw"] = curves["packaged_jaw"] if shipped_path == model_path else solved_jaw(
+                    voice_motion(motion, u, phones, settings, model_path, True, settings.voice_recognized),
+                    solve_rig, config.settings("solve"), u.n)
                 from facesynth.base.phonemes import PAU  # noqa: F401  (segments as openfacefx reads them)
                 from facesynth.formats.labels import Segment
 
                 segs = [Segment(float(a), float(b), p) for a, b, p in zip(*phones)]
-                curves["openfacefx"] = bench.openfacefx_method(segs, u.n, rig, lip_vertices)["opening"]
+                ofx = bench.openfacefx_method(segs, u.n, rig, lip_vertices)
+                curves["openfacefx"], curves["openfacefx_jaw"] = ofx["opening"], ofx["jawOpen"]
                 if not args.no_live:
                     curves.update(live_curves(live_model, model, u, settings, settings.loudness_lip_markers))
                     shipped = live_curves(live_model, packaged_model, u, settings, settings.loudness_lip_markers)
-                    curves["live_packaged"] = shipped["live"]
+                    curves["live_packaged"], curves["live_packaged_jaw"] = shipped["live"], shipped["live_jaw"]
                     curves["live_phones"] = live_phones_curve(phones_live_model, config.settings("align"), u,
                                                               settings.loudness_lip_markers)
                     curves["live_default"] = curves["live_packaged" if stream.voice == "articulation" else "live_phones"]
@@ -907,13 +939,13 @@ def main(argv=None) -> dict:
             closures_of[speaker] = closures
         timing[speaker] = round(time.perf_counter() - t0, 1)
     packaged_fit = fit_packaged()
-    summary = summarize(per_speaker, args.resamples, args.seed)
+    summary = summarize(per_speaker, args.resamples, args.seed, pairs=JAW_PAIRS["default_jaw"])
     # what ships, on the speakers of the sources the packaged model was not fitted on
     unheard = {s: v for s, v in per_speaker.items() if by_speaker[s][0].source not in ship_sources}
     summary["never_heard_by_packaged"] = summarize(
         unheard, args.resamples, args.seed, lead="packaged",
         pairs=(("live_default", "packaged"), ("live_default", "live_phones"), ("live_packaged", "live_phones"),
-               ("live_phones", "phones"))) if unheard and not args.no_chain else None
+               ("live_phones", "phones"), *JAW_PAIRS["packaged_jaw"])) if unheard and not args.no_chain else None
     if summary["never_heard_by_packaged"]:
         del summary["never_heard_by_packaged"]["per_speaker"]  # in per_speaker above
         summary["never_heard_by_packaged"]["closures"] = summarize_closures(

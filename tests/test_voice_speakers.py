@@ -205,3 +205,21 @@ def test_speakers_weigh_alike_however_long_each_was_heard():
                                  "haskins/c2": [replace(other, speaker="haskins/c2")]}, ref, "default", 0, 0,
                                 speaker_weights="equal")
     np.testing.assert_allclose(by_source.coef, doubled.coef, rtol=1e-6, atol=1e-9)
+
+
+def test_the_scored_jaw_is_the_jawopen_an_arkit_export_carries(held_out_synthesized, config, tmp_path):
+    import csv
+
+    import facesynth
+    from facesynth.domain.rig.loading import load_rig
+
+    motion = facesynth.read_motion(held_out_synthesized["motion"])
+    n = len(motion.markers)
+    jaw = speakers.solved_jaw(motion, load_rig(None, None), config.settings("solve"), n)
+    facesynth.export(facesynth.read_curves(held_out_synthesized["curves"]), "arkit-csv", tmp_path / "c.csv",
+                     fps=motion.fps)
+    with open(tmp_path / "c.csv", newline="") as fh:
+        rows = list(csv.DictReader(fh))
+    exported = np.array([float(r["JawOpen"]) for r in rows])
+    assert len(exported) == n and np.ptp(exported) > 0.05  # the mouth moves
+    np.testing.assert_allclose(jaw, exported, atol=1e-3)
