@@ -101,6 +101,7 @@ from facesynth.base.phonemes import PAU, to_festival
 from facesynth.domain.evaluation.baselines import openfacefx_arkit, openfacefx_missing, rig_markers
 from facesynth.domain.evaluation.bootstrap import interval, paired_difference, resamples
 from facesynth.domain.speech.loudness import envelope
+from facesynth.domain.voice import articulation as A
 from facesynth.formats.audio import read_audio, resample
 from facesynth.formats.labels import Segment, read_phone_segments, write_textgrid
 
@@ -161,12 +162,9 @@ def closure_events(opening: np.ndarray, depth: float, prominence: float) -> np.n
 
 def match_closures(real: np.ndarray, method: np.ndarray, tolerance: int) -> tuple[int, int]:
     """(real closures with a method closure within +-``tolerance`` frames, method closures with a
-    real one that near); ``real``, ``method`` (K,) frames."""
-    real, method = np.asarray(real), np.asarray(method)
-    if len(real) == 0 or len(method) == 0:
-        return 0, 0
-    gap = np.abs(real[:, None] - method[None, :])
-    return int((gap.min(1) <= tolerance).sum()), int((gap.min(0) <= tolerance).sum())
+    real one that near); ``real``, ``method`` (K,) frames
+    (:func:`facesynth.domain.voice.articulation.match_closures`, as ``fit-articulation`` counts them)."""
+    return A.match_closures(real, method, tolerance)
 
 
 def mean_r_statistic(values: np.ndarray):

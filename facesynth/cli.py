@@ -815,6 +815,18 @@ def fit_articulation(ctx: Context, normalized: Path, corpus_path: Path, binding,
     ctx.say(f"fitted the voice's articulation on {len(s.takes)} takes ({s.seconds:.0f} s of audio; look-ahead "
             f"{1000 * s.look_ahead_s:.0f} ms): " + ", ".join(f"{k} r {v:.2f}" for k, v in s.fit_r.items())
             + f" on the takes fitted -> {output}")
+    h = s.held_out
+    if h is None:
+        ctx.say("note: with one take nothing is held out: the voice closes no lips of its own "
+                "(synthesize.voice_closure_threshold); fit on two takes or more to choose where it may.")
+        return
+    ctx.say("each take predicted by the model fitted on the others: " + ", ".join(f"{k} r {v:.2f}" for k, v in h.r.items()))
+    met = f"{100 * h.recall:.0f}% of the {h.closures} closures captured, {100 * h.precision:.0f}% of its closures right"
+    if h.closure_threshold is not None:
+        ctx.say(f"the voice's own closures: at closure score {h.closure_threshold:.2f} they met {met}; the model "
+                "carries that threshold (synthesize.voice_closure_threshold = -1, the default, takes it)")
+    else:
+        ctx.say(f"the voice's own closures: at best they met {met}; fewer than half right, so the model makes none")
 
 
 @main.command()

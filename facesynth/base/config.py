@@ -290,7 +290,10 @@ class SynthesizeSettings:
                                            "mouthPucker) the voice's articulation takes; 0: the phones' rounding",
                                            ge=0, le=1)
     voice_closure_threshold: float = setting("not in the paper: a peak of the articulation model's closure score "
-                                             "at least this high closes the lips; above 1: never", ge=0)
+                                             "at least this high closes the lips; above 1: never; -1: the "
+                                             "model's own (a performer's model from fit-articulation carries the "
+                                             "threshold its held-out takes chose; a model without one, the "
+                                             "packaged, closes none)", ge=-1)
     voice_closing_threshold: float = setting("not in the paper: a closing of the method's own motion is kept where "
                                              "the model's closing score reaches this near it; above 1: none kept",
                                              ge=0)

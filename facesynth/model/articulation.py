@@ -45,6 +45,10 @@ class ArticulationModel:
     ({"name": "<source>/<speaker>/<file>", "sha256": ..., "seconds": audio s or null}), so that a
     packaged model says which recordings it learned from without naming any folder; [] when unknown
     (a model of an earlier release, or a performer's model, whose ``inputs`` say it).
+    closure_threshold : the threshold of the closure score at which the voice's own closures met
+    the performer's on takes the model did not see (``fit-articulation``,
+    :func:`facesynth.domain.voice.fitting.held_out_takes`), which ``synthesize.voice_closure_threshold
+    = -1`` takes; None where none was chosen (a general model, or too few takes).
     """
 
     target_names: list[str]
@@ -69,6 +73,7 @@ class ArticulationModel:
     window: int
     inputs: list[dict] = field(default_factory=list)
     fitted_on: list[dict] = field(default_factory=list)
+    closure_threshold: float | None = None
 
     KIND = "articulation"
 
@@ -86,7 +91,8 @@ class ArticulationModel:
                        read(f, "feature_std"), read(f, "coef"), read(f, "intercept"), float(attr(f, "alpha")),
                        read(f, "target_mean"), read(f, "target_std"), bool(int(attr(f, "expand"))), read(f, "knots"),
                        int(attr(f, "analysis_rate")), int(attr(f, "hop")), int(attr(f, "window")), stored_records(f),
-                       _fitted_on(f))
+                       _fitted_on(f),
+                       float(f.attrs["closure_threshold"]) if "closure_threshold" in f.attrs else None)
 
     def write(self, out: Path, *, config: str, inputs, overwrite: bool = False) -> None:
         """Write an ``articulation`` artifact to ``out``."""
@@ -95,6 +101,8 @@ class ArticulationModel:
                            gate=float(self.gate), peak_decay=float(self.peak_decay), alpha=float(self.alpha),
                            expand=int(bool(self.expand)), analysis_rate=int(self.analysis_rate), hop=int(self.hop),
                            window=int(self.window), fitted_on=json.dumps(self.fitted_on, sort_keys=True))
+            if self.closure_threshold is not None:
+                g.attrs["closure_threshold"] = float(self.closure_threshold)
             write_strings(g, "target_names", self.target_names)
             g.create_dataset("offsets_s", data=np.asarray(self.offsets_s, np.float64)).attrs["units"] = "s"
             write_strings(g, "feature_names", self.feature_names)

@@ -654,7 +654,11 @@ ARTICULATION = Kind("articulation", 1, (
           Attr("window", "int", "samples of an analysis frame's window", ge=1),
           Attr("fitted_on", "str", "JSON list of what the model was fitted on, one record per file of speech or "
                "curves (`name` as `<source>/<speaker>/<file>`, `sha256`, `seconds` of audio or null); absent in "
-               "files written before it existed", required=False)))
+               "files written before it existed", required=False),
+          Attr("closure_threshold", "float", "the closure score's threshold at which the voice's own closures met "
+               "the performer's on held-out takes (`fit-articulation`), taken where "
+               "`synthesize.voice_closure_threshold` is -1; absent where none was chosen", ge=0, le=1,
+               required=False)))
 
 #: Every kind's specification at its current schema.
 EXPRESSION = Kind("expression", 1, (

@@ -10,7 +10,7 @@ from click.testing import CliRunner
 
 from facesynth.base.errors import InputError
 from facesynth.cli import main
-from facesynth.domain.voice import articulation, fusion
+from facesynth.domain.voice import articulation, fitting, fusion
 from facesynth.model.articulation import ArticulationModel
 from facesynth.model.corpus import Corpus
 from facesynth.stages import fit_articulation
@@ -68,3 +68,46 @@ def test_refusals_name_the_file_and_what_to_do(tiny_artifacts, tiny_corpus, conf
     assert result.exit_code == 1 and "Traceback" not in result.output
     assert str(tiny_artifacts["normalized"]) in result.output
     assert not (tmp_path / "a.h5").exists() and not (tmp_path / "b.h5").exists()
+
+
+def test_each_take_held_out_chooses_the_voices_own_closures(fitted):
+    out, result = fitted
+    held = result.held_out
+    assert held is not None and set(held.r) == set(result.targets)
+    assert 0.3 < held.r["opening"] < result.fit_r["opening"]  # audio it never heard reads less well than its own
+    model = ArticulationModel.read(out)
+    assert model.closure_threshold == held.closure_threshold
+    if held.closure_threshold is not None:
+        assert held.closure_threshold in fitting.CLOSURE_THRESHOLDS and held.precision >= fitting.MIN_CLOSURE_PRECISION
+    assert held.closures > 0 and 0 <= held.recall <= 1
+
+
+def test_closures_are_met_within_the_tolerance_take_by_take():
+    real = [np.array([10, 40]), np.array([5])]
+    voice = [np.array([12, 25, 44]), np.array([50])]
+    # take 1: 10 met by 12, 40 missed by 44 (4 frames); 12 right, 25 and 44 wrong; take 2: nothing met
+    assert fitting.closures_met(real, voice, 3) == (1, 3, 1, 4)
+    assert fitting.closures_met(real, voice, 4) == (2, 3, 2, 4)
+
+
+def test_one_take_holds_nothing_out_and_the_voice_closes_no_lips(tiny_artifacts, config, tmp_path):
+    corpus = Corpus.read(tiny_artifacts["corpus"], audio=False)
+    take = next(t for i, t in enumerate(corpus.takes.name) if corpus.audio_count[i] > 0)
+    result = fit_articulation.run(tiny_artifacts["normalized"], tiny_artifacts["corpus"], tmp_path / "one.h5",
+                                  config.settings("synthesize"), config.settings("solve"), takes=[take])
+    model = ArticulationModel.read(tmp_path / "one.h5")
+    assert result.held_out is None and model.closure_threshold is None
+    assert fusion.closure_threshold(config.settings("synthesize"), model) == fusion.NO_CLOSURES
+
+
+def test_the_closure_threshold_is_the_settings_or_else_the_models(config):
+    from dataclasses import replace
+
+    settings = config.settings("synthesize")
+    packaged = fusion.articulation_model("")
+    assert settings.voice_closure_threshold == -1 and packaged.closure_threshold is None
+    assert fusion.closure_threshold(settings, packaged) == fusion.NO_CLOSURES  # the packaged model closes none
+    performer = replace(packaged, closure_threshold=0.45)
+    assert fusion.closure_threshold(settings, performer) == 0.45
+    assert fusion.closure_threshold(replace(settings, voice_closure_threshold=0.6), performer) == 0.6
+    assert fusion.closure_threshold(replace(settings, voice_closure_threshold=2.0), performer) == 2.0

@@ -11,7 +11,8 @@ time plus the articulation model's look-ahead (:func:`facesynth.domain.voice.art
   read, ``benchmarks/voice_speakers.py``), mouthFunnel and mouthPucker predictions
   (:class:`facesynth.domain.voice.articulation.StreamingPredictor`, frame by frame from 20 ms
   chunks, equal to the batch predictions) set those rig shapes, the jaw closing where the model's
-  closure score rises above ``synthesize.voice_closure_threshold``;
+  closure score rises above ``synthesize.voice_closure_threshold`` (by default the model's own,
+  :func:`facesynth.domain.voice.fusion.closure_threshold`: a performer's model's);
 * the rest of the face is the emotion's pose: the mean of the database's captured frames of the
   stream's emotion (the ``emotion`` control message changes it from the next frame), solved onto
   the built-in rig once per emotion, with its mouth shapes left to the voice (a trajectory model
@@ -39,6 +40,7 @@ import numpy as np
 from facesynth.base.config import SynthesizeSettings
 from facesynth.domain.voice import activity
 from facesynth.domain.voice.articulation import FRAME_S, HALF_WINDOW_S, StreamingPredictor, model_look_ahead_s
+from facesynth.domain.voice.fusion import closure_threshold
 from facesynth.model.articulation import ArticulationModel
 
 from .phones import SAMPLE_RATE
@@ -64,7 +66,7 @@ class VoiceFrames:
         self.columns = {name: voice_model.target_names.index(name) for name in VOICE_SHAPES
                         if name in voice_model.target_names}
         self.closure = voice_model.target_names.index("closure") if "closure" in voice_model.target_names else None
-        self.threshold = synth.voice_closure_threshold
+        self.threshold = closure_threshold(synth, voice_model)
         self.snr = (synth.voice_snr_none, synth.voice_snr_full)
         #: the jaw from the predicted opening (``stream.voice_jaw = "opening"``): (opening column, the
         #: opening's training mean and std, the jaw's), or None (the predicted jawOpen itself)

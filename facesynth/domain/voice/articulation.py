@@ -512,6 +512,16 @@ def closure_frames_of(opening: np.ndarray, depth: float = 0.25, prominence: floa
     return frames.astype(np.int64)
 
 
+def match_closures(real: np.ndarray, method: np.ndarray, tolerance: int) -> tuple[int, int]:
+    """(real closures with a method closure within +-``tolerance`` frames, method closures with a
+    real one that near); ``real``, ``method`` (K,) frames."""
+    real, method = np.asarray(real), np.asarray(method)
+    if len(real) == 0 or len(method) == 0:
+        return 0, 0
+    gap = np.abs(real[:, None] - method[None, :])
+    return int((gap.min(1) <= tolerance).sum()), int((gap.min(0) <= tolerance).sum())
+
+
 def closings_of(opening: np.ndarray, frames: np.ndarray, flat: int = 2) -> np.ndarray:
     """(K,) bool: which closures ``frames`` of an opening (T,) are closings within speech (the curve
     stays at its minimum for at most ``flat`` frames) rather than rests (a plateau: the mouth

@@ -19,6 +19,18 @@ The fit is :func:`facesynth.domain.voice.articulation.fit` with its defaults (10
 -250..+20 ms; ridge; running normalization), deterministic. The packaged model is this fit on
 FACEGOOD's calibration takes, through ``benchmarks/voice_articulation.py`` (which reads FACEGOOD's
 own curves instead of a solve).
+
+**Held out, take by take** (:func:`held_out_takes`, two takes or more): each take is predicted by
+the model fitted on the others, which says how well the voice reads this performer's mouth on
+audio the model never heard (the fit's own r says how well it fits). The same predictions choose
+the voice's own closures: the threshold of its closure score (:data:`CLOSURE_THRESHOLDS`) whose
+closures (:func:`facesynth.domain.voice.fusion.closure_frames`) best meet the captured ones
+(:func:`facesynth.domain.voice.articulation.closure_frames_of`, within :data:`CLOSURE_TOLERANCE`
+frames; the best F1), provided at least :data:`MIN_CLOSURE_PRECISION` of them are right. The
+model carries it (``closure_threshold``) and ``synthesize.voice_closure_threshold = -1``, the
+default, takes it: a performer's own voice closes the lips where its held-out takes say it can,
+where a general model's closure score fires where the lips of voices it never heard stay open
+(docs/real-speech.md), and the packaged model carries none.
 """
 
 from __future__ import annotations
@@ -43,6 +55,13 @@ FIT_FPS = 30.0
 RIG_TARGETS = ("jawOpen", "mouthFunnel", "mouthPucker")
 #: The fewest frames (at :data:`FIT_FPS`) of a take with audio that it is fitted on.
 MIN_FRAMES = 10
+#: The closure score's thresholds tried for the voice's own closures (0.20, 0.25, ..., 0.90).
+CLOSURE_THRESHOLDS = tuple(round(0.2 + 0.05 * k, 2) for k in range(15))
+#: A closure of the voice meets a captured one within this many frames at :data:`FIT_FPS` (100 ms,
+#: as the benchmarks count them).
+CLOSURE_TOLERANCE = 3
+#: The voice's own closures are taken only where at least this share of them meet a captured closure.
+MIN_CLOSURE_PRECISION = 0.5
 
 
 @dataclass(frozen=True)
@@ -115,12 +134,80 @@ def fit_performer(data: PerformerTakes, prior: ArticulationModel | None = None,
     Pearson r on the takes it was fitted on (in-sample: how much of each target the voice explains
     at best)."""
     model = articulation.fit(data.takes, data.names, prior=prior, prior_strength=prior_strength)
-    predicted = np.concatenate([articulation.predict_raw(model, t.raw, t.times_s) for t in data.takes])
-    real = np.concatenate([t.targets for t in data.takes])
+    return model, pearson_per_target([articulation.predict_raw(model, t.raw, t.times_s) for t in data.takes],
+                                     [t.targets for t in data.takes], data.names)
+
+
+def pearson_per_target(predicted: list[np.ndarray], real: list[np.ndarray], names) -> dict[str, float]:
+    """Per target of ``names``, Pearson r between the predictions and the real targets of every
+    take ((T, Y) each), pooled over the takes' frames; a capture's gaps (NaN) are left out, as
+    the fit leaves them out; NaN where either side is constant."""
+    p, y = np.concatenate(predicted), np.concatenate(real)
     r = {}
-    for j, name in enumerate(data.names):
-        known = np.isfinite(real[:, j])  # a capture's gaps are left out, as the fit leaves them out
-        a, b = predicted[known, j] - predicted[known, j].mean(), real[known, j] - real[known, j].mean()
+    for j, name in enumerate(names):
+        known = np.isfinite(y[:, j])
+        a, b = p[known, j] - p[known, j].mean(), y[known, j] - y[known, j].mean()
         d = float(np.sqrt((a * a).sum() * (b * b).sum()))
         r[name] = float((a * b).sum() / d) if d > 0 else float("nan")
-    return model, r
+    return r
+
+
+@dataclass(frozen=True)
+class HeldOutTakes:
+    """Each take predicted by the model fitted on the other takes, pooled (module docstring):
+    ``r`` per target; the voice's closures at ``closure_threshold`` (None: no threshold makes
+    :data:`MIN_CLOSURE_PRECISION` of its closures right, and the voice makes none) or, without one,
+    at the threshold of the best F1: of the ``closures`` captured, the share met (``recall``), and
+    the share of the voice's closures that met one (``precision``)."""
+
+    r: dict[str, float]
+    closure_threshold: float | None
+    closures: int
+    recall: float
+    precision: float
+
+
+def closures_met(real: list[np.ndarray], voice: list[np.ndarray], tolerance: int) -> tuple[int, int, int, int]:
+    """(captured closures met, captured closures, the voice's closures that met one, the voice's
+    closures), over takes: per take the closure frames (K,) of the capture and of the voice,
+    met within ``tolerance`` frames."""
+    met = right = 0
+    for r, v in zip(real, voice):
+        m, k = articulation.match_closures(r, v, tolerance)
+        met, right = met + m, right + k
+    return met, sum(len(r) for r in real), right, sum(len(v) for v in voice)
+
+
+def held_out_takes(data: PerformerTakes, prior: ArticulationModel | None = None,
+                   prior_strength: float = 0.0) -> HeldOutTakes | None:
+    """What the fit of :func:`fit_performer` does on takes it did not see (module docstring), or
+    None with fewer than two takes."""
+    from facesynth.domain.voice.fusion import closure_frames
+
+    if len(data.takes) < 2:
+        return None
+    predicted = []
+    for i, take in enumerate(data.takes):
+        others = [t for j, t in enumerate(data.takes) if j != i]
+        model = articulation.fit(others, data.names, prior=prior, prior_strength=prior_strength)
+        predicted.append(articulation.predict_raw(model, take.raw, take.times_s))
+    r = pearson_per_target(predicted, [t.targets for t in data.takes], data.names)
+    o, c = data.names.index("opening"), data.names.index("closure")
+    real = []
+    for t in data.takes:  # a capture's gaps bridged, so that a gap is no closure
+        x, known = t.targets[:, o], np.isfinite(t.targets[:, o])
+        real.append(articulation.closure_frames_of(np.interp(np.arange(len(x)), np.flatnonzero(known), x[known])
+                                                   if known.any() else np.zeros(0)))
+    best: tuple[float, float, tuple[int, int, int, int]] | None = None  # (F1, threshold, counts)
+    chosen = None
+    for threshold in CLOSURE_THRESHOLDS:
+        counts = closures_met(real, [closure_frames(p[:, c], FIT_FPS, threshold) for p in predicted], CLOSURE_TOLERANCE)
+        recall, precision = counts[0] / max(counts[1], 1), counts[2] / max(counts[3], 1)
+        f1 = 2 * recall * precision / (recall + precision) if recall + precision > 0 else 0.0
+        if best is None or f1 > best[0]:
+            best = (f1, threshold, counts)
+        if precision >= MIN_CLOSURE_PRECISION and (chosen is None or f1 > chosen[0]):
+            chosen = (f1, threshold, counts)
+    _, threshold, counts = chosen if chosen is not None else best  # type: ignore[misc]
+    return HeldOutTakes(r, threshold if chosen is not None else None, counts[1], counts[0] / max(counts[1], 1),
+                        counts[2] / max(counts[3], 1))

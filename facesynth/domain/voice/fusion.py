@@ -32,9 +32,11 @@ or aligned to a transcript):
    through speech the mouth stays half open, lips apart (the frozen grimace a database shows when
    a voice drives it). On speakers the packaged model never heard both follow the mouth alike, and
    by rank the lips close where the speaker's do more often (docs/real-speech.md).
-3. *Closures* (the voice's own off by default: on voices the model was not fitted on its closure
-   score fires where the lips stay open, and those closures cost more than they get right; on a
-   performer's own model they close the lips as she does). Each peak of the
+3. *Closures* (the voice's own: by default at the model's own threshold, :func:`closure_threshold`;
+   the packaged model has none, as on voices a model was not fitted on its closure score fires
+   where the lips stay open, and those closures cost more than they get right; a performer's own
+   model from ``fit-articulation`` carries the threshold at which they met the performer's
+   closures on her held-out takes). Each peak of the
    model's closure score above ``voice_closure_threshold`` takes the gap down to the method's most
    closed gap (a Gaussian dip of :data:`CLOSURE_SIGMA_S`); the
    method's own closings (the phones' /p b m/ and others: deep minima of its gap) are kept where
@@ -96,6 +98,8 @@ CLOSURE_SPACING_S = 0.15
 CLOSING_REACH_S = 0.067
 #: A pinned phone keeps its closure unless the predicted opening over it ranks above this quantile.
 PINNED_OPEN_QUANTILE = 0.75
+#: A closure threshold above any closure score (0..1): the voice closes no lips.
+NO_CLOSURES = 2.0
 #: The rig's mouth shapes fitted to read the motion's rounding (jaw, lips), by ARKit name.
 MOUTH_SHAPES = ("jawOpen", "jawForward", "jawLeft", "jawRight", "mouthClose", "mouthFunnel", "mouthPucker",
                 "mouthLeft", "mouthRight", "mouthSmile_L", "mouthSmile_R", "mouthStretch_L", "mouthStretch_R",
@@ -125,6 +129,15 @@ def _read_model(path: Path, mtime_ns: int) -> ArticulationModel:
     model = ArticulationModel.read(path)
     voice_model.check_model(model, str(path))
     return model
+
+
+def closure_threshold(settings: SynthesizeSettings, model: ArticulationModel) -> float:
+    """The closure score's threshold the voice closes the lips at: ``synthesize.voice_closure_threshold``,
+    or where it is negative the model's own (:attr:`~facesynth.model.articulation.ArticulationModel.closure_threshold`,
+    chosen by ``fit-articulation`` on the performer's held-out takes), else none (2: above any score)."""
+    if settings.voice_closure_threshold >= 0:
+        return settings.voice_closure_threshold
+    return model.closure_threshold if model.closure_threshold is not None else NO_CLOSURES
 
 
 def articulation_model(setting: str) -> ArticulationModel:
@@ -417,7 +430,8 @@ def fuse(motion: Motion, samples: np.ndarray, rate: int, starts: np.ndarray, end
                                  settings.voice_rounding_weight * conf * trusted * free)
     gap = lip_gaps(moved, names, lips)
     target, done = target_gap(gap, pred["opening"], pred.get("closure"), pred.get("closing"), conf, pinned_ranges,
-                              fps, settings, trusted)
+                              fps, replace(settings, voice_closure_threshold=closure_threshold(settings, model)),
+                              trusted)
     li, lj = names.index(lips[0]), names.index(lips[1])
     moved = move_to_gaps(moved, opening_direction(moved, gap), (li, lj), target).astype(motion.markers_capture.dtype)
     return (replace(motion, markers_capture=moved, markers=downsample(moved, fps, motion.fps)),
