@@ -111,3 +111,16 @@ def test_the_closure_threshold_is_the_settings_or_else_the_models(config):
     assert fusion.closure_threshold(settings, performer) == 0.45
     assert fusion.closure_threshold(replace(settings, voice_closure_threshold=0.6), performer) == 0.6
     assert fusion.closure_threshold(replace(settings, voice_closure_threshold=2.0), performer) == 2.0
+
+
+def test_the_command_says_what_held_out_takes_chose(tiny_artifacts, tmp_path):
+    out = tmp_path / "cli.h5"
+    result = CliRunner().invoke(main, ["fit-articulation", str(tiny_artifacts["normalized"]), "--corpus",
+                                       str(tiny_artifacts["corpus"]), "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    assert "each take predicted by the model fitted on the others: opening r" in result.output
+    threshold = ArticulationModel.read(out).closure_threshold
+    if threshold is not None:
+        assert f"at closure score {threshold:.2f} they met" in result.output
+    else:
+        assert "the model makes none" in result.output
