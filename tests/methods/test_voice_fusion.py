@@ -46,6 +46,9 @@ def test_target_gap_follows_the_voice_and_closes_where_it_says(synth):
     assert target[150] == pytest.approx(min(opening.min(), target.min()), abs=1e-6)  # closed at the score's peak
     assert target[150] < target[145] and target[150] < target[155]
     assert done["closures_from_voice"] == 1
+    _, unresolved = fusion.target_gap(opening, predicted, score, None, np.ones(n), [], fps,
+                                      replace(synth, voice_closure_threshold=-1.0))
+    assert unresolved["closures_from_voice"] == 0  # the model's own threshold, not resolved here: none
     none, _ = fusion.target_gap(opening, predicted, None, None, np.ones(n), [], fps, replace(synth, voice_weight=0.0))
     np.testing.assert_allclose(none, opening)  # weight 0: the phones' opening
     quiet, _ = fusion.target_gap(opening, predicted, None, None, np.zeros(n), [], fps, synth)
@@ -214,6 +217,27 @@ def test_pinned_phones_keep_their_closure_and_rounding_stays_in_the_method_range
         w0, w1 = (shapes.weights(m.markers_capture, [name])[:, 0] for m in (motion, fused))
         lo, hi = np.percentile(w0, [5, 95])
         assert abs(np.median(w1) - np.median(w0)) < 0.25 * (hi - lo)  # moved within its range, not off it
+
+
+def test_the_voice_closes_the_lips_at_its_models_own_threshold(spoken, config):
+    """By default (voice_closure_threshold -1) the packaged model, which carries no threshold, closes
+    no lips of its own; a performer's model carrying one closes them there, as the setting would."""
+    member, source, read = spoken
+    settings = MethodSettings.of(config)
+    s = replace(settings.synthesize, use_opencl=False)
+    assert s.voice_closure_threshold == -1
+    motion = steps.synthesize(member, source, read.utterance, settings.replace(synthesize=s)).motion
+    samples, rate = read.audio
+    utt = read.utterance
+    packaged = fusion.articulation_model("")
+
+    def closures(model, synth):
+        return fusion.fuse(motion, samples, rate, utt.starts, utt.ends, list(utt.phones), model, synth)[1]
+
+    assert closures(packaged, s).closures_from_voice == 0
+    own = closures(replace(packaged, closure_threshold=0.2), s)
+    assert own.closures_from_voice > 0
+    assert own == closures(packaged, replace(s, voice_closure_threshold=0.2))  # the same as setting it
 
 
 def test_no_voice_past_the_audio_end():

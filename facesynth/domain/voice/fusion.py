@@ -316,7 +316,9 @@ def target_gap(opening: np.ndarray, predicted: np.ndarray, score: np.ndarray | N
     ``predicted`` (T,) (any unit), the closure and closing scores (T,) or None, the confidence
     ``conf`` (T,), the pinned phones' frame ranges [a, b) at ``fps`` and the voice's ``trusted``
     share (T,) 0..1 (:func:`trust`; None: computed from the settings) (module docstring, 2-3); and
-    what was done. The voice's closures are made only where it is at least half trusted."""
+    what was done. The voice's closures are made only where it is at least half trusted; a
+    negative ``voice_closure_threshold`` (the model's own, which :func:`fuse` resolves with
+    :func:`closure_threshold`) makes none here."""
     o = np.asarray(opening, np.float64)
     n = len(o)
     q = rank_map(predicted, o) if settings.voice_opening_map == "rank" else range_map(predicted, o)
@@ -325,8 +327,8 @@ def target_gap(opening: np.ndarray, predicted: np.ndarray, score: np.ndarray | N
     kept = kept_pinned(pinned, predicted)
     w = w * pinned_free(kept, n, fps, settings)
     target = (1.0 - w) * o + w * q
-    from_voice = closure_frames(score, fps, settings.voice_closure_threshold) if score is not None \
-        else np.zeros(0, np.int64)
+    at = settings.voice_closure_threshold if settings.voice_closure_threshold >= 0 else NO_CLOSURES
+    from_voice = closure_frames(score, fps, at) if score is not None else np.zeros(0, np.int64)
     from_voice = from_voice[tr[from_voice] >= 0.5] if len(from_voice) else from_voice
     kept_closings = method_closings(o, closing, fps, settings.voice_closing_threshold)
     events = np.union1d(from_voice, kept_closings).astype(np.int64)
