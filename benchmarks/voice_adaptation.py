@@ -51,6 +51,16 @@ FAIR = ("1114_2_04", "1114_2_05", "1114_3_15")
 STRENGTHS = (0.0, 0.03, 0.1, 0.3, 1.0, 3.0, 10.0)
 
 
+def mean_of(v: np.ndarray):
+    """The statistic "mean over the chosen rows" of ``v`` (a bootstrap's statistic)."""
+    return lambda i: float(np.nanmean(v[i]))
+
+
+def rounded(d: dict) -> dict:
+    """``d`` with its numbers to four decimals (None kept)."""
+    return {a: (None if b is None else round(float(b), 4)) for a, b in d.items()}
+
+
 def opening_r(model: A.ArticulationModel, utts: list[vs.Utt], window_s: float) -> list[float]:
     """Window r's of the model's predicted opening against each utterance's real one."""
     out: list[float] = []
@@ -98,12 +108,6 @@ def main(argv=None) -> dict:
     n, k = len(fair_r["general"]), len(check)
     wi, si = resamples(n, args.resamples, args.seed), resamples(k, args.resamples, args.seed)
 
-    def mean_of(v):
-        return lambda i: float(np.nanmean(v[i]))
-
-    def rounded(d):
-        return {a: (None if b is None else round(float(b), 4)) for a, b in d.items()}
-
     out = {}
     for m in models:
         out[m] = {"performer_held_out_takes": rounded(interval(mean_of(fair_r[m]), n, wi)),
@@ -147,13 +151,6 @@ def performer_chain(general: A.ArticulationModel, takes: list[A.Take], names: tu
     n = len(scores["performer"])
     idx = resamples(n, args.resamples, args.seed)
     table = {m: np.array(v) for m, v in scores.items()}
-
-    def mean_of(v):
-        return lambda i: float(np.nanmean(v[i]))
-
-    def rounded(d):
-        return {a: (None if b is None else round(float(b), 4)) for a, b in d.items()}
-
     return {"closure_threshold": held.closure_threshold,
             "held_out_calibration": {"r": {k: round(v, 4) for k, v in held.r.items()}, "closures": held.closures,
                                      "recall": round(held.recall, 4), "precision": round(held.precision, 4)},

@@ -798,7 +798,7 @@ def main(argv=None) -> dict:
             raise SystemExit("--fit-only writes the packaged model: give --model-out")
         return {"benchmark": "voice_speakers", "packaged_model_fitted_on": fit_packaged()}
     scored = args.speakers.split(",") if args.speakers else real
-    db = rig = solve_rig = lip_vertices = live_model = phones_live_model = None
+    db = rig = solve_rig = solve_settings = lip_vertices = live_model = phones_live_model = None
     stream = config.settings("stream")
     if not args.no_chain:
         from facesynth.domain.live.synthesizer import LiveModel
@@ -813,7 +813,7 @@ def main(argv=None) -> dict:
         lip_vertices = np.array([binding[m] for m in lip_markers])
         database = MotionDatabase.read(db)
         live_model = LiveModel(database, settings, stream, config.settings("solve"))
-        solve_rig = load_rig(None, None)
+        solve_rig, solve_settings = load_rig(None, None), config.settings("solve")
         phones_live_model = LiveModel(database, settings, replace(stream, voice="off"), config.settings("solve"))
     packaged = bench.ARTICULATION_MODEL
     packaged_model = A.ArticulationModel.read(packaged)
@@ -883,8 +883,10 @@ def main(argv=None) -> dict:
                     skipped.append({"utterance": u.key, "why": why})
                     continue
                 curves["phones"] = opening_of(motion, settings, u.n)
+                moved = {"off": motion}  # the motion of each voice path, the fold's model
                 for mode in ("articulation", "loudness"):
-                    curves[mode] = voice_step(motion, u, phones, settings, model_path, True, mode)
+                    moved[mode] = voice_motion(motion, u, phones, settings, model_path, True, mode)
+                    curves[mode] = opening_of(moved[mode], settings, u.n)
                 for point in filter(None, args.sweep.split(";")):
                     name, changes = sweep_point(point, settings)
                     for tag, path in (("", model_path), ("packaged ", packaged)) if args.sweep_packaged else (("", model_path),):
@@ -900,14 +902,15 @@ def main(argv=None) -> dict:
                         write_packaged({s: v for s, v in by_speaker.items() if s != speaker}, ship_sources, ref,
                                        args.variant, args.synthetic, args.seed, shipped_path, not args.no_balance,
                                        args.speaker_weights)
-                shipped_motion = voice_motion(motion, u, phones, settings, shipped_path, True, settings.voice_recognized)
+                default_motion = moved[settings.voice_recognized]
+                shipped_motion = default_motion if shipped_path == model_path else \
+                    voice_motion(motion, u, phones, settings, shipped_path, True, settings.voice_recognized)
                 curves["packaged"] = opening_of(shipped_motion, settings, u.n)
                 # the jaw an ARKit export carries: the motion solved onto the built-in rig
-                curves["phones_jaw"] = solved_jaw(motion, solve_rig, config.settings("solve"), u.n)
-                curves["packaged_jaw"] = solved_jaw(shipped_motion, solve_rig, config.settings("solve"), u.n)
-                curves["default_jaw"] = curves["packaged_jaw"] if shipped_path == model_path else solved_jaw(
-                    voice_motion(motion, u, phones, settings, model_path, True, settings.voice_recognized),
-                    solve_rig, config.settings("solve"), u.n)
+                curves["phones_jaw"] = solved_jaw(motion, solve_rig, solve_settings, u.n)
+                curves["default_jaw"] = solved_jaw(default_motion, solve_rig, solve_settings, u.n)
+                curves["packaged_jaw"] = curves["default_jaw"] if shipped_motion is default_motion else \
+                    solved_jaw(shipped_motion, solve_rig, solve_settings, u.n)
                 from facesynth.base.phonemes import PAU  # noqa: F401  (segments as openfacefx reads them)
                 from facesynth.formats.labels import Segment
 

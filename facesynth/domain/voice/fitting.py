@@ -198,16 +198,15 @@ def held_out_takes(data: PerformerTakes, prior: ArticulationModel | None = None,
         x, known = t.targets[:, o], np.isfinite(t.targets[:, o])
         real.append(articulation.closure_frames_of(np.interp(np.arange(len(x)), np.flatnonzero(known), x[known])
                                                    if known.any() else np.zeros(0)))
-    best: tuple[float, float, tuple[int, int, int, int]] | None = None  # (F1, threshold, counts)
-    chosen = None
+    rows = []  # (threshold, recall, precision, captured closures)
     for threshold in CLOSURE_THRESHOLDS:
-        counts = closures_met(real, [closure_frames(p[:, c], FIT_FPS, threshold) for p in predicted], CLOSURE_TOLERANCE)
-        recall, precision = counts[0] / max(counts[1], 1), counts[2] / max(counts[3], 1)
-        f1 = 2 * recall * precision / (recall + precision) if recall + precision > 0 else 0.0
-        if best is None or f1 > best[0]:
-            best = (f1, threshold, counts)
-        if precision >= MIN_CLOSURE_PRECISION and (chosen is None or f1 > chosen[0]):
-            chosen = (f1, threshold, counts)
-    _, threshold, counts = chosen if chosen is not None else best  # type: ignore[misc]
-    return HeldOutTakes(r, threshold if chosen is not None else None, counts[1], counts[0] / max(counts[1], 1),
-                        counts[2] / max(counts[3], 1))
+        met, real_count, right, count = closures_met(
+            real, [closure_frames(p[:, c], FIT_FPS, threshold) for p in predicted], CLOSURE_TOLERANCE)
+        rows.append((threshold, met / max(real_count, 1), right / max(count, 1), real_count))
+
+    def f1(row):
+        return 2 * row[1] * row[2] / (row[1] + row[2]) if row[1] + row[2] > 0 else 0.0
+
+    right_enough = [row for row in rows if row[2] >= MIN_CLOSURE_PRECISION]
+    threshold, recall, precision, real_count = max(right_enough or rows, key=f1)  # the lowest threshold on a tie
+    return HeldOutTakes(r, threshold if right_enough else None, real_count, recall, precision)

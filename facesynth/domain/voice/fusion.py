@@ -131,13 +131,14 @@ def _read_model(path: Path, mtime_ns: int) -> ArticulationModel:
     return model
 
 
-def closure_threshold(settings: SynthesizeSettings, model: ArticulationModel) -> float:
+def closure_threshold(settings: SynthesizeSettings, model: ArticulationModel | None) -> float:
     """The closure score's threshold the voice closes the lips at: ``synthesize.voice_closure_threshold``,
     or where it is negative the model's own (:attr:`~facesynth.model.articulation.ArticulationModel.closure_threshold`,
-    chosen by ``fit-articulation`` on the performer's held-out takes), else none (2: above any score)."""
+    chosen by ``fit-articulation`` on the performer's held-out takes), else (none, or no model) none
+    (2: above any score)."""
     if settings.voice_closure_threshold >= 0:
         return settings.voice_closure_threshold
-    return model.closure_threshold if model.closure_threshold is not None else NO_CLOSURES
+    return model.closure_threshold if model is not None and model.closure_threshold is not None else NO_CLOSURES
 
 
 def articulation_model(setting: str) -> ArticulationModel:
@@ -327,7 +328,7 @@ def target_gap(opening: np.ndarray, predicted: np.ndarray, score: np.ndarray | N
     kept = kept_pinned(pinned, predicted)
     w = w * pinned_free(kept, n, fps, settings)
     target = (1.0 - w) * o + w * q
-    at = settings.voice_closure_threshold if settings.voice_closure_threshold >= 0 else NO_CLOSURES
+    at = closure_threshold(settings, None)
     from_voice = closure_frames(score, fps, at) if score is not None else np.zeros(0, np.int64)
     from_voice = from_voice[tr[from_voice] >= 0.5] if len(from_voice) else from_voice
     kept_closings = method_closings(o, closing, fps, settings.voice_closing_threshold)
