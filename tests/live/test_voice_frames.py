@@ -126,6 +126,19 @@ def test_the_mouth_rests_in_steady_noise(model):
         assert len(frames) == 60 and jaw.max() < 0.02, name
 
 
+def test_the_mouth_rests_when_a_room_is_heard_after_digital_silence(model, pcm):
+    """A muted line (exact zeros) then the room's hiss: the noise floor does not stand on the
+    zeros, so the hiss is the room, not a voice; the speech after it is heard as before."""
+    rng = np.random.default_rng(4)
+    speech = np.frombuffer(pcm, "<i2").astype(np.float64) / 32768.0
+    audio = np.concatenate([np.zeros(16000), rng.normal(0, 10 ** (-45 / 20), 48000)])  # 1 s muted, 3 s hiss
+    audio = np.concatenate([audio, speech + rng.normal(0, 10 ** (-45 / 20), len(speech))])
+    _, frames, _ = _run(model, (audio * 32768).astype("<i2").tobytes())
+    jaw = np.array([f["arkit"][list(model.arkit_names).index("jawOpen")] for f in frames])
+    assert jaw[:120].max() < 0.02  # before: open to 0.1 and more all through the hiss
+    assert jaw[120:].max() > 0.1  # the sentence
+
+
 def test_the_frames_do_not_depend_on_how_the_audio_is_cut(model, pcm):
     _, in_20ms, _ = _run(model, pcm)
     session = Session(model, Config.load().settings("align"), "test")

@@ -1,6 +1,7 @@
 """Whether someone speaks (facesynth.domain.voice.activity): WebRTC's detector hears speech and not
 steady noise, reads a stream in chunks as the whole audio, and hears speech in a noisy room that
-the level alone hears only in part."""
+the level alone hears only in part; digital silence neither holds the noise floor down nor fools
+the detector."""
 
 import csv
 
@@ -76,3 +77,56 @@ def test_speech_in_a_loud_room_is_heard_where_the_level_hears_it_in_part(speech)
     assert level_alone[15:60].mean() < 0.8
     assert with_detector[15:60].min() == 1.0
     assert np.all(with_detector >= level_alone)
+
+
+def _hiss_after_zeros(seconds_zero: float = 1.0, seconds_hiss: float = 3.0) -> np.ndarray:
+    """A muted line (exact zeros) then a room's hiss at -45 dBFS, at 16 kHz."""
+    hiss = np.random.default_rng(5).normal(0, 10 ** (-45 / 20), int(seconds_hiss * 16000))
+    return np.concatenate([np.zeros(int(seconds_zero * 16000)), hiss])
+
+
+def test_a_room_heard_after_digital_silence_is_not_a_voice():
+    x = _hiss_after_zeros()
+    raw = articulation.frame_features(x, 16000)
+    times = np.arange(120) / 30
+    speech = activity.speech_frames(x, 2, len(raw))
+    assert not speech.any()  # the detector's 70 ms after the zeros are not taken
+    heard = fusion.confidence(raw, times, 0.5, 1.5, speech, activity.floor_frames(x, len(raw)))
+    assert heard.max() == 0.0
+    # a floor standing on the zeros (and on the frames that read part of them) hears all the hiss
+    assert fusion.confidence(raw, times, 0.5, 1.5, speech)[40:].min() == 1.0
+    # the frames that read any zeros (the audio's padding before its start and after its end too)
+    admitted = activity.floor_frames(x, len(raw))
+    first = np.flatnonzero(admitted)[0]
+    assert first == 100 + 4 and admitted[first:-1].all() and not admitted[-1]  # frame 399 reads past the end
+
+
+def test_speech_between_digital_silences_is_heard(speech):
+    """The actress's sentence between exact zeros: the floor stands on its own quietest frames,
+    and the speech is heard all through."""
+    raw = articulation.frame_features(speech, 16000)
+    times = np.arange(int(len(speech) / 16000 * 30)) / 30
+    c = fusion.confidence(raw, times, 0.5, 1.5, activity.speech_frames(speech, 2, len(raw)),
+                          activity.floor_frames(speech, len(raw)))
+    sound = np.flatnonzero(np.abs(speech) >= activity.SILENCE_AMPLITUDE) / 16000
+    inside = (times > sound[0] + 0.05) & (times < sound[-1] - 0.05)
+    assert c[inside].min() == 1.0 and c[times < sound[0] - 0.2].max() == 0.0
+
+
+def test_the_floor_frames_of_a_stream_in_pieces_are_the_whole(speech):
+    x = np.concatenate([speech, _hiss_after_zeros(0.5, 1.0), np.zeros(700)])
+    count = articulation.frame_count(len(x))
+    whole = activity.floor_frames(x, count)
+    frames, parts, done, a = activity.FloorFrames(), [], 0, 0
+    rng = np.random.default_rng(6)
+    while a < len(x):
+        b = min(a + int(rng.integers(1, 900)), len(x))
+        frames.push(x[a:b])
+        a = b
+        ready = min((a - articulation.WIN // 2) // articulation.HOP + 1, count)  # frames whose samples are in
+        if ready > done:
+            parts.append(frames.admitted(done, ready - done))
+            done = ready
+    parts.append(frames.admitted(done, count - done))
+    np.testing.assert_array_equal(np.concatenate(parts), whole)
+    assert 0 < whole.mean() < 1

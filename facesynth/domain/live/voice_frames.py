@@ -20,8 +20,8 @@ time plus the articulation model's look-ahead (:func:`facesynth.domain.voice.art
 * where nobody speaks the mouth rests: the voice's shapes are scaled by its confidence over the
   last 0.25 s to the look-ahead, as batch fusion's (:mod:`facesynth.domain.voice.activity`): fully
   where WebRTC's voice activity detector hears speech (``synthesize.voice_activity``), else the
-  speech band's loudness above a running noise floor. Batch's floor looks both ways; a stream's
-  starts at its first frame, so a stream that starts in speech would take it for the noise until a
+  speech band's loudness above a running noise floor (which never stands on digital silence).
+  Batch's floor looks both ways; a stream's starts at its first frame, so a stream that starts in speech would take it for the noise until a
   quieter frame came: there the detector hears it, as it hears speech that stands only a few dB
   above a noisy room's hum.
 
@@ -88,6 +88,7 @@ class VoiceFrames:
         self._speech = np.zeros(0)  # the detector's frames not yet matched to an analysis frame
         self._powers = np.zeros(0)  # the speech band's power of the last analysis frames
         self._floor = np.inf  # what the noise floor carries from frame to frame (activity.floor_after)
+        self._floor_frames = activity.FloorFrames()  # which frames it may stand on
         self._confidence: deque[float] = deque(maxlen=int(round(2.0 / FRAME_S)))
         self._heard = 0  # analysis frames whose confidence is known
 
@@ -125,7 +126,8 @@ class VoiceFrames:
         speech = np.zeros(len(raw))
         known = min(len(raw), len(self._speech))  # at the audio's end: a last part-frame the detector never reads
         speech[:known], self._speech = self._speech[:known], self._speech[known:]
-        floor, self._floor = activity.floor_after(level, self._heard, self._floor)
+        admitted = self._floor_frames.admitted(self._heard, len(raw))
+        floor, self._floor = activity.floor_after(level, self._heard, self._floor, admitted)
         self._confidence.extend(activity.frame_confidence(level, floor, speech, *self.snr).tolist())
         self._heard += len(raw)
 
@@ -157,6 +159,7 @@ class VoiceFrames:
         """The frames that the audio up to ``now`` (s received, ``samples`` the newest) decides."""
         self.samples += len(samples)
         self._speech = np.concatenate([self._speech, self.speech.push(samples)])
+        self._floor_frames.push(samples)
         predictions = self.predictor.push(samples)
         self._listen(self.predictor.heard)
         return self._frames(predictions, now)

@@ -9,7 +9,14 @@ speech, each per 10 ms analysis frame, and a frame is heard as clearly as the st
   from ``snr_none`` (nothing) to ``snr_full`` (fully) (:func:`snr_share`). The band leaves out the
   rumble below 300 Hz (ventilation, traffic), whose loudness jitters from frame to frame and was
   taken for syllables, and the hiss above 3.4 kHz. Batch's floor looks both ways (audio that starts
-  in speech is heard from its start); a stream's looks back only.
+  in speech is heard from its start); a stream's looks back only. Digital silence (exact zeros: an
+  editor's cut, a muted call, a synthesized voice's pauses, the padding before and after the audio)
+  says nothing about the room, so the floor does not stand on it: a frame whose level reads any
+  of it (:class:`FloorFrames`) is left out of the floor, or the room's noise after a stretch of
+  zeros would stand far above a floor on the zeros and be heard as a voice for seconds. The
+  first sound after digital silence is taken for the room until something quieter comes; where
+  nothing but a voice and digital silence is heard, the voice's quietest moments are the floor
+  and the detector hears the rest.
 * **Voice activity.** WebRTC's voice activity detector (``webrtcvad``: a Gaussian mixture of speech
   and noise spectra, six bands, adapting to the noise as it goes; ``aggressiveness`` 0..3, higher
   rejects more noise and more quiet speech; -1 leaves it out) says speech or not per 10 ms. It
@@ -37,9 +44,15 @@ LEVEL_FRAMES = 3
 #: How fast the noise floor rises away from a quiet frame (natural log of amplitude a second): a
 #: noisy recording's floor follows its noise up, and a syllable's peak is not taken for it.
 FLOOR_RISE_PER_S = 0.2
-#: The detector's first frames are not taken: its noise model starts from its defaults and takes
-#: the first 70 ms of any sound, steady noise included, for speech.
+#: The detector's first frames, and its first after digital silence, are not taken: its noise
+#: model starts from its defaults (and learns nothing from zeros) and takes the first 70 ms of any
+#: sound, steady noise included, for speech.
 VAD_WARMUP_FRAMES = 10
+#: Digital silence: samples below half a 16-bit step (full scale 1), in whole blocks of
+#: :data:`SILENCE_BLOCK` samples (2 ms at 16 kHz). A quiet room's noise, at 16 bits, does not
+#: stay at zero for 2 ms; a decoder's or resampler's ringing about a cut of zeros stays below.
+SILENCE_AMPLITUDE = 2.0 ** -16
+SILENCE_BLOCK = 32
 
 
 _CENTRES_HZ = voice_model.mel_edges_hz()[1:-1]
@@ -72,31 +85,91 @@ def snr_share(above_floor: np.ndarray | float, snr_none: float, snr_full: float)
     return np.clip((np.asarray(above_floor, np.float64) - snr_none) / max(snr_full - snr_none, 1e-6), 0.0, 1.0)
 
 
-def floor_after(level: np.ndarray, first: int = 0, carried: float = np.inf) -> tuple[np.ndarray, float]:
+def _candidates(level: np.ndarray, admitted: np.ndarray | None) -> np.ndarray:
+    """(K,) float64 the levels the floor may stand on: ``level``, +inf where not ``admitted``."""
+    e = np.asarray(level, np.float64)
+    return e if admitted is None else np.where(admitted, e, np.inf)
+
+
+def floor_after(level: np.ndarray, first: int = 0, carried: float = np.inf,
+                admitted: np.ndarray | None = None) -> tuple[np.ndarray, float]:
     """The noise floor (K,) under ``level`` (K,), the 10 ms frames ``first``.. of an audio, looking
     back only: f_k = min(e_k, f_{k-1} + rise), rising by :data:`FLOOR_RISE_PER_S` a second away from
     each quiet frame; with what it carries to the next frames (the running minimum of e_k - rise k,
     ``carried`` in from the frames before ``first``: a stream's floor, chunk by chunk, is exactly
-    the whole audio's)."""
+    the whole audio's). ``admitted`` (K,) bool: the frames the floor may stand on (all by default;
+    :class:`FloorFrames`); +inf until the first."""
     ramp = FLOOR_RISE_PER_S * voice_model.FRAME_S * np.arange(first, first + len(level), dtype=np.float64)
-    lowest = np.minimum.accumulate(np.concatenate([[carried], np.asarray(level, np.float64) - ramp]))[1:]
+    lowest = np.minimum.accumulate(np.concatenate([[carried], _candidates(level, admitted) - ramp]))[1:]
     return lowest + ramp, float(lowest[-1]) if len(lowest) else carried
 
 
-def floor_both_ways(level: np.ndarray) -> np.ndarray:
+def floor_both_ways(level: np.ndarray, admitted: np.ndarray | None = None) -> np.ndarray:
     """(K,) the noise floor under ``level`` (K,) 10 ms frames: the quietest level within reach, rising
-    by :data:`FLOOR_RISE_PER_S` a second away from each quiet frame, before and after it."""
-    e = np.asarray(level, np.float64)
+    by :data:`FLOOR_RISE_PER_S` a second away from each quiet frame, before and after it; only the
+    ``admitted`` (K,) frames count (all by default); +inf where none does."""
+    e = _candidates(level, admitted)
     ramp = FLOOR_RISE_PER_S * voice_model.FRAME_S * np.arange(len(e))
     before = np.minimum.accumulate((e + ramp)[::-1])[::-1] - ramp  # b_k = min(e_k, b_{k+1} + rise)
     return np.minimum(floor_after(e)[0], before)
 
 
+class FloorFrames:
+    """Which 10 ms analysis frames the noise floor may stand on: those whose level
+    (:func:`band_level`: frames k - 2..k, each reading WIN samples about its centre) reads no
+    digital silence (a whole :data:`SILENCE_BLOCK` below :data:`SILENCE_AMPLITUDE`, the zeros
+    before the audio's start and after its end included). Fed mono audio at 16 kHz in chunks of any
+    length (:meth:`push`); :meth:`admitted` answers for frames whose samples have all arrived, so a
+    stream's answer, chunk by chunk, is the whole audio's."""
+
+    #: The level's reach in blocks: frame k reads blocks k * STEP - BACK .. k * STEP + AHEAD.
+    STEP = voice_model.HOP // SILENCE_BLOCK
+    BACK = ((LEVEL_FRAMES - 1) * voice_model.HOP + voice_model.WIN // 2) // SILENCE_BLOCK
+    AHEAD = voice_model.WIN // 2 // SILENCE_BLOCK - 1
+
+    def __init__(self):
+        assert voice_model.HOP % SILENCE_BLOCK == 0 and voice_model.WIN // 2 % SILENCE_BLOCK == 0
+        self.pending = np.zeros(0)
+        self.silent = np.zeros(0, bool)  # blocks from ``base`` on
+        self.base = 0
+        self.blocks = 0  # whole blocks read so far
+
+    def push(self, samples: np.ndarray) -> None:
+        x = np.concatenate([self.pending, np.asarray(samples, np.float64)])
+        k = len(x) // SILENCE_BLOCK
+        self.pending = x[k * SILENCE_BLOCK:]
+        quiet = np.abs(x[:k * SILENCE_BLOCK]).reshape(k, SILENCE_BLOCK).max(1, initial=0.0) < SILENCE_AMPLITUDE
+        self.silent = np.concatenate([self.silent, quiet])
+        self.blocks += k
+
+    def admitted(self, first: int, count: int) -> np.ndarray:
+        """(count,) bool for frames ``first``.. (each at most once, in order: the blocks no later
+        frame reads are let go). Blocks before the audio or not yet read (past its end) are silent."""
+        lo = np.arange(first, first + count) * self.STEP - self.BACK
+        hi = np.arange(first, first + count) * self.STEP + self.AHEAD
+        c = np.concatenate([[0], np.cumsum(self.silent)])
+        a, b = np.clip(lo - self.base, 0, len(self.silent)), np.clip(hi + 1 - self.base, 0, len(self.silent))
+        out = (lo >= 0) & (hi < self.blocks) & (c[b] == c[a])
+        drop = min(max((first + count) * self.STEP - self.BACK - self.base, 0), len(self.silent))
+        self.silent, self.base = self.silent[drop:], self.base + drop
+        return out
+
+
+def floor_frames(samples: np.ndarray, count: int) -> np.ndarray:
+    """(count,) bool the analysis frames of mono ``samples`` (n,) at 16 kHz the noise floor may
+    stand on (:class:`FloorFrames`)."""
+    frames = FloorFrames()
+    frames.push(samples)
+    return frames.admitted(0, count)
+
+
 class SpeechFrames:
     """WebRTC's speech-or-not per 10 ms of mono audio at 16 kHz, fed in chunks of any length:
     :meth:`push` returns (k,) float 0/1 for the 10 ms frames the chunk completes; frame j covers
-    samples [160 j, 160 (j + 1)); the first :data:`VAD_WARMUP_FRAMES` are 0. ``aggressiveness``
-    -1: no detector, every frame 0."""
+    samples [160 j, 160 (j + 1)); the first :data:`VAD_WARMUP_FRAMES` of the audio, and those after
+    a frame of digital silence (all zero at 16 bits), are 0: the detector's noise model does not
+    learn from zeros, so after them it takes any sound for speech until it settles again.
+    ``aggressiveness`` -1: no detector, every frame 0."""
 
     def __init__(self, aggressiveness: int):
         self.vad = None
@@ -106,6 +179,7 @@ class SpeechFrames:
             self.vad = webrtcvad.Vad(aggressiveness)
         self.pending = np.zeros(0, np.int16)
         self.frames = 0  # frames read so far
+        self.last_silent = -1  # the last frame of digital silence (the audio's start: frame -1)
 
     def push(self, samples: np.ndarray) -> np.ndarray:
         pcm = np.clip(np.rint(np.asarray(samples, np.float64) * 32767.0), -32768, 32767).astype("<i2")
@@ -118,7 +192,12 @@ class SpeechFrames:
             return np.zeros(k)
         frames = x[:k * hop].reshape(k, hop)
         flags = np.array([self.vad.is_speech(f.tobytes(), voice_model.RATE) for f in frames], np.float64)
-        flags[:max(VAD_WARMUP_FRAMES - first, 0)] = 0.0
+        index = np.arange(first, first + k)
+        silent = np.abs(frames.astype(np.int32)).max(1, initial=0) == 0  # zero at 16 bits
+        last = np.maximum.accumulate(np.concatenate([[self.last_silent], np.where(silent, index, -1)]))[1:]
+        if k:
+            self.last_silent = int(last[-1])
+        flags[index - last <= VAD_WARMUP_FRAMES] = 0.0
         return flags
 
 

@@ -180,18 +180,20 @@ def apply(motion: Motion, samples: np.ndarray, rate: int, starts: np.ndarray, en
 # ---------------------------------------------------------------- the voice's side
 
 def confidence(raw: np.ndarray, times_s: np.ndarray, snr_none: float, snr_full: float,
-               speech: np.ndarray | None = None) -> np.ndarray:
+               speech: np.ndarray | None = None, admitted: np.ndarray | None = None) -> np.ndarray:
     """(T,) 0..1 how clearly the voice is heard at ``times_s`` (T,) s, from the raw features (K, D)
     of :func:`facesynth.domain.voice.articulation.frame_features` and WebRTC's voice activity
     ``speech`` (K,) 0/1 per 10 ms (none: the level alone): each frame's
     :func:`facesynth.domain.voice.activity.frame_confidence`, the speech band's level above the
-    noise floor looking both ways (audio that starts in speech is heard from its start), the
-    highest over the speech around it (0.3 s: the jaw moves through a syllable's quiet parts too);
-    0 past the audio's end (a motion may outlast its audio by ``ingest.max_audio_mismatch_s``)."""
+    noise floor looking both ways (audio that starts in speech is heard from its start; standing
+    on the ``admitted`` (K,) frames, :func:`facesynth.domain.voice.activity.floor_frames`: none
+    reading digital silence; all when None), the highest over the speech around it (0.3 s: the jaw
+    moves through a syllable's quiet parts too); 0 past the audio's end (a motion may outlast its
+    audio by ``ingest.max_audio_mismatch_s``)."""
     if not len(raw):
         return np.zeros(len(times_s))
     level = activity.band_level(activity.band_power(raw))
-    c = activity.frame_confidence(level, activity.floor_both_ways(level),
+    c = activity.frame_confidence(level, activity.floor_both_ways(level, admitted),
                                   np.zeros(len(level)) if speech is None else speech, snr_none, snr_full)
     from scipy.ndimage import maximum_filter1d
 
@@ -418,7 +420,8 @@ def fuse(motion: Motion, samples: np.ndarray, rate: int, starts: np.ndarray, end
     at_coarse = voice_model.predict_raw(model, raw, coarse)
     pred = {c: np.interp(times, coarse, at_coarse[:, j]) for j, c in enumerate(model.target_names)}
     speech = activity.speech_frames(heard, settings.voice_activity, len(raw))
-    conf = confidence(raw, times, settings.voice_snr_none, settings.voice_snr_full, speech)
+    conf = confidence(raw, times, settings.voice_snr_none, settings.voice_snr_full, speech,
+                      activity.floor_frames(heard, len(raw)))
     ranges = frame_ranges(np.asarray(starts, float), np.asarray(ends, float), fps)
     pinned_ranges = [r for r, p in zip(ranges, phones) if p in settings.pinned_phones] if pinned else []
     moved = frames
