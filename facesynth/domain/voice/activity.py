@@ -9,14 +9,14 @@ speech, each per 10 ms analysis frame, and a frame is heard as clearly as the st
   from ``snr_none`` (nothing) to ``snr_full`` (fully) (:func:`snr_share`). The band leaves out the
   rumble below 300 Hz (ventilation, traffic), whose loudness jitters from frame to frame and was
   taken for syllables, and the hiss above 3.4 kHz. Batch's floor looks both ways (audio that starts
-  in speech is heard from its start); a stream's looks back only. Digital silence (exact zeros: an
-  editor's cut, a muted call, a synthesized voice's pauses, the padding before and after the audio)
-  says nothing about the room, so the floor does not stand on it: a frame whose level reads any
-  of it (:class:`FloorFrames`) is left out of the floor, or the room's noise after a stretch of
-  zeros would stand far above a floor on the zeros and be heard as a voice for seconds. The
-  first sound after digital silence is taken for the room until something quieter comes; where
-  nothing but a voice and digital silence is heard, the voice's quietest moments are the floor
-  and the detector hears the rest.
+  in speech is heard from its start); a stream's looks back only. Digital silence (exact zeros: a
+  muted line, a device's first buffers, an editor's cut, a synthesized voice's pauses) says nothing
+  about the room, so the floor does not stand on it: a frame whose level reads any of it
+  (:class:`FloorFrames`) is left out of the floor, or the room's noise after a stretch of zeros
+  would stand far above a floor on the zeros and be heard as a voice for seconds. The first sound
+  after digital silence is taken for the room until something quieter comes; where nothing but a
+  voice and digital silence is heard, the voice's quietest moments are the floor and the detector
+  hears the rest.
 * **Voice activity.** WebRTC's voice activity detector (``webrtcvad``: a Gaussian mixture of speech
   and noise spectra, six bands, adapting to the noise as it goes; ``aggressiveness`` 0..3, higher
   rejects more noise and more quiet speech; -1 leaves it out) says speech or not per 10 ms. It
@@ -24,6 +24,8 @@ speech, each per 10 ms analysis frame, and a frame is heard as clearly as the st
   dB above its room's noise (where the level's share stays low), is heard from its first
   syllable. Steady noise at -40 dBFS, white, brown or a 60 Hz hum, it leaves unheard at
   aggressiveness 2 (tests); louder noise with speech's spectrum (pink noise at -26 dBFS) it hears.
+  Its first 100 ms, at the audio's start and after digital silence, are not taken
+  (:data:`VAD_WARMUP_FRAMES`): there it calls any sound speech.
 
 Why WebRTC's and not a hand-written detector: the voicing feature (the autocorrelation's peak) is
 fooled by rumble (brown noise reads as voiced), and a level detector cannot tell a loud noisy
@@ -49,10 +51,14 @@ FLOOR_RISE_PER_S = 0.2
 #: sound, steady noise included, for speech.
 VAD_WARMUP_FRAMES = 10
 #: Digital silence: samples below half a 16-bit step (full scale 1), in whole blocks of
-#: :data:`SILENCE_BLOCK` samples (2 ms at 16 kHz). A quiet room's noise, at 16 bits, does not
-#: stay at zero for 2 ms; a decoder's or resampler's ringing about a cut of zeros stays below.
+#: :data:`SILENCE_BLOCK` samples (2 ms at 16 kHz), at least :data:`SILENCE_MIN_BLOCKS` in a row.
+#: A decoder's or resampler's ringing about a cut of zeros stays below the step. The few ms of
+#: zeros a decoder leaves at a file's start (2 to 6 ms in every GRID clip) or a quiet 16-bit
+#: studio between syllables (FACEGOOD's takes) are not a silenced line: they lower a frame's level
+#: no more than the analysis's own zeros before the audio's start do, and are left alone.
 SILENCE_AMPLITUDE = 2.0 ** -16
 SILENCE_BLOCK = 32
+SILENCE_MIN_BLOCKS = 5
 
 
 _CENTRES_HZ = voice_model.mel_edges_hz()[1:-1]
@@ -117,10 +123,13 @@ def floor_both_ways(level: np.ndarray, admitted: np.ndarray | None = None) -> np
 class FloorFrames:
     """Which 10 ms analysis frames the noise floor may stand on: those whose level
     (:func:`band_level`: frames k - 2..k, each reading WIN samples about its centre) reads no
-    digital silence (a whole :data:`SILENCE_BLOCK` below :data:`SILENCE_AMPLITUDE`, the zeros
-    before the audio's start and after its end included). Fed mono audio at 16 kHz in chunks of any
-    length (:meth:`push`); :meth:`admitted` answers for frames whose samples have all arrived, so a
-    stream's answer, chunk by chunk, is the whole audio's."""
+    digital silence of the audio: a block of :data:`SILENCE_BLOCK` samples below
+    :data:`SILENCE_AMPLITUDE` that ends a run of at least :data:`SILENCE_MIN_BLOCKS` such blocks
+    (looking back only, so the first blocks of a run do not count: a frame reading only those
+    reads at most 8 ms of zeros). The analysis's own zeros before the audio's start and after its
+    end do not count. Fed mono audio at 16 kHz in chunks of any length (:meth:`push`);
+    :meth:`admitted` answers for frames whose samples have all arrived (a frame past the audio's
+    end: at its end), so a stream's answer, chunk by chunk, is the whole audio's."""
 
     #: The level's reach in blocks: frame k reads blocks k * STEP - BACK .. k * STEP + AHEAD.
     STEP = voice_model.HOP // SILENCE_BLOCK
@@ -133,23 +142,29 @@ class FloorFrames:
         self.silent = np.zeros(0, bool)  # blocks from ``base`` on
         self.base = 0
         self.blocks = 0  # whole blocks read so far
+        self.run = 0  # quiet blocks in a row up to the last read
 
     def push(self, samples: np.ndarray) -> None:
         x = np.concatenate([self.pending, np.asarray(samples, np.float64)])
         k = len(x) // SILENCE_BLOCK
         self.pending = x[k * SILENCE_BLOCK:]
         quiet = np.abs(x[:k * SILENCE_BLOCK]).reshape(k, SILENCE_BLOCK).max(1, initial=0.0) < SILENCE_AMPLITUDE
-        self.silent = np.concatenate([self.silent, quiet])
+        index = np.arange(k)
+        loud = np.maximum.accumulate(np.where(quiet, -1, index)) if k else index  # the last loud block
+        run = np.where(loud >= 0, index - loud, index + 1 + self.run)  # quiet blocks in a row to each
+        self.run = int(run[-1]) if k else self.run
+        self.silent = np.concatenate([self.silent, run >= SILENCE_MIN_BLOCKS])
         self.blocks += k
 
     def admitted(self, first: int, count: int) -> np.ndarray:
         """(count,) bool for frames ``first``.. (each at most once, in order: the blocks no later
-        frame reads are let go). Blocks before the audio or not yet read (past its end) are silent."""
+        frame reads are let go). Blocks before the audio or not yet read (past its end) are not
+        silent."""
         lo = np.arange(first, first + count) * self.STEP - self.BACK
         hi = np.arange(first, first + count) * self.STEP + self.AHEAD
         c = np.concatenate([[0], np.cumsum(self.silent)])
         a, b = np.clip(lo - self.base, 0, len(self.silent)), np.clip(hi + 1 - self.base, 0, len(self.silent))
-        out = (lo >= 0) & (hi < self.blocks) & (c[b] == c[a])
+        out = c[b] == c[a]
         drop = min(max((first + count) * self.STEP - self.BACK - self.base, 0), len(self.silent))
         self.silent, self.base = self.silent[drop:], self.base + drop
         return out
