@@ -101,6 +101,10 @@ def test_a_room_heard_after_digital_silence_is_not_a_voice():
     admitted = activity.floor_frames(x, len(raw))
     assert not admitted[:104].any() and admitted[104:].all()
     np.testing.assert_array_equal(activity.floor_frames(x[16000:], 300), np.ones(300, bool))
+    # the 6 ms of zeros a decoder leaves at a file's start (GRID's clips) are not a silenced line
+    decoded = np.concatenate([np.zeros(3 * activity.SILENCE_BLOCK), x[16000:]])
+    assert activity.floor_frames(decoded, 300).all()
+    assert not activity.floor_frames(np.concatenate([np.zeros(160), x[16000:]]), 300)[:4].all()  # 10 ms is
 
 
 def test_speech_between_digital_silences_is_heard(speech):
