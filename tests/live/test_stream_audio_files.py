@@ -11,10 +11,10 @@ sound on, every frame within 0.09 (MP3), 0.07 (AAC) and 0.03 (Opus). The test as
 its first 0.1 s of sound waits for the voice activity detector to settle. A codec fills the
 12 ms before the sound with faint pre-echo (-66 to -48 dBFS), which ends the digital silence
 earlier and gives the floor a quieter frame, so the first and last syllables open the jaw a
-little more (by up to 0.15 in the first 0.1 s). The streams take the voice's frames (``stream.voice = "articulation"``, the
-default, set whatever the configuration), whose mouth follows the sound frame by frame, so the
-comparison measures the decoder; with ``"off"`` the frames come from the recognised phones, which a
-codec can tip one way or the other.
+little more (by up to 0.15 in the first 0.1 s). The streams take the voice's frames
+(``stream.voice = "articulation"``, the default, set whatever the configuration), whose mouth
+follows the sound frame by frame, so the comparison measures the decoder; with ``"off"`` the
+frames come from the recognised phones, which a codec can tip one way or the other.
 """
 
 from __future__ import annotations
