@@ -45,15 +45,16 @@ def _modules() -> dict[str, Path]:
 MODULES = _modules()
 
 
-def _imports_with_place(path: Path) -> list[tuple[str, int]]:
-    """(module, id of the import statement) for every facesynth module ``path`` imports, anywhere
-    in the file (inside functions too); ``from package import name`` counts as importing the
-    module ``name`` when there is one."""
+def _imports_with_place(path: Path, tree: ast.AST | None = None) -> list[tuple[str, int]]:
+    """(module, id of the import statement in ``tree``, the file's parse, parsed here when None)
+    for every facesynth module ``path`` imports, anywhere in the file (inside functions too);
+    ``from package import name`` counts as importing the module ``name`` when there is one. The
+    ids name nodes of ``tree`` only while it lives: a caller comparing them keeps it."""
     parts = path.relative_to(PACKAGE.parent).with_suffix("").parts
     if parts[-1] == "__init__":
         parts = parts + ("",)  # relative imports of a package start at the package itself
     out = []
-    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+    for node in ast.walk(tree if tree is not None else ast.parse(path.read_text(encoding="utf-8"))):
         names = set()
         if isinstance(node, ast.ImportFrom):
             if node.level:
@@ -103,11 +104,13 @@ def package(module: str) -> str:
 
 def _deferred(path: Path) -> set[str]:
     """The facesynth modules ``path`` imports inside functions."""
+    # one parse for both: ids of two parses' nodes can coincide once the first is freed
+    tree = ast.parse(path.read_text(encoding="utf-8"))
     inside = set()
-    for fn in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+    for fn in ast.walk(tree):
         if isinstance(fn, (ast.FunctionDef, ast.AsyncFunctionDef)):
             inside.update(id(n) for n in ast.walk(fn) if isinstance(n, (ast.Import, ast.ImportFrom)))
-    return {m for m, where in _imports_with_place(path) if where in inside}
+    return {m for m, where in _imports_with_place(path, tree) if where in inside}
 
 
 def _circles(graph: dict[str, set[str]]) -> list[list[str]]:

@@ -45,6 +45,7 @@ from facesynth.domain.retarget import facial_solve
 from facesynth.domain.rig.face import Rig
 from facesynth.domain.speech.loudness import lip_gaps
 from facesynth.domain.voice import articulation
+from facesynth.domain.voice.fusion import closure_frames
 from facesynth.model.articulation import ArticulationModel
 from facesynth.model.corpus import Corpus
 from facesynth.model.frames import NormalizedFrames
@@ -182,8 +183,6 @@ def held_out_takes(data: PerformerTakes, prior: ArticulationModel | None = None,
                    prior_strength: float = 0.0) -> HeldOutTakes | None:
     """What the fit of :func:`fit_performer` does on takes it did not see (module docstring), or
     None with fewer than two takes."""
-    from facesynth.domain.voice.fusion import closure_frames
-
     if len(data.takes) < 2:
         return None
     predicted = []
