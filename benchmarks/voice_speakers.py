@@ -50,6 +50,9 @@ from them on the built-in actress's database (``small`` preset, seed 0), at 30 f
 - ``live_phones``: the mouth ``stream`` sends with ``stream.voice = "off"`` (the phones
   pocketsphinx's phone loop recognises as the audio arrives, through the live DP), its inner-lip
   gap; ``live_default``: ``live_packaged`` or ``live_phones``, as ``stream.voice`` is configured.
+- ``live anticipation=S``, ``live_packaged anticipation=S`` (``--live-anticipation``): ``live`` and
+  ``live_packaged`` with ``stream.voice_anticipation_s = S`` (each frame S later, its mouth free to
+  move S ahead of its sound).
 - ``default_jaw``, ``packaged_jaw``, ``phones_jaw``: the ARKit jawOpen an export (Live Link, an ARKit
   CSV) carries for ``default``, ``packaged`` and ``phones``: the motion solved onto the built-in rig
   (``solve``'s settings); ``openfacefx_jaw``: openfacefx's own jawOpen. Scored against the real
@@ -401,8 +404,10 @@ def opening_of(motion, settings, n: int) -> np.ndarray:
     return bench.fit_length(gap, n)
 
 
-def live_curves(live_model, model, u: Utt, settings, lip_markers) -> dict[str, np.ndarray]:
-    """The mouth ``stream`` sends from ``u``'s audio (20 ms chunks) with ``model``: {live: its inner-lip
+def live_curves(live_model, model, u: Utt, settings, lip_markers,
+                anticipation_s: float | None = None) -> dict[str, np.ndarray]:
+    """The mouth ``stream`` sends from ``u``'s audio (20 ms chunks) with ``model`` (and
+    ``stream.voice_anticipation_s = anticipation_s``; None: as configured): {live: its inner-lip
     gap, live_jaw: its jawOpen weight}, (n,) each at FPS."""
     from facesynth.domain.live.voice_frames import VoiceFrames
     from facesynth.formats.audio import resample
@@ -410,7 +415,7 @@ def live_curves(live_model, model, u: Utt, settings, lip_markers) -> dict[str, n
     x = np.asarray(u.samples, np.float64)
     if u.rate != A.RATE:
         x = resample(x, u.rate, A.RATE)
-    vf = VoiceFrames(live_model, model, settings, "neutral")
+    vf = VoiceFrames(live_model, model, settings, "neutral", anticipation_s)
     frames, step = [], A.RATE // 50
     for a in range(0, len(x), step):
         frames += vf.push(x[a:a + step].astype(np.float32), (a + step) / A.RATE)
@@ -714,6 +719,9 @@ def main(argv=None) -> dict:
     ap.add_argument("--reuse-folds", action="store_true",
                     help="read each fold's model from --work where an earlier run with the same data wrote it")
     ap.add_argument("--no-live", action="store_true", help="leave out the live modes (the slowest)")
+    ap.add_argument("--live-anticipation", default="",
+                    help="comma-separated seconds: the live modes with stream.voice_anticipation_s at each "
+                         "(modes 'live anticipation=S', 'live_packaged anticipation=S')")
     ap.add_argument("--sweep", default="",
                     help="semicolon-separated points, each LOW:HIGH:WEIGHT (synthesize.voice_trust_low, "
                          "voice_trust_high and voice_weight: mode 'trust LOW:HIGH:WEIGHT') or KEY=VALUE,... of "
@@ -924,6 +932,10 @@ def main(argv=None) -> dict:
                     curves["live_phones"] = live_phones_curve(phones_live_model, config.settings("align"), u,
                                                               settings.loudness_lip_markers)
                     curves["live_default"] = curves["live_packaged" if stream.voice == "articulation" else "live_phones"]
+                    for ahead in filter(None, args.live_anticipation.split(",")):
+                        for tag, m in (("live", model), ("live_packaged", packaged_model)):
+                            curves[f"{tag} anticipation={float(ahead):g}"] = live_curves(
+                                live_model, m, u, settings, settings.loudness_lip_markers, float(ahead))["live"]
                 if u.given_phones is not None or u.text:
                     gm, gp = phones_motion(db, u, args.work, given=True)
                     curves["given_phones"] = opening_of(gm, settings, u.n)

@@ -595,6 +595,11 @@ class StreamSettings:
     voice_jaw: str = setting("not in the papers: with stream.voice = articulation, the jaw from the model's "
                              "predicted mouth opening in the jaw's units (opening) or from its predicted jawOpen "
                              "(jawOpen)", choices=("opening", "jawOpen"))
+    voice_anticipation_s: float = setting("not in the papers: with stream.voice = articulation, how far the mouth may "
+                                          "move ahead of its sound, as a real mouth opens before its first syllable: "
+                                          "each frame waits this much more audio, so the latency grows by it and a "
+                                          "player delays its audio to match (0: the model's look-ahead alone)",
+                                          unit="s", ge=0, le=1)
 
 
 @dataclass(frozen=True)

@@ -151,6 +151,38 @@ def test_the_frames_do_not_depend_on_how_the_audio_is_cut(model, pcm):
     assert [f["arkit"] for f in frames] == [f["arkit"] for f in in_20ms]
 
 
+def test_with_anticipation_the_mouth_opens_before_its_sound_and_the_frames_wait_for_it(model, db, config, pcm):
+    """stream.voice_anticipation_s: each frame waits that much more audio, and the confidence
+    hears that far ahead, so the mouth starts to open before the first syllable (a real mouth
+    does); the voice's shapes are the same predictions, only rested less."""
+    ahead = 0.15
+    live = LiveModel(db, config.settings("synthesize"),
+                     replace(config.settings("stream"), voice="articulation", voice_anticipation_s=ahead),
+                     config.settings("solve"))
+    _, now, _ = _run(model, pcm)
+    session, later, received = _run(live, pcm)
+    assert len(later) == len(now)
+    look = articulation.model_look_ahead_s(live.voice_model)
+    assert session.hello()["voice_lookahead_s"] == pytest.approx(look + ahead, abs=1e-4)
+    lag = received[:-8] - np.array([f["time"] for f in later])[:-8]  # the last frames wait for the end
+    assert lag.min() >= look + ahead - 1e-6
+    assert lag.max() <= look + ahead + CHUNK / 16000 + articulation.FRAME_S + 1e-6
+    names = list(live.arkit_names)
+    jaw_now, jaw_later = (np.array([f["arkit"][names.index("jawOpen")] for f in fs]) for fs in (now, later))
+    assert np.all(jaw_later >= jaw_now - 1e-4)  # heard as clearly or more: the same mouth, rested less
+    first_now, first_later = (int(np.argmax(j > 0.01)) for j in (jaw_now, jaw_later))
+    assert 2 <= first_now - first_later <= int(np.ceil(ahead * 30)) + 1  # opens before its sound (here 0.1 s)
+    # and still cut anywhere, the same frames
+    session = Session(live, Config.load().settings("align"), "test")
+    rng, cut, a = np.random.default_rng(5), [], 0
+    while a < len(pcm):
+        b = a + 2 * int(rng.integers(1, 1500))
+        cut += [m for m in session.audio(pcm[a:b]) if m["type"] == "frame"]
+        a = b
+    cut += [m for m in session.end() if m["type"] == "frame"]
+    assert [f["arkit"] for f in cut] == [f["arkit"] for f in later]
+
+
 def test_a_stream_that_starts_in_speech_in_a_loud_room_moves_the_mouth(db, config, pcm):
     """No quiet frame comes before the speech to tell the noise's level: the voice activity
     detector hears the speech from its first syllable, where the level alone hears it in part."""

@@ -74,7 +74,8 @@ class Session:
         return {"type": "hello", "fps": self.model.stream.fps, "method": self.model.stream.method,
                 "lookahead_phones": self.model.stream.lookahead_phones, "sample_rate": SAMPLE_RATE,
                 "voice": self.model.stream.voice,
-                "voice_lookahead_s": None if voice is None else round(model_look_ahead_s(voice), 4),
+                "voice_lookahead_s": None if voice is None else
+                round(model_look_ahead_s(voice) + self.model.stream.voice_anticipation_s, 4),
                 "arkit_names": list(self.model.arkit_names), "marker_names": list(self.model.marker_names),
                 "emotions": self.model.emotions}
 

@@ -3,7 +3,9 @@
 With ``stream.voice = "articulation"`` a stream whose phones would be recognised from its audio
 (``"phones": "recognize"``, the default) sends each output frame as soon as the audio up to its
 time plus the articulation model's look-ahead (:func:`facesynth.domain.voice.articulation.model_look_ahead_s`,
-46 ms for the packaged model) has arrived. The frame is decided then and never revised:
+46 ms for the packaged model) has arrived, and ``stream.voice_anticipation_s`` more (0 by
+default; with more, the mouth may open that far ahead of its sound, as a real mouth does before its
+first syllable). The frame is decided then and never revised:
 
 * the mouth is the voice's: the model's jawOpen (with ``stream.voice_jaw = "opening"``, the
   default, its predicted mouth opening carried into the jaw's units by the two targets' training
@@ -18,9 +20,10 @@ time plus the articulation model's look-ahead (:func:`facesynth.domain.voice.art
   the built-in rig once per emotion, with its mouth shapes left to the voice (a trajectory model
   has no frames: its rest pose, whatever the emotion);
 * where nobody speaks the mouth rests: the voice's shapes are scaled by its confidence over the
-  last 0.25 s to the look-ahead, as batch fusion's (:mod:`facesynth.domain.voice.activity`): fully
-  where WebRTC's voice activity detector hears speech (``synthesize.voice_activity``), else the
-  speech band's loudness above a running noise floor (which never stands on digital silence).
+  last 0.25 s to the look-ahead and the anticipation, as batch fusion's
+  (:mod:`facesynth.domain.voice.activity`): fully where WebRTC's voice activity detector hears
+  speech (``synthesize.voice_activity``), else the speech band's loudness above a running noise
+  floor (which never stands on digital silence).
   Batch's floor looks both ways; a stream's starts at its first frame, so a stream that starts in
   speech would take it for the noise until a quieter frame came: there the detector hears it, as
   it hears speech that stands only a few dB above a noisy room's hum.
@@ -58,9 +61,12 @@ CONFIDENCE_BACK_S = 0.25
 class VoiceFrames:
     """One stream's frames from its voice. ``model``: the stream's :class:`~facesynth.domain.live.synthesizer.LiveModel`
     (its ``voice_model``, the rig and the emotions' poses); :meth:`push` takes mono float samples at
-    16 kHz and returns the frames the audio so far decides; :meth:`finish` the rest."""
+    16 kHz and returns the frames the audio so far decides; :meth:`finish` the rest.
+    ``anticipation_s``: how far the mouth may move ahead of its sound (s; by default the model's
+    ``stream.voice_anticipation_s``)."""
 
-    def __init__(self, model, voice_model: ArticulationModel, synth: SynthesizeSettings, emotion: str):
+    def __init__(self, model, voice_model: ArticulationModel, synth: SynthesizeSettings, emotion: str,
+                 anticipation_s: float | None = None):
         self.model = model
         self.predictor = StreamingPredictor(voice_model, model.stream.fps)
         self.columns = {name: voice_model.target_names.index(name) for name in VOICE_SHAPES
@@ -82,6 +88,11 @@ class VoiceFrames:
         self.sent = 0
         self.samples = 0
         self.look_ahead_s = model_look_ahead_s(voice_model)
+        #: how far the mouth may move ahead of its sound (``stream.voice_anticipation_s``): each frame
+        #: waits this much more audio, and its confidence hears that far past its look-ahead
+        self.anticipation_s = float(model.stream.voice_anticipation_s if anticipation_s is None else anticipation_s)
+        self._pending = np.zeros((0, len(voice_model.target_names)))  # predictions waiting for that audio
+        self._pending_since = np.zeros(0)  # the audio (s) heard when each was predicted
         # the voice's confidence, as batch fusion's (:func:`facesynth.domain.voice.fusion.confidence`),
         # per 10 ms analysis frame of the predictor's; the recent values are kept
         self.speech = activity.SpeechFrames(synth.voice_activity)
@@ -89,7 +100,8 @@ class VoiceFrames:
         self._powers = np.zeros(0)  # the speech band's power of the last analysis frames
         self._floor = np.inf  # what the noise floor carries from frame to frame (activity.floor_after)
         self._floor_frames = activity.FloorFrames()  # which frames it may stand on
-        self._confidence: deque[float] = deque(maxlen=int(round(2.0 / FRAME_S)))
+        # enough for the confidence's reach: CONFIDENCE_BACK_S back, the anticipation ahead
+        self._confidence: deque[float] = deque(maxlen=int(round((2.0 + self.anticipation_s) / FRAME_S)))
         self._heard = 0  # analysis frames whose confidence is known
 
     def set_emotion(self, name: str) -> None:
@@ -133,14 +145,16 @@ class VoiceFrames:
 
     def _confidence_at(self, times: np.ndarray) -> np.ndarray:
         """(k,) the voice's confidence at ``times`` s: the highest over the analysis frames from
-        :data:`CONFIDENCE_BACK_S` before each time to the last its prediction reads (those centred
-        up to the look-ahead less the half window, all heard when the frame is sent)."""
+        :data:`CONFIDENCE_BACK_S` before each time to the last its prediction reads and the
+        anticipation past it (those centred up to the look-ahead plus the anticipation less the half
+        window, all heard when the frame is sent)."""
         kept = np.array(self._confidence)
         first = self._heard - len(kept)  # the analysis frame of kept[0]
         out = np.zeros(len(times))
         for k, t in enumerate(times):
             a = max(int(np.floor((t - CONFIDENCE_BACK_S) / FRAME_S + 1e-9)) - first, 0)
-            b = min(int(np.floor((t + self.look_ahead_s - HALF_WINDOW_S) / FRAME_S + 1e-9)) + 1 - first, len(kept))
+            reach = t + self.look_ahead_s + self.anticipation_s - HALF_WINDOW_S
+            b = min(int(np.floor(reach / FRAME_S + 1e-9)) + 1 - first, len(kept))
             out[k] = kept[a:b].max() if b > a else 0.0
         return out
 
@@ -160,15 +174,23 @@ class VoiceFrames:
         self.samples += len(samples)
         self._speech = np.concatenate([self._speech, self.speech.push(samples)])
         self._floor_frames.push(samples)
-        predictions = self.predictor.push(samples)
+        predicted = self.predictor.push(samples)
         self._listen(self.predictor.heard)
-        return self._frames(predictions, now)
+        # a frame goes out the anticipation after its prediction's audio (the look-ahead) arrived
+        heard_s = self.samples / SAMPLE_RATE
+        self._pending = np.concatenate([self._pending, predicted])
+        self._pending_since = np.concatenate([self._pending_since, np.full(len(predicted), heard_s)])
+        ready = int(np.searchsorted(self._pending_since, heard_s - self.anticipation_s + 1e-9, side="right"))
+        out, self._pending, self._pending_since = (self._pending[:ready], self._pending[ready:],
+                                                   self._pending_since[ready:])
+        return self._frames(out, now)
 
     def finish(self, now: float) -> list[Frame]:
         """End of stream: the remaining frames, as many in all as batch synthesis gives the audio (its
         capture frames down-sampled to the stream's rate; one more or less than the frames whose time
         lies within the audio, by the rounding of the two grids)."""
-        rest = self.predictor.finish()
+        rest = np.concatenate([self._pending, self.predictor.finish()])
+        self._pending, self._pending_since = self._pending[:0], self._pending_since[:0]
         self._listen(self.predictor.heard)
         grid, fps = self.model.grid_fps, self.model.stream.fps
         n_capture = int(round(self.samples / SAMPLE_RATE * grid))
