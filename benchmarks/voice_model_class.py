@@ -68,10 +68,11 @@ def main(argv=None) -> dict:
     from sklearn.neural_network import MLPRegressor
 
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--facegood", type=Path, required=True)
-    ap.add_argument("--speech-data", type=Path, required=True)
-    ap.add_argument("--score-seconds", type=float, default=60.0)
-    ap.add_argument("--window-s", type=float, default=10.0)
+    ap.add_argument("--facegood", type=Path, required=True, help="FACEGOOD's folder (see real_speech_lipsync.py)")
+    ap.add_argument("--speech-data", type=Path, required=True, help="a folder of sources (voice_speakers.py)")
+    ap.add_argument("--score-seconds", type=float, default=60.0,
+                    help="score each held-out speaker on its first utterances up to this many seconds")
+    ap.add_argument("--window-s", type=float, default=10.0, help="Pearson r per window of about this many seconds")
     ap.add_argument("--resamples", type=int, default=2000)
     ap.add_argument("--seed", type=int, default=0)
     args = ap.parse_args(argv)

@@ -139,16 +139,20 @@ def test_the_mouth_rests_when_a_room_is_heard_after_digital_silence(model, pcm):
     assert jaw[120:].max() > 0.1  # the sentence
 
 
-def test_the_frames_do_not_depend_on_how_the_audio_is_cut(model, pcm):
-    _, in_20ms, _ = _run(model, pcm)
+def _run_cut_anywhere(model, pcm: bytes, seed: int) -> list[dict]:
+    """The frame messages of ``pcm`` streamed in pieces of random lengths (1 to 1,500 samples)."""
     session = Session(model, Config.load().settings("align"), "test")
-    rng, frames, a = np.random.default_rng(3), [], 0
+    rng, frames, a = np.random.default_rng(seed), [], 0
     while a < len(pcm):
         b = a + 2 * int(rng.integers(1, 1500))
         frames += [m for m in session.audio(pcm[a:b]) if m["type"] == "frame"]
         a = b
-    frames += [m for m in session.end() if m["type"] == "frame"]
-    assert [f["arkit"] for f in frames] == [f["arkit"] for f in in_20ms]
+    return frames + [m for m in session.end() if m["type"] == "frame"]
+
+
+def test_the_frames_do_not_depend_on_how_the_audio_is_cut(model, pcm):
+    _, in_20ms, _ = _run(model, pcm)
+    assert [f["arkit"] for f in _run_cut_anywhere(model, pcm, 3)] == [f["arkit"] for f in in_20ms]
 
 
 def test_with_anticipation_the_mouth_opens_before_its_sound_and_the_frames_wait_for_it(model, db, config, pcm):
@@ -173,14 +177,7 @@ def test_with_anticipation_the_mouth_opens_before_its_sound_and_the_frames_wait_
     first_now, first_later = (int(np.argmax(j > 0.01)) for j in (jaw_now, jaw_later))
     assert 2 <= first_now - first_later <= int(np.ceil(ahead * 30)) + 1  # opens before its sound (here 0.1 s)
     # and still cut anywhere, the same frames
-    session = Session(live, Config.load().settings("align"), "test")
-    rng, cut, a = np.random.default_rng(5), [], 0
-    while a < len(pcm):
-        b = a + 2 * int(rng.integers(1, 1500))
-        cut += [m for m in session.audio(pcm[a:b]) if m["type"] == "frame"]
-        a = b
-    cut += [m for m in session.end() if m["type"] == "frame"]
-    assert [f["arkit"] for f in cut] == [f["arkit"] for f in later]
+    assert [f["arkit"] for f in _run_cut_anywhere(live, pcm, 5)] == [f["arkit"] for f in later]
 
 
 def test_a_stream_that_starts_in_speech_in_a_loud_room_moves_the_mouth(db, config, pcm):
