@@ -15,7 +15,7 @@ in FACEGOOD's units), and each network on the same context (the ridge fit's norm
 standardized on the training frames), the same opening targets and the same frame weights. Each
 held-out speaker's first 60 s are scored: the predicted opening against the real one (Pearson r in
 10 s windows, mean per speaker), pooled over speakers with a 95% bootstrap interval resampling
-speakers, each network paired against the ridge model. Deterministic (seeded networks, seeded
+speakers, the ridge model paired against each network. Deterministic (seeded networks, seeded
 resamples).
 
     python benchmarks/voice_model_class.py --facegood FACEGOOD_DIR --speech-data SPEECH_DIR \\
@@ -33,7 +33,6 @@ from pathlib import Path
 
 import numpy as np
 
-from facesynth.domain.evaluation.bootstrap import interval, paired_difference, resamples
 from facesynth.domain.voice import articulation as A
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
@@ -110,25 +109,14 @@ def main(argv=None) -> dict:
                     scores.setdefault(speaker, {}).setdefault(name, []).extend(
                         vs.window_scores(curve, u.real["opening"], u.n, args.window_s))
         seconds[source] = round(time.perf_counter() - t0, 1)
-    speakers = sorted(scores)
     names = ["ridge (as shipped)", *NETWORKS]
-    table = {m: np.array([np.nanmean(scores[s][m]) for s in speakers]) for m in names}
-    k, idx = len(speakers), resamples(len(speakers), args.resamples, args.seed)
-
-    def stat(v):
-        return lambda i: float(np.mean(v[i]))
-
-    def rounded(d):
-        return {a: round(float(b), 4) for a, b in d.items()}
-
-    return {"benchmark": "voice_model_class", "folds": "source", "sources": sources, "speakers": k,
+    summary = vs.summarize(scores, args.resamples, args.seed, lead=names[0])
+    gain = {m: np.array([v[m] - v[names[0]] for v in summary["per_speaker"].values()]) for m in NETWORKS}
+    return {"benchmark": "voice_model_class", "folds": "source", "sources": sources, "speakers": summary["speakers"],
             "networks": {n: {a: list(b) if isinstance(b, tuple) else b for a, b in p.items()} for n, p in NETWORKS.items()},
-            "r": {m: rounded(interval(stat(table[m]), k, idx)) for m in names},
-            "paired": {f"{m} - ridge (as shipped)": rounded(paired_difference(stat(table[m]), stat(table[names[0]]), k, idx))
-                       for m in NETWORKS},
-            "speakers_up_down": {m: [int((table[m] - table[names[0]] > 0.005).sum()),
-                                     int((table[m] - table[names[0]] < -0.005).sum())] for m in NETWORKS},
-            "per_speaker": {s: {m: round(float(table[m][i]), 4) for m in names} for i, s in enumerate(speakers)},
+            "r": summary["r"], "paired": summary["paired"],
+            "speakers_up_down": {m: [int((g > 0.005).sum()), int((g < -0.005).sum())] for m, g in gain.items()},
+            "per_speaker": summary["per_speaker"],
             "settings": {"score_seconds": args.score_seconds, "window_s": args.window_s, "resamples": args.resamples,
                          "seed": args.seed},
             "seconds": {"per_fold": seconds, "total": round(time.perf_counter() - started, 1)}}

@@ -23,10 +23,10 @@ first syllable). The frame is decided then and never revised:
   last 0.25 s to the look-ahead and the anticipation, as batch fusion's
   (:mod:`facesynth.domain.voice.activity`): fully where WebRTC's voice activity detector hears
   speech (``synthesize.voice_activity``), else the speech band's loudness above a running noise
-  floor (which never stands on digital silence).
-  Batch's floor looks both ways; a stream's starts at its first frame, so a stream that starts in
-  speech would take it for the noise until a quieter frame came: there the detector hears it, as
-  it hears speech that stands only a few dB above a noisy room's hum.
+  floor (which never stands on digital silence). Batch's floor looks both ways; a stream's starts
+  at its first frame, so a stream that starts in speech would take it for the noise until a
+  quieter frame came: there the detector hears it, as it hears speech that stands only a few dB
+  above a noisy room's hum.
 
 No phone recogniser runs: a recognised phone settles a phone or more after it ends (300 ms and
 more), long after the frames it could refine were sent, and recognition is what costs a stream
