@@ -279,3 +279,34 @@ def test_a_prior_pulls_the_fit_toward_the_general_model():
         r[s] = np.corrcoef(A.predict_raw(adapted, raw, times)[:, 0], said[:, 0])[0, 1]
     r0 = np.corrcoef(A.predict_raw(alone, raw, times)[:, 0], said[:, 0])[0, 1]
     assert r[1e4] > 0.99 and r0 < r[0.1] < r[1e4]  # the opening: as strong as the prior is
+
+
+def test_leaving_each_take_out_equals_fitting_the_others():
+    """fit-articulation's held-out takes: each model of :func:`fit_leaving_each_out` (from the sums of
+    every take less the left-out one's) is :func:`fit` on the other takes, adapting a prior or not,
+    with takes of other weights and a target one take lacks; a fold left without that target is
+    refused as :func:`fit` refuses it."""
+    general, _ = fitted()
+    takes = []
+    for k in range(4):
+        x = speechlike(3.0 + k, seed=10 + k)
+        raw = A.frame_features(x, RATE)
+        n = int(len(x) / RATE * FPS)
+        env = np.interp(np.arange(n) / FPS, np.arange(len(raw)) * A.FRAME_S, raw[:, A.I_LOG_RMS])
+        funnel = -env + 0.1 * np.sin(np.arange(n) / (3.0 + k)) if k != 2 else np.full(n, np.nan)
+        takes.append(A.Take(raw, np.stack([np.exp(env) * (1 + 0.2 * k), funnel], 1), FPS, weight=1.0 + 0.5 * k))
+    names = ("opening", "mouthFunnel")
+    for prior, strength in ((general, 3.0), (None, 0.0)):
+        models = A.fit_leaving_each_out(takes, names, prior=prior, prior_strength=strength)
+        assert len(models) == len(takes)
+        for i, model in enumerate(models):
+            want = A.fit(takes[:i] + takes[i + 1:], names, prior=prior, prior_strength=strength)
+            for field_name in ("coef", "intercept", "target_mean", "target_std", "feature_mean", "feature_std"):
+                got, expected = getattr(model, field_name), getattr(want, field_name)
+                np.testing.assert_allclose(got, expected, rtol=1e-9, atol=1e-9 * np.abs(expected).max(), err_msg=field_name)
+    lacking = [dataclasses.replace(t, targets=np.stack([t.targets[:, 0], np.full(len(t.targets), np.nan)], 1))
+               if i else t for i, t in enumerate(takes[:2])]  # only the first take has the funnel
+    with pytest.raises(InputError, match="mouthFunnel"):
+        A.fit_leaving_each_out(lacking, names, prior=general, prior_strength=3.0)
+    with pytest.raises(InputError, match="two takes"):
+        A.fit_leaving_each_out(takes[:1], names, prior=general, prior_strength=3.0)

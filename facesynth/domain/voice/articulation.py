@@ -59,7 +59,7 @@ Everything is deterministic (no random numbers).
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from math import gcd
 
 import numpy as np
@@ -622,11 +622,19 @@ def ridge(x: np.ndarray, y: np.ndarray, alpha: float, prior: np.ndarray | None =
     gram[np.diag_indices_from(gram)] += (alpha + (strength if prior is not None else 0.0)) * n
     rhs = xs.T @ (w[:, None] * (y - my))
     if prior is not None and strength > 0:
-        scale = np.maximum(sy, 1e-12) / np.maximum(np.asarray(prior_std, np.float64), 1e-12)  # the prior in these units
-        rhs = rhs + strength * n * (np.asarray(prior, np.float64) * sx[:, None]) * scale[None]
+        rhs = rhs + _prior_pull(prior, prior_std, sx, sy, strength, n)
     beta = np.linalg.solve(gram, rhs)
     coef = beta / sx[:, None]
     return coef, my - mx @ coef
+
+
+def _prior_pull(prior: np.ndarray, prior_std: np.ndarray | None, sx: np.ndarray, sy: np.ndarray, strength: float,
+                n: float) -> np.ndarray:
+    """(P, Y) what :func:`ridge`'s pull toward the ``prior`` coefficients adds to its right-hand side:
+    the prior carried into the standardized columns (``sx`` (P,)) and the targets' units (``sy`` (Y,)
+    per the prior's ``prior_std`` (Y,)), times ``strength`` and the frames' weight ``n``."""
+    scale = np.maximum(sy, 1e-12) / np.maximum(np.asarray(prior_std, np.float64), 1e-12)  # the prior in these units
+    return strength * n * (np.asarray(prior, np.float64) * sx[:, None]) * scale[None]
 
 
 def fit(takes: list[Take], target_names: tuple[str, ...] | list[str], *, offsets_s=DEFAULT_OFFSETS_S,
@@ -648,6 +656,39 @@ def fit(takes: list[Take], target_names: tuple[str, ...] | list[str], *, offsets
     ``feature_names``: the columns of the takes' raw features, :data:`FEATURE_NAMES` (what
     :func:`frame_features` computes) or those followed by columns of other features (a benchmark's
     trial: :func:`check_model` refuses such a model wherever facesynth computes the features)."""
+    model, prior = _fitting(takes, target_names, offsets_s, pool, alpha, normalization, tau_s, expand, prior,
+                            prior_strength, feature_names)
+    x = np.concatenate([design(model, t.raw, t.times_s) for t in takes])
+    y = np.concatenate([t.targets for t in takes]).astype(np.float64)
+    weight = np.concatenate([np.full(len(t.targets), float(t.weight)) for t in takes])
+    # frames of a capture's gaps (NaN) are left out; a target some takes lack (a source without a jaw
+    # channel) is fitted on the frames that have it, each set of targets with the same frames at once
+    known = np.isfinite(y) & np.isfinite(x).all(1)[:, None]
+    patterns: dict[bytes, list[int]] = {}
+    for j in range(len(target_names)):
+        patterns.setdefault(known[:, j].tobytes(), []).append(j)
+    for cols in patterns.values():
+        rows = known[:, cols[0]]
+        _check_known(int(rows.sum()), target_names, cols[0])
+        with_prior = [c for c in cols if prior is not None and target_names[c] in prior.target_names]
+        plain = [c for c in cols if c not in with_prior]
+        w = weight[rows] * (rows.sum() / weight[rows].sum())  # relative: alpha keeps its meaning
+        if plain:
+            model.coef[:, plain], model.intercept[plain] = ridge(x[rows], y[rows][:, plain], alpha, weights=w)
+        if with_prior:
+            assert prior is not None
+            pc = [prior.target_names.index(target_names[c]) for c in with_prior]
+            model.coef[:, with_prior], model.intercept[with_prior] = ridge(
+                x[rows], y[rows][:, with_prior], alpha, np.asarray(prior.coef, np.float64)[:, pc],
+                np.asarray(prior.target_std, np.float64)[pc], prior_strength, weights=w)
+        model.target_mean[cols], model.target_std[cols] = weighted_moments(y[rows][:, cols], w)
+    return model
+
+
+def _fitting(takes, target_names, offsets_s, pool, alpha, normalization, tau_s, expand, prior, prior_strength,
+             feature_names) -> tuple[ArticulationModel, ArticulationModel | None]:
+    """(the model :func:`fit` fills in: its context, normalization and shapes, coefficients 0; the
+    prior it adapts, or None) for :func:`fit`'s arguments, checked."""
     if tuple(feature_names[:N_FEATURES]) != FEATURE_NAMES:
         raise InputError(f"the first {N_FEATURES} feature columns must be those frame_features computes.")
     if prior is not None and prior_strength > 0:
@@ -675,33 +716,91 @@ def fit(takes: list[Take], target_names: tuple[str, ...] | list[str], *, offsets
         np.zeros((width, len(target_names))), np.zeros(len(target_names)), float(alpha),
         np.zeros(len(target_names)), np.zeros(len(target_names)), bool(expand), np.asarray(KNOTS, np.float64),
         RATE, HOP, WIN)
-    x = np.concatenate([design(model, t.raw, t.times_s) for t in takes])
-    y = np.concatenate([t.targets for t in takes]).astype(np.float64)
-    weight = np.concatenate([np.full(len(t.targets), float(t.weight)) for t in takes])
-    # frames of a capture's gaps (NaN) are left out; a target some takes lack (a source without a jaw
-    # channel) is fitted on the frames that have it, each set of targets with the same frames at once
-    known = np.isfinite(y) & np.isfinite(x).all(1)[:, None]
+    return model, prior
+
+
+def _check_known(frames: int, target_names, column: int) -> None:
+    """Refuse a fit of the target ``column`` on fewer frames than twice the targets."""
+    if frames < 2 * len(target_names):
+        raise InputError(f"only {frames} frames have the target {target_names[column]!r} known; fit "
+                         "the articulation model on takes whose lip markers are seen.")
+
+
+def fit_leaving_each_out(takes: list[Take], target_names: tuple[str, ...] | list[str], *,
+                         offsets_s=DEFAULT_OFFSETS_S, pool: int = 3, alpha: float = 1.0, normalization: str = "running",
+                         tau_s: float = 3.0, expand: bool = True, prior: ArticulationModel | None = None,
+                         prior_strength: float = 0.0, feature_names: tuple[str, ...] = FEATURE_NAMES
+                         ) -> list[ArticulationModel]:
+    """For each take of ``takes`` (two or more), in order, the model :func:`fit` gives on the
+    other takes (the same settings, prior and strength): equal to those fits
+    to float rounding (1e-9 of a coefficient).
+
+    Adapting a prior, every fit reads each take's context alike (the normalization's statistics
+    are the prior's), so the context is computed once per take and each fit's regression is solved
+    from the weighted sums of all the takes' frames less the left-out take's: two passes over the
+    frames and one (P, P) solve per take, where fitting anew would read the other takes each time
+    (the cost grows with the takes squared). Without a prior each fit is :func:`fit` on the others
+    (the normalization's statistics, and so every take's context, change with the takes)."""
+    if len(takes) < 2:
+        raise InputError("leave one take out of at least two takes.")
+    settings = dict(offsets_s=offsets_s, pool=pool, alpha=alpha, normalization=normalization, tau_s=tau_s,
+                    expand=expand, feature_names=feature_names)
+    if prior is None or prior_strength <= 0:
+        return [fit([t for j, t in enumerate(takes) if j != i], target_names, **settings) for i in range(len(takes))]
+    model, prior = _fitting(takes, target_names, offsets_s, pool, alpha, normalization, tau_s, expand, prior,
+                            prior_strength, feature_names)
+    assert prior is not None
+    xs = [design(model, t.raw, t.times_s) for t in takes]
+    ys = [np.asarray(t.targets, np.float64) for t in takes]
+    known = [np.isfinite(y) & np.isfinite(x).all(1)[:, None] for x, y in zip(xs, ys)]
+    models = [replace(model, coef=model.coef.copy(), intercept=model.intercept.copy(),
+                      target_mean=model.target_mean.copy(), target_std=model.target_std.copy()) for _ in takes]
     patterns: dict[bytes, list[int]] = {}
     for j in range(len(target_names)):
-        patterns.setdefault(known[:, j].tobytes(), []).append(j)
+        patterns.setdefault(np.concatenate([k[:, j] for k in known]).tobytes(), []).append(j)
     for cols in patterns.values():
-        rows = known[:, cols[0]]
-        if rows.sum() < 2 * len(target_names):
-            raise InputError(f"only {int(rows.sum())} frames have the target {target_names[cols[0]]!r} known; fit "
-                             "the articulation model on takes whose lip markers are seen.")
-        with_prior = [c for c in cols if prior is not None and target_names[c] in prior.target_names]
-        plain = [c for c in cols if c not in with_prior]
-        w = weight[rows] * (rows.sum() / weight[rows].sum())  # relative: alpha keeps its meaning
-        if plain:
-            model.coef[:, plain], model.intercept[plain] = ridge(x[rows], y[rows][:, plain], alpha, weights=w)
-        if with_prior:
-            assert prior is not None
-            pc = [prior.target_names.index(target_names[c]) for c in with_prior]
-            model.coef[:, with_prior], model.intercept[with_prior] = ridge(
-                x[rows], y[rows][:, with_prior], alpha, np.asarray(prior.coef, np.float64)[:, pc],
-                np.asarray(prior.target_std, np.float64)[pc], prior_strength, weights=w)
-        model.target_mean[cols], model.target_std[cols] = weighted_moments(y[rows][:, cols], w)
-    return model
+        rows = [k[:, cols[0]] for k in known]
+        # the sums about one centre (the first take's mean), so that the moments lose no digits to the means
+        centre = (xs[0][rows[0]].mean(0, dtype=np.float64) if rows[0].any() else np.zeros(xs[0].shape[1]),
+                  ys[0][rows[0]][:, cols].mean(0) if rows[0].any() else np.zeros(len(cols)))
+        sums = [_weighted_sums(x[r], y[r][:, cols], t.weight, centre) for x, y, r, t in zip(xs, ys, rows, takes)]
+        total = [sum(parts) for parts in zip(*sums)]
+        with_prior = [c for c in cols if target_names[c] in prior.target_names]
+        pc = [prior.target_names.index(target_names[c]) for c in with_prior]
+        pulled = np.isin(cols, with_prior)
+        for i, m in enumerate(models):
+            count, s0, sx, sy, sxx, sxy, syy = (a - b for a, b in zip(total, sums[i]))
+            _check_known(int(count), target_names, cols[0])
+            mx, my = sx / s0, sy / s0  # about the centre
+            cxx, cxy = sxx / s0 - np.outer(mx, mx), sxy / s0 - np.outer(mx, my)
+            std_x = np.maximum(np.sqrt(np.maximum(np.diag(cxx), 0.0)), 1e-8)
+            std_y = np.sqrt(np.maximum(syy / s0 - my * my, 0.0))
+            gram = count * cxx / np.outer(std_x, std_x)
+            rhs = count * cxy / std_x[:, None]
+            beta = np.empty_like(rhs)
+            for share, cs, extra in ((~pulled, None, 0.0), (pulled, pc, prior_strength)):
+                if not share.any():
+                    continue
+                g = gram.copy()
+                g[np.diag_indices_from(g)] += (alpha + extra) * count
+                b = rhs[:, share]
+                if cs is not None:
+                    b = b + _prior_pull(np.asarray(prior.coef, np.float64)[:, cs], np.asarray(prior.target_std)[cs],
+                                        std_x, std_y[share], prior_strength, count)
+                beta[:, share] = np.linalg.solve(g, b)
+            coef = beta / std_x[:, None]
+            m.coef[:, cols], m.intercept[cols] = coef, (my + centre[1]) - (mx + centre[0]) @ coef
+            m.target_mean[cols], m.target_std[cols] = my + centre[1], std_y
+    return models
+
+
+def _weighted_sums(x: np.ndarray, y: np.ndarray, weight: float, centre: tuple[np.ndarray, np.ndarray]) -> tuple:
+    """(frames, their weight, the weighted sums of the context ``x`` (N, P) and targets ``y`` (N, Y)
+    less their ``centre`` (P,) and (Y,), of their outer products and of y's squares) of one take's
+    frames, each weighing ``weight``."""
+    x, y = np.asarray(x, np.float64) - centre[0], y - centre[1]
+    return (len(x), weight * len(x), weight * x.sum(0), weight * y.sum(0), weight * (x.T @ x), weight * (x.T @ y),
+            weight * (y * y).sum(0))
 
 
 # ---------------------------------------------------------------- streaming predictions

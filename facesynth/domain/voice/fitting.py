@@ -16,12 +16,14 @@ markers in the head frame), at :data:`FIT_FPS` frames/s:
   phones).
 
 The fit is :func:`facesynth.domain.voice.articulation.fit` with its defaults (10 offsets,
--250..+20 ms; ridge; running normalization), deterministic. The packaged model is this fit on
-FACEGOOD's calibration takes, through ``benchmarks/voice_articulation.py`` (which reads FACEGOOD's
-own curves instead of a solve).
+-250..+20 ms; ridge; running normalization), deterministic. The packaged model is that fit on
+many speakers (``benchmarks/voice_speakers.py --fit-only``, docs/real-speech.md), which reads
+each source's own mouth curves instead of a solve.
 
 **Held out, take by take** (:func:`held_out_takes`, two takes or more): each take is predicted by
-the model fitted on the others, which says how well the voice reads this performer's mouth on
+the model fitted on the others (:func:`facesynth.domain.voice.articulation.fit_leaving_each_out`:
+adapting the packaged model, from each take's sums, so that many takes cost little more than
+one fit), which says how well the voice reads this performer's mouth on
 audio the model never heard (the fit's own r says how well it fits). The same predictions choose
 the voice's own closures: the threshold of its closure score (:data:`CLOSURE_THRESHOLDS`) whose
 closures (:func:`facesynth.domain.voice.fusion.closure_frames`) best meet the captured ones
@@ -185,11 +187,8 @@ def held_out_takes(data: PerformerTakes, prior: ArticulationModel | None = None,
     None with fewer than two takes."""
     if len(data.takes) < 2:
         return None
-    predicted = []
-    for i, take in enumerate(data.takes):
-        others = [t for j, t in enumerate(data.takes) if j != i]
-        model = articulation.fit(others, data.names, prior=prior, prior_strength=prior_strength)
-        predicted.append(articulation.predict_raw(model, take.raw, take.times_s))
+    models = articulation.fit_leaving_each_out(data.takes, data.names, prior=prior, prior_strength=prior_strength)
+    predicted = [articulation.predict_raw(model, take.raw, take.times_s) for model, take in zip(models, data.takes)]
     r = pearson_per_target(predicted, [t.targets for t in data.takes], data.names)
     o, c = data.names.index("opening"), data.names.index("closure")
     real = []
