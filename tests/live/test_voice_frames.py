@@ -242,3 +242,29 @@ def test_given_phones_keep_their_path(model, pcm, tiny_corpus, held_out_take):
                                                   {"type": "phones", "phones": phones, "final": True}])
     assert session.voice is None and session.recognizer is None
     assert len(frames) == 70
+
+
+def test_the_search_is_readied_only_for_streams_that_take_it(db, pcm, config, tiny_corpus, held_out_take):
+    """A stream of audio whose frames come from the voice never runs the search, so its model does not
+    compute the search's transition costs (seconds for a large database); a model whose audio takes
+    the phones' path computes them at once, and given phones compute them at their first decision,
+    with the frames of a model readied from the start."""
+    from facesynth.domain.speech.utterance import read_utterance
+
+    voice = LiveModel(db, config.settings("synthesize"), replace(config.settings("stream"), voice="articulation"),
+                      config.settings("solve"))
+    _run(voice, pcm)
+    assert not voice.live.warmed
+    off = LiveModel(db, config.settings("synthesize"), replace(config.settings("stream"), voice="off"),
+                    config.settings("solve"))
+    assert off.live.warmed
+    utt = read_utterance(tiny_corpus / "labels" / f"{held_out_take}.TextGrid")
+    phones = [{"phone": p, "start": float(a), "end": float(b)} for p, a, b in zip(utt.phones, utt.starts, utt.ends)]
+    given = [{"type": "start", "phones": "given"}, {"type": "phones", "phones": phones, "final": True}]
+    ready = LiveModel(db, config.settings("synthesize"), replace(config.settings("stream"), voice="articulation"),
+                      config.settings("solve"))
+    ready.warm()
+    _, lazily, _ = _run(voice, pcm, before=given)
+    assert voice.live.warmed
+    _, eagerly, _ = _run(ready, pcm, before=given)
+    assert [f["arkit"] for f in lazily] == [f["arkit"] for f in eagerly] and len(lazily) == 70

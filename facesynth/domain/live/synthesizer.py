@@ -95,7 +95,8 @@ class Frame:
 class LiveModel:
     """What every stream of one source shares (read once): the member's live source
     (:class:`~facesynth.domain.methods.live.LiveSource`: for ``dp`` and ``greedy`` the database and
-    its dense transition costs, for ``trajectory`` its model) and the facial solve's basis.
+    its dense transition costs, computed when a stream first needs them (:meth:`warm`), for
+    ``trajectory`` its model) and the facial solve's basis.
 
     source : the member's source as read (a :class:`MotionDatabase`, or a fitted model);
     settings : the :class:`~facesynth.domain.methods.MethodSettings` (or ``[synthesize]`` alone,
@@ -134,6 +135,14 @@ class LiveModel:
                              "jawOpen, which live frames move the jaw by; fit it on a capture whose markers the rig "
                              "binds (fit-articulation --binding), or set stream.voice = \"off\".")
         self._poses: dict[str, np.ndarray] = {}
+        if self.voice_model is None:  # every stream of audio takes the phones' path: ready it now
+            self.warm()
+
+    def warm(self) -> None:
+        """Prepare now what the first stream of phones would wait for (the search's transition
+        costs, :meth:`~facesynth.domain.methods.live.LiveSource.warm`); a stream whose frames come
+        from its voice alone needs none of it."""
+        self.live.warm()
 
     @property
     def arkit_names(self) -> tuple[str, ...]:

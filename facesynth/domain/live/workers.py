@@ -38,6 +38,7 @@ def serve(model: LiveModel, align: AlignSettings, address: str, *, livelink: str
             except OSError as exc:
                 raise InputError(f"--serve {address}: cannot listen there ({exc.strerror or exc}).") from None
             port = probe.getsockname()[1]
+    model.warm()  # before the workers fork: they share it, and no client's first phones wait for it
     children = []
     if workers > 1:
         import multiprocessing  # only for more than one process: the pipe and one server start without it

@@ -89,6 +89,15 @@ class LiveSource(ABC):
         where the source has no frames of it)."""
         return self.rest_markers
 
+    def warm(self) -> None:
+        """Prepare now what the first stream of phones would otherwise wait for (nothing by default)."""
+        return None
+
+    @property
+    def warmed(self) -> bool:
+        """Whether nothing is left for :meth:`warm` to prepare."""
+        return True
+
     @abstractmethod
     def stepper(self) -> LiveStepper:
         """A new stream's stepper."""

@@ -9,6 +9,7 @@ fixed-lag DP over a sliding window, or the greedy tiling of the uncommitted phon
 from __future__ import annotations
 
 import dataclasses
+import threading
 
 import numpy as np
 
@@ -105,7 +106,8 @@ class SearchLive(LiveSource):
         self.marker_names, self.reference = list(db.marker_names), db.reference
         self.grid_fps = float(db.fps)  # the capture grid, where the path is rendered
         self.tc = transition_costs(db, synth, False)
-        self.dense = np.ascontiguousarray(self.tc.dense(), np.float32)
+        self._dense: np.ndarray | None = None
+        self._dense_lock = threading.Lock()
         self.emotions = sorted(set(db.nodes.emotion))
         self.greedy: Greedy | None = None
         if search == "greedy":
@@ -114,11 +116,30 @@ class SearchLive(LiveSource):
                 graph = cluster_graph(db.nodes.phone, db.nodes.emotion, db.nodes.suc, features, synth.greedy_clusters)
             else:
                 graph = anime_graph(db.nodes.phone, db.nodes.emotion, db.nodes.suc)
-            # the dense matrix, read-only: streams on several threads share it
             self.greedy = Greedy(graph, db.nodes.viseme, db.nodes.emotion, self.dense, synth.alpha6 * synth.pnt)
         rest_coeffs = db.model.project(db.reference[None])[0]
         #: (M, 3) mm: the rest pose as the PCA model reconstructs it (where silences settle)
         self.rest_markers = db.model.reconstruct(rest_coeffs[None])[0].astype(np.float32)
+
+    @property
+    def dense(self) -> np.ndarray:
+        """(N, N) float32 transition costs between the database's N nodes, read-only (streams on
+        several threads share it): computed at first use (seconds for a database of thousands of
+        nodes), which a stream whose frames come from its voice alone never makes, or by
+        :meth:`warm`."""
+        if self._dense is None:
+            with self._dense_lock:
+                if self._dense is None:
+                    self._dense = np.ascontiguousarray(self.tc.dense(), np.float32)
+        return self._dense
+
+    def warm(self) -> None:
+        """Compute the transition costs now, so that no stream waits for them."""
+        _ = self.dense
+
+    @property
+    def warmed(self) -> bool:
+        return self._dense is not None
 
     def emotion_markers(self, emotion: str) -> np.ndarray:
         """The mean of the database's captured frames of ``emotion``."""
