@@ -25,7 +25,7 @@ def db(tiny_db):
 
 @pytest.fixture(scope="module")
 def model(db, config):
-    # frames from the voice (not the default, docs/real-speech.md says why)
+    # frames from the voice (the default, named here so that the tests keep it)
     return LiveModel(db, config.settings("synthesize"), replace(config.settings("stream"), voice="articulation"),
                      config.settings("solve"))
 
