@@ -646,6 +646,8 @@ def write_packaged(by_speaker: dict[str, list[Utt]], sources: list[str], ref, va
 
 
 #: Fit settings tried (item: features that do not carry the speaker); "default" is what ships.
+#: "aheadN": the context read on to +N ms, past what live can wait for (batch could; it gains only
+#: on clips whose sound lags their video, docs/real-speech.md "Fifth round").
 VARIANTS: dict[str, dict] = {
     "default": {},
     "utterance": {"normalization": "utterance"},
@@ -654,6 +656,11 @@ VARIANTS: dict[str, dict] = {
     "alpha10": {"alpha": 10.0},
     "tau1": {"tau_s": 1.0},
     "tau10": {"tau_s": 10.0},
+    "ahead50": {"offsets_s": (-0.25, -0.2, -0.15, -0.12, -0.09, -0.06, -0.04, -0.02, 0.0, 0.02, 0.05)},
+    "ahead100": {"offsets_s": (-0.25, -0.2, -0.15, -0.12, -0.09, -0.06, -0.04, -0.02, 0.0, 0.02, 0.05, 0.1)},
+    "ahead150": {"offsets_s": (-0.25, -0.2, -0.15, -0.12, -0.09, -0.06, -0.04, -0.02, 0.0, 0.02, 0.05, 0.1, 0.15)},
+    "ahead250": {"offsets_s": (-0.25, -0.2, -0.15, -0.12, -0.09, -0.06, -0.04, -0.02, 0.0, 0.02, 0.05, 0.1, 0.15,
+                               0.2, 0.25)},
 }
 
 
